@@ -1,0 +1,18 @@
+(** The lexical elements of chapter 2 (§2.1-§2.10), read by sedlex. *)
+
+exception Error of Source.region * string
+(** A lexical error (§1.4): where, and what, in the manual's words. *)
+
+type t
+
+val create : Source.file -> Decode.t -> t
+
+val next : t -> Parser.token * Lexing.position * Lexing.position
+(** The next token and the character offsets ([pos_cnum]) where it starts and stops.
+    Raises {!Error}. *)
+
+val reserved_words : (string, Parser.token) Hashtbl.t
+(** §2.4, keyed by the upper-case spelling. *)
+
+val max_identifier_length : int
+val max_string_bytes : int

@@ -1,0 +1,205 @@
+module I = Parser.MenhirInterpreter
+
+type options = { strict : bool }
+
+let default_options = { strict = false }
+
+(* §1.4 names "program too complex (nested)" as a fatal static error without giving a bound;
+   ruling R-1.4 in doc/rulings.md fixes it. Every later phase may then recurse on the tree. *)
+let max_nesting = 1000
+
+exception Refused of Diagnostic.t
+
+let refuse error_class region message = raise (Refused (Diagnostic.make error_class region message))
+
+let describe_token (token : Parser.token) =
+  match token with
+  | IDENT s -> Printf.sprintf "the identifier %s" s
+  | NUM s -> Printf.sprintf "the numeric literal %s" s
+  | STRING s -> Printf.sprintf "the string literal \"%s\"" s.raw
+  | COMMENT _ -> "a comment"
+  | HEADER _ -> "a %%% header block"
+  | EOF -> "the end of the file"
+  | TRUE -> "TRUE" | FALSE -> "FALSE"
+  | TDN_PH -> "<TDN>" | DDN_PH -> "<DDN>" | RDN_PH -> "<RDN>" | PAR_PH -> "<PAR>"
+  | ALT_PH -> "<ALT>" | DIM_PH -> "<DIM>" | SMT_PH -> "<SMT>" | VAR_PH -> "<VAR>"
+  | EIT_PH -> "<EIT>" | CSE_PH -> "<CSE>" | EXP_PH -> "<EXP>" | ARG_PH -> "<ARG>"
+  | ID_PH -> "<ID>"
+  | LBRACE -> "'{'" | RBRACE -> "'}'" | LPAREN -> "'('" | RPAREN -> "')'"
+  | LBRACKET -> "'['" | RBRACKET -> "']'" | COMMA -> "','" | DOT -> "'.'" | EQ -> "'='"
+  | LT -> "'<'" | GT -> "'>'" | PLUS -> "'+'" | MINUS -> "'-'" | STAR -> "'*'"
+  | SLASH -> "'/'" | COLON -> "':'" | SEMICOLON -> "';'" | BACKSLASH -> "'\\'"
+  | QUESTION -> "'?'" | ASSIGN -> "':='" | NE -> "'<>'" | GE -> "'>='" | LE -> "'<='"
+  | PERCENT -> "'%'" | BAR -> "'|'"
+  | t ->
+      (* A reserved word: its spelling in the table of §2.4. *)
+      let found = ref "a reserved word" in
+      Hashtbl.iter (fun word tok -> if tok = t then found := word) Lexer.reserved_words;
+      !found
+
+let syntax_message state =
+  match Parser_messages.message state with
+  | message -> String.trim message
+  | exception Not_found -> "this is not allowed here"
+
+(* The grammar accepts any depth; the tree is checked here, within bounded recursion, so that
+   no later phase meets a tree deeper than [max_nesting]. *)
+module Nesting = struct
+  open Ast
+
+  exception Too_deep of Source.region
+
+  let enter depth at = if depth > max_nesting then raise (Too_deep at); depth + 1
+
+  let rec expression d (e : expression) =
+    let d = enter d e.at in
+    match e.it with
+    | Literal _ | EXP_placeholder -> ()
+    | Data_reference r -> data_reference d r
+    | Function_call f -> arguments d f.arguments
+    | Aggregate es -> List.iter (expression d) es
+    | Unary (_, e) -> expression d e
+    | Binary (_, l, r) -> expression d l; expression d r
+
+  and data_reference d (r : data_reference) =
+    let d = enter d r.at in
+    match r.it with
+    | Entire _ | VAR_placeholder -> ()
+    | Element (_, es) -> List.iter (expression d) es
+    | Component (r, _) -> data_reference d r
+
+  and arguments d args =
+    List.iter (fun (a : argument) ->
+        match a.it with
+        | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
+        | Conditional_argument (_, r) -> data_reference d r
+        | Optional_argument (_, None) | ARG_placeholder -> ()) args
+
+  let rec statement d (s : statement) =
+    let d = enter d s.at in
+    match s.it with
+    | Assignment (r, e) -> data_reference d r; expression d e
+    | Procedure_call (p, args) ->
+        (match p with Late_bound e -> expression d e | Procedure_name _ -> ());
+        arguments d args
+    | Return e | Raise e -> Option.iter (expression d) e
+    | Connect (r, _) -> data_reference d r
+    | If i ->
+        expression d i.condition;
+        statements d i.then_branch;
+        List.iter (fun (c : elseif_clause) ->
+            match c.it with
+            | Elseif (e, l) -> expression d e; statements d l
+            | EIT_placeholder -> ()) i.elseifs;
+        Option.iter (statements d) i.else_branch
+    | Compact_if (e, s) -> expression d e; statement d s
+    | For f ->
+        expression d f.from_; expression d f.to_; Option.iter (expression d) f.step;
+        statements d f.body
+    | While (e, l) -> expression d e; statements d l
+    | Test t ->
+        expression d t.test_expression;
+        List.iter (fun (c : case_clause) ->
+            match c.it with
+            | Case (es, l) -> List.iter (expression d) es; statements d l
+            | CSE_placeholder -> ()) t.cases;
+        Option.iter (statements d) t.default
+    | Goto _ | Break | Continue | Exit | Retry | Trynext | Label _ | Statement_comment _
+    | SMT_placeholder -> ()
+
+  and statements d l = List.iter (statement d) l
+
+  let declaration (decl : data_declaration) =
+    match decl.it with
+    | Data_declaration { dims; initial_value; _ } ->
+        List.iter (expression 0) dims; Option.iter (expression 0) initial_value
+    | Declaration_comment _ | DDN_placeholder -> ()
+
+  let routine (r : routine_declaration) =
+    let body (b : routine_body) =
+      List.iter declaration b.declarations;
+      statements 0 b.statements;
+      Option.iter (statements 0) b.backward;
+      Option.iter (fun h -> statements 0 h.handler) b.error;
+      Option.iter (statements 0) b.undo
+    in
+    match r.it with
+    | Procedure_declaration { body = b; _ } | Function_declaration { body = b; _ }
+    | Trap_declaration { body = b; _ } -> body b
+    | Routine_comment _ | RDN_placeholder -> ()
+
+  let check (m : module_declaration) =
+    try
+      List.iter declaration m.data_declarations;
+      List.iter routine m.routine_declarations
+    with Too_deep at ->
+      refuse Fatal_static_error at
+        (Printf.sprintf "program too complex: statements and expressions nested more than \
+                         %d deep (§1.4)" max_nesting)
+end
+
+let run_parser options file lexer =
+  let last = ref (Parser.EOF, Lexing.dummy_pos, Lexing.dummy_pos) in
+  let region_of (_, (s : Lexing.position), (e : Lexing.position)) =
+    Source.region file s.pos_cnum e.pos_cnum
+  in
+  let rec loop checkpoint =
+    match checkpoint with
+    | I.InputNeeded _ ->
+        let ((token, _, _) as t) = Lexer.next lexer in
+        (match token with
+         | HEADER _ when options.strict ->
+             refuse Syntax_error (region_of t)
+               "a %%% header block is not part of a module declaration (§9.2); \
+                accepted without --strict (doc/dialect.md)"
+         | _ -> ());
+        last := t;
+        loop (I.offer checkpoint t)
+    | I.Shifting _ | I.AboutToReduce _ -> loop (I.resume checkpoint)
+    | I.HandlingError env ->
+        let (token, _, _) = !last in
+        let message = syntax_message (I.current_state_number env) in
+        refuse Syntax_error (region_of !last)
+          (Printf.sprintf "%s; found %s" message (describe_token token))
+    | I.Accepted m -> m
+    | I.Rejected -> refuse Syntax_error (region_of !last) "syntax error"
+  in
+  let start = { Lexing.dummy_pos with pos_cnum = 0 } in
+  loop (Parser.Incremental.module_file start)
+
+let parse_decoded options name (decoded : Decode.t) =
+  let file = Source.register ~name ~line_starts:decoded.line_starts in
+  Parse_context.file := file;
+  let at_start = Source.region file 0 1 in
+  try
+    if options.strict && decoded.byte_order_mark then
+      refuse Syntax_error at_start
+        "byte-order mark at the start of the file: §2.1 defines no such character; accepted \
+         without --strict (doc/dialect.md)";
+    let m = run_parser options file (Lexer.create file decoded) in
+    if options.strict && not decoded.final_newline then
+      refuse Syntax_error (Source.region file (decoded.length - 1) decoded.length)
+        "the file does not end with a line break (§2.10: a line ends with <newline>); \
+         accepted without --strict (doc/dialect.md)";
+    Nesting.check m;
+    Ok m
+  with
+  | Refused d -> Error d
+  | Lexer.Error (region, message) -> Error (Diagnostic.make Lexical_error region message)
+  | Parse_context.Refused (region, message) -> Error (Diagnostic.make Syntax_error region message)
+
+let parse_string ?(options = default_options) ~name contents =
+  parse_decoded options name (Decode.decode contents)
+
+let read_file path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+      really_input_string ic (in_channel_length ic))
+
+let parse_file ?(options = default_options) path =
+  match read_file path with
+  | contents -> parse_string ~options ~name:path contents
+  | exception Sys_error message ->
+      let file = Source.register ~name:path ~line_starts:[| 0 |] in
+      Error (Diagnostic.make Syntax_error (Source.region file 0 0)
+               (Printf.sprintf "cannot read the file: %s" message))

@@ -1,0 +1,44 @@
+(** Source files and regions.
+
+    A region is packed into one immediate integer (file, first character, length) so that every
+    node of the syntax tree can carry one at the cost of a single word: CAD-generated modules hold
+    millions of literals, and a boxed region per node would dominate the memory a parse takes.
+    Positions count characters (Unicode code points after decoding), not bytes. *)
+
+type file
+(** A loaded source file: its name and where its lines start. *)
+
+type pos = { line : int; col : int }
+(** 1-based line and column. *)
+
+type region
+(** A stretch of one file, from its first character up to (not including) its [stop]. *)
+
+val register : name:string -> line_starts:int array -> file
+(** [register ~name ~line_starts] records a file whose line [i+1] starts at character offset
+    [line_starts.(i)]; [line_starts.(0)] is [0]. *)
+
+val name : file -> string
+
+val no_region : region
+(** The region of a node that was not read from a file (generated trees). *)
+
+val region : file -> int -> int -> region
+(** [region f start stop] covers characters [start] to [stop - 1] of [f]. Offsets beyond what
+    a region can hold are clamped. *)
+
+val file_of : region -> file option
+val start_offset : region -> int
+val stop_offset : region -> int
+val start : region -> pos
+val stop : region -> pos
+val span : region -> region -> region
+(** [span a b] runs from the start of [a] to the end of [b] (same file). *)
+
+val pos_of_offset : file -> int -> pos
+
+val to_string : region -> string
+(** [FILE:LINE:COL] of the region's start, the form every diagnostic begins with. *)
+
+val to_range_string : region -> string
+(** [FILE:LINE:COL-LINE:COL]. *)

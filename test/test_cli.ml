@@ -1,0 +1,1 @@
+let suite = ("cli", ([] : unit Alcotest.test_case list))

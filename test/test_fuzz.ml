@@ -1,0 +1,1 @@
+let suite = ("fuzz", ([] : unit Alcotest.test_case list))

@@ -1,0 +1,1 @@
+let suite = ("lexer", ([] : unit Alcotest.test_case list))

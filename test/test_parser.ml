@@ -1,0 +1,1 @@
+let suite = ("parser", ([] : unit Alcotest.test_case list))

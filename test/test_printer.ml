@@ -1,0 +1,1 @@
+let suite = ("printer", ([] : unit Alcotest.test_case list))

@@ -1,0 +1,1 @@
+let suite = ("roundtrip", ([] : unit Alcotest.test_case list))
