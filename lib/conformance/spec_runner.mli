@@ -1,0 +1,14 @@
+(** Running the conformance suite: every [.mod] file below a folder, checked against its
+    directives, with a summary per manual section and the line [N passed, N failed]. *)
+
+type outcome = { case : Spec_case.t; passed : bool; detail : string }
+
+val run_case : Spec_case.t -> outcome
+(** Parses the case's file (in strict mode when it says so) and compares with its expectation. *)
+
+val find_cases : string -> string list
+(** The [.mod] files below a folder, in a stable order. *)
+
+val run : ?verbose:bool -> Format.formatter -> string -> int * int
+(** [run out dir] runs every case below [dir], prints each failure, the summary per section and
+    [N passed, N failed], and returns (passed, failed). *)
