@@ -7,6 +7,7 @@ let class_directive_name = function
   | Syntax_error -> "syntax-error"
   | Semantic_error -> "semantic-error"
   | Fatal_static_error -> "fatal-error"
+  | File_error -> "file-error"
 
 let run_case (case : Spec_case.t) =
   if case.problems <> [] then { case; passed = false; detail = String.concat "; " case.problems }

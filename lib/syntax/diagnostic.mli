@@ -6,6 +6,7 @@ type error_class =
   | Syntax_error         (** §1.4: a grammar rule is violated *)
   | Semantic_error       (** §1.4: a semantic rule is violated *)
   | Fatal_static_error   (** §1.4: a system resource is exceeded (program too complex) *)
+  | File_error           (** the file cannot be read: not an error of the program *)
 
 type t = { error_class : error_class; region : Source.region; message : string }
 
@@ -13,7 +14,7 @@ val make : error_class -> Source.region -> string -> t
 
 val class_name : error_class -> string
 (** The name printed in a diagnostic: [lexical error], [syntax error], [semantic error],
-    [fatal error]. *)
+    [fatal error], [file error]. *)
 
 val to_string : t -> string
 (** [FILE:LINE:COL: CLASS: MESSAGE] *)

@@ -192,6 +192,7 @@ let parse_string ?(options = default_options) ~name contents =
   parse_decoded options name (Decode.decode contents)
 
 let read_file path =
+  if Sys.file_exists path && Sys.is_directory path then raise (Sys_error "is a directory");
   let ic = open_in_bin path in
   Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
       really_input_string ic (in_channel_length ic))
@@ -201,5 +202,13 @@ let parse_file ?(options = default_options) path =
   | contents -> parse_string ~options ~name:path contents
   | exception Sys_error message ->
       let file = Source.register ~name:path ~line_starts:[| 0 |] in
-      Error (Diagnostic.make Syntax_error (Source.region file 0 0)
-               (Printf.sprintf "cannot read the file: %s" message))
+      (* Sys_error says "PATH: reason"; the diagnostic names the path already. *)
+      let prefix = path ^ ": " in
+      let reason =
+        if String.length message > String.length prefix
+           && String.sub message 0 (String.length prefix) = prefix
+        then String.sub message (String.length prefix) (String.length message - String.length prefix)
+        else message
+      in
+      Error (Diagnostic.make File_error (Source.region file 0 0)
+               (Printf.sprintf "cannot read the file: %s" reason))

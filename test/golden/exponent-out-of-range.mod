@@ -1,0 +1,5 @@
+MODULE m
+  PROC p()
+    b := 2E52786;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,6 @@
+MODULE m
+  PROC p()
+    FOR i 5 TO 10 DO
+    ENDFOR
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+parse bom-no-newline.mod

@@ -1,0 +1,1 @@
+parse ../../examples/weldcell.mod

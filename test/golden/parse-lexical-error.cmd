@@ -1,0 +1,1 @@
+parse exponent-out-of-range.mod

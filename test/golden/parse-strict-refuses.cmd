@@ -1,0 +1,1 @@
+parse --strict bom-no-newline.mod

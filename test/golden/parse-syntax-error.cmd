@@ -1,0 +1,1 @@
+parse for-without-from.mod

@@ -1,0 +1,6 @@
+MODULE m
+  VAR num a;
+  PROC p()
+    a := "John";
+  ENDPROC
+ENDMODULE
