@@ -1,0 +1,6 @@
+MODULE t
+! @expect-message 4:10: syntax error: expected ':=' for an assignment, ':' for a label, or the arguments or ';' of a procedure call (§4.4, §4.5, §4.6); found ','
+  PROC main()
+    MoveL, p1;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,7 @@
+MODULE t
+! @expect-message 5:3: syntax error: expected a statement, ERROR, UNDO or ENDFUNC (§5.5); BACKWARD belongs to procedures only (§5.4); found BACKWARD
+  FUNC num f()
+    RETURN 1;
+  BACKWARD
+  ENDFUNC
+ENDMODULE
