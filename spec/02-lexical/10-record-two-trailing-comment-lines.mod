@@ -1,0 +1,10 @@
+MODULE record_two_trailing_comment_line
+! @section 2.10
+! @expect syntax-error 7:5
+! @description Only the last line may hold a comment alone: of two trailing comment lines the first is refused.
+  RECORD r
+    num a;
+    ! alone, followed by another comment line
+    ! alone on the last line
+  ENDRECORD
+ENDMODULE
