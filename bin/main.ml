@@ -42,7 +42,7 @@ let parse_cmd =
   in
   let run files print ast strict =
     guard @@ fun () ->
-    let options = { Parse.strict } in
+    let options = { Parse.default_options with strict } in
     let ok = List.fold_left (fun ok file ->
         match Parse.parse_file ~options file with
         | Ok m ->
@@ -64,6 +64,49 @@ let parse_cmd =
     `P "0 when every file parses; 2 when one does not.";
   ] in
   Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict)
+
+let check_cmd =
+  let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
+  let allow_unknown =
+    Arg.(value & flag & info [ "allow-unknown" ]
+           ~doc:"Report a name that is neither declared nor installed as a warning, and go on: \
+                 real programs call installed routines beyond rapid-sem's environment.")
+  in
+  let strict =
+    Arg.(value & flag & info [ "strict" ] ~doc:"Refuse the dialect extensions of doc/dialect.md.")
+  in
+  let run files allow_unknown strict =
+    guard @@ fun () ->
+    let options = { Parse.default_options with strict } in
+    let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
+    let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
+    List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) syntax_errors;
+    if syntax_errors <> [] then exit_static_error
+    else
+      match Rapid_typing.Installed_env.modules () with
+      | Error d ->
+          Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
+            (Diagnostic.to_string d);
+          exit_internal
+      | Ok installed ->
+          let modules = List.filter_map Result.to_option parsed in
+          let result =
+            Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
+          List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
+          if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
+  in
+  let doc = "check RAPID modules, as one task buffer, against the static semantics" in
+  let man = [
+    `S Manpage.s_description;
+    `P "Reads each FILE as a module and checks them together as one task buffer (§9.1) \
+        against the rules of chapters 2-5 and 9 of the RAPID kernel manual, with the installed \
+        environment of types, data and routines that real programs use. Each error is reported \
+        on standard error as $(b,FILE:LINE:COL: semantic error: MESSAGE (§x.y)); independent \
+        errors are all reported in one run.";
+    `S Manpage.s_exit_status;
+    `P "0 when there is no static error (warnings allowed); 2 when there is one.";
+  ] in
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
@@ -87,4 +130,4 @@ let spec_cmd =
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
-  exit (Cmd.eval' (Cmd.group info [ parse_cmd; spec_cmd ]))
+  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; spec_cmd ]))

@@ -32,10 +32,10 @@ rm -f "$unit_log"
 spec_log=$(mktemp)
 "$bin" spec spec 2>&1 | tee "$spec_log"
 spec_status=${PIPESTATUS[0]}
-line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$spec_log" | tail -n 1)
+line=$(grep -E '^[0-9]+ passed, [0-9]+ failed(, [0-9]+ skipped)?$' "$spec_log" | tail -n 1)
 if [ -n "$line" ]; then
   p=$(sed -nE 's/^([0-9]+) passed.*/\1/p' <<<"$line")
-  f=$(sed -nE 's/.* ([0-9]+) failed$/\1/p' <<<"$line")
+  f=$(sed -nE 's/.* ([0-9]+) failed.*/\1/p' <<<"$line")
   passed=$((passed + p))
   failed=$((failed + f))
 else

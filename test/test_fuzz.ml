@@ -50,11 +50,11 @@ let parse_checked ?options text =
 
 (* Why printing [m] and reading it back does not give [m] again, if it does not (the promise
    of Printer, with Ast_dump's equality). *)
-let round_trip_problem (m : Ast.module_declaration) =
+let round_trip_problem ?options (m : Ast.module_declaration) =
   match Printer.module_declaration m with
   | exception e -> Some ("the printer raised " ^ Printexc.to_string e)
   | printed ->
-      match Parse.parse_string ~name:file_name printed with
+      match Parse.parse_string ?options ~name:file_name printed with
       | exception e ->
           Some (Printf.sprintf "printed as %S, which raised %s" printed (Printexc.to_string e))
       | Error d -> Some (Printf.sprintf "printed as %S: %s" printed (Diagnostic.to_string d))
@@ -368,9 +368,7 @@ let sentences = lazy (
 
 (* Concrete text for the token names of a sentence. The choices are random but fixed by the
    sentence's line, and made so that the text lexes to exactly those tokens: every token is
-   followed by white space (§2.2), an IDENT just before VAR or PERS is TASK, the only word the
-   grammar's action accepts there (§2.18), and a comment stays on the line of the token before
-   it, so that only a comment that follows another comment stands on a line of its own. *)
+   followed by white space (§2.2), and a comment stays on the line of the token before it, so that only a comment that follows another comment stands on a line of its own. *)
 let concrete_text (s : sentence) =
   let rand = Random.State.make [| s.line |] in
   let pick a = a.(Random.State.int rand (Array.length a)) in
@@ -388,7 +386,8 @@ let concrete_text (s : sentence) =
        | "COMMENT" ->
            Buffer.add_string buf (pick [| "! c"; "!"; "! é 😀 ENDRECORD"; "!\t!" |] ^ "\n")
        | "HEADER" -> Buffer.add_string buf "%%%\n  VERSION:1\n  LANGUAGE:ENGLISH\n%%%\n"
-       | "IDENT" when next = "VAR" || next = "PERS" -> Buffer.add_string buf (any_case "TASK")
+       | "TASK" -> Buffer.add_string buf (any_case "TASK")
+       | "REF" -> Buffer.add_string buf (any_case "REF")
        | "IDENT" ->
            incr fresh;
            Buffer.add_string buf (pick [| "v"; "é"; "Ab_"; "ÿØ" |] ^ string_of_int !fresh)
@@ -423,7 +422,7 @@ let token_names =
   let lex text =
     let decoded = Decode.decode text in
     let file = Source.register ~name:file_name ~line_starts:decoded.line_starts in
-    let lexer = Lexer.create file decoded in
+    let lexer = Lexer.create ~installed:true file decoded in
     let rec go acc =
       match Lexer.next lexer with
       | Parser.EOF, _, _ -> List.rev acc
@@ -440,14 +439,15 @@ let token_names =
     List.map (fun (t : Parser.token) ->
         match t with
         | IDENT _ -> "IDENT" | NUM _ -> "NUM" | STRING _ -> "STRING" | COMMENT _ -> "COMMENT"
-        | HEADER _ -> "HEADER"
+        | HEADER _ -> "HEADER" | TASK _ -> "TASK" | REF -> "REF"
         | t -> (match Hashtbl.find_opt fixed t with Some name -> name | None -> "?"))
       (lex text)
 
 let comment_in_record =
   "a comment may not stand on a line of its own inside RECORD ... ENDRECORD, except on the \
    last line (§2.10)"
-let empty_record = "a record definition has at least one record component (§2.14)"
+let empty_record =
+  "expected a record component: a record definition has at least one (§2.14); found ENDRECORD"
 
 (* The refusal the grammar's actions owe the sentence, if any: the first record whose items
    break §2.10 (a comment alone on its line that is not the last item) or §2.14 (no
@@ -478,6 +478,9 @@ let expected_refusal (s : sentence) =
   in
   find 0
 
+(* The sentences may hold REF (ch. 11), a word of the installed environment only. *)
+let installed = { Parse.default_options with installed = true }
+
 let random_sentences () =
   let sentences = Lazy.force sentences in
   if List.length sentences < 100 then Alcotest.failf "only %d sentences" (List.length sentences);
@@ -489,7 +492,7 @@ let random_sentences () =
        | names when names = Array.to_list s.tokens -> ()
        | names -> Alcotest.failf "sentence %d %S lexes as %s" s.line body (String.concat " " names)
        | exception Lexer.Error (_, m) -> Alcotest.failf "sentence %d %S: %s" s.line body m);
-      match parse_checked text, expected_refusal s with
+      match parse_checked ~options:installed text, expected_refusal s with
       | Error problem, _ -> Alcotest.failf "sentence %d %S: %s" s.line text problem
       | Ok (Ok _), None -> ()
       | Ok (Error d), Some message when d.error_class = Syntax_error && d.message = message ->
@@ -505,13 +508,13 @@ let random_sentences () =
 let round_trip () =
   let trees = List.filter_map (fun s ->
       let _, text = concrete_text s in
-      match Parse.parse_string ~name:file_name text with
+      match Parse.parse_string ~options:installed ~name:file_name text with
       | Ok m -> Some (s, text, m)
       | Error _ -> None) (Lazy.force sentences) in
   if List.length trees < 100 then Alcotest.failf "only %d sentences parse" (List.length trees);
   List.iter (fun (s, text, m) ->
       Option.iter (fun problem -> Alcotest.failf "sentence %d %S: %s" s.line text problem)
-        (round_trip_problem m))
+        (round_trip_problem ~options:installed m))
     trees
 
 (* ---------------------------------------------------------------- deep nesting *)

@@ -5,7 +5,10 @@
 open Rapid_syntax
 open Ast
 
-let parse_text text = Parse.parse_string ~name:"printed.mod" text
+(* Generated trees may hold the access mode REF, which only the installed environment's
+   modules are read with (ch. 11); the generator never makes a name "ref". *)
+let parse_text text =
+  Parse.parse_string ~options:{ Parse.default_options with installed = true } ~name:"printed.mod" text
 
 (* [Ok ()] or a message that shows what went wrong. *)
 let round_trip (m : module_declaration) =
@@ -103,7 +106,7 @@ let all_constructors =
     "record_component", [ "Record_component"; "Component_comment" ];
     "type_definition",
     [ "Record_definition"; "Alias_definition"; "Type_comment"; "TDN_placeholder" ];
-    "access_mode", [ "In"; "Var_mode"; "Pers_mode"; "Inout" ];
+    "access_mode", [ "In"; "Var_mode"; "Pers_mode"; "Inout"; "Ref_mode" ];
     "array_parameter", [ "Not_array"; "Conformant"; "DIM_placeholder" ];
     "parameter_declaration", [ "Parameter"; "Switch" ];
     "alternative", [ "Alternative"; "ALT_placeholder" ];
@@ -231,7 +234,9 @@ let census see (m : module_declaration) =
     | Parameter p ->
         see "parameter_declaration" "Parameter";
         see "access_mode"
-          (match p.mode with In -> "In" | Var_mode -> "Var_mode" | Pers_mode -> "Pers_mode" | Inout -> "Inout");
+          (match p.mode with
+           | In -> "In" | Var_mode -> "Var_mode" | Pers_mode -> "Pers_mode" | Inout -> "Inout"
+           | Ref_mode -> "Ref_mode");
         see "array_parameter"
           (match p.array with
            | Not_array -> "Not_array" | Conformant _ -> "Conformant" | DIM_placeholder -> "DIM_placeholder");

@@ -1,21 +1,27 @@
 type expectation =
   | Accepted
-  | Refused of { error_class : string; line : int; col : int }
+  | Refused of { error_class : string; file : string option; line : int; col : int }
 
 type t = {
   path : string;
+  files : string list;
   sections : string list;
   expectation : expectation option;
   strict : bool;
   description : string option;
   problems : string list;
+  format : string;
 }
 
-let error_classes = [ "lexical-error"; "syntax-error"; "fatal-error" ]
+let known_formats = [ "1"; "2" ]
+let checks_semantics case = case.format = "2"
+
+let error_classes = [ "lexical-error"; "syntax-error"; "fatal-error"; "semantic-error" ]
 
 let expectation_to_string = function
   | Accepted -> "ok"
-  | Refused { error_class; line; col } -> Printf.sprintf "%s %d:%d" error_class line col
+  | Refused { error_class; file = None; line; col } -> Printf.sprintf "%s %d:%d" error_class line col
+  | Refused { error_class; file = Some f; line; col } -> Printf.sprintf "%s %s:%d:%d" error_class f line col
 
 (* A directive is a line whose first non-blank characters are '!', optional blanks, '@'. *)
 let directive line =
@@ -27,8 +33,7 @@ let directive line =
     incr i;
     skip_blanks ();
     if !i < n && line.[!i] = '@' then begin
-      let rest = String.sub line (!i + 1) (n - !i - 1) in
-      let rest = String.trim rest in
+      let rest = String.trim (String.sub line (!i + 1) (n - !i - 1)) in
       match String.index_opt rest ' ' with
       | None -> Some (rest, "")
       | Some k -> Some (String.sub rest 0 k, String.trim (String.sub rest k (String.length rest - k)))
@@ -38,37 +43,54 @@ let directive line =
   else None
 
 let parse_expect value =
+  let position error_class p =
+    let bad () = Error (Printf.sprintf "bad position %S in @expect" p) in
+    let make file l c =
+      match int_of_string_opt l, int_of_string_opt c with
+      | Some line, Some col when line > 0 && col > 0 -> Ok (Refused { error_class; file; line; col })
+      | _ -> bad ()
+    in
+    match String.split_on_char ':' p with
+    | [ l; c ] -> make None l c
+    | [ f; l; c ] when f <> "" -> make (Some f) l c
+    | _ -> bad ()
+  in
   match String.split_on_char ' ' value |> List.filter (( <> ) "") with
   | [ "ok" ] -> Ok Accepted
-  | [ error_class; position ] when List.mem error_class error_classes -> (
-      match String.split_on_char ':' position with
-      | [ l; c ] -> (
-          match int_of_string_opt l, int_of_string_opt c with
-          | Some line, Some col when line > 0 && col > 0 -> Ok (Refused { error_class; line; col })
-          | _ -> Error (Printf.sprintf "bad position %S in @expect" position))
-      | _ -> Error (Printf.sprintf "bad position %S in @expect" position))
+  | [ error_class; p ] when List.mem error_class error_classes -> position error_class p
   | _ -> Error (Printf.sprintf "cannot read @expect %S" value)
 
+let is_module_file f = Filename.check_suffix f ".mod" || Filename.check_suffix f ".sys"
+
 let read path =
-  let empty = { path; sections = []; expectation = None; strict = false; description = None;
-                problems = [] } in
-  match In_channel_compat.read_lines path with
-  | Error message -> { empty with problems = [ message ] }
-  | Ok lines ->
-      let case = List.fold_left (fun case line ->
-          match directive line with
-          | None -> case
-          | Some ("section", v) when v <> "" -> { case with sections = case.sections @ [ v ] }
-          | Some ("expect", v) -> (
-              match parse_expect v, case.expectation with
-              | Ok e, None -> { case with expectation = Some e }
-              | Ok _, Some _ -> { case with problems = case.problems @ [ "more than one @expect" ] }
-              | Error m, _ -> { case with problems = case.problems @ [ m ] })
-          | Some ("options", "strict") -> { case with strict = true }
-          | Some ("description", v) -> { case with description = Some v }
-          | Some (key, v) ->
-              { case with problems = case.problems @ [ Printf.sprintf "unknown directive @%s %s" key v ] })
-          empty lines
-      in
-      let case = if case.expectation = None then { case with problems = case.problems @ [ "no @expect directive" ] } else case in
-      if case.sections = [] then { case with problems = case.problems @ [ "no @section directive" ] } else case
+  let files =
+    if Sys.file_exists path && Sys.is_directory path then
+      Sys.readdir path |> Array.to_list |> List.filter is_module_file |> List.sort compare
+      |> List.map (Filename.concat path)
+    else [ path ]
+  in
+  let empty = { path; files; sections = []; expectation = None; strict = false; description = None;
+                problems = []; format = "1" } in
+  let add_problem case m = { case with problems = case.problems @ [ m ] } in
+  let case = List.fold_left (fun case file ->
+      match In_channel_compat.read_lines file with
+      | Error message -> add_problem case message
+      | Ok lines ->
+          List.fold_left (fun case line ->
+              match directive line with
+              | None -> case
+              | Some ("section", v) when v <> "" -> { case with sections = case.sections @ [ v ] }
+              | Some ("expect", v) -> (
+                  match parse_expect v, case.expectation with
+                  | Ok e, None -> { case with expectation = Some e }
+                  | Ok _, Some _ -> add_problem case "more than one @expect"
+                  | Error m, _ -> add_problem case m)
+              | Some ("options", "strict") -> { case with strict = true }
+              | Some ("description", v) -> { case with description = Some v }
+              | Some ("format", v) -> { case with format = v }
+              | Some (k, v) -> add_problem case (Printf.sprintf "unknown directive @%s %s" k v))
+            case lines) empty files
+  in
+  let case = if files = [] then add_problem case "a .task folder without modules" else case in
+  let case = if case.expectation = None then add_problem case "no @expect directive" else case in
+  if case.sections = [] then add_problem case "no @section directive" else case

@@ -1,25 +1,34 @@
-(** A case of the conformance suite (spec/README.md, format 1): a RAPID file and the directives
-    written in its comments. *)
+(** A case of the conformance suite (spec/README.md): one RAPID file, or a folder [NAME.task]
+    whose files are the modules of one task buffer, and the directives written in its comments. *)
 
 type expectation =
   | Accepted                                       (** [! @expect ok] *)
-  | Refused of { error_class : string; line : int; col : int }
-      (** [! @expect lexical-error 4:10] and the like: the class as spelled in the directive *)
+  | Refused of { error_class : string; file : string option; line : int; col : int }
+      (** [! @expect lexical-error 4:10], [! @expect semantic-error b.mod:4:10]: the class as
+          spelled in the directive; the file (its base name) in a multi-module case *)
 
 type t = {
-  path : string;
+  path : string;                  (** the file, or the [.task] folder *)
+  files : string list;            (** the modules, in name order *)
   sections : string list;         (** [! @section 2.5], in order *)
   expectation : expectation option;
   strict : bool;                  (** [! @options strict] *)
   description : string option;
   problems : string list;         (** malformed or conflicting directives *)
+  format : string;                (** [! @format N]; "1" when absent *)
 }
 
 val read : string -> t
-(** Reads the directives of the file at this path. A file that cannot be read gives a case with
-    a problem. *)
+(** Reads the directives of the case at this path (a file, or a [.task] folder). A case that
+    cannot be read has a problem. *)
+
+val known_formats : string list
+(** The formats this runner reads: ["1"] (the front end) and ["2"] (the static semantics too). *)
+
+val checks_semantics : t -> bool
+(** Format 2: the case is also checked by the static semantics. *)
 
 val error_classes : string list
-(** The classes an [@expect] may name: [lexical-error], [syntax-error], [fatal-error]. *)
+(** The classes an [@expect] may name. *)
 
 val expectation_to_string : expectation -> string

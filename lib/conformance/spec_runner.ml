@@ -1,6 +1,10 @@
 open Rapid_syntax
 
-type outcome = { case : Spec_case.t; passed : bool; detail : string }
+type verdict = Passed | Failed | Skipped
+type outcome = { case : Spec_case.t; verdict : verdict; detail : string }
+
+let pass case detail = { case; verdict = Passed; detail }
+let fail case detail = { case; verdict = Failed; detail }
 
 let class_directive_name = function
   | Diagnostic.Lexical_error -> "lexical-error"
@@ -9,34 +13,55 @@ let class_directive_name = function
   | Fatal_static_error -> "fatal-error"
   | File_error -> "file-error"
 
+(* The refusal a case expects, against the first error found. *)
+let compare_refusal case expected (d : Diagnostic.t) =
+  match expected with
+  | Spec_case.Accepted -> fail case ("expected ok, got " ^ Diagnostic.to_string d)
+  | Refused { error_class; file; line; col } ->
+      let p = Source.start d.region in
+      let got = class_directive_name d.error_class in
+      let got_file = match Source.file_of d.region with Some f -> Filename.basename (Source.name f) | None -> "" in
+      let file_ok = match file with None -> true | Some f -> f = got_file in
+      if got = error_class && file_ok && p.line = line && p.col = col then pass case (Diagnostic.to_string d)
+      else
+        fail case (Printf.sprintf "expected %s, got %s %s:%d:%d (%s)"
+                     (Spec_case.expectation_to_string expected) got got_file p.line p.col
+                     (Diagnostic.to_string d))
+
+let accepted case expected =
+  match expected with
+  | Spec_case.Accepted -> pass case "ok"
+  | Refused _ ->
+      fail case (Printf.sprintf "expected %s, but the case was accepted"
+                   (Spec_case.expectation_to_string expected))
+
 let run_case (case : Spec_case.t) =
-  if case.problems <> [] then { case; passed = false; detail = String.concat "; " case.problems }
+  if not (List.mem case.format Spec_case.known_formats) then
+    { case; verdict = Skipped;
+      detail = Printf.sprintf "format %s (this runner reads formats %s)" case.format
+          (String.concat ", " Spec_case.known_formats) }
+  else if case.problems <> [] then fail case (String.concat "; " case.problems)
   else
-    let options = { Parse.strict = case.strict } in
-    let result = Parse.parse_file ~options case.path in
+    let options = { Parse.default_options with strict = case.strict } in
     let expected = Option.get case.expectation in
-    match expected, result with
-    | Accepted, Ok _ -> { case; passed = true; detail = "ok" }
-    | Accepted, Error d ->
-        { case; passed = false; detail = "expected ok, got " ^ Diagnostic.to_string d }
-    | Refused _, Ok _ ->
-        { case; passed = false;
-          detail = Printf.sprintf "expected %s, but the module was accepted"
-              (Spec_case.expectation_to_string expected) }
-    | Refused { error_class; line; col }, Error d ->
-        let p = Source.start d.region in
-        let got = class_directive_name d.error_class in
-        if got = error_class && p.line = line && p.col = col then
-          { case; passed = true; detail = Diagnostic.to_string d }
-        else
-          { case; passed = false;
-            detail = Printf.sprintf "expected %s, got %s %d:%d (%s)"
-                (Spec_case.expectation_to_string expected) got p.line p.col
-                (Diagnostic.to_string d) }
+    let results = List.map (Parse.parse_file ~options) case.files in
+    match List.find_map (function Error d -> Some d | Ok _ -> None) results with
+    | Some d -> compare_refusal case expected d
+    | None when not (Spec_case.checks_semantics case) -> accepted case expected
+    | None -> (
+        let modules = List.filter_map Result.to_option results in
+        match Rapid_typing.Installed_env.modules () with
+        | Error d -> fail case ("the installed environment does not parse: " ^ Diagnostic.to_string d)
+        | Ok installed -> (
+            let result = Rapid_typing.Check.check_task ~installed modules in
+            match Rapid_typing.Check.errors result with
+            | [] -> accepted case expected
+            | first :: _ -> compare_refusal case expected (Rapid_typing.Report.to_diagnostic first)))
 
 let find_cases dir =
   let rec walk acc path =
-    if Sys.is_directory path then
+    if Sys.is_directory path && Filename.check_suffix path ".task" then path :: acc
+    else if Sys.is_directory path then
       Sys.readdir path |> Array.to_list |> List.sort compare
       |> List.fold_left (fun acc name -> walk acc (Filename.concat path name)) acc
     else if Filename.check_suffix path ".mod" then path :: acc
@@ -57,16 +82,21 @@ let run ?(verbose = false) out dir =
       let sections = if o.case.sections = [] then [ "(none)" ] else o.case.sections in
       List.iter (fun s ->
           let p, f = Option.value (Hashtbl.find_opt by_section s) ~default:(0, 0) in
-          Hashtbl.replace by_section s (if o.passed then (p + 1, f) else (p, f + 1))) sections;
-      if verbose || not o.passed then
-        Format.fprintf out "%s %s: %s@." (if o.passed then "PASS" else "FAIL") o.case.path o.detail)
+          match o.verdict with
+          | Passed -> Hashtbl.replace by_section s (p + 1, f)
+          | Failed -> Hashtbl.replace by_section s (p, f + 1)
+          | Skipped -> ()) sections;
+      let label = match o.verdict with Passed -> "PASS" | Failed -> "FAIL" | Skipped -> "SKIP" in
+      if verbose || o.verdict <> Passed then
+        Format.fprintf out "%s %s: %s@." label o.case.path o.detail)
     outcomes;
   let sections = Hashtbl.fold (fun s _ acc -> s :: acc) by_section [] |> List.sort compare_sections in
   Format.fprintf out "@.%-10s %7s %7s@." "section" "passed" "failed";
   List.iter (fun s ->
       let p, f = Hashtbl.find by_section s in
       Format.fprintf out "%-10s %7d %7d@." s p f) sections;
-  let passed = List.length (List.filter (fun o -> o.passed) outcomes) in
-  let failed = List.length outcomes - passed in
-  Format.fprintf out "@.%d passed, %d failed@." passed failed;
+  let count v = List.length (List.filter (fun o -> o.verdict = v) outcomes) in
+  let passed = count Passed and failed = count Failed and skipped = count Skipped in
+  if skipped = 0 then Format.fprintf out "@.%d passed, %d failed@." passed failed
+  else Format.fprintf out "@.%d passed, %d failed, %d skipped@." passed failed skipped;
   (passed, failed)

@@ -1,7 +1,8 @@
 (** Running the conformance suite: every [.mod] file below a folder, checked against its
     directives, with a summary per manual section and the line [N passed, N failed]. *)
 
-type outcome = { case : Spec_case.t; passed : bool; detail : string }
+type verdict = Passed | Failed | Skipped   (** skipped: a format this runner does not read *)
+type outcome = { case : Spec_case.t; verdict : verdict; detail : string }
 
 val run_case : Spec_case.t -> outcome
 (** Parses the case's file (in strict mode when it says so) and compares with its expectation. *)

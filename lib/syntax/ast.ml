@@ -159,7 +159,7 @@ and type_definition_desc =
   | TDN_placeholder
 
 (* §5.2 *)
-type access_mode = In | Var_mode | Pers_mode | Inout
+type access_mode = In | Var_mode | Pers_mode | Inout | Ref_mode   (* REF: installed routines only (ch. 11) *)
 
 type array_parameter =
   | Not_array

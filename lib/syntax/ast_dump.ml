@@ -230,6 +230,7 @@ let type_definition b ind (t : type_definition) =
 
 let access_mode = function
   | In -> "In" | Var_mode -> "Var_mode" | Pers_mode -> "Pers_mode" | Inout -> "Inout"
+  | Ref_mode -> "Ref_mode"
 
 let parameter_declaration b (p : parameter_declaration) =
   match p.it with

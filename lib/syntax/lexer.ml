@@ -4,21 +4,164 @@ open Parser
 
 exception Error of Source.region * string
 
+(* Speed and memory (bench/README.md). Sedlex's own buffer ([Sedlexing.Utf8.from_string])
+   decodes the whole text into two arrays of 8 bytes per character before the first token, and
+   compares every character it reads with a polymorphic equality. The rules below run instead
+   on [Sedlexing], a buffer that reads the UTF-8 text in place: sedlex documents this use
+   (sedlexing.mli: "bind this module to the name Sedlexing"). Lexemes are then plain
+   substrings of the text, and names and literals are looked up in [Names] without first
+   building the string. *)
+
+(* The buffer: positions are counted in characters, as sedlex counts them and as every region
+   of the tree is (Source); the byte offset of each is kept alongside. *)
+module Sedlexing = struct
+  type lexbuf = {
+    text : string;                  (* UTF-8 *)
+    mutable pos : int;              (* byte offset of the next character *)
+    mutable pos_char : int;         (* ... and its character offset *)
+    mutable start : int;            (* the current lexeme's first byte *)
+    mutable start_char : int;
+    mutable marked : int;           (* where [backtrack] returns to *)
+    mutable marked_char : int;
+    mutable marked_value : int;
+  }
+
+  let from_string text =
+    { text; pos = 0; pos_char = 0; start = 0; start_char = 0; marked = 0; marked_char = 0;
+      marked_value = -1 }
+
+  (* The code point at byte [i] and its length in bytes. Decode hands over valid UTF-8; a
+     byte that does not begin a valid sequence is taken as the Latin-1 character it would be,
+     so that no text makes the lexer fail on its own account. *)
+  let decode text i =
+    let n = String.length text in
+    let c = Char.code (String.unsafe_get text i) in
+    let cont k = if i + k < n then Char.code (String.unsafe_get text (i + k)) lxor 0x80 else 0xFF in
+    if c < 0xC2 then (c, 1)
+    else if c < 0xE0 then
+      let c1 = cont 1 in
+      if c1 < 0x40 then (((c land 0x1F) lsl 6) lor c1, 2) else (c, 1)
+    else if c < 0xF0 then
+      let c1 = cont 1 and c2 = cont 2 in
+      let code = ((c land 0x0F) lsl 12) lor (c1 lsl 6) lor c2 in
+      if c1 < 0x40 && c2 < 0x40 && code >= 0x800 && (code < 0xD800 || code > 0xDFFF)
+      then (code, 3) else (c, 1)
+    else if c < 0xF5 then
+      let c1 = cont 1 and c2 = cont 2 and c3 = cont 3 in
+      let code = ((c land 0x07) lsl 18) lor (c1 lsl 12) lor (c2 lsl 6) lor c3 in
+      if c1 < 0x40 && c2 < 0x40 && c3 < 0x40 && code >= 0x10000 && code <= 0x10FFFF
+      then (code, 4) else (c, 1)
+    else (c, 1)
+
+  (* What sedlex's automata call: the next code point, or -1 at the end of the text. *)
+  let __private__next_int b =
+    let p = b.pos in
+    if p >= String.length b.text then -1
+    else begin
+      let c = Char.code (String.unsafe_get b.text p) in
+      b.pos_char <- b.pos_char + 1;
+      if c < 0x80 then begin b.pos <- p + 1; c end
+      else begin
+        let code, width = decode b.text p in
+        b.pos <- p + width;
+        code
+      end
+    end
+
+  let start b =
+    b.start <- b.pos; b.start_char <- b.pos_char;
+    b.marked <- b.pos; b.marked_char <- b.pos_char; b.marked_value <- -1
+
+  let mark b value = b.marked <- b.pos; b.marked_char <- b.pos_char; b.marked_value <- value
+
+  let backtrack b = b.pos <- b.marked; b.pos_char <- b.marked_char; b.marked_value
+
+  let lexeme_start b = b.start_char
+  let lexeme_end b = b.pos_char
+  let lexeme_length b = b.pos_char - b.start_char
+  let loc b = (b.start_char, b.pos_char)
+  let first_char b = Uchar.of_int (fst (decode b.text b.start))
+end
+
+(* One copy of each spelling: CAD modules repeat the same names and short literals (tool0,
+   9E+09) hundreds of thousands of times. The table is keyed by a stretch of the text, so a
+   spelling already seen costs no allocation; it stops growing at [max_names], after which new
+   spellings are simply not shared. *)
+module Names = struct
+  type t = { mutable keys : string array; mutable count : int }
+
+  let max_names = 100_000
+
+  let create () = { keys = Array.make 4096 ""; count = 0 }
+
+  let hash text start stop =
+    let h = ref 0 in
+    for i = start to stop - 1 do
+      h := (!h lxor Char.code (String.unsafe_get text i)) * 0x100000001B3
+    done;
+    !h lxor (!h lsr 31)
+
+  (* Top-level recursion, not a local closure: this runs for every name and literal. *)
+  let rec same_from key text start stop i =
+    i >= stop - start
+    || (String.unsafe_get key i = String.unsafe_get text (start + i)
+        && same_from key text start stop (i + 1))
+
+  let same key text start stop =
+    String.length key = stop - start && same_from key text start stop 0
+
+  (* Linear probing in a table kept at most half full; "" marks an empty slot (the empty
+     string is never a name or a literal). *)
+  let rec slot keys mask text start stop i =
+    let key = Array.unsafe_get keys i in
+    if String.length key = 0 || same key text start stop then i
+    else slot keys mask text start stop ((i + 1) land mask)
+
+  let grow t =
+    let keys = Array.make (2 * Array.length t.keys) "" in
+    let mask = Array.length keys - 1 in
+    Array.iter (fun key ->
+        let n = String.length key in
+        if n > 0 then begin
+          keys.(slot keys mask key 0 n (hash key 0 n land mask)) <- key
+        end) t.keys;
+    t.keys <- keys
+
+  let find_or_add t text start stop =
+    let mask = Array.length t.keys - 1 in
+    let i = slot t.keys mask text start stop (hash text start stop land mask) in
+    let key = Array.unsafe_get t.keys i in
+    if String.length key > 0 then key
+    else begin
+      let s = String.sub text start (stop - start) in
+      if t.count < max_names then begin
+        t.keys.(i) <- s;
+        t.count <- t.count + 1;
+        if 2 * t.count > Array.length t.keys then grow t
+      end;
+      s
+    end
+end
+
 type t = {
   buf : Sedlexing.lexbuf;
   file : Source.file;
-  names : (string, string) Hashtbl.t;   (* one copy of each spelling: CAD modules repeat them *)
+  names : Names.t;
   mutable token_start : int;            (* start of a token read by a sub-lexer, else -1 *)
+  mutable last_stop : Lexing.position;  (* where the previous token stopped *)
+  installed : bool;                     (* reading the installed environment: REF is a word *)
 }
 
-let create file (decoded : Decode.t) =
-  { buf = Sedlexing.Utf8.from_string decoded.text; file; names = Hashtbl.create 1024;
-    token_start = -1 }
+let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
 
-let intern lx s =
-  match Hashtbl.find_opt lx.names s with
-  | Some s -> s
-  | None -> if Hashtbl.length lx.names < 100_000 then Hashtbl.add lx.names s s; s
+let create ?(installed = false) file (decoded : Decode.t) =
+  { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1;
+    last_stop = position (-1); installed }
+
+(* The current lexeme, as UTF-8, without its first [skip] bytes. *)
+let text_of ?(skip = 0) lx =
+  let b = lx.buf in
+  String.sub b.text (b.start + skip) (b.pos - b.start - skip)
 
 let error_at lx start stop message = raise (Error (Source.region lx.file start stop, message))
 
@@ -53,6 +196,94 @@ let placeholders =
     "<DIM>", DIM_PH; "<SMT>", SMT_PH; "<VAR>", VAR_PH; "<EIT>", EIT_PH; "<CSE>", CSE_PH;
     "<EXP>", EXP_PH; "<ARG>", ARG_PH; "<ID>", ID_PH ];
   table
+
+(* [reserved_words] looked up in a stretch of the text, folding letter case as the bytes are
+   read instead of building the upper-case spelling of every identifier. *)
+module Reserved = struct
+  let size = 256
+  let keys = Array.make size ""
+  let tokens = Array.make size EOF
+  let max_length = Hashtbl.fold (fun w _ m -> max m (String.length w)) reserved_words 0
+
+  let upper c = if c >= 'a' && c <= 'z' then Char.unsafe_chr (Char.code c - 32) else c
+
+  let hash text start stop =
+    let h = ref 0 in
+    for i = start to stop - 1 do
+      h := (!h lxor Char.code (upper (String.unsafe_get text i))) * 0x100000001B3
+    done;
+    (!h lxor (!h lsr 31)) land (size - 1)
+
+  let () =
+    Hashtbl.iter (fun w t ->
+        let i = ref (hash w 0 (String.length w)) in
+        while keys.(!i) <> "" do i := (!i + 1) land (size - 1) done;
+        keys.(!i) <- w;
+        tokens.(!i) <- t) reserved_words
+
+  let rec same_from key text start stop i =
+    i >= stop - start
+    || (String.unsafe_get key i = upper (String.unsafe_get text (start + i))
+        && same_from key text start stop (i + 1))
+
+  let rec probe text start stop i =
+    let key = Array.unsafe_get keys i in
+    if String.length key = 0 then -1
+    else if String.length key = stop - start && same_from key text start stop 0 then i
+    else probe text start stop ((i + 1) land (size - 1))
+
+  (* The slot of the reserved word spelt by [text.[start..stop-1]], or -1. *)
+  let find text start stop =
+    if stop - start > max_length then -1 else probe text start stop (hash text start stop)
+end
+
+(* A sufficient condition for [Num_literal.of_text] to accept a decimal literal, checked
+   without building numbers: a value m x 10^e whose leading digit stands at decimal exponent
+   -322 .. 307 lies strictly between 2^-1075 and 2^1024 - 2^970, the bounds of §2.5's IEEE 754
+   range as Num_literal states them, and zero is always in range. Anything else (based
+   literals, long exponents, values near the bounds) goes to [Num_literal.of_text], so the
+   literals accepted and the messages given are its own. *)
+let plainly_in_range text start stop =
+  let based =
+    stop - start >= 2 && String.unsafe_get text start = '0'
+    && (match String.unsafe_get text (start + 1) with
+        | 'x' | 'X' | 'o' | 'O' | 'b' | 'B' | 'd' | 'D' -> true
+        | _ -> false)
+  in
+  if based then false
+  else begin
+    let i = ref start and significant = ref 0 and fraction = ref 0 and dot = ref false in
+    let continue = ref true in
+    while !continue && !i < stop do
+      (match String.unsafe_get text !i with
+       | '.' -> dot := true
+       | '0' .. '9' as c ->
+           if !dot then incr fraction;
+           if !significant > 0 || c <> '0' then incr significant
+       | _ -> continue := false);
+      if !continue then incr i
+    done;
+    if !significant = 0 then true
+    else begin
+      (* [!i] is at the exponent's 'E', or at [stop]. *)
+      let j = ref (!i + 1) and negative = ref false in
+      if !i < stop && !j < stop then begin
+        match String.unsafe_get text !j with
+        | '-' -> negative := true; incr j
+        | '+' -> incr j
+        | _ -> ()
+      end;
+      if !i < stop && stop - !j > 6 then false
+      else begin
+        let e = ref 0 in
+        if !i < stop then
+          for k = !j to stop - 1 do e := (10 * !e) + Char.code (String.unsafe_get text k) - 48 done;
+        let e = if !negative then - !e else !e in
+        let adjusted = e - !fraction + !significant - 1 in
+        adjusted >= -322 && adjusted <= 307
+      end
+    end
+  end
 
 let max_identifier_length = 32       (* §2.3 *)
 let max_string_bytes = 80            (* §2.7, §2.13 *)
@@ -108,7 +339,7 @@ let rec string_body lx start raw bytes =
   | "\"\"" -> Buffer.add_string raw "\"\""; Buffer.add_char bytes '"'; string_body lx start raw bytes
   | "\\\\" -> Buffer.add_string raw "\\\\"; Buffer.add_char bytes '\\'; string_body lx start raw bytes
   | '\\', hex_digit, hex_digit ->
-      let s = Sedlexing.Utf8.lexeme buf in
+      let s = text_of lx in
       Buffer.add_string raw s;
       Buffer.add_char bytes (Char.chr (int_of_string ("0x" ^ String.sub s 1 2)));
       string_body lx start raw bytes
@@ -119,8 +350,10 @@ let rec string_body lx start raw bytes =
   | newline | eof ->
       let stop, _ = Sedlexing.loc buf in
       error_at lx start stop "string literal not closed by '\"' before the end of the line (§2.7)"
-  | any ->
-      let s = Sedlexing.Utf8.lexeme buf in
+  (* A run of plain characters at once: every character the run stops at is one that a rule
+     above takes. *)
+  | Plus (Compl ('"' | '\\' | '\n' | '\r')) ->
+      let s = text_of lx in
       Buffer.add_string raw s; Buffer.add_string bytes s; string_body lx start raw bytes
   | _ -> error lx "illegal character in string literal (§2.7)"
 
@@ -130,7 +363,7 @@ let rec header_lines lx start acc =
   match%sedlex buf with
   | Star (' ' | '\t'), "%%%", Star (' ' | '\t'), (newline | eof) -> List.rev acc
   | Star (Compl ('\n' | '\r')), newline ->
-      let line = Sedlexing.Utf8.lexeme buf in
+      let line = text_of lx in
       let line = String.sub line 0 (String.length line - (if String.length line >= 2 && String.sub line (String.length line - 2) 2 = "\r\n" then 2 else 1)) in
       header_lines lx start (line :: acc)
   | _ ->
@@ -142,35 +375,48 @@ let rec token lx =
   let buf = lx.buf in
   match%sedlex buf with
   | Plus white_space -> token lx
-  | '!', Star (Compl ('\n' | '\r')) ->
-      let s = Sedlexing.Utf8.lexeme buf in
-      COMMENT (String.sub s 1 (String.length s - 1))
+  | '!', Star (Compl ('\n' | '\r')) -> COMMENT (text_of ~skip:1 lx)
   | "%%%", Star (' ' | '\t'), newline ->
       let start = Sedlexing.lexeme_start buf in
       lx.token_start <- start;
       if start <> 0 then error lx "a %%% header block may stand only at the start of a file";
       HEADER (header_lines lx start [])
   | num_literal ->
-      let s = Sedlexing.Utf8.lexeme buf in
-      (match Num_literal.of_text s with
-       | Ok _ -> NUM (intern lx s)
-       | Error message -> error lx message)
+      let text = buf.text and start = buf.start and stop = buf.pos in
+      (* Short literals repeat (0, 1, 9E+09); coordinates such as 1125.58 seldom do, and
+         would only fill the table. *)
+      let spelling () =
+        if stop - start <= 5 then Names.find_or_add lx.names text start stop
+        else String.sub text start (stop - start)
+      in
+      if plainly_in_range text start stop then NUM (spelling ())
+      else begin
+        match Num_literal.of_text (String.sub text start (stop - start)) with
+        | Ok _ -> NUM (spelling ())
+        | Error message -> error lx message
+      end
   (* Listed after [num_literal] so that a match of equal length is a literal: [2E5] is one
      literal, [2E5x] and [12abc] are not separated (§2.2). *)
   | num_literal, (letter | digit | '_') ->
       error lx "a numeric literal must be separated from a following identifier, reserved \
                 word or numeric literal by white space (§2.2)"
   | ident ->
-      let s = Sedlexing.Utf8.lexeme buf in
-      (match Hashtbl.find_opt reserved_words (String.uppercase_ascii s) with
-       | Some t -> t
-       | None ->
-           if Sedlexing.lexeme_length buf > max_identifier_length then
-             error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
-                         max_identifier_length);
-           IDENT (intern lx s))
+      let text = buf.text and start = buf.start and stop = buf.pos in
+      let reserved = Reserved.find text start stop in
+      if reserved >= 0 then Reserved.tokens.(reserved)
+      else begin
+        if Sedlexing.lexeme_length buf > max_identifier_length then
+          error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
+                      max_identifier_length);
+        let name = Names.find_or_add lx.names text start stop in
+        (* TASK (§2.18) and, in the installed environment, REF (ch. 11) are not reserved
+           words but begin constructs of their own: the parser accepts TASK as a name too. *)
+        if stop - start = 4 && String.lowercase_ascii name = "task" then TASK name
+        else if lx.installed && stop - start = 3 && String.lowercase_ascii name = "ref" then REF
+        else IDENT name
+      end
   | placeholder ->
-      Hashtbl.find placeholders (String.uppercase_ascii (Sedlexing.Utf8.lexeme buf))
+      Hashtbl.find placeholders (String.uppercase_ascii (text_of lx))
   | '"' ->
       let start = Sedlexing.lexeme_start buf in
       lx.token_start <- start;
@@ -209,7 +455,7 @@ let rec token lx =
   | '|' -> BAR
   | eof -> EOF
   | any ->
-      let c = (Sedlexing.lexeme buf).(0) in
+      let c = Sedlexing.first_char buf in
       if Uchar.to_int c > 0xFF then
         error lx (Printf.sprintf "character %s is not in ISO 8859-1: outside comments and \
                                   string literals a module uses Latin-1 characters only (§2.1)"
@@ -217,11 +463,15 @@ let rec token lx =
       else error lx (Printf.sprintf "illegal character %s (§2.1)" (describe_char c))
   | _ -> error lx "illegal character (§2.1)"
 
-let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
-
+(* A token that starts where the previous one stopped shares its position record: in CAD
+   aggregates most tokens touch ([[1125.58,-0.7,...]]), and the parser's stack keeps these
+   records as long as it keeps the tokens. *)
 let next lx =
   lx.token_start <- -1;
   let t = token lx in
   let stop = Sedlexing.lexeme_end lx.buf in
   let start = if lx.token_start >= 0 then lx.token_start else Sedlexing.lexeme_start lx.buf in
-  (t, position start, position stop)
+  let startp = if start = lx.last_stop.pos_cnum then lx.last_stop else position start in
+  let stopp = position stop in
+  lx.last_stop <- stopp;
+  (t, startp, stopp)

@@ -4,6 +4,9 @@ type options = {
   strict : bool;
       (** refuse the extensions of doc/dialect.md (%%% header, byte-order mark, missing final
           newline) *)
+  installed : bool;
+      (** reading the installed environment (lib/typing/installed): REF is an access mode
+          (ch. 11) *)
 }
 
 val default_options : options

@@ -24,10 +24,10 @@
       a comment on a line of its own is refused unless it is the last line (§2.10); that is a
       matter of lines, checked in the action of [record_component_list].
 
-   3. Words that are not reserved. TASK (§2.18) and switch (§5.2) are identifiers to the lexer
-      (§2.4 does not list them). TASK is read as an IDENT followed by VAR or PERS and checked in
-      the action; a parameter declared with the type name "switch" and no access mode or array
-      part is a switch parameter.
+   3. Words that are not reserved. TASK (§2.18) and switch (§5.2) are not in §2.4's list. The
+      lexer gives TASK a token of its own, which [identifier] and [ident] accept wherever a name
+      may stand; a parameter declared with the type name "switch" and no access mode or array
+      part is a switch parameter. REF (ch. 11) is a token only in the installed environment.
 
    There are no precedence declarations: the grammar is stratified as in §3.1 and has no
    conflicts (menhir --explain reports none). *)
@@ -66,15 +66,10 @@ let check_record_comments header_line items =
         walk (line_of at) rest
     | { it = Record_component _; at } :: rest -> walk (Source.stop at).line rest
   in
-  walk header_line items;
-  if not (List.exists (function { it = Record_component _; _ } -> true | _ -> false) items) then
-    match items with
-    | [] -> ()
-    | { at; _ } :: _ ->
-        raise (Parse_context.Refused (at, "a record definition has at least one record component (§2.14)"))
+  walk header_line items
 %}
 
-%token <string> IDENT NUM COMMENT
+%token <string> IDENT NUM COMMENT TASK
 %token <Ast.string_literal> STRING
 %token <string list> HEADER
 %token ALIAS AND BACKWARD BREAK CASE CONNECT CONST CONTINUE DEFAULT DIV DO ELSE ELSEIF
@@ -82,6 +77,7 @@ let check_record_comments header_line items =
 %token EXIT FALSE FOR FROM FUNC GOTO IF INOUT LOCAL MOD MODULE NOSTEPIN NOT NOVIEW OR
 %token PERS PROC RAISE READONLY RECORD RETRY RETURN STEP SYSMODULE TEST THEN TO TRAP
 %token TRUE TRYNEXT UNDO VAR VIEWONLY WHILE WITH XOR
+%token REF
 %token TDN_PH DDN_PH RDN_PH PAR_PH ALT_PH DIM_PH SMT_PH VAR_PH EIT_PH CSE_PH EXP_PH ARG_PH ID_PH
 %token LBRACE RBRACE LPAREN RPAREN LBRACKET RBRACKET COMMA DOT EQ LT GT PLUS MINUS STAR
 %token SLASH COLON SEMICOLON BACKSLASH QUESTION ASSIGN NE GE LE PERCENT BAR
@@ -97,12 +93,16 @@ module_file:
 
 (* ---------------------------------------------------------------- §2.3 Identifiers *)
 
+(* TASK is not reserved (§2.4): the lexer marks the word, which begins a task declaration
+   (§2.18) where a data declaration may stand and is an identifier everywhere else. *)
 identifier:
   | s = IDENT { at $startpos $endpos (Ident s) }
+  | s = TASK  { at $startpos $endpos (Ident s) }
   | ID_PH     { at $startpos $endpos ID_placeholder }
 
 ident:
   | s = IDENT { at $startpos $endpos s }
+  | s = TASK  { at $startpos $endpos s }
 
 (* ---------------------------------------------------------------- §9.2 Module declaration *)
 
@@ -171,10 +171,15 @@ local_option:
 (* §2.14 <record definition> ::= RECORD <identifier> <record component list> ENDRECORD *)
 record_definition:
   | RECORD name = identifier components = record_component_list ENDRECORD
-    { check_record_comments (Source.stop name.at).line components; (name, components) }
+    { check_record_comments (Source.stop name.at).line components;
+      if not (List.exists (function { it = Record_component _; _ } -> true | _ -> false) components) then
+        refuse $startpos($4) $endpos($4)
+          "expected a record component: a record definition has at least one (§2.14); found ENDRECORD";
+      (name, components) }
 
 (* §2.14 <record component list> ::= <record component definition> { <record component
-   definition> }, with comments as elements (§2.10). *)
+   definition> }, with comments as elements (§2.10); a list of comments only is refused by
+   [record_definition] at ENDRECORD, where the missing component was due. *)
 record_component_list:
   | items = record_item+ { items }
 
@@ -211,16 +216,8 @@ data_declaration_item:
     { d $startpos $endpos (if local then Local else Global) }
   | local = local_option d = constant_declaration
     { d $startpos $endpos (if local then Local else Global) }
-  | task = IDENT d = variable_declaration
-    { if not (is_word "task" task) then
-        refuse $startpos(task) $endpos(task)
-          (Printf.sprintf "expected TASK, LOCAL, VAR, PERS or CONST before VAR, found %s (§2.18)" task);
-      d $startpos $endpos Task }
-  | task = IDENT d = persistent_declaration
-    { if not (is_word "task" task) then
-        refuse $startpos(task) $endpos(task)
-          (Printf.sprintf "expected TASK, LOCAL, VAR, PERS or CONST before PERS, found %s (§2.18)" task);
-      d $startpos $endpos Task }
+  | TASK d = variable_declaration { d $startpos $endpos Task }
+  | TASK d = persistent_declaration { d $startpos $endpos Task }
   | DDN_PH { at $startpos $endpos DDN_placeholder }
 
 (* §2.22 <variable declaration> ::= VAR <data type> <variable definition> ';' *)
@@ -697,11 +694,14 @@ parameter_declaration:
       | In, Ident s, Not_array when is_word "switch" s -> at $startpos $endpos (Switch name)
       | _ -> at $startpos $endpos (Parameter { mode; data_type; name; array }) }
 
+(* REF: only installed routines have it (ch. 11); the lexer makes the word a token only when it
+   reads the installed environment. *)
 access_mode:
   | (* empty *) { In }
   | VAR { Var_mode }
   | PERS { Pers_mode }
   | INOUT { Inout }
+  | REF { Ref_mode }
 
 array_part:
   | (* empty *) { Not_array }

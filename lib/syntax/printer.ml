@@ -269,7 +269,8 @@ let type_definition b ind (t : type_definition) =
 let parameter_declaration b (p : parameter_declaration) =
   match p.it with
   | Parameter p ->
-      str b (match p.mode with In -> "" | Var_mode -> "VAR " | Pers_mode -> "PERS " | Inout -> "INOUT ");
+      str b (match p.mode with
+         | In -> "" | Var_mode -> "VAR " | Pers_mode -> "PERS " | Inout -> "INOUT " | Ref_mode -> "REF ");
       identifier b p.data_type; str b " "; identifier b p.name;
       (match p.array with
        | Not_array -> ()

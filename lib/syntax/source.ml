@@ -32,9 +32,13 @@ let register ~name ~line_starts =
 let name f = f.name
 let no_region = 0
 
+(* Every node of the tree takes a region: the clamps compare ints directly, since Stdlib's
+   [min] and [max] are polymorphic and cost a call to the runtime's generic comparison. *)
+let clamp (lo : int) (hi : int) (x : int) = if x < lo then lo else if x > hi then hi else x
+
 let region f start stop =
-  let start = max 0 (min start max_start) in
-  let length = max 0 (min (stop - start) max_length) in
+  let start = clamp 0 max_start start in
+  let length = clamp 0 max_length (stop - start) in
   f.id lor (start lsl file_bits) lor (length lsl (file_bits + start_bits))
 
 let file_id r = r land max_files

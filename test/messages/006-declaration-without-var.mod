@@ -1,4 +1,4 @@
 MODULE t
-! @expect-message 3:7: syntax error: a name here can only be TASK, followed by VAR or PERS: a data declaration begins with VAR, PERS or CONST, after an optional LOCAL or TASK (§2.18); found the identifier counter
+! @expect-message 3:3: syntax error: expected a type definition, a data declaration (VAR, PERS or CONST, after an optional LOCAL or TASK), a routine declaration or ENDMODULE (§9.2, §2.18); found the identifier num
   num counter;
 ENDMODULE

@@ -1,4 +1,4 @@
 MODULE t
-! @expect-message 3:8: syntax error: a name here can only be TASK, followed by VAR or PERS: a data declaration begins with VAR, PERS or CONST, after an optional LOCAL or TASK (§2.18); found the identifier num
+! @expect-message 3:8: syntax error: expected VAR or PERS after TASK: TASK declares a task-global variable or persistent (§2.18); found the identifier num
   TASK num shared;
 ENDMODULE

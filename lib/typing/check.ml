@@ -1,0 +1,1392 @@
+(* The typing judgement. Each rule of doc/typing.md is one function or one match clause below,
+   and names itself in the reports it makes ([~rule]); the rule's section is cited with it. *)
+
+open Rapid_syntax
+open Ast
+module T = Types
+
+type options = { allow_unknown : bool }
+
+let default_options = { allow_unknown = false }
+
+type result = { reports : Report.t list }
+
+let errors r = List.filter (fun (d : Report.t) -> d.severity = Error) r.reports
+
+(* The type of an expression as the judgement infers it. A numeric expression built from
+   literals only has no type of its own: it is num, or dnum where the context wants dnum
+   (§2.5, §2.13). [Unknown] follows an error already reported (or an unknown name allowed by
+   --allow-unknown, or a placeholder): nothing more is said about it. *)
+type ty = Known of T.object_type | Numeric_literal | Unknown
+
+type ctx = {
+  report : Report.collector;
+  options : options;
+  installed : Env.table;
+  globals : Env.table;
+  pos_type : T.data_type;
+  orient_type : T.data_type;
+  switch_type : T.data_type;     (* the empty domain of a switch parameter (§5.2) *)
+  early_constants : (string, expression) Hashtbl.t;
+      (* module constants' initial values, known before their declarations are registered, so
+         that an array dimension may name a constant declared later or in another module *)
+}
+
+(* Where in a routine the judgement is. *)
+type place = {
+  scope : Env.scope;
+  routine : Env.routine option;          (* None: module-level declarations *)
+  in_error_handler : bool;
+  in_loop : bool;
+  labels : string list list;             (* labels of the enclosing statement lists, innermost first *)
+}
+
+let error ctx ~rule ~section region fmt =
+  Printf.ksprintf (Report.error ctx.report ~rule ~section region) fmt
+
+let key = String.lowercase_ascii
+
+(* The type of an object whose declared type could not be resolved (an error or, with
+   --allow-unknown, a warning was reported): every use of the object is then left unjudged. *)
+let unknown_type = T.Installed_atomic { atomic_name = "?"; atomic_class = Value; associated = None }
+let unknown_object_type = { T.base = unknown_type; dims = Scalar }
+let is_unknown (t : T.object_type) = t.base == unknown_type
+
+let name_of_identifier (i : identifier) = match i.it with Ident s -> Some s | ID_placeholder -> None
+
+let type_string = function
+  | Known t -> T.to_string t
+  | Numeric_literal -> "num"
+  | Unknown -> "?"
+
+(* ------------------------------------------------------------------ names *)
+
+(* §2.20, ch. 13: a name that is neither declared nor installed. *)
+let unknown_name ctx region what name =
+  if ctx.options.allow_unknown then
+    Report.warning ctx.report ~rule:"unknown-name" ~section:"2.20" region
+      (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown)" what name)
+  else
+    error ctx ~rule:"unknown-name" ~section:"2.20" region "unknown %s %s: it is neither declared nor installed" what name
+
+(* §2.11: <data type> ::= <identifier>, bound to a type definition. *)
+let resolve_type ctx place (id : identifier) : T.data_type option =
+  match id.it with
+  | ID_placeholder -> None
+  | Ident name -> (
+      match Env.lookup_type place.scope name with
+      | Some (Type t) ->
+          if t.t_type = T.Anytype && not place.scope.in_installed_module then begin
+            error ctx ~rule:"anytype-installed-only" ~section:"11" id.at
+              "anytype marks parameters of installed routines only: RAPID routines cannot use it";
+            None
+          end
+          else Some t.t_type
+      | Some o ->
+          error ctx ~rule:"data-type-name" ~section:"2.11" id.at "%s is a %s, not a data type" name
+            (Env.obj_kind_name o);
+          None
+      | None -> unknown_name ctx id.at "data type" name; None)
+
+(* ------------------------------------------------------------------ constants *)
+
+let constant_lookup ctx place name =
+  match Env.lookup place.scope name with
+  | Some (Data { d_kind = Constant; d_initial; _ }) -> d_initial
+  | Some _ -> None
+  | None -> Hashtbl.find_opt ctx.early_constants (key name)
+
+let const_value ctx place e = Const_eval.eval ~lookup:(constant_lookup ctx place) e
+
+(* ------------------------------------------------------------------ types of operands *)
+
+let is_scalar (t : T.object_type) = t.dims = T.Scalar
+
+let operand_of ctx : ty -> Tables.operand option = function
+  | Numeric_literal -> Some O_num
+  | Unknown -> None
+  | Known t when not (is_scalar t) -> None
+  | Known t -> (
+      match t.base with
+      | Num -> Some O_num
+      | Dnum -> Some O_dnum
+      | Bool -> Some O_bool
+      | String -> Some O_string
+      | b when T.same_data_type b ctx.pos_type -> Some O_pos
+      | b when T.same_data_type b ctx.orient_type -> Some O_orient
+      | _ -> None)
+
+let type_of_operand ctx : Tables.operand -> ty = function
+  | O_num -> Known (T.scalar Num)
+  | O_dnum -> Known (T.scalar Dnum)
+  | O_bool -> Known (T.scalar Bool)
+  | O_string -> Known (T.scalar String)
+  | O_pos -> Known (T.scalar ctx.pos_type)
+  | O_orient -> Known (T.scalar ctx.orient_type)
+  | O_any_value -> Unknown
+
+(* §2.16: a semi-value object in value context behaves as its associated value type. *)
+let in_value_context (t : T.object_type) =
+  match T.associated_value_type t.base with
+  | Some v -> { t with T.base = v }
+  | None -> t
+
+(* §2.17 for the judgement's types: a numeric literal matches num and dnum. *)
+let compatible ~expected (actual : ty) =
+  match actual with
+  | Unknown -> true
+  | Numeric_literal -> expected.T.base = T.Anytype
+                       || is_scalar expected && (expected.base = Num || expected.base = Dnum
+                                              || T.associated_value_type expected.base = Some Num
+                                              || T.associated_value_type expected.base = Some Dnum)
+  | Known t -> expected.base = T.Anytype || T.equal_types ~value_context:true expected t
+
+(* ------------------------------------------------------------------ data references *)
+
+(* What a reference denotes: its object (for the access-mode table) and its type. *)
+type reference = { object_ : Env.data_object option; rtype : ty }
+
+let rec reference ctx place (r : data_reference) : reference =
+  match r.it with
+  | VAR_placeholder -> { object_ = None; rtype = Unknown }
+  | Entire name -> (
+      match Env.lookup place.scope name.it with
+      | Some (Data d) -> { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
+      | Some o ->
+          error ctx ~rule:"data-object-name" ~section:"3.6" name.at "%s is a %s, not a data object"
+            name.it (Env.obj_kind_name o);
+          { object_ = None; rtype = Unknown }
+      | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
+  | Element (name, indexes) -> (
+      let whole = reference ctx place { r with it = Entire name } in
+      List.iter (fun i -> check_expression ctx place i (T.scalar Num)) indexes;
+      match whole.rtype with
+      | Known { base; dims = Sized sizes } when List.length sizes <> List.length indexes ->
+          error ctx ~rule:"index-count" ~section:"3.6" r.at
+            "%s has %d dimension(s), but %d index(es) are given" name.it (List.length sizes)
+            (List.length indexes);
+          { whole with rtype = Known (T.scalar base) }
+      | Known { base; dims = Conformant rank } when rank <> List.length indexes ->
+          error ctx ~rule:"index-count" ~section:"3.6" r.at
+            "%s has %d dimension(s), but %d index(es) are given" name.it rank (List.length indexes);
+          { whole with rtype = Known (T.scalar base) }
+      | Known { base; dims = Sized sizes } ->
+          List.iter2 (fun (i : expression) size ->
+              match Option.bind (const_value ctx place i) Const_eval.integer_of with
+              | Some n when Z.lt n Z.one || Z.gt n (Z.of_int size) ->
+                  error ctx ~rule:"index-range" ~section:"3.6" i.at
+                    "index %s is outside the dimension 1..%d of %s" (Z.to_string n) size name.it
+              | _ -> ()) indexes sizes;
+          { whole with rtype = Known (T.scalar base) }
+      | Known { base; dims = Conformant _ } -> { whole with rtype = Known (T.scalar base) }
+      | Known { dims = Scalar; _ } ->
+          error ctx ~rule:"index-not-array" ~section:"3.6" r.at "%s is not an array" name.it;
+          { whole with rtype = Unknown }
+      | Numeric_literal | Unknown -> { whole with rtype = Unknown })
+  | Component (inner, comp) -> (
+      let whole = reference ctx place inner in
+      match whole.rtype with
+      | Known { base = Record rt; dims = Scalar } -> (
+          match T.component rt comp.it with
+          | Some t -> { whole with rtype = Known (T.scalar t) }
+          | None ->
+              error ctx ~rule:"component-name" ~section:"3.6" comp.at
+                "the record type %s has no component %s" rt.record_name comp.it;
+              { whole with rtype = Unknown })
+      | Known t ->
+          error ctx ~rule:"component-not-record" ~section:"3.6" comp.at
+            "a value of type %s has no components" (T.to_string t);
+          { whole with rtype = Unknown }
+      | Numeric_literal | Unknown -> { whole with rtype = Unknown })
+
+(* ------------------------------------------------------------------ expressions *)
+
+and infer ctx place (e : expression) : ty =
+  match e.it with
+  | EXP_placeholder -> Unknown
+  | Literal (Num_literal _) -> Numeric_literal
+  | Literal (String_literal _) -> Known (T.scalar String)
+  | Literal (Bool_literal _) -> Known (T.scalar Bool)
+  | Data_reference r -> value_of_reference ctx place r
+  | Function_call call -> function_call ctx place e.at call
+  | Aggregate _ ->
+      error ctx ~rule:"aggregate-context" ~section:"3.10" e.at
+        "the data type of this aggregate cannot be determined by its context";
+      Unknown
+  | Unary (op, a) -> unary ctx place e op a
+  | Binary (op, a, b) -> binary ctx place e op a b
+
+(* §2.16: an object used in an expression is of a value type, or of a semi-value type used as
+   its associated value type. *)
+and value_of_reference ctx place r =
+  let { object_; rtype } = reference ctx place r in
+  match rtype with
+  | Known t -> (
+      if t.base = ctx.switch_type then begin
+        error ctx ~rule:"switch-no-value" ~section:"5.2" r.at
+          "a switch parameter has no value: it can only be tested with Present or passed on";
+        Unknown
+      end
+      else
+        match T.value_class t.base with
+        | Value -> Known t
+        | Semi_value -> Known (in_value_context t)
+        | Non_value ->
+            error ctx ~rule:"value-class-reference" ~section:"2.16" r.at
+              "%s is of the non-value type %s and cannot be used in an expression"
+              (match object_ with Some d -> d.d_name | None -> "this object") (T.to_string t);
+            Unknown)
+  | Numeric_literal | Unknown -> rtype
+
+and unary ctx place e op a =
+  let ta = infer ctx place a in
+  match ta, operand_of ctx ta with
+  | Unknown, _ -> Unknown
+  | _, Some operand -> (
+      match List.find_opt (fun (row : Tables.unary_row) -> row.unary = op && row.operand = operand)
+              Tables.unary_operators with
+      | Some row -> if ta = Numeric_literal then Numeric_literal else type_of_operand ctx row.unary_result
+      | None -> unary_error ctx e op ta)
+  | _, None -> unary_error ctx e op ta
+
+and unary_error ctx e op ta =
+  error ctx ~rule:"operator-types" ~section:"3.12" e.at "the operator %s cannot be applied to %s"
+    (Tables.unary_symbol op) (type_string ta);
+  Unknown
+
+(* §3.12: the operator table, row by row. A numeric literal operand takes the type of the other
+   operand where that is num or dnum. *)
+and binary ctx place e op a b =
+  match op with
+  | Equal | Not_equal -> equality ctx place e op a b
+  | And | Or | Xor ->
+      check_expression ctx place a (T.scalar Bool);
+      check_expression ctx place b (T.scalar Bool);
+      Known (T.scalar Bool)
+  | _ ->
+      let ta = infer ctx place a and tb = infer ctx place b in
+      if ta = Unknown || tb = Unknown then Unknown
+      else begin
+        let operand t other =
+          match t, operand_of ctx other with
+          | Numeric_literal, Some O_dnum -> Some Tables.O_dnum
+          | _ -> operand_of ctx t
+        in
+        match operand ta tb, operand tb ta with
+        | Some la, Some lb -> (
+            match List.find_opt (fun (row : Tables.binary_row) -> row.op = op && row.left = la && row.right = lb)
+                    Tables.binary_operators with
+            | Some row ->
+                integer_operands ctx place row a b;
+                if ta = Numeric_literal && tb = Numeric_literal && row.result = O_num then Numeric_literal
+                else type_of_operand ctx row.result
+            | None -> binary_error ctx e op ta tb)
+        | _ -> binary_error ctx e op ta tb
+      end
+
+and binary_error ctx e op ta tb =
+  error ctx ~rule:"operator-types" ~section:"3.12" e.at "the operator %s cannot be applied to %s and %s"
+    (Tables.operator_symbol op) (type_string ta) (type_string tb);
+  Unknown
+
+(* §3.12 notes (b), (c): operands of DIV and MOD must represent integers (positive ones for
+   dnum); where an operand is constant, that is known before execution. *)
+and integer_operands ctx place (row : Tables.binary_row) a b =
+  let natural = List.mem Tables.Natural_operands row.notes in
+  if natural || List.mem Tables.Integer_operands row.notes then
+    List.iter (fun (x : expression) ->
+        match const_value ctx place x with
+        | Some (Number q as v) -> (
+            match Const_eval.integer_of v with
+            | None ->
+                error ctx ~rule:"integer-operand" ~section:"3.12" x.at
+                  "an operand of %s must represent an integer value, and %s does not"
+                  (Tables.operator_symbol row.op) (Q.to_string q)
+            | Some n when natural && Z.lt n Z.zero ->
+                error ctx ~rule:"integer-operand" ~section:"3.12" x.at
+                  "an operand of dnum %s must represent a positive integer value (>= 0)"
+                  (Tables.operator_symbol row.op)
+            | Some _ -> ())
+        | _ -> ()) [ a; b ]
+
+(* §3.12: = and <> take operands of any value type, of equal types (arrays included). An
+   aggregate operand takes its type from the other operand (doc/rulings.md R-3.10). *)
+and equality ctx place e op a b =
+  let is_aggregate (x : expression) = match x.it with Aggregate _ -> true | _ -> false in
+  (match is_aggregate a, is_aggregate b with
+   | true, true ->
+       error ctx ~rule:"aggregate-context" ~section:"3.10" e.at
+         "the data types of these aggregates cannot be determined by their context"
+   | true, false -> (
+       match infer ctx place b with
+       | Known t -> check_expression ctx place a t
+       | Numeric_literal -> check_expression ctx place a (T.scalar Num)
+       | Unknown -> ())
+   | false, true -> (
+       match infer ctx place a with
+       | Known t -> check_expression ctx place b t
+       | Numeric_literal -> check_expression ctx place b (T.scalar Num)
+       | Unknown -> ())
+   | false, false -> (
+       let ta = infer ctx place a and tb = infer ctx place b in
+       match ta, tb with
+       | Unknown, _ | _, Unknown -> ()
+       | Numeric_literal, Numeric_literal -> ()
+       | Numeric_literal, Known t | Known t, Numeric_literal ->
+           if not (compatible ~expected:t Numeric_literal) then
+             error ctx ~rule:"equality-types" ~section:"3.12" e.at
+               "the operator %s needs operands of equal types, not %s and %s"
+               (Tables.operator_symbol op) (type_string ta) (type_string tb)
+       | Known x, Known y ->
+           if T.value_class x.base <> Value then
+             error ctx ~rule:"equality-types" ~section:"3.12" e.at
+               "the operator %s needs operands of a value type, not %s" (Tables.operator_symbol op)
+               (T.to_string x)
+           else if not (T.equal_types ~value_context:true x y) then
+             error ctx ~rule:"equality-types" ~section:"3.12" e.at
+               "the operator %s needs operands of equal types, not %s and %s"
+               (Tables.operator_symbol op) (T.to_string x) (T.to_string y)));
+  Known (T.scalar Bool)
+
+(* An expression where the context determines the type it must have (§2.17): assignment,
+   initial values, arguments, RETURN, test values, aggregate members. *)
+and check_expression ctx place (e : expression) (expected : T.object_type) =
+  match e.it with
+  | Aggregate members -> aggregate ctx place e members expected
+  | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
+    when is_scalar expected && expected.base = Dnum -> (
+      (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
+      match infer ctx place e with
+      | Numeric_literal -> ignore op; ignore a; ignore b
+      | t -> mismatch ctx e expected t)
+  | _ -> mismatch ctx e expected (infer ctx place e)
+
+and mismatch ctx (e : expression) expected actual =
+  if not (compatible ~expected actual) then
+    error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found %s"
+      (T.to_string expected) (type_string actual)
+
+(* §3.10, §2.17 rule 2: an aggregate is an array or record value whose members have the types of
+   the corresponding elements or components. *)
+and aggregate ctx place e members expected =
+  let count = List.length members in
+  let element_type (dims : T.dims) : T.dims =
+    match dims with
+    | Sized [ _ ] | Conformant 1 -> Scalar
+    | Sized (_ :: rest) -> Sized rest
+    | Conformant n -> Conformant (n - 1)
+    | Sized [] | Scalar -> Scalar
+  in
+  match expected.dims, expected.base with
+  | (Sized (n :: _)), base ->
+      if n <> count then
+        error ctx ~rule:"aggregate-size" ~section:"3.10" e.at
+          "this aggregate has %d members, but the array dimension is %d" count n;
+      List.iter (fun m -> check_expression ctx place m { base; dims = element_type expected.dims }) members
+  | Conformant _, base ->
+      List.iter (fun m -> check_expression ctx place m { base; dims = element_type expected.dims }) members
+  | Scalar, Record rt ->
+      let components = rt.components in
+      if List.length components <> count then
+        error ctx ~rule:"aggregate-size" ~section:"3.10" e.at
+          "this aggregate has %d members, but the record type %s has %d components" count
+          rt.record_name (List.length components)
+      else List.iter2 (fun m (_, t) -> check_expression ctx place m (T.scalar t)) members components
+  | Scalar, T.Anytype -> List.iter (fun m -> ignore (infer ctx place m)) members
+  | Scalar, _ | Sized [], _ ->
+      error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found an aggregate"
+        (T.to_string expected)
+
+(* ------------------------------------------------------------------ calls *)
+
+(* The access-mode table of §5.2: which kind of argument a reference is. *)
+and argument_kind (e : expression) (r : reference option) : Tables.argument_kind =
+  match e.it, r with
+  | Data_reference _, Some { object_ = Some d; _ } -> (
+      match d.d_kind with
+      | Constant -> Arg_constant
+      | Loop_variable | Read_only_variable -> Arg_readonly_variable
+      | Variable -> Arg_variable
+      | Persistent -> Arg_persistent
+      | Parameter Mode_in -> Arg_parameter_in
+      | Parameter Mode_var -> Arg_parameter_var
+      | Parameter Mode_pers -> Arg_parameter_pers
+      | Parameter (Mode_inout | Mode_ref) -> Arg_parameter_inout)
+  | _ -> Arg_other_expression
+
+and mode_name : Tables.access_mode -> string = function
+  | Mode_in -> "in" | Mode_var -> "VAR" | Mode_pers -> "PERS" | Mode_inout -> "INOUT" | Mode_ref -> "REF"
+
+(* One argument against one parameter: its type (§2.17), its value class (§2.16) and its
+   access mode (§5.2). *)
+and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
+  match p.p_type with
+  | None -> ()
+  | Some ptype when is_unknown ptype -> loosely_expression ctx place e
+  | Some ptype -> (
+      match p.p_mode with
+      | Mode_in ->
+          check_expression ctx place e ptype
+      | mode -> (
+          let r = match e.it with Data_reference r -> Some (reference ctx place r) | _ -> None in
+          let kind = argument_kind e r in
+          let unresolved = match r with Some { object_ = None; rtype = Unknown } -> true | _ -> false in
+          (match Tables.access_cell kind mode with
+           | _ when unresolved -> ()
+           | Illegal ->
+               error ctx ~rule:"access-mode" ~section:"5.2" arg.at
+                 "this argument cannot be passed to the %s parameter %s: %s" (mode_name mode) p.p_name
+                 (match kind with
+                  | Arg_constant -> "it is a constant"
+                  | Arg_readonly_variable -> "it is a read-only variable"
+                  | Arg_variable -> "it is a variable"
+                  | Arg_persistent -> "it is a persistent"
+                  | Arg_parameter_in -> "it is an in parameter"
+                  | Arg_parameter_var -> "it is a VAR parameter"
+                  | Arg_parameter_pers -> "it is a PERS parameter"
+                  | Arg_parameter_inout -> "it is an INOUT parameter"
+                  | Arg_other_expression -> "it is not a data object reference")
+           | Legal | Execution_error | Not_applicable -> ());
+          match r with
+          | Some { rtype = Known t; _ } ->
+              if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
+                error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found %s"
+                  (T.to_string ptype) (T.to_string t)
+          | Some _ -> ()
+          | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
+
+(* §3.11, §4.6: the arguments of a call against the routine's parameter list, in order. *)
+and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
+  let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
+  let arg_name (a : argument) =
+    match a.it with
+    | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
+    | Required_argument (Some n, _) -> name_of_identifier n
+    | Required_argument (None, _) | ARG_placeholder -> None
+  in
+  let rec go slots (args : argument list) =
+    match slots, args with
+    | _, ({ it = ARG_placeholder; _ } :: rest) -> go (match slots with _ :: s -> s | [] -> []) rest
+    | [], [] -> ()
+    | [], a :: _ ->
+        error ctx ~rule:"argument-count" ~section:"3.11" a.at "%s takes no more arguments" routine.r_name
+    | Env.Required_slot p :: slots, ({ it = Required_argument (name, e); _ } as a) :: rest ->
+        (match Option.bind name name_of_identifier with
+         | Some n when not (T.same_name n p.p_name) ->
+             error ctx ~rule:"argument-name" ~section:"3.11" a.at
+               "the argument is named %s, but the parameter in this place is %s" n p.p_name
+         | _ -> ());
+        argument ctx place a e p;
+        go slots rest
+    | Env.Required_slot p :: _, (a :: _) ->
+        error ctx ~rule:"argument-required" ~section:"3.11" a.at
+          "the required argument %s must come here" p.p_name
+    | Env.Required_slot p :: _, [] ->
+        if not has_placeholder then
+          error ctx ~rule:"argument-required" ~section:"3.11" call_region
+            "the required argument %s of %s is missing" p.p_name routine.r_name
+    | Env.Optional_slot alternatives :: slots, args -> (
+        let matches (a : argument) =
+          match a.it, arg_name a with
+          | (Optional_argument _ | Conditional_argument _), Some n ->
+              List.find_opt (fun (p : Env.parameter) -> T.same_name p.p_name n) alternatives
+          | _ -> None
+        in
+        match args with
+        | a :: rest -> (
+            match matches a with
+            | Some p ->
+                optional_argument ctx place a p;
+                (* §5.2: at most one of mutually exclusive parameters. *)
+                let rec exclusive = function
+                  | b :: more -> (
+                      match matches b with
+                      | Some q when b.it <> ARG_placeholder ->
+                          (match b.it with
+                           | Conditional_argument _ when (match a.it with Conditional_argument _ -> true | _ -> false) -> ()
+                           | _ ->
+                               error ctx ~rule:"argument-exclusive" ~section:"5.2" b.at
+                                 "%s and %s are mutually exclusive: at most one may be given" p.p_name q.p_name);
+                          exclusive more
+                      | _ -> b :: more)
+                  | [] -> []
+                in
+                go slots (exclusive rest)
+            | None -> go slots args)
+        | [] -> go slots [])
+  in
+  go routine.r_slots args;
+  (* Optional or conditional arguments that match no parameter. *)
+  List.iter (fun (a : argument) ->
+      match a.it, arg_name a with
+      | (Optional_argument _ | Conditional_argument _), Some n ->
+          let known = List.exists (function
+              | Env.Optional_slot ps -> List.exists (fun (p : Env.parameter) -> T.same_name p.p_name n) ps
+              | Env.Required_slot _ -> false) routine.r_slots in
+          if not known then
+            error ctx ~rule:"argument-name" ~section:"3.11" a.at "%s has no optional parameter %s" routine.r_name n
+      | _ -> ()) args
+
+(* §3.11: an optional argument gives the parameter's value (a switch has none); a conditional
+   argument passes on an optional parameter of the calling routine. *)
+and optional_argument ctx place (a : argument) (p : Env.parameter) =
+  match a.it with
+  | Optional_argument (_, None) ->
+      if p.p_type <> None then
+        error ctx ~rule:"optional-argument-value" ~section:"3.11" a.at
+          "the optional parameter %s is not a switch: give it a value with :=" p.p_name
+  | Optional_argument (_, Some e) ->
+      if p.p_type = None then
+        error ctx ~rule:"switch-argument-value" ~section:"3.11" a.at
+          "%s is a switch: it takes no value" p.p_name
+      else argument ctx place a e p
+  | Conditional_argument (_, r) -> (
+      let { object_; rtype } = reference ctx place r in
+      (match object_ with
+       | Some { d_optional = true; _ } | None -> ()
+       | Some d ->
+           error ctx ~rule:"conditional-argument" ~section:"3.11" a.at
+             "a conditional argument passes on an optional parameter, and %s is not one" d.d_name);
+      match rtype, p.p_type with
+      | Known t, Some pt when t.base <> ctx.switch_type && pt.base <> T.Anytype ->
+          if not (T.equal_types ~value_context:false pt t) then
+            error ctx ~rule:"equal-types" ~section:"2.17" a.at "expected a value of type %s, found %s"
+              (T.to_string pt) (T.to_string t)
+      | _ -> ())
+  | Required_argument _ | ARG_placeholder -> ()
+
+(* An expression whose expected type is not known (an argument of an unknown routine or of a
+   parameter whose type is unknown): a data reference may be of any value class there. *)
+and loosely_expression ctx place (e : expression) =
+  match e.it with
+  | Aggregate es -> List.iter (loosely_expression ctx place) es
+  | Data_reference r -> ignore (reference ctx place r)
+  | _ -> ignore (infer ctx place e)
+
+and function_call ctx place region (call : function_call) : ty =
+  match call.func.it with
+  | ID_placeholder -> loose_arguments ctx place call.arguments; Unknown
+  | Ident name -> (
+      match Env.lookup place.scope name with
+      | Some (Routine ({ r_kind = Function result; _ } as r)) ->
+          arguments ctx place region r call.arguments;
+          if is_unknown result then Unknown else Known result
+      | Some (Routine _) ->
+          error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is not a function" name;
+          Unknown
+      | Some o ->
+          error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
+            (Env.obj_kind_name o);
+          Unknown
+      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place call.arguments; Unknown)
+
+and loose_arguments ctx place (args : argument list) =
+  List.iter (fun (a : argument) ->
+      match a.it with
+      | Required_argument (_, e) | Optional_argument (_, Some e) -> loosely_expression ctx place e
+      | Conditional_argument (_, r) -> ignore (reference ctx place r)
+      | Optional_argument (_, None) | ARG_placeholder -> ()) args
+
+(* ------------------------------------------------------------------ assignment targets *)
+
+(* §4.5: the target is a variable, persistent or parameter of a value or semi-value type; not a
+   constant, a loop variable (§4.18) or a read-only system variable (ch. 12). Also the CONNECT
+   target of §4.15 goes through here for its type. *)
+let assignment_target ctx place (r : data_reference) : ty =
+  let { object_; rtype } = reference ctx place r in
+  (match object_ with
+   | Some { d_kind = Constant; d_name; _ } ->
+       error ctx ~rule:"assign-constant" ~section:"4.5" r.at "%s is a constant: it cannot be assigned" d_name
+   | Some { d_kind = Loop_variable; d_name; _ } ->
+       error ctx ~rule:"assign-loop-variable" ~section:"4.18" r.at
+         "%s is a FOR loop variable: it is read-only" d_name
+   | Some { d_kind = Read_only_variable; d_name; _ } ->
+       error ctx ~rule:"assign-read-only" ~section:"12" r.at
+         "%s is read-only: only the system updates it" d_name
+   | Some { d_kind = Parameter Mode_ref; d_name; _ } ->
+       ignore d_name
+   | _ -> ());
+  match rtype with
+  | Known t when t.base = ctx.switch_type ->
+      error ctx ~rule:"switch-no-value" ~section:"5.2" r.at "a switch parameter has no value to assign";
+      Unknown
+  | Known t -> (
+      match T.value_class t.base with
+      | Value -> rtype
+      | Semi_value -> Known (in_value_context t)
+      | Non_value ->
+          error ctx ~rule:"assign-value-class" ~section:"4.5" r.at
+            "the target is of the non-value type %s: only installed routines change it" (T.to_string t);
+          Unknown)
+  | _ -> rtype
+
+(* ------------------------------------------------------------------ constant expressions *)
+
+(* §3.2: a constant expression contains no variable, persistent or function call, at any
+   level. The first one found is reported. *)
+let constant_expression ctx place ~what (e : expression) =
+  let offending = ref None in
+  let rec walk (e : expression) =
+    if !offending = None then
+      match e.it with
+      | Literal _ | EXP_placeholder -> ()
+      | Function_call _ -> offending := Some (e.at, "a function call")
+      | Aggregate es -> List.iter walk es
+      | Unary (_, a) -> walk a
+      | Binary (_, a, b) -> walk a; walk b
+      | Data_reference r -> reference_walk r
+  and reference_walk (r : data_reference) =
+    match r.it with
+    | VAR_placeholder -> ()
+    | Component (inner, _) -> reference_walk inner
+    | Element (name, indexes) -> entire name; List.iter walk indexes
+    | Entire name -> entire name
+  and entire (name : name) =
+    if !offending = None then
+      match Env.lookup place.scope name.it with
+      | Some (Data { d_kind = Constant; _ }) | None -> ()
+      | Some (Data { d_kind = Persistent; _ }) -> offending := Some (name.at, "a persistent")
+      | Some (Data { d_kind = Parameter _; _ }) -> offending := Some (name.at, "a parameter")
+      | Some (Data _) -> offending := Some (name.at, "a variable")
+      | Some _ -> ()
+  in
+  walk e;
+  match !offending with
+  | Some (at, thing) ->
+      error ctx ~rule:"constant-expression" ~section:"3.2" at
+        "%s must be a constant expression, which contains no variable, persistent or function \
+         call, but this is %s" what thing;
+      false
+  | None -> true
+
+(* §3.3: a literal expression is a literal (a numeric one possibly signed) or an aggregate whose
+   members are literal expressions. *)
+let literal_expression ctx (e : expression) =
+  let rec ok (e : expression) =
+    match e.it with
+    | Literal _ | EXP_placeholder -> true
+    | Unary ((Unary_plus | Unary_minus), { it = Literal (Num_literal _); _ }) -> true
+    | Aggregate es -> List.for_all ok es
+    | _ -> false
+  in
+  let rec first_bad (e : expression) =
+    match e.it with
+    | Aggregate es -> List.find_map (fun m -> if ok m then None else Some (first_bad m)) es |> Option.value ~default:e.at
+    | _ -> e.at
+  in
+  if not (ok e) then
+    error ctx ~rule:"literal-expression" ~section:"3.3" (first_bad e)
+      "the initial value of a persistent must be a literal expression: a literal, a signed \
+       numeric literal, or an aggregate of literal expressions"
+
+(* ------------------------------------------------------------------ statements *)
+
+let loosely ctx place (e : expression) =
+  let rec go (e : expression) =
+    match e.it with
+    | Aggregate es -> List.iter go es
+    | _ -> ignore (infer ctx place e)
+  in
+  go e
+
+let labels_of (l : statement list) =
+  List.filter_map (fun (s : statement) -> match s.it with Label i -> name_of_identifier i | _ -> None) l
+
+let check_condition ctx place (e : expression) = check_expression ctx place e (T.scalar Bool)
+
+let rec statements ctx place (l : statement list) =
+  let place = { place with labels = labels_of l :: place.labels } in
+  List.iter (statement ctx place) l
+
+and statement ctx place (s : statement) =
+  match s.it with
+  | Assignment (target, e) -> (
+      match assignment_target ctx place target with
+      | Known t -> check_expression ctx place e t
+      | Numeric_literal | Unknown -> loosely ctx place e)
+  | Procedure_call (Procedure_name id, args) -> procedure_call ctx place s id args
+  | Procedure_call (Late_bound e, args) ->
+      (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
+         routine then (ERR_REFUNKPRC, ERR_CALLPROC). *)
+      check_expression ctx place e (T.scalar String);
+      loose_arguments ctx place args
+  | Goto id -> goto ctx place id
+  | Break ->
+      if not place.in_loop then
+        error ctx ~rule:"break-in-loop" ~section:"4.8" s.at "BREAK may be used only in a WHILE or FOR loop"
+  | Continue ->
+      if not place.in_loop then
+        error ctx ~rule:"continue-in-loop" ~section:"4.9" s.at "CONTINUE may be used only in a WHILE or FOR loop"
+  | Return e -> return ctx place s e
+  | Raise e -> raise_ ctx place s e
+  | Exit -> ()
+  | Retry ->
+      if not place.in_error_handler then
+        error ctx ~rule:"retry-in-handler" ~section:"4.13" s.at "RETRY may be used only in an error handler"
+  | Trynext ->
+      if not place.in_error_handler then
+        error ctx ~rule:"trynext-in-handler" ~section:"4.14" s.at "TRYNEXT may be used only in an error handler"
+  | Connect (target, trap) -> connect ctx place target trap
+  | If i ->
+      check_condition ctx place i.condition;
+      statements ctx place i.then_branch;
+      List.iter (fun (c : elseif_clause) ->
+          match c.it with
+          | Elseif (cond, l) -> check_condition ctx place cond; statements ctx place l
+          | EIT_placeholder -> ()) i.elseifs;
+      Option.iter (statements ctx place) i.else_branch
+  | Compact_if (cond, s) -> check_condition ctx place cond; statement ctx place s
+  | For f -> for_ ctx place f
+  | While (cond, body) ->
+      check_condition ctx place cond;
+      statements ctx { place with in_loop = true } body
+  | Test t -> test ctx place t
+  | Label _ | Statement_comment _ | SMT_placeholder -> ()
+
+and procedure_call ctx place (s : statement) (id : identifier) args =
+  let loose () = loose_arguments ctx place args in
+  match id.it with
+  | ID_placeholder -> loose ()
+  | Ident name -> (
+      match Env.lookup place.scope name with
+      | Some (Routine ({ r_kind = Procedure; _ } as r)) -> arguments ctx place s.at r args
+      | Some (Routine { r_kind = Function _; _ }) ->
+          error ctx ~rule:"procedure-call" ~section:"4.6" id.at
+            "%s is a function: it is called in an expression, not as a statement" name;
+          loose ()
+      | Some (Routine { r_kind = Trap; _ }) ->
+          error ctx ~rule:"procedure-call" ~section:"5.1" id.at
+            "%s is a trap: a trap is never called from RAPID code, only by the system (CONNECT)" name;
+          loose ()
+      | Some o ->
+          error ctx ~rule:"procedure-call" ~section:"4.6" id.at "%s is a %s, not a procedure" name
+            (Env.obj_kind_name o);
+          loose ()
+      | None -> unknown_name ctx id.at "procedure" name; loose ())
+
+(* §4.7: GOTO continues at a label of the same routine, and may not transfer control into a
+   statement list: the label stands in the GOTO's own statement list or an enclosing one. *)
+and goto ctx place (id : identifier) =
+  match name_of_identifier id with
+  | None -> ()
+  | Some name ->
+      let visible = List.exists (List.exists (T.same_name name)) place.labels in
+      if not visible then
+        match Env.lookup place.scope name with
+        | Some (Label _) ->
+            error ctx ~rule:"goto-into-list" ~section:"4.7" id.at
+              "GOTO %s would transfer control into a statement list: the label must stand in the \
+               GOTO's statement list or one that encloses it" name
+        | _ ->
+            error ctx ~rule:"goto-label" ~section:"4.7" id.at "there is no label %s in this routine" name
+
+(* §4.10: RETURN with an expression of the function's type in a function, without one in a
+   procedure or trap. *)
+and return ctx place (s : statement) e =
+  match place.routine, e with
+  | Some { r_kind = Function t; _ }, Some e -> check_expression ctx place e t
+  | Some { r_kind = Function _; r_name; _ }, None ->
+      error ctx ~rule:"return-function" ~section:"4.10" s.at
+        "RETURN in the function %s must give the return value" r_name
+  | Some { r_kind = Procedure | Trap; _ }, Some e ->
+      error ctx ~rule:"return-procedure" ~section:"4.10" s.at
+        "RETURN in a procedure or trap has no return expression";
+      loosely ctx place e
+  | _, _ -> ()
+
+(* §4.11: RAISE with an error number, never in an error handler; RAISE without one, only there. *)
+and raise_ ctx place (s : statement) e =
+  match e with
+  | Some e ->
+      if place.in_error_handler then
+        error ctx ~rule:"raise-number-in-handler" ~section:"4.11" s.at
+          "RAISE with an error number may not stand in an error handler";
+      check_expression ctx place e (T.scalar Num)
+  | None ->
+      if not place.in_error_handler then
+        error ctx ~rule:"raise-without-number" ~section:"4.11" s.at
+          "RAISE without an error number may stand only in an error handler"
+
+(* §4.15: the target is of type num (or an alias of num), a module variable or a VAR or INOUT
+   parameter; the trap is a trap routine. *)
+and connect ctx place (target : data_reference) (trap : identifier) =
+  let { object_; rtype } = reference ctx place target in
+  (match rtype with
+   | Known { base = Num; dims = Scalar } | Unknown -> ()
+   | t ->
+       error ctx ~rule:"connect-target-type" ~section:"4.15" target.at
+         "the CONNECT target must be of type num or intnum, not %s" (type_string t));
+  (match object_ with
+   | None -> ()
+   | Some d -> (
+       match d.d_kind, d.d_level with
+       | Variable, (Env.Module_level _ | Env.Installed_level) -> ()
+       | Parameter (Mode_var | Mode_inout), _ -> ()
+       | Variable, Env.Routine_level ->
+           error ctx ~rule:"connect-target-module-variable" ~section:"4.15" target.at
+             "the CONNECT target must be a module variable, and %s is a routine variable" d.d_name
+       | _ ->
+           error ctx ~rule:"connect-target-variable" ~section:"4.15" target.at
+             "the CONNECT target must be a module variable or a VAR or INOUT parameter"));
+  match trap.it with
+  | ID_placeholder -> ()
+  | Ident name -> (
+      match Env.lookup place.scope name with
+      | Some (Routine { r_kind = Trap; _ }) -> ()
+      | Some o ->
+          error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
+            (Env.obj_kind_name o)
+      | None -> unknown_name ctx trap.at "trap" name)
+
+(* §4.18: the loop variable is declared by its appearance, of type num, read-only, scoped to the
+   loop's statement list, hiding other objects of the same name; FROM, TO and STEP are num. *)
+and for_ ctx place (f : for_statement) =
+  check_expression ctx place f.from_ (T.scalar Num);
+  check_expression ctx place f.to_ (T.scalar Num);
+  Option.iter (fun e -> check_expression ctx place e (T.scalar Num)) f.step;
+  let loop_scope = Env.create_table () in
+  (match f.loop_variable.it with
+   | Ident name ->
+       Env.add loop_scope name
+         (Data { d_name = name; d_type = T.scalar Num; d_kind = Loop_variable; d_region = f.loop_variable.at;
+                 d_level = Routine_level; d_scope = Global; d_optional = false; d_initial = None })
+   | ID_placeholder -> ());
+  let scope = { place.scope with routine = loop_scope :: place.scope.routine } in
+  statements ctx { place with scope; in_loop = true } f.body
+
+(* §4.20: the test expression is of a value or semi-value type; test values are constant
+   expressions of an equal type. *)
+and test ctx place (t : test_statement) =
+  let tt = infer ctx place t.test_expression in
+  List.iter (fun (c : case_clause) ->
+      match c.it with
+      | Case (values, l) ->
+          List.iter (fun (v : expression) ->
+              ignore (constant_expression ctx place ~what:"a test value" v);
+              match tt with
+              | Known ty -> check_expression ctx place v ty
+              | Numeric_literal -> check_expression ctx place v (T.scalar Num)
+              | Unknown -> loosely ctx place v) values;
+          statements ctx place l
+      | CSE_placeholder -> ()) t.cases;
+  Option.iter (statements ctx place) t.default
+
+(* ------------------------------------------------------------------ data declarations *)
+
+(* §2.22: array dimensions are 1, 2 or 3 constant expressions of positive integer value. *)
+let dimensions ctx place (dims : expression list) : T.dims option =
+  if dims = [] then Some Scalar
+  else begin
+    (match List.nth_opt dims 3 with
+     | Some (d : expression) ->
+         error ctx ~rule:"array-rank" ~section:"2.22" d.at "an array has 1, 2 or 3 dimensions"
+     | None -> ());
+    let sizes = List.map (fun (d : expression) ->
+        let constant = constant_expression ctx place ~what:"an array dimension" d in
+        match d.it with
+        | EXP_placeholder -> None
+        | _ when not constant -> None
+        | _ -> (
+            match Option.bind (const_value ctx place d) Const_eval.integer_of with
+            | Some n when Z.gt n Z.zero && Z.fits_int n -> Some (Z.to_int n)
+            | None when infer ctx place d = Unknown -> None
+            | _ ->
+                error ctx ~rule:"array-dimension" ~section:"2.22" d.at
+                  "an array dimension must be a constant expression of positive integer value";
+                None)) dims in
+    if List.for_all Option.is_some sizes && List.length dims <= 3 then
+      Some (Sized (List.map Option.get sizes))
+    else None
+  end
+
+(* §2.16, first table: which declarations each value class allows. *)
+let value_class_allows ctx ~rule ~section (at : Source.region) kind (t : T.data_type) what =
+  let cls = T.value_class t in
+  match Tables.declaration_cell kind cls with
+  | Legal -> ()
+  | Illegal | Not_applicable | Execution_error ->
+      error ctx ~rule ~section at "%s cannot be of the %s type %s" what
+        (match cls with Value -> "value" | Non_value -> "non-value" | Semi_value -> "semi-value")
+        (T.name t)
+
+(* §2.18-§2.24: a data declaration, at module level ([routine = false]) or in a routine. *)
+let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_declaration) :
+    (string * Env.obj) option =
+  match decl.it with
+  | Declaration_comment _ | DDN_placeholder -> None
+  | Data_declaration { scope; storage; data_type; name; dims; initial_value } -> (
+      if in_routine then begin
+        (match scope with
+         | Local ->
+             error ctx ~rule:"local-in-routine" ~section:"2.18" decl.at
+               "LOCAL may be used only at module level, not inside a routine"
+         | Task ->
+             error ctx ~rule:"task-in-routine" ~section:"2.18" decl.at
+               "TASK may be used only at module level, not inside a routine"
+         | Global -> ());
+        if storage = Pers then
+          error ctx ~rule:"pers-in-routine" ~section:"2.23" decl.at
+            "a persistent may be declared only at module level, not inside a routine"
+      end;
+      let base = resolve_type ctx place data_type in
+      let shape = dimensions ctx place dims in
+      let what = match storage with Var -> "a variable" | Pers -> "a persistent" | Const -> "a constant" in
+      (match base with
+       | Some t ->
+           let kind : Tables.declaration_kind =
+             match storage, initial_value with
+             | Const, _ -> Constant
+             | Pers, _ -> Persistent
+             | Var, Some _ -> Variable_initialised
+             | Var, None -> Variable_uninitialised
+           in
+           value_class_allows ctx ~rule:"declaration-value-class" ~section:"2.16" data_type.at kind t
+             (match kind with Variable_initialised -> "an initialised variable" | _ -> what)
+       | None -> ());
+      (match storage, initial_value with
+       | (Var | Const), Some init -> ignore (constant_expression ctx place ~what:"an initial value" init)
+       | Pers, Some init -> literal_expression ctx init
+       | Pers, None when scope <> Global && not in_routine ->
+           error ctx ~rule:"pers-initial-value" ~section:"2.23" name.at
+             "a LOCAL or TASK persistent must have an initial value: only system-global \
+              persistents may omit it"
+       | _, None -> ());
+      let object_type = match base, shape with Some b, Some d -> Some { T.base = b; dims = d } | _ -> None in
+      (match object_type, initial_value with
+       | Some t, Some init when T.value_class t.base = Value -> check_expression ctx place init t
+       | _, Some init -> ignore init
+       | _, None -> ());
+      match name_of_identifier name with
+      | None -> None
+      | Some n ->
+          let d_type = Option.value object_type ~default:unknown_object_type in
+          Some (n, Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
+                              d_optional = false; d_initial = initial_value;
+                              d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) }))
+
+(* ------------------------------------------------------------------ parameters and routines *)
+
+let access_mode : Ast.access_mode -> Tables.access_mode = function
+  | In -> Mode_in | Var_mode -> Mode_var | Pers_mode -> Mode_pers | Inout -> Mode_inout
+  | Ref_mode -> Mode_ref
+
+(* §5.2: one parameter declaration; [optional] when it stands after '\'. *)
+let parameter_declaration ctx place ~optional (p : parameter_declaration) : Env.parameter option =
+  match p.it with
+  | Switch name -> (
+      if not optional then
+        error ctx ~rule:"switch-optional" ~section:"5.2" name.at
+          "a switch parameter must be optional: write \\switch %s"
+          (Option.value (name_of_identifier name) ~default:"");
+      match name_of_identifier name with
+      | Some n -> Some { p_name = n; p_mode = Mode_in; p_type = None; p_region = name.at }
+      | None -> None)
+  | Parameter { mode; data_type; name; array } -> (
+      let mode = access_mode mode in
+      let base = resolve_type ctx place data_type in
+      let dims : T.dims option =
+        match array with
+        | Not_array -> Some Scalar
+        | Conformant rank ->
+            if rank > 3 then begin
+              error ctx ~rule:"array-rank" ~section:"5.2" p.at "an array parameter has 1, 2 or 3 dimensions";
+              None
+            end
+            else Some (Conformant rank)
+        | DIM_placeholder -> None
+      in
+      (match base with
+       | Some t when t <> T.Anytype ->
+           let kind : Tables.declaration_kind =
+             match mode with
+             | Mode_in -> Parameter_in
+             | Mode_var -> Parameter_var
+             | Mode_pers -> Parameter_pers
+             | Mode_ref -> Parameter_ref
+             | Mode_inout -> Parameter_inout_var
+           in
+           value_class_allows ctx ~rule:"parameter-value-class" ~section:"2.16" data_type.at kind t
+             (match mode with
+              | Mode_in -> "an in parameter" | Mode_var -> "a VAR parameter"
+              | Mode_pers -> "a PERS parameter" | Mode_inout -> "an INOUT parameter"
+              | Mode_ref -> "a REF parameter")
+       | _ -> ());
+      match name_of_identifier name with
+      | None -> None
+      | Some n ->
+          let p_type = match base, dims with
+            | Some b, Some d -> Some { T.base = b; dims = d }
+            | _ -> Some unknown_object_type in
+          Some { p_name = n; p_mode = mode; p_type; p_region = name.at })
+
+let parameter_slots ctx place (params : Ast.parameter list) : Env.parameter_slot list =
+  List.filter_map (fun (p : Ast.parameter) ->
+      match p.it with
+      | PAR_placeholder -> None
+      | Required_parameter d ->
+          Option.map (fun p -> Env.Required_slot p) (parameter_declaration ctx place ~optional:false d)
+      | Optional_parameter alternatives ->
+          let ps = List.filter_map (fun (a : alternative) ->
+              match a.it with
+              | ALT_placeholder -> None
+              | Alternative d -> parameter_declaration ctx place ~optional:true d) alternatives in
+          if ps = [] then None else Some (Env.Optional_slot ps)) params
+
+let switch_object ctx (p : Env.parameter) ~optional : Env.data_object =
+  let d_type, d_kind =
+    match p.p_type with
+    | None -> (T.scalar ctx.switch_type, Env.Parameter Mode_in)
+    | Some t -> (t, Env.Parameter p.p_mode)
+  in
+  { d_name = p.p_name; d_type; d_kind; d_region = p.p_region; d_level = Routine_level; d_scope = Global;
+    d_optional = optional; d_initial = None }
+
+(* ------------------------------------------------------------------ routine bodies *)
+
+(* Every label of a routine, in all its statement lists (§4.4: their scope is the routine). *)
+let rec all_labels acc (l : statement list) =
+  List.fold_left (fun acc (s : statement) ->
+      match s.it with
+      | Label i -> (match name_of_identifier i with Some n -> (n, i.at) :: acc | None -> acc)
+      | If i ->
+          let acc = all_labels acc i.then_branch in
+          let acc = List.fold_left (fun acc (c : elseif_clause) ->
+              match c.it with Elseif (_, l) -> all_labels acc l | EIT_placeholder -> acc) acc i.elseifs in
+          Option.fold ~none:acc ~some:(all_labels acc) i.else_branch
+      | Compact_if (_, s) -> all_labels acc [ s ]
+      | For f -> all_labels acc f.body
+      | While (_, l) -> all_labels acc l
+      | Test t ->
+          let acc = List.fold_left (fun acc (c : case_clause) ->
+              match c.it with Case (_, l) -> all_labels acc l | CSE_placeholder -> acc) acc t.cases in
+          Option.fold ~none:acc ~some:(all_labels acc) t.default
+      | _ -> acc) acc l
+
+(* §2.20, §4.4: names declared in a routine — parameters, data, labels — are distinct. *)
+let add_routine_name ctx table name (obj : Env.obj) =
+  match Env.find table name with
+  | Some previous ->
+      let rule, section, message =
+        match previous, obj with
+        | Label _, Label _ -> ("label-clash", "4.4", "two labels of one routine may not share a name")
+        | Label _, _ | _, Label _ ->
+            ("label-data-clash", "4.4", "a routine data object and a label of the same routine may not share a name")
+        | _ -> ("routine-data-clash", "2.20", "two data objects of one routine may not share a name")
+      in
+      error ctx ~rule ~section (Env.obj_region obj) "%s: %s is declared twice" message name
+  | None -> Env.add table name obj
+
+(* §7.2 <error number> of an ERROR list: a num literal, or an entire constant, variable or
+   persistent of type errnum (an alias of num). *)
+let recovery_error_number ctx place (n : recovery_error_number) =
+  match n.it with
+  | Error_number_literal _ -> ()
+  | Error_number_name name -> (
+      match Env.lookup place.scope name.it with
+      | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ }) -> ()
+      | Some (Data _) ->
+          error ctx ~rule:"error-number-list" ~section:"7.2" n.at
+            "an error number of an ERROR list is a num literal or an entire constant, variable or \
+             persistent of type errnum"
+      | Some o ->
+          error ctx ~rule:"error-number-list" ~section:"7.2" n.at "%s is a %s, not an error number" name.it
+            (Env.obj_kind_name o)
+      | None -> unknown_name ctx name.at "data object" name.it)
+
+let routine_body ctx (module_place : place) (routine : Env.routine) (body : routine_body) =
+  let table = Env.create_table () in
+  List.iter (function
+      | Env.Required_slot p -> add_routine_name ctx table p.p_name (Data (switch_object ctx p ~optional:false))
+      | Env.Optional_slot ps ->
+          List.iter (fun (p : Env.parameter) ->
+              add_routine_name ctx table p.p_name (Data (switch_object ctx p ~optional:true))) ps)
+    routine.r_slots;
+  let place = { module_place with scope = { module_place.scope with routine = [ table ] };
+                                  routine = Some routine } in
+  List.iter (fun decl ->
+      match data_declaration ctx place ~in_routine:true ~level:Routine_level decl with
+      | Some (n, o) -> add_routine_name ctx table n o
+      | None -> ()) body.declarations;
+  let lists = body.statements :: List.filter_map Fun.id
+                [ body.backward; Option.map (fun h -> h.handler) body.error; body.undo ] in
+  List.iter (fun (n, at) -> add_routine_name ctx table n (Label at))
+    (List.rev (List.fold_left all_labels [] lists));
+  statements ctx place body.statements;
+  Option.iter (statements ctx place) body.backward;
+  Option.iter (fun (h : error_handler) ->
+      Option.iter (List.iter (recovery_error_number ctx place)) h.error_numbers;
+      statements ctx { place with in_error_handler = true } h.handler) body.error;
+  Option.iter (statements ctx place) body.undo
+
+(* ------------------------------------------------------------------ modules and the task *)
+
+type module_info = {
+  m : module_declaration;
+  m_name : string;
+  objects : Env.table;
+  is_installed : bool;
+}
+
+(* §9.2: each attribute at most once, in the order of the table, and NOVIEW excludes NOSTEPIN,
+   VIEWONLY and READONLY, VIEWONLY and READONLY exclude each other. *)
+let module_attributes ctx (attributes : module_attribute list) =
+  let rank a = let rec find i = function
+      | [] -> 0 | x :: rest -> if x = a then i else find (i + 1) rest in find 0 Tables.attribute_order in
+  ignore (List.fold_left (fun seen (a : module_attribute) ->
+      let name = Tables.attribute_name a.it in
+      if List.mem a.it seen then
+        error ctx ~rule:"attribute-once" ~section:"9.2" a.at "the attribute %s is given twice" name
+      else if List.exists (fun s -> rank s > rank a.it) seen then
+        error ctx ~rule:"attribute-order" ~section:"9.2" a.at
+          "the attribute %s must come before %s: attributes follow the order SYSMODULE, NOVIEW, \
+           NOSTEPIN, VIEWONLY, READONLY" name
+          (Tables.attribute_name (List.find (fun s -> rank s > rank a.it) seen));
+      (match List.find_opt (fun s -> List.mem (s, a.it) Tables.attribute_exclusions
+                                     || List.mem (a.it, s) Tables.attribute_exclusions) seen with
+       | Some other ->
+           error ctx ~rule:"attribute-exclusion" ~section:"9.2" a.at "the attributes %s and %s exclude each other"
+             (Tables.attribute_name other) name
+       | None -> ());
+      a.it :: seen) [] attributes)
+
+(* §2.12, §2.20, §5.3, §9.2: registering a module-level object, with the name-clash rules. *)
+let register ctx info ~local name (obj : Env.obj) =
+  match Env.find info.objects name with
+  | Some _ ->
+      error ctx ~rule:"module-object-clash" ~section:"2.20" (Env.obj_region obj)
+        "two objects declared in the module %s may not share the name %s" info.m_name name
+  | None ->
+      Env.add info.objects name obj;
+      if not local then begin
+        let table = if info.is_installed then ctx.installed else ctx.globals in
+        match Env.find table name with
+        | Some _ when not info.is_installed ->
+            error ctx ~rule:"global-object-clash" ~section:"2.20" (Env.obj_region obj)
+              "two global objects of the task buffer may not share the name %s" name
+        | Some _ ->
+            error ctx ~rule:"global-object-clash" ~section:"13" (Env.obj_region obj)
+              "the installed object %s is declared twice" name
+        | None -> Env.add table name obj
+      end
+
+let scope_of ctx info : Env.scope =
+  { installed = ctx.installed; globals = ctx.globals; module_objects = info.objects; routine = [];
+    in_installed_module = info.is_installed }
+
+let module_place ctx info =
+  { scope = scope_of ctx info; routine = None; in_error_handler = false;
+    in_loop = false; labels = [] }
+
+(* §2.14, §2.15: type definitions. Records are created first, so that components may name
+   records defined later; an alias may not be defined on an alias; a record may not contain
+   itself. *)
+let type_definitions ctx infos =
+  let pending = ref [] in
+  List.iter (fun info ->
+      List.iter (fun (td : type_definition) ->
+          match td.it with
+          | Record_definition { local; name; components } -> (
+              match name_of_identifier name with
+              | Some n ->
+                  let rt = { T.record_id = T.new_record_id (); record_name = n; components = [] } in
+                  register ctx info ~local n
+                    (Type { t_name = n; t_type = Record rt; t_alias = false; t_region = name.at;
+                            t_level = (if info.is_installed then Installed_level else Module_level info.m_name);
+                            t_local = local });
+                  pending := `Record (info, rt, components) :: !pending
+              | None -> ())
+          | Alias_definition { local; base; name } -> (
+              match name_of_identifier name with
+              | Some n -> pending := `Alias (info, local, n, name.at, base) :: !pending
+              | None -> ())
+          | Type_comment _ | TDN_placeholder -> ()) info.m.type_definitions) infos;
+  let pending = List.rev !pending in
+  (* Aliases next: their base may be a record of any module, or a built-in type. *)
+  List.iter (function
+      | `Alias (info, local, n, at, (base : identifier)) -> (
+          let place = module_place ctx info in
+          let target =
+            match base.it with
+            | ID_placeholder -> None
+            | Ident b -> (
+                match Env.lookup place.scope b with
+                | Some (Type { t_alias = true; _ }) ->
+                    error ctx ~rule:"alias-of-alias" ~section:"2.15" base.at
+                      "an alias type may not be defined on another alias type (%s is one)" b;
+                    None
+                | _ -> resolve_type ctx place base)
+          in
+          match target with
+          | Some t ->
+              register ctx info ~local n
+                (Type { t_name = n; t_type = t; t_alias = true; t_region = at;
+                        t_level = (if info.is_installed then Installed_level else Module_level info.m_name);
+                        t_local = local })
+          | None -> ())
+      | `Record _ -> ()) pending;
+  List.iter (function
+      | `Record (info, (rt : T.record_type), (components : record_component list)) ->
+          let place = module_place ctx info in
+          let seen = Hashtbl.create 8 in
+          rt.components <- List.filter_map (fun (c : record_component) ->
+              match c.it with
+              | Component_comment _ -> None
+              | Record_component (t, n) -> (
+                  match name_of_identifier n with
+                  | None -> None
+                  | Some cn ->
+                      if Hashtbl.mem seen (key cn) then begin
+                        error ctx ~rule:"component-clash" ~section:"2.14" n.at
+                          "two components of the record %s may not share the name %s" rt.record_name cn;
+                        None
+                      end
+                      else begin
+                        Hashtbl.add seen (key cn) ();
+                        match resolve_type ctx place t with
+                        | Some T.Anytype -> None
+                        | Some ty -> Some (cn, ty)
+                        | None -> None
+                      end)) components
+      | `Alias _ -> ()) pending;
+  (* A record that contains itself, directly or through other records, has no finite value. *)
+  List.iter (function
+      | `Record (info, (rt : T.record_type), _) ->
+          let rec contains visited (t : T.data_type) =
+            match t with
+            | Record r when r.record_id = rt.record_id -> true
+            | Record r when List.mem r.record_id visited -> false
+            | Record r -> List.exists (fun (_, c) -> contains (r.record_id :: visited) c) r.components
+            | _ -> false
+          in
+          if List.exists (fun (_, c) -> contains [] c) rt.components then begin
+            (match Env.find info.objects rt.record_name with
+             | Some o ->
+                 error ctx ~rule:"record-recursive" ~section:"2.14" (Env.obj_region o)
+                   "the record %s contains itself" rt.record_name
+             | None -> ());
+            rt.components <- []
+          end
+      | `Alias _ -> ()) pending
+
+(* §5.1-§5.6: a routine's signature, registered before any body is checked so that calls may
+   name routines declared later or in other modules. *)
+let routine_signature ctx info (r : routine_declaration) =
+  let place = module_place ctx info in
+  let level = if info.is_installed then Env.Installed_level else Env.Module_level info.m_name in
+  let make local (name : identifier) kind params =
+    match name_of_identifier name with
+    | None -> None
+    | Some n ->
+        let slots = parameter_slots ctx place params in
+        let routine = { Env.r_name = n; r_kind = kind; r_slots = slots; r_region = name.at;
+                        r_level = level; r_local = local } in
+        register ctx info ~local n (Routine routine);
+        Some routine
+  in
+  match r.it with
+  | Procedure_declaration { local; name; parameters; body } ->
+      Option.map (fun x -> (x, body)) (make local name Procedure parameters)
+  | Function_declaration { local; return_type; name; parameters; body } -> (
+      match resolve_type ctx place return_type with
+      | Some t ->
+          value_class_allows ctx ~rule:"function-value-class" ~section:"2.16" return_type.at
+            Function_return t "the return value of a function";
+          Option.map (fun x -> (x, body)) (make local name (Function (T.scalar t)) parameters)
+      | None ->
+          Option.map (fun x -> (x, body)) (make local name (Function unknown_object_type) parameters))
+  | Trap_declaration { local; name; body } -> Option.map (fun x -> (x, body)) (make local name Trap [])
+  | Routine_comment _ | RDN_placeholder -> None
+
+(* §9.1: the entry routine of a task takes no parameters. *)
+let entry_routine ctx (routine : Env.routine) =
+  if T.same_name routine.r_name "main" && routine.r_kind = Procedure && routine.r_slots <> [] then
+    error ctx ~rule:"entry-routine-parameters" ~section:"9.1" routine.r_region
+      "the entry routine main cannot have parameters"
+
+let builtin_environment report options =
+  let installed = Env.create_table () in
+  let add_type ?(alias = false) name t =
+    Env.add installed name (Type { t_name = name; t_type = t; t_alias = alias; t_region = Source.no_region;
+                                   t_level = Installed_level; t_local = false })
+  in
+  (* §2.13 *)
+  List.iter (fun (row : Tables.atomic_row) -> add_type (T.name row.atomic) row.atomic) Tables.atomic_types;
+  add_type "anytype" T.Anytype;
+  (* The installed atomic types, which RAPID source cannot declare. *)
+  List.iter (fun (name, cls, associated) ->
+      add_type name (T.Installed_atomic { atomic_name = name; atomic_class = cls; associated }))
+    Installed_atomic.atomic_types;
+  (* §2.14: built-in records, components in order. *)
+  let records = List.map (fun (name, _) ->
+      let rt = { T.record_id = T.new_record_id (); record_name = name; components = [] } in
+      add_type name (Record rt); (name, rt)) Tables.builtin_records in
+  let resolve tn = match Env.find installed tn with Some (Type t) -> t.t_type | _ -> T.Anytype in
+  List.iter (fun (name, components) ->
+      let rt = List.assoc name records in
+      rt.components <- List.map (fun (c, tn) -> (c, resolve tn)) components) Tables.builtin_records;
+  (* §2.15: built-in aliases. *)
+  List.iter (fun (name, base) -> add_type ~alias:true name (resolve base)) Tables.builtin_aliases;
+  {
+    report; options; installed; globals = Env.create_table ();
+    pos_type = resolve "pos"; orient_type = resolve "orient";
+    switch_type = T.Installed_atomic { atomic_name = "switch"; atomic_class = Non_value; associated = None };
+    early_constants = Hashtbl.create 64;
+  }
+
+(* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
+let read_only_system_variables = [ "ERRNO"; "INTNO" ]
+
+let check_task ?(options = default_options) ~installed modules =
+  let report = Report.create () in
+  let ctx = builtin_environment report options in
+  let info is_installed (m : module_declaration) =
+    let m_name = Option.value (name_of_identifier m.module_name) ~default:"" in
+    { m; m_name; objects = Env.create_table (); is_installed }
+  in
+  let infos = List.map (info true) installed @ List.map (info false) modules in
+  let user = List.filter (fun i -> not i.is_installed) infos in
+  (* §9.2: two modules may not share a name. *)
+  ignore (List.fold_left (fun seen i ->
+      if i.m_name <> "" && List.mem (key i.m_name) seen then begin
+        error ctx ~rule:"module-name-clash" ~section:"9.2" i.m.module_name.at
+          "two modules may not share the name %s" i.m_name;
+        seen
+      end
+      else key i.m_name :: seen) [] infos);
+  List.iter (fun i -> module_attributes ctx i.m.attributes) user;
+  (* Constants' initial values, for array dimensions that name them. *)
+  List.iter (fun i ->
+      List.iter (fun (d : data_declaration) ->
+          match d.it with
+          | Data_declaration { storage = Const; name = { it = Ident n; _ }; initial_value = Some e; _ } ->
+              if not (Hashtbl.mem ctx.early_constants (key n)) then Hashtbl.add ctx.early_constants (key n) e
+          | _ -> ()) i.m.data_declarations) infos;
+  type_definitions ctx infos;
+  (* Module data, in declaration order. *)
+  List.iter (fun i ->
+      let place = module_place ctx i in
+      let level = if i.is_installed then Env.Installed_level else Env.Module_level i.m_name in
+      List.iter (fun (d : data_declaration) ->
+          match data_declaration ctx place ~in_routine:false ~level d with
+          | Some (n, Data obj) ->
+              let obj =
+                if i.is_installed && List.exists (T.same_name n) read_only_system_variables
+                then Env.Data { obj with d_kind = Read_only_variable } else Env.Data obj in
+              let local = match d.it with Data_declaration { scope = Local; _ } -> true | _ -> false in
+              register ctx i ~local n obj
+          | Some (n, o) -> register ctx i ~local:false n o
+          | None -> ()) i.m.data_declarations) infos;
+  let bodies = List.concat_map (fun i ->
+      List.filter_map (fun r -> Option.map (fun x -> (i, x)) (routine_signature ctx i r))
+        i.m.routine_declarations) infos in
+  (* §2.20, §5.3, §9.2: a global object and a module may not share a name. *)
+  List.iter (fun i ->
+      match Env.find ctx.globals i.m_name with
+      | Some o ->
+          error ctx ~rule:"global-module-clash" ~section:"9.2" (Env.obj_region o)
+            "a global object and a module may not share the name %s" i.m_name
+      | None -> ()) user;
+  List.iter (fun (i, (routine, body)) ->
+      if not i.is_installed then entry_routine ctx routine;
+      routine_body ctx (module_place ctx i) routine body) bodies;
+  { reports = Report.all report }

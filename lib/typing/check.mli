@@ -1,0 +1,28 @@
+(** The typing judgement of RAPID (chapters 2-5 and 9 of the kernel manual): a task buffer of
+    modules is checked against the installed environment, and every static semantic error
+    (§1.4) is reported with the rule of doc/typing.md it breaks. *)
+
+open Rapid_syntax
+
+type options = {
+  allow_unknown : bool;
+      (** a name that is neither declared nor installed is a warning, not an error: real code
+          calls installed routines beyond rapid-sem's environment *)
+}
+
+val default_options : options
+
+type result = {
+  reports : Report.t list;          (** errors and warnings, in source order *)
+}
+
+val check_task :
+  ?options:options ->
+  installed:Ast.module_declaration list ->
+  Ast.module_declaration list ->
+  result
+(** [check_task ~installed modules] checks [modules] as one task buffer (§9.1) whose installed
+    level (ch. 13) holds the predefined types and objects of the kernel and the declarations of
+    [installed]. *)
+
+val errors : result -> Report.t list

@@ -1,0 +1,109 @@
+open Rapid_syntax
+
+type data_kind =
+  | Variable
+  | Persistent
+  | Constant
+  | Parameter of Tables.access_mode
+  | Loop_variable
+  | Read_only_variable
+
+type level = Routine_level | Module_level of string | Installed_level
+
+type data_object = {
+  d_name : string;
+  d_type : Types.object_type;
+  d_kind : data_kind;
+  d_region : Source.region;
+  d_level : level;
+  d_scope : Ast.declaration_scope;
+  d_optional : bool;
+  d_initial : Ast.expression option;
+}
+
+type parameter = {
+  p_name : string;
+  p_mode : Tables.access_mode;
+  p_type : Types.object_type option;
+  p_region : Source.region;
+}
+
+type parameter_slot = Required_slot of parameter | Optional_slot of parameter list
+type routine_kind = Procedure | Function of Types.object_type | Trap
+
+type routine = {
+  r_name : string;
+  r_kind : routine_kind;
+  r_slots : parameter_slot list;
+  r_region : Source.region;
+  r_level : level;
+  r_local : bool;
+}
+
+type type_object = {
+  t_name : string;
+  t_type : Types.data_type;
+  t_alias : bool;
+  t_region : Source.region;
+  t_level : level;
+  t_local : bool;
+}
+
+type obj = Data of data_object | Routine of routine | Type of type_object | Label of Source.region
+
+let obj_region = function
+  | Data d -> d.d_region
+  | Routine r -> r.r_region
+  | Type t -> t.t_region
+  | Label r -> r
+
+let obj_kind_name = function
+  | Data _ -> "data object"
+  | Routine _ -> "routine"
+  | Type _ -> "data type"
+  | Label _ -> "label"
+
+type table = (string, obj) Hashtbl.t
+
+let key = String.lowercase_ascii
+let create_table () = Hashtbl.create 64
+let find t name = Hashtbl.find_opt t (key name)
+let add t name o = Hashtbl.replace t (key name) o
+let iter f t = Hashtbl.iter f t
+
+type scope = {
+  installed : table;
+  globals : table;
+  module_objects : table;
+  routine : table list;
+  in_installed_module : bool;
+}
+
+let lookup scope name =
+  let rec in_routine = function
+    | [] -> None
+    | t :: rest -> (match find t name with Some o -> Some o | None -> in_routine rest)
+  in
+  match in_routine scope.routine with
+  | Some o -> Some o
+  | None -> (
+      match find scope.module_objects name with
+      | Some o -> Some o
+      | None -> (
+          match (if scope.in_installed_module then None else find scope.globals name) with
+          | Some o -> Some o
+          | None -> find scope.installed name))
+
+(* Data types are looked up past data objects and routines of the same name: a parameter may
+   share its name with a type (installed routines do: TPWrite's \Num, PoseInv's Pose). *)
+let lookup_type scope name =
+  let is_type = function Some (Type _) -> true | _ -> false in
+  let tables =
+    List.map (fun t -> find t name) scope.routine
+    @ [ find scope.module_objects name;
+        (if scope.in_installed_module then None else find scope.globals name);
+        find scope.installed name ]
+  in
+  match List.find_opt is_type tables with
+  | Some found -> found
+  | None -> lookup scope name

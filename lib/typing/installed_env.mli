@@ -1,0 +1,12 @@
+(** The installed environment (ch. 13): the RAPID modules of lib/typing/installed, which declare
+    the installed types, data and routine signatures that programs use (MoveL, TPWrite, tooldata,
+    v100, ...). They are read with the two things only installed code may use: the access mode
+    REF and the type anytype (ch. 11). Their routines' bodies are bound to primitives by name
+    when a program runs. *)
+
+open Rapid_syntax
+
+val modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
+(** Parsed once, on first use. An [Error] is a bug of rapid-sem's own sources. *)
+
+val file_names : string list

@@ -1,0 +1,37 @@
+open Rapid_syntax
+
+type severity = Error | Warning
+
+type t = {
+  severity : severity;
+  rule : string;
+  section : string;
+  region : Source.region;
+  message : string;
+}
+
+type collector = { mutable items : t list }
+
+let create () = { items = [] }
+
+let add c severity ~rule ~section region message =
+  c.items <- { severity; rule; section; region; message } :: c.items
+
+let error c = add c Error
+let warning c = add c Warning
+
+let file_name r = match Source.file_of r with Some f -> Source.name f | None -> ""
+
+let all c =
+  List.stable_sort (fun a b ->
+      compare (file_name a.region, Source.start_offset a.region)
+        (file_name b.region, Source.start_offset b.region))
+    (List.rev c.items)
+
+let to_string d =
+  Printf.sprintf "%s: %s: %s (§%s)" (Source.to_string d.region)
+    (match d.severity with Error -> "semantic error" | Warning -> "warning")
+    d.message d.section
+
+let to_diagnostic d =
+  Diagnostic.make Semantic_error d.region (Printf.sprintf "%s (§%s)" d.message d.section)

@@ -1,0 +1,28 @@
+(** What the static semantics says: errors and warnings, each naming the rule of doc/typing.md
+    it comes from and the manual's section. Checking goes on after an error where the rest of
+    the program can still be judged, so one run reports every independent error. *)
+
+open Rapid_syntax
+
+type severity = Error | Warning
+
+type t = {
+  severity : severity;
+  rule : string;            (** the rule's name, as in doc/typing.md *)
+  section : string;         (** "4.5" *)
+  region : Source.region;
+  message : string;         (** without the section *)
+}
+
+type collector
+
+val create : unit -> collector
+val error : collector -> rule:string -> section:string -> Source.region -> string -> unit
+val warning : collector -> rule:string -> section:string -> Source.region -> string -> unit
+val all : collector -> t list
+(** In source order (file, then position). *)
+
+val to_string : t -> string
+(** [FILE:LINE:COL: semantic error: MESSAGE (§x.y)], or [warning] for a warning. *)
+
+val to_diagnostic : t -> Diagnostic.t

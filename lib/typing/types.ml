@@ -1,0 +1,91 @@
+type value_class = Value | Non_value | Semi_value
+
+type data_type =
+  | Num
+  | Dnum
+  | Bool
+  | String
+  | Installed_atomic of installed_atomic
+  | Record of record_type
+  | Anytype
+
+and installed_atomic = {
+  atomic_name : string;
+  atomic_class : value_class;
+  associated : data_type option;
+}
+
+and record_type = {
+  record_id : int;
+  record_name : string;
+  mutable components : (string * data_type) list;
+}
+
+type dims = Scalar | Sized of int list | Conformant of int
+type object_type = { base : data_type; dims : dims }
+
+let scalar base = { base; dims = Scalar }
+
+let name = function
+  | Num -> "num"
+  | Dnum -> "dnum"
+  | Bool -> "bool"
+  | String -> "string"
+  | Installed_atomic a -> a.atomic_name
+  | Record r -> r.record_name
+  | Anytype -> "anytype"
+
+let to_string { base; dims } =
+  match dims with
+  | Scalar -> name base
+  | Sized sizes -> Printf.sprintf "%s{%s}" (name base) (String.concat "," (List.map string_of_int sizes))
+  | Conformant rank -> Printf.sprintf "%s{%s}" (name base) (String.concat "," (List.init rank (fun _ -> "*")))
+
+(* A record whose definition refers back to itself is refused before it gets here (the
+   resolution of type definitions checks for cycles), so these walks terminate. *)
+let rec value_class = function
+  | Num | Dnum | Bool | String -> Value
+  | Installed_atomic a -> a.atomic_class
+  | Anytype -> Value
+  | Record r ->
+      let classes = List.map (fun (_, t) -> value_class t) r.components in
+      if List.mem Non_value classes then Non_value
+      else if List.mem Semi_value classes then Semi_value
+      else Value
+
+let same_data_type a b =
+  match a, b with
+  | Num, Num | Dnum, Dnum | Bool, Bool | String, String | Anytype, Anytype -> true
+  | Installed_atomic x, Installed_atomic y -> String.lowercase_ascii x.atomic_name = String.lowercase_ascii y.atomic_name
+  | Record x, Record y -> x.record_id = y.record_id
+  | (Num | Dnum | Bool | String | Anytype | Installed_atomic _ | Record _), _ -> false
+
+let associated_value_type t =
+  match t with
+  | Installed_atomic { atomic_class = Semi_value; associated; _ } -> associated
+  | _ -> None
+
+let same_structure a b =
+  match a, b with
+  | Scalar, Scalar -> true
+  | Sized x, Sized y -> x = y
+  | Conformant r, Sized s | Sized s, Conformant r -> List.length s = r
+  | Conformant r, Conformant s -> r = s
+  | (Scalar | Sized _ | Conformant _), _ -> false
+
+let equal_types ~value_context a b =
+  same_structure a.dims b.dims
+  && (same_data_type a.base b.base
+      || value_context
+         && (match associated_value_type a.base, associated_value_type b.base with
+             | Some v, None -> same_data_type v b.base
+             | None, Some v -> same_data_type a.base v
+             | _ -> false))
+
+let counter = ref 0
+let new_record_id () = incr counter; !counter
+
+let same_name a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+let component r name =
+  List.find_map (fun (n, t) -> if same_name n name then Some t else None) r.components

@@ -1,0 +1,8 @@
+MODULE declaration_inout_parameter_non
+! @format 2
+! @section 2.16
+! @expect semantic-error 6:21
+! @description Table of section 2.16, rows routine parameter inout, column non-value: illegal; refused at the data type name.
+  PROC adjust(INOUT iodev dev)
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,19 @@
+MODULE access_constant_to_var
+! @format 2
+! @section 5.2
+! @expect semantic-error 8:14
+! @description Table of section 5.2, row constant, column var: illegal; refused at the argument.
+  CONST num limit := 10;
+  PROC main()
+    take_var limit;
+  ENDPROC
+
+  PROC take_in(num x)
+  ENDPROC
+  PROC take_var(VAR num x)
+  ENDPROC
+  PROC take_pers(PERS num x)
+  ENDPROC
+  PROC take_inout(INOUT num x)
+  ENDPROC
+ENDMODULE

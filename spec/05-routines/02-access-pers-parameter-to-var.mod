@@ -1,0 +1,18 @@
+MODULE access_pers_parameter_to_var
+! @format 2
+! @section 5.2
+! @expect semantic-error 7:14
+! @description Table of section 5.2, row parameter pers, column var: illegal; refused at the argument.
+  PROC pass(PERS num x)
+    take_var x;
+  ENDPROC
+
+  PROC take_in(num x)
+  ENDPROC
+  PROC take_var(VAR num x)
+  ENDPROC
+  PROC take_pers(PERS num x)
+  ENDPROC
+  PROC take_inout(INOUT num x)
+  ENDPROC
+ENDMODULE

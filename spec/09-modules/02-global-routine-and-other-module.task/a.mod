@@ -1,0 +1,4 @@
+MODULE cell
+  PROC palletizer()
+  ENDPROC
+ENDMODULE

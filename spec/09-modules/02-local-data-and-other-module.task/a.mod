@@ -1,0 +1,3 @@
+MODULE conveyor
+  VAR num speed;
+ENDMODULE

@@ -1,0 +1,3 @@
+MODULE station
+  VAR num b_count;
+ENDMODULE

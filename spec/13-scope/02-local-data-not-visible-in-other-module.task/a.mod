@@ -1,0 +1,3 @@
+MODULE settings
+  LOCAL VAR num secret := 1;
+ENDMODULE

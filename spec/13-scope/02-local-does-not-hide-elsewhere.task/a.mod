@@ -1,0 +1,3 @@
+MODULE settings
+  VAR string level := "low";
+ENDMODULE

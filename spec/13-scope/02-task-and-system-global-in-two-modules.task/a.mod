@@ -1,0 +1,3 @@
+MODULE settings
+  TASK PERS num state := 0;
+ENDMODULE

@@ -1,0 +1,3 @@
+MODULE cell
+  PERS num total := 0;
+ENDMODULE

@@ -1,0 +1,6 @@
+MODULE cell
+  LOCAL VAR string counter;
+  LOCAL PROC init()
+    counter := "";
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,6 @@
+MODULE report
+  VAR bool counter;
+  PROC init_report()
+    counter := FALSE;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,4 @@
+MODULE settings
+  PROC report(string message)
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,4 @@
+MODULE settings
+  LOCAL PROC init()
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,4 @@
+MODULE settings
+  PROC init()
+  ENDPROC
+ENDMODULE

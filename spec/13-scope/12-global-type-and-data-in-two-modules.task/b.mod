@@ -1,0 +1,3 @@
+MODULE cell
+  VAR num gripdata;
+ENDMODULE

@@ -1,0 +1,5 @@
+MODULE settings
+  LOCAL RECORD gripdata
+    num force;
+  ENDRECORD
+ENDMODULE
