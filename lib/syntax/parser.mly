@@ -159,9 +159,9 @@ comments:
 type_definition_item:
   | local = local_option r = record_definition
     { let (name, components) = r in
-      at $startpos $endpos (Record_definition { local; name; components }) }
+      at $symbolstartpos $endpos (Record_definition { local; name; components }) }
   | local = local_option a = alias_definition
-    { let (base, name) = a in at $startpos $endpos (Alias_definition { local; base; name }) }
+    { let (base, name) = a in at $symbolstartpos $endpos (Alias_definition { local; base; name }) }
   | TDN_PH { at $startpos $endpos TDN_placeholder }
 
 local_option:
@@ -211,11 +211,11 @@ data_type:
    [routine_content]. *)
 data_declaration_item:
   | local = local_option d = variable_declaration
-    { d $startpos $endpos (if local then Local else Global) }
+    { d $symbolstartpos $endpos (if local then Local else Global) }
   | local = local_option d = persistent_declaration
-    { d $startpos $endpos (if local then Local else Global) }
+    { d $symbolstartpos $endpos (if local then Local else Global) }
   | local = local_option d = constant_declaration
-    { d $startpos $endpos (if local then Local else Global) }
+    { d $symbolstartpos $endpos (if local then Local else Global) }
   | TASK d = variable_declaration { d $startpos $endpos Task }
   | TASK d = persistent_declaration { d $startpos $endpos Task }
   | DDN_PH { at $startpos $endpos DDN_placeholder }
@@ -652,9 +652,9 @@ routine_declaration_list:
    | <trap declaration>) | <comment> | <RDN>. The comment alternative is taken by
    [routine_declaration_list]. *)
 routine_declaration_item:
-  | local = local_option d = procedure_declaration { at $startpos $endpos (d local) }
-  | local = local_option d = function_declaration { at $startpos $endpos (d local) }
-  | local = local_option d = trap_declaration { at $startpos $endpos (d local) }
+  | local = local_option d = procedure_declaration { at $symbolstartpos $endpos (d local) }
+  | local = local_option d = function_declaration { at $symbolstartpos $endpos (d local) }
+  | local = local_option d = trap_declaration { at $symbolstartpos $endpos (d local) }
   | RDN_PH { at $startpos $endpos RDN_placeholder }
 
 (* §5.2 <parameter list> ::= <first parameter declaration> { <next parameter declaration> } *)
@@ -664,14 +664,14 @@ parameter_list:
 (* §5.2 <first parameter declaration> ::= <parameter declaration>
    | <optional parameter declaration> | <PAR> *)
 first_parameter_declaration:
-  | p = parameter_declaration { at $startpos $endpos (Required_parameter p) }
+  | p = parameter_declaration { { it = Required_parameter p; at = p.at } }
   | p = optional_parameter_declaration { p }
   | PAR_PH { at $startpos $endpos PAR_placeholder }
 
 (* §5.2 <next parameter declaration> ::= ',' <parameter declaration>
    | [','] <optional parameter declaration> | ',' <PAR> *)
 next_parameter_declaration:
-  | COMMA p = parameter_declaration { at $startpos(p) $endpos (Required_parameter p) }
+  | COMMA p = parameter_declaration { { it = Required_parameter p; at = p.at } }
   | p = optional_parameter_declaration { p }
   | COMMA p = optional_parameter_declaration { p }
   | COMMA PAR_PH { at $startpos($2) $endpos PAR_placeholder }
@@ -683,7 +683,7 @@ optional_parameter_declaration:
     { at $startpos $endpos (Optional_parameter (a :: rest)) }
 
 alternative:
-  | p = parameter_declaration { at $startpos $endpos (Alternative p) }
+  | p = parameter_declaration { { it = Alternative p; at = p.at } }
   | ALT_PH { at $startpos $endpos ALT_placeholder }
 
 (* §5.2 <parameter declaration> ::= [ VAR | PERS | INOUT ] <data type> <identifier>
@@ -691,8 +691,8 @@ alternative:
 parameter_declaration:
   | mode = access_mode data_type = data_type name = identifier array = array_part
     { match mode, data_type.it, array with
-      | In, Ident s, Not_array when is_word "switch" s -> at $startpos $endpos (Switch name)
-      | _ -> at $startpos $endpos (Parameter { mode; data_type; name; array }) }
+      | In, Ident s, Not_array when is_word "switch" s -> at $symbolstartpos $endpos (Switch name)
+      | _ -> at $symbolstartpos $endpos (Parameter { mode; data_type; name; array }) }
 
 (* REF: only installed routines have it (ch. 11); the lexer makes the word a token only when it
    reads the installed environment. *)

@@ -27,6 +27,7 @@ type ctx = {
   pos_type : T.data_type;
   orient_type : T.data_type;
   switch_type : T.data_type;     (* the empty domain of a switch parameter (§5.2) *)
+  module_names : Env.table;
   early_constants : (string, expression) Hashtbl.t;
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
@@ -162,13 +163,10 @@ let rec reference ctx place (r : data_reference) : reference =
       List.iter (fun i -> check_expression ctx place i (T.scalar Num)) indexes;
       match whole.rtype with
       | Known { base; dims = Sized sizes } when List.length sizes <> List.length indexes ->
-          error ctx ~rule:"index-count" ~section:"3.6" r.at
-            "%s has %d dimension(s), but %d index(es) are given" name.it (List.length sizes)
-            (List.length indexes);
+          index_count ctx name indexes (List.length sizes);
           { whole with rtype = Known (T.scalar base) }
       | Known { base; dims = Conformant rank } when rank <> List.length indexes ->
-          error ctx ~rule:"index-count" ~section:"3.6" r.at
-            "%s has %d dimension(s), but %d index(es) are given" name.it rank (List.length indexes);
+          index_count ctx name indexes rank;
           { whole with rtype = Known (T.scalar base) }
       | Known { base; dims = Sized sizes } ->
           List.iter2 (fun (i : expression) size ->
@@ -198,6 +196,13 @@ let rec reference ctx place (r : data_reference) : reference =
             "a value of type %s has no components" (T.to_string t);
           { whole with rtype = Unknown }
       | Numeric_literal | Unknown -> { whole with rtype = Unknown })
+
+(* §3.6: "the number of elements in the index list must fit the declared rank (1, 2 or 3)";
+   reported at the first index too many, or at the array's name when there are too few. *)
+and index_count ctx (name : name) indexes rank =
+  let at = match List.nth_opt indexes rank with Some (i : expression) -> i.at | None -> name.at in
+  error ctx ~rule:"index-count" ~section:"3.6" at "%s has %d dimension(s), but %d index(es) are given"
+    name.it rank (List.length indexes)
 
 (* ------------------------------------------------------------------ expressions *)
 
@@ -259,10 +264,6 @@ and unary_error ctx e op ta =
 and binary ctx place e op a b =
   match op with
   | Equal | Not_equal -> equality ctx place e op a b
-  | And | Or | Xor ->
-      check_expression ctx place a (T.scalar Bool);
-      check_expression ctx place b (T.scalar Bool);
-      Known (T.scalar Bool)
   | _ ->
       let ta = infer ctx place a and tb = infer ctx place b in
       if ta = Unknown || tb = Unknown then Unknown
@@ -277,7 +278,7 @@ and binary ctx place e op a b =
             match List.find_opt (fun (row : Tables.binary_row) -> row.op = op && row.left = la && row.right = lb)
                     Tables.binary_operators with
             | Some row ->
-                integer_operands ctx place row a b;
+                integer_operands ctx place e row a b;
                 if ta = Numeric_literal && tb = Numeric_literal && row.result = O_num then Numeric_literal
                 else type_of_operand ctx row.result
             | None -> binary_error ctx e op ta tb)
@@ -291,7 +292,7 @@ and binary_error ctx e op ta tb =
 
 (* §3.12 notes (b), (c): operands of DIV and MOD must represent integers (positive ones for
    dnum); where an operand is constant, that is known before execution. *)
-and integer_operands ctx place (row : Tables.binary_row) a b =
+and integer_operands ctx place (e : expression) (row : Tables.binary_row) a b =
   let natural = List.mem Tables.Natural_operands row.notes in
   if natural || List.mem Tables.Integer_operands row.notes then
     List.iter (fun (x : expression) ->
@@ -299,11 +300,11 @@ and integer_operands ctx place (row : Tables.binary_row) a b =
         | Some (Number q as v) -> (
             match Const_eval.integer_of v with
             | None ->
-                error ctx ~rule:"integer-operand" ~section:"3.12" x.at
+                error ctx ~rule:"integer-operand" ~section:"3.12" e.at
                   "an operand of %s must represent an integer value, and %s does not"
                   (Tables.operator_symbol row.op) (Q.to_string q)
             | Some n when natural && Z.lt n Z.zero ->
-                error ctx ~rule:"integer-operand" ~section:"3.12" x.at
+                error ctx ~rule:"integer-operand" ~section:"3.12" e.at
                   "an operand of dnum %s must represent a positive integer value (>= 0)"
                   (Tables.operator_symbol row.op)
             | Some _ -> ())
@@ -425,8 +426,15 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
   | Some ptype when is_unknown ptype -> loosely_expression ctx place e
   | Some ptype -> (
       match p.p_mode with
-      | Mode_in ->
-          check_expression ctx place e ptype
+      | Mode_in -> (
+          match e.it with
+          | Aggregate _ -> check_expression ctx place e ptype
+          | _ ->
+              let actual = infer ctx place e in
+              if not (compatible ~expected:ptype actual) then
+                error ctx ~rule:"equal-types" ~section:"2.17" arg.at
+                  "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
+                  p.p_name (type_string actual))
       | mode -> (
           let r = match e.it with Data_reference r -> Some (reference ctx place r) | _ -> None in
           let kind = argument_kind e r in
@@ -449,14 +457,25 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
            | Legal | Execution_error | Not_applicable -> ());
           match r with
           | Some { rtype = Known t; _ } ->
+              (* §2.16, object references, footnote iii: a non-value or semi-value object is an
+                 argument only to a var or ref parameter. *)
+              (match T.value_class t.base, mode with
+               | (Non_value | Semi_value), (Mode_pers | Mode_inout) when t.base <> ctx.switch_type ->
+                   error ctx ~rule:"argument-value-class" ~section:"2.16" arg.at
+                     "%s is of the %s type %s: it can be passed only to a VAR or REF parameter, and %s is %s"
+                     (match r with Some { object_ = Some d; _ } -> d.d_name | _ -> "this object")
+                     (if T.value_class t.base = Non_value then "non-value" else "semi-value")
+                     (T.to_string t) p.p_name (mode_name mode)
+               | _ -> ());
               if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
-                error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found %s"
-                  (T.to_string ptype) (T.to_string t)
+                error ctx ~rule:"equal-types" ~section:"2.17" arg.at "expected a value of type %s for the parameter %s, found %s"
+                  (T.to_string ptype) p.p_name (T.to_string t)
           | Some _ -> ()
           | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
 
 (* §3.11, §4.6: the arguments of a call against the routine's parameter list, in order. *)
 and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
+  if routine.r_open then loose_arguments ctx place args else
   let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
   let arg_name (a : argument) =
     match a.it with
@@ -545,7 +564,7 @@ and optional_argument ctx place (a : argument) (p : Env.parameter) =
       (match object_ with
        | Some { d_optional = true; _ } | None -> ()
        | Some d ->
-           error ctx ~rule:"conditional-argument" ~section:"3.11" a.at
+           error ctx ~rule:"conditional-argument" ~section:"3.11" r.at
              "a conditional argument passes on an optional parameter, and %s is not one" d.d_name);
       match rtype, p.p_type with
       | Known t, Some pt when t.base <> ctx.switch_type && pt.base <> T.Anytype ->
@@ -613,6 +632,11 @@ let assignment_target ctx place (r : data_reference) : ty =
   | Known t -> (
       match T.value_class t.base with
       | Value -> rtype
+      | Semi_value when List.exists (T.same_name (T.name t.base)) Installed_atomic.refuses_update ->
+          error ctx ~rule:"assign-refused-by-type" ~section:"2.16" r.at
+            "the target is of the semi-value type %s, which refuses an update by value (an input)"
+            (T.to_string t);
+          Unknown
       | Semi_value -> Known (in_value_context t)
       | Non_value ->
           error ctx ~rule:"assign-value-class" ~section:"4.5" r.at
@@ -861,8 +885,10 @@ and test ctx place (t : test_statement) =
   List.iter (fun (c : case_clause) ->
       match c.it with
       | Case (values, l) ->
+          (* §4.20 prints <test value> ::= <constant expression>, but ch. 8's own example tests
+             INTNO against variables (TEST INTNO CASE empty:): test values may be any
+             expression of the test expression's type (doc/rulings.md R-4.20). *)
           List.iter (fun (v : expression) ->
-              ignore (constant_expression ctx place ~what:"a test value" v);
               match tt with
               | Known ty -> check_expression ctx place v ty
               | Numeric_literal -> check_expression ctx place v (T.scalar Num)
@@ -947,7 +973,7 @@ let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_dec
        | (Var | Const), Some init -> ignore (constant_expression ctx place ~what:"an initial value" init)
        | Pers, Some init -> literal_expression ctx init
        | Pers, None when scope <> Global && not in_routine ->
-           error ctx ~rule:"pers-initial-value" ~section:"2.23" name.at
+           error ctx ~rule:"pers-initial-value" ~section:"2.23" decl.at
              "a LOCAL or TASK persistent must have an initial value: only system-global \
               persistents may omit it"
        | _, None -> ());
@@ -1170,7 +1196,8 @@ let register ctx info ~local name (obj : Env.obj) =
       end
 
 let scope_of ctx info : Env.scope =
-  { installed = ctx.installed; globals = ctx.globals; module_objects = info.objects; routine = [];
+  { installed = ctx.installed; globals = ctx.globals; module_objects = info.objects;
+    module_names = ctx.module_names; routine = [];
     in_installed_module = info.is_installed }
 
 let module_place ctx info =
@@ -1278,8 +1305,19 @@ let routine_signature ctx info (r : routine_declaration) =
     | None -> None
     | Some n ->
         let slots = parameter_slots ctx place params in
+        (* A parameter list with placeholders (§2.9) is not known enough to check calls. *)
+        let r_open = List.exists (fun (p : Ast.parameter) ->
+            match p.it with
+            | PAR_placeholder -> true
+            | Optional_parameter alts ->
+                List.exists (fun (a : alternative) -> match a.it with
+                    | ALT_placeholder -> true
+                    | Alternative { it = Parameter { array = DIM_placeholder; _ }; _ } -> true
+                    | Alternative _ -> false) alts
+            | Required_parameter { it = Parameter { array = DIM_placeholder; _ }; _ } -> true
+            | Required_parameter _ -> false) params in
         let routine = { Env.r_name = n; r_kind = kind; r_slots = slots; r_region = name.at;
-                        r_level = level; r_local = local } in
+                        r_level = level; r_local = local; r_open } in
         register ctx info ~local n (Routine routine);
         Some routine
   in
@@ -1330,6 +1368,7 @@ let builtin_environment report options =
     report; options; installed; globals = Env.create_table ();
     pos_type = resolve "pos"; orient_type = resolve "orient";
     switch_type = T.Installed_atomic { atomic_name = "switch"; atomic_class = Non_value; associated = None };
+    module_names = Env.create_table ();
     early_constants = Hashtbl.create 64;
   }
 
@@ -1353,7 +1392,8 @@ let check_task ?(options = default_options) ~installed modules =
         seen
       end
       else key i.m_name :: seen) [] infos);
-  List.iter (fun i -> module_attributes ctx i.m.attributes) user;
+  List.iter (fun i -> module_attributes ctx i.m.attributes;
+                      if i.m_name <> "" then Env.add ctx.module_names i.m_name (Module i.m.module_name.at)) user;
   (* Constants' initial values, for array dimensions that name them. *)
   List.iter (fun i ->
       List.iter (fun (d : data_declaration) ->
@@ -1380,10 +1420,19 @@ let check_task ?(options = default_options) ~installed modules =
       List.filter_map (fun r -> Option.map (fun x -> (i, x)) (routine_signature ctx i r))
         i.m.routine_declarations) infos in
   (* §2.20, §5.3, §9.2: a global object and a module may not share a name. *)
-  List.iter (fun i ->
+  let index_of_module name =
+    let rec go k = function [] -> -1 | i :: rest -> if T.same_name i.m_name name then k else go (k + 1) rest in
+    go 0 infos in
+  List.iteri (fun k i ->
       match Env.find ctx.globals i.m_name with
       | Some o ->
-          error ctx ~rule:"global-module-clash" ~section:"9.2" (Env.obj_region o)
+          (* Reported at whichever of the two comes later in the task buffer. *)
+          let object_module = match o with
+            | Data { d_level = Module_level m; _ } | Routine { r_level = Module_level m; _ }
+            | Type { t_level = Module_level m; _ } -> index_of_module m
+            | _ -> -1 in
+          let at = if object_module >= k + List.length installed then Env.obj_region o else i.m.module_name.at in
+          error ctx ~rule:"global-module-clash" ~section:"9.2" at
             "a global object and a module may not share the name %s" i.m_name
       | None -> ()) user;
   List.iter (fun (i, (routine, body)) ->

@@ -38,6 +38,7 @@ type routine = {
   r_region : Source.region;
   r_level : level;
   r_local : bool;
+  r_open : bool;
 }
 
 type type_object = {
@@ -49,19 +50,26 @@ type type_object = {
   t_local : bool;
 }
 
-type obj = Data of data_object | Routine of routine | Type of type_object | Label of Source.region
+type obj =
+  | Data of data_object
+  | Routine of routine
+  | Type of type_object
+  | Label of Source.region
+  | Module of Source.region
 
 let obj_region = function
   | Data d -> d.d_region
   | Routine r -> r.r_region
   | Type t -> t.t_region
   | Label r -> r
+  | Module r -> r
 
 let obj_kind_name = function
   | Data _ -> "data object"
   | Routine _ -> "routine"
   | Type _ -> "data type"
   | Label _ -> "label"
+  | Module _ -> "module"
 
 type table = (string, obj) Hashtbl.t
 
@@ -75,6 +83,7 @@ type scope = {
   installed : table;
   globals : table;
   module_objects : table;
+  module_names : table;
   routine : table list;
   in_installed_module : bool;
 }
@@ -92,7 +101,11 @@ let lookup scope name =
       | None -> (
           match (if scope.in_installed_module then None else find scope.globals name) with
           | Some o -> Some o
-          | None -> find scope.installed name))
+          | None -> (
+              (* §9.2: a module name hides a predefined object of the same name. *)
+              match (if scope.in_installed_module then None else find scope.module_names name) with
+              | Some o -> Some o
+              | None -> find scope.installed name)))
 
 (* Data types are looked up past data objects and routines of the same name: a parameter may
    share its name with a type (installed routines do: TPWrite's \Num, PoseInv's Pose). *)
@@ -102,6 +115,7 @@ let lookup_type scope name =
     List.map (fun t -> find t name) scope.routine
     @ [ find scope.module_objects name;
         (if scope.in_installed_module then None else find scope.globals name);
+        (if scope.in_installed_module then None else find scope.module_names name);
         find scope.installed name ]
   in
   match List.find_opt is_type tables with

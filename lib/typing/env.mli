@@ -50,6 +50,7 @@ type routine = {
   r_region : Source.region;
   r_level : level;
   r_local : bool;
+  r_open : bool;    (** its parameter list holds placeholders (§2.9): calls are not checked *)
 }
 
 type type_object = {
@@ -66,6 +67,7 @@ type obj =
   | Routine of routine
   | Type of type_object
   | Label of Source.region        (** §4.4 *)
+  | Module of Source.region       (** §9.2: a module's name, which hides predefined objects *)
 
 val obj_region : obj -> Source.region
 val obj_kind_name : obj -> string
@@ -87,12 +89,14 @@ type scope = {
   installed : table;              (** predefined and installed objects *)
   globals : table;                (** global objects of all user modules of the task buffer *)
   module_objects : table;         (** every object of the module being checked *)
+  module_names : table;           (** the user modules of the task buffer (§9.2) *)
   routine : table list;           (** innermost first: a FOR loop's variable, the routine's *)
   in_installed_module : bool;     (** ch. 13: installed modules see their own module and the installed level *)
 }
 
 val lookup : scope -> string -> obj option
-(** The look-up order of ch. 13: own routine, own module, global in the program, installed. *)
+(** The look-up order of ch. 13: own routine, own module, global in the program, installed;
+    a module name hides an installed object of the same name (§9.2). *)
 
 val lookup_type : scope -> string -> obj option
 (** Like {!lookup}, but a data type is found past other objects of the same name (a parameter

@@ -42,3 +42,8 @@ let find name =
         Some (Types.Installed_atomic { Types.atomic_name; atomic_class; associated })
       else None)
     atomic_types
+
+(* §2.16: "半值对象(类型)可拒绝'按值'读取或更新 … 由于sig1表示一项输入器件,因此,sig1拒绝下列
+   赋值": a semi-value type may refuse reading or updating by value; an input signal refuses
+   assignment. Output signals accept it (the table's legal cell). *)
+let refuses_update = [ "signaldi"; "signalai"; "signalgi" ]

@@ -12,3 +12,7 @@ val atomic_types : (string * Types.value_class * Types.data_type option) list
 
 val find : string -> Types.data_type option
 (** The installed atomic type of that name, compared without regard to letter case (§2.3). *)
+
+val refuses_update : string list
+(** Semi-value types whose objects refuse an update by value (§2.16: "sig1 represents an input
+    device and refuses the assignment sig1 := 1"): the input signals. *)
