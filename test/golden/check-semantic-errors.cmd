@@ -1,0 +1,1 @@
+check semantic-errors.mod

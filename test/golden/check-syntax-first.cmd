@@ -1,0 +1,1 @@
+check for-without-from.mod semantic-errors.mod

@@ -1,0 +1,7 @@
+MODULE io
+  PROC main()
+    SetDO doGripper, 1;
+    WaitDI diPartPresent, 1;
+    Grip \Close;
+  ENDPROC
+ENDMODULE
