@@ -56,7 +56,15 @@ let run_case (case : Spec_case.t) =
             let result = Rapid_typing.Check.check_task ~installed modules in
             match Rapid_typing.Check.errors result with
             | [] -> accepted case expected
-            | first :: _ -> compare_refusal case expected (Rapid_typing.Report.to_diagnostic first)))
+            | first :: _ -> (
+                (* The report must also name one of the sections the case tests. *)
+                match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with
+                | { verdict = Passed; _ } as o
+                  when not (List.exists (fun s -> List.mem s case.sections) first.sections) ->
+                    { o with verdict = Failed;
+                             detail = Printf.sprintf "right place, but the report cites §%s, and the case tests §%s: %s"
+                                 (String.concat ", §" first.sections) (String.concat ", §" case.sections) o.detail }
+                | o -> o)))
 
 let find_cases dir =
   let rec walk acc path =

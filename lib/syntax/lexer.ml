@@ -323,6 +323,30 @@ let placeholder = [%sedlex.regexp?
          | Chars "Aa", Chars "Rr", Chars "Gg"
          | Chars "Ii", Chars "Dd" ), '>']
 
+(* The token of the numeric literal text.[start..stop-1] once it is known to be in range.
+   Short literals repeat (0, 1, 9E+09); coordinates such as 1125.58 seldom do, and would only
+   fill the table. *)
+let number lx text start stop =
+  NUM (if stop - start <= 5 then Names.find_or_add lx.names text start stop
+       else String.sub text start (stop - start))
+
+(* §2.3, §2.4: the token of the name text.[start..stop-1], [chars] characters long, which is
+   the current lexeme (an error is reported at it). *)
+let name lx text start stop chars =
+  let reserved = Reserved.find text start stop in
+  if reserved >= 0 then Reserved.tokens.(reserved)
+  else begin
+    if chars > max_identifier_length then
+      error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
+                  max_identifier_length);
+    let name = Names.find_or_add lx.names text start stop in
+    (* TASK (§2.18) and, in the installed environment, REF (ch. 11) are not reserved
+       words but begin constructs of their own: the parser accepts TASK as a name too. *)
+    if stop - start = 4 && String.lowercase_ascii name = "task" then TASK name
+    else if lx.installed && stop - start = 3 && String.lowercase_ascii name = "ref" then REF
+    else IDENT name
+  end
+
 let newline = [%sedlex.regexp? "\r\n" | '\n' | '\r']
 let white_space = [%sedlex.regexp? ' ' | '\t' | '\012' | '\r' | '\n']
 
@@ -383,16 +407,10 @@ let rec token lx =
       HEADER (header_lines lx start [])
   | num_literal ->
       let text = buf.text and start = buf.start and stop = buf.pos in
-      (* Short literals repeat (0, 1, 9E+09); coordinates such as 1125.58 seldom do, and
-         would only fill the table. *)
-      let spelling () =
-        if stop - start <= 5 then Names.find_or_add lx.names text start stop
-        else String.sub text start (stop - start)
-      in
-      if plainly_in_range text start stop then NUM (spelling ())
+      if plainly_in_range text start stop then number lx text start stop
       else begin
         match Num_literal.of_text (String.sub text start (stop - start)) with
-        | Ok _ -> NUM (spelling ())
+        | Ok _ -> number lx text start stop
         | Error message -> error lx message
       end
   (* Listed after [num_literal] so that a match of equal length is a literal: [2E5] is one
@@ -400,21 +418,7 @@ let rec token lx =
   | num_literal, (letter | digit | '_') ->
       error lx "a numeric literal must be separated from a following identifier, reserved \
                 word or numeric literal by white space (§2.2)"
-  | ident ->
-      let text = buf.text and start = buf.start and stop = buf.pos in
-      let reserved = Reserved.find text start stop in
-      if reserved >= 0 then Reserved.tokens.(reserved)
-      else begin
-        if Sedlexing.lexeme_length buf > max_identifier_length then
-          error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
-                      max_identifier_length);
-        let name = Names.find_or_add lx.names text start stop in
-        (* TASK (§2.18) and, in the installed environment, REF (ch. 11) are not reserved
-           words but begin constructs of their own: the parser accepts TASK as a name too. *)
-        if stop - start = 4 && String.lowercase_ascii name = "task" then TASK name
-        else if lx.installed && stop - start = 3 && String.lowercase_ascii name = "ref" then REF
-        else IDENT name
-      end
+  | ident -> name lx buf.text buf.start buf.pos (Sedlexing.lexeme_length buf)
   | placeholder ->
       Hashtbl.find placeholders (String.uppercase_ascii (text_of lx))
   | '"' ->
@@ -463,12 +467,102 @@ let rec token lx =
       else error lx (Printf.sprintf "illegal character %s (§2.1)" (describe_char c))
   | _ -> error lx "illegal character (§2.1)"
 
+(* Speed (bench/README.md): the tokens that make up most of a CAD module (white space,
+   punctuation, plain decimal literals, ASCII names) are read here directly from the text, and
+   everything else by the rules of [token]. Each shortcut takes exactly the lexeme that the
+   rules would take (their longest match), or leaves the text untouched for them:
+   - a white-space character is skipped as [Plus white_space] skips it;
+   - no rule reads more than one character from [ ] ( ) { } , ; + - * / ? | \ ;
+   - digits, optionally '.' and digits, followed by a character that cannot continue a
+     literal nor make it one run into a name (not a letter, digit, '_' or '.', and ASCII):
+     the rules would read the same literal, and [number] gives the same token. Without an
+     exponent, a literal of at most 300 characters lies between 10^-300 and 10^300, well
+     inside the range that [plainly_in_range] checks;
+   - an ASCII letter, then ASCII letters, digits and '_', followed by an ASCII character that
+     cannot continue a name: the Latin-1 letters of §2.1 are not ASCII, so a name that runs on
+     into one is left to the rules. *)
+module Shortcut = struct
+  (* Make text.[b.pos..stop-1], all ASCII, the current lexeme, as the rules' [start] would. *)
+  let take (b : Sedlexing.lexbuf) stop =
+    b.start <- b.pos;
+    b.start_char <- b.pos_char;
+    b.pos_char <- b.pos_char + (stop - b.pos);
+    b.pos <- stop
+
+  let is_digit c = c >= '0' && c <= '9'
+  let is_name_char c =
+    (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit c || c = '_'
+
+  let rec digits text n i =
+    if i < n && is_digit (String.unsafe_get text i) then digits text n (i + 1) else i
+
+  let rec name_chars text n i =
+    if i < n && is_name_char (String.unsafe_get text i) then name_chars text n (i + 1) else i
+
+  (* Where the plain decimal literal at [i] (a digit) stops, or -1: the rules must decide. *)
+  let number text i =
+    let n = String.length text in
+    let stop = digits text n i in
+    let stop =
+      if stop < n && String.unsafe_get text stop = '.' then
+        let f = digits text n (stop + 1) in
+        if f = stop + 1 then -1 else f
+      else stop
+    in
+    if stop < 0 || stop >= n then stop
+    else
+      let c = String.unsafe_get text stop in
+      if is_name_char c || c = '.' || Char.code c >= 0x80 then -1 else stop
+
+  (* Where the ASCII name at [i] (a letter) stops, or -1: the rules must decide. *)
+  let name text i =
+    let n = String.length text in
+    let stop = name_chars text n (i + 1) in
+    if stop < n && Char.code (String.unsafe_get text stop) >= 0x80 then -1 else stop
+end
+
+let rec shortcut lx =
+  let b = lx.buf in
+  let text = b.text and p = b.pos in
+  if p >= String.length text then token lx
+  else
+    let single t = Shortcut.take b (p + 1); t in
+    match String.unsafe_get text p with
+    | ' ' | '\t' | '\012' | '\r' | '\n' ->
+        b.pos <- p + 1;
+        b.pos_char <- b.pos_char + 1;
+        shortcut lx
+    | '[' -> single LBRACKET
+    | ']' -> single RBRACKET
+    | ',' -> single COMMA
+    | ';' -> single SEMICOLON
+    | '(' -> single LPAREN
+    | ')' -> single RPAREN
+    | '{' -> single LBRACE
+    | '}' -> single RBRACE
+    | '+' -> single PLUS
+    | '-' -> single MINUS
+    | '*' -> single STAR
+    | '/' -> single SLASH
+    | '?' -> single QUESTION
+    | '|' -> single BAR
+    | '\\' -> single BACKSLASH
+    | '0' .. '9' ->
+        let stop = Shortcut.number text p in
+        if stop < 0 || (stop - p > 300 && not (plainly_in_range text p stop)) then token lx
+        else begin Shortcut.take b stop; number lx text p stop end
+    | 'A' .. 'Z' | 'a' .. 'z' ->
+        let stop = Shortcut.name text p in
+        if stop < 0 then token lx
+        else begin Shortcut.take b stop; name lx text p stop (stop - p) end
+    | _ -> token lx
+
 (* A token that starts where the previous one stopped shares its position record: in CAD
    aggregates most tokens touch ([[1125.58,-0.7,...]]), and the parser's stack keeps these
    records as long as it keeps the tokens. *)
 let next lx =
   lx.token_start <- -1;
-  let t = token lx in
+  let t = shortcut lx in
   let stop = Sedlexing.lexeme_end lx.buf in
   let start = if lx.token_start >= 0 then lx.token_start else Sedlexing.lexeme_start lx.buf in
   let startp = if start = lx.last_stop.pos_cnum then lx.last_stop else position start in

@@ -64,11 +64,17 @@ let type_string = function
 
 (* §2.20, ch. 13: a name that is neither declared nor installed. *)
 let unknown_name ctx region what name =
+  let section = match what with
+    | "data type" -> "2.11,2.12,13"
+    | "function" -> "3.11,5.3,13"
+    | "procedure" -> "4.6,5.3,13"
+    | "trap" -> "4.15,5.3,13"
+    | _ -> "2.20,13" in
   if ctx.options.allow_unknown then
-    Report.warning ctx.report ~rule:"unknown-name" ~section:"2.20" region
+    Report.warning ctx.report ~rule:"unknown-name" ~section region
       (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown)" what name)
   else
-    error ctx ~rule:"unknown-name" ~section:"2.20" region "unknown %s %s: it is neither declared nor installed" what name
+    error ctx ~rule:"unknown-name" ~section region "unknown %s %s: it is neither declared nor installed" what name
 
 (* §2.11: <data type> ::= <identifier>, bound to a type definition. *)
 let resolve_type ctx place (id : identifier) : T.data_type option =
@@ -84,7 +90,7 @@ let resolve_type ctx place (id : identifier) : T.data_type option =
           end
           else Some t.t_type
       | Some o ->
-          error ctx ~rule:"data-type-name" ~section:"2.11" id.at "%s is a %s, not a data type" name
+          error ctx ~rule:"data-type-name" ~section:"2.11,13" id.at "%s is a %s, not a data type" name
             (Env.obj_kind_name o);
           None
       | None -> unknown_name ctx id.at "data type" name; None)
@@ -154,13 +160,14 @@ let rec reference ctx place (r : data_reference) : reference =
       match Env.lookup place.scope name.it with
       | Some (Data d) -> { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
       | Some o ->
-          error ctx ~rule:"data-object-name" ~section:"3.6" name.at "%s is a %s, not a data object"
+          error ctx ~rule:"data-object-name"
+            ~section:(match o with Label _ -> "4.4,3.6" | _ -> "3.6,2.20,13") name.at "%s is a %s, not a data object"
             name.it (Env.obj_kind_name o);
           { object_ = None; rtype = Unknown }
       | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
   | Element (name, indexes) -> (
       let whole = reference ctx place { r with it = Entire name } in
-      List.iter (fun i -> check_expression ctx place i (T.scalar Num)) indexes;
+      List.iter (fun i -> check_expression ~sections:"3.6,2.17" ctx place i (T.scalar Num)) indexes;
       match whole.rtype with
       | Known { base; dims = Sized sizes } when List.length sizes <> List.length indexes ->
           index_count ctx name indexes (List.length sizes);
@@ -188,11 +195,11 @@ let rec reference ctx place (r : data_reference) : reference =
           match T.component rt comp.it with
           | Some t -> { whole with rtype = Known (T.scalar t) }
           | None ->
-              error ctx ~rule:"component-name" ~section:"3.6" comp.at
+              error ctx ~rule:"component-name" ~section:"3.6,2.14" comp.at
                 "the record type %s has no component %s" rt.record_name comp.it;
               { whole with rtype = Unknown })
       | Known t ->
-          error ctx ~rule:"component-not-record" ~section:"3.6" comp.at
+          error ctx ~rule:"component-not-record" ~section:"3.6,2.14" comp.at
             "a value of type %s has no components" (T.to_string t);
           { whole with rtype = Unknown }
       | Numeric_literal | Unknown -> { whole with rtype = Unknown })
@@ -351,25 +358,25 @@ and equality ctx place e op a b =
 
 (* An expression where the context determines the type it must have (§2.17): assignment,
    initial values, arguments, RETURN, test values, aggregate members. *)
-and check_expression ctx place (e : expression) (expected : T.object_type) =
+and check_expression ?(sections = "2.17") ctx place (e : expression) (expected : T.object_type) =
   match e.it with
-  | Aggregate members -> aggregate ctx place e members expected
+  | Aggregate members -> aggregate ~sections ctx place e members expected
   | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
       match infer ctx place e with
       | Numeric_literal -> ignore op; ignore a; ignore b
-      | t -> mismatch ctx e expected t)
-  | _ -> mismatch ctx e expected (infer ctx place e)
+      | t -> mismatch ~sections ctx e expected t)
+  | _ -> mismatch ~sections ctx e expected (infer ctx place e)
 
-and mismatch ctx (e : expression) expected actual =
+and mismatch ~sections ctx (e : expression) expected actual =
   if not (compatible ~expected actual) then
-    error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found %s"
+    error ctx ~rule:"equal-types" ~section:sections e.at "expected a value of type %s, found %s"
       (T.to_string expected) (type_string actual)
 
 (* §3.10, §2.17 rule 2: an aggregate is an array or record value whose members have the types of
    the corresponding elements or components. *)
-and aggregate ctx place e members expected =
+and aggregate ~sections ctx place e members expected =
   let count = List.length members in
   let element_type (dims : T.dims) : T.dims =
     match dims with
@@ -381,21 +388,21 @@ and aggregate ctx place e members expected =
   match expected.dims, expected.base with
   | (Sized (n :: _)), base ->
       if n <> count then
-        error ctx ~rule:"aggregate-size" ~section:"3.10" e.at
+        error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the array dimension is %d" count n;
-      List.iter (fun m -> check_expression ctx place m { base; dims = element_type expected.dims }) members
+      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Conformant _, base ->
-      List.iter (fun m -> check_expression ctx place m { base; dims = element_type expected.dims }) members
+      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Scalar, Record rt ->
       let components = rt.components in
       if List.length components <> count then
-        error ctx ~rule:"aggregate-size" ~section:"3.10" e.at
+        error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the record type %s has %d components" count
           rt.record_name (List.length components)
-      else List.iter2 (fun m (_, t) -> check_expression ctx place m (T.scalar t)) members components
+      else List.iter2 (fun m (_, t) -> check_expression ~sections ctx place m (T.scalar t)) members components
   | Scalar, T.Anytype -> List.iter (fun m -> ignore (infer ctx place m)) members
   | Scalar, _ | Sized [], _ ->
-      error ctx ~rule:"equal-types" ~section:"2.17" e.at "expected a value of type %s, found an aggregate"
+      error ctx ~rule:"equal-types" ~section:("3.10," ^ sections) e.at "expected a value of type %s, found an aggregate"
         (T.to_string expected)
 
 (* ------------------------------------------------------------------ calls *)
@@ -420,7 +427,8 @@ and mode_name : Tables.access_mode -> string = function
 
 (* One argument against one parameter: its type (§2.17), its value class (§2.16) and its
    access mode (§5.2). *)
-and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
+and argument ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
+  let sections = call ^ ",5.2,2.17" in
   match p.p_type with
   | None -> ()
   | Some ptype when is_unknown ptype -> loosely_expression ctx place e
@@ -428,11 +436,11 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
       match p.p_mode with
       | Mode_in -> (
           match e.it with
-          | Aggregate _ -> check_expression ctx place e ptype
+          | Aggregate _ -> check_expression ~sections ctx place e ptype
           | _ ->
               let actual = infer ctx place e in
               if not (compatible ~expected:ptype actual) then
-                error ctx ~rule:"equal-types" ~section:"2.17" arg.at
+                error ctx ~rule:"equal-types" ~section:sections arg.at
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
                   p.p_name (type_string actual))
       | mode -> (
@@ -442,7 +450,7 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
           (match Tables.access_cell kind mode with
            | _ when unresolved -> ()
            | Illegal ->
-               error ctx ~rule:"access-mode" ~section:"5.2" arg.at
+               error ctx ~rule:"access-mode" ~section:("5.2," ^ call) arg.at
                  "this argument cannot be passed to the %s parameter %s: %s" (mode_name mode) p.p_name
                  (match kind with
                   | Arg_constant -> "it is a constant"
@@ -461,14 +469,14 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
                  argument only to a var or ref parameter. *)
               (match T.value_class t.base, mode with
                | (Non_value | Semi_value), (Mode_pers | Mode_inout) when t.base <> ctx.switch_type ->
-                   error ctx ~rule:"argument-value-class" ~section:"2.16" arg.at
+                   error ctx ~rule:"argument-value-class" ~section:("2.16,5.2," ^ call) arg.at
                      "%s is of the %s type %s: it can be passed only to a VAR or REF parameter, and %s is %s"
                      (match r with Some { object_ = Some d; _ } -> d.d_name | _ -> "this object")
                      (if T.value_class t.base = Non_value then "non-value" else "semi-value")
                      (T.to_string t) p.p_name (mode_name mode)
                | _ -> ());
               if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
-                error ctx ~rule:"equal-types" ~section:"2.17" arg.at "expected a value of type %s for the parameter %s, found %s"
+                error ctx ~rule:"equal-types" ~section:sections arg.at "expected a value of type %s for the parameter %s, found %s"
                   (T.to_string ptype) p.p_name (T.to_string t)
           | Some _ -> ()
           | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
@@ -476,6 +484,7 @@ and argument ctx place (arg : argument) (e : expression) (p : Env.parameter) =
 (* §3.11, §4.6: the arguments of a call against the routine's parameter list, in order. *)
 and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
   if routine.r_open then loose_arguments ctx place args else
+  let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
   let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
   let arg_name (a : argument) =
     match a.it with
@@ -488,21 +497,21 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | _, ({ it = ARG_placeholder; _ } :: rest) -> go (match slots with _ :: s -> s | [] -> []) rest
     | [], [] -> ()
     | [], a :: _ ->
-        error ctx ~rule:"argument-count" ~section:"3.11" a.at "%s takes no more arguments" routine.r_name
+        error ctx ~rule:"argument-count" ~section:call a.at "%s takes no more arguments" routine.r_name
     | Env.Required_slot p :: slots, ({ it = Required_argument (name, e); _ } as a) :: rest ->
         (match Option.bind name name_of_identifier with
          | Some n when not (T.same_name n p.p_name) ->
-             error ctx ~rule:"argument-name" ~section:"3.11" a.at
+             error ctx ~rule:"argument-name" ~section:call a.at
                "the argument is named %s, but the parameter in this place is %s" n p.p_name
          | _ -> ());
-        argument ctx place a e p;
+        argument ~call ctx place a e p;
         go slots rest
     | Env.Required_slot p :: _, (a :: _) ->
-        error ctx ~rule:"argument-required" ~section:"3.11" a.at
+        error ctx ~rule:"argument-required" ~section:call a.at
           "the required argument %s must come here" p.p_name
     | Env.Required_slot p :: _, [] ->
         if not has_placeholder then
-          error ctx ~rule:"argument-required" ~section:"3.11" call_region
+          error ctx ~rule:"argument-required" ~section:call call_region
             "the required argument %s of %s is missing" p.p_name routine.r_name
     | Env.Optional_slot alternatives :: slots, args -> (
         let matches (a : argument) =
@@ -515,7 +524,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
         | a :: rest -> (
             match matches a with
             | Some p ->
-                optional_argument ctx place a p;
+                optional_argument ~call ctx place a p;
                 (* §5.2: at most one of mutually exclusive parameters. *)
                 let rec exclusive = function
                   | b :: more -> (
@@ -524,7 +533,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                           (match b.it with
                            | Conditional_argument _ when (match a.it with Conditional_argument _ -> true | _ -> false) -> ()
                            | _ ->
-                               error ctx ~rule:"argument-exclusive" ~section:"5.2" b.at
+                               error ctx ~rule:"argument-exclusive" ~section:("5.2," ^ call) b.at
                                  "%s and %s are mutually exclusive: at most one may be given" p.p_name q.p_name);
                           exclusive more
                       | _ -> b :: more)
@@ -543,33 +552,33 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
               | Env.Optional_slot ps -> List.exists (fun (p : Env.parameter) -> T.same_name p.p_name n) ps
               | Env.Required_slot _ -> false) routine.r_slots in
           if not known then
-            error ctx ~rule:"argument-name" ~section:"3.11" a.at "%s has no optional parameter %s" routine.r_name n
+            error ctx ~rule:"argument-name" ~section:call a.at "%s has no optional parameter %s" routine.r_name n
       | _ -> ()) args
 
 (* §3.11: an optional argument gives the parameter's value (a switch has none); a conditional
    argument passes on an optional parameter of the calling routine. *)
-and optional_argument ctx place (a : argument) (p : Env.parameter) =
+and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
   match a.it with
   | Optional_argument (_, None) ->
       if p.p_type <> None then
-        error ctx ~rule:"optional-argument-value" ~section:"3.11" a.at
+        error ctx ~rule:"optional-argument-value" ~section:call a.at
           "the optional parameter %s is not a switch: give it a value with :=" p.p_name
   | Optional_argument (_, Some e) ->
       if p.p_type = None then
-        error ctx ~rule:"switch-argument-value" ~section:"3.11" a.at
+        error ctx ~rule:"switch-argument-value" ~section:call a.at
           "%s is a switch: it takes no value" p.p_name
-      else argument ctx place a e p
+      else argument ~call ctx place a e p
   | Conditional_argument (_, r) -> (
       let { object_; rtype } = reference ctx place r in
       (match object_ with
        | Some { d_optional = true; _ } | None -> ()
        | Some d ->
-           error ctx ~rule:"conditional-argument" ~section:"3.11" r.at
+           error ctx ~rule:"conditional-argument" ~section:call r.at
              "a conditional argument passes on an optional parameter, and %s is not one" d.d_name);
       match rtype, p.p_type with
       | Known t, Some pt when t.base <> ctx.switch_type && pt.base <> T.Anytype ->
           if not (T.equal_types ~value_context:false pt t) then
-            error ctx ~rule:"equal-types" ~section:"2.17" a.at "expected a value of type %s, found %s"
+            error ctx ~rule:"equal-types" ~section:(call ^ ",2.17") a.at "expected a value of type %s, found %s"
               (T.to_string pt) (T.to_string t)
       | _ -> ())
   | Required_argument _ | ARG_placeholder -> ()
@@ -716,7 +725,8 @@ let loosely ctx place (e : expression) =
 let labels_of (l : statement list) =
   List.filter_map (fun (s : statement) -> match s.it with Label i -> name_of_identifier i | _ -> None) l
 
-let check_condition ctx place (e : expression) = check_expression ctx place e (T.scalar Bool)
+let check_condition ~section ctx place (e : expression) =
+  check_expression ~sections:(section ^ ",3.4,2.17") ctx place e (T.scalar Bool)
 
 let rec statements ctx place (l : statement list) =
   let place = { place with labels = labels_of l :: place.labels } in
@@ -726,13 +736,13 @@ and statement ctx place (s : statement) =
   match s.it with
   | Assignment (target, e) -> (
       match assignment_target ctx place target with
-      | Known t -> check_expression ctx place e t
+      | Known t -> check_expression ~sections:"4.5,2.17" ctx place e t
       | Numeric_literal | Unknown -> loosely ctx place e)
   | Procedure_call (Procedure_name id, args) -> procedure_call ctx place s id args
   | Procedure_call (Late_bound e, args) ->
       (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
          routine then (ERR_REFUNKPRC, ERR_CALLPROC). *)
-      check_expression ctx place e (T.scalar String);
+      check_expression ~sections:"4.6,2.17" ctx place e (T.scalar String);
       loose_arguments ctx place args
   | Goto id -> goto ctx place id
   | Break ->
@@ -752,17 +762,17 @@ and statement ctx place (s : statement) =
         error ctx ~rule:"trynext-in-handler" ~section:"4.14" s.at "TRYNEXT may be used only in an error handler"
   | Connect (target, trap) -> connect ctx place target trap
   | If i ->
-      check_condition ctx place i.condition;
+      check_condition ~section:"4.16" ctx place i.condition;
       statements ctx place i.then_branch;
       List.iter (fun (c : elseif_clause) ->
           match c.it with
-          | Elseif (cond, l) -> check_condition ctx place cond; statements ctx place l
+          | Elseif (cond, l) -> check_condition ~section:"4.16" ctx place cond; statements ctx place l
           | EIT_placeholder -> ()) i.elseifs;
       Option.iter (statements ctx place) i.else_branch
-  | Compact_if (cond, s) -> check_condition ctx place cond; statement ctx place s
+  | Compact_if (cond, s) -> check_condition ~section:"4.17" ctx place cond; statement ctx place s
   | For f -> for_ ctx place f
   | While (cond, body) ->
-      check_condition ctx place cond;
+      check_condition ~section:"4.19" ctx place cond;
       statements ctx { place with in_loop = true } body
   | Test t -> test ctx place t
   | Label _ | Statement_comment _ | SMT_placeholder -> ()
@@ -783,7 +793,8 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
             "%s is a trap: a trap is never called from RAPID code, only by the system (CONNECT)" name;
           loose ()
       | Some o ->
-          error ctx ~rule:"procedure-call" ~section:"4.6" id.at "%s is a %s, not a procedure" name
+          error ctx ~rule:"procedure-call" ~section:(match o with Module _ -> "4.6,9.2" | _ -> "4.6") id.at
+            "%s is a %s, not a procedure" name
             (Env.obj_kind_name o);
           loose ()
       | None -> unknown_name ctx id.at "procedure" name; loose ())
@@ -808,7 +819,7 @@ and goto ctx place (id : identifier) =
    procedure or trap. *)
 and return ctx place (s : statement) e =
   match place.routine, e with
-  | Some { r_kind = Function t; _ }, Some e -> check_expression ctx place e t
+  | Some { r_kind = Function t; _ }, Some e -> check_expression ~sections:"4.10,2.17" ctx place e t
   | Some { r_kind = Function _; r_name; _ }, None ->
       error ctx ~rule:"return-function" ~section:"4.10" s.at
         "RETURN in the function %s must give the return value" r_name
@@ -825,7 +836,7 @@ and raise_ ctx place (s : statement) e =
       if place.in_error_handler then
         error ctx ~rule:"raise-number-in-handler" ~section:"4.11" s.at
           "RAISE with an error number may not stand in an error handler";
-      check_expression ctx place e (T.scalar Num)
+      check_expression ~sections:"4.11,2.17" ctx place e (T.scalar Num)
   | None ->
       if not place.in_error_handler then
         error ctx ~rule:"raise-without-number" ~section:"4.11" s.at
@@ -865,9 +876,9 @@ and connect ctx place (target : data_reference) (trap : identifier) =
 (* §4.18: the loop variable is declared by its appearance, of type num, read-only, scoped to the
    loop's statement list, hiding other objects of the same name; FROM, TO and STEP are num. *)
 and for_ ctx place (f : for_statement) =
-  check_expression ctx place f.from_ (T.scalar Num);
-  check_expression ctx place f.to_ (T.scalar Num);
-  Option.iter (fun e -> check_expression ctx place e (T.scalar Num)) f.step;
+  check_expression ~sections:"4.18,2.17" ctx place f.from_ (T.scalar Num);
+  check_expression ~sections:"4.18,2.17" ctx place f.to_ (T.scalar Num);
+  Option.iter (fun e -> check_expression ~sections:"4.18,2.17" ctx place e (T.scalar Num)) f.step;
   let loop_scope = Env.create_table () in
   (match f.loop_variable.it with
    | Ident name ->
@@ -890,8 +901,8 @@ and test ctx place (t : test_statement) =
              expression of the test expression's type (doc/rulings.md R-4.20). *)
           List.iter (fun (v : expression) ->
               match tt with
-              | Known ty -> check_expression ctx place v ty
-              | Numeric_literal -> check_expression ctx place v (T.scalar Num)
+              | Known ty -> check_expression ~sections:"4.20,2.17" ctx place v ty
+              | Numeric_literal -> check_expression ~sections:"4.20,2.17" ctx place v (T.scalar Num)
               | Unknown -> loosely ctx place v) values;
           statements ctx place l
       | CSE_placeholder -> ()) t.cases;
@@ -978,8 +989,9 @@ let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_dec
               persistents may omit it"
        | _, None -> ());
       let object_type = match base, shape with Some b, Some d -> Some { T.base = b; dims = d } | _ -> None in
+      let sections = match storage with Var -> "2.22,2.17" | Pers -> "2.23,2.17" | Const -> "2.24,2.17" in
       (match object_type, initial_value with
-       | Some t, Some init when T.value_class t.base = Value -> check_expression ctx place init t
+       | Some t, Some init when T.value_class t.base = Value -> check_expression ~sections ctx place init t
        | _, Some init -> ignore init
        | _, None -> ());
       match name_of_identifier name with
@@ -1179,7 +1191,7 @@ let module_attributes ctx (attributes : module_attribute list) =
 let register ctx info ~local name (obj : Env.obj) =
   match Env.find info.objects name with
   | Some _ ->
-      error ctx ~rule:"module-object-clash" ~section:"2.20" (Env.obj_region obj)
+      error ctx ~rule:"module-object-clash" ~section:"2.20,2.12,5.3" (Env.obj_region obj)
         "two objects declared in the module %s may not share the name %s" info.m_name name
   | None ->
       Env.add info.objects name obj;
@@ -1187,7 +1199,7 @@ let register ctx info ~local name (obj : Env.obj) =
         let table = if info.is_installed then ctx.installed else ctx.globals in
         match Env.find table name with
         | Some _ when not info.is_installed ->
-            error ctx ~rule:"global-object-clash" ~section:"2.20" (Env.obj_region obj)
+            error ctx ~rule:"global-object-clash" ~section:"2.20,2.12,5.3" (Env.obj_region obj)
               "two global objects of the task buffer may not share the name %s" name
         | Some _ ->
             error ctx ~rule:"global-object-clash" ~section:"13" (Env.obj_region obj)

@@ -5,7 +5,7 @@ type severity = Error | Warning
 type t = {
   severity : severity;
   rule : string;
-  section : string;
+  sections : string list;
   region : Source.region;
   message : string;
 }
@@ -15,7 +15,8 @@ type collector = { mutable items : t list }
 let create () = { items = [] }
 
 let add c severity ~rule ~section region message =
-  c.items <- { severity; rule; section; region; message } :: c.items
+  let sections = String.split_on_char ',' section |> List.map String.trim |> List.filter (( <> ) "") in
+  c.items <- { severity; rule; sections; region; message } :: c.items
 
 let error c = add c Error
 let warning c = add c Warning
@@ -28,10 +29,12 @@ let all c =
         (file_name b.region, Source.start_offset b.region))
     (List.rev c.items)
 
+let cited d = String.concat ", " (List.map (fun s -> "§" ^ s) d.sections)
+
 let to_string d =
-  Printf.sprintf "%s: %s: %s (§%s)" (Source.to_string d.region)
+  Printf.sprintf "%s: %s: %s (%s)" (Source.to_string d.region)
     (match d.severity with Error -> "semantic error" | Warning -> "warning")
-    d.message d.section
+    d.message (cited d)
 
 let to_diagnostic d =
-  Diagnostic.make Semantic_error d.region (Printf.sprintf "%s (§%s)" d.message d.section)
+  Diagnostic.make Semantic_error d.region (Printf.sprintf "%s (%s)" d.message (cited d))

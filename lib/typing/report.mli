@@ -9,7 +9,8 @@ type severity = Error | Warning
 type t = {
   severity : severity;
   rule : string;            (** the rule's name, as in doc/typing.md *)
-  section : string;         (** "4.5" *)
+  sections : string list;   (** the rule's section first, then those of the context:
+                                ["4.5"; "2.17"] for a value of the wrong type assigned *)
   region : Source.region;
   message : string;         (** without the section *)
 }
@@ -18,11 +19,13 @@ type collector
 
 val create : unit -> collector
 val error : collector -> rule:string -> section:string -> Source.region -> string -> unit
+(** [~section] is one section ("4.5") or several separated by commas ("4.5,2.17"). *)
+
 val warning : collector -> rule:string -> section:string -> Source.region -> string -> unit
 val all : collector -> t list
 (** In source order (file, then position). *)
 
 val to_string : t -> string
-(** [FILE:LINE:COL: semantic error: MESSAGE (§x.y)], or [warning] for a warning. *)
+(** [FILE:LINE:COL: semantic error: MESSAGE (§x.y, §z)], or [warning] for a warning. *)
 
 val to_diagnostic : t -> Diagnostic.t

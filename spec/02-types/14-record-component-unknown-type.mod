@@ -1,7 +1,8 @@
 MODULE record_component_unknown_type
 ! @format 2
 ! @section 2.14
-! @expect semantic-error 8:5
+! @section 2.11
+! @expect semantic-error 9:5
 ! @description A record component whose type is not known is refused at the component's type name.
   RECORD tray
     num slots;

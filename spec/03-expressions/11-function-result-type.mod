@@ -1,7 +1,8 @@
 MODULE function_result_type
 ! @format 2
 ! @section 3.11
-! @expect semantic-error 8:10
+! @section 4.5
+! @expect semantic-error 9:10
 ! @description The call's value has the function's type; a num result assigned to a string is refused at the call.
   VAR string s;
   PROC main()

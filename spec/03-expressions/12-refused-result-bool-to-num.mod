@@ -1,7 +1,8 @@
 MODULE refused_result_bool_to_num
 ! @format 2
 ! @section 3.12
-! @expect semantic-error 10:10
+! @section 4.5
+! @expect semantic-error 11:10
 ! @description A comparison gives a bool; assigning it to a num is refused at the right-hand side.
   VAR num a;
   VAR num b;
