@@ -9,7 +9,7 @@ type options = { allow_unknown : bool }
 
 let default_options = { allow_unknown = false }
 
-type result = { reports : Report.t list }
+type result = { reports : Report.t list; elaboration : Elaboration.t }
 
 let errors r = List.filter (fun (d : Report.t) -> d.severity = Error) r.reports
 
@@ -28,7 +28,9 @@ type ctx = {
   orient_type : T.data_type;
   switch_type : T.data_type;     (* the empty domain of a switch parameter (§5.2) *)
   module_names : Env.table;
-  early_constants : (string, expression) Hashtbl.t;
+  elab : Elaboration.t;
+  early_constants : (string, string * bool * expression) Hashtbl.t;
+      (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
 }
@@ -36,6 +38,7 @@ type ctx = {
 (* Where in a routine the judgement is. *)
 type place = {
   scope : Env.scope;
+  module_name : string;
   routine : Env.routine option;          (* None: module-level declarations *)
   in_error_handler : bool;
   in_loop : bool;
@@ -101,7 +104,14 @@ let constant_lookup ctx place name =
   match Env.lookup place.scope name with
   | Some (Data { d_kind = Constant; d_initial; _ }) -> d_initial
   | Some _ -> None
-  | None -> Hashtbl.find_opt ctx.early_constants (key name)
+  | None ->
+      (* Only constants in scope: the module's own, or global ones of other modules (§2.20). *)
+      let candidates = Hashtbl.find_all ctx.early_constants (key name) in
+      (match List.find_opt (fun (m, _, _) -> T.same_name m place.module_name) candidates with
+       | Some (_, _, e) -> Some e
+       | None ->
+           List.find_map (fun (m, local, e) ->
+               if local || T.same_name m place.module_name then None else Some e) candidates)
 
 let const_value ctx place e = Const_eval.eval ~lookup:(constant_lookup ctx place) e
 
@@ -158,7 +168,9 @@ let rec reference ctx place (r : data_reference) : reference =
   | VAR_placeholder -> { object_ = None; rtype = Unknown }
   | Entire name -> (
       match Env.lookup place.scope name.it with
-      | Some (Data d) -> { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
+      | Some (Data d as o) ->
+          Hashtbl.replace ctx.elab.names name.at o;
+          { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
       | Some o ->
           error ctx ~rule:"data-object-name"
             ~section:(match o with Label _ -> "4.4,3.6" | _ -> "3.6,2.20,13") name.at "%s is a %s, not a data object"
@@ -193,7 +205,11 @@ let rec reference ctx place (r : data_reference) : reference =
       match whole.rtype with
       | Known { base = Record rt; dims = Scalar } -> (
           match T.component rt comp.it with
-          | Some t -> { whole with rtype = Known (T.scalar t) }
+          | Some t ->
+              let rec index i = function
+                | [] -> i | (n, _) :: rest -> if T.same_name n comp.it then i else index (i + 1) rest in
+              Hashtbl.replace ctx.elab.components comp.at (index 0 rt.components);
+              { whole with rtype = Known (T.scalar t) }
           | None ->
               error ctx ~rule:"component-name" ~section:"3.6,2.14" comp.at
                 "the record type %s has no component %s" rt.record_name comp.it;
@@ -257,7 +273,9 @@ and unary ctx place e op a =
   | _, Some operand -> (
       match List.find_opt (fun (row : Tables.unary_row) -> row.unary = op && row.operand = operand)
               Tables.unary_operators with
-      | Some row -> if ta = Numeric_literal then Numeric_literal else type_of_operand ctx row.unary_result
+      | Some row ->
+          Hashtbl.replace ctx.elab.unary e.at row;
+          if ta = Numeric_literal then Numeric_literal else type_of_operand ctx row.unary_result
       | None -> unary_error ctx e op ta)
   | _, None -> unary_error ctx e op ta
 
@@ -285,6 +303,7 @@ and binary ctx place e op a b =
             match List.find_opt (fun (row : Tables.binary_row) -> row.op = op && row.left = la && row.right = lb)
                     Tables.binary_operators with
             | Some row ->
+                Hashtbl.replace ctx.elab.binary e.at row;
                 integer_operands ctx place e row a b;
                 if ta = Numeric_literal && tb = Numeric_literal && row.result = O_num then Numeric_literal
                 else type_of_operand ctx row.result
@@ -341,6 +360,8 @@ and equality ctx place e op a b =
        | Unknown, _ | _, Unknown -> ()
        | Numeric_literal, Numeric_literal -> ()
        | Numeric_literal, Known t | Known t, Numeric_literal ->
+           if is_scalar t && t.base = Dnum then
+             Hashtbl.replace ctx.elab.dnum_literals (if ta = Numeric_literal then a.at else b.at) ();
            if not (compatible ~expected:t Numeric_literal) then
              error ctx ~rule:"equality-types" ~section:"3.12" e.at
                "the operator %s needs operands of equal types, not %s and %s"
@@ -365,11 +386,14 @@ and check_expression ?(sections = "2.17") ctx place (e : expression) (expected :
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
       match infer ctx place e with
-      | Numeric_literal -> ignore op; ignore a; ignore b
+      | Numeric_literal -> ignore op; ignore a; ignore b; Hashtbl.replace ctx.elab.dnum_literals e.at ()
       | t -> mismatch ~sections ctx e expected t)
   | _ -> mismatch ~sections ctx e expected (infer ctx place e)
 
 and mismatch ~sections ctx (e : expression) expected actual =
+  if actual = Numeric_literal && is_scalar expected
+     && (expected.base = Dnum || T.associated_value_type expected.base = Some Dnum) then
+    Hashtbl.replace ctx.elab.dnum_literals e.at ();
   if not (compatible ~expected actual) then
     error ctx ~rule:"equal-types" ~section:sections e.at "expected a value of type %s, found %s"
       (T.to_string expected) (type_string actual)
@@ -385,6 +409,10 @@ and aggregate ~sections ctx place e members expected =
     | Conformant n -> Conformant (n - 1)
     | Sized [] | Scalar -> Scalar
   in
+  (match expected.dims, expected.base with
+   | (Sized (_ :: _) | Conformant _), _ -> Hashtbl.replace ctx.elab.aggregates e.at `Array
+   | Scalar, Record _ -> Hashtbl.replace ctx.elab.aggregates e.at `Record
+   | _ -> ());
   match expected.dims, expected.base with
   | (Sized (n :: _)), base ->
       if n <> count then
@@ -439,6 +467,8 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
           | Aggregate _ -> check_expression ~sections ctx place e ptype
           | _ ->
               let actual = infer ctx place e in
+              if actual = Numeric_literal && is_scalar ptype && ptype.base = Dnum then
+                Hashtbl.replace ctx.elab.dnum_literals e.at ();
               if not (compatible ~expected:ptype actual) then
                 error ctx ~rule:"equal-types" ~section:sections arg.at
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
@@ -485,6 +515,8 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
 and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
   if routine.r_open then loose_arguments ctx place args else
   let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
+  let bound = ref [] in
+  let bind p a = bound := (p, a) :: !bound in
   let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
   let arg_name (a : argument) =
     match a.it with
@@ -505,6 +537,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                "the argument is named %s, but the parameter in this place is %s" n p.p_name
          | _ -> ());
         argument ~call ctx place a e p;
+        bind p a;
         go slots rest
     | Env.Required_slot p :: _, (a :: _) ->
         error ctx ~rule:"argument-required" ~section:call a.at
@@ -525,6 +558,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
             match matches a with
             | Some p ->
                 optional_argument ~call ctx place a p;
+                bind p a;
                 (* §5.2: at most one of mutually exclusive parameters. *)
                 let rec exclusive = function
                   | b :: more -> (
@@ -544,6 +578,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
         | [] -> go slots [])
   in
   go routine.r_slots args;
+  Hashtbl.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
   (* Optional or conditional arguments that match no parameter. *)
   List.iter (fun (a : argument) ->
       match a.it, arg_name a with
@@ -596,7 +631,8 @@ and function_call ctx place region (call : function_call) : ty =
   | ID_placeholder -> loose_arguments ctx place call.arguments; Unknown
   | Ident name -> (
       match Env.lookup place.scope name with
-      | Some (Routine ({ r_kind = Function result; _ } as r)) ->
+      | Some (Routine ({ r_kind = Function result; _ } as r) as o) ->
+          Hashtbl.replace ctx.elab.names call.func.at o;
           arguments ctx place region r call.arguments;
           if is_unknown result then Unknown else Known result
       | Some (Routine _) ->
@@ -783,7 +819,9 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
   | ID_placeholder -> loose ()
   | Ident name -> (
       match Env.lookup place.scope name with
-      | Some (Routine ({ r_kind = Procedure; _ } as r)) -> arguments ctx place s.at r args
+      | Some (Routine ({ r_kind = Procedure; _ } as r) as o) ->
+          Hashtbl.replace ctx.elab.names id.at o;
+          arguments ctx place s.at r args
       | Some (Routine { r_kind = Function _; _ }) ->
           error ctx ~rule:"procedure-call" ~section:"4.6" id.at
             "%s is a function: it is called in an expression, not as a statement" name;
@@ -806,6 +844,9 @@ and goto ctx place (id : identifier) =
   | None -> ()
   | Some name ->
       let visible = List.exists (List.exists (T.same_name name)) place.labels in
+      (match Env.lookup place.scope name with
+       | Some (Label _ as o) -> Hashtbl.replace ctx.elab.names id.at o
+       | _ -> ());
       if not visible then
         match Env.lookup place.scope name with
         | Some (Label _) ->
@@ -867,7 +908,7 @@ and connect ctx place (target : data_reference) (trap : identifier) =
   | ID_placeholder -> ()
   | Ident name -> (
       match Env.lookup place.scope name with
-      | Some (Routine { r_kind = Trap; _ }) -> ()
+      | Some (Routine { r_kind = Trap; _ } as o) -> Hashtbl.replace ctx.elab.names trap.at o
       | Some o ->
           error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
             (Env.obj_kind_name o)
@@ -882,9 +923,10 @@ and for_ ctx place (f : for_statement) =
   let loop_scope = Env.create_table () in
   (match f.loop_variable.it with
    | Ident name ->
-       Env.add loop_scope name
-         (Data { d_name = name; d_type = T.scalar Num; d_kind = Loop_variable; d_region = f.loop_variable.at;
-                 d_level = Routine_level; d_scope = Global; d_optional = false; d_initial = None })
+       let o = Env.Data { d_name = name; d_type = T.scalar Num; d_kind = Loop_variable; d_region = f.loop_variable.at;
+                          d_level = Routine_level; d_scope = Global; d_optional = false; d_initial = None } in
+       Hashtbl.replace ctx.elab.declared f.loop_variable.at o;
+       Env.add loop_scope name o
    | ID_placeholder -> ());
   let scope = { place.scope with routine = loop_scope :: place.scope.routine } in
   statements ctx { place with scope; in_loop = true } f.body
@@ -947,8 +989,8 @@ let value_class_allows ctx ~rule ~section (at : Source.region) kind (t : T.data_
         (T.name t)
 
 (* §2.18-§2.24: a data declaration, at module level ([routine = false]) or in a routine. *)
-let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_declaration) :
-    (string * Env.obj) option =
+let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : Env.level)
+    (decl : data_declaration) : (string * Env.obj) option =
   match decl.it with
   | Declaration_comment _ | DDN_placeholder -> None
   | Data_declaration { scope; storage; data_type; name; dims; initial_value } -> (
@@ -981,7 +1023,8 @@ let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_dec
              (match kind with Variable_initialised -> "an initialised variable" | _ -> what)
        | None -> ());
       (match storage, initial_value with
-       | (Var | Const), Some init -> ignore (constant_expression ctx place ~what:"an initial value" init)
+       | (Var | Const), Some init ->
+           later (fun () -> ignore (constant_expression ctx place ~what:"an initial value" init))
        | Pers, Some init -> literal_expression ctx init
        | Pers, None when scope <> Global && not in_routine ->
            error ctx ~rule:"pers-initial-value" ~section:"2.23" decl.at
@@ -990,17 +1033,22 @@ let data_declaration ctx place ~in_routine ~(level : Env.level) (decl : data_dec
        | _, None -> ());
       let object_type = match base, shape with Some b, Some d -> Some { T.base = b; dims = d } | _ -> None in
       let sections = match storage with Var -> "2.22,2.17" | Pers -> "2.23,2.17" | Const -> "2.24,2.17" in
+      (* Module data is in scope in its whole module (§2.20): initial values are judged once every
+         module's data is registered ([later]). *)
       (match object_type, initial_value with
-       | Some t, Some init when T.value_class t.base = Value -> check_expression ~sections ctx place init t
+       | Some t, Some init when T.value_class t.base = Value ->
+           later (fun () -> check_expression ~sections ctx place init t)
        | _, Some init -> ignore init
        | _, None -> ());
       match name_of_identifier name with
       | None -> None
       | Some n ->
           let d_type = Option.value object_type ~default:unknown_object_type in
-          Some (n, Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
-                              d_optional = false; d_initial = initial_value;
-                              d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) }))
+          let o = Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
+                             d_optional = false; d_initial = initial_value;
+                             d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) } in
+          Hashtbl.replace ctx.elab.declared name.at o;
+          Some (n, o))
 
 (* ------------------------------------------------------------------ parameters and routines *)
 
@@ -1121,7 +1169,8 @@ let recovery_error_number ctx place (n : recovery_error_number) =
   | Error_number_literal _ -> ()
   | Error_number_name name -> (
       match Env.lookup place.scope name.it with
-      | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ }) -> ()
+      | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ } as o) ->
+          Hashtbl.replace ctx.elab.names name.at o
       | Some (Data _) ->
           error ctx ~rule:"error-number-list" ~section:"7.2" n.at
             "an error number of an ERROR list is a num literal or an entire constant, variable or \
@@ -1133,11 +1182,14 @@ let recovery_error_number ctx place (n : recovery_error_number) =
 
 let routine_body ctx (module_place : place) (routine : Env.routine) (body : routine_body) =
   let table = Env.create_table () in
+  let parameter (p : Env.parameter) ~optional =
+    let o = Env.Data (switch_object ctx p ~optional) in
+    Hashtbl.replace ctx.elab.declared p.p_region o;
+    add_routine_name ctx table p.p_name o
+  in
   List.iter (function
-      | Env.Required_slot p -> add_routine_name ctx table p.p_name (Data (switch_object ctx p ~optional:false))
-      | Env.Optional_slot ps ->
-          List.iter (fun (p : Env.parameter) ->
-              add_routine_name ctx table p.p_name (Data (switch_object ctx p ~optional:true))) ps)
+      | Env.Required_slot p -> parameter p ~optional:false
+      | Env.Optional_slot ps -> List.iter (parameter ~optional:true) ps)
     routine.r_slots;
   let place = { module_place with scope = { module_place.scope with routine = [ table ] };
                                   routine = Some routine } in
@@ -1147,7 +1199,7 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
       | None -> ()) body.declarations;
   let lists = body.statements :: List.filter_map Fun.id
                 [ body.backward; Option.map (fun h -> h.handler) body.error; body.undo ] in
-  List.iter (fun (n, at) -> add_routine_name ctx table n (Label at))
+  List.iter (fun (n, at) -> Hashtbl.replace ctx.elab.declared at (Label at); add_routine_name ctx table n (Label at))
     (List.rev (List.fold_left all_labels [] lists));
   statements ctx place body.statements;
   Option.iter (statements ctx place) body.backward;
@@ -1213,7 +1265,7 @@ let scope_of ctx info : Env.scope =
     in_installed_module = info.is_installed }
 
 let module_place ctx info =
-  { scope = scope_of ctx info; routine = None; in_error_handler = false;
+  { scope = scope_of ctx info; module_name = info.m_name; routine = None; in_error_handler = false;
     in_loop = false; labels = [] }
 
 (* §2.14, §2.15: type definitions. Records are created first, so that components may name
@@ -1330,6 +1382,7 @@ let routine_signature ctx info (r : routine_declaration) =
             | Required_parameter _ -> false) params in
         let routine = { Env.r_name = n; r_kind = kind; r_slots = slots; r_region = name.at;
                         r_level = level; r_local = local; r_open } in
+        Hashtbl.replace ctx.elab.declared name.at (Routine routine);
         register ctx info ~local n (Routine routine);
         Some routine
   in
@@ -1381,6 +1434,7 @@ let builtin_environment report options =
     pos_type = resolve "pos"; orient_type = resolve "orient";
     switch_type = T.Installed_atomic { atomic_name = "switch"; atomic_class = Non_value; associated = None };
     module_names = Env.create_table ();
+    elab = Elaboration.create ();
     early_constants = Hashtbl.create 64;
   }
 
@@ -1410,16 +1464,18 @@ let check_task ?(options = default_options) ~installed modules =
   List.iter (fun i ->
       List.iter (fun (d : data_declaration) ->
           match d.it with
-          | Data_declaration { storage = Const; name = { it = Ident n; _ }; initial_value = Some e; _ } ->
-              if not (Hashtbl.mem ctx.early_constants (key n)) then Hashtbl.add ctx.early_constants (key n) e
+          | Data_declaration { storage = Const; scope; name = { it = Ident n; _ }; initial_value = Some e; _ } ->
+              Hashtbl.add ctx.early_constants (key n) (i.m_name, scope = Local, e)
           | _ -> ()) i.m.data_declarations) infos;
   type_definitions ctx infos;
-  (* Module data, in declaration order. *)
+  (* Module data, in declaration order; initial values once all is registered. *)
+  let deferred = ref [] in
+  let later f = deferred := f :: !deferred in
   List.iter (fun i ->
       let place = module_place ctx i in
       let level = if i.is_installed then Env.Installed_level else Env.Module_level i.m_name in
       List.iter (fun (d : data_declaration) ->
-          match data_declaration ctx place ~in_routine:false ~level d with
+          match data_declaration ~later ctx place ~in_routine:false ~level d with
           | Some (n, Data obj) ->
               let obj =
                 if i.is_installed && List.exists (T.same_name n) read_only_system_variables
@@ -1428,6 +1484,7 @@ let check_task ?(options = default_options) ~installed modules =
               register ctx i ~local n obj
           | Some (n, o) -> register ctx i ~local:false n o
           | None -> ()) i.m.data_declarations) infos;
+  List.iter (fun f -> f ()) (List.rev !deferred);
   let bodies = List.concat_map (fun i ->
       List.filter_map (fun r -> Option.map (fun x -> (i, x)) (routine_signature ctx i r))
         i.m.routine_declarations) infos in
@@ -1450,4 +1507,4 @@ let check_task ?(options = default_options) ~installed modules =
   List.iter (fun (i, (routine, body)) ->
       if not i.is_installed then entry_routine ctx routine;
       routine_body ctx (module_place ctx i) routine body) bodies;
-  { reports = Report.all report }
+  { reports = Report.all report; elaboration = ctx.elab }

@@ -14,6 +14,7 @@ val default_options : options
 
 type result = {
   reports : Report.t list;          (** errors and warnings, in source order *)
+  elaboration : Elaboration.t;      (** what the dynamic semantics needs to know (no errors) *)
 }
 
 val check_task :

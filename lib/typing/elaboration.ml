@@ -1,0 +1,20 @@
+open Rapid_syntax
+
+type binding = { callee : Env.routine; bound : (Env.parameter * Ast.argument) list }
+
+type t = {
+  names : (Source.region, Env.obj) Hashtbl.t;
+  declared : (Source.region, Env.obj) Hashtbl.t;
+  components : (Source.region, int) Hashtbl.t;
+  binary : (Source.region, Tables.binary_row) Hashtbl.t;
+  unary : (Source.region, Tables.unary_row) Hashtbl.t;
+  dnum_literals : (Source.region, unit) Hashtbl.t;
+  bindings : (Source.region, binding) Hashtbl.t;
+  aggregates : (Source.region, [ `Record | `Array ]) Hashtbl.t;
+}
+
+let create () = {
+  names = Hashtbl.create 1024; declared = Hashtbl.create 1024; components = Hashtbl.create 256;
+  binary = Hashtbl.create 256; unary = Hashtbl.create 64; dnum_literals = Hashtbl.create 64;
+  bindings = Hashtbl.create 256; aggregates = Hashtbl.create 256;
+}

@@ -1,0 +1,32 @@
+(** What the typing judgement learns about a program and the dynamic semantics needs: what each
+    name denotes, which row of the operator table each operation uses, which numeric literals are
+    dnum, and how the arguments of each call bind to parameters. Keys are the regions of the syntax
+    tree's nodes: the region of a name's occurrence, of an operation, of a call's routine name. *)
+
+open Rapid_syntax
+
+type binding = {
+  callee : Env.routine;
+  bound : (Env.parameter * Ast.argument) list;   (** in parameter order; absent ones left out *)
+}
+
+type t = {
+  names : (Source.region, Env.obj) Hashtbl.t;
+      (** an occurrence of a name (data object, routine, label) → what it denotes *)
+  declared : (Source.region, Env.obj) Hashtbl.t;
+      (** the name of a declaration (data, parameter, loop variable, routine) → its object *)
+  components : (Source.region, int) Hashtbl.t;
+      (** a component name in a reference → its index in the record type *)
+  binary : (Source.region, Tables.binary_row) Hashtbl.t;
+  unary : (Source.region, Tables.unary_row) Hashtbl.t;
+  dnum_literals : (Source.region, unit) Hashtbl.t;
+      (** a numeric-literal expression (literals and operators on them only) the context takes
+          as dnum (§2.5, doc/rulings.md R-2.5-b) *)
+  bindings : (Source.region, binding) Hashtbl.t;
+      (** a call, by the region of the call (the function call expression, or the procedure
+          call statement) → its arguments' binding (§3.11, §4.6) *)
+  aggregates : (Source.region, [ `Record | `Array ]) Hashtbl.t;
+      (** an aggregate → the kind of value its context gives it (§3.10) *)
+}
+
+val create : unit -> t
