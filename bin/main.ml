@@ -108,6 +108,186 @@ let check_cmd =
   ] in
   Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict)
 
+(* ------------------------------------------------------------------ run and trace *)
+
+module M = Rapid_semantics.Machine
+
+let exit_stopped = 1
+let exit_exhausted = 3
+let exit_unsupported = 4
+
+let report_load_failure = function
+  | Rapid_semantics.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
+  | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
+  | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
+
+let region_json r =
+  let p = Source.start r and q = Source.stop r in
+  `Assoc [ ("file", `String (match Source.file_of r with Some f -> Source.name f | None -> ""));
+           ("line", `Int p.line); ("col", `Int p.col); ("end_line", `Int q.line); ("end_col", `Int q.col) ]
+
+let event_json (e : M.event) : Yojson.Safe.t =
+  match e with
+  | Output s -> `Assoc [ ("event", `String "output"); ("text", `String s) ]
+  | Erase -> `Assoc [ ("event", `String "erase") ]
+  | Log s -> `Assoc [ ("event", `String "log"); ("text", `String s) ]
+  | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", `String r) ]
+  | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", `String r) ]
+  | Error_raised { name; number; at } ->
+      `Assoc [ ("event", `String "error-raised"); ("name", `String name); ("number", `Int number);
+               ("at", region_json at) ]
+  | Error_handled { name; routine } ->
+      `Assoc [ ("event", `String "error-handled"); ("name", `String name); ("routine", `String routine) ]
+  | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", `String r) ]
+  | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
+
+let schema = "rapid-sem/1"
+
+let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
+  let base kind extra = `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
+  match o with
+  | Running -> base "running" []
+  | Ended -> base "ended" []
+  | Stopped { name; number; at; chain } ->
+      base "stopped" [ ("name", `String name); ("number", `Int number); ("at", region_json at);
+                       ("chain", `List (List.map (fun r -> `String r) chain)) ]
+  | Resource_exhausted m -> base "exhausted" [ ("reason", `String m) ]
+  | Unsupported m -> base "unsupported" [ ("reason", `String m) ]
+  | Stuck m -> base "stuck" [ ("reason", `String m) ]
+
+let finish (o : M.outcome) steps ~max_steps =
+  match o with
+  | Ended -> exit_ok
+  | Stopped { name; at; chain; _ } ->
+      Printf.eprintf "%s: execution error: %s: the system error handler stopped the task (%s)\n"
+        (Source.to_string at) name (String.concat " <- " chain);
+      exit_stopped
+  | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
+  | Unsupported m -> Printf.eprintf "rapid-sem: %s\n" m; exit_unsupported
+  | Stuck m -> Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n" m steps; exit_internal
+  | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
+
+let common_run_args =
+  let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
+  let entry = Arg.(value & opt string "main" & info [ "entry" ] ~docv:"NAME" ~doc:"The entry routine (default main).") in
+  let max_steps = Arg.(value & opt int 100_000_000 & info [ "max-steps" ] ~docv:"N" ~doc:"Stop after N reduction steps (exit status 3).") in
+  let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
+  let max_depth = Arg.(value & opt int M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
+  let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
+  (files, entry, max_steps, allow_unknown, max_depth, retry_limit)
+
+let start_machine files entry allow_unknown max_depth retry_limit k =
+  match Rapid_semantics.Session.load ~allow_unknown files with
+  | Error f -> report_load_failure f
+  | Ok loaded -> (
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } loaded.program ~entry with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok cfg -> k cfg)
+
+let run_cmd =
+  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json =
+    guard @@ fun () ->
+    start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
+    if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+    let rec loop () =
+      if M.outcome cfg = Running && M.steps cfg < max_steps then begin
+        let _, events = M.step cfg in
+        List.iter (fun (e : M.event) ->
+            if json then print_endline (Yojson.Safe.to_string (event_json e))
+            else match e with Output s -> print_endline s | _ -> ()) events;
+        loop ()
+      end
+    in
+    loop ();
+    if json then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
+    finish (M.outcome cfg) (M.steps cfg) ~max_steps
+  in
+  let doc = "run a task: check the modules, then execute the entry routine" in
+  let man = [
+    `S Manpage.s_description;
+    `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the small-step semantics of doc/semantics.md. Standard output carries only the program's output, one line per TPWrite.";
+    `S Manpage.s_exit_status;
+    `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
+  ] in
+  Cmd.v (Cmd.info "run" ~doc ~man)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
+
+(* The text of a region, for the trace: its first line, cut at 60 characters. *)
+let source_cache = Hashtbl.create 8
+let region_text r =
+  match Source.file_of r with
+  | None -> ""
+  | Some f -> (
+      let name = Source.name f in
+      let lines = match Hashtbl.find_opt source_cache name with
+        | Some l -> l
+        | None ->
+            let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
+            Hashtbl.replace source_cache name l; l in
+      let p = Source.start r and q = Source.stop r in
+      if p.line < 1 || p.line > Array.length lines then ""
+      else
+        let line = lines.(p.line - 1) in
+        let stop = if q.line = p.line then min (String.length line) (q.col - 1) else String.length line in
+        let start = min (String.length line) (p.col - 1) in
+        let text = String.trim (String.sub line start (max 0 (stop - start))) in
+        if String.length text > 60 then String.sub text 0 57 ^ "..." else text)
+
+let trace_cmd =
+  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  let format = Arg.(value & opt (enum [ ("human", `Human); ("jsonl", `Jsonl) ]) `Human & info [ "format" ] ~docv:"FORMAT" ~doc:"$(b,human) or $(b,jsonl) (doc/trace-format.md).") in
+  let from_ = Arg.(value & opt int 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
+  let to_ = Arg.(value & opt int max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
+  let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
+  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules =
+    guard @@ fun () ->
+    start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
+    let contains s p =
+      let n = String.length p and m = String.length s in
+      let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
+      n = 0 || go 0 in
+    if format = `Jsonl then print_endline (Yojson.Safe.to_string (`Assoc [ ("schema", `String schema); ("kind", `String "trace") ]));
+    let rec loop () =
+      if M.outcome cfg = Running && M.steps cfg < max_steps then begin
+        let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
+        let depth = M.depth cfg in
+        let rule, events = M.step cfg in
+        let n = M.steps cfg in
+        if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
+          match format with
+          | `Human ->
+              Printf.printf "%6d %-24s %s %-10s %s | %s\n" n rule (Source.to_string region) kind
+                (region_text region) (String.concat " " stack);
+              List.iter (function M.Output s -> Printf.printf "       > %s\n" s | _ -> ()) events
+          | `Jsonl ->
+              print_endline (Yojson.Safe.to_string (`Assoc [
+                  ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
+                  ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", `String (region_text region)) ]);
+                  ("stack", `List (List.map (fun s -> `String s) stack));
+                  ("events", `List (List.map event_json events)) ]))
+        end;
+        loop ()
+      end
+    in
+    loop ();
+    if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
+    else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
+        | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
+        | Resource_exhausted m | Unsupported m | Stuck m -> m | Running -> "step limit") (M.steps cfg);
+    finish (M.outcome cfg) (M.steps cfg) ~max_steps
+  in
+  let doc = "print the reductions of a run one by one" in
+  let man = [
+    `S Manpage.s_description;
+    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), the focus (its location, kind and source text) and the topmost continuation frames. $(b,--format jsonl) writes one JSON object per step in the schema of doc/trace-format.md.";
+    `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
+  ] in
+  Cmd.v (Cmd.info "trace" ~doc ~man)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules)
+
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
   let verbose = Arg.(value & flag & info [ "verbose"; "v" ] ~doc:"List passing cases too.") in
@@ -130,4 +310,4 @@ let spec_cmd =
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
-  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; spec_cmd ]))
+  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd ]))

@@ -11,10 +11,22 @@ type t = {
   description : string option;
   problems : string list;
   format : string;
+  run : run option;
 }
 
-let known_formats = [ "1"; "2" ]
-let checks_semantics case = case.format = "2"
+and run = {
+  entry : string;
+  outputs : string list;
+  exit_status : int;
+  error : (string * int * int) option;
+  max_steps : int option;
+  retry_limit : int option;
+}
+
+let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; max_steps = None; retry_limit = None }
+
+let known_formats = [ "1"; "2"; "3" ]
+let checks_semantics case = case.format = "2" || case.format = "3"
 
 let error_classes = [ "lexical-error"; "syntax-error"; "fatal-error"; "semantic-error" ]
 
@@ -70,7 +82,18 @@ let read path =
     else [ path ]
   in
   let empty = { path; files; sections = []; expectation = None; strict = false; description = None;
-                problems = []; format = "1" } in
+                problems = []; format = "1"; run = None } in
+  let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
+  (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
+  let output_text line =
+    let line = if String.length line > 0 && line.[String.length line - 1] = '\r'
+      then String.sub line 0 (String.length line - 1) else line in
+    match String.index_opt line '@' with
+    | None -> ""
+    | Some i ->
+        let rest = String.sub line (i + 7) (String.length line - i - 7) in
+        if String.length rest > 0 && rest.[0] = ' ' then String.sub rest 1 (String.length rest - 1) else rest
+  in
   let add_problem case m = { case with problems = case.problems @ [ m ] } in
   let case = List.fold_left (fun case file ->
       match In_channel_compat.read_lines file with
@@ -88,9 +111,32 @@ let read path =
               | Some ("options", "strict") -> { case with strict = true }
               | Some ("description", v) -> { case with description = Some v }
               | Some ("format", v) -> { case with format = v }
+              | Some ("output", _) -> with_run case (fun r -> { r with outputs = r.outputs @ [ output_text line ] })
+              | Some ("entry", v) -> with_run case (fun r -> { r with entry = v })
+              | Some ("exit", v) -> (
+                  match int_of_string_opt v with
+                  | Some n -> with_run case (fun r -> { r with exit_status = n })
+                  | None -> add_problem case ("bad @exit " ^ v))
+              | Some ("error", v) -> (
+                  match String.split_on_char ' ' v |> List.filter (( <> ) "") with
+                  | [ name; pos ] -> (
+                      match List.rev (String.split_on_char ':' pos) with
+                      | c :: l :: _ when int_of_string_opt l <> None && int_of_string_opt c <> None ->
+                          with_run case (fun r -> { r with error = Some (name, int_of_string l, int_of_string c) })
+                      | _ -> add_problem case ("bad @error " ^ v))
+                  | _ -> add_problem case ("bad @error " ^ v))
+              | Some ("max-steps", v) -> (
+                  match int_of_string_opt v with
+                  | Some n -> with_run case (fun r -> { r with max_steps = Some n })
+                  | None -> add_problem case ("bad @max-steps " ^ v))
+              | Some ("retry-limit", v) -> (
+                  match int_of_string_opt v with
+                  | Some n -> with_run case (fun r -> { r with retry_limit = Some n })
+                  | None -> add_problem case ("bad @retry-limit " ^ v))
               | Some (k, v) -> add_problem case (Printf.sprintf "unknown directive @%s %s" k v))
             case lines) empty files
   in
   let case = if files = [] then add_problem case "a .task folder without modules" else case in
+  let case = if case.format = "3" && case.run = None then { case with run = Some no_run } else case in
   let case = if case.expectation = None then add_problem case "no @expect directive" else case in
   if case.sections = [] then add_problem case "no @section directive" else case

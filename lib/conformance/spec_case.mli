@@ -16,6 +16,17 @@ type t = {
   description : string option;
   problems : string list;         (** malformed or conflicting directives *)
   format : string;                (** [! @format N]; "1" when absent *)
+  run : run option;               (** format 3: what running the case must do *)
+}
+
+(** Format 3: the case is run after the static semantics accepts it. *)
+and run = {
+  entry : string;                 (** [! @entry NAME]; main by default *)
+  outputs : string list;          (** [! @output TEXT], in order: the whole output *)
+  exit_status : int;              (** [! @exit N]; 0 by default *)
+  error : (string * int * int) option;  (** [! @error NAME LINE:COL] *)
+  max_steps : int option;         (** [! @max-steps N] *)
+  retry_limit : int option;       (** [! @retry-limit N] *)
 }
 
 val read : string -> t
@@ -23,10 +34,11 @@ val read : string -> t
     cannot be read has a problem. *)
 
 val known_formats : string list
-(** The formats this runner reads: ["1"] (the front end) and ["2"] (the static semantics too). *)
+(** The formats this runner reads: ["1"] (the front end), ["2"] (the static semantics too) and
+    ["3"] (running the program too). *)
 
 val checks_semantics : t -> bool
-(** Format 2: the case is also checked by the static semantics. *)
+(** Formats 2 and 3: the case is also checked by the static semantics. *)
 
 val error_classes : string list
 (** The classes an [@expect] may name. *)

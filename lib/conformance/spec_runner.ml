@@ -35,6 +35,48 @@ let accepted case expected =
       fail case (Printf.sprintf "expected %s, but the case was accepted"
                    (Spec_case.expectation_to_string expected))
 
+(* Format 3: the program runs; its output, exit status and error must be those expected. *)
+let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_typing.Check.result) =
+  let module M = Rapid_semantics.Machine in
+  let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
+  let limits = { M.default_limits with
+                 retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+  match M.start ~limits program ~entry:run.entry with
+  | Error m -> fail case ("cannot run: " ^ m)
+  | Ok cfg ->
+      let max_steps = Option.value run.max_steps ~default:10_000_000 in
+      let output = ref [] in
+      while M.outcome cfg = Running && M.steps cfg < max_steps do
+        let _, events = M.step cfg in
+        List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
+      done;
+      let output = List.rev !output in
+      let status, error =
+        match M.outcome cfg with
+        | Ended -> (0, None)
+        | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col))
+        | Running | Resource_exhausted _ -> (3, None)
+        | Unsupported _ -> (4, None)
+        | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0))
+      in
+      let problems =
+        (if output <> run.outputs then
+           [ Printf.sprintf "output %s, expected %s"
+               (String.concat " | " (List.map (Printf.sprintf "%S") output))
+               (String.concat " | " (List.map (Printf.sprintf "%S") run.outputs)) ]
+         else [])
+        @ (if status <> run.exit_status then [ Printf.sprintf "exit %d, expected %d" status run.exit_status ] else [])
+        @ (match run.error, error with
+           | Some e, Some g when e <> g ->
+               let (n, l, c) = g and (en, el, ec) = e in
+               [ Printf.sprintf "error %s %d:%d, expected %s %d:%d" n l c en el ec ]
+           | Some (en, el, ec), None -> [ Printf.sprintf "no error, expected %s %d:%d" en el ec ]
+           | None, Some (n, l, c) when run.exit_status = 0 -> [ Printf.sprintf "error %s %d:%d" n l c ]
+           | _ -> [])
+      in
+      if problems = [] then pass case (Printf.sprintf "ran: %d lines, exit %d" (List.length output) status)
+      else fail case (String.concat "; " problems)
+
 let run_case (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; verdict = Skipped;
@@ -55,7 +97,10 @@ let run_case (case : Spec_case.t) =
         | Ok installed -> (
             let result = Rapid_typing.Check.check_task ~installed modules in
             match Rapid_typing.Check.errors result with
-            | [] -> accepted case expected
+            | [] -> (
+                match case.run, expected with
+                | Some run, Spec_case.Accepted -> run_program case run ~installed ~modules result
+                | _ -> accepted case expected)
             | first :: _ -> (
                 (* The report must also name one of the sections the case tests. *)
                 match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with

@@ -565,7 +565,11 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                       match matches b with
                       | Some q when b.it <> ARG_placeholder ->
                           (match b.it with
-                           | Conditional_argument _ when (match a.it with Conditional_argument _ -> true | _ -> false) -> ()
+                           | Conditional_argument _ when (match a.it with Conditional_argument _ -> true | _ -> false) ->
+                               (* §3.11: several conditional arguments may serve mutually
+                                  exclusive parameters; at most one is present when it runs. *)
+                               optional_argument ~call ctx place b q;
+                               bind q b
                            | _ ->
                                error ctx ~rule:"argument-exclusive" ~section:("5.2," ^ call) b.at
                                  "%s and %s are mutually exclusive: at most one may be given" p.p_name q.p_name);

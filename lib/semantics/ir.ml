@@ -1,0 +1,155 @@
+(* The program the machine runs: the syntax tree after the static semantics, with every name
+   resolved to where its object lives (a slot of the routine's activation or of the task's
+   module data), every operator to its row of §3.12, every argument to its parameter. Nodes
+   keep their source region for errors and the trace. *)
+
+open Rapid_syntax
+
+type region = Source.region
+
+(* Where a data object lives. *)
+type slot =
+  | Local of int            (* the current activation: parameters, routine data, loop variables *)
+  | Global of int           (* module data of the task, and the installed data *)
+
+(* A reference to a data object or a part of it (§3.6-§3.9). *)
+type place =
+  | Whole of slot
+  | Element of place * expr array           (* indexes, each num *)
+  | Component of place * int                 (* component index in its record *)
+  | Unresolved of string                     (* a name that was neither declared nor installed *)
+
+and expr = { e : expr_desc; at : region }
+
+and expr_desc =
+  | Literal of Value.t
+  | Read of place                            (* a data object's value *)
+  | Unary of Arith.unary * expr
+  | Binary of Arith.binary * expr * expr
+  | And of expr * expr                       (* short-circuit, §3.1 *)
+  | Or of expr * expr
+  | Aggregate of expr array * aggregate_kind
+  | Call of call                             (* a function call, §3.11 *)
+  | Placeholder                              (* <EXP>: executing it is ERR_EXECPHR (§2.9) *)
+
+and aggregate_kind = Record_value | Array_value
+
+(* How each parameter of the callee gets its argument (§5.2): the callee's parameters are
+   numbered in declaration order, alternatives included. *)
+and argument =
+  | Absent                                   (* an optional parameter left out *)
+  | Present_switch                           (* \switch *)
+  | By_value of expr                         (* in parameter: a copy *)
+  | By_reference of place * reference_kind   (* var, pers, inout, ref: an alias *)
+  | Pass_on of slot                          (* \p ? x: present iff x is (§3.11) *)
+
+and reference_kind = Ref_variable | Ref_persistent | Ref_constant | Ref_other
+
+and call = {
+  callee : routine_ref;
+  arguments : argument array;                (* one per parameter of the callee *)
+  call_at : region;
+}
+
+and routine_ref =
+  | Routine of int                           (* index in the program's routine table *)
+  | Unknown_routine of string                (* neither declared nor installed *)
+
+type stmt = { s : stmt_desc; sat : region }
+
+and stmt_desc =
+  | Assign of place * expr
+  | Call_procedure of call
+  | Call_late of expr * late_argument array  (* % e % args: bound when it runs (§4.6) *)
+  | Goto of int * int                        (* the label's statement list and index in it *)
+  | Break
+  | Continue
+  | Return of expr option
+  | Raise of expr option
+  | Exit
+  | Retry
+  | Trynext
+  | Connect of place * int                   (* the trap's routine index *)
+  | If of expr * block * block
+  | For of for_loop
+  | While of expr * block
+  | Test of expr * (expr array * block) array * block
+  | Label                                    (* a "no-operation" statement (§4.4) *)
+  | Placeholder_statement                    (* <SMT> *)
+
+(* A statement list, with an identity for GOTO. *)
+and block = { id : int; body : stmt array }
+
+and for_loop = {
+  variable : int;                            (* local slot of the loop variable *)
+  from_ : expr;
+  to_ : expr;
+  step : expr option;
+  loop_body : block;
+}
+
+and late_argument = {
+  late_name : string option;                 (* for optional and named arguments *)
+  late_value : late_value;
+}
+
+and late_value =
+  | Late_expr of expr
+  | Late_switch
+  | Late_reference of place
+
+type routine_kind = Procedure | Function | Trap
+
+type parameter = {
+  p_name : string;
+  p_mode : Rapid_typing.Tables.access_mode;
+  p_optional : bool;
+  p_switch : bool;
+  p_default : Value.t;                       (* shape of an absent parameter's type *)
+}
+
+(* An error number of an error recovery point (§7.2): a literal, or a data object read when the
+   error arrives (a number booked with BookErrNo at run time). *)
+type recovery_number = Number of int | Object of slot
+
+type error_handler = {
+  recovery : recovery_number list option;    (* an error recovery point's numbers (§7.2) *)
+  all_errors : bool;                         (* LONG_JMP_ALL_ERR in the list *)
+  handler : block;
+}
+
+type routine = {
+  name : string;
+  module_name : string;
+  kind : routine_kind;
+  parameters : parameter array;
+  locals : int;                              (* slots of an activation, parameters first *)
+  local_inits : (int * init) list;           (* routine data, initialised at each call (§2.21) *)
+  body : block;
+  backward : block option;
+  error : error_handler option;
+  undo : block option;
+  primitive : string option;                 (* an installed routine bound to a primitive *)
+  local : bool;                              (* LOCAL: visible in its module only (§5.3) *)
+  at : region;
+}
+
+(* The initial value of a data object: a constant expression, or the type's initial value
+   (§2.22, §2.23). *)
+and init = Init_expr of expr | Init_default of Value.t
+
+type global = {
+  g_name : string;
+  g_module : string;
+  g_init : init;
+  g_read_only : bool;                        (* ERRNO, INTNO (ch. 12) *)
+}
+
+type program = {
+  routines : routine array;
+  globals : global array;
+  errno : int;                               (* the global slot of ERRNO *)
+  intno : int;
+  error_numbers : (string * int) list;       (* ERR_ names of the installed environment *)
+  entry_points : (string * int) list;        (* procedures without parameters, by name *)
+}

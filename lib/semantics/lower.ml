@@ -1,0 +1,386 @@
+(* From the checked syntax tree to the program the machine runs. Every name goes where the
+   static semantics bound it (Elaboration), every operator to its row of §3.12, every argument to
+   its parameter. The program has passed the static semantics, so what is missing here is an
+   unknown name allowed by --allow-unknown: it becomes an execution error (ERR_REFUNKDAT,
+   ERR_REFUNKPRC, ERR_REFUNKFUN) when it is reached. *)
+
+open Rapid_syntax
+open Rapid_typing
+module A = Ast
+module E = Elaboration
+
+type ctx = {
+  elab : E.t;
+  routine_index : (Source.region, int) Hashtbl.t;    (* by the region of the routine's name *)
+  global_index : (Source.region, int) Hashtbl.t;     (* by the region of the declared name *)
+  mutable locals : (Source.region, int) Hashtbl.t;   (* of the routine being lowered *)
+  mutable local_count : int;
+  mutable labels : (Source.region, int * int) Hashtbl.t;
+  mutable blocks : int;
+}
+
+let slot_of ctx (d : Env.data_object) : Ir.slot option =
+  match d.d_level with
+  | Routine_level -> Option.map (fun i -> Ir.Local i) (Hashtbl.find_opt ctx.locals d.d_region)
+  | Module_level _ | Installed_level ->
+      Option.map (fun i -> Ir.Global i) (Hashtbl.find_opt ctx.global_index d.d_region)
+
+let shape_default (t : Types.object_type) =
+  match Value.shape_of_type t with
+  | shape -> Value.default_of shape
+  | exception Invalid_argument _ -> Value.Bool false
+
+(* ------------------------------------------------------------------ expressions *)
+
+let rec place ctx (r : A.data_reference) : Ir.place =
+  match r.it with
+  | VAR_placeholder -> Unresolved "<VAR>"
+  | Entire name -> entire ctx name
+  | Element (name, indexes) ->
+      Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
+  | Component (inner, comp) -> (
+      match Hashtbl.find_opt ctx.elab.components comp.at with
+      | Some k -> Component (place ctx inner, k)
+      | None -> Unresolved comp.it)
+
+and entire ctx (name : A.name) : Ir.place =
+  match Hashtbl.find_opt ctx.elab.names name.at with
+  | Some (Data d) -> (match slot_of ctx d with Some s -> Whole s | None -> Unresolved name.it)
+  | _ -> Unresolved name.it
+
+and expr ctx ~dnum (e : A.expression) : Ir.expr =
+  let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
+  let make d = { Ir.e = d; at = e.at } in
+  match e.it with
+  | Literal (Num_literal text) -> (
+      match Num_literal.of_text text with
+      | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
+      | Error _ -> make Placeholder)
+  | Literal (String_literal s) -> make (Literal (Value.String s.bytes))
+  | Literal (Bool_literal b) -> make (Literal (Value.Bool b))
+  | Data_reference r -> make (Read (place ctx r))
+  | Function_call f -> make (Call (call ctx e.at f.func f.arguments))
+  | Aggregate es ->
+      let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
+        | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
+      make (Aggregate (Array.of_list (List.map (expr ctx ~dnum) es), kind))
+  | Unary (op, a) -> (
+      match Hashtbl.find_opt ctx.elab.unary e.at with
+      | Some row ->
+          let operand = if dnum then Tables.O_dnum else row.operand in
+          make (Unary (unary_op op operand, expr ctx ~dnum:(operand = O_dnum) a))
+      | None -> make (Unary ((if op = Not then Arith.Not else Arith.Num_neg), expr ctx ~dnum a)))
+  | Binary (And, a, b) -> make (And (expr ctx ~dnum:false a, expr ctx ~dnum:false b))
+  | Binary (Or, a, b) -> make (Or (expr ctx ~dnum:false a, expr ctx ~dnum:false b))
+  | Binary ((Equal | Not_equal) as op, a, b) ->
+      make (Binary ((if op = Equal then Arith.Equal else Arith.Not_equal),
+                    expr ctx ~dnum:false a, expr ctx ~dnum:false b))
+  | Binary (op, a, b) -> (
+      match Hashtbl.find_opt ctx.elab.binary e.at with
+      | Some row ->
+          let left = if dnum && row.left = O_num then Tables.O_dnum else row.left in
+          let right = if dnum && row.right = O_num then Tables.O_dnum else row.right in
+          make (Binary (binary_op op left right, expr ctx ~dnum:(left = O_dnum) a,
+                        expr ctx ~dnum:(right = O_dnum) b))
+      | None -> make (Binary (Arith.Equal, expr ctx ~dnum a, expr ctx ~dnum b)))
+  | EXP_placeholder -> make Placeholder
+
+(* §3.12: the row's operation. *)
+and binary_op (op : A.binary_operator) (l : Tables.operand) (r : Tables.operand) : Arith.binary =
+  match op, l, r with
+  | Plus, O_num, _ -> Num_add | Plus, O_dnum, _ -> Dnum_add | Plus, O_pos, _ -> Pos_add
+  | Plus, O_string, _ -> String_concat
+  | Minus, O_num, _ -> Num_sub | Minus, O_dnum, _ -> Dnum_sub | Minus, O_pos, _ -> Pos_sub
+  | Mul, O_num, O_pos -> Num_pos_mul | Mul, O_pos, O_num -> Pos_num_mul
+  | Mul, O_pos, O_pos -> Pos_cross | Mul, O_orient, _ -> Orient_mul
+  | Mul, O_num, _ -> Num_mul | Mul, O_dnum, _ -> Dnum_mul
+  | Div, O_pos, _ -> Pos_num_div | Div, O_dnum, _ -> Dnum_div | Div, _, _ -> Num_div
+  | Int_div, O_dnum, _ -> Dnum_intdiv | Int_div, _, _ -> Num_intdiv
+  | Modulo, O_dnum, _ -> Dnum_mod | Modulo, _, _ -> Num_mod
+  | Less, O_dnum, _ -> Dnum_lt | Less, _, _ -> Num_lt
+  | Less_equal, O_dnum, _ -> Dnum_le | Less_equal, _, _ -> Num_le
+  | Greater, O_dnum, _ -> Dnum_gt | Greater, _, _ -> Num_gt
+  | Greater_equal, O_dnum, _ -> Dnum_ge | Greater_equal, _, _ -> Num_ge
+  | Xor, _, _ -> Xor
+  | Equal, _, _ -> Equal | Not_equal, _, _ -> Not_equal
+  | (Plus | Minus | Mul | And | Or), _, _ -> Equal
+
+and unary_op (op : A.unary_operator) (o : Tables.operand) : Arith.unary =
+  match op, o with
+  | Not, _ -> Not
+  | Unary_minus, O_dnum -> Dnum_neg | Unary_minus, O_pos -> Pos_neg | Unary_minus, _ -> Num_neg
+  | Unary_plus, O_dnum -> Dnum_plus | Unary_plus, O_pos -> Pos_plus | Unary_plus, _ -> Num_plus
+
+(* §3.11, §4.6, §5.2: each parameter of the callee gets its argument. *)
+and call ctx (at : Source.region) (name : A.identifier) (_ : A.argument list) : Ir.call =
+  let unknown () =
+    { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
+      arguments = [||]; call_at = at } in
+  match Hashtbl.find_opt ctx.elab.names name.at, Hashtbl.find_opt ctx.elab.bindings at with
+  | Some (Routine r), Some binding -> (
+      match Hashtbl.find_opt ctx.routine_index r.r_region with
+      | None -> unknown ()
+      | Some index ->
+          let params = parameters_of r in
+          let arguments = Array.map (fun (p : Env.parameter) ->
+              match List.find_opt (fun ((q : Env.parameter), _) -> q == p) binding.bound with
+              | None -> Ir.Absent
+              | Some (_, a) -> argument ctx p a) (Array.of_list params) in
+          { callee = Routine index; arguments; call_at = at })
+  | _ -> unknown ()
+
+and parameters_of (r : Env.routine) =
+  List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
+
+and reference_kind ctx (e : A.expression) : Ir.reference_kind =
+  match e.it with
+  | Data_reference r ->
+      let rec root (r : A.data_reference) = match r.it with
+        | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
+      (match Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+       | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
+       | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
+       | Some (Data { d_kind = Constant; _ }) -> Ref_constant
+       | _ -> Ref_other)
+  | _ -> Ref_other
+
+and optional_parameter_slot ctx (e : A.expression) =
+  match e.it with
+  | Data_reference { it = Entire n; _ } -> (
+      match Hashtbl.find_opt ctx.elab.names n.at with
+      | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
+      | _ -> None)
+  | _ -> None
+
+and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
+  let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
+  match a.it with
+  | Optional_argument (_, None) -> Present_switch
+  | Conditional_argument (_, r) -> (
+      match place ctx r with Whole s -> Pass_on s | _ -> Absent)
+  | ARG_placeholder -> By_value { e = Placeholder; at = a.at }
+  | Required_argument (_, e) | Optional_argument (_, Some e) -> (
+      match p.p_mode with
+      | Mode_in -> By_value (expr ctx ~dnum e)
+      | Mode_ref when optional_parameter_slot ctx e <> None ->
+          (* Present and the other REF parameters see an absent optional parameter as absent
+             instead of using its value (§5.2, ch. 11). *)
+          Pass_on (Option.get (optional_parameter_slot ctx e))
+      | _ -> (
+          match e.it with
+          | Data_reference r -> By_reference (place ctx r, reference_kind ctx e)
+          | _ -> By_value (expr ctx ~dnum e)))
+
+(* ------------------------------------------------------------------ statements *)
+
+let new_block ctx = ctx.blocks <- ctx.blocks + 1; ctx.blocks
+
+let rec block ctx (l : A.statement list) : Ir.block =
+  let id = new_block ctx in
+  let l = List.filter (fun (s : A.statement) -> match s.it with Statement_comment _ -> false | _ -> true) l in
+  List.iteri (fun i (s : A.statement) ->
+      match s.it with
+      | Label name -> Hashtbl.replace ctx.labels name.at (id, i)
+      | _ -> ()) l;
+  { id; body = Array.of_list (List.map (statement ctx) l) }
+
+and statement ctx (s : A.statement) : Ir.stmt =
+  let make d = { Ir.s = d; sat = s.at } in
+  match s.it with
+  | Assignment (target, e) ->
+      let dnum = match target.it with
+        | Entire n | Element (n, _) -> (
+            match Hashtbl.find_opt ctx.elab.names n.at with
+            | Some (Data { d_type = { base = Dnum; _ }; _ }) -> false
+            | _ -> false)
+        | _ -> false in
+      make (Assign (place ctx target, expr ctx ~dnum e))
+  | Procedure_call (_, args) when List.exists (fun (a : A.argument) -> a.it = ARG_placeholder) args ->
+      (* §2.9: executing a placeholder is ERR_EXECPHR. *)
+      make Placeholder_statement
+  | Procedure_call (Procedure_name id, args) -> make (Call_procedure (call ctx s.at id args))
+  | Procedure_call (Late_bound e, args) ->
+      let late (a : A.argument) : Ir.late_argument =
+        let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
+        match a.it with
+        | Required_argument (n, e) -> { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e) }
+        | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch }
+        | Optional_argument (n, Some e) -> { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e) }
+        | Conditional_argument (n, r) -> { late_name = name n; late_value = Late_reference (place ctx r) }
+        | ARG_placeholder -> { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at } }
+      in
+      make (Call_late (expr ctx ~dnum:false e, Array.of_list (List.map late args)))
+  | Goto id -> (
+      match Hashtbl.find_opt ctx.elab.names id.at with
+      | Some (Label at) -> (
+          match Hashtbl.find_opt ctx.labels at with
+          | Some (b, i) -> make (Goto (b, i))
+          | None -> make Placeholder_statement)
+      | _ -> make Placeholder_statement)
+  | Break -> make Break
+  | Continue -> make Continue
+  | Return e -> make (Return (Option.map (expr ctx ~dnum:false) e))
+  | Raise e -> make (Raise (Option.map (expr ctx ~dnum:false) e))
+  | Exit -> make Exit
+  | Retry -> make Retry
+  | Trynext -> make Trynext
+  | Connect (target, trap) -> (
+      match Hashtbl.find_opt ctx.elab.names trap.at with
+      | Some (Routine r) -> (
+          match Hashtbl.find_opt ctx.routine_index r.r_region with
+          | Some i -> make (Connect (place ctx target, i))
+          | None -> make Placeholder_statement)
+      | _ -> make Placeholder_statement)
+  | If i ->
+      let rec chain = function
+        | [] -> (match i.else_branch with Some l -> block ctx l | None -> block ctx [])
+        | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest ->
+            let inner = { Ir.s = Ir.If (expr ctx ~dnum:false c, block ctx l, chain rest); sat = at } in
+            { id = new_block ctx; body = [| inner |] }
+        | { it = EIT_placeholder; at } :: _ ->
+            { id = new_block ctx; body = [| { s = Placeholder_statement; sat = at } |] }
+      in
+      let then_ = block ctx i.then_branch in
+      make (If (expr ctx ~dnum:false i.condition, then_, chain i.elseifs))
+  | Compact_if (c, body) ->
+      let id = new_block ctx in
+      make (If (expr ctx ~dnum:false c, { id; body = [| statement ctx body |] }, block ctx []))
+  | For f ->
+      let variable = ctx.local_count in
+      ctx.local_count <- ctx.local_count + 1;
+      Hashtbl.replace ctx.locals f.loop_variable.at variable;
+      make (For { variable; from_ = expr ctx ~dnum:false f.from_; to_ = expr ctx ~dnum:false f.to_;
+                  step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
+  | While (c, body) -> make (While (expr ctx ~dnum:false c, block ctx body))
+  | Test t ->
+      let cases = List.map (fun (c : A.case_clause) ->
+          match c.it with
+          | Case (values, l) -> (Array.of_list (List.map (expr ctx ~dnum:false) values), block ctx l)
+          | CSE_placeholder -> ([| { Ir.e = Placeholder; at = c.at } |], block ctx [])) t.cases in
+      make (Test (expr ctx ~dnum:false t.test_expression, Array.of_list cases,
+                  (match t.default with Some l -> block ctx l | None -> block ctx [])))
+  | Label _ -> make Label
+  | Statement_comment _ -> make Label
+  | SMT_placeholder -> make Placeholder_statement
+
+(* ------------------------------------------------------------------ routines and the program *)
+
+let initial ctx (d : Env.data_object) : Ir.init =
+  match d.d_initial with
+  | Some e ->
+      let dnum = d.d_type.base = Dnum && d.d_type.dims = Scalar in
+      Init_expr (expr ctx ~dnum e)
+  | None -> Init_default (shape_default d.d_type)
+
+let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.routine option =
+  let lower (name : A.identifier) (kind : Ir.routine_kind) (body : A.routine_body) =
+    match Hashtbl.find_opt ctx.elab.declared name.at with
+    | Some (Routine r) ->
+        ctx.locals <- Hashtbl.create 16;
+        ctx.labels <- Hashtbl.create 8;
+        let params = parameters_of r in
+        List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
+        ctx.local_count <- List.length params;
+        let optional p = List.exists (function
+            | Env.Optional_slot ps -> List.memq p ps | Env.Required_slot _ -> false) r.r_slots in
+        let parameters = Array.of_list (List.map (fun (p : Env.parameter) ->
+            { Ir.p_name = p.p_name; p_mode = p.p_mode; p_optional = optional p;
+              p_switch = p.p_type = None;
+              p_default = (match p.p_type with Some t -> shape_default t | None -> Value.Bool false) })
+            params) in
+        let inits = List.filter_map (fun (d : A.data_declaration) ->
+            match d.it with
+            | Data_declaration { name; _ } -> (
+                match Hashtbl.find_opt ctx.elab.declared name.at with
+                | Some (Data obj) ->
+                    let slot = ctx.local_count in
+                    ctx.local_count <- slot + 1;
+                    Hashtbl.replace ctx.locals obj.d_region slot;
+                    Some (slot, initial ctx obj)
+                | _ -> None)
+            | Declaration_comment _ | DDN_placeholder -> None) body.declarations in
+        let main = block ctx body.statements in
+        let backward = Option.map (block ctx) body.backward in
+        let error = Option.map (fun (h : A.error_handler) ->
+            let all_errors = ref false in
+            let recovery = Option.map (List.filter_map (fun (n : A.recovery_error_number) ->
+                match n.it with
+                | Error_number_literal t -> (
+                    match Num_literal.of_text t with
+                    | Ok v -> Some (Ir.Number (Z.to_int (Q.num (Num_literal.to_q v))))
+                    | Error _ -> None)
+                | Error_number_name nm ->
+                    if String.uppercase_ascii nm.it = "LONG_JMP_ALL_ERR" then (all_errors := true; None)
+                    else (
+                      match Hashtbl.find_opt ctx.elab.names nm.at with
+                      | Some (Data d) -> Option.map (fun s -> Ir.Object s) (slot_of ctx d)
+                      | _ -> None))) h.error_numbers in
+            { Ir.recovery; all_errors = !all_errors; handler = block ctx h.handler }) body.error in
+        let undo = Option.map (block ctx) body.undo in
+        let is_empty = body.statements = [] && body.declarations = [] in
+        Some { Ir.name = r.r_name; module_name; kind; parameters; locals = ctx.local_count;
+               local_inits = inits; body = main; backward; error; undo;
+               primitive = (if installed && is_empty then Some r.r_name else None); at = name.at;
+               local = r.r_local }
+    | _ -> None
+  in
+  match decl.it with
+  | Procedure_declaration { name; body; _ } -> lower name Procedure body
+  | Function_declaration { name; body; _ } -> lower name Function body
+  | Trap_declaration { name; body; _ } -> lower name Trap body
+  | Routine_comment _ | RDN_placeholder -> None
+
+let module_name (m : A.module_declaration) =
+  match m.module_name.it with Ident s -> s | ID_placeholder -> "<ID>"
+
+let program ~installed ~modules (elab : E.t) : Ir.program =
+  let all = List.map (fun m -> (m, true)) installed @ List.map (fun m -> (m, false)) modules in
+  let ctx = { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
+              locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0 } in
+  (* Routine and global numbering first: bodies and initial values refer to any of them. *)
+  let routine_decls = List.concat_map (fun ((m : A.module_declaration), inst) ->
+      List.filter_map (fun (r : A.routine_declaration) ->
+          match r.it with
+          | Procedure_declaration { name; _ } | Function_declaration { name; _ }
+          | Trap_declaration { name; _ } -> Some (m, inst, r, name)
+          | Routine_comment _ | RDN_placeholder -> None) m.routine_declarations) all in
+  let routine_decls = List.filter (fun (_, _, _, (name : A.identifier)) ->
+      match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
+  List.iteri (fun i (_, _, _, (name : A.identifier)) ->
+      match Hashtbl.find_opt elab.declared name.at with
+      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region i
+      | _ -> ()) routine_decls;
+  let global_decls = List.concat_map (fun ((m : A.module_declaration), _) ->
+      List.filter_map (fun (d : A.data_declaration) ->
+          match d.it with
+          | Data_declaration { name; _ } -> (
+              match Hashtbl.find_opt elab.declared name.at with
+              | Some (Data obj) -> Some (m, obj)
+              | _ -> None)
+          | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all in
+  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region i) global_decls;
+  let globals = Array.of_list (List.map (fun (m, (obj : Env.data_object)) ->
+      { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
+        g_read_only = obj.d_kind = Read_only_variable }) global_decls) in
+  let routines = Array.of_list (List.map (fun (m, inst, r, _) ->
+      match routine ctx ~module_name:(module_name m) ~installed:inst r with
+      | Some r -> r
+      | None -> assert false) routine_decls) in
+  let find_global name =
+    let rec go i = if i >= Array.length globals then 0
+      else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
+    go 0 in
+  let error_numbers = List.filter_map (fun (_, (obj : Env.data_object)) ->
+      let n = String.uppercase_ascii obj.d_name in
+      if obj.d_kind = Constant && (String.length n > 4 && String.sub n 0 4 = "ERR_" || n = "LONG_JMP_ALL_ERR") then
+        match obj.d_initial with
+        | Some { it = Literal (Num_literal t); _ } -> (
+            match Num_literal.of_text t with
+            | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
+            | Error _ -> None)
+        | _ -> None
+      else None) (List.filter (fun ((m : A.module_declaration), _) -> List.memq m installed) global_decls) in
+  let entry_points = List.filter_map (fun x -> x)
+      (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
+           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, i) else None) routines)) in
+  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO"; error_numbers; entry_points }

@@ -1,0 +1,948 @@
+(* The reduction rules of doc/semantics.md, one match clause each, named by the string the step
+   returns. The stack is an immutable list of frames, so that capturing "the statement that
+   caused the error" for RETRY and TRYNEXT (§7.1) is keeping a pointer; the few expression
+   frames that accumulate values (aggregates, arguments) are mutable, and are never captured:
+   RETRY restarts a statement from the beginning. *)
+
+open Rapid_syntax
+module V = Value
+
+type loc = { box : V.t array; idx : int }
+
+type err = { name : string; number : int; err_at : Source.region; searched : bool }
+
+type event =
+  | Output of string
+  | Erase
+  | Log of string
+  | Routine_entered of string
+  | Routine_left of string
+  | Error_raised of { name : string; number : int; at : Source.region }
+  | Error_handled of { name : string; routine : string }
+  | Undo_run of string
+  | Task_ended
+
+type outcome =
+  | Running
+  | Ended
+  | Stopped of { name : string; number : int; at : Source.region; chain : string list }
+  | Resource_exhausted of string
+  | Unsupported of string
+  | Stuck of string
+
+type limits = { max_call_depth : int; retry_limit : int }
+
+let default_limits = { max_call_depth = 10_000; retry_limit = 4 }
+
+type activation = {
+  routine : Ir.routine;
+  slots : loc array;
+  present : bool array;                 (* per parameter *)
+  kinds : Ir.reference_kind array;      (* per parameter: what an alias parameter denotes *)
+  caller : activation option;
+  return_to : frame list;               (* the caller's stack at the call *)
+  caller_mark : frame list;
+  call_depth : int;
+  mutable handling : handling;
+  mutable retries : int;
+  mutable retried : Ir.stmt option;
+}
+
+and handling =
+  | Body
+  | In_handler of err * frame list      (* the error, and the stack at the statement that caused it *)
+  | In_undo
+
+(* What comes after an UNDO handler, or after abandoning a routine that has none. *)
+and after_abandon =
+  | Go_on_exit                          (* EXIT: abandon every routine (§4.12, §7.2) *)
+  | Go_on_propagate of err              (* raise the error again at the call point (§7.1) *)
+  | Go_on_long_jump of err * activation (* unwind down to the error recovery point (§7.2) *)
+
+and frame =
+  | K_seq of Ir.block * int             (* the rest of a statement list *)
+  | K_stmt of Ir.stmt * frame list      (* a statement in progress, and the previous mark *)
+  | K_assign_value of Ir.expr
+  | K_assign_store of loc
+  | K_if of Ir.block * Ir.block
+  | K_while_test of Ir.expr * Ir.block
+  | K_while_body of Ir.expr * Ir.block
+  | K_for_from of Ir.for_loop
+  | K_for_to of Ir.for_loop * V.t                   (* FROM evaluated *)
+  | K_for_step of Ir.for_loop * V.t * V.t           (* FROM and TO evaluated *)
+  | K_for_body of Ir.for_loop * V.t * V.t           (* TO and STEP: the body runs *)
+  | K_test_subject of (Ir.expr array * Ir.block) array * Ir.block
+  | K_test_value of V.t * (Ir.expr array * Ir.block) array * Ir.block * int * int
+  | K_return_value
+  | K_raise_value
+  | K_connect_target of int
+  | K_late_name of Ir.late_argument array * Source.region
+  | K_read
+  | K_unary of Arith.unary * Source.region
+  | K_binary_left of Arith.binary * Ir.expr * Source.region
+  | K_binary_right of Arith.binary * V.t * Source.region
+  | K_and of Ir.expr
+  | K_or of Ir.expr
+  | K_aggregate of Ir.expr array * V.t array * int * Ir.aggregate_kind
+  | K_component of int
+  | K_element_base of Ir.expr array * Source.region
+  | K_element_index of loc * Ir.expr array * int * Source.region
+  | K_args of call_state
+  | K_local_init of activation * (int * Ir.init) list
+  | K_routine_end                       (* falling off the end of a routine body *)
+  | K_handler_end                       (* falling off the end of an error handler (§7.1) *)
+  | K_undo_end of after_abandon
+  | K_task_end
+
+and call_state = {
+  call : Ir.call;
+  callee : Ir.routine;
+  args_slots : loc array;
+  args_present : bool array;
+  args_kinds : Ir.reference_kind array;
+  primitive_args : Primitive.argument array;
+  mutable next : int;
+  by_value : bool;                      (* waiting for a value (true) or a location (false) *)
+}
+
+type focus =
+  | F_expr of Ir.expr
+  | F_value of V.t
+  | F_place of Ir.place
+  | F_loc of loc
+  | F_stmt of Ir.stmt
+  | F_next
+  | F_raise of err
+  | F_search of err * activation option (* the long-jump search of §7.2 *)
+  | F_abandon of after_abandon          (* leave the current activation, running its UNDO *)
+  | F_done of outcome
+
+type config = {
+  program : Ir.program;
+  limits : limits;
+  globals : loc array;
+  mutable act : activation;
+  mutable stack : frame list;
+  mutable mark : frame list;            (* the stack at the innermost statement in progress *)
+  mutable focus : focus;
+  mutable count : int;
+  mutable booked : int;                 (* BookErrNo *)
+  mutable interrupt_numbers : int;      (* CONNECT *)
+  (* Later issues: execution levels and the interrupt queue, the motion queue, other tasks. *)
+  mutable level : [ `Normal | `Trap | `User ];
+  interrupt_queue : int Queue.t;
+}
+
+let fresh_loc v = { box = [| v |]; idx = 0 }
+let get l = Array.unsafe_get l.box l.idx
+let set l v = Array.unsafe_set l.box l.idx (V.copy v)
+
+let error_number cfg name =
+  match List.assoc_opt name cfg.program.error_numbers with Some n -> n | None -> 0
+
+let error cfg name at = { name; number = error_number cfg name; err_at = at; searched = false }
+
+(* The name the system error handler reports: an ERR_ constant's name, or a user error's
+   number. *)
+let error_of_number cfg n at =
+  let name =
+    match List.find_opt (fun (_, m) -> m = n) cfg.program.error_numbers with
+    | Some (name, _) -> name
+    | None -> string_of_int n
+  in
+  { name; number = n; err_at = at; searched = false }
+
+let region_of_focus_stmt cfg =
+  match cfg.mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> cfg.act.routine.at
+
+let raise_ cfg name = cfg.focus <- F_raise (error cfg name (region_of_focus_stmt cfg))
+
+let push cfg f = cfg.stack <- f :: cfg.stack
+
+let rec call_chain = function
+  | None -> []
+  | Some a -> a.routine.Ir.name :: call_chain a.caller
+
+(* ------------------------------------------------------------------ start *)
+
+let routine_index program name =
+  let rec find i =
+    if i >= Array.length program.Ir.routines then None
+    else if String.lowercase_ascii program.routines.(i).name = String.lowercase_ascii name then Some i
+    else find (i + 1)
+  in
+  find 0
+
+let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
+  { routine; slots; present; kinds; caller; return_to; caller_mark;
+    call_depth = (match caller with None -> 1 | Some c -> c.call_depth + 1);
+    handling = Body; retries = 0; retried = None }
+
+let start ?(limits = default_limits) (program : Ir.program) ~entry =
+  match routine_index program entry with
+  | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
+  | Some i ->
+      let routine = program.routines.(i) in
+      if routine.kind <> Procedure || Array.length routine.parameters > 0 then
+        Error (Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" entry)
+      else begin
+        let globals = Array.map (fun (g : Ir.global) ->
+            fresh_loc (match g.g_init with Init_default v -> V.copy v | Init_expr _ -> V.Bool false))
+            program.globals in
+        (* §2.21: module data is static, initialised when its module is loaded, before the task
+           runs: constant and literal expressions (§3.2, §3.3), evaluated here, not as steps. *)
+        let rec eval (e : Ir.expr) : (V.t, string) result =
+          match e.e with
+          | Literal v -> Ok v
+          | Read (Whole (Global i)) -> Ok (get globals.(i))
+          | Read (Component (p, k)) -> (
+              match eval { e with e = Read p } with
+              | Ok (V.Record cs) -> Ok cs.(k)
+              | Ok _ -> Error "ERR_REFUNKDAT" | Error m -> Error m)
+          | Read (Element (p, idx)) -> (
+              match eval { e with e = Read p } with
+              | Ok v ->
+                  Array.fold_left (fun acc (ie : Ir.expr) ->
+                      match acc, eval ie with
+                      | Ok (V.Array es), Ok (V.Num f) when Float.is_integer f && f >= 1. && int_of_float f <= Array.length es ->
+                          Ok es.(int_of_float f - 1)
+                      | Error m, _ | _, Error m -> Error m
+                      | _ -> Error "ERR_OUTOFBND") (Ok v) idx
+              | Error m -> Error m)
+          | Read _ | Call _ | Placeholder | And _ | Or _ -> Error "ERR_EXECPHR"
+          | Unary (op, a) -> Result.bind (eval a) (Arith.unary op)
+          | Binary (op, a, b) -> Result.bind (eval a) (fun x -> Result.bind (eval b) (Arith.binary op x))
+          | Aggregate (es, kind) ->
+              let vs = Array.map eval es in
+              (match Array.find_opt Result.is_error vs with
+               | Some (Error m) -> Error m
+               | _ ->
+                   let vs = Array.map (function Ok v -> v | Error _ -> V.Bool false) vs in
+                   Ok (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs))
+        in
+        let failed = ref None in
+        Array.iteri (fun i (g : Ir.global) ->
+            match g.g_init with
+            | Init_expr e when !failed = None -> (
+                match eval e with
+                | Ok v -> set globals.(i) v
+                | Error name -> failed := Some (Printf.sprintf "the initial value of %s: %s" g.g_name name))
+            | _ -> ()) program.globals;
+        match !failed with
+        | Some m -> Error m
+        | None ->
+        let slots = Array.init routine.locals (fun _ -> fresh_loc (V.Bool false)) in
+        let act = activation ~routine ~slots ~present:[||] ~kinds:[||] ~caller:None
+            ~return_to:[ K_task_end ] ~caller_mark:[] in
+        let cfg = {
+          program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
+          count = 0; booked = 0; interrupt_numbers = 0; level = `Normal;
+          interrupt_queue = Queue.create ();
+        } in
+        cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
+        Ok cfg
+      end
+
+(* ------------------------------------------------------------------ calls *)
+
+let enter_routine cfg (cs : call_state) =
+  let r = cs.callee in
+  let depth = cfg.act.call_depth + 1 in
+  if depth > cfg.limits.max_call_depth then begin
+    cfg.focus <- F_done (Resource_exhausted
+                           (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" cfg.limits.max_call_depth));
+    ("call-depth-exceeded", [])
+  end
+  else begin
+    let slots = Array.make r.locals { box = [||]; idx = 0 } in
+    Array.blit cs.args_slots 0 slots 0 (Array.length cs.args_slots);
+    for i = Array.length cs.args_slots to r.locals - 1 do slots.(i) <- fresh_loc (V.Bool false) done;
+    let act = activation ~routine:r ~slots ~present:cs.args_present ~kinds:cs.args_kinds
+        ~caller:(Some cfg.act) ~return_to:cfg.stack ~caller_mark:cfg.mark in
+    cfg.act <- act;
+    (* Routine data is fresh for every call (§2.21): initialised, then the body runs. *)
+    cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
+    cfg.mark <- [];
+    cfg.focus <- F_next;
+    ("call-enter", [ Routine_entered r.name ])
+  end
+
+let return_from cfg value =
+  let act = cfg.act in
+  match act.caller with
+  | None ->
+      cfg.focus <- F_done Ended;
+      ("return-entry", [ Routine_left act.routine.name; Task_ended ])
+  | Some caller ->
+      cfg.act <- caller;
+      cfg.stack <- act.return_to;
+      cfg.mark <- act.caller_mark;
+      (match act.routine.kind, value with
+       | Function, Some v -> cfg.focus <- F_value v
+       | _ -> cfg.focus <- F_next);
+      ((match act.routine.kind with Function -> "return-function" | _ -> "return-procedure"),
+       [ Routine_left act.routine.name ])
+
+(* The binding an alias argument has: a parameter passes on its own binding (§5.2). *)
+let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
+  let rec root = function
+    | Ir.Whole s -> Some s
+    | Element (p, _) | Component (p, _) -> root p
+    | Unresolved _ -> None
+  in
+  match root p with
+  | Some (Local i) when i < Array.length cfg.act.kinds -> cfg.act.kinds.(i)
+  | _ -> k
+
+let primitive_context cfg events : Primitive.context = {
+  output = (fun line -> events := Output line :: !events);
+  erase = (fun () -> events := Erase :: !events);
+  log = (fun line -> events := Log line :: !events);
+  book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
+  error_number = (fun name -> error_number cfg name);
+}
+
+let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
+
+let call_primitive cfg (cs : call_state) name =
+  let events = ref [] in
+  match Primitive.call (primitive_context cfg events) name cs.primitive_args with
+  | Primitive.Returned v ->
+      (match cs.callee.kind, v with
+       | Function, Some v -> cfg.focus <- F_value v
+       | Function, None -> raise_ cfg "ERR_FNCNORET"
+       | _ -> cfg.focus <- F_next);
+      ("call-primitive", List.rev !events)
+  | Primitive.Failed name -> raise_ cfg name; ("call-primitive-error", List.rev !events)
+  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
+  | Primitive.Call_by_name target -> (
+      (* CallByVar: a late-bound call without arguments (§4.6). *)
+      match routine_index cfg.program target with
+      | None -> raise_ cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
+      | Some i -> (
+          match Late_binding.bind cfg.program.routines.(i) [||] with
+          | None -> raise_ cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
+          | Some arguments ->
+              let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
+              ignore rule; ("call-by-var", List.rev !events)))
+  | Primitive.Not_modelled ->
+      cfg.focus <- F_done (Unsupported
+                             (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name));
+      ("call-not-modelled", List.rev !events)
+
+let begin_call cfg (call : Ir.call) =
+  match call.callee with
+  | Unknown_routine _ -> raise_ cfg "ERR_REFUNKPRC"; "call-unknown"
+  | Routine i ->
+      let callee = cfg.program.routines.(i) in
+      let n = Array.length callee.parameters in
+      push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
+                         args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
+                         primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
+      cfg.focus <- F_next;
+      "call-arguments"
+
+let () = begin_call_ref := begin_call
+
+(* The next argument of a call in progress, or the call itself when all are there (§5.2). *)
+let next_argument cfg (cs : call_state) rest =
+  let n = Array.length cs.call.arguments in
+  if cs.next >= n then begin
+    cfg.stack <- rest;
+    match cs.callee.primitive with
+    | Some name -> call_primitive cfg cs name
+    | None -> enter_routine cfg cs
+  end
+  else begin
+    let i = cs.next in
+    let p = cs.callee.parameters.(i) in
+    match cs.call.arguments.(i) with
+    | Absent ->
+        cs.next <- i + 1;
+        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
+        ("argument-absent", [])
+    | Present_switch ->
+        cs.next <- i + 1;
+        cs.args_present.(i) <- true;
+        cs.primitive_args.(i) <- Primitive.Switch;
+        ("argument-switch", [])
+    | By_value e ->
+        cfg.stack <- K_args { cs with by_value = true } :: rest;
+        cfg.focus <- F_expr e;
+        ("argument-value", [])
+    | By_reference (place, k) ->
+        cs.args_kinds.(i) <- reference_kind cfg place k;
+        cfg.stack <- K_args { cs with by_value = false } :: rest;
+        cfg.focus <- F_place place;
+        ("argument-reference", [])
+    | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
+        cs.next <- i + 1;
+        cs.args_present.(i) <- true;
+        cs.args_slots.(i) <- cfg.act.slots.(j);
+        cs.args_kinds.(i) <- cfg.act.kinds.(j);
+        cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
+        ("argument-pass-on-present", [])
+    | Pass_on _ ->
+        cs.next <- i + 1;
+        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
+        ("argument-pass-on-absent", [])
+  end
+
+(* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
+   variable passed on to a PERS parameter, or bound to a persistent passed on to a VAR one. *)
+let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
+  match p.p_mode, k with
+  | Mode_var, Ref_persistent -> Error "ERR_ARGNOTVAR"
+  | Mode_pers, (Ref_variable | Ref_other) -> Error "ERR_ARGNOTPER"
+  | _ -> Ok ()
+
+(* ------------------------------------------------------------------ errors *)
+
+let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n))
+
+(* §7.1: the error handler of the current routine takes control. *)
+let handle cfg (e : err) =
+  let act = cfg.act in
+  match act.routine.error with
+  | None -> assert false
+  | Some h ->
+      act.handling <- In_handler (e, cfg.mark);
+      set_errno cfg e.number;
+      cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
+      cfg.mark <- [];
+      cfg.focus <- F_next;
+      ("raise-handle", [ Error_handled { name = e.name; routine = act.routine.name } ])
+
+let stop cfg (e : err) rule =
+  cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at;
+                                 chain = call_chain (Some cfg.act) });
+  (rule, [])
+
+(* An error in flight in the current activation (§7.1, §7.2). *)
+let raise_step cfg (e : err) =
+  let act = cfg.act in
+  match act.handling, act.routine.error with
+  | (In_handler _ | In_undo), _ -> stop cfg e "raise-in-handler"
+  | Body, Some _ -> handle cfg e
+  | Body, None -> (
+      match act.caller with
+      | None -> stop cfg e "raise-unhandled"
+      | Some caller ->
+          if e.searched then (cfg.focus <- F_abandon (Go_on_propagate e); ("raise-propagate", []))
+          else (cfg.focus <- F_search (e, Some caller); ("longjump-search-start", [])))
+
+let recovery_point cfg (a : activation) (e : err) =
+  match a.routine.error with
+  | Some { recovery = Some numbers; all_errors; _ } ->
+      all_errors
+      || List.exists (function
+          | Ir.Number n -> n = e.number
+          | Object s ->
+              let l = match s with Global i -> cfg.globals.(i) | Local i -> a.slots.(i) in
+              (match get l with V.Num f -> Float.of_int e.number = f | _ -> false)) numbers
+  | _ -> false
+
+(* ------------------------------------------------------------------ the step *)
+
+let bool_of = function V.Bool b -> Some b | _ -> None
+
+let num_of = function V.Num f | V.Dnum f -> Some f | _ -> None
+
+let to_int f = if Float.is_integer f && Float.abs f < 1e15 then Some (int_of_float f) else None
+
+(* The statements of a statement list, one by one. *)
+let exec cfg (s : Ir.stmt) =
+  let mark_here () = push cfg (K_stmt (s, cfg.mark)); cfg.mark <- cfg.stack in
+  match s.s with
+  | Label -> cfg.focus <- F_next; ("label", [])
+  | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
+  | Assign (p, e) ->
+      mark_here ();
+      push cfg (K_assign_value e);
+      cfg.focus <- F_place p;
+      ("assign", [])
+  | Call_procedure c -> mark_here (); (begin_call cfg c, [])
+  | Call_late (e, args) ->
+      mark_here ();
+      push cfg (K_late_name (args, s.sat));
+      cfg.focus <- F_expr e;
+      ("call-late", [])
+  | Goto (block, index) ->
+      (* §4.7: the label's statement list is this one or one that encloses it: unwind to it. *)
+      let rec unwind = function
+        | K_seq (b, _) :: rest when b.Ir.id = block ->
+            cfg.stack <- K_seq (b, index) :: rest; cfg.focus <- F_next
+        | K_stmt (_, prev) :: rest -> cfg.mark <- prev; unwind rest
+        | _ :: rest -> unwind rest
+        | [] -> cfg.focus <- F_done (Stuck "GOTO to a label not in an enclosing statement list")
+      in
+      unwind cfg.stack;
+      ("goto", [])
+  | Break | Continue ->
+      (* §4.8, §4.9: to the innermost loop of the routine. *)
+      let rec unwind = function
+        | (K_while_body (c, b)) :: rest ->
+            if s.s = Break then (cfg.stack <- rest; cfg.focus <- F_next)
+            else (cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c)
+        | (K_for_body _ as loop) :: rest ->
+            if s.s = Break then cfg.stack <- rest else cfg.stack <- loop :: rest;
+            cfg.focus <- F_next
+        | K_stmt (_, prev) :: rest -> cfg.mark <- prev; unwind rest
+        | _ :: rest -> unwind rest
+        | [] -> cfg.focus <- F_done (Stuck "BREAK or CONTINUE outside a loop")
+      in
+      unwind cfg.stack;
+      ((if s.s = Break then "break" else "continue"), [])
+  | Return None -> return_from cfg None
+  | Return (Some e) -> mark_here (); push cfg K_return_value; cfg.focus <- F_expr e; ("return-value", [])
+  | Raise None -> (
+      match cfg.act.handling with
+      | In_handler (e, _) -> (
+          match cfg.act.caller with
+          | None -> stop cfg e "raise-again-unhandled"
+          | Some caller ->
+              cfg.focus <- F_search ({ e with searched = false }, Some caller);
+              ("raise-again", []))
+      | _ -> cfg.focus <- F_done (Stuck "RAISE without a number outside an error handler"); ("stuck", []))
+  | Raise (Some e) -> mark_here (); push cfg K_raise_value; cfg.focus <- F_expr e; ("raise-number", [])
+  | Exit -> cfg.focus <- F_abandon Go_on_exit; ("exit", [])
+  | Retry -> (
+      match cfg.act.handling with
+      | In_handler (e, point) ->
+          let act = cfg.act in
+          act.retries <- act.retries + 1;
+          if act.retries > cfg.limits.retry_limit then begin
+            act.handling <- Body;
+            act.retries <- 0;
+            (* §7.1: the error is beyond recovery: ERR_EXCRTYMAX, at the RETRY, in the handler,
+               goes to the system error handler. *)
+            cfg.focus <- F_raise { (error cfg "ERR_EXCRTYMAX" s.sat) with searched = true };
+            act.handling <- In_handler (e, point);
+            ("retry-limit", [])
+          end
+          else begin
+            act.handling <- Body;
+            (match point with
+             | K_stmt (st, prev) :: rest ->
+                 act.retried <- Some st;
+                 cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_stmt st
+             | _ -> cfg.focus <- F_done (Stuck "RETRY without a statement to retry"));
+            ("retry", [])
+          end
+      | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
+  | Trynext -> (
+      match cfg.act.handling with
+      | In_handler (_, point) ->
+          cfg.act.handling <- Body;
+          (match point with
+           | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
+           | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
+          ("trynext", [])
+      | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
+  | Connect (p, trap) -> mark_here (); push cfg (K_connect_target trap); cfg.focus <- F_place p; ("connect", [])
+  | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
+  | While (c, b) -> mark_here (); push cfg (K_while_test (c, b)); cfg.focus <- F_expr c; ("while", [])
+  | For f -> mark_here (); push cfg (K_for_from f); cfg.focus <- F_expr f.from_; ("for", [])
+  | Test (e, cases, default) ->
+      mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; ("test", [])
+
+let frame_kind = function
+  | K_seq _ -> "seq" | K_stmt _ -> "stmt" | K_assign_value _ -> "assign-value"
+  | K_assign_store _ -> "assign-store" | K_if _ -> "if" | K_while_test _ -> "while-test"
+  | K_while_body _ -> "while-body" | K_for_from _ -> "for-from" | K_for_to _ -> "for-to"
+  | K_for_step _ -> "for-step" | K_for_body _ -> "for-body" | K_test_subject _ -> "test"
+  | K_test_value _ -> "test-value" | K_return_value -> "return" | K_raise_value -> "raise"
+  | K_connect_target _ -> "connect" | K_late_name _ -> "late-call" | K_read -> "read"
+  | K_unary _ -> "unary" | K_binary_left _ -> "binary-left" | K_binary_right _ -> "binary-right"
+  | K_and _ -> "and" | K_or _ -> "or" | K_aggregate _ -> "aggregate" | K_component _ -> "component"
+  | K_element_base _ | K_element_index _ -> "element" | K_args _ -> "arguments"
+  | K_local_init _ -> "local-init" | K_routine_end -> "routine-end"
+  | K_handler_end -> "handler-end" | K_undo_end _ -> "undo-end" | K_task_end -> "task-end"
+
+(* §4.18: is the loop variable still in its range? *)
+let for_in_range v t step =
+  match v, t, step with
+  | V.Num v, V.Num t, V.Num s -> if s >= 0. then v <= t else v >= t
+  | _ -> false
+
+(* A statement has completed: the frame on top continues. *)
+let next cfg =
+  match cfg.stack with
+  | K_stmt (s, prev) :: rest ->
+      cfg.stack <- rest; cfg.mark <- prev;
+      (match cfg.act.retried with
+       | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
+       | _ -> ());
+      ("statement-done", [])
+  | K_seq (b, i) :: rest ->
+      if i >= Array.length b.body then (cfg.stack <- rest; ("list-done", []))
+      else (cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt b.body.(i); ("list-next", []))
+  | K_while_body (c, b) :: rest ->
+      cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c; ("while-again", [])
+  | K_for_body (f, t, step) :: rest ->
+      (* §4.18: the loop variable steps on; TO and STEP were evaluated once. *)
+      let slot = cfg.act.slots.(f.variable) in
+      let v = match get slot, step with
+        | V.Num cur, V.Num d -> V.num (cur +. d) | other, _ -> other in
+      set slot v;
+      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", []))
+      else (cfg.stack <- rest; ("for-done", []))
+  | K_routine_end :: _ -> (
+      match cfg.act.routine.kind with
+      | Function ->
+          (* §5.5: a function ends with RETURN; falling off its end is ERR_FNCNORET, raised
+             where the function was called (doc/rulings.md R-5.5). *)
+          let act = cfg.act in
+          (match act.caller with
+           | None -> cfg.focus <- F_done (Stuck "a function as entry routine")
+           | Some caller ->
+               cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+               cfg.focus <- F_raise (error cfg "ERR_FNCNORET" (region_of_focus_stmt cfg)));
+          ("function-no-return", [ Routine_left act.routine.name ])
+      | Procedure | Trap -> return_from cfg None)
+  | K_handler_end :: _ -> (
+      (* §7.1: reaching the end of an error handler calls the system error handler. *)
+      match cfg.act.handling with
+      | In_handler (e, _) -> stop cfg e "handler-end"
+      | _ -> cfg.focus <- F_done (Stuck "end of a handler not in a handler"); ("stuck", []))
+  | K_undo_end after :: _ -> (
+      let act = cfg.act in
+      match act.caller with
+      | None -> cfg.focus <- F_done Ended; ("undo-done-entry", [ Task_ended ])
+      | Some caller ->
+          cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+          (match after with
+           | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
+           | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
+           | Go_on_long_jump (e, target) ->
+               if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
+               else cfg.focus <- F_abandon after);
+          ("undo-done", [ Routine_left act.routine.name ]))
+  | K_local_init (act, inits) :: rest -> (
+      match inits with
+      | [] -> cfg.stack <- rest; ("locals-initialised", [])
+      | (slot, Init_default v) :: more ->
+          act.slots.(slot) <- fresh_loc (V.copy v);
+          cfg.stack <- K_local_init (act, more) :: rest; ("local-default", [])
+      | (slot, Init_expr e) :: more ->
+          act.slots.(slot) <- fresh_loc (V.Bool false);
+          cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
+          cfg.focus <- F_expr e; ("local-initial-value", []))
+  | K_args cs :: rest -> next_argument cfg cs rest
+  | K_task_end :: _ -> cfg.focus <- F_done Ended; ("task-end", [ Task_ended ])
+  | f :: _ ->
+      cfg.focus <- F_done (Stuck ("a statement completed over the frame " ^ frame_kind f));
+      ("stuck", [])
+  | [] -> cfg.focus <- F_done (Stuck "empty stack"); ("stuck", [])
+
+let start_loop cfg (f : Ir.for_loop) from t step rest =
+  set cfg.act.slots.(f.variable) from;
+  cfg.focus <- F_next;
+  if for_in_range from t step then begin
+    cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest; ("for-enter", [])
+  end
+  else (cfg.stack <- rest; ("for-empty", []))
+
+let value_step cfg v =
+  match cfg.stack with
+  | K_assign_store l :: rest -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", [])
+  | K_read :: _ -> cfg.focus <- F_done (Stuck "a value where a place was read"); ("stuck", [])
+  | K_unary (op, _) :: rest -> (
+      cfg.stack <- rest;
+      match Arith.unary op v with
+      | Ok r -> cfg.focus <- F_value r; ("unary", [])
+      | Error name -> raise_ cfg name; ("unary-error", []))
+  | K_binary_left (op, b, at) :: rest ->
+      cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; ("binary-left", [])
+  | K_binary_right (op, a, _) :: rest -> (
+      cfg.stack <- rest;
+      match Arith.binary op a v with
+      | Ok r -> cfg.focus <- F_value r; ("binary", [])
+      | Error name -> raise_ cfg name; ("binary-error", []))
+  | K_and b :: rest -> (
+      cfg.stack <- rest;
+      match bool_of v with
+      | Some false -> cfg.focus <- F_value v; ("and-short", [])
+      | _ -> cfg.focus <- F_expr b; ("and-right", []))
+  | K_or b :: rest -> (
+      cfg.stack <- rest;
+      match bool_of v with
+      | Some true -> cfg.focus <- F_value v; ("or-short", [])
+      | _ -> cfg.focus <- F_expr b; ("or-right", []))
+  | K_aggregate (es, acc, i, kind) :: rest ->
+      acc.(i) <- v;
+      if i + 1 < Array.length es then begin
+        cfg.stack <- K_aggregate (es, acc, i + 1, kind) :: rest; cfg.focus <- F_expr es.(i + 1);
+        ("aggregate-next", [])
+      end
+      else begin
+        cfg.stack <- rest;
+        cfg.focus <- F_value (match kind with Record_value -> V.Record acc | Array_value -> V.Array acc);
+        ("aggregate", [])
+      end
+  | K_if (t, f) :: rest -> (
+      match bool_of v with
+      | Some true -> cfg.stack <- K_seq (t, 0) :: rest; cfg.focus <- F_next; ("if-true", [])
+      | _ -> cfg.stack <- K_seq (f, 0) :: rest; cfg.focus <- F_next; ("if-false", []))
+  | K_while_test (c, b) :: rest -> (
+      match bool_of v with
+      | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; ("while-true", [])
+      | _ -> cfg.stack <- rest; cfg.focus <- F_next; ("while-false", []))
+  | K_for_from f :: rest ->
+      cfg.stack <- K_for_to (f, v) :: rest; cfg.focus <- F_expr f.to_; ("for-from", [])
+  | K_for_to (f, from) :: rest -> (
+      match f.step with
+      | Some e -> cfg.stack <- K_for_step (f, from, v) :: rest; cfg.focus <- F_expr e; ("for-to", [])
+      | None ->
+          (* §4.18: the default step is 1, or -1 when the range decreases. *)
+          let step = match from, v with V.Num a, V.Num b when a > b -> V.num (-1.) | _ -> V.num 1. in
+          start_loop cfg f from v step rest)
+  | K_for_step (f, from, t) :: rest -> start_loop cfg f from t v rest
+  | K_test_subject (cases, default) :: rest ->
+      if Array.length cases = 0 then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; ("test-default", []))
+      else (cfg.stack <- K_test_value (v, cases, default, 0, 0) :: rest;
+            cfg.focus <- F_expr (fst cases.(0)).(0); ("test-subject", []))
+  | K_test_value (subject, cases, default, ci, vi) :: rest ->
+      (* §4.20: the first test value equal to the test expression selects its list. *)
+      if V.equal subject v then (cfg.stack <- K_seq (snd cases.(ci), 0) :: rest; cfg.focus <- F_next; ("test-match", []))
+      else begin
+        let ci, vi = if vi + 1 < Array.length (fst cases.(ci)) then (ci, vi + 1) else (ci + 1, 0) in
+        if ci >= Array.length cases then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; ("test-default", []))
+        else (cfg.stack <- K_test_value (subject, cases, default, ci, vi) :: rest;
+              cfg.focus <- F_expr (fst cases.(ci)).(vi); ("test-next", []))
+      end
+  | K_return_value :: _ -> return_from cfg (Some v)
+  | K_raise_value :: rest -> (
+      cfg.stack <- rest;
+      (* §4.11: the error number is an integer in 1..90 (or one booked with BookErrNo). *)
+      match num_of v with
+      | Some f -> (
+          match to_int f with
+          | Some n when (n >= 1 && n <= 90) || (n > 2000 && n <= 2000 + cfg.booked) ->
+              cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); ("raise", [])
+          | _ -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
+      | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
+  | K_late_name (args, at) :: rest -> (
+      cfg.stack <- rest;
+      match v with
+      | V.String name -> (
+          (* §4.6: "name1:name2" names the procedure name2 of module name1. *)
+          let module_name, routine_name =
+            match String.index_opt name ':' with
+            | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
+            | None -> (None, name)
+          in
+          (* Without a module, the scope rules of §5.3 apply from the calling module: its own
+             routines, then the global ones; "module:name" reaches a LOCAL one too (§4.6). *)
+          let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+          let here = cfg.act.routine.module_name in
+          let found = ref None in
+          let consider pred =
+            if !found = None then
+              Array.iteri (fun i (r : Ir.routine) ->
+                  if !found = None && same r.name routine_name && pred r then found := Some i)
+                cfg.program.routines in
+          (match module_name with
+           | Some m -> consider (fun r -> same r.module_name m)
+           | None ->
+               consider (fun r -> same r.module_name here);
+               consider (fun r -> not r.local));
+          match !found with
+          | None -> raise_ cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
+          | Some i when cfg.program.routines.(i).kind <> Procedure ->
+              (* §4.6: late binding calls procedures only. *)
+              raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
+          | Some i -> (
+              let r = cfg.program.routines.(i) in
+              match Late_binding.bind r args with
+              | None -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
+              | Some arguments ->
+                  (begin_call cfg { Ir.callee = Routine i; arguments; call_at = at }, [])))
+      | _ -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", []))
+  | K_args cs :: rest ->
+      let i = cs.next in
+      (* §5.2: an in parameter is a copy of the argument's value. *)
+      cs.args_slots.(i) <- fresh_loc (V.copy v);
+      cs.args_present.(i) <- true;
+      cs.primitive_args.(i) <- Primitive.Value v;
+      cs.next <- i + 1;
+      cfg.stack <- K_args cs :: rest;
+      cfg.focus <- F_next;
+      ("argument-bound", [])
+  | K_element_index (l, idx, i, at) :: rest -> (
+      (* §3.6: an index is an integer within the array's dimension (ERR_OUTOFBND). *)
+      match get l, num_of v with
+      | V.Array elems, Some f -> (
+          match to_int f with
+          | Some k when k >= 1 && k <= Array.length elems ->
+              let l' = { box = elems; idx = k - 1 } in
+              if i + 1 < Array.length idx then begin
+                cfg.stack <- K_element_index (l', idx, i + 1, at) :: rest; cfg.focus <- F_expr idx.(i + 1);
+                ("index-next", [])
+              end
+              else (cfg.stack <- rest; cfg.focus <- F_loc l'; ("element", []))
+          | Some _ -> cfg.stack <- rest; raise_ cfg "ERR_OUTOFBND"; ("index-out-of-bounds", [])
+          | None -> cfg.stack <- rest; raise_ cfg "ERR_NOTINTVAL"; ("index-not-integer", []))
+      | _ -> cfg.stack <- rest; raise_ cfg "ERR_NOTARR"; ("index-not-array", []))
+  | _ -> cfg.focus <- F_done (Stuck "a value with no frame to take it"); ("stuck", [])
+
+let loc_step cfg l =
+  match cfg.stack with
+  | K_assign_value e :: rest ->
+      cfg.stack <- K_assign_store l :: rest; cfg.focus <- F_expr e; ("assign-target", [])
+  | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); ("read", [])
+  | K_component k :: rest -> (
+      cfg.stack <- rest;
+      match get l with
+      | V.Record comps -> cfg.focus <- F_loc { box = comps; idx = k }; ("component", [])
+      | _ -> cfg.focus <- F_done (Stuck "a component of a value that is not a record"); ("stuck", []))
+  | K_element_base (idx, at) :: rest ->
+      cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); ("element-base", [])
+  | K_args cs :: rest -> (
+      let i = cs.next in
+      let p = cs.callee.parameters.(i) in
+      match alias_allowed p cs.args_kinds.(i) with
+      | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
+      | Ok () ->
+          cs.args_slots.(i) <- l;
+          cs.args_present.(i) <- true;
+          cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
+          cs.next <- i + 1;
+          cfg.stack <- K_args cs :: rest;
+          cfg.focus <- F_next;
+          ("argument-alias", []))
+  | K_connect_target trap :: rest -> (
+      cfg.stack <- rest;
+      (* §4.15: a connected interrupt number cannot be connected again (ERR_ALRDYCNT). *)
+      match get l with
+      | V.Num n when n <> 0. -> raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
+      | _ ->
+          cfg.interrupt_numbers <- cfg.interrupt_numbers + 1;
+          ignore trap;
+          set l (V.num (float_of_int cfg.interrupt_numbers));
+          cfg.focus <- F_next; ("connect-allocate", []))
+  | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
+
+let place_step cfg (p : Ir.place) =
+  match p with
+  | Whole (Global i) -> cfg.focus <- F_loc cfg.globals.(i); ("place-global", [])
+  | Whole (Local i) ->
+      (* §5.2: the value of an absent optional parameter cannot be used (ERR_NOTPRES). *)
+      if i < Array.length cfg.act.present && not cfg.act.present.(i) then begin
+        (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
+        raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
+      end
+      else (cfg.focus <- F_loc cfg.act.slots.(i); ("place-local", []))
+  | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])
+  | Element (q, idx) -> push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q; ("place-element", [])
+  | Unresolved _ -> raise_ cfg "ERR_REFUNKDAT"; ("place-unknown", [])
+
+let expr_step cfg (e : Ir.expr) =
+  match e.e with
+  | Literal v -> cfg.focus <- F_value v; ("literal", [])
+  | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
+  | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
+  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
+  | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
+  | Or (a, b) -> push cfg (K_or b); cfg.focus <- F_expr a; ("or", [])
+  | Aggregate (es, kind) ->
+      push cfg (K_aggregate (es, Array.make (Array.length es) (V.Bool false), 0, kind));
+      cfg.focus <- F_expr es.(0); ("aggregate-first", [])
+  | Call c -> (
+      match c.callee with
+      | Unknown_routine _ -> raise_ cfg "ERR_REFUNKFUN"; ("call-unknown-function", [])
+      | Routine _ -> (begin_call cfg c, []))
+  | Placeholder -> raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
+
+(* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
+   handler runs first (§7.2, §1.2). *)
+let abandon_step cfg after =
+  let act = cfg.act in
+  match act.routine.undo, act.handling with
+  | Some undo, (Body | In_handler _) ->
+      act.handling <- In_undo;
+      cfg.stack <- [ K_seq (undo, 0); K_undo_end after ];
+      cfg.mark <- [];
+      cfg.focus <- F_next;
+      ("undo-run", [ Undo_run act.routine.name ])
+  | _ ->
+      cfg.stack <- [ K_undo_end after ];
+      cfg.focus <- F_next;
+      ("abandon", [])
+
+(* §7.2: the long jump looks for an error recovery point from the routine where the error
+   arrives up the call chain; found, every routine in between is abandoned (UNDO first); not
+   found, the error is raised again at the call point, an ordinary propagation. *)
+let search_step cfg (e : err) candidate =
+  match candidate with
+  | Some a when recovery_point cfg a e ->
+      cfg.focus <- F_abandon (Go_on_long_jump ({ e with searched = true }, a)); ("longjump-found", [])
+  | Some a -> cfg.focus <- F_search (e, a.caller); ("longjump-search", [])
+  | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); ("raise-propagate", [])
+
+let step cfg =
+  cfg.count <- cfg.count + 1;
+  match cfg.focus with
+  | F_next -> next cfg
+  | F_stmt s -> exec cfg s
+  | F_expr e -> expr_step cfg e
+  | F_value v -> value_step cfg v
+  | F_place p -> place_step cfg p
+  | F_loc l -> loc_step cfg l
+  | F_raise e ->
+      let rule, events = raise_step cfg e in
+      (rule, Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
+  | F_search (e, c) -> search_step cfg e c
+  | F_abandon after -> abandon_step cfg after
+  | F_done _ -> ("done", [])
+
+let outcome cfg = match cfg.focus with F_done o -> o | _ -> Running
+let steps cfg = cfg.count
+let depth cfg = cfg.act.call_depth
+
+let focus_region cfg =
+  match cfg.focus with
+  | F_expr e -> e.at
+  | F_stmt s -> s.sat
+  | F_raise e | F_search (e, _) -> e.err_at
+  | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at)
+
+let focus_kind cfg =
+  match cfg.focus with
+  | F_expr _ -> "expression" | F_value _ -> "value" | F_place _ -> "place" | F_loc _ -> "location"
+  | F_stmt _ -> "statement" | F_next -> "next" | F_raise _ -> "error" | F_search _ -> "search"
+  | F_abandon _ -> "abandon" | F_done _ -> "done"
+
+let stack_view cfg =
+  let rec take n = function
+    | [] -> []
+    | _ when n = 0 -> [ "..." ]
+    | f :: rest -> frame_kind f :: take (n - 1) rest
+  in
+  take 8 cfg.stack
+
+let rule_names = [
+  "list-next"; "list-done"; "statement-done"; "label"; "execute-placeholder"; "assign";
+  "assign-target"; "store"; "call-arguments"; "argument-absent"; "argument-switch";
+  "argument-value"; "argument-reference"; "argument-bound"; "argument-alias";
+  "argument-alias-refused"; "argument-pass-on-present"; "argument-pass-on-absent"; "call-enter";
+  "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
+  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
+  "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
+  "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
+  "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "while"; "while-true"; "while-false";
+  "while-again"; "for"; "for-from"; "for-to"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
+  "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
+  "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
+  "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
+  "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
+  "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
+  "literal"; "read-place"; "read"; "place-global"; "place-local"; "place-absent";
+  "place-component"; "place-element"; "place-unknown"; "component"; "element-base";
+  "index-next"; "element"; "index-out-of-bounds"; "index-not-integer"; "index-not-array";
+  "unary-operand"; "unary"; "unary-error"; "binary-operands"; "binary-left"; "binary";
+  "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
+  "aggregate-first"; "aggregate-next"; "aggregate"; "locals-initialised"; "local-default";
+  "local-initial-value";
+  "task-end"; "done"; "stuck";
+]

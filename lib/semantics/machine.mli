@@ -1,0 +1,69 @@
+(** The small-step machine of RAPID's dynamic semantics (chapters 2-7 and 9).
+
+    A configuration holds the control (an expression, statement or place in focus, a value, or an
+    error in flight), the store (module data and the activations of routines), and a flat stack of
+    continuation frames, one per pending piece of work, in the style of CompCert's Csem. [step]
+    reduces one redex and names the rule it applies; every step costs O(1), whatever the nesting
+    or the depth of recursion: no rule walks the stack or rebuilds the path to the focus. Errors,
+    long jumps and UNDO handlers unwind the stack one frame or one activation per step.
+
+    The configuration is ready for what later issues add: execution levels (normal, trap, user)
+    with an interrupt queue, a motion queue, and several tasks. *)
+
+type config
+
+type event =
+  | Output of string                       (** a line written by TPWrite *)
+  | Erase                                  (** TPErase *)
+  | Log of string                          (** ErrWrite and the like: the event log *)
+  | Routine_entered of string
+  | Routine_left of string
+  | Error_raised of { name : string; number : int; at : Rapid_syntax.Source.region }
+  | Error_handled of { name : string; routine : string }
+  | Undo_run of string
+  | Task_ended
+
+(** How a run ends (doc/semantics.md). *)
+type outcome =
+  | Running
+  | Ended                                  (** end of the entry routine, RETURN in it, EXIT *)
+  | Stopped of { name : string; number : int; at : Rapid_syntax.Source.region;
+                 chain : string list }
+      (** the system error handler stopped the task: the error, where it occurred, and the call
+          chain at that point, innermost first *)
+  | Resource_exhausted of string           (** call depth beyond the limit *)
+  | Unsupported of string                  (** an installed routine rapid-sem does not model yet *)
+  | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
+
+type limits = {
+  max_call_depth : int;                    (** default 10,000 *)
+  retry_limit : int;                       (** "No Of Retry": default 4 (§7.1) *)
+}
+
+val default_limits : limits
+
+val start : ?limits:limits -> Ir.program -> entry:string -> (config, string) result
+(** The configuration that runs the entry routine, after the module data has been initialised
+    (§2.21: static data initialised on load). [Error] when there is no such procedure. *)
+
+val step : config -> string * event list
+(** One reduction: the name of the rule applied and what it made observable. Only valid while
+    [outcome] is [Running]. *)
+
+val outcome : config -> outcome
+val steps : config -> int
+
+(** {1 A view of the configuration, for the trace} *)
+
+val focus_region : config -> Rapid_syntax.Source.region
+val focus_kind : config -> string
+(** "expression", "statement", "place", "value", "error", "next", ... *)
+
+val stack_view : config -> string list
+(** The kinds of the topmost continuation frames, top first (at most 8). *)
+
+val depth : config -> int
+(** Call depth: the number of active routines. *)
+
+val rule_names : string list
+(** Every rule of the machine, as doc/semantics.md lists them. *)

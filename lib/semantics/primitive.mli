@@ -1,0 +1,35 @@
+(** The bodies of installed routines (ch. 11, 13): the routines declared in
+    lib/typing/installed are bound by name to the OCaml functions here when a program runs. The
+    pure functions come from {!Library}; this module adds the routines that need more than values:
+    output (TPWrite), the locations of their arguments (Incr, Dim, IsVar), the machine (BookErrNo,
+    CallByVar, Stop). *)
+
+(** An argument, one per parameter of the routine's declaration in order (alternatives each in
+    their own place). *)
+type argument =
+  | Value of Value.t                                 (** an in parameter *)
+  | Location of Value.t array * int * Ir.reference_kind
+      (** an alias parameter: the container and index of the argument's location, and what it
+          denotes (a variable, a persistent, ...) for IsVar and IsPers *)
+  | Switch                                           (** a present switch *)
+  | Missing                                          (** an absent optional parameter *)
+
+type context = {
+  output : string -> unit;                           (** a line on the FlexPendant (TPWrite) *)
+  erase : unit -> unit;                              (** TPErase *)
+  log : string -> unit;                              (** the event log (ErrWrite) *)
+  book_error : unit -> int;                          (** BookErrNo: a new error number *)
+  error_number : string -> int;
+}
+
+type outcome =
+  | Returned of Value.t option                       (** a function's value, or a procedure's end *)
+  | Failed of string                                 (** an execution error, by its ERR_ name *)
+  | Call_by_name of string                           (** CallByVar: call this procedure (§4.6) *)
+  | Stop_requested                                   (** Stop: the task stops *)
+  | Not_modelled                                     (** rapid-sem does not model this routine yet *)
+
+val call : context -> string -> argument array -> outcome
+
+val modelled : string -> bool
+(** Whether rapid-sem gives this installed routine a body. *)

@@ -1,0 +1,149 @@
+type handle = { kind : string; id : int }
+
+type t =
+  | Num of float
+  | Dnum of float
+  | Bool of bool
+  | String of string
+  | Record of t array
+  | Array of t array
+  | Handle of handle
+
+exception Type_mismatch of string
+
+let type_mismatch what = raise (Type_mismatch what)
+
+(* ------------------------------------------------------------------------------ numbers *)
+
+(* The conversion to the bits of a single is the C cast, which rounds to nearest with ties to
+   even under the default rounding mode and overflows to an infinity. *)
+let to_single x = Int32.float_of_bits (Int32.bits_of_float x)
+
+let num x = Num (to_single x)
+let dnum x = Dnum x
+
+let pow2 e = if e >= 0 then Q.mul_2exp Q.one e else Q.div_2exp Q.one (-e)
+
+(* Rounds |q| > 0 to [bits] significant bits with the exponent range of IEEE 754 (normal
+   exponents emin..emax), ties to even. The unit in the last place is 2^k with
+   k = max(e, emin) - (bits - 1), e = floor(log2 |q|): below 2^emin the spacing stays that of
+   the subnormals. *)
+let round_q ~bits ~emin ~emax q =
+  match Q.sign q with
+  | 0 -> 0.0
+  | sign ->
+      let a = Q.abs q in
+      (* 2^(e-1) < a < 2^(e+1) for e the difference of the bit lengths. *)
+      let e = Z.numbits (Q.num a) - Z.numbits (Q.den a) in
+      let e = if Q.lt a (pow2 e) then e - 1 else e in
+      let k = max e emin - (bits - 1) in
+      let scaled = if k >= 0 then Q.div_2exp a k else Q.mul_2exp a (-k) in
+      let quotient, remainder = Z.ediv_rem (Q.num scaled) (Q.den scaled) in
+      let c = Z.compare (Z.shift_left remainder 1) (Q.den scaled) in
+      let m = if c > 0 || (c = 0 && Z.is_odd quotient) then Z.succ quotient else quotient in
+      let magnitude =
+        if Z.numbits m + k > emax + 1 then infinity
+        else (* m has at most bits + 1 bits: exact as a double, and ldexp is exact. *)
+          ldexp (Z.to_float m) k
+      in
+      if sign < 0 then -.magnitude else magnitude
+
+let single_of_q q = round_q ~bits:24 ~emin:(-126) ~emax:127 q
+let double_of_q q = round_q ~bits:53 ~emin:(-1022) ~emax:1023 q
+
+let of_literal lit precision =
+  let q = Rapid_syntax.Num_literal.to_q lit in
+  match precision with `Num -> Num (single_of_q q) | `Dnum -> Dnum (double_of_q q)
+
+let num_value = function Num x | Dnum x -> x | _ -> type_mismatch "a num or dnum"
+let bool_value = function Bool b -> b | _ -> type_mismatch "a bool"
+let string_value = function String s -> s | _ -> type_mismatch "a string"
+let components = function Record a | Array a -> a | _ -> type_mismatch "a record or an array"
+
+(* ------------------------------------------------------------------------------ handles *)
+
+let make_handle ~kind id = { kind; id }
+let handle_kind h = h.kind
+let handle_id h = h.id
+
+(* ------------------------------------------------------------------------------ value semantics *)
+
+let rec copy = function
+  | Record a -> Record (Array.map copy a)
+  | Array a -> Array (Array.map copy a)
+  | (Num _ | Dnum _ | Bool _ | String _ | Handle _) as v -> v
+
+let rec equal a b =
+  match a, b with
+  (* IEEE equality, not Float.equal: 0 = -0 (no num result is NaN). *)
+  | Num x, Num y | Dnum x, Dnum y -> x = (y : float)
+  | Bool x, Bool y -> x = y
+  | String x, String y -> String.equal x y
+  | Record x, Record y | Array x, Array y ->
+      Array.length x = Array.length y
+      && (let rec from i = i >= Array.length x || (equal x.(i) y.(i) && from (i + 1)) in
+          from 0)
+  | Handle x, Handle y -> x.id = y.id && String.equal x.kind y.kind
+  | _ -> type_mismatch "two values of equal types (§3.12 =)"
+
+let rec same_dimensions a b =
+  match a, b with
+  | Array x, Array y ->
+      Array.length x = Array.length y
+      && (Array.length x = 0 || same_dimensions x.(0) y.(0))
+  | Array _, _ | _, Array _ -> false
+  | _ -> true
+
+(* ------------------------------------------------------------------------------ initial values *)
+
+type shape =
+  | S_num
+  | S_dnum
+  | S_bool
+  | S_string
+  | S_handle of string
+  | S_record of shape array
+  | S_array of int * shape
+
+let rec default_of = function
+  | S_num -> Num 0.0
+  | S_dnum -> Dnum 0.0
+  | S_bool -> Bool false
+  | S_string -> String ""
+  | S_handle kind -> Handle { kind; id = 0 }
+  | S_record components -> Record (Array.map default_of components)
+  | S_array (n, element) -> Array (Array.init n (fun _ -> default_of element))
+
+let rec shape_of_data_type (t : Rapid_typing.Types.data_type) =
+  match t with
+  | Num -> S_num
+  | Dnum -> S_dnum
+  | Bool -> S_bool
+  | String -> S_string
+  | Installed_atomic a -> S_handle a.atomic_name
+  | Record r -> S_record (Array.of_list (List.map (fun (_, c) -> shape_of_data_type c) r.components))
+  | Anytype -> invalid_arg "Value.shape_of_type: anytype has no values of its own"
+
+let shape_of_type (t : Rapid_typing.Types.object_type) =
+  let element = shape_of_data_type t.base in
+  match t.dims with
+  | Scalar -> element
+  | Sized sizes -> List.fold_right (fun n s -> S_array (n, s)) sizes element
+  | Conformant _ -> invalid_arg "Value.shape_of_type: {*} array without sizes"
+
+let pos_shape = S_record [| S_num; S_num; S_num |]
+let orient_shape = S_record [| S_num; S_num; S_num; S_num |]
+let pose_shape = S_record [| pos_shape; orient_shape |]
+
+let pos x y z = Record [| num x; num y; num z |]
+let orient a b c d = Record [| num a; num b; num c; num d |]
+let pose trans rot = Record [| trans; rot |]
+
+let rec to_debug_string = function
+  | Num x -> Printf.sprintf "%.9g" x
+  | Dnum x -> Printf.sprintf "%.17gD" x
+  | Bool b -> if b then "TRUE" else "FALSE"
+  | String s -> Printf.sprintf "%S" s
+  | Record a -> "[" ^ String.concat "," (Array.to_list (Array.map to_debug_string a)) ^ "]"
+  | Array a -> "{" ^ String.concat "," (Array.to_list (Array.map to_debug_string a)) ^ "}"
+  | Handle h -> Printf.sprintf "<%s %d>" h.kind h.id
