@@ -8,6 +8,7 @@ type t = {
   sections : string list;
   expectation : expectation option;
   strict : bool;
+  allow_unknown : bool;
   description : string option;
   problems : string list;
   format : string;
@@ -81,7 +82,7 @@ let read path =
       |> List.map (Filename.concat path)
     else [ path ]
   in
-  let empty = { path; files; sections = []; expectation = None; strict = false; description = None;
+  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false; description = None;
                 problems = []; format = "1"; run = None } in
   let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
   (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
@@ -108,7 +109,13 @@ let read path =
                   | Ok e, None -> { case with expectation = Some e }
                   | Ok _, Some _ -> add_problem case "more than one @expect"
                   | Error m, _ -> add_problem case m)
-              | Some ("options", "strict") -> { case with strict = true }
+              | Some ("options", v) ->
+                  List.fold_left (fun case w ->
+                      match w with
+                      | "strict" -> { case with strict = true }
+                      | "allow-unknown" -> { case with allow_unknown = true }
+                      | other -> add_problem case ("unknown option " ^ other))
+                    case (String.split_on_char ' ' v |> List.filter (( <> ) ""))
               | Some ("description", v) -> { case with description = Some v }
               | Some ("format", v) -> { case with format = v }
               | Some ("output", _) -> with_run case (fun r -> { r with outputs = r.outputs @ [ output_text line ] })

@@ -13,6 +13,7 @@ type t = {
   sections : string list;         (** [! @section 2.5], in order *)
   expectation : expectation option;
   strict : bool;                  (** [! @options strict] *)
+  allow_unknown : bool;           (** [! @options allow-unknown]: unknown names are warnings *)
   description : string option;
   problems : string list;         (** malformed or conflicting directives *)
   format : string;                (** [! @format N]; "1" when absent *)

@@ -95,7 +95,8 @@ let run_case (case : Spec_case.t) =
         match Rapid_typing.Installed_env.modules () with
         | Error d -> fail case ("the installed environment does not parse: " ^ Diagnostic.to_string d)
         | Ok installed -> (
-            let result = Rapid_typing.Check.check_task ~installed modules in
+            let result =
+              Rapid_typing.Check.check_task ~options:{ allow_unknown = case.allow_unknown } ~installed modules in
             match Rapid_typing.Check.errors result with
             | [] -> (
                 match case.run, expected with

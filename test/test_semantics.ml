@@ -1,0 +1,71 @@
+(* The dynamic semantics against its documentation: every rule the machine names is stated in
+   doc/semantics.md, every rule stated there is one the machine has, and every rule appears in
+   the trace of at least one run of spec/ (format 3 cases). *)
+
+open Rapid_syntax
+module M = Rapid_semantics.Machine
+
+let read_file path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+(* The rule names of doc/semantics.md: the bold names of its "Rules" section, before "Not rules". *)
+let documented_rules () =
+  let text = read_file "../doc/semantics.md" in
+  let start = Str.search_forward (Str.regexp_string "## Rules") text 0 in
+  let stop = Str.search_forward (Str.regexp_string "### Not rules") text start in
+  let section = String.sub text start (stop - start) in
+  let rec collect pos acc =
+    match Str.search_forward (Str.regexp "\\*\\*\\([a-z-]+\\)\\*\\*") section pos with
+    | p -> collect (p + 1) (Str.matched_group 1 section :: acc)
+    | exception Not_found -> List.sort_uniq compare acc
+  in
+  collect 0 []
+
+let not_rules = [ "done"; "stuck" ]
+
+let machine_rules () = List.filter (fun r -> not (List.mem r not_rules)) M.rule_names |> List.sort_uniq compare
+
+let documentation_matches () =
+  let doc = documented_rules () and code = machine_rules () in
+  let missing = List.filter (fun r -> not (List.mem r doc)) code in
+  let extra = List.filter (fun r -> not (List.mem r code)) doc in
+  Alcotest.(check (list string)) "rules of the machine missing from doc/semantics.md" [] missing;
+  Alcotest.(check (list string)) "rules of doc/semantics.md the machine does not have" [] extra
+
+(* Runs every format 3 case of spec/ and collects the rules applied. *)
+let rules_in_spec () =
+  let used = Hashtbl.create 128 in
+  let installed = match Rapid_typing.Installed_env.modules () with
+    | Ok ms -> ms | Error d -> Alcotest.failf "installed: %s" (Diagnostic.to_string d) in
+  List.iter (fun path ->
+      let case = Rapid_conformance.Spec_case.read path in
+      match case.run with
+      | Some run when case.format = "3" -> (
+          let modules = List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) case.files in
+          let result =
+            Rapid_typing.Check.check_task ~options:{ allow_unknown = case.allow_unknown } ~installed modules in
+          if Rapid_typing.Check.errors result = [] then
+            let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
+            let limits = { M.default_limits with
+                           retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+            match M.start ~limits program ~entry:run.entry with
+            | Ok cfg ->
+                let max = Option.value run.max_steps ~default:1_000_000 in
+                while M.outcome cfg = Running && M.steps cfg < max do
+                  let rule, _ = M.step cfg in
+                  Hashtbl.replace used rule path
+                done
+            | Error _ -> ())
+      | _ -> ()) (Rapid_conformance.Spec_runner.find_cases "../spec");
+  used
+
+let every_rule_in_a_trace () =
+  let used = rules_in_spec () in
+  let missing = List.filter (fun r -> not (Hashtbl.mem used r)) (documented_rules ()) in
+  Alcotest.(check (list string)) "rules of doc/semantics.md in no spec/ trace" [] missing
+
+let suite =
+  ( "semantics",
+    [ Alcotest.test_case "doc/semantics.md states every rule" `Quick documentation_matches;
+      Alcotest.test_case "every rule appears in a spec/ trace" `Quick every_rule_in_a_trace ] )
