@@ -24,6 +24,7 @@ and expr = { e : expr_desc; at : region }
 and expr_desc =
   | Literal of Value.t
   | Read of place                            (* a data object's value *)
+  | Read_signal of place                     (* a semi-value object in value context (§2.16) *)
   | Unary of Arith.unary * expr
   | Binary of Arith.binary * expr * expr
   | And of expr * expr                       (* short-circuit, §3.1 *)
@@ -91,6 +92,7 @@ and for_loop = {
 and late_argument = {
   late_name : string option;                 (* for optional and named arguments *)
   late_value : late_value;
+  late_kind : reference_kind;                (* what a data reference argument denotes *)
 }
 
 and late_value =

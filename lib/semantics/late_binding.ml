@@ -8,16 +8,19 @@ let bind (r : Ir.routine) (args : Ir.late_argument array) =
   let rec next_required_index i =
     if i >= n then None else if not r.parameters.(i).p_optional then Some i else next_required_index (i + 1)
   in
-  let value_argument (p : Ir.parameter) = function
+  let value_argument (p : Ir.parameter) (a : Ir.late_argument) =
+    match a.late_value with
     | Ir.Late_expr e ->
         if p.p_mode = Mode_in then Some (Ir.By_value e)
-        else (match e.e with Read place -> Some (By_reference (place, Ref_other)) | _ -> None)
-    | Late_reference place -> Some (By_reference (place, Ref_other))
+        else (match e.e with
+            | Read place | Read_signal place -> Some (By_reference (place, a.late_kind))
+            | _ -> None)
+    | Late_reference place -> Some (By_reference (place, a.late_kind))
     | Late_switch -> if p.p_switch then Some Present_switch else None
   in
   Array.iter (fun (a : Ir.late_argument) ->
       if !ok then
-        match a.late_name, a.late_value with
+        match a.late_name, a with
         | Some name, v
           when Array.exists (fun (p : Ir.parameter) -> p.p_optional && same p.p_name name) r.parameters -> (
             let i = ref 0 in

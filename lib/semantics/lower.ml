@@ -58,7 +58,14 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
       | Error _ -> make Placeholder)
   | Literal (String_literal s) -> make (Literal (Value.String s.bytes))
   | Literal (Bool_literal b) -> make (Literal (Value.Bool b))
-  | Data_reference r -> make (Read (place ctx r))
+  | Data_reference r ->
+      let semi_value =
+        let rec root (r : A.data_reference) = match r.it with
+          | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
+        match r.it, Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+        | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
+        | _ -> false in
+      if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
   | Function_call f -> make (Call (call ctx e.at f.func f.arguments))
   | Aggregate es ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
@@ -203,11 +210,16 @@ and statement ctx (s : A.statement) : Ir.stmt =
       let late (a : A.argument) : Ir.late_argument =
         let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
         match a.it with
-        | Required_argument (n, e) -> { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e) }
-        | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch }
-        | Optional_argument (n, Some e) -> { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e) }
-        | Conditional_argument (n, r) -> { late_name = name n; late_value = Late_reference (place ctx r) }
-        | ARG_placeholder -> { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at } }
+        | Required_argument (n, e) ->
+            { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e);
+              late_kind = reference_kind ctx e }
+        | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch; late_kind = Ref_other }
+        | Optional_argument (n, Some e) ->
+            { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
+        | Conditional_argument (n, r) ->
+            { late_name = name n; late_value = Late_reference (place ctx r); late_kind = Ref_variable }
+        | ARG_placeholder ->
+            { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other }
       in
       make (Call_late (expr ctx ~dnum:false e, Array.of_list (List.map late args)))
   | Goto id -> (

@@ -209,7 +209,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
                       | Error m, _ | _, Error m -> Error m
                       | _ -> Error "ERR_OUTOFBND") (Ok v) idx
               | Error m -> Error m)
-          | Read _ | Call _ | Placeholder | And _ | Or _ -> Error "ERR_EXECPHR"
+          | Read _ | Read_signal _ | Call _ | Placeholder | And _ | Or _ -> Error "ERR_EXECPHR"
           | Unary (op, a) -> Result.bind (eval a) (Arith.unary op)
           | Binary (op, a, b) -> Result.bind (eval a) (fun x -> Result.bind (eval b) (Arith.binary op x))
           | Aggregate (es, kind) ->
@@ -841,6 +841,9 @@ let expr_step cfg (e : Ir.expr) =
   match e.e with
   | Literal v -> cfg.focus <- F_value v; ("literal", [])
   | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
+  | Read_signal _ ->
+      cfg.focus <- F_done (Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet");
+      ("read-signal", [])
   | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
   | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
   | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
@@ -944,7 +947,7 @@ let rule_names = [
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
   "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
-  "literal"; "read-place"; "read"; "place-global"; "place-local"; "place-absent";
+  "literal"; "read-place"; "read"; "read-signal"; "place-global"; "place-local"; "place-absent";
   "place-component"; "place-element"; "place-unknown"; "component"; "element-base";
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
   "unary-operand"; "unary"; "binary-operands"; "binary-left"; "binary";
