@@ -72,6 +72,7 @@ and stmt_desc =
   | Trynext
   | Connect of place * int                   (* the trap's routine index *)
   | If of expr * block * block
+  | Compact_if of expr * stmt                (* one statement with its condition (§4.17) *)
   | For of for_loop
   | While of expr * block
   | Test of expr * (expr array * block) array * block

@@ -254,9 +254,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
       in
       let then_ = block ctx i.then_branch in
       make (If (expr ctx ~dnum:false i.condition, then_, chain i.elseifs))
-  | Compact_if (c, body) ->
-      let id = new_block ctx in
-      make (If (expr ctx ~dnum:false c, { id; body = [| statement ctx body |] }, block ctx []))
+  | Compact_if (c, body) -> make (Compact_if (expr ctx ~dnum:false c, statement ctx body))
   | For f ->
       let variable = ctx.local_count in
       ctx.local_count <- ctx.local_count + 1;

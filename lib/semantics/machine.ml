@@ -65,6 +65,7 @@ and frame =
   | K_assign_value of Ir.expr
   | K_assign_store of loc
   | K_if of Ir.block * Ir.block
+  | K_compact_if of Ir.stmt
   | K_while_test of Ir.expr * Ir.block
   | K_while_body of Ir.expr * Ir.block
   | K_for_from of Ir.for_loop
@@ -129,6 +130,7 @@ type config = {
   mutable booked : int;                 (* BookErrNo *)
   mutable interrupt_numbers : int;      (* CONNECT *)
   (* Later issues: execution levels and the interrupt queue, the motion queue, other tasks. *)
+  mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   mutable level : [ `Normal | `Trap | `User ];
   interrupt_queue : int Queue.t;
 }
@@ -236,7 +238,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; interrupt_numbers = 0; level = `Normal;
+          count = 0; booked = 0; interrupt_numbers = 0; unmarked = false; level = `Normal;
           interrupt_queue = Queue.create ();
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
@@ -452,7 +454,12 @@ let to_int f = if Float.is_integer f && Float.abs f < 1e15 then Some (int_of_flo
 
 (* The statements of a statement list, one by one. *)
 let exec cfg (s : Ir.stmt) =
-  let mark_here () = push cfg (K_stmt (s, cfg.mark)); cfg.mark <- cfg.stack in
+  (* The simple statement of a compact IF is part of the IF: the IF is the statement that RETRY
+     and TRYNEXT refer to (§4.17, §7.1). *)
+  let part_of_compact_if = cfg.unmarked in
+  cfg.unmarked <- false;
+  let mark_here () =
+    if not part_of_compact_if then (push cfg (K_stmt (s, cfg.mark)); cfg.mark <- cfg.stack) in
   match s.s with
   | Label -> cfg.focus <- F_next; ("label", [])
   | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
@@ -541,13 +548,15 @@ let exec cfg (s : Ir.stmt) =
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
   | Connect (p, trap) -> mark_here (); push cfg (K_connect_target trap); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
+  | Compact_if (c, inner) ->
+      mark_here (); push cfg (K_compact_if inner); cfg.focus <- F_expr c; ("compact-if", [])
   | While (c, b) -> mark_here (); push cfg (K_while_test (c, b)); cfg.focus <- F_expr c; ("while", [])
   | For f -> mark_here (); push cfg (K_for_from f); cfg.focus <- F_expr f.from_; ("for", [])
   | Test (e, cases, default) ->
       mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; ("test", [])
 
 let frame_kind = function
-  | K_seq _ -> "seq" | K_stmt _ -> "stmt" | K_assign_value _ -> "assign-value"
+  | K_seq _ -> "seq" | K_stmt _ -> "stmt" | K_compact_if _ -> "compact-if" | K_assign_value _ -> "assign-value"
   | K_assign_store _ -> "assign-store" | K_if _ -> "if" | K_while_test _ -> "while-test"
   | K_while_body _ -> "while-body" | K_for_from _ -> "for-from" | K_for_to _ -> "for-to"
   | K_for_step _ -> "for-step" | K_for_body _ -> "for-body" | K_test_subject _ -> "test"
@@ -684,6 +693,11 @@ let value_step cfg v =
       match bool_of v with
       | Some true -> cfg.stack <- K_seq (t, 0) :: rest; cfg.focus <- F_next; ("if-true", [])
       | _ -> cfg.stack <- K_seq (f, 0) :: rest; cfg.focus <- F_next; ("if-false", []))
+  | K_compact_if inner :: rest -> (
+      cfg.stack <- rest;
+      match bool_of v with
+      | Some true -> cfg.unmarked <- true; cfg.focus <- F_stmt inner; ("compact-if-true", [])
+      | _ -> cfg.focus <- F_next; ("compact-if-false", []))
   | K_while_test (c, b) :: rest -> (
       match bool_of v with
       | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; ("while-true", [])
@@ -940,7 +954,7 @@ let rule_names = [
   "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
   "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
-  "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "while"; "while-true"; "while-false";
+  "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";
   "while-again"; "for"; "for-from"; "for-to"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
   "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
   "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";

@@ -1,0 +1,5 @@
+MODULE lib
+  LOCAL PROC secret()
+    TPWrite "secret of lib";
+  ENDPROC
+ENDMODULE
