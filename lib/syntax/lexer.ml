@@ -368,8 +368,10 @@ let rec string_body lx start raw bytes =
       Buffer.add_char bytes (Char.chr (int_of_string ("0x" ^ String.sub s 1 2)));
       string_body lx start raw bytes
   | '\\' ->
-      error lx "a backslash in a string literal is written twice (\\\\) or starts a character \
-                code of two hexadecimal digits (§2.7)"
+      (* Reported at the literal's opening quote, like every error of a string literal. *)
+      let _, stop = Sedlexing.loc buf in
+      error_at lx start stop "a backslash in a string literal is written twice (\\\\) or starts a \
+                              character code of two hexadecimal digits (§2.7)"
   | '"' -> ()
   | newline | eof ->
       let stop, _ = Sedlexing.loc buf in
@@ -415,7 +417,8 @@ let rec token lx =
       end
   (* Listed after [num_literal] so that a match of equal length is a literal: [2E5] is one
      literal, [2E5x] and [12abc] are not separated (§2.2). *)
-  | num_literal, (letter | digit | '_') ->
+  | num_literal, (letter | digit | '_') | num_literal, '.', digit ->
+      (* [1.2.3], [0x1.5]: a literal touching the next one (§2.2); reported at the first. *)
       error lx "a numeric literal must be separated from a following identifier, reserved \
                 word or numeric literal by white space (§2.2)"
   | ident -> name lx buf.text buf.start buf.pos (Sedlexing.lexeme_length buf)

@@ -207,7 +207,7 @@ let parse_decoded options name (decoded : Decode.t) =
   let at_start = Source.region file 0 1 in
   try
     if options.strict && decoded.byte_order_mark then
-      refuse Syntax_error at_start
+      refuse Lexical_error at_start
         "byte-order mark at the start of the file: §2.1 defines no such character; accepted \
          without --strict (doc/dialect.md)";
     let m = run_parser options file (Lexer.create ~installed:options.installed file decoded) in
