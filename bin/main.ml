@@ -176,7 +176,14 @@ let common_run_args =
   let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
   (files, entry, max_steps, allow_unknown, max_depth, retry_limit)
 
+(* A run allocates frames that live as long as their routine: with deep recursion the live heap
+   grows with the call depth, and the collector's default pace makes each step cost more the
+   deeper it is. A lazier pace keeps the cost of a step nearly independent of depth
+   (bench/README.md, "The machine"). *)
+let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
+
 let start_machine files entry allow_unknown max_depth retry_limit k =
+  machine_gc ();
   match Rapid_semantics.Session.load ~allow_unknown files with
   | Error f -> report_load_failure f
   | Ok loaded -> (
