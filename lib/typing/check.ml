@@ -754,14 +754,6 @@ let literal_expression ctx (e : expression) =
 
 (* ------------------------------------------------------------------ statements *)
 
-let loosely ctx place (e : expression) =
-  let rec go (e : expression) =
-    match e.it with
-    | Aggregate es -> List.iter go es
-    | _ -> ignore (infer ctx place e)
-  in
-  go e
-
 let labels_of (l : statement list) =
   List.filter_map (fun (s : statement) -> match s.it with Label i -> name_of_identifier i | _ -> None) l
 
@@ -777,7 +769,7 @@ and statement ctx place (s : statement) =
   | Assignment (target, e) -> (
       match assignment_target ctx place target with
       | Known t -> check_expression ~sections:"4.5,2.17" ctx place e t
-      | Numeric_literal | Unknown -> loosely ctx place e)
+      | Numeric_literal | Unknown -> loosely_expression ctx place e)
   | Procedure_call (Procedure_name id, args) -> procedure_call ctx place s id args
   | Procedure_call (Late_bound e, args) ->
       (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
@@ -871,7 +863,7 @@ and return ctx place (s : statement) e =
   | Some { r_kind = Procedure | Trap; _ }, Some e ->
       error ctx ~rule:"return-procedure" ~section:"4.10" s.at
         "RETURN in a procedure or trap has no return expression";
-      loosely ctx place e
+      loosely_expression ctx place e
   | _, _ -> ()
 
 (* §4.11: RAISE with an error number, never in an error handler; RAISE without one, only there. *)
@@ -949,7 +941,7 @@ and test ctx place (t : test_statement) =
               match tt with
               | Known ty -> check_expression ~sections:"4.20,2.17" ctx place v ty
               | Numeric_literal -> check_expression ~sections:"4.20,2.17" ctx place v (T.scalar Num)
-              | Unknown -> loosely ctx place v) values;
+              | Unknown -> loosely_expression ctx place v) values;
           statements ctx place l
       | CSE_placeholder -> ()) t.cases;
   Option.iter (statements ctx place) t.default
