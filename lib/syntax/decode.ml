@@ -119,7 +119,7 @@ let decode raw =
   let bom = String.length raw >= 3 && String.sub raw 0 3 = "\xEF\xBB\xBF" in
   let start = if bom then 3 else 0 in
   let ascii = ascii_line_starts raw start in
-  let latin1 = ascii = None && not (is_utf8 raw start) in
+  let latin1 = Option.is_none ascii && not (is_utf8 raw start) in
   let text =
     if latin1 then latin1_to_utf8 raw start
     else if bom then String.sub raw 3 (String.length raw - 3)

@@ -12,7 +12,8 @@ let refuse error_class region message = raise (Refused (Diagnostic.make error_cl
 
 let describe_token (token : Parser.token) =
   match token with
-  | IDENT s -> Printf.sprintf "the identifier %s" s
+  | IDENT s | TASK s -> Printf.sprintf "the identifier %s" s
+  | REF -> "REF"
   | NUM s -> Printf.sprintf "the numeric literal %s" s
   | STRING s -> Printf.sprintf "the string literal \"%s\"" s.raw
   | COMMENT _ -> "a comment"
