@@ -218,16 +218,7 @@ ENDMODULE
   "MODULE \xC5r\n! caf\xE9\nPROC p()\n  x := \"\xE9\";\nENDPROC\nENDMODULE\n";
   "\xEF\xBB\xBFMODULE <ID>\n  PROC <ID>(<ID> <ID>)\n    <ID>;\n  ENDPROC\nENDMODULE" ]
 
-let rec mod_files dir =
-  match Sys.readdir dir with
-  | exception Sys_error _ -> []
-  | entries ->
-      Array.sort compare entries;
-      List.concat_map (fun e ->
-          let path = Filename.concat dir e in
-          if Sys.is_directory path then mod_files path
-          else if Filename.check_suffix e ".mod" || Filename.check_suffix e ".sys" then [ path ]
-          else []) (Array.to_list entries)
+let mod_files = Corpus.files ~extensions:[ ".mod"; ".sys" ]
 
 let read_file path =
   let ic = open_in_bin path in

@@ -328,16 +328,7 @@ let census_sees =
 
 (* ------------------------------------------------------------------ files *)
 
-let rec mod_files dir =
-  match Sys.readdir dir with
-  | exception Sys_error _ -> []
-  | entries ->
-      Array.sort compare entries;
-      List.concat_map (fun e ->
-          let path = Filename.concat dir e in
-          if Sys.is_directory path then mod_files path
-          else if Filename.check_suffix (String.lowercase_ascii e) ".mod" then [ path ]
-          else []) (Array.to_list entries)
+let mod_files = Corpus.files ~extensions:[ ".mod" ]
 
 let file_round_trips =
   Alcotest.test_case "every parsing module of spec/ and examples/ round-trips" `Quick (fun () ->
