@@ -20,11 +20,13 @@ and run = {
   outputs : string list;
   exit_status : int;
   error : (string * int * int) option;
+  error_file : string option;
   max_steps : int option;
   retry_limit : int option;
 }
 
-let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; max_steps = None; retry_limit = None }
+let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
+               max_steps = None; retry_limit = None }
 
 let known_formats = [ "1"; "2"; "3" ]
 let checks_semantics case = case.format = "2" || case.format = "3"
@@ -128,8 +130,10 @@ let read path =
                   match String.split_on_char ' ' v |> List.filter (( <> ) "") with
                   | [ name; pos ] -> (
                       match List.rev (String.split_on_char ':' pos) with
-                      | c :: l :: _ when int_of_string_opt l <> None && int_of_string_opt c <> None ->
-                          with_run case (fun r -> { r with error = Some (name, int_of_string l, int_of_string c) })
+                      | c :: l :: file when int_of_string_opt l <> None && int_of_string_opt c <> None ->
+                          let file = match file with [] -> None | f -> Some (String.concat ":" (List.rev f)) in
+                          with_run case (fun r -> { r with error = Some (name, int_of_string l, int_of_string c);
+                                                           error_file = file })
                       | _ -> add_problem case ("bad @error " ^ v))
                   | _ -> add_problem case ("bad @error " ^ v))
               | Some ("max-steps", v) -> (

@@ -26,6 +26,7 @@ and run = {
   outputs : string list;          (** [! @output TEXT], in order: the whole output *)
   exit_status : int;              (** [! @exit N]; 0 by default *)
   error : (string * int * int) option;  (** [! @error NAME LINE:COL] *)
+  error_file : string option;     (** [! @error NAME FILE:LINE:COL] in a [.task] case *)
   max_steps : int option;         (** [! @max-steps N] *)
   retry_limit : int option;       (** [! @retry-limit N] *)
 }

@@ -51,13 +51,14 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
         List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
       done;
       let output = List.rev !output in
-      let status, error =
+      let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
+      let status, error, error_file =
         match M.outcome cfg with
-        | Ended -> (0, None)
-        | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col))
-        | Running | Resource_exhausted _ -> (3, None)
-        | Unsupported _ -> (4, None)
-        | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0))
+        | Ended -> (0, None, None)
+        | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
+        | Running | Resource_exhausted _ -> (3, None, None)
+        | Unsupported _ -> (4, None, None)
+        | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0), None)
       in
       let problems =
         (if output <> run.outputs then
@@ -72,6 +73,9 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
                [ Printf.sprintf "error %s %d:%d, expected %s %d:%d" n l c en el ec ]
            | Some (en, el, ec), None -> [ Printf.sprintf "no error, expected %s %d:%d" en el ec ]
            | None, Some (n, l, c) when run.exit_status = 0 -> [ Printf.sprintf "error %s %d:%d" n l c ]
+           | _ -> [])
+        @ (match run.error_file, error_file with
+           | Some f, Some g when f <> g -> [ Printf.sprintf "error in %s, expected in %s" g f ]
            | _ -> [])
       in
       if problems = [] then pass case (Printf.sprintf "ran: %d lines, exit %d" (List.length output) status)
