@@ -9,6 +9,12 @@ open Rapid_typing
 module A = Ast
 module E = Elaboration
 
+(* Lists as long as a module's statements or declarations (a CAD module holds hundreds of
+   thousands): mapped without growing the stack, which List.map of OCaml 4.13 does. *)
+let map_long f l = Array.map f (Array.of_list l)
+let list_long f l = List.rev (List.rev_map f l)
+let concat_long ls = List.rev (List.fold_left (fun acc l -> List.rev_append l acc) [] ls)
+
 type ctx = {
   elab : E.t;
   routine_index : (Source.region, int) Hashtbl.t;    (* by the region of the routine's name *)
@@ -70,7 +76,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | Aggregate es ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
-      make (Aggregate (Array.of_list (List.map (expr ctx ~dnum) es), kind))
+      make (Aggregate (map_long (expr ctx ~dnum) es, kind))
   | Unary (op, a) -> (
       match Hashtbl.find_opt ctx.elab.unary e.at with
       | Some row ->
@@ -189,7 +195,7 @@ let rec block ctx (l : A.statement list) : Ir.block =
       match s.it with
       | Label name -> Hashtbl.replace ctx.labels name.at (id, i)
       | _ -> ()) l;
-  { id; body = Array.of_list (List.map (statement ctx) l) }
+  { id; body = map_long (statement ctx) l }
 
 and statement ctx (s : A.statement) : Ir.stmt =
   let make d = { Ir.s = d; sat = s.at } in
@@ -348,34 +354,34 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let ctx = { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
               locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0 } in
   (* Routine and global numbering first: bodies and initial values refer to any of them. *)
-  let routine_decls = List.concat_map (fun ((m : A.module_declaration), inst) ->
+  let routine_decls = concat_long (list_long (fun ((m : A.module_declaration), inst) ->
       List.filter_map (fun (r : A.routine_declaration) ->
           match r.it with
           | Procedure_declaration { name; _ } | Function_declaration { name; _ }
           | Trap_declaration { name; _ } -> Some (m, inst, r, name)
-          | Routine_comment _ | RDN_placeholder -> None) m.routine_declarations) all in
+          | Routine_comment _ | RDN_placeholder -> None) m.routine_declarations) all) in
   let routine_decls = List.filter (fun (_, _, _, (name : A.identifier)) ->
       match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
       match Hashtbl.find_opt elab.declared name.at with
       | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region i
       | _ -> ()) routine_decls;
-  let global_decls = List.concat_map (fun ((m : A.module_declaration), _) ->
+  let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
           match d.it with
           | Data_declaration { name; _ } -> (
               match Hashtbl.find_opt elab.declared name.at with
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
-          | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all in
+          | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
   List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region i) global_decls;
-  let globals = Array.of_list (List.map (fun (m, (obj : Env.data_object)) ->
+  let globals = map_long (fun (m, (obj : Env.data_object)) ->
       { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
-        g_read_only = obj.d_kind = Read_only_variable }) global_decls) in
-  let routines = Array.of_list (List.map (fun (m, inst, r, _) ->
+        g_read_only = obj.d_kind = Read_only_variable }) global_decls in
+  let routines = map_long (fun (m, inst, r, _) ->
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r -> r
-      | None -> assert false) routine_decls) in
+      | None -> assert false) routine_decls in
   let find_global name =
     let rec go i = if i >= Array.length globals then 0
       else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
