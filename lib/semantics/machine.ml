@@ -9,7 +9,9 @@ module V = Value
 
 type loc = { box : V.t array; idx : int }
 
-type err = { name : string; number : int; err_at : Source.region; searched : bool }
+(* An error in flight: [chain] is the call chain where it occurred, innermost first, which the
+   system error handler reports even after the error has been propagated. *)
+type err = { name : string; number : int; err_at : Source.region; searched : bool; chain : string list }
 
 type event =
   | Output of string
@@ -142,7 +144,12 @@ let set l v = Array.unsafe_set l.box l.idx (V.copy v)
 let error_number cfg name =
   match List.assoc_opt name cfg.program.error_numbers with Some n -> n | None -> 0
 
-let error cfg name at = { name; number = error_number cfg name; err_at = at; searched = false }
+let rec call_chain = function
+  | None -> []
+  | Some a -> a.routine.Ir.name :: call_chain a.caller
+
+let error cfg name at =
+  { name; number = error_number cfg name; err_at = at; searched = false; chain = call_chain (Some cfg.act) }
 
 (* The name the system error handler reports: an ERR_ constant's name, or a user error's
    number. *)
@@ -152,7 +159,7 @@ let error_of_number cfg n at =
     | Some (name, _) -> name
     | None -> string_of_int n
   in
-  { name; number = n; err_at = at; searched = false }
+  { name; number = n; err_at = at; searched = false; chain = call_chain (Some cfg.act) }
 
 let region_of_focus_stmt cfg =
   match cfg.mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> cfg.act.routine.at
@@ -160,10 +167,6 @@ let region_of_focus_stmt cfg =
 let raise_ cfg name = cfg.focus <- F_raise (error cfg name (region_of_focus_stmt cfg))
 
 let push cfg f = cfg.stack <- f :: cfg.stack
-
-let rec call_chain = function
-  | None -> []
-  | Some a -> a.routine.Ir.name :: call_chain a.caller
 
 (* ------------------------------------------------------------------ start *)
 
@@ -416,8 +419,7 @@ let handle cfg (e : err) =
       ("raise-handle", [ Error_handled { name = e.name; routine = act.routine.name } ])
 
 let stop cfg (e : err) rule =
-  cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at;
-                                 chain = call_chain (Some cfg.act) });
+  cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at; chain = e.chain });
   (rule, [])
 
 (* An error in flight in the current activation (§7.1, §7.2). *)

@@ -1,0 +1,6 @@
+MODULE inf
+  PROC main()
+    WHILE TRUE DO
+    ENDWHILE
+  ENDPROC
+ENDMODULE

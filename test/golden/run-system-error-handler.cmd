@@ -1,0 +1,1 @@
+run run-error.mod

@@ -1,0 +1,1 @@
+trace --to 12 run-error.mod
