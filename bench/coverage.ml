@@ -22,8 +22,8 @@ let count (m : module_declaration) =
   let see form = Hashtbl.replace table form (1 + count form) in
   let rec expression (e : expression) =
     match e.it with
-    | Literal (String_literal _) -> see "string literal (§2.7)"
-    | Literal _ | EXP_placeholder | Data_reference _ -> ()
+    | String_literal _ -> see "string literal (§2.7)"
+    | Num_literal _ | Bool_literal _ | EXP_placeholder | Data_reference _ -> ()
     | Function_call f -> arguments f.arguments
     | Aggregate es -> List.iter expression es
     | Unary (_, e) -> expression e

@@ -220,12 +220,12 @@ let literal st =
 let rec expression ?(top = false) n st : expression =
   if n <= 1 then
     weighted st
-      [ (4, fun () -> loc (Literal (literal st)));
+      [ (4, fun () -> loc (literal st));
         (4, fun () -> loc (Data_reference (loc (Entire (name st)))));
         ((if top then 1 else 0), fun () -> loc EXP_placeholder) ]
   else
     weighted st
-      [ (3, fun () -> loc (Literal (literal st)));
+      [ (3, fun () -> loc (literal st));
         (3, fun () -> loc (Data_reference (data_reference n st)));
         (2, fun () -> loc (Function_call (function_call n st)));
         (1, fun () -> loc (Aggregate (list_of st ~min:1 4 n (fun m -> expression m st))));

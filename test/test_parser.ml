@@ -49,9 +49,9 @@ let binary_name = function
 
 let rec shape (e : expression) =
   match e.it with
-  | Literal (Num_literal s) -> s
-  | Literal (String_literal s) -> "\"" ^ s.raw ^ "\""
-  | Literal (Bool_literal b) -> if b then "TRUE" else "FALSE"
+  | Num_literal s -> s
+  | String_literal s -> "\"" ^ s.raw ^ "\""
+  | Bool_literal b -> if b then "TRUE" else "FALSE"
   | Data_reference r -> reference r
   | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
   | Aggregate es -> "[" ^ String.concat "," (List.map shape es) ^ "]"

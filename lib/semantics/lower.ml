@@ -52,12 +52,12 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
-  | Literal (Num_literal text) -> (
+  | Num_literal text -> (
       match Num_literal.of_text text with
       | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
       | Error _ -> make Placeholder)
-  | Literal (String_literal s) -> make (Literal (Value.String s.bytes))
-  | Literal (Bool_literal b) -> make (Literal (Value.Bool b))
+  | String_literal s -> make (Literal (Value.String s.bytes))
+  | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
       let semi_value =
         let rec root (r : A.data_reference) = match r.it with
@@ -384,7 +384,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       let n = String.uppercase_ascii obj.d_name in
       if obj.d_kind = Constant && (String.length n > 4 && String.sub n 0 4 = "ERR_" || n = "LONG_JMP_ALL_ERR") then
         match obj.d_initial with
-        | Some { it = Literal (Num_literal t); _ } -> (
+        | Some { it = Num_literal t; _ } -> (
             match Num_literal.of_text t with
             | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
             | Error _ -> None)

@@ -26,12 +26,6 @@ type num_literal = string
    value, UTF-8 with character codes replaced by the byte they name. *)
 type string_literal = { raw : string; bytes : string }
 
-(* §3.5 <literal> *)
-type literal =
-  | Num_literal of num_literal
-  | String_literal of string_literal
-  | Bool_literal of bool
-
 (* §3.12 operators; the unary ones are the sign of a <simple expr> and NOT of an <expr>. *)
 type unary_operator = Unary_plus | Unary_minus | Not
 type binary_operator =
@@ -43,7 +37,11 @@ type binary_operator =
 
 type expression = expression_desc located
 and expression_desc =
-  | Literal of literal                                (* §3.5 *)
+  (* §3.5 <literal>: one constructor per kind of literal rather than a [Literal] wrapper, which
+     cost a block per literal (a CAD module is mostly numeric literals; bench/README.md). *)
+  | Num_literal of num_literal
+  | String_literal of string_literal
+  | Bool_literal of bool
   | Data_reference of data_reference                  (* §3.6-§3.9 *)
   | Function_call of function_call                    (* §3.11 *)
   | Aggregate of expression list                      (* §3.10 *)

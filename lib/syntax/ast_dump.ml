@@ -76,14 +76,13 @@ let binary_operator = function
   | Greater_equal -> "Greater_equal" | Not_equal -> "Not_equal"
   | And -> "And" | Or -> "Or" | Xor -> "Xor"
 
-let literal b = function
-  | Num_literal s -> node b "Num_literal"; atom b s; close b
-  | String_literal s -> node b "String_literal"; quoted b s.raw; close b
-  | Bool_literal v -> node b "Bool_literal"; word b (bool_word v); close b
-
 let rec expression b (e : expression) =
   match e.it with
-  | Literal l -> node b "Literal"; literal b l; close b
+  (* The tree has no [Literal] node any more (ast.ml); the dump still writes one, so that its
+     format, which the golden tests pin, does not depend on the tree's representation. *)
+  | Num_literal s -> node b "Literal"; node b "Num_literal"; atom b s; close b; close b
+  | String_literal s -> node b "Literal"; node b "String_literal"; quoted b s.raw; close b; close b
+  | Bool_literal v -> node b "Literal"; node b "Bool_literal"; word b (bool_word v); close b; close b
   | Data_reference r -> node b "Data_reference"; data_reference b r; close b
   | Function_call f ->
       node b "Function_call"; identifier b f.func;

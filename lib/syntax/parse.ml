@@ -55,7 +55,7 @@ module Nesting = struct
   let rec expression d (e : expression) =
     let d = enter d e.at in
     match e.it with
-    | Literal _ | EXP_placeholder -> ()
+    | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
     | Data_reference r -> data_reference d r
     | Function_call f -> arguments d f.arguments
     | Aggregate es -> expressions d es

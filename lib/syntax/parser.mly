@@ -309,7 +309,7 @@ term:
    | <function call> | <aggregate> | '(' <expr> ')'
    (<variable>, <persistent>, <constant> and <parameter> are one nonterminal: see the head.) *)
 primary:
-  | l = literal { at $startpos $endpos (Literal l) }
+  | l = literal { at $startpos $endpos l }
   | v = variable { at $startpos $endpos (Data_reference v) }
   | f = function_call { at $startpos $endpos (Function_call f) }
   | a = aggregate { at $startpos $endpos (Aggregate a) }

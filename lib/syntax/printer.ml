@@ -57,12 +57,8 @@ let level_of (e : expression) =
   | Binary (op, _, _) -> binary_level op
   | Unary (Not, _) -> level_expr
   | Unary ((Unary_plus | Unary_minus), _) -> level_simple_expr
-  | Literal _ | Data_reference _ | Function_call _ | Aggregate _ | EXP_placeholder -> level_primary
-
-let literal b = function
-  | Num_literal s -> str b s                              (* §2.5, as written *)
-  | String_literal s -> str b "\""; str b s.raw; str b "\""   (* §2.7, as written *)
-  | Bool_literal v -> str b (if v then "TRUE" else "FALSE")
+  | Num_literal _ | String_literal _ | Bool_literal _ | Data_reference _ | Function_call _ | Aggregate _
+  | EXP_placeholder -> level_primary
 
 (* [expression b level e] writes [e] where the grammar asks for the nonterminal [level]. *)
 let rec expression b level (e : expression) =
@@ -72,7 +68,9 @@ let rec expression b level (e : expression) =
 
 and expression_bare b (e : expression) =
   match e.it with
-  | Literal l -> literal b l
+  | Num_literal s -> str b s                              (* §2.5, as written *)
+  | String_literal s -> str b "\""; str b s.raw; str b "\""   (* §2.7, as written *)
+  | Bool_literal v -> str b (if v then "TRUE" else "FALSE")
   | Data_reference r -> data_reference b r
   | Function_call f ->
       (* §3.11 *)

@@ -232,9 +232,9 @@ and index_count ctx (name : name) indexes rank =
 and infer ctx place (e : expression) : ty =
   match e.it with
   | EXP_placeholder -> Unknown
-  | Literal (Num_literal _) -> Numeric_literal
-  | Literal (String_literal _) -> Known (T.scalar String)
-  | Literal (Bool_literal _) -> Known (T.scalar Bool)
+  | Num_literal _ -> Numeric_literal
+  | String_literal _ -> Known (T.scalar String)
+  | Bool_literal _ -> Known (T.scalar Bool)
   | Data_reference r -> value_of_reference ctx place r
   | Function_call call -> function_call ctx place e.at call
   | Aggregate _ ->
@@ -702,7 +702,7 @@ let constant_expression ctx place ~what (e : expression) =
   let rec walk (e : expression) =
     if !offending = None then
       match e.it with
-      | Literal _ | EXP_placeholder -> ()
+      | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
       | Function_call _ -> offending := Some (e.at, "a function call")
       | Aggregate es -> List.iter walk es
       | Unary (_, a) -> walk a
@@ -737,8 +737,8 @@ let constant_expression ctx place ~what (e : expression) =
 let literal_expression ctx (e : expression) =
   let rec ok (e : expression) =
     match e.it with
-    | Literal _ | EXP_placeholder -> true
-    | Unary ((Unary_plus | Unary_minus), { it = Literal (Num_literal _); _ }) -> true
+    | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> true
+    | Unary ((Unary_plus | Unary_minus), { it = Num_literal _; _ }) -> true
     | Aggregate es -> List.for_all ok es
     | _ -> false
   in

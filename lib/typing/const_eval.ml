@@ -23,10 +23,10 @@ let eval ~lookup e =
      instead of looping (the judgement reports the cycle). *)
   let rec eval seen (e : expression) =
     match e.it with
-    | Literal (Num_literal text) -> (
+    | Num_literal text -> (
         match Num_literal.of_text text with Ok t -> Some (Number (Num_literal.to_q t)) | Error _ -> None)
-    | Literal (String_literal s) -> Some (Text s.bytes)
-    | Literal (Bool_literal b) -> Some (Boolean b)
+    | String_literal s -> Some (Text s.bytes)
+    | Bool_literal b -> Some (Boolean b)
     | Data_reference { it = Entire name; _ } ->
         let key = String.lowercase_ascii name.it in
         if List.mem key seen then None
