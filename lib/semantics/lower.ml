@@ -70,7 +70,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | Aggregate es ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
-      make (Aggregate (Array.of_list (List.map (expr ctx ~dnum) es), kind))
+      make (Aggregate (Array.map (expr ctx ~dnum) es, kind))
   | Unary (op, a) -> (
       match Hashtbl.find_opt ctx.elab.unary e.at with
       | Some row ->

@@ -44,7 +44,9 @@ and expression_desc =
   | Bool_literal of bool
   | Data_reference of data_reference                  (* §3.6-§3.9 *)
   | Function_call of function_call                    (* §3.11 *)
-  | Aggregate of expression list                      (* §3.10 *)
+  (* §3.10. An array, not a list: a list cell is three words per member, an array slot one,
+     and aggregates of numbers are most of a CAD module (bench/README.md). Never empty. *)
+  | Aggregate of expression array
   | Unary of unary_operator * expression              (* §3.1 *)
   | Binary of binary_operator * expression * expression   (* §3.1 *)
   | EXP_placeholder                                   (* §3.1 <EXP> *)

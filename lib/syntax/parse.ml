@@ -58,7 +58,7 @@ module Nesting = struct
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
     | Data_reference r -> data_reference d r
     | Function_call f -> arguments d f.arguments
-    | Aggregate es -> expressions d es
+    | Aggregate es -> Array.iter (expression d) es
     | Unary (_, e) -> expression d e
     | Binary (_, l, r) -> expression d l; expression d r
 

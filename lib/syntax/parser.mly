@@ -390,7 +390,7 @@ parameter:
 
 (* §3.10 <aggregate> ::= '[' <expr> { ',' <expr> } ']' *)
 aggregate:
-  | LBRACKET e = expr es = preceded(COMMA, expr)* RBRACKET { e :: es }
+  | LBRACKET e = expr es = preceded(COMMA, expr)* RBRACKET { Array.of_list (e :: es) }
 
 (* §3.11 <function call> ::= <function> '(' [ <function argument list> ] ')' *)
 function_call:

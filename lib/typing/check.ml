@@ -401,7 +401,7 @@ and mismatch ~sections ctx (e : expression) expected actual =
 (* §3.10, §2.17 rule 2: an aggregate is an array or record value whose members have the types of
    the corresponding elements or components. *)
 and aggregate ~sections ctx place e members expected =
-  let count = List.length members in
+  let count = Array.length members in
   let element_type (dims : T.dims) : T.dims =
     match dims with
     | Sized [ _ ] | Conformant 1 -> Scalar
@@ -418,17 +418,17 @@ and aggregate ~sections ctx place e members expected =
       if n <> count then
         error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the array dimension is %d" count n;
-      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
+      Array.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Conformant _, base ->
-      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
+      Array.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Scalar, Record rt ->
       let components = rt.components in
       if List.length components <> count then
         error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the record type %s has %d components" count
           rt.record_name (List.length components)
-      else List.iter2 (fun m (_, t) -> check_expression ~sections ctx place m (T.scalar t)) members components
-  | Scalar, T.Anytype -> List.iter (fun m -> ignore (infer ctx place m)) members
+      else List.iteri (fun i (_, t) -> check_expression ~sections ctx place members.(i) (T.scalar t)) components
+  | Scalar, T.Anytype -> Array.iter (fun m -> ignore (infer ctx place m)) members
   | Scalar, _ | Sized [], _ ->
       error ctx ~rule:"equal-types" ~section:("3.10," ^ sections) e.at "expected a value of type %s, found an aggregate"
         (T.to_string expected)
@@ -626,7 +626,7 @@ and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
    parameter whose type is unknown): a data reference may be of any value class there. *)
 and loosely_expression ctx place (e : expression) =
   match e.it with
-  | Aggregate es -> List.iter (loosely_expression ctx place) es
+  | Aggregate es -> Array.iter (loosely_expression ctx place) es
   | Data_reference r -> ignore (reference ctx place r)
   | _ -> ignore (infer ctx place e)
 
@@ -704,7 +704,7 @@ let constant_expression ctx place ~what (e : expression) =
       match e.it with
       | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
       | Function_call _ -> offending := Some (e.at, "a function call")
-      | Aggregate es -> List.iter walk es
+      | Aggregate es -> Array.iter walk es
       | Unary (_, a) -> walk a
       | Binary (_, a, b) -> walk a; walk b
       | Data_reference r -> reference_walk r
@@ -739,12 +739,12 @@ let literal_expression ctx (e : expression) =
     match e.it with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> true
     | Unary ((Unary_plus | Unary_minus), { it = Num_literal _; _ }) -> true
-    | Aggregate es -> List.for_all ok es
+    | Aggregate es -> Array.for_all ok es
     | _ -> false
   in
   let rec first_bad (e : expression) =
     match e.it with
-    | Aggregate es -> List.find_map (fun m -> if ok m then None else Some (first_bad m)) es |> Option.value ~default:e.at
+    | Aggregate es -> Array.find_map (fun m -> if ok m then None else Some (first_bad m)) es |> Option.value ~default:e.at
     | _ -> e.at
   in
   if not (ok e) then
