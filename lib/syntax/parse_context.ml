@@ -1,3 +1,20 @@
 let file = ref (Source.register ~name:"<none>" ~line_starts:[| 0 |])
 
 exception Refused of Source.region * string
+
+(* One [Num_literal] node per short spelling and parse: 9E+09, 0, -1 and the like stand for a
+   good part of a CAD module's literals (bench/README.md), and the node holds no region (its
+   [located] record does), so all occurrences can share it. Only spellings the lexer interns
+   (at most 5 characters) are looked up: longer ones seldom repeat. [Parse] starts each parse
+   with a fresh table, so that no node outlives the tree that uses it. *)
+let num_literals : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
+
+let num_literal text =
+  if String.length text > 5 then Ast.Num_literal text
+  else
+    match Hashtbl.find_opt !num_literals text with
+    | Some node -> node
+    | None ->
+        let node = Ast.Num_literal text in
+        Hashtbl.add !num_literals text node;
+        node

@@ -8,3 +8,10 @@ val file : Source.file ref
 exception Refused of Source.region * string
 (** Raised by a grammar action for a syntax error that one token of look-ahead cannot see
     (comments in records, TASK). *)
+
+val num_literals : (string, Ast.expression_desc) Hashtbl.t ref
+(** The [Num_literal] nodes shared in the parse in progress; whoever starts a parse sets a fresh
+    table. *)
+
+val num_literal : string -> Ast.expression_desc
+(** [Num_literal text], the same node for every occurrence of a short [text] in one parse. *)

@@ -348,7 +348,7 @@ conditional_expression:
 
 (* §3.5 <literal> ::= <num literal> | <string literal> | <bool literal> *)
 literal:
-  | n = NUM { Num_literal n }
+  | n = NUM { Parse_context.num_literal n }
   | s = STRING { String_literal s }
   | b = bool_literal { Bool_literal b }
 
