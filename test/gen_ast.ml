@@ -221,7 +221,7 @@ let rec expression ?(top = false) n st : expression =
   if n <= 1 then
     weighted st
       [ (4, fun () -> loc (literal st));
-        (4, fun () -> loc (Data_reference (loc (Entire (name st)))));
+        (4, fun () -> loc (Data_reference (loc (Entire (name st).it))));
         ((if top then 1 else 0), fun () -> loc EXP_placeholder) ]
   else
     weighted st
@@ -238,10 +238,10 @@ let rec expression ?(top = false) n st : expression =
 
 (* §3.6: <VAR> is not built here; see [target]. *)
 and data_reference n st : data_reference =
-  if n <= 1 then loc (Entire (name st))
+  if n <= 1 then loc (Entire (name st).it)
   else
     weighted st
-      [ (3, fun () -> loc (Entire (name st)));
+      [ (3, fun () -> loc (Entire (name st).it));
         (2, fun () -> let nm = name st in loc (Element (nm, list_of st ~min:1 3 n (fun m -> expression m st))));
         (2, fun () -> let r = data_reference (n - 1) st in loc (Component (r, name st))) ]
 

@@ -63,7 +63,7 @@ let rec shape (e : expression) =
 
 and reference (r : data_reference) =
   match r.it with
-  | Entire n -> n.it
+  | Entire n -> n
   | Element (n, es) -> n.it ^ "{" ^ String.concat "," (List.map shape es) ^ "}"
   | Component (r, n) -> reference r ^ "." ^ n.it
   | VAR_placeholder -> "<VAR>"

@@ -54,7 +54,7 @@ let expression_round_trip =
   Alcotest.test_case "generated expressions: parse (print e) = e" `Slow (fun () ->
       let loc it = { it; at = Source.no_region } in
       let in_module e =
-        let x = loc (Entire (loc "x")) in
+        let x = loc (Entire "x") in
         let body = { declarations = []; statements = [ loc (Assignment (x, e)) ]; backward = None;
                      error = None; undo = None } in
         { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
@@ -374,8 +374,8 @@ let million_elements =
       let loc it = { it; at = Source.no_region } in
       let n = 1_000_000 in
       let one = loc (Num_literal "1") in
-      let statements = List.init n (fun _ -> loc (Assignment (loc (Entire (loc "x")), one))) in
-      let statements = loc (Assignment (loc (Entire (loc "y")), loc (Aggregate (Array.make n one)))) :: statements in
+      let statements = List.init n (fun _ -> loc (Assignment (loc (Entire "x"), one))) in
+      let statements = loc (Assignment (loc (Entire "y"), loc (Aggregate (Array.make n one)))) :: statements in
       let body = { declarations = []; statements; backward = None; error = None; undo = None } in
       let m =
         { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];

@@ -32,10 +32,19 @@ let shape_default (t : Types.object_type) =
 
 (* ------------------------------------------------------------------ expressions *)
 
+(* The region of the name a reference starts with, under which the checker recorded what the
+   name denotes (an entire variable's name has the reference's region, ast.ml). *)
+let rec root_at (r : A.data_reference) =
+  match r.it with
+  | Entire _ -> Some r.at
+  | Element (n, _) -> Some n.at
+  | Component (r, _) -> root_at r
+  | VAR_placeholder -> None
+
 let rec place ctx (r : A.data_reference) : Ir.place =
   match r.it with
   | VAR_placeholder -> Unresolved "<VAR>"
-  | Entire name -> entire ctx name
+  | Entire spelling -> entire ctx { A.it = spelling; at = r.at }
   | Element (name, indexes) ->
       Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
   | Component (inner, comp) -> (
@@ -60,9 +69,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
       let semi_value =
-        let rec root (r : A.data_reference) = match r.it with
-          | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
-        match r.it, Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+        match r.it, Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
@@ -142,9 +149,7 @@ and parameters_of (r : Env.routine) =
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
-      let rec root (r : A.data_reference) = match r.it with
-        | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
-      (match Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+      (match Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
        | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
        | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
        | Some (Data { d_kind = Constant; _ }) -> Ref_constant
@@ -153,8 +158,8 @@ and reference_kind ctx (e : A.expression) : Ir.reference_kind =
 
 and optional_parameter_slot ctx (e : A.expression) =
   match e.it with
-  | Data_reference { it = Entire n; _ } -> (
-      match Hashtbl.find_opt ctx.elab.names n.at with
+  | Data_reference { it = Entire _; at } -> (
+      match Hashtbl.find_opt ctx.elab.names at with
       | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
       | _ -> None)
   | _ -> None
@@ -196,8 +201,8 @@ and statement ctx (s : A.statement) : Ir.stmt =
   match s.it with
   | Assignment (target, e) ->
       let dnum = match target.it with
-        | Entire n | Element (n, _) -> (
-            match Hashtbl.find_opt ctx.elab.names n.at with
+        | Entire _ | Element _ -> (
+            match Option.bind (root_at target) (Hashtbl.find_opt ctx.elab.names) with
             | Some (Data { d_type = { base = Dnum; _ }; _ }) -> false
             | _ -> false)
         | _ -> false in

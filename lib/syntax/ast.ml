@@ -55,7 +55,9 @@ and expression_desc =
    rule for rule. <VAR> stands for a data object reference where §4.5, §4.6 and §4.15 allow it. *)
 and data_reference = data_reference_desc located
 and data_reference_desc =
-  | Entire of name                                    (* <entire variable> *)
+  (* <entire variable>: the name, whose region is the reference's own (they are the same
+     stretch of text), so that the most common reference is not three records deep. *)
+  | Entire of string
   | Element of name * expression list                 (* <variable element> *)
   | Component of data_reference * name                (* <variable component> *)
   | VAR_placeholder                                   (* <VAR> *)

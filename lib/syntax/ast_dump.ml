@@ -96,7 +96,7 @@ let rec expression b (e : expression) =
 
 and data_reference b (r : data_reference) =
   match r.it with
-  | Entire n -> node b "Entire"; name b n; close b
+  | Entire n -> node b "Entire"; atom b n; close b
   | Element (n, es) ->
       node b "Element"; name b n; List.iter (expression b) es; close b
   | Component (r, n) -> node b "Component"; data_reference b r; name b n; close b

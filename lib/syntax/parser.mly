@@ -360,7 +360,7 @@ bool_literal:
 (* §3.6 <variable> ::= <entire variable> | <variable element> | <variable component>
    (also §3.7 <persistent>, §3.8 <constant>, §3.9 <parameter>: see the head) *)
 variable:
-  | v = entire_variable { at $startpos $endpos (Entire v) }
+  | v = entire_variable { at $startpos $endpos (Entire v.it) }
   | v = variable_element { v }
   | v = variable_component { v }
 

@@ -99,7 +99,7 @@ and expression_list b es =
 (* §3.6 *)
 and data_reference b (r : data_reference) =
   match r.it with
-  | Entire n -> name b n
+  | Entire n -> str b n
   | Element (n, es) -> name b n; str b "{"; expression_list b es; str b "}"
   | Component (r, n) -> data_reference b r; str b "."; name b n
   | VAR_placeholder -> str b "<VAR>"

@@ -166,7 +166,8 @@ type reference = { object_ : Env.data_object option; rtype : ty }
 let rec reference ctx place (r : data_reference) : reference =
   match r.it with
   | VAR_placeholder -> { object_ = None; rtype = Unknown }
-  | Entire name -> (
+  | Entire spelling -> (
+      let name = { it = spelling; at = r.at } in
       match Env.lookup place.scope name.it with
       | Some (Data d as o) ->
           Hashtbl.replace ctx.elab.names name.at o;
@@ -178,7 +179,7 @@ let rec reference ctx place (r : data_reference) : reference =
           { object_ = None; rtype = Unknown }
       | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
   | Element (name, indexes) -> (
-      let whole = reference ctx place { r with it = Entire name } in
+      let whole = reference ctx place { it = Entire name.it; at = name.at } in
       List.iter (fun i -> check_expression ~sections:"3.6,2.17" ctx place i (T.scalar Num)) indexes;
       match whole.rtype with
       | Known { base; dims = Sized sizes } when List.length sizes <> List.length indexes ->
@@ -713,7 +714,7 @@ let constant_expression ctx place ~what (e : expression) =
     | VAR_placeholder -> ()
     | Component (inner, _) -> reference_walk inner
     | Element (name, indexes) -> entire name; List.iter walk indexes
-    | Entire name -> entire name
+    | Entire spelling -> entire { it = spelling; at = r.at }
   and entire (name : name) =
     if !offending = None then
       match Env.lookup place.scope name.it with
