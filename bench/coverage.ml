@@ -29,7 +29,7 @@ let count (m : module_declaration) =
     | Unary (_, e) -> expression e
     | Binary (_, l, r) -> expression l; expression r
   and arguments args =
-    List.iter (fun (a : argument) ->
+    Array.iter (fun (a : argument) ->
         match a.it with
         | Required_argument (_, e) -> expression e
         | Optional_argument (_, e) -> see "optional argument (§4.6)"; Option.iter expression e

@@ -261,7 +261,7 @@ and function_call n st : function_call =
                 let nm = ident_only st in
                 loc (Conditional_argument (nm, data_reference m st))) ])
   in
-  { func; arguments }
+  { func; arguments = Array.of_list arguments }
 
 (* §4.6: names are <identifier>, values <expression>; <ARG> and, in a conditional argument,
    <VAR> are allowed. *)
@@ -299,7 +299,7 @@ let simple_statement n st : statement =
                if chance st 0.15 then Late_bound (expression ~top:true (n / 2) st)
                else Procedure_name (identifier st)
              in
-             Procedure_call (p, procedure_arguments (n / 2) st));
+             Procedure_call (p, Array.of_list (procedure_arguments (n / 2) st)));
          (1, fun () -> Goto (identifier st));
          (1, fun () -> Break);
          (1, fun () -> Continue);

@@ -76,7 +76,7 @@ and args l =
       | Optional_argument (n, None) -> "\\" ^ identifier n
       | Optional_argument (n, Some e) -> "\\" ^ identifier n ^ ":=" ^ shape e
       | Conditional_argument (n, r) -> "\\" ^ identifier n ^ "?" ^ reference r
-      | ARG_placeholder -> "<ARG>") l)
+      | ARG_placeholder -> "<ARG>") (Array.to_list l))
 
 let expression text =
   match statements (parse_ok (in_routine ("x := " ^ text ^ ";"))) with

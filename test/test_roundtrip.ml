@@ -137,7 +137,7 @@ let census see (m : module_declaration) =
     | String_literal _ -> s "String_literal"
     | Bool_literal _ -> s "Bool_literal"
     | Data_reference r -> s "Data_reference"; data_reference r
-    | Function_call f -> s "Function_call"; identifier f.func; List.iter argument f.arguments
+    | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument f.arguments
     | Aggregate es -> s "Aggregate"; Array.iter expression es
     | Unary (op, e) -> s "Unary"; see "unary_operator" (unary op); expression e
     | Binary (op, l, r) -> s "Binary"; see "binary_operator" (binary op); expression l; expression r
@@ -166,7 +166,7 @@ let census see (m : module_declaration) =
         (match p with
          | Procedure_name i -> see "procedure" "Procedure_name"; identifier i
          | Late_bound e -> see "procedure" "Late_bound"; expression e);
-        List.iter argument args
+        Array.iter argument args
     | Goto i -> s "Goto"; identifier i
     | Break -> s "Break"
     | Continue -> s "Continue"

@@ -126,7 +126,7 @@ and unary_op (op : A.unary_operator) (o : Tables.operand) : Arith.unary =
   | Unary_plus, O_dnum -> Dnum_plus | Unary_plus, O_pos -> Pos_plus | Unary_plus, _ -> Num_plus
 
 (* §3.11, §4.6, §5.2: each parameter of the callee gets its argument. *)
-and call ctx (at : Source.region) (name : A.identifier) (_ : A.argument list) : Ir.call =
+and call ctx (at : Source.region) (name : A.identifier) (_ : A.argument array) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
@@ -207,7 +207,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
             | _ -> false)
         | _ -> false in
       make (Assign (place ctx target, expr ctx ~dnum e))
-  | Procedure_call (_, args) when List.exists (fun (a : A.argument) -> a.it = ARG_placeholder) args ->
+  | Procedure_call (_, args) when Array.exists (fun (a : A.argument) -> a.it = ARG_placeholder) args ->
       (* §2.9: executing a placeholder is ERR_EXECPHR. *)
       make Placeholder_statement
   | Procedure_call (Procedure_name id, args) -> make (Call_procedure (call ctx s.at id args))
@@ -226,7 +226,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         | ARG_placeholder ->
             { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other }
       in
-      make (Call_late (expr ctx ~dnum:false e, Array.of_list (List.map late args)))
+      make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (
       match Hashtbl.find_opt ctx.elab.names id.at with
       | Some (Label at) -> (

@@ -63,7 +63,10 @@ and data_reference_desc =
   | VAR_placeholder                                   (* <VAR> *)
 
 (* §3.11 <function call> *)
-and function_call = { func : identifier; arguments : argument list }
+and function_call = { func : identifier; arguments : argument array }
+
+(* Argument lists are arrays, like aggregates: a slot is one word where a list cell is three,
+   and CAD modules are mostly calls (bench/README.md). *)
 
 (* §3.11 and §4.6: required, optional and conditional arguments. The comma that may precede an
    optional or conditional argument is layout, not structure. *)
@@ -82,7 +85,7 @@ type procedure =
 type statement = statement_desc located
 and statement_desc =
   | Assignment of data_reference * expression         (* §4.5 *)
-  | Procedure_call of procedure * argument list       (* §4.6 *)
+  | Procedure_call of procedure * argument array      (* §4.6 *)
   | Goto of identifier                                (* §4.7 *)
   | Break                                             (* §4.8 *)
   | Continue                                          (* §4.9 *)

@@ -86,7 +86,7 @@ let rec expression b (e : expression) =
   | Data_reference r -> node b "Data_reference"; data_reference b r; close b
   | Function_call f ->
       node b "Function_call"; identifier b f.func;
-      node b "arguments"; List.iter (argument b) f.arguments; close b;
+      node b "arguments"; Array.iter (argument b) f.arguments; close b;
       close b
   | Aggregate es -> node b "Aggregate"; Array.iter (expression b) es; close b
   | Unary (op, e) -> node b "Unary"; word b (unary_operator op); expression b e; close b
@@ -125,7 +125,7 @@ let rec statement b ind (s : statement) =
       (match p with
        | Procedure_name i -> node b "Procedure_name"; identifier b i; close b
        | Late_bound e -> node b "Late_bound"; expression b e; close b);
-      List.iter (argument b) args;
+      Array.iter (argument b) args;
       close b
   | Goto i -> line_node b ind "Goto"; identifier b i; close b
   | Break -> line_word b ind "Break"

@@ -77,14 +77,12 @@ module Nesting = struct
     | Element (_, es) -> expressions d es
     | Component (r, _) -> data_reference d r
 
-  and arguments d = function
-    | [] -> ()
-    | (a : argument) :: rest ->
-        (match a.it with
-         | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
-         | Conditional_argument (_, r) -> data_reference d r
-         | Optional_argument (_, None) | ARG_placeholder -> ());
-        arguments d rest
+  and arguments d args =
+    Array.iter (fun (a : argument) ->
+        match a.it with
+        | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
+        | Conditional_argument (_, r) -> data_reference d r
+        | Optional_argument (_, None) | ARG_placeholder -> ()) args
 
   let rec statement d (s : statement) =
     let d = enter d s.at in

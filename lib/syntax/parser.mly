@@ -395,7 +395,7 @@ aggregate:
 (* §3.11 <function call> ::= <function> '(' [ <function argument list> ] ')' *)
 function_call:
   | func = function_ LPAREN arguments = loption(function_argument_list) RPAREN
-    { { func; arguments } }
+    { { func; arguments = Array.of_list arguments } }
 
 (* §3.11 <function> ::= <identifier> *)
 function_:
@@ -495,7 +495,8 @@ assignment_target:
 
 (* §4.6 <procedure call> ::= <procedure> [ <procedure argument list> ] ';' *)
 procedure_call:
-  | p = procedure args = loption(procedure_argument_list) SEMICOLON { Procedure_call (p, args) }
+  | p = procedure args = loption(procedure_argument_list) SEMICOLON
+    { Procedure_call (p, Array.of_list args) }
 
 (* §4.6 <procedure> ::= <identifier> | '%' <expression> '%' *)
 procedure:

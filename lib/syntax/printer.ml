@@ -109,7 +109,7 @@ and data_reference b (r : data_reference) =
    loosest level: where the grammar asks for <expr> (functions) rather than <expression>
    (procedures), the two differ only by <EXP>, which a derivable tree does not put there. *)
 and arguments b ~first_separator args =
-  List.iteri (fun i (a : argument) ->
+  Array.iteri (fun i (a : argument) ->
       (match a.it with
        | Required_argument _ | ARG_placeholder ->
            str b (if i = 0 then first_separator else ", ")

@@ -513,8 +513,10 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
           | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
 
 (* §3.11, §4.6: the arguments of a call against the routine's parameter list, in order. *)
-and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
+and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument array) =
   if routine.r_open then loose_arguments ctx place args else
+  (* The matching against the parameter slots consumes the arguments from the front. *)
+  let args = Array.to_list args in
   let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
   let bound = ref [] in
   let bind p a = bound := (p, a) :: !bound in
@@ -649,8 +651,8 @@ and function_call ctx place region (call : function_call) : ty =
           Unknown
       | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place call.arguments; Unknown)
 
-and loose_arguments ctx place (args : argument list) =
-  List.iter (fun (a : argument) ->
+and loose_arguments ctx place (args : argument array) =
+  Array.iter (fun (a : argument) ->
       match a.it with
       | Required_argument (_, e) | Optional_argument (_, Some e) -> loosely_expression ctx place e
       | Conditional_argument (_, r) -> ignore (reference ctx place r)
