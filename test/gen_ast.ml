@@ -221,12 +221,12 @@ let rec expression ?(top = false) n st : expression =
   if n <= 1 then
     weighted st
       [ (4, fun () -> loc (literal st));
-        (4, fun () -> loc (Data_reference (loc (Entire (name st).it))));
+        (4, fun () -> loc (Data_reference (Entire (name st).it)));
         ((if top then 1 else 0), fun () -> loc EXP_placeholder) ]
   else
     weighted st
       [ (3, fun () -> loc (literal st));
-        (3, fun () -> loc (Data_reference (data_reference n st)));
+        (3, fun () -> loc (Data_reference (data_reference n st).it));
         (2, fun () -> loc (Function_call (function_call n st)));
         (1, fun () -> loc (Aggregate (Array.of_list (list_of st ~min:1 4 n (fun m -> expression m st)))));
         (3, fun () -> loc (Unary (unary_operator st, expression (n - 1) st)));

@@ -52,7 +52,7 @@ let rec shape (e : expression) =
   | Num_literal s -> s
   | String_literal s -> "\"" ^ s.raw ^ "\""
   | Bool_literal b -> if b then "TRUE" else "FALSE"
-  | Data_reference r -> reference r
+  | Data_reference r -> reference (Ast.reference e r)
   | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
   | Aggregate es -> "[" ^ String.concat "," (Array.to_list (Array.map shape es)) ^ "]"
   | Unary (Unary_minus, e) -> "(neg " ^ shape e ^ ")"

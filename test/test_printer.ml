@@ -92,7 +92,7 @@ let expression_layout =
 let hand_built_expressions =
   Alcotest.test_case "§3.1 parentheses for trees built by hand" `Quick (fun () ->
       let loc it = { it; at = Source.no_region } in
-      let v s = loc (Data_reference (loc (Entire s))) in
+      let v s = loc (Data_reference (Entire s)) in
       let bin op l r = loc (Binary (op, l, r)) in
       let un op e = loc (Unary (op, e)) in
       List.iter (fun (e, expected) -> Alcotest.(check string) expected expected (Printer.expression e))

@@ -136,7 +136,7 @@ let census see (m : module_declaration) =
     | Num_literal _ -> s "Num_literal"
     | String_literal _ -> s "String_literal"
     | Bool_literal _ -> s "Bool_literal"
-    | Data_reference r -> s "Data_reference"; data_reference r
+    | Data_reference r -> s "Data_reference"; data_reference (Ast.reference e r)
     | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument f.arguments
     | Aggregate es -> s "Aggregate"; Array.iter expression es
     | Unary (op, e) -> s "Unary"; see "unary_operator" (unary op); expression e

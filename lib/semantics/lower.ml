@@ -68,6 +68,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | String_literal s -> make (Literal (Value.String s.bytes))
   | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
+      let r = A.reference e r in
       let semi_value =
         match r.it, Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
@@ -149,7 +150,7 @@ and parameters_of (r : Env.routine) =
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
-      (match Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
+      (match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
        | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
        | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
        | Some (Data { d_kind = Constant; _ }) -> Ref_constant
@@ -158,8 +159,8 @@ and reference_kind ctx (e : A.expression) : Ir.reference_kind =
 
 and optional_parameter_slot ctx (e : A.expression) =
   match e.it with
-  | Data_reference { it = Entire _; at } -> (
-      match Hashtbl.find_opt ctx.elab.names at with
+  | Data_reference (Entire _) -> (
+      match Hashtbl.find_opt ctx.elab.names e.at with
       | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
       | _ -> None)
   | _ -> None
@@ -180,7 +181,7 @@ and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
           Pass_on (Option.get (optional_parameter_slot ctx e))
       | _ -> (
           match e.it with
-          | Data_reference r -> By_reference (place ctx r, reference_kind ctx e)
+          | Data_reference r -> By_reference (place ctx (A.reference e r), reference_kind ctx e)
           | _ -> By_value (expr ctx ~dnum e)))
 
 (* ------------------------------------------------------------------ statements *)

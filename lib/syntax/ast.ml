@@ -42,7 +42,9 @@ and expression_desc =
   | Num_literal of num_literal
   | String_literal of string_literal
   | Bool_literal of bool
-  | Data_reference of data_reference                  (* §3.6-§3.9 *)
+  (* §3.6-§3.9. The reference's region is the expression's (a <primary> that is a reference is
+     nothing else), so it has no [located] record of its own here; [reference] rebuilds one. *)
+  | Data_reference of data_reference_desc
   | Function_call of function_call                    (* §3.11 *)
   (* §3.10. An array, not a list: a list cell is three words per member, an array slot one,
      and aggregates of numbers are most of a CAD module (bench/README.md). Never empty. *)
@@ -236,3 +238,6 @@ type module_declaration = {
   routine_declarations : routine_declaration list;
   module_region : region;
 }
+
+(* The data reference that the expression [e], [Data_reference d], is. *)
+let reference (e : expression) (d : data_reference_desc) : data_reference = { it = d; at = e.at }

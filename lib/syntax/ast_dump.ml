@@ -83,7 +83,7 @@ let rec expression b (e : expression) =
   | Num_literal s -> node b "Literal"; node b "Num_literal"; atom b s; close b; close b
   | String_literal s -> node b "Literal"; node b "String_literal"; quoted b s.raw; close b; close b
   | Bool_literal v -> node b "Literal"; node b "Bool_literal"; word b (bool_word v); close b; close b
-  | Data_reference r -> node b "Data_reference"; data_reference b r; close b
+  | Data_reference r -> node b "Data_reference"; reference b r; close b
   | Function_call f ->
       node b "Function_call"; identifier b f.func;
       node b "arguments"; Array.iter (argument b) f.arguments; close b;
@@ -94,8 +94,10 @@ let rec expression b (e : expression) =
       node b "Binary"; word b (binary_operator op); expression b l; expression b r; close b
   | EXP_placeholder -> word b "EXP_placeholder"
 
-and data_reference b (r : data_reference) =
-  match r.it with
+and data_reference b (r : data_reference) = reference b r.it
+
+and reference b (r : data_reference_desc) =
+  match r with
   | Entire n -> node b "Entire"; atom b n; close b
   | Element (n, es) ->
       node b "Element"; name b n; List.iter (expression b) es; close b

@@ -56,7 +56,7 @@ module Nesting = struct
     let d = enter d e.at in
     match e.it with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
-    | Data_reference r -> data_reference d r
+    | Data_reference r -> reference d e.at r
     | Function_call f -> arguments d f.arguments
     | Aggregate es -> Array.iter (expression d) es
     | Unary (_, e) -> expression d e
@@ -70,9 +70,12 @@ module Nesting = struct
     | None -> ()
     | Some e -> expression d e
 
-  and data_reference d (r : data_reference) =
-    let d = enter d r.at in
-    match r.it with
+  and data_reference d (r : data_reference) = reference d r.at r.it
+
+  (* A reference counts as a level of nesting of its own, also where it is an expression. *)
+  and reference d at (r : data_reference_desc) =
+    let d = enter d at in
+    match r with
     | Entire _ | VAR_placeholder -> ()
     | Element (_, es) -> expressions d es
     | Component (r, _) -> data_reference d r

@@ -310,7 +310,7 @@ term:
    (<variable>, <persistent>, <constant> and <parameter> are one nonterminal: see the head.) *)
 primary:
   | l = literal { at $startpos $endpos l }
-  | v = variable { at $startpos $endpos (Data_reference v) }
+  | v = variable { at $startpos $endpos (Data_reference v.it) }
   | f = function_call { at $startpos $endpos (Function_call f) }
   | a = aggregate { at $startpos $endpos (Aggregate a) }
   | LPAREN e = expr RPAREN { e }

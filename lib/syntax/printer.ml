@@ -71,7 +71,7 @@ and expression_bare b (e : expression) =
   | Num_literal s -> str b s                              (* §2.5, as written *)
   | String_literal s -> str b "\""; str b s.raw; str b "\""   (* §2.7, as written *)
   | Bool_literal v -> str b (if v then "TRUE" else "FALSE")
-  | Data_reference r -> data_reference b r
+  | Data_reference r -> reference b r
   | Function_call f ->
       (* §3.11 *)
       identifier b f.func; str b "("; arguments b ~first_separator:"" f.arguments; str b ")"
@@ -97,8 +97,10 @@ and expression_list b es =
   List.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) es
 
 (* §3.6 *)
-and data_reference b (r : data_reference) =
-  match r.it with
+and data_reference b (r : data_reference) = reference b r.it
+
+and reference b (r : data_reference_desc) =
+  match r with
   | Entire n -> str b n
   | Element (n, es) -> name b n; str b "{"; expression_list b es; str b "}"
   | Component (r, n) -> data_reference b r; str b "."; name b n

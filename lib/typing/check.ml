@@ -236,7 +236,7 @@ and infer ctx place (e : expression) : ty =
   | Num_literal _ -> Numeric_literal
   | String_literal _ -> Known (T.scalar String)
   | Bool_literal _ -> Known (T.scalar Bool)
-  | Data_reference r -> value_of_reference ctx place r
+  | Data_reference r -> value_of_reference ctx place (Ast.reference e r)
   | Function_call call -> function_call ctx place e.at call
   | Aggregate _ ->
       error ctx ~rule:"aggregate-context" ~section:"3.10" e.at
@@ -475,7 +475,7 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
                   p.p_name (type_string actual))
       | mode -> (
-          let r = match e.it with Data_reference r -> Some (reference ctx place r) | _ -> None in
+          let r = match e.it with Data_reference r -> Some (reference ctx place (Ast.reference e r)) | _ -> None in
           let kind = argument_kind e r in
           let unresolved = match r with Some { object_ = None; rtype = Unknown } -> true | _ -> false in
           (match Tables.access_cell kind mode with
@@ -630,7 +630,7 @@ and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
 and loosely_expression ctx place (e : expression) =
   match e.it with
   | Aggregate es -> Array.iter (loosely_expression ctx place) es
-  | Data_reference r -> ignore (reference ctx place r)
+  | Data_reference r -> ignore (reference ctx place (Ast.reference e r))
   | _ -> ignore (infer ctx place e)
 
 and function_call ctx place region (call : function_call) : ty =
@@ -710,7 +710,7 @@ let constant_expression ctx place ~what (e : expression) =
       | Aggregate es -> Array.iter walk es
       | Unary (_, a) -> walk a
       | Binary (_, a, b) -> walk a; walk b
-      | Data_reference r -> reference_walk r
+      | Data_reference r -> reference_walk (Ast.reference e r)
   and reference_walk (r : data_reference) =
     match r.it with
     | VAR_placeholder -> ()

@@ -27,11 +27,10 @@ let eval ~lookup e =
         match Num_literal.of_text text with Ok t -> Some (Number (Num_literal.to_q t)) | Error _ -> None)
     | String_literal s -> Some (Text s.bytes)
     | Bool_literal b -> Some (Boolean b)
-    | Data_reference { it = Entire spelling; at } ->
-        let name = { it = spelling; at } in
-        let key = String.lowercase_ascii name.it in
+    | Data_reference (Entire name) ->
+        let key = String.lowercase_ascii name in
         if List.mem key seen then None
-        else Option.bind (lookup name.it) (eval (key :: seen))
+        else Option.bind (lookup name) (eval (key :: seen))
     | Data_reference _ | Function_call _ | Aggregate _ | EXP_placeholder -> None
     | Unary (op, a) -> (
         match op, eval seen a with
