@@ -204,8 +204,7 @@ let run_parser options file lexer =
 
 let parse_decoded options name (decoded : Decode.t) =
   let file = Source.register ~name ~line_starts:decoded.line_starts in
-  Parse_context.file := file;
-  Parse_context.num_literals := Hashtbl.create 256;
+  Parse_context.start file;
   let at_start = Source.region file 0 1 in
   try
     if options.strict && decoded.byte_order_mark then

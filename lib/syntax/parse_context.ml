@@ -2,12 +2,25 @@ let file = ref (Source.register ~name:"<none>" ~line_starts:[| 0 |])
 
 exception Refused of Source.region * string
 
-(* One [Num_literal] node per short spelling and parse: 9E+09, 0, -1 and the like stand for a
+(* One [Num_literal] node per short spelling and parse: 9E+09, 0, 1 and the like stand for a
    good part of a CAD module's literals (bench/README.md), and the node holds no region (its
    [located] record does), so all occurrences can share it. Only spellings the lexer interns
    (at most 5 characters) are looked up: longer ones seldom repeat. [Parse] starts each parse
-   with a fresh table, so that no node outlives the tree that uses it. *)
+   with fresh tables ([start]), so that no node outlives the tree that uses it. *)
 let num_literals : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
+
+(* The same for [Ident] nodes: a CAD module calls MoveL, MoveJ and SetDO, and names WObj, tens
+   of thousands of times. Every spelling is looked up: the lexer already keeps one copy of each
+   (up to its limit), so the table adds a node per distinct name, not per occurrence. *)
+let idents : (string, Ast.identifier_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
+
+let ident spelling =
+  match Hashtbl.find_opt !idents spelling with
+  | Some node -> node
+  | None ->
+      let node = Ast.Ident spelling in
+      Hashtbl.add !idents spelling node;
+      node
 
 let num_literal text =
   if String.length text > 5 then Ast.Num_literal text
@@ -18,3 +31,8 @@ let num_literal text =
         let node = Ast.Num_literal text in
         Hashtbl.add !num_literals text node;
         node
+
+let start f =
+  file := f;
+  num_literals := Hashtbl.create 256;
+  idents := Hashtbl.create 256

@@ -96,8 +96,8 @@ module_file:
 (* TASK is not reserved (§2.4): the lexer marks the word, which begins a task declaration
    (§2.18) where a data declaration may stand and is an identifier everywhere else. *)
 identifier:
-  | s = IDENT { at $startpos $endpos (Ident s) }
-  | s = TASK  { at $startpos $endpos (Ident s) }
+  | s = IDENT { at $startpos $endpos (Parse_context.ident s) }
+  | s = TASK  { at $startpos $endpos (Parse_context.ident s) }
   | ID_PH     { at $startpos $endpos ID_placeholder }
 
 ident:
@@ -425,17 +425,17 @@ function_argument:
 required_function_argument:
   | e = expr { at $startpos $endpos (Required_argument (None, e)) }
   | n = ident ASSIGN e = expr
-    { at $startpos $endpos (Required_argument (Some { it = Ident n.it; at = n.at }, e)) }
+    { at $startpos $endpos (Required_argument (Some { it = Parse_context.ident n.it; at = n.at }, e)) }
 
 (* §3.11 <optional function argument> ::= '\' <ident> [ ':=' <expr> ] *)
 optional_function_argument:
   | BACKSLASH n = ident v = preceded(ASSIGN, expr)?
-    { at $startpos $endpos (Optional_argument ({ it = Ident n.it; at = n.at }, v)) }
+    { at $startpos $endpos (Optional_argument ({ it = Parse_context.ident n.it; at = n.at }, v)) }
 
 (* §3.11 <conditional function argument> ::= '\' <ident> '?' <parameter> *)
 conditional_function_argument:
   | BACKSLASH n = ident QUESTION p = parameter
-    { at $startpos $endpos (Conditional_argument ({ it = Ident n.it; at = n.at }, p)) }
+    { at $startpos $endpos (Conditional_argument ({ it = Parse_context.ident n.it; at = n.at }, p)) }
 
 (* ---------------------------------------------------------------- §4 Statements *)
 
