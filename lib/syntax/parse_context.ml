@@ -32,7 +32,21 @@ let num_literal text =
         Hashtbl.add !num_literals text node;
         node
 
+(* And for an entire variable read in an expression, [Data_reference (Entire name)]: the two
+   nodes hold no region since the expression's record holds it (ast.ml), and tool0, wobj0, v500
+   and z50 are most of the arguments of a CAD module's motions. *)
+let entire_references : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
+
+let entire_reference spelling =
+  match Hashtbl.find_opt !entire_references spelling with
+  | Some node -> node
+  | None ->
+      let node = Ast.Data_reference (Entire spelling) in
+      Hashtbl.add !entire_references spelling node;
+      node
+
 let start f =
   file := f;
   num_literals := Hashtbl.create 256;
-  idents := Hashtbl.create 256
+  idents := Hashtbl.create 256;
+  entire_references := Hashtbl.create 256

@@ -23,3 +23,10 @@ val idents : (string, Ast.identifier_desc) Hashtbl.t ref
 
 val ident : string -> Ast.identifier_desc
 (** [Ident spelling], the same node for every occurrence of [spelling] in one parse. *)
+
+val entire_references : (string, Ast.expression_desc) Hashtbl.t ref
+(** The [Data_reference (Entire _)] nodes shared in the parse in progress. *)
+
+val entire_reference : string -> Ast.expression_desc
+(** [Data_reference (Entire spelling)], the same node for every occurrence of [spelling] as an
+    expression in one parse. *)

@@ -310,7 +310,9 @@ term:
    (<variable>, <persistent>, <constant> and <parameter> are one nonterminal: see the head.) *)
 primary:
   | l = literal { at $startpos $endpos l }
-  | v = variable { at $startpos $endpos (Data_reference v.it) }
+  | v = variable
+    { at $startpos $endpos
+        (match v.it with Entire s -> Parse_context.entire_reference s | r -> Data_reference r) }
   | f = function_call { at $startpos $endpos (Function_call f) }
   | a = aggregate { at $startpos $endpos (Aggregate a) }
   | LPAREN e = expr RPAREN { e }
