@@ -5,8 +5,9 @@ exception Refused of Source.region * string
 (* One [Num_literal] node per short spelling and parse: 9E+09, 0, 1 and the like stand for a
    good part of a CAD module's literals (bench/README.md), and the node holds no region (its
    [located] record does), so all occurrences can share it. Only spellings the lexer interns
-   (at most 5 characters) are looked up: longer ones seldom repeat. [Parse] starts each parse
-   with fresh tables ([start]), so that no node outlives the tree that uses it. *)
+   (at most 5 characters) are looked up: longer ones seldom repeat. Each parse starts with
+   fresh tables ([start]), so that trees of different parses share nothing; the last parse's
+   tables stay alive until the next one starts (a node per distinct spelling). *)
 let num_literals : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
 
 (* The same for [Ident] nodes: a CAD module calls MoveL, MoveJ and SetDO, and names WObj, tens
