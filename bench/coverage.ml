@@ -25,7 +25,7 @@ let count (m : module_declaration) =
     | String_literal _ -> see "string literal (§2.7)"
     | Num_literal _ | Bool_literal _ | EXP_placeholder | Data_reference _ -> ()
     | Function_call f -> arguments f.arguments
-    | Aggregate es -> Array.iter expression es
+    | Aggregate (es, rs) -> Array.iter expression (members es rs)
     | Unary (_, e) -> expression e
     | Binary (_, l, r) -> expression l; expression r
   and arguments args =

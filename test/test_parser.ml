@@ -54,7 +54,7 @@ let rec shape (e : expression) =
   | Bool_literal b -> if b then "TRUE" else "FALSE"
   | Data_reference r -> reference (Ast.reference e r)
   | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
-  | Aggregate es -> "[" ^ String.concat "," (Array.to_list (Array.map shape es)) ^ "]"
+  | Aggregate (es, rs) -> "[" ^ String.concat "," (Array.to_list (Array.map shape (members es rs))) ^ "]"
   | Unary (Unary_minus, e) -> "(neg " ^ shape e ^ ")"
   | Unary (Unary_plus, e) -> "(pos " ^ shape e ^ ")"
   | Unary (Not, e) -> "(NOT " ^ shape e ^ ")"

@@ -138,7 +138,7 @@ let census see (m : module_declaration) =
     | Bool_literal _ -> s "Bool_literal"
     | Data_reference r -> s "Data_reference"; data_reference (Ast.reference e r)
     | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument f.arguments
-    | Aggregate es -> s "Aggregate"; Array.iter expression es
+    | Aggregate (es, rs) -> s "Aggregate"; Array.iter expression (members es rs)
     | Unary (op, e) -> s "Unary"; see "unary_operator" (unary op); expression e
     | Binary (op, l, r) -> s "Binary"; see "binary_operator" (binary op); expression l; expression r
     | EXP_placeholder -> s "EXP_placeholder"
@@ -375,7 +375,7 @@ let million_elements =
       let n = 1_000_000 in
       let one = loc (Num_literal "1") in
       let statements = List.init n (fun _ -> loc (Assignment (loc (Entire "x"), one))) in
-      let statements = loc (Assignment (loc (Entire "y"), loc (Aggregate (Array.make n one)))) :: statements in
+      let statements = loc (Assignment (loc (Entire "y"), loc (Aggregate (Array.make n one.it, Array.make n one.at)))) :: statements in
       let body = { declarations = []; statements; backward = None; error = None; undo = None } in
       let m =
         { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];

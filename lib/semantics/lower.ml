@@ -75,10 +75,10 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
   | Function_call f -> make (Call (call ctx e.at f.func f.arguments))
-  | Aggregate es ->
+  | Aggregate (es, rs) ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
-      make (Aggregate (Array.map (expr ctx ~dnum) es, kind))
+      make (Aggregate (Array.map (expr ctx ~dnum) (A.members es rs), kind))
   | Unary (op, a) -> (
       match Hashtbl.find_opt ctx.elab.unary e.at with
       | Some row ->

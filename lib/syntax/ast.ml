@@ -46,9 +46,11 @@ and expression_desc =
      nothing else), so it has no [located] record of its own here; [reference] rebuilds one. *)
   | Data_reference of data_reference_desc
   | Function_call of function_call                    (* §3.11 *)
-  (* §3.10. An array, not a list: a list cell is three words per member, an array slot one,
-     and aggregates of numbers are most of a CAD module (bench/README.md). Never empty. *)
-  | Aggregate of expression array
+  (* §3.10. The members' contents and their regions in two arrays of the same length, rather
+     than a list or array of [located] records: a member costs two words instead of four (a
+     list cell cost three more), and aggregates of numbers are most of a CAD module
+     (bench/README.md). Never empty. [members] gives the members as expressions. *)
+  | Aggregate of expression_desc array * region array
   | Unary of unary_operator * expression              (* §3.1 *)
   | Binary of binary_operator * expression * expression   (* §3.1 *)
   | EXP_placeholder                                   (* §3.1 <EXP> *)
@@ -241,3 +243,11 @@ type module_declaration = {
 
 (* The data reference that the expression [e], [Data_reference d], is. *)
 let reference (e : expression) (d : data_reference_desc) : data_reference = { it = d; at = e.at }
+
+(* The aggregate of the members [es] (§3.10), and back. *)
+let aggregate (es : expression list) : expression_desc =
+  let es = Array.of_list es in
+  Aggregate (Array.map (fun e -> e.it) es, Array.map (fun e -> e.at) es)
+
+let members (descs : expression_desc array) (regions : region array) : expression array =
+  Array.mapi (fun i it -> { it; at = regions.(i) }) descs

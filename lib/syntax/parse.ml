@@ -52,13 +52,16 @@ module Nesting = struct
 
   let enter depth at = if depth > max_nesting then raise (Too_deep at); depth + 1
 
-  let rec expression d (e : expression) =
-    let d = enter d e.at in
-    match e.it with
+  let rec expression d (e : expression) = expression_at d e.at e.it
+
+  (* Aggregate members come as contents and regions (ast.ml): walked without rebuilding them. *)
+  and expression_at d at (e : expression_desc) =
+    let d = enter d at in
+    match e with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
-    | Data_reference r -> reference d e.at r
+    | Data_reference r -> reference d at r
     | Function_call f -> arguments d f.arguments
-    | Aggregate es -> Array.iter (expression d) es
+    | Aggregate (es, rs) -> Array.iteri (fun i m -> expression_at d rs.(i) m) es
     | Unary (_, e) -> expression d e
     | Binary (_, l, r) -> expression d l; expression d r
 

@@ -314,7 +314,7 @@ primary:
     { at $startpos $endpos
         (match v.it with Entire s -> Parse_context.entire_reference s | r -> Data_reference r) }
   | f = function_call { at $startpos $endpos (Function_call f) }
-  | a = aggregate { at $startpos $endpos (Aggregate a) }
+  | a = aggregate { at $startpos $endpos (Ast.aggregate a) }
   | LPAREN e = expr RPAREN { e }
 
 (* §3.1 *)
@@ -392,7 +392,7 @@ parameter:
 
 (* §3.10 <aggregate> ::= '[' <expr> { ',' <expr> } ']' *)
 aggregate:
-  | LBRACKET e = expr es = preceded(COMMA, expr)* RBRACKET { Array.of_list (e :: es) }
+  | LBRACKET e = expr es = preceded(COMMA, expr)* RBRACKET { e :: es }
 
 (* §3.11 <function call> ::= <function> '(' [ <function argument list> ] ')' *)
 function_call:

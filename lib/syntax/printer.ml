@@ -75,9 +75,9 @@ and expression_bare b (e : expression) =
   | Function_call f ->
       (* §3.11 *)
       identifier b f.func; str b "("; arguments b ~first_separator:"" f.arguments; str b ")"
-  | Aggregate es ->                                                 (* §3.10 *)
+  | Aggregate (es, rs) ->                                           (* §3.10 *)
       str b "[";
-      Array.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) es;
+      Array.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) (members es rs);
       str b "]"
   | Unary (Not, e) -> str b "NOT "; expression b level_logical_term e
   | Unary (Unary_plus, e) -> str b "+"; expression b level_term e

@@ -382,7 +382,7 @@ and equality ctx place e op a b =
    initial values, arguments, RETURN, test values, aggregate members. *)
 and check_expression ?(sections = "2.17") ctx place (e : expression) (expected : T.object_type) =
   match e.it with
-  | Aggregate members -> aggregate ~sections ctx place e members expected
+  | Aggregate (es, rs) -> aggregate ~sections ctx place e (members es rs) expected
   | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
@@ -629,7 +629,7 @@ and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
    parameter whose type is unknown): a data reference may be of any value class there. *)
 and loosely_expression ctx place (e : expression) =
   match e.it with
-  | Aggregate es -> Array.iter (loosely_expression ctx place) es
+  | Aggregate (es, rs) -> Array.iter (loosely_expression ctx place) (members es rs)
   | Data_reference r -> ignore (reference ctx place (Ast.reference e r))
   | _ -> ignore (infer ctx place e)
 
@@ -707,7 +707,7 @@ let constant_expression ctx place ~what (e : expression) =
       match e.it with
       | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
       | Function_call _ -> offending := Some (e.at, "a function call")
-      | Aggregate es -> Array.iter walk es
+      | Aggregate (es, rs) -> Array.iter walk (members es rs)
       | Unary (_, a) -> walk a
       | Binary (_, a, b) -> walk a; walk b
       | Data_reference r -> reference_walk (Ast.reference e r)
@@ -742,12 +742,14 @@ let literal_expression ctx (e : expression) =
     match e.it with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> true
     | Unary ((Unary_plus | Unary_minus), { it = Num_literal _; _ }) -> true
-    | Aggregate es -> Array.for_all ok es
+    | Aggregate (es, rs) -> Array.for_all ok (members es rs)
     | _ -> false
   in
   let rec first_bad (e : expression) =
     match e.it with
-    | Aggregate es -> Array.find_map (fun m -> if ok m then None else Some (first_bad m)) es |> Option.value ~default:e.at
+    | Aggregate (es, rs) ->
+        Array.find_map (fun m -> if ok m then None else Some (first_bad m)) (members es rs)
+        |> Option.value ~default:e.at
     | _ -> e.at
   in
   if not (ok e) then
