@@ -26,7 +26,7 @@ let count (m : module_declaration) =
     | Num_literal _ | Bool_literal _ | EXP_placeholder | Data_reference _ -> ()
     | Function_call f -> arguments f.arguments
     | Aggregate (es, rs) -> Array.iter expression (members es rs)
-    | Unary (_, e) -> expression e
+    | Unary (_, e, at) -> expression (operand e at)
     | Binary (_, l, r) -> expression l; expression r
   and arguments args =
     Array.iter (fun (a : argument) ->

@@ -229,7 +229,7 @@ let rec expression ?(top = false) n st : expression =
         (3, fun () -> loc (Data_reference (data_reference n st).it));
         (2, fun () -> loc (Function_call (function_call n st)));
         (1, fun () -> loc (aggregate (list_of st ~min:1 4 n (fun m -> expression m st))));
-        (3, fun () -> loc (Unary (unary_operator st, expression (n - 1) st)));
+        (3, fun () -> let e = expression (n - 1) st in loc (Unary (unary_operator st, e.it, e.at)));
         (6, fun () ->
             let op = binary_operator st in
             let l = expression (n / 2) st in

@@ -55,9 +55,9 @@ let rec shape (e : expression) =
   | Data_reference r -> reference (Ast.reference e r)
   | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
   | Aggregate (es, rs) -> "[" ^ String.concat "," (Array.to_list (Array.map shape (members es rs))) ^ "]"
-  | Unary (Unary_minus, e) -> "(neg " ^ shape e ^ ")"
-  | Unary (Unary_plus, e) -> "(pos " ^ shape e ^ ")"
-  | Unary (Not, e) -> "(NOT " ^ shape e ^ ")"
+  | Unary (Unary_minus, e, at) -> "(neg " ^ shape (operand e at) ^ ")"
+  | Unary (Unary_plus, e, at) -> "(pos " ^ shape (operand e at) ^ ")"
+  | Unary (Not, e, at) -> "(NOT " ^ shape (operand e at) ^ ")"
   | Binary (op, l, r) -> Printf.sprintf "(%s %s %s)" (binary_name op) (shape l) (shape r)
   | EXP_placeholder -> "<EXP>"
 
@@ -425,7 +425,7 @@ let compound_statements () =
             default = Some []; _ } -> ()
    | _ -> Alcotest.fail "TEST");
   (match one "FOR i FROM 10 TO 1 STEP -1 DO ENDFOR" with
-   | For { step = Some { it = Unary (Unary_minus, _); _ }; body = []; _ } -> ()
+   | For { step = Some { it = Unary (Unary_minus, _, _); _ }; body = []; _ } -> ()
    | _ -> Alcotest.fail "FOR STEP");
   (* §4.17: the compact IF takes a simple statement only. *)
   syntax_error_at ~line:3 ~col:6 (in_routine "IF a IF b x := 1;")

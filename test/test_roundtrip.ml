@@ -139,7 +139,7 @@ let census see (m : module_declaration) =
     | Data_reference r -> s "Data_reference"; data_reference (Ast.reference e r)
     | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument f.arguments
     | Aggregate (es, rs) -> s "Aggregate"; Array.iter expression (members es rs)
-    | Unary (op, e) -> s "Unary"; see "unary_operator" (unary op); expression e
+    | Unary (op, e, at) -> s "Unary"; see "unary_operator" (unary op); expression (operand e at)
     | Binary (op, l, r) -> s "Binary"; see "binary_operator" (binary op); expression l; expression r
     | EXP_placeholder -> s "EXP_placeholder"
   and data_reference (r : data_reference) =

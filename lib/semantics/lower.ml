@@ -79,7 +79,8 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
       make (Aggregate (Array.map (expr ctx ~dnum) (A.members es rs), kind))
-  | Unary (op, a) -> (
+  | Unary (op, a, a_at) -> (
+      let a = A.operand a a_at in
       match Hashtbl.find_opt ctx.elab.unary e.at with
       | Some row ->
           let operand = if dnum then Tables.O_dnum else row.operand in

@@ -89,7 +89,7 @@ let rec expression b (e : expression) =
       node b "arguments"; Array.iter (argument b) f.arguments; close b;
       close b
   | Aggregate (es, rs) -> node b "Aggregate"; Array.iter (expression b) (members es rs); close b
-  | Unary (op, e) -> node b "Unary"; word b (unary_operator op); expression b e; close b
+  | Unary (op, e, at) -> node b "Unary"; word b (unary_operator op); expression b (operand e at); close b
   | Binary (op, l, r) ->
       node b "Binary"; word b (binary_operator op); expression b l; expression b r; close b
   | EXP_placeholder -> word b "EXP_placeholder"

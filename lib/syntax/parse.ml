@@ -62,7 +62,7 @@ module Nesting = struct
     | Data_reference r -> reference d at r
     | Function_call f -> arguments d f.arguments
     | Aggregate (es, rs) -> Array.iteri (fun i m -> expression_at d rs.(i) m) es
-    | Unary (_, e) -> expression d e
+    | Unary (_, e, at) -> expression_at d at e
     | Binary (_, l, r) -> expression d l; expression d r
 
   and expressions d = function

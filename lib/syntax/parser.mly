@@ -275,7 +275,7 @@ expression:
    NOT applies to the first logical term; OR and XOR then associate to the left. *)
 expr:
   | t = logical_term { t }
-  | NOT t = logical_term { at $startpos $endpos (Unary (Not, t)) }
+  | NOT t = logical_term { at $startpos $endpos (Unary (Not, t.it, t.at)) }
   | e = expr op = or_operator t = logical_term { at $startpos $endpos (Binary (op, e, t)) }
 
 or_operator:
@@ -297,7 +297,7 @@ relation:
 simple_expr:
   | t = term { t }
   | op = addop t = term
-    { at $startpos $endpos (Unary ((match op with Plus -> Unary_plus | _ -> Unary_minus), t)) }
+    { at $startpos $endpos (Unary ((match op with Plus -> Unary_plus | _ -> Unary_minus), t.it, t.at)) }
   | e = simple_expr op = addop t = term { at $startpos $endpos (Binary (op, e, t)) }
 
 (* §3.1 <term> ::= <primary> { <mulop> <primary> } *)

@@ -55,8 +55,8 @@ let binary_operator = function
 let level_of (e : expression) =
   match e.it with
   | Binary (op, _, _) -> binary_level op
-  | Unary (Not, _) -> level_expr
-  | Unary ((Unary_plus | Unary_minus), _) -> level_simple_expr
+  | Unary (Not, _, _) -> level_expr
+  | Unary ((Unary_plus | Unary_minus), _, _) -> level_simple_expr
   | Num_literal _ | String_literal _ | Bool_literal _ | Data_reference _ | Function_call _ | Aggregate _
   | EXP_placeholder -> level_primary
 
@@ -79,9 +79,9 @@ and expression_bare b (e : expression) =
       str b "[";
       Array.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) (members es rs);
       str b "]"
-  | Unary (Not, e) -> str b "NOT "; expression b level_logical_term e
-  | Unary (Unary_plus, e) -> str b "+"; expression b level_term e
-  | Unary (Unary_minus, e) -> str b "-"; expression b level_term e
+  | Unary (Not, e, at) -> str b "NOT "; expression b level_logical_term (operand e at)
+  | Unary (Unary_plus, e, at) -> str b "+"; expression b level_term (operand e at)
+  | Unary (Unary_minus, e, at) -> str b "-"; expression b level_term (operand e at)
   | Binary (op, l, r) ->
       let level = binary_level op in
       (* Left-associative levels take their own level on the left; relations do not chain,

@@ -242,7 +242,7 @@ and infer ctx place (e : expression) : ty =
       error ctx ~rule:"aggregate-context" ~section:"3.10" e.at
         "the data type of this aggregate cannot be determined by its context";
       Unknown
-  | Unary (op, a) -> unary ctx place e op a
+  | Unary (op, a, at) -> unary ctx place e op (operand a at)
   | Binary (op, a, b) -> binary ctx place e op a b
 
 (* §2.16: an object used in an expression is of a value type, or of a semi-value type used as
@@ -708,7 +708,7 @@ let constant_expression ctx place ~what (e : expression) =
       | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
       | Function_call _ -> offending := Some (e.at, "a function call")
       | Aggregate (es, rs) -> Array.iter walk (members es rs)
-      | Unary (_, a) -> walk a
+      | Unary (_, a, at) -> walk (operand a at)
       | Binary (_, a, b) -> walk a; walk b
       | Data_reference r -> reference_walk (Ast.reference e r)
   and reference_walk (r : data_reference) =
@@ -741,7 +741,7 @@ let literal_expression ctx (e : expression) =
   let rec ok (e : expression) =
     match e.it with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> true
-    | Unary ((Unary_plus | Unary_minus), { it = Num_literal _; _ }) -> true
+    | Unary ((Unary_plus | Unary_minus), Num_literal _, _) -> true
     | Aggregate (es, rs) -> Array.for_all ok (members es rs)
     | _ -> false
   in

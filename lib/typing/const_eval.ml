@@ -32,8 +32,8 @@ let eval ~lookup e =
         if List.mem key seen then None
         else Option.bind (lookup name) (eval (key :: seen))
     | Data_reference _ | Function_call _ | Aggregate _ | EXP_placeholder -> None
-    | Unary (op, a) -> (
-        match op, eval seen a with
+    | Unary (op, a, at) -> (
+        match op, eval seen (operand a at) with
         | Unary_plus, Some (Number q) -> Some (Number q)
         | Unary_minus, Some (Number q) -> Some (Number (Q.neg q))
         | Not, Some (Boolean b) -> Some (Boolean (not b))
