@@ -261,7 +261,8 @@ and function_call n st : function_call =
                 let nm = ident_only st in
                 loc (Conditional_argument (nm, data_reference m st))) ])
   in
-  { func; arguments = Array.of_list arguments }
+  let (arguments, argument_regions) = argument_arrays arguments in
+  { func; arguments; argument_regions }
 
 (* §4.6: names are <identifier>, values <expression>; <ARG> and, in a conditional argument,
    <VAR> are allowed. *)
@@ -299,7 +300,8 @@ let simple_statement n st : statement =
                if chance st 0.15 then Late_bound (expression ~top:true (n / 2) st)
                else Procedure_name (identifier st)
              in
-             Procedure_call (p, Array.of_list (procedure_arguments (n / 2) st)));
+             let (args, regions) = argument_arrays (procedure_arguments (n / 2) st) in
+             Procedure_call (p, args, regions));
          (1, fun () -> Goto (identifier st));
          (1, fun () -> Break);
          (1, fun () -> Continue);

@@ -53,7 +53,7 @@ let rec shape (e : expression) =
   | String_literal s -> "\"" ^ s.raw ^ "\""
   | Bool_literal b -> if b then "TRUE" else "FALSE"
   | Data_reference r -> reference (Ast.reference e r)
-  | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
+  | Function_call f -> identifier f.func ^ "(" ^ args (call_arguments f) ^ ")"
   | Aggregate (es, rs) -> "[" ^ String.concat "," (Array.to_list (Array.map shape (members es rs))) ^ "]"
   | Unary (Unary_minus, e, at) -> "(neg " ^ shape (operand e at) ^ ")"
   | Unary (Unary_plus, e, at) -> "(pos " ^ shape (operand e at) ^ ")"
@@ -91,8 +91,8 @@ let kind (s : statement) =
   match s.it with
   | Statement_comment c -> "!" ^ c
   | Assignment _ -> "assignment"
-  | Procedure_call (Procedure_name n, a) -> identifier n ^ "(" ^ args a ^ ")"
-  | Procedure_call (Late_bound e, a) -> "%" ^ shape e ^ "%(" ^ args a ^ ")"
+  | Procedure_call (Procedure_name n, a, rs) -> identifier n ^ "(" ^ args (Ast.arguments a rs) ^ ")"
+  | Procedure_call (Late_bound e, a, rs) -> "%" ^ shape e ^ "%(" ^ args (Ast.arguments a rs) ^ ")"
   | Label i -> identifier i ^ ":"
   | Goto i -> "GOTO " ^ identifier i
   | Connect (r, t) -> "CONNECT " ^ reference r ^ " WITH " ^ identifier t

@@ -137,7 +137,7 @@ let census see (m : module_declaration) =
     | String_literal _ -> s "String_literal"
     | Bool_literal _ -> s "Bool_literal"
     | Data_reference r -> s "Data_reference"; data_reference (Ast.reference e r)
-    | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument f.arguments
+    | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument (call_arguments f)
     | Aggregate (es, rs) -> s "Aggregate"; Array.iter expression (members es rs)
     | Unary (op, e, at) -> s "Unary"; see "unary_operator" (unary op); expression (operand e at)
     | Binary (op, l, r) -> s "Binary"; see "binary_operator" (binary op); expression l; expression r
@@ -161,12 +161,12 @@ let census see (m : module_declaration) =
     let s = see "statement" in
     match st.it with
     | Assignment (r, e) -> s "Assignment"; data_reference r; expression e
-    | Procedure_call (p, args) ->
+    | Procedure_call (p, args, regions) ->
         s "Procedure_call";
         (match p with
          | Procedure_name i -> see "procedure" "Procedure_name"; identifier i
          | Late_bound e -> see "procedure" "Late_bound"; expression e);
-        Array.iter argument args
+        Array.iter argument (Ast.arguments args regions)
     | Goto i -> s "Goto"; identifier i
     | Break -> s "Break"
     | Continue -> s "Continue"

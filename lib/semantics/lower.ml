@@ -74,7 +74,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
-  | Function_call f -> make (Call (call ctx e.at f.func f.arguments))
+  | Function_call f -> make (Call (call ctx e.at f.func))
   | Aggregate (es, rs) ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
@@ -128,7 +128,7 @@ and unary_op (op : A.unary_operator) (o : Tables.operand) : Arith.unary =
   | Unary_plus, O_dnum -> Dnum_plus | Unary_plus, O_pos -> Pos_plus | Unary_plus, _ -> Num_plus
 
 (* §3.11, §4.6, §5.2: each parameter of the callee gets its argument. *)
-and call ctx (at : Source.region) (name : A.identifier) (_ : A.argument array) : Ir.call =
+and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
@@ -209,11 +209,12 @@ and statement ctx (s : A.statement) : Ir.stmt =
             | _ -> false)
         | _ -> false in
       make (Assign (place ctx target, expr ctx ~dnum e))
-  | Procedure_call (_, args) when Array.exists (fun (a : A.argument) -> a.it = ARG_placeholder) args ->
+  | Procedure_call (_, args, _) when Array.exists (fun (a : A.argument_desc) -> a = ARG_placeholder) args ->
       (* §2.9: executing a placeholder is ERR_EXECPHR. *)
       make Placeholder_statement
-  | Procedure_call (Procedure_name id, args) -> make (Call_procedure (call ctx s.at id args))
-  | Procedure_call (Late_bound e, args) ->
+  | Procedure_call (Procedure_name id, _, _) -> make (Call_procedure (call ctx s.at id))
+  | Procedure_call (Late_bound e, args, regions) ->
+      let args = A.arguments args regions in
       let late (a : A.argument) : Ir.late_argument =
         let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
         match a.it with

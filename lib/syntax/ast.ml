@@ -69,10 +69,15 @@ and data_reference_desc =
   | VAR_placeholder                                   (* <VAR> *)
 
 (* §3.11 <function call> *)
-and function_call = { func : identifier; arguments : argument array }
+and function_call = {
+  func : identifier;
+  arguments : argument_desc array;
+  argument_regions : region array;
+}
 
-(* Argument lists are arrays, like aggregates: a slot is one word where a list cell is three,
-   and CAD modules are mostly calls (bench/README.md). *)
+(* Argument lists are held like aggregates' members: contents and regions in two arrays, two
+   words an argument where a list of [located] records took seven; CAD modules are mostly
+   calls (bench/README.md). [arguments] gives them as [argument]s. *)
 
 (* §3.11 and §4.6: required, optional and conditional arguments. The comma that may precede an
    optional or conditional argument is layout, not structure. *)
@@ -91,7 +96,7 @@ type procedure =
 type statement = statement_desc located
 and statement_desc =
   | Assignment of data_reference * expression         (* §4.5 *)
-  | Procedure_call of procedure * argument array      (* §4.6 *)
+  | Procedure_call of procedure * argument_desc array * region array   (* §4.6 *)
   | Goto of identifier                                (* §4.7 *)
   | Break                                             (* §4.8 *)
   | Continue                                          (* §4.9 *)
@@ -256,3 +261,13 @@ let members (descs : expression_desc array) (regions : region array) : expressio
 
 (* The operand of a [Unary] node, as an expression. *)
 let operand (it : expression_desc) (at : region) : expression = { it; at }
+
+(* The arguments [args] as a call holds them, and back. *)
+let argument_arrays (args : argument list) : argument_desc array * region array =
+  let args = Array.of_list args in
+  (Array.map (fun a -> a.it) args, Array.map (fun a -> a.at) args)
+
+let arguments (descs : argument_desc array) (regions : region array) : argument array =
+  Array.mapi (fun i it -> { it; at = regions.(i) }) descs
+
+let call_arguments (f : function_call) = arguments f.arguments f.argument_regions

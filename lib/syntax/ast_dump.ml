@@ -86,7 +86,7 @@ let rec expression b (e : expression) =
   | Data_reference r -> node b "Data_reference"; reference b r; close b
   | Function_call f ->
       node b "Function_call"; identifier b f.func;
-      node b "arguments"; Array.iter (argument b) f.arguments; close b;
+      node b "arguments"; Array.iter (argument b) (call_arguments f); close b;
       close b
   | Aggregate (es, rs) -> node b "Aggregate"; Array.iter (expression b) (members es rs); close b
   | Unary (op, e, at) -> node b "Unary"; word b (unary_operator op); expression b (operand e at); close b
@@ -122,12 +122,12 @@ let rec statement b ind (s : statement) =
   match s.it with
   | Assignment (r, e) ->
       line_node b ind "Assignment"; data_reference b r; expression b e; close b
-  | Procedure_call (p, args) ->
+  | Procedure_call (p, args, regions) ->
       line_node b ind "Procedure_call";
       (match p with
        | Procedure_name i -> node b "Procedure_name"; identifier b i; close b
        | Late_bound e -> node b "Late_bound"; expression b e; close b);
-      Array.iter (argument b) args;
+      Array.iter (argument b) (Ast.arguments args regions);
       close b
   | Goto i -> line_node b ind "Goto"; identifier b i; close b
   | Break -> line_word b ind "Break"

@@ -83,9 +83,10 @@ module Nesting = struct
     | Element (_, es) -> expressions d es
     | Component (r, _) -> data_reference d r
 
+  (* Arguments are not levels of nesting of their own: only their contents are walked. *)
   and arguments d args =
-    Array.iter (fun (a : argument) ->
-        match a.it with
+    Array.iter (fun (a : argument_desc) ->
+        match a with
         | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
         | Conditional_argument (_, r) -> data_reference d r
         | Optional_argument (_, None) | ARG_placeholder -> ()) args
@@ -94,7 +95,7 @@ module Nesting = struct
     let d = enter d s.at in
     match s.it with
     | Assignment (r, e) -> data_reference d r; expression d e
-    | Procedure_call (p, args) ->
+    | Procedure_call (p, args, _) ->
         (match p with Late_bound e -> expression d e | Procedure_name _ -> ());
         arguments d args
     | Return e | Raise e -> optional_expression d e

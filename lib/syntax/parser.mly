@@ -397,7 +397,8 @@ aggregate:
 (* §3.11 <function call> ::= <function> '(' [ <function argument list> ] ')' *)
 function_call:
   | func = function_ LPAREN arguments = loption(function_argument_list) RPAREN
-    { { func; arguments = Array.of_list arguments } }
+    { let (arguments, argument_regions) = Ast.argument_arrays arguments in
+      { func; arguments; argument_regions } }
 
 (* §3.11 <function> ::= <identifier> *)
 function_:
@@ -498,7 +499,7 @@ assignment_target:
 (* §4.6 <procedure call> ::= <procedure> [ <procedure argument list> ] ';' *)
 procedure_call:
   | p = procedure args = loption(procedure_argument_list) SEMICOLON
-    { Procedure_call (p, Array.of_list args) }
+    { let (args, regions) = Ast.argument_arrays args in Procedure_call (p, args, regions) }
 
 (* §4.6 <procedure> ::= <identifier> | '%' <expression> '%' *)
 procedure:

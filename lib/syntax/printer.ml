@@ -74,7 +74,7 @@ and expression_bare b (e : expression) =
   | Data_reference r -> reference b r
   | Function_call f ->
       (* §3.11 *)
-      identifier b f.func; str b "("; arguments b ~first_separator:"" f.arguments; str b ")"
+      identifier b f.func; str b "("; arguments b ~first_separator:"" (call_arguments f); str b ")"
   | Aggregate (es, rs) ->                                           (* §3.10 *)
       str b "[";
       Array.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) (members es rs);
@@ -137,11 +137,11 @@ let rec statement b ind (s : statement) = indent b ind; statement_rest b ind s
 and statement_rest b ind (s : statement) =
   match s.it with
   | Assignment (r, e) -> data_reference b r; str b " := "; expression_text b e; str b ";"; newline b
-  | Procedure_call (p, args) ->
+  | Procedure_call (p, args, regions) ->
       (match p with
        | Procedure_name i -> identifier b i
        | Late_bound e -> str b "%"; expression_text b e; str b "%");
-      arguments b ~first_separator:" " args;
+      arguments b ~first_separator:" " (Ast.arguments args regions);
       str b ";"; newline b
   | Goto i -> str b "GOTO "; identifier b i; str b ";"; newline b
   | Break -> str b "BREAK;"; newline b

@@ -635,12 +635,12 @@ and loosely_expression ctx place (e : expression) =
 
 and function_call ctx place region (call : function_call) : ty =
   match call.func.it with
-  | ID_placeholder -> loose_arguments ctx place call.arguments; Unknown
+  | ID_placeholder -> loose_arguments ctx place (call_arguments call); Unknown
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Function result; _ } as r) as o) ->
           Hashtbl.replace ctx.elab.names call.func.at o;
-          arguments ctx place region r call.arguments;
+          arguments ctx place region r (call_arguments call);
           if is_unknown result then Unknown else Known result
       | Some (Routine _) ->
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is not a function" name;
@@ -649,7 +649,7 @@ and function_call ctx place region (call : function_call) : ty =
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
             (Env.obj_kind_name o);
           Unknown
-      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place call.arguments; Unknown)
+      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
 
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
@@ -775,8 +775,10 @@ and statement ctx place (s : statement) =
       match assignment_target ctx place target with
       | Known t -> check_expression ~sections:"4.5,2.17" ctx place e t
       | Numeric_literal | Unknown -> loosely_expression ctx place e)
-  | Procedure_call (Procedure_name id, args) -> procedure_call ctx place s id args
-  | Procedure_call (Late_bound e, args) ->
+  | Procedure_call (Procedure_name id, args, regions) ->
+      procedure_call ctx place s id (Ast.arguments args regions)
+  | Procedure_call (Late_bound e, args, regions) ->
+      let args = Ast.arguments args regions in
       (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
          routine then (ERR_REFUNKPRC, ERR_CALLPROC). *)
       check_expression ~sections:"4.6,2.17" ctx place e (T.scalar String);
