@@ -31,7 +31,7 @@ let count (m : module_declaration) =
   and arguments args =
     Array.iter (fun (a : argument) ->
         match a.it with
-        | Required_argument (_, e) -> expression e
+        | Required_argument (_, e, at) -> expression (operand e at)
         | Optional_argument (_, e) -> see "optional argument (§4.6)"; Option.iter expression e
         | Conditional_argument _ -> see "conditional argument (§4.6)"
         | ARG_placeholder -> ()) args

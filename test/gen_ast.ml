@@ -253,7 +253,8 @@ and function_call n st : function_call =
         weighted st
           [ (4, fun () ->
                 let nm = if chance st 0.2 then Some (ident_only st) else None in
-                loc (Required_argument (nm, expression m st)));
+                let e = expression m st in
+                loc (Required_argument (nm, e.it, e.at)));
             (2, fun () ->
                 let nm = ident_only st in
                 loc (Optional_argument (nm, if chance st 0.5 then Some (expression m st) else None)));
@@ -271,7 +272,8 @@ let procedure_arguments n st : argument list =
       weighted st
         [ (5, fun () ->
               let nm = if chance st 0.2 then Some (identifier st) else None in
-              loc (Required_argument (nm, expression ~top:true m st)));
+              let e = expression ~top:true m st in
+              loc (Required_argument (nm, e.it, e.at)));
           (2, fun () ->
               let nm = identifier st in
               loc (Optional_argument

@@ -71,8 +71,8 @@ and reference (r : data_reference) =
 and args l =
   String.concat "," (List.map (fun (a : argument) ->
       match a.it with
-      | Required_argument (None, e) -> shape e
-      | Required_argument (Some n, e) -> identifier n ^ ":=" ^ shape e
+      | Required_argument (None, e, at) -> shape (operand e at)
+      | Required_argument (Some n, e, at) -> identifier n ^ ":=" ^ shape (operand e at)
       | Optional_argument (n, None) -> "\\" ^ identifier n
       | Optional_argument (n, Some e) -> "\\" ^ identifier n ^ ":=" ^ shape e
       | Conditional_argument (n, r) -> "\\" ^ identifier n ^ "?" ^ reference r

@@ -152,7 +152,7 @@ let census see (m : module_declaration) =
   and argument (a : argument) =
     let s = see "argument" in
     match a.it with
-    | Required_argument (n, e) -> s "Required_argument"; Option.iter identifier n; expression e
+    | Required_argument (n, e, at) -> s "Required_argument"; Option.iter identifier n; expression (operand e at)
     | Optional_argument (n, e) -> s "Optional_argument"; identifier n; Option.iter expression e
     | Conditional_argument (n, r) -> s "Conditional_argument"; identifier n; data_reference r
     | ARG_placeholder -> s "ARG_placeholder"

@@ -168,22 +168,25 @@ and optional_parameter_slot ctx (e : A.expression) =
 
 and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
   let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
+  let value (e : A.expression) : Ir.argument =
+    match p.p_mode with
+    | Mode_in -> By_value (expr ctx ~dnum e)
+    | Mode_ref when optional_parameter_slot ctx e <> None ->
+        (* Present and the other REF parameters see an absent optional parameter as absent
+           instead of using its value (§5.2, ch. 11). *)
+        Pass_on (Option.get (optional_parameter_slot ctx e))
+    | _ -> (
+        match e.it with
+        | Data_reference r -> By_reference (place ctx (A.reference e r), reference_kind ctx e)
+        | _ -> By_value (expr ctx ~dnum e))
+  in
   match a.it with
   | Optional_argument (_, None) -> Present_switch
   | Conditional_argument (_, r) -> (
       match place ctx r with Whole s -> Pass_on s | _ -> Absent)
   | ARG_placeholder -> By_value { e = Placeholder; at = a.at }
-  | Required_argument (_, e) | Optional_argument (_, Some e) -> (
-      match p.p_mode with
-      | Mode_in -> By_value (expr ctx ~dnum e)
-      | Mode_ref when optional_parameter_slot ctx e <> None ->
-          (* Present and the other REF parameters see an absent optional parameter as absent
-             instead of using its value (§5.2, ch. 11). *)
-          Pass_on (Option.get (optional_parameter_slot ctx e))
-      | _ -> (
-          match e.it with
-          | Data_reference r -> By_reference (place ctx (A.reference e r), reference_kind ctx e)
-          | _ -> By_value (expr ctx ~dnum e)))
+  | Required_argument (_, e, at) -> value (A.operand e at)
+  | Optional_argument (_, Some e) -> value e
 
 (* ------------------------------------------------------------------ statements *)
 
@@ -218,7 +221,8 @@ and statement ctx (s : A.statement) : Ir.stmt =
       let late (a : A.argument) : Ir.late_argument =
         let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
         match a.it with
-        | Required_argument (n, e) ->
+        | Required_argument (n, e, at) ->
+            let e = A.operand e at in
             { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e);
               late_kind = reference_kind ctx e }
         | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch; late_kind = Ref_other }

@@ -83,7 +83,9 @@ and function_call = {
    optional or conditional argument is layout, not structure. *)
 and argument = argument_desc located
 and argument_desc =
-  | Required_argument of identifier option * expression   (* [ name ':=' ] expression *)
+  (* [ name ':=' ] expression; the expression's contents and region without a [located] record
+     of their own, as in [Unary] ([argument_value] rebuilds it). *)
+  | Required_argument of identifier option * expression_desc * region
   | Optional_argument of identifier * expression option    (* '\' name [ ':=' expression ] *)
   | Conditional_argument of identifier * data_reference    (* '\' name '?' parameter *)
   | ARG_placeholder                                         (* <ARG>, procedure calls only *)
@@ -271,3 +273,10 @@ let arguments (descs : argument_desc array) (regions : region array) : argument 
   Array.mapi (fun i it -> { it; at = regions.(i) }) descs
 
 let call_arguments (f : function_call) = arguments f.arguments f.argument_regions
+
+(* The expression an argument gives, if any: a required argument's, an optional one's value. *)
+let argument_value (a : argument_desc) : expression option =
+  match a with
+  | Required_argument (_, it, at) -> Some { it; at }
+  | Optional_argument (_, e) -> e
+  | Conditional_argument _ | ARG_placeholder -> None

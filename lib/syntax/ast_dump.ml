@@ -106,10 +106,10 @@ and reference b (r : data_reference_desc) =
 
 and argument b (a : argument) =
   match a.it with
-  | Required_argument (n, e) ->
+  | Required_argument (n, e, at) ->
       node b "Required_argument";
       Option.iter (fun n -> node b "name"; identifier b n; close b) n;
-      expression b e; close b
+      expression b (operand e at); close b
   | Optional_argument (n, e) ->
       node b "Optional_argument"; identifier b n; Option.iter (expression b) e; close b
   | Conditional_argument (n, r) ->

@@ -87,7 +87,8 @@ module Nesting = struct
   and arguments d args =
     Array.iter (fun (a : argument_desc) ->
         match a with
-        | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
+        | Required_argument (_, e, at) -> expression_at d at e
+        | Optional_argument (_, Some e) -> expression d e
         | Conditional_argument (_, r) -> data_reference d r
         | Optional_argument (_, None) | ARG_placeholder -> ()) args
 

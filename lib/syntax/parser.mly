@@ -426,9 +426,9 @@ function_argument:
 
 (* §3.11 <required function argument> ::= [ <ident> ':=' ] <expr> *)
 required_function_argument:
-  | e = expr { at $startpos $endpos (Required_argument (None, e)) }
+  | e = expr { at $startpos $endpos (Required_argument (None, e.it, e.at)) }
   | n = ident ASSIGN e = expr
-    { at $startpos $endpos (Required_argument (Some { it = Parse_context.ident n.it; at = n.at }, e)) }
+    { at $startpos $endpos (Required_argument (Some { it = Parse_context.ident n.it; at = n.at }, e.it, e.at)) }
 
 (* §3.11 <optional function argument> ::= '\' <ident> [ ':=' <expr> ] *)
 optional_function_argument:
@@ -531,8 +531,9 @@ procedure_argument:
 
 (* §4.6 <required procedure argument> ::= [ <identifier> ':=' ] <expression> *)
 required_procedure_argument:
-  | e = expression { at $startpos $endpos (Required_argument (None, e)) }
-  | n = identifier ASSIGN e = expression { at $startpos $endpos (Required_argument (Some n, e)) }
+  | e = expression { at $startpos $endpos (Required_argument (None, e.it, e.at)) }
+  | n = identifier ASSIGN e = expression
+    { at $startpos $endpos (Required_argument (Some n, e.it, e.at)) }
 
 (* §4.6 <optional procedure argument> ::= '\' <identifier> [ ':=' <expression> ] *)
 optional_procedure_argument:

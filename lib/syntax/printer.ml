@@ -118,8 +118,9 @@ and arguments b ~first_separator args =
        | Optional_argument _ | Conditional_argument _ ->
            str b (if i = 0 then first_separator else " "));
       match a.it with
-      | Required_argument (None, e) -> expression b level_expr e
-      | Required_argument (Some n, e) -> identifier b n; str b ":="; expression b level_expr e
+      | Required_argument (None, e, at) -> expression b level_expr (operand e at)
+      | Required_argument (Some n, e, at) ->
+          identifier b n; str b ":="; expression b level_expr (operand e at)
       | Optional_argument (n, None) -> str b "\\"; identifier b n
       | Optional_argument (n, Some e) ->
           str b "\\"; identifier b n; str b ":="; expression b level_expr e

@@ -524,8 +524,8 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   let arg_name (a : argument) =
     match a.it with
     | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
-    | Required_argument (Some n, _) -> name_of_identifier n
-    | Required_argument (None, _) | ARG_placeholder -> None
+    | Required_argument (Some n, _, _) -> name_of_identifier n
+    | Required_argument (None, _, _) | ARG_placeholder -> None
   in
   let rec go slots (args : argument list) =
     match slots, args with
@@ -533,7 +533,8 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | [], [] -> ()
     | [], a :: _ ->
         error ctx ~rule:"argument-count" ~section:call a.at "%s takes no more arguments" routine.r_name
-    | Env.Required_slot p :: slots, ({ it = Required_argument (name, e); _ } as a) :: rest ->
+    | Env.Required_slot p :: slots, ({ it = Required_argument (name, e, e_at); _ } as a) :: rest ->
+        let e = operand e e_at in
         (match Option.bind name name_of_identifier with
          | Some n when not (T.same_name n p.p_name) ->
              error ctx ~rule:"argument-name" ~section:call a.at
@@ -654,9 +655,9 @@ and function_call ctx place region (call : function_call) : ty =
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
       match a.it with
-      | Required_argument (_, e) | Optional_argument (_, Some e) -> loosely_expression ctx place e
-      | Conditional_argument (_, r) -> ignore (reference ctx place r)
-      | Optional_argument (_, None) | ARG_placeholder -> ()) args
+      | Required_argument _ | Optional_argument _ | ARG_placeholder ->
+          Option.iter (loosely_expression ctx place) (argument_value a.it)
+      | Conditional_argument (_, r) -> ignore (reference ctx place r)) args
 
 (* ------------------------------------------------------------------ assignment targets *)
 
