@@ -5,7 +5,20 @@
    a rule that is told apart from another only by what a name is bound to (§3.6-§3.9), the tree
    has one constructor and the static semantics tells them apart. Comments are list elements,
    exactly where §2.10 puts them. Identifiers keep their spelling; reserved words do not (the
-   printer writes them in upper case). *)
+   printer writes them in upper case).
+
+   Size. A CAD module is mostly calls with aggregates of numbers, and its tree stays alive
+   while the module is checked and run, so the expression part of the tree is kept small
+   (bench/README.md, "Memory: where it goes"):
+   - a child whose region is held elsewhere gets no [located] record of its own: aggregate
+     members and call arguments are two arrays (contents, regions), a unary operand and a
+     required argument's expression are a pair of fields, and a reference that is an
+     expression has the expression's region. [members], [arguments], [operand] and
+     [reference] rebuild the [located] values, for the code that wants them;
+   - nodes without a region are shared within a parse (Parse_context): short numeric
+     literals, [Ident] and [Data_reference (Entire _)] nodes. Nothing may compare nodes by
+     physical equality or mutate them.
+   Every node still has its region. *)
 
 type region = Source.region
 type 'a located = { it : 'a; at : region }
@@ -261,7 +274,7 @@ let aggregate (es : expression list) : expression_desc =
 let members (descs : expression_desc array) (regions : region array) : expression array =
   Array.mapi (fun i it -> { it; at = regions.(i) }) descs
 
-(* The operand of a [Unary] node, as an expression. *)
+(* The expression a [Unary] node or a [Required_argument] holds as contents and region. *)
 let operand (it : expression_desc) (at : region) : expression = { it; at }
 
 (* The arguments [args] as a call holds them, and back. *)
