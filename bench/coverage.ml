@@ -32,6 +32,7 @@ let count (m : module_declaration) =
     Array.iter (fun (a : argument) ->
         match a.it with
         | Required_argument (_, e, at) -> expression (operand e at)
+        | Positional_argument e -> expression (operand e a.at)
         | Optional_argument (_, e) -> see "optional argument (§4.6)"; Option.iter expression e
         | Conditional_argument _ -> see "conditional argument (§4.6)"
         | ARG_placeholder -> ()) args

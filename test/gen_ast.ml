@@ -254,7 +254,7 @@ and function_call n st : function_call =
           [ (4, fun () ->
                 let nm = if chance st 0.2 then Some (ident_only st) else None in
                 let e = expression m st in
-                loc (Required_argument (nm, e.it, e.at)));
+                loc (required_argument nm e Source.no_region));
             (2, fun () ->
                 let nm = ident_only st in
                 loc (Optional_argument (nm, if chance st 0.5 then Some (expression m st) else None)));
@@ -273,7 +273,7 @@ let procedure_arguments n st : argument list =
         [ (5, fun () ->
               let nm = if chance st 0.2 then Some (identifier st) else None in
               let e = expression ~top:true m st in
-              loc (Required_argument (nm, e.it, e.at)));
+              loc (required_argument nm e Source.no_region));
           (2, fun () ->
               let nm = identifier st in
               loc (Optional_argument

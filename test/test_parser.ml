@@ -72,6 +72,7 @@ and args l =
   String.concat "," (List.map (fun (a : argument) ->
       match a.it with
       | Required_argument (None, e, at) -> shape (operand e at)
+      | Positional_argument e -> shape (operand e a.at)
       | Required_argument (Some n, e, at) -> identifier n ^ ":=" ^ shape (operand e at)
       | Optional_argument (n, None) -> "\\" ^ identifier n
       | Optional_argument (n, Some e) -> "\\" ^ identifier n ^ ":=" ^ shape e
@@ -430,6 +431,27 @@ let compound_statements () =
   (* §4.17: the compact IF takes a simple statement only. *)
   syntax_error_at ~line:3 ~col:6 (in_routine "IF a IF b x := 1;")
 
+(* The tree keeps an argument's region apart from its expression's only where they differ
+   (ast.ml, [Positional_argument]): in parentheses the argument's region takes them in. *)
+let argument_regions () =
+  let columns (r : Source.region) = ((Source.start r).col, (Source.stop r).col) in
+  let check_call text ~argument ~expression =
+    match statements (parse_ok (in_routine text)) with
+    | [ { it = Procedure_call (_, descs, regions); _ } ] -> (
+        match Ast.arguments descs regions with
+        | [| a |] ->
+            Alcotest.(check (pair int int)) (text ^ ": argument") argument (columns a.at);
+            (match Ast.argument_value a with
+             | Some e -> Alcotest.(check (pair int int)) (text ^ ": expression") expression (columns e.at)
+             | None -> Alcotest.failf "%s: no expression" text)
+        | _ -> Alcotest.failf "%s: expected one argument" text)
+    | _ -> Alcotest.failf "%s: expected one call" text
+  in
+  check_call "P a + 1;" ~argument:(3, 8) ~expression:(3, 8);
+  check_call "P (a + 1);" ~argument:(3, 10) ~expression:(4, 9);
+  check_call "P ( a );" ~argument:(3, 8) ~expression:(5, 6);
+  check_call "P x := a;" ~argument:(3, 9) ~expression:(8, 9)
+
 let suite =
   ( "parser",
     List.map (fun (name, f) -> Alcotest.test_case name `Quick f) [
@@ -438,6 +460,7 @@ let suite =
       ("§2.10 comment filing", comment_filing);
       ("§2.10 comments in records", record_comments);
       ("§3.11 §4.6 arguments", arguments);
+      ("§3.11 §4.6 argument regions", argument_regions);
       ("§5.2 switch and other parameters", switch_parameters);
       ("§2.18 TASK", task);
       ("§2.3 <ID> where <identifier> is", id_placeholder);

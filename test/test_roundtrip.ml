@@ -91,7 +91,8 @@ let all_constructors =
       "EXP_placeholder" ];
     "data_reference", [ "Entire"; "Element"; "Component"; "VAR_placeholder" ];
     "argument",
-    [ "Required_argument"; "Optional_argument"; "Conditional_argument"; "ARG_placeholder" ];
+    [ "Required_argument"; "Positional_argument"; "Optional_argument"; "Conditional_argument";
+      "ARG_placeholder" ];
     "procedure", [ "Procedure_name"; "Late_bound" ];
     "statement",
     [ "Assignment"; "Procedure_call"; "Goto"; "Break"; "Continue"; "Return"; "Raise"; "Exit";
@@ -153,6 +154,7 @@ let census see (m : module_declaration) =
     let s = see "argument" in
     match a.it with
     | Required_argument (n, e, at) -> s "Required_argument"; Option.iter identifier n; expression (operand e at)
+    | Positional_argument e -> s "Positional_argument"; expression (operand e a.at)
     | Optional_argument (n, e) -> s "Optional_argument"; identifier n; Option.iter expression e
     | Conditional_argument (n, r) -> s "Conditional_argument"; identifier n; data_reference r
     | ARG_placeholder -> s "ARG_placeholder"

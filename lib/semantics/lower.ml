@@ -186,6 +186,7 @@ and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
       match place ctx r with Whole s -> Pass_on s | _ -> Absent)
   | ARG_placeholder -> By_value { e = Placeholder; at = a.at }
   | Required_argument (_, e, at) -> value (A.operand e at)
+  | Positional_argument e -> value (A.operand e a.at)
   | Optional_argument (_, Some e) -> value e
 
 (* ------------------------------------------------------------------ statements *)
@@ -225,6 +226,9 @@ and statement ctx (s : A.statement) : Ir.stmt =
             let e = A.operand e at in
             { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e);
               late_kind = reference_kind ctx e }
+        | Positional_argument e ->
+            let e = A.operand e a.at in
+            { late_name = None; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
         | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch; late_kind = Ref_other }
         | Optional_argument (n, Some e) ->
             { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }

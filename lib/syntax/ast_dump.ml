@@ -106,6 +106,7 @@ and reference b (r : data_reference_desc) =
 
 and argument b (a : argument) =
   match a.it with
+  | Positional_argument e -> node b "Required_argument"; expression b (operand e a.at); close b
   | Required_argument (n, e, at) ->
       node b "Required_argument";
       Option.iter (fun n -> node b "name"; identifier b n; close b) n;

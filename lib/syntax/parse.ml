@@ -60,7 +60,7 @@ module Nesting = struct
     match e with
     | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
     | Data_reference r -> reference d at r
-    | Function_call f -> arguments d f.arguments
+    | Function_call f -> arguments d f.arguments f.argument_regions
     | Aggregate (es, rs) -> Array.iteri (fun i m -> expression_at d rs.(i) m) es
     | Unary (_, e, at) -> expression_at d at e
     | Binary (_, l, r) -> expression d l; expression d r
@@ -84,10 +84,11 @@ module Nesting = struct
     | Component (r, _) -> data_reference d r
 
   (* Arguments are not levels of nesting of their own: only their contents are walked. *)
-  and arguments d args =
-    Array.iter (fun (a : argument_desc) ->
+  and arguments d args regions =
+    Array.iteri (fun i (a : argument_desc) ->
         match a with
         | Required_argument (_, e, at) -> expression_at d at e
+        | Positional_argument e -> expression_at d regions.(i) e
         | Optional_argument (_, Some e) -> expression d e
         | Conditional_argument (_, r) -> data_reference d r
         | Optional_argument (_, None) | ARG_placeholder -> ()) args
@@ -96,9 +97,9 @@ module Nesting = struct
     let d = enter d s.at in
     match s.it with
     | Assignment (r, e) -> data_reference d r; expression d e
-    | Procedure_call (p, args, _) ->
+    | Procedure_call (p, args, regions) ->
         (match p with Late_bound e -> expression d e | Procedure_name _ -> ());
-        arguments d args
+        arguments d args regions
     | Return e | Raise e -> optional_expression d e
     | Connect (r, _) -> data_reference d r
     | If i ->

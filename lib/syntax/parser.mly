@@ -40,6 +40,10 @@ let region (startpos : Lexing.position) (endpos : Lexing.position) =
 
 let at startpos endpos it = { it; at = region startpos endpos }
 
+let required_argument startpos endpos name (e : expression) =
+  let at = region startpos endpos in
+  { it = Ast.required_argument name e at; at }
+
 let refuse startpos endpos message =
   raise (Parse_context.Refused (region startpos endpos, message))
 
@@ -426,9 +430,9 @@ function_argument:
 
 (* §3.11 <required function argument> ::= [ <ident> ':=' ] <expr> *)
 required_function_argument:
-  | e = expr { at $startpos $endpos (Required_argument (None, e.it, e.at)) }
+  | e = expr { required_argument $startpos $endpos None e }
   | n = ident ASSIGN e = expr
-    { at $startpos $endpos (Required_argument (Some { it = Parse_context.ident n.it; at = n.at }, e.it, e.at)) }
+    { required_argument $startpos $endpos (Some { it = Parse_context.ident n.it; at = n.at }) e }
 
 (* §3.11 <optional function argument> ::= '\' <ident> [ ':=' <expr> ] *)
 optional_function_argument:
@@ -531,9 +535,9 @@ procedure_argument:
 
 (* §4.6 <required procedure argument> ::= [ <identifier> ':=' ] <expression> *)
 required_procedure_argument:
-  | e = expression { at $startpos $endpos (Required_argument (None, e.it, e.at)) }
+  | e = expression { required_argument $startpos $endpos None e }
   | n = identifier ASSIGN e = expression
-    { at $startpos $endpos (Required_argument (Some n, e.it, e.at)) }
+    { required_argument $startpos $endpos (Some n) e }
 
 (* §4.6 <optional procedure argument> ::= '\' <identifier> [ ':=' <expression> ] *)
 optional_procedure_argument:

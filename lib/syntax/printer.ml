@@ -113,12 +113,13 @@ and reference b (r : data_reference_desc) =
 and arguments b ~first_separator args =
   Array.iteri (fun i (a : argument) ->
       (match a.it with
-       | Required_argument _ | ARG_placeholder ->
+       | Required_argument _ | Positional_argument _ | ARG_placeholder ->
            str b (if i = 0 then first_separator else ", ")
        | Optional_argument _ | Conditional_argument _ ->
            str b (if i = 0 then first_separator else " "));
       match a.it with
       | Required_argument (None, e, at) -> expression b level_expr (operand e at)
+      | Positional_argument e -> expression b level_expr (operand e a.at)
       | Required_argument (Some n, e, at) ->
           identifier b n; str b ":="; expression b level_expr (operand e at)
       | Optional_argument (n, None) -> str b "\\"; identifier b n

@@ -525,7 +525,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     match a.it with
     | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
     | Required_argument (Some n, _, _) -> name_of_identifier n
-    | Required_argument (None, _, _) | ARG_placeholder -> None
+    | Required_argument (None, _, _) | Positional_argument _ | ARG_placeholder -> None
   in
   let rec go slots (args : argument list) =
     match slots, args with
@@ -541,6 +541,10 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                "the argument is named %s, but the parameter in this place is %s" n p.p_name
          | _ -> ());
         argument ~call ctx place a e p;
+        bind p a;
+        go slots rest
+    | Env.Required_slot p :: slots, ({ it = Positional_argument e; at } as a) :: rest ->
+        argument ~call ctx place a (operand e at) p;
         bind p a;
         go slots rest
     | Env.Required_slot p :: _, (a :: _) ->
@@ -624,7 +628,7 @@ and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
             error ctx ~rule:"equal-types" ~section:(call ^ ",2.17") a.at "expected a value of type %s, found %s"
               (T.to_string pt) (T.to_string t)
       | _ -> ())
-  | Required_argument _ | ARG_placeholder -> ()
+  | Required_argument _ | Positional_argument _ | ARG_placeholder -> ()
 
 (* An expression whose expected type is not known (an argument of an unknown routine or of a
    parameter whose type is unknown): a data reference may be of any value class there. *)
@@ -655,8 +659,8 @@ and function_call ctx place region (call : function_call) : ty =
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
       match a.it with
-      | Required_argument _ | Optional_argument _ | ARG_placeholder ->
-          Option.iter (loosely_expression ctx place) (argument_value a.it)
+      | Required_argument _ | Positional_argument _ | Optional_argument _ | ARG_placeholder ->
+          Option.iter (loosely_expression ctx place) (argument_value a)
       | Conditional_argument (_, r) -> ignore (reference ctx place r)) args
 
 (* ------------------------------------------------------------------ assignment targets *)
