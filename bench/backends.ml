@@ -17,7 +17,7 @@ type outcome =
 
 (* Both parsers read the same registered [file], so that their trees carry the same regions. *)
 let start file decoded =
-  Parse_context.file := file;
+  Parse_context.start file;
   Lexer.create file decoded
 
 (* As Parse.run_parser drives the table back end (without the options of --strict). *)

@@ -22,16 +22,17 @@ let count (m : module_declaration) =
   let see form = Hashtbl.replace table form (1 + count form) in
   let rec expression (e : expression) =
     match e.it with
-    | Literal (String_literal _) -> see "string literal (§2.7)"
-    | Literal _ | EXP_placeholder | Data_reference _ -> ()
-    | Function_call f -> arguments f.arguments
-    | Aggregate es -> List.iter expression es
-    | Unary (_, e) -> expression e
+    | String_literal _ -> see "string literal (§2.7)"
+    | Num_literal _ | Bool_literal _ | EXP_placeholder | Data_reference _ -> ()
+    | Function_call f -> arguments (call_arguments f)
+    | Aggregate (es, rs) -> Array.iter expression (members es rs)
+    | Unary (_, e, at) -> expression (operand e at)
     | Binary (_, l, r) -> expression l; expression r
   and arguments args =
-    List.iter (fun (a : argument) ->
+    Array.iter (fun (a : argument) ->
         match a.it with
-        | Required_argument (_, e) -> expression e
+        | Required_argument (_, e, at) -> expression (operand e at)
+        | Positional_argument e -> expression (operand e a.at)
         | Optional_argument (_, e) -> see "optional argument (§4.6)"; Option.iter expression e
         | Conditional_argument _ -> see "conditional argument (§4.6)"
         | ARG_placeholder -> ()) args
@@ -39,9 +40,10 @@ let count (m : module_declaration) =
   let rec statement (s : statement) =
     match s.it with
     | Assignment (_, e) -> see "assignment (§4.5)"; expression e
-    | Procedure_call (Procedure_name _, args) -> see "procedure call (§4.6)"; arguments args
-    | Procedure_call (Late_bound e, args) ->
-        see "late-bound call (§4.6)"; expression e; arguments args
+    | Procedure_call (Procedure_name _, args, rs) ->
+        see "procedure call (§4.6)"; arguments (Rapid_syntax.Ast.arguments args rs)
+    | Procedure_call (Late_bound e, args, rs) ->
+        see "late-bound call (§4.6)"; expression e; arguments (Rapid_syntax.Ast.arguments args rs)
     | Goto _ -> see "goto (§4.7)"
     | Break -> see "break (§4.8)"
     | Continue -> see "continue (§4.9)"

@@ -220,16 +220,16 @@ let literal st =
 let rec expression ?(top = false) n st : expression =
   if n <= 1 then
     weighted st
-      [ (4, fun () -> loc (Literal (literal st)));
-        (4, fun () -> loc (Data_reference (loc (Entire (name st)))));
+      [ (4, fun () -> loc (literal st));
+        (4, fun () -> loc (Data_reference (Entire (name st).it)));
         ((if top then 1 else 0), fun () -> loc EXP_placeholder) ]
   else
     weighted st
-      [ (3, fun () -> loc (Literal (literal st)));
-        (3, fun () -> loc (Data_reference (data_reference n st)));
+      [ (3, fun () -> loc (literal st));
+        (3, fun () -> loc (Data_reference (data_reference n st).it));
         (2, fun () -> loc (Function_call (function_call n st)));
-        (1, fun () -> loc (Aggregate (list_of st ~min:1 4 n (fun m -> expression m st))));
-        (3, fun () -> loc (Unary (unary_operator st, expression (n - 1) st)));
+        (1, fun () -> loc (aggregate (list_of st ~min:1 4 n (fun m -> expression m st))));
+        (3, fun () -> let e = expression (n - 1) st in loc (Unary (unary_operator st, e.it, e.at)));
         (6, fun () ->
             let op = binary_operator st in
             let l = expression (n / 2) st in
@@ -238,10 +238,10 @@ let rec expression ?(top = false) n st : expression =
 
 (* §3.6: <VAR> is not built here; see [target]. *)
 and data_reference n st : data_reference =
-  if n <= 1 then loc (Entire (name st))
+  if n <= 1 then loc (Entire (name st).it)
   else
     weighted st
-      [ (3, fun () -> loc (Entire (name st)));
+      [ (3, fun () -> loc (Entire (name st).it));
         (2, fun () -> let nm = name st in loc (Element (nm, list_of st ~min:1 3 n (fun m -> expression m st))));
         (2, fun () -> let r = data_reference (n - 1) st in loc (Component (r, name st))) ]
 
@@ -253,7 +253,8 @@ and function_call n st : function_call =
         weighted st
           [ (4, fun () ->
                 let nm = if chance st 0.2 then Some (ident_only st) else None in
-                loc (Required_argument (nm, expression m st)));
+                let e = expression m st in
+                loc (required_argument nm e Source.no_region));
             (2, fun () ->
                 let nm = ident_only st in
                 loc (Optional_argument (nm, if chance st 0.5 then Some (expression m st) else None)));
@@ -261,7 +262,8 @@ and function_call n st : function_call =
                 let nm = ident_only st in
                 loc (Conditional_argument (nm, data_reference m st))) ])
   in
-  { func; arguments }
+  let (arguments, argument_regions) = argument_arrays arguments in
+  { func; arguments; argument_regions }
 
 (* §4.6: names are <identifier>, values <expression>; <ARG> and, in a conditional argument,
    <VAR> are allowed. *)
@@ -270,7 +272,8 @@ let procedure_arguments n st : argument list =
       weighted st
         [ (5, fun () ->
               let nm = if chance st 0.2 then Some (identifier st) else None in
-              loc (Required_argument (nm, expression ~top:true m st)));
+              let e = expression ~top:true m st in
+              loc (required_argument nm e Source.no_region));
           (2, fun () ->
               let nm = identifier st in
               loc (Optional_argument
@@ -299,7 +302,8 @@ let simple_statement n st : statement =
                if chance st 0.15 then Late_bound (expression ~top:true (n / 2) st)
                else Procedure_name (identifier st)
              in
-             Procedure_call (p, procedure_arguments (n / 2) st));
+             let (args, regions) = argument_arrays (procedure_arguments (n / 2) st) in
+             Procedure_call (p, args, regions));
          (1, fun () -> Goto (identifier st));
          (1, fun () -> Break);
          (1, fun () -> Continue);

@@ -180,7 +180,7 @@ let num_value text expected =
   Alcotest.check q ("value of " ^ text) expected (Num_literal.value text);
   check_tokens text [ NUM text ];
   match expression text with
-  | Literal (Num_literal s) -> Alcotest.(check string) "kept as written" text s
+  | Num_literal s -> Alcotest.(check string) "kept as written" text s
   | _ -> Alcotest.failf "%s: not a numeric literal" text
 
 let numeric_forms () =
@@ -265,7 +265,7 @@ let numeric_range () =
 
 let string_literal text =
   match expression text with
-  | Literal (String_literal s) -> s
+  | String_literal s -> s
   | _ -> Alcotest.failf "%s: not a string literal" text
 
 let check_string text ~raw ~bytes =
@@ -419,7 +419,7 @@ let latin1_file () =
     "MODULE m\nVAR num a\xD7b;\nENDMODULE\n";
   (* A string of a Latin-1 file holds the UTF-8 encoding of its characters. *)
   match statements (parse_ok "MODULE m\nPROC p()\nx := \"\xE9\";\nENDPROC\nENDMODULE\n") with
-  | [ { it = Assignment (_, { it = Literal (String_literal s); _ }); _ } ] ->
+  | [ { it = Assignment (_, { it = String_literal s; _ }); _ } ] ->
       Alcotest.(check string) "Latin-1 string value" "\xC3\xA9" s.bytes
   | _ -> Alcotest.fail "Latin-1 string"
 

@@ -49,21 +49,21 @@ let binary_name = function
 
 let rec shape (e : expression) =
   match e.it with
-  | Literal (Num_literal s) -> s
-  | Literal (String_literal s) -> "\"" ^ s.raw ^ "\""
-  | Literal (Bool_literal b) -> if b then "TRUE" else "FALSE"
-  | Data_reference r -> reference r
-  | Function_call { func; arguments } -> identifier func ^ "(" ^ args arguments ^ ")"
-  | Aggregate es -> "[" ^ String.concat "," (List.map shape es) ^ "]"
-  | Unary (Unary_minus, e) -> "(neg " ^ shape e ^ ")"
-  | Unary (Unary_plus, e) -> "(pos " ^ shape e ^ ")"
-  | Unary (Not, e) -> "(NOT " ^ shape e ^ ")"
+  | Num_literal s -> s
+  | String_literal s -> "\"" ^ s.raw ^ "\""
+  | Bool_literal b -> if b then "TRUE" else "FALSE"
+  | Data_reference r -> reference (Ast.reference e r)
+  | Function_call f -> identifier f.func ^ "(" ^ args (call_arguments f) ^ ")"
+  | Aggregate (es, rs) -> "[" ^ String.concat "," (Array.to_list (Array.map shape (members es rs))) ^ "]"
+  | Unary (Unary_minus, e, at) -> "(neg " ^ shape (operand e at) ^ ")"
+  | Unary (Unary_plus, e, at) -> "(pos " ^ shape (operand e at) ^ ")"
+  | Unary (Not, e, at) -> "(NOT " ^ shape (operand e at) ^ ")"
   | Binary (op, l, r) -> Printf.sprintf "(%s %s %s)" (binary_name op) (shape l) (shape r)
   | EXP_placeholder -> "<EXP>"
 
 and reference (r : data_reference) =
   match r.it with
-  | Entire n -> n.it
+  | Entire n -> n
   | Element (n, es) -> n.it ^ "{" ^ String.concat "," (List.map shape es) ^ "}"
   | Component (r, n) -> reference r ^ "." ^ n.it
   | VAR_placeholder -> "<VAR>"
@@ -71,12 +71,13 @@ and reference (r : data_reference) =
 and args l =
   String.concat "," (List.map (fun (a : argument) ->
       match a.it with
-      | Required_argument (None, e) -> shape e
-      | Required_argument (Some n, e) -> identifier n ^ ":=" ^ shape e
+      | Required_argument (None, e, at) -> shape (operand e at)
+      | Positional_argument e -> shape (operand e a.at)
+      | Required_argument (Some n, e, at) -> identifier n ^ ":=" ^ shape (operand e at)
       | Optional_argument (n, None) -> "\\" ^ identifier n
       | Optional_argument (n, Some e) -> "\\" ^ identifier n ^ ":=" ^ shape e
       | Conditional_argument (n, r) -> "\\" ^ identifier n ^ "?" ^ reference r
-      | ARG_placeholder -> "<ARG>") l)
+      | ARG_placeholder -> "<ARG>") (Array.to_list l))
 
 let expression text =
   match statements (parse_ok (in_routine ("x := " ^ text ^ ";"))) with
@@ -91,8 +92,8 @@ let kind (s : statement) =
   match s.it with
   | Statement_comment c -> "!" ^ c
   | Assignment _ -> "assignment"
-  | Procedure_call (Procedure_name n, a) -> identifier n ^ "(" ^ args a ^ ")"
-  | Procedure_call (Late_bound e, a) -> "%" ^ shape e ^ "%(" ^ args a ^ ")"
+  | Procedure_call (Procedure_name n, a, rs) -> identifier n ^ "(" ^ args (Ast.arguments a rs) ^ ")"
+  | Procedure_call (Late_bound e, a, rs) -> "%" ^ shape e ^ "%(" ^ args (Ast.arguments a rs) ^ ")"
   | Label i -> identifier i ^ ":"
   | Goto i -> "GOTO " ^ identifier i
   | Connect (r, t) -> "CONNECT " ^ reference r ^ " WITH " ^ identifier t
@@ -425,10 +426,31 @@ let compound_statements () =
             default = Some []; _ } -> ()
    | _ -> Alcotest.fail "TEST");
   (match one "FOR i FROM 10 TO 1 STEP -1 DO ENDFOR" with
-   | For { step = Some { it = Unary (Unary_minus, _); _ }; body = []; _ } -> ()
+   | For { step = Some { it = Unary (Unary_minus, _, _); _ }; body = []; _ } -> ()
    | _ -> Alcotest.fail "FOR STEP");
   (* §4.17: the compact IF takes a simple statement only. *)
   syntax_error_at ~line:3 ~col:6 (in_routine "IF a IF b x := 1;")
+
+(* The tree keeps an argument's region apart from its expression's only where they differ
+   (ast.ml, [Positional_argument]): in parentheses the argument's region takes them in. *)
+let argument_regions () =
+  let columns (r : Source.region) = ((Source.start r).col, (Source.stop r).col) in
+  let check_call text ~argument ~expression =
+    match statements (parse_ok (in_routine text)) with
+    | [ { it = Procedure_call (_, descs, regions); _ } ] -> (
+        match Ast.arguments descs regions with
+        | [| a |] ->
+            Alcotest.(check (pair int int)) (text ^ ": argument") argument (columns a.at);
+            (match Ast.argument_value a with
+             | Some e -> Alcotest.(check (pair int int)) (text ^ ": expression") expression (columns e.at)
+             | None -> Alcotest.failf "%s: no expression" text)
+        | _ -> Alcotest.failf "%s: expected one argument" text)
+    | _ -> Alcotest.failf "%s: expected one call" text
+  in
+  check_call "P a + 1;" ~argument:(3, 8) ~expression:(3, 8);
+  check_call "P (a + 1);" ~argument:(3, 10) ~expression:(4, 9);
+  check_call "P ( a );" ~argument:(3, 8) ~expression:(5, 6);
+  check_call "P x := a;" ~argument:(3, 9) ~expression:(8, 9)
 
 let suite =
   ( "parser",
@@ -438,6 +460,7 @@ let suite =
       ("§2.10 comment filing", comment_filing);
       ("§2.10 comments in records", record_comments);
       ("§3.11 §4.6 arguments", arguments);
+      ("§3.11 §4.6 argument regions", argument_regions);
       ("§5.2 switch and other parameters", switch_parameters);
       ("§2.18 TASK", task);
       ("§2.3 <ID> where <identifier> is", id_placeholder);

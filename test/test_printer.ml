@@ -92,9 +92,9 @@ let expression_layout =
 let hand_built_expressions =
   Alcotest.test_case "§3.1 parentheses for trees built by hand" `Quick (fun () ->
       let loc it = { it; at = Source.no_region } in
-      let v s = loc (Data_reference (loc (Entire (loc s)))) in
+      let v s = loc (Data_reference (Entire s)) in
       let bin op l r = loc (Binary (op, l, r)) in
-      let un op e = loc (Unary (op, e)) in
+      let un op (e : expression) = loc (Unary (op, e.it, e.at)) in
       List.iter (fun (e, expected) -> Alcotest.(check string) expected expected (Printer.expression e))
         [ bin Mul (un Unary_minus (v "a")) (v "b"), "(-a) * b";
           un Unary_minus (bin Plus (v "a") (v "b")), "-(a + b)";

@@ -54,7 +54,7 @@ let expression_round_trip =
   Alcotest.test_case "generated expressions: parse (print e) = e" `Slow (fun () ->
       let loc it = { it; at = Source.no_region } in
       let in_module e =
-        let x = loc (Entire (loc "x")) in
+        let x = loc (Entire "x") in
         let body = { declarations = []; statements = [ loc (Assignment (x, e)) ]; backward = None;
                      error = None; undo = None } in
         { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
@@ -82,17 +82,17 @@ let expression_round_trip =
    there; the test then fails until it is listed here and the generator reaches it. *)
 let all_constructors =
   [ "identifier", [ "Ident"; "ID_placeholder" ];
-    "literal", [ "Num_literal"; "String_literal"; "Bool_literal" ];
     "unary_operator", [ "Unary_plus"; "Unary_minus"; "Not" ];
     "binary_operator",
     [ "Mul"; "Div"; "Int_div"; "Modulo"; "Plus"; "Minus"; "Less"; "Less_equal"; "Equal";
       "Greater"; "Greater_equal"; "Not_equal"; "And"; "Or"; "Xor" ];
     "expression",
-    [ "Literal"; "Data_reference"; "Function_call"; "Aggregate"; "Unary"; "Binary";
+    [ "Num_literal"; "String_literal"; "Bool_literal"; "Data_reference"; "Function_call"; "Aggregate"; "Unary"; "Binary";
       "EXP_placeholder" ];
     "data_reference", [ "Entire"; "Element"; "Component"; "VAR_placeholder" ];
     "argument",
-    [ "Required_argument"; "Optional_argument"; "Conditional_argument"; "ARG_placeholder" ];
+    [ "Required_argument"; "Positional_argument"; "Optional_argument"; "Conditional_argument";
+      "ARG_placeholder" ];
     "procedure", [ "Procedure_name"; "Late_bound" ];
     "statement",
     [ "Assignment"; "Procedure_call"; "Goto"; "Break"; "Continue"; "Return"; "Raise"; "Exit";
@@ -122,11 +122,6 @@ let census see (m : module_declaration) =
   let identifier (i : identifier) =
     match i.it with Ident _ -> see "identifier" "Ident" | ID_placeholder -> see "identifier" "ID_placeholder"
   in
-  let literal = function
-    | Num_literal _ -> see "literal" "Num_literal"
-    | String_literal _ -> see "literal" "String_literal"
-    | Bool_literal _ -> see "literal" "Bool_literal"
-  in
   let unary = function
     | Unary_plus -> "Unary_plus" | Unary_minus -> "Unary_minus" | Not -> "Not"
   in
@@ -139,11 +134,13 @@ let census see (m : module_declaration) =
   let rec expression (e : expression) =
     let s = see "expression" in
     match e.it with
-    | Literal l -> s "Literal"; literal l
-    | Data_reference r -> s "Data_reference"; data_reference r
-    | Function_call f -> s "Function_call"; identifier f.func; List.iter argument f.arguments
-    | Aggregate es -> s "Aggregate"; List.iter expression es
-    | Unary (op, e) -> s "Unary"; see "unary_operator" (unary op); expression e
+    | Num_literal _ -> s "Num_literal"
+    | String_literal _ -> s "String_literal"
+    | Bool_literal _ -> s "Bool_literal"
+    | Data_reference r -> s "Data_reference"; data_reference (Ast.reference e r)
+    | Function_call f -> s "Function_call"; identifier f.func; Array.iter argument (call_arguments f)
+    | Aggregate (es, rs) -> s "Aggregate"; Array.iter expression (members es rs)
+    | Unary (op, e, at) -> s "Unary"; see "unary_operator" (unary op); expression (operand e at)
     | Binary (op, l, r) -> s "Binary"; see "binary_operator" (binary op); expression l; expression r
     | EXP_placeholder -> s "EXP_placeholder"
   and data_reference (r : data_reference) =
@@ -156,7 +153,8 @@ let census see (m : module_declaration) =
   and argument (a : argument) =
     let s = see "argument" in
     match a.it with
-    | Required_argument (n, e) -> s "Required_argument"; Option.iter identifier n; expression e
+    | Required_argument (n, e, at) -> s "Required_argument"; Option.iter identifier n; expression (operand e at)
+    | Positional_argument e -> s "Positional_argument"; expression (operand e a.at)
     | Optional_argument (n, e) -> s "Optional_argument"; identifier n; Option.iter expression e
     | Conditional_argument (n, r) -> s "Conditional_argument"; identifier n; data_reference r
     | ARG_placeholder -> s "ARG_placeholder"
@@ -165,12 +163,12 @@ let census see (m : module_declaration) =
     let s = see "statement" in
     match st.it with
     | Assignment (r, e) -> s "Assignment"; data_reference r; expression e
-    | Procedure_call (p, args) ->
+    | Procedure_call (p, args, regions) ->
         s "Procedure_call";
         (match p with
          | Procedure_name i -> see "procedure" "Procedure_name"; identifier i
          | Late_bound e -> see "procedure" "Late_bound"; expression e);
-        List.iter argument args
+        Array.iter argument (Ast.arguments args regions)
     | Goto i -> s "Goto"; identifier i
     | Break -> s "Break"
     | Continue -> s "Continue"
@@ -377,9 +375,9 @@ let million_elements =
   Alcotest.test_case "a million statements print and dump" `Slow (fun () ->
       let loc it = { it; at = Source.no_region } in
       let n = 1_000_000 in
-      let one = loc (Literal (Num_literal "1")) in
-      let statements = List.init n (fun _ -> loc (Assignment (loc (Entire (loc "x")), one))) in
-      let statements = loc (Assignment (loc (Entire (loc "y")), loc (Aggregate (List.init n (fun _ -> one))))) :: statements in
+      let one = loc (Num_literal "1") in
+      let statements = List.init n (fun _ -> loc (Assignment (loc (Entire "x"), one))) in
+      let statements = loc (Assignment (loc (Entire "y"), loc (Aggregate (Array.make n one.it, Array.make n one.at)))) :: statements in
       let body = { declarations = []; statements; backward = None; error = None; undo = None } in
       let m =
         { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];

@@ -38,10 +38,19 @@ let shape_default (t : Types.object_type) =
 
 (* ------------------------------------------------------------------ expressions *)
 
+(* The region of the name a reference starts with, under which the checker recorded what the
+   name denotes (an entire variable's name has the reference's region, ast.ml). *)
+let rec root_at (r : A.data_reference) =
+  match r.it with
+  | Entire _ -> Some r.at
+  | Element (n, _) -> Some n.at
+  | Component (r, _) -> root_at r
+  | VAR_placeholder -> None
+
 let rec place ctx (r : A.data_reference) : Ir.place =
   match r.it with
   | VAR_placeholder -> Unresolved "<VAR>"
-  | Entire name -> entire ctx name
+  | Entire spelling -> entire ctx { A.it = spelling; at = r.at }
   | Element (name, indexes) ->
       Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
   | Component (inner, comp) -> (
@@ -58,26 +67,26 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
-  | Literal (Num_literal text) -> (
+  | Num_literal text -> (
       match Num_literal.of_text text with
       | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
       | Error _ -> make Placeholder)
-  | Literal (String_literal s) -> make (Literal (Value.String s.bytes))
-  | Literal (Bool_literal b) -> make (Literal (Value.Bool b))
+  | String_literal s -> make (Literal (Value.String s.bytes))
+  | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
+      let r = A.reference e r in
       let semi_value =
-        let rec root (r : A.data_reference) = match r.it with
-          | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
-        match r.it, Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+        match r.it, Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
-  | Function_call f -> make (Call (call ctx e.at f.func f.arguments))
-  | Aggregate es ->
+  | Function_call f -> make (Call (call ctx e.at f.func))
+  | Aggregate (es, rs) ->
       let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
-      make (Aggregate (map_long (expr ctx ~dnum) es, kind))
-  | Unary (op, a) -> (
+      make (Aggregate (Array.map (expr ctx ~dnum) (A.members es rs), kind))
+  | Unary (op, a, a_at) -> (
+      let a = A.operand a a_at in
       match Hashtbl.find_opt ctx.elab.unary e.at with
       | Some row ->
           let operand = if dnum then Tables.O_dnum else row.operand in
@@ -125,7 +134,7 @@ and unary_op (op : A.unary_operator) (o : Tables.operand) : Arith.unary =
   | Unary_plus, O_dnum -> Dnum_plus | Unary_plus, O_pos -> Pos_plus | Unary_plus, _ -> Num_plus
 
 (* §3.11, §4.6, §5.2: each parameter of the callee gets its argument. *)
-and call ctx (at : Source.region) (name : A.identifier) (_ : A.argument list) : Ir.call =
+and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
@@ -148,9 +157,7 @@ and parameters_of (r : Env.routine) =
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
-      let rec root (r : A.data_reference) = match r.it with
-        | Entire n | Element (n, _) -> Some n | Component (r, _) -> root r | VAR_placeholder -> None in
-      (match Option.bind (root r) (fun (n : A.name) -> Hashtbl.find_opt ctx.elab.names n.at) with
+      (match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
        | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
        | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
        | Some (Data { d_kind = Constant; _ }) -> Ref_constant
@@ -159,30 +166,34 @@ and reference_kind ctx (e : A.expression) : Ir.reference_kind =
 
 and optional_parameter_slot ctx (e : A.expression) =
   match e.it with
-  | Data_reference { it = Entire n; _ } -> (
-      match Hashtbl.find_opt ctx.elab.names n.at with
+  | Data_reference (Entire _) -> (
+      match Hashtbl.find_opt ctx.elab.names e.at with
       | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
       | _ -> None)
   | _ -> None
 
 and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
   let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
+  let value (e : A.expression) : Ir.argument =
+    match p.p_mode with
+    | Mode_in -> By_value (expr ctx ~dnum e)
+    | Mode_ref when optional_parameter_slot ctx e <> None ->
+        (* Present and the other REF parameters see an absent optional parameter as absent
+           instead of using its value (§5.2, ch. 11). *)
+        Pass_on (Option.get (optional_parameter_slot ctx e))
+    | _ -> (
+        match e.it with
+        | Data_reference r -> By_reference (place ctx (A.reference e r), reference_kind ctx e)
+        | _ -> By_value (expr ctx ~dnum e))
+  in
   match a.it with
   | Optional_argument (_, None) -> Present_switch
   | Conditional_argument (_, r) -> (
       match place ctx r with Whole s -> Pass_on s | _ -> Absent)
   | ARG_placeholder -> By_value { e = Placeholder; at = a.at }
-  | Required_argument (_, e) | Optional_argument (_, Some e) -> (
-      match p.p_mode with
-      | Mode_in -> By_value (expr ctx ~dnum e)
-      | Mode_ref when optional_parameter_slot ctx e <> None ->
-          (* Present and the other REF parameters see an absent optional parameter as absent
-             instead of using its value (§5.2, ch. 11). *)
-          Pass_on (Option.get (optional_parameter_slot ctx e))
-      | _ -> (
-          match e.it with
-          | Data_reference r -> By_reference (place ctx r, reference_kind ctx e)
-          | _ -> By_value (expr ctx ~dnum e)))
+  | Required_argument (_, e, at) -> value (A.operand e at)
+  | Positional_argument e -> value (A.operand e a.at)
+  | Optional_argument (_, Some e) -> value e
 
 (* ------------------------------------------------------------------ statements *)
 
@@ -201,24 +212,24 @@ and statement ctx (s : A.statement) : Ir.stmt =
   let make d = { Ir.s = d; sat = s.at } in
   match s.it with
   | Assignment (target, e) ->
-      let dnum = match target.it with
-        | Entire n | Element (n, _) -> (
-            match Hashtbl.find_opt ctx.elab.names n.at with
-            | Some (Data { d_type = { base = Dnum; _ }; _ }) -> false
-            | _ -> false)
-        | _ -> false in
-      make (Assign (place ctx target, expr ctx ~dnum e))
-  | Procedure_call (_, args) when List.exists (fun (a : A.argument) -> a.it = ARG_placeholder) args ->
+      (* A literal value takes dnum from a dnum target through the elaboration (dnum_literals). *)
+      make (Assign (place ctx target, expr ctx ~dnum:false e))
+  | Procedure_call (_, args, _) when Array.exists (fun (a : A.argument_desc) -> a = ARG_placeholder) args ->
       (* §2.9: executing a placeholder is ERR_EXECPHR. *)
       make Placeholder_statement
-  | Procedure_call (Procedure_name id, args) -> make (Call_procedure (call ctx s.at id args))
-  | Procedure_call (Late_bound e, args) ->
+  | Procedure_call (Procedure_name id, _, _) -> make (Call_procedure (call ctx s.at id))
+  | Procedure_call (Late_bound e, args, regions) ->
+      let args = A.arguments args regions in
       let late (a : A.argument) : Ir.late_argument =
         let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
         match a.it with
-        | Required_argument (n, e) ->
+        | Required_argument (n, e, at) ->
+            let e = A.operand e at in
             { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e);
               late_kind = reference_kind ctx e }
+        | Positional_argument e ->
+            let e = A.operand e a.at in
+            { late_name = None; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
         | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch; late_kind = Ref_other }
         | Optional_argument (n, Some e) ->
             { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
@@ -227,7 +238,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         | ARG_placeholder ->
             { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other }
       in
-      make (Call_late (expr ctx ~dnum:false e, Array.of_list (List.map late args)))
+      make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (
       match Hashtbl.find_opt ctx.elab.names id.at with
       | Some (Label at) -> (
@@ -390,7 +401,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       let n = String.uppercase_ascii obj.d_name in
       if obj.d_kind = Constant && (String.length n > 4 && String.sub n 0 4 = "ERR_" || n = "LONG_JMP_ALL_ERR") then
         match obj.d_initial with
-        | Some { it = Literal (Num_literal t); _ } -> (
+        | Some { it = Num_literal t; _ } -> (
             match Num_literal.of_text t with
             | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
             | Error _ -> None)

@@ -5,7 +5,20 @@
    a rule that is told apart from another only by what a name is bound to (§3.6-§3.9), the tree
    has one constructor and the static semantics tells them apart. Comments are list elements,
    exactly where §2.10 puts them. Identifiers keep their spelling; reserved words do not (the
-   printer writes them in upper case). *)
+   printer writes them in upper case).
+
+   Size. A CAD module is mostly calls with aggregates of numbers, and its tree stays alive
+   while the module is checked and run, so the expression part of the tree is kept small
+   (bench/README.md, "Memory: where it goes"):
+   - a child whose region is held elsewhere gets no [located] record of its own: aggregate
+     members and call arguments are two arrays (contents, regions), a unary operand and a
+     required argument's expression are a pair of fields, and a reference that is an
+     expression has the expression's region. [members], [arguments], [operand] and
+     [reference] rebuild the [located] values, for the code that wants them;
+   - nodes without a region are shared within a parse (Parse_context): short numeric
+     literals, [Ident] and [Data_reference (Entire _)] nodes. Nothing may compare nodes by
+     physical equality or mutate them.
+   Every node still has its region. *)
 
 type region = Source.region
 type 'a located = { it : 'a; at : region }
@@ -26,12 +39,6 @@ type num_literal = string
    value, UTF-8 with character codes replaced by the byte they name. *)
 type string_literal = { raw : string; bytes : string }
 
-(* §3.5 <literal> *)
-type literal =
-  | Num_literal of num_literal
-  | String_literal of string_literal
-  | Bool_literal of bool
-
 (* §3.12 operators; the unary ones are the sign of a <simple expr> and NOT of an <expr>. *)
 type unary_operator = Unary_plus | Unary_minus | Not
 type binary_operator =
@@ -43,11 +50,23 @@ type binary_operator =
 
 type expression = expression_desc located
 and expression_desc =
-  | Literal of literal                                (* §3.5 *)
-  | Data_reference of data_reference                  (* §3.6-§3.9 *)
+  (* §3.5 <literal>: one constructor per kind of literal rather than a [Literal] wrapper, which
+     cost a block per literal (a CAD module is mostly numeric literals; bench/README.md). *)
+  | Num_literal of num_literal
+  | String_literal of string_literal
+  | Bool_literal of bool
+  (* §3.6-§3.9. The reference's region is the expression's (a <primary> that is a reference is
+     nothing else), so it has no [located] record of its own here; [reference] rebuilds one. *)
+  | Data_reference of data_reference_desc
   | Function_call of function_call                    (* §3.11 *)
-  | Aggregate of expression list                      (* §3.10 *)
-  | Unary of unary_operator * expression              (* §3.1 *)
+  (* §3.10. The members' contents and their regions in two arrays of the same length, rather
+     than a list or array of [located] records: a member costs two words instead of four (a
+     list cell cost three more), and aggregates of numbers are most of a CAD module
+     (bench/README.md). Never empty. [members] gives the members as expressions. *)
+  | Aggregate of expression_desc array * region array
+  (* §3.1. The operand's contents and region, without a [located] record of their own: a
+     negative number in an aggregate (-0.70711) costs two words less. [operand] rebuilds it. *)
+  | Unary of unary_operator * expression_desc * region
   | Binary of binary_operator * expression * expression   (* §3.1 *)
   | EXP_placeholder                                   (* §3.1 <EXP> *)
 
@@ -55,19 +74,35 @@ and expression_desc =
    rule for rule. <VAR> stands for a data object reference where §4.5, §4.6 and §4.15 allow it. *)
 and data_reference = data_reference_desc located
 and data_reference_desc =
-  | Entire of name                                    (* <entire variable> *)
+  (* <entire variable>: the name, whose region is the reference's own (they are the same
+     stretch of text), so that the most common reference is not three records deep. *)
+  | Entire of string
   | Element of name * expression list                 (* <variable element> *)
   | Component of data_reference * name                (* <variable component> *)
   | VAR_placeholder                                   (* <VAR> *)
 
 (* §3.11 <function call> *)
-and function_call = { func : identifier; arguments : argument list }
+and function_call = {
+  func : identifier;
+  arguments : argument_desc array;
+  argument_regions : region array;
+}
+
+(* Argument lists are held like aggregates' members: contents and regions in two arrays, two
+   words an argument where a list of [located] records took seven; CAD modules are mostly
+   calls (bench/README.md). [arguments] gives them as [argument]s. *)
 
 (* §3.11 and §4.6: required, optional and conditional arguments. The comma that may precede an
    optional or conditional argument is layout, not structure. *)
 and argument = argument_desc located
 and argument_desc =
-  | Required_argument of identifier option * expression   (* [ name ':=' ] expression *)
+  (* [ name ':=' ] expression; the expression's contents and region without a [located] record
+     of their own, as in [Unary] ([argument_value] rebuilds it). *)
+  | Required_argument of identifier option * expression_desc * region
+  (* A required argument without a name whose region is its expression's: nearly every argument
+     (not one in parentheses, "P (a);", whose region includes them). Two words instead of four;
+     [required_argument] chooses the form, the dump does not tell them apart. *)
+  | Positional_argument of expression_desc
   | Optional_argument of identifier * expression option    (* '\' name [ ':=' expression ] *)
   | Conditional_argument of identifier * data_reference    (* '\' name '?' parameter *)
   | ARG_placeholder                                         (* <ARG>, procedure calls only *)
@@ -80,7 +115,7 @@ type procedure =
 type statement = statement_desc located
 and statement_desc =
   | Assignment of data_reference * expression         (* §4.5 *)
-  | Procedure_call of procedure * argument list       (* §4.6 *)
+  | Procedure_call of procedure * argument_desc array * region array   (* §4.6 *)
   | Goto of identifier                                (* §4.7 *)
   | Break                                             (* §4.8 *)
   | Continue                                          (* §4.9 *)
@@ -231,3 +266,41 @@ type module_declaration = {
   routine_declarations : routine_declaration list;
   module_region : region;
 }
+
+(* The data reference that the expression [e], [Data_reference d], is. *)
+let reference (e : expression) (d : data_reference_desc) : data_reference = { it = d; at = e.at }
+
+(* The aggregate of the members [es] (§3.10), and back. *)
+let aggregate (es : expression list) : expression_desc =
+  let es = Array.of_list es in
+  Aggregate (Array.map (fun e -> e.it) es, Array.map (fun e -> e.at) es)
+
+let members (descs : expression_desc array) (regions : region array) : expression array =
+  Array.mapi (fun i it -> { it; at = regions.(i) }) descs
+
+(* The expression a [Unary] node or a [Required_argument] holds as contents and region. *)
+let operand (it : expression_desc) (at : region) : expression = { it; at }
+
+(* The arguments [args] as a call holds them, and back. *)
+let argument_arrays (args : argument list) : argument_desc array * region array =
+  let args = Array.of_list args in
+  (Array.map (fun a -> a.it) args, Array.map (fun a -> a.at) args)
+
+let arguments (descs : argument_desc array) (regions : region array) : argument array =
+  Array.mapi (fun i it -> { it; at = regions.(i) }) descs
+
+let call_arguments (f : function_call) = arguments f.arguments f.argument_regions
+
+(* The required argument [name := e] or [e] whose region is [at]. *)
+let required_argument (name : identifier option) (e : expression) (at : region) : argument_desc =
+  match name with
+  | None when e.at = at -> Positional_argument e.it
+  | _ -> Required_argument (name, e.it, e.at)
+
+(* The expression an argument gives, if any: a required argument's, an optional one's value. *)
+let argument_value (a : argument) : expression option =
+  match a.it with
+  | Required_argument (_, it, at) -> Some { it; at }
+  | Positional_argument it -> Some { it; at = a.at }
+  | Optional_argument (_, e) -> e
+  | Conditional_argument _ | ARG_placeholder -> None

@@ -76,28 +76,29 @@ let binary_operator = function
   | Greater_equal -> "Greater_equal" | Not_equal -> "Not_equal"
   | And -> "And" | Or -> "Or" | Xor -> "Xor"
 
-let literal b = function
-  | Num_literal s -> node b "Num_literal"; atom b s; close b
-  | String_literal s -> node b "String_literal"; quoted b s.raw; close b
-  | Bool_literal v -> node b "Bool_literal"; word b (bool_word v); close b
-
 let rec expression b (e : expression) =
   match e.it with
-  | Literal l -> node b "Literal"; literal b l; close b
-  | Data_reference r -> node b "Data_reference"; data_reference b r; close b
+  (* The tree has no [Literal] node any more (ast.ml); the dump still writes one, so that its
+     format, which the golden tests pin, does not depend on the tree's representation. *)
+  | Num_literal s -> node b "Literal"; node b "Num_literal"; atom b s; close b; close b
+  | String_literal s -> node b "Literal"; node b "String_literal"; quoted b s.raw; close b; close b
+  | Bool_literal v -> node b "Literal"; node b "Bool_literal"; word b (bool_word v); close b; close b
+  | Data_reference r -> node b "Data_reference"; reference b r; close b
   | Function_call f ->
       node b "Function_call"; identifier b f.func;
-      node b "arguments"; List.iter (argument b) f.arguments; close b;
+      node b "arguments"; Array.iter (argument b) (call_arguments f); close b;
       close b
-  | Aggregate es -> node b "Aggregate"; List.iter (expression b) es; close b
-  | Unary (op, e) -> node b "Unary"; word b (unary_operator op); expression b e; close b
+  | Aggregate (es, rs) -> node b "Aggregate"; Array.iter (expression b) (members es rs); close b
+  | Unary (op, e, at) -> node b "Unary"; word b (unary_operator op); expression b (operand e at); close b
   | Binary (op, l, r) ->
       node b "Binary"; word b (binary_operator op); expression b l; expression b r; close b
   | EXP_placeholder -> word b "EXP_placeholder"
 
-and data_reference b (r : data_reference) =
-  match r.it with
-  | Entire n -> node b "Entire"; name b n; close b
+and data_reference b (r : data_reference) = reference b r.it
+
+and reference b (r : data_reference_desc) =
+  match r with
+  | Entire n -> node b "Entire"; atom b n; close b
   | Element (n, es) ->
       node b "Element"; name b n; List.iter (expression b) es; close b
   | Component (r, n) -> node b "Component"; data_reference b r; name b n; close b
@@ -105,10 +106,11 @@ and data_reference b (r : data_reference) =
 
 and argument b (a : argument) =
   match a.it with
-  | Required_argument (n, e) ->
+  | Positional_argument e -> node b "Required_argument"; expression b (operand e a.at); close b
+  | Required_argument (n, e, at) ->
       node b "Required_argument";
       Option.iter (fun n -> node b "name"; identifier b n; close b) n;
-      expression b e; close b
+      expression b (operand e at); close b
   | Optional_argument (n, e) ->
       node b "Optional_argument"; identifier b n; Option.iter (expression b) e; close b
   | Conditional_argument (n, r) ->
@@ -121,12 +123,12 @@ let rec statement b ind (s : statement) =
   match s.it with
   | Assignment (r, e) ->
       line_node b ind "Assignment"; data_reference b r; expression b e; close b
-  | Procedure_call (p, args) ->
+  | Procedure_call (p, args, regions) ->
       line_node b ind "Procedure_call";
       (match p with
        | Procedure_name i -> node b "Procedure_name"; identifier b i; close b
        | Late_bound e -> node b "Late_bound"; expression b e; close b);
-      List.iter (argument b) args;
+      Array.iter (argument b) (Ast.arguments args regions);
       close b
   | Goto i -> line_node b ind "Goto"; identifier b i; close b
   | Break -> line_word b ind "Break"

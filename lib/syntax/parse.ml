@@ -52,14 +52,17 @@ module Nesting = struct
 
   let enter depth at = if depth > max_nesting then raise (Too_deep at); depth + 1
 
-  let rec expression d (e : expression) =
-    let d = enter d e.at in
-    match e.it with
-    | Literal _ | EXP_placeholder -> ()
-    | Data_reference r -> data_reference d r
-    | Function_call f -> arguments d f.arguments
-    | Aggregate es -> expressions d es
-    | Unary (_, e) -> expression d e
+  let rec expression d (e : expression) = expression_at d e.at e.it
+
+  (* Aggregate members come as contents and regions (ast.ml): walked without rebuilding them. *)
+  and expression_at d at (e : expression_desc) =
+    let d = enter d at in
+    match e with
+    | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
+    | Data_reference r -> reference d at r
+    | Function_call f -> arguments d f.arguments f.argument_regions
+    | Aggregate (es, rs) -> Array.iteri (fun i m -> expression_at d rs.(i) m) es
+    | Unary (_, e, at) -> expression_at d at e
     | Binary (_, l, r) -> expression d l; expression d r
 
   and expressions d = function
@@ -70,29 +73,33 @@ module Nesting = struct
     | None -> ()
     | Some e -> expression d e
 
-  and data_reference d (r : data_reference) =
-    let d = enter d r.at in
-    match r.it with
+  and data_reference d (r : data_reference) = reference d r.at r.it
+
+  (* A reference counts as a level of nesting of its own, also where it is an expression. *)
+  and reference d at (r : data_reference_desc) =
+    let d = enter d at in
+    match r with
     | Entire _ | VAR_placeholder -> ()
     | Element (_, es) -> expressions d es
     | Component (r, _) -> data_reference d r
 
-  and arguments d = function
-    | [] -> ()
-    | (a : argument) :: rest ->
-        (match a.it with
-         | Required_argument (_, e) | Optional_argument (_, Some e) -> expression d e
-         | Conditional_argument (_, r) -> data_reference d r
-         | Optional_argument (_, None) | ARG_placeholder -> ());
-        arguments d rest
+  (* Arguments are not levels of nesting of their own: only their contents are walked. *)
+  and arguments d args regions =
+    Array.iteri (fun i (a : argument_desc) ->
+        match a with
+        | Required_argument (_, e, at) -> expression_at d at e
+        | Positional_argument e -> expression_at d regions.(i) e
+        | Optional_argument (_, Some e) -> expression d e
+        | Conditional_argument (_, r) -> data_reference d r
+        | Optional_argument (_, None) | ARG_placeholder -> ()) args
 
   let rec statement d (s : statement) =
     let d = enter d s.at in
     match s.it with
     | Assignment (r, e) -> data_reference d r; expression d e
-    | Procedure_call (p, args) ->
+    | Procedure_call (p, args, regions) ->
         (match p with Late_bound e -> expression d e | Procedure_name _ -> ());
-        arguments d args
+        arguments d args regions
     | Return e | Raise e -> optional_expression d e
     | Connect (r, _) -> data_reference d r
     | If i ->
@@ -203,7 +210,7 @@ let run_parser options file lexer =
 
 let parse_decoded options name (decoded : Decode.t) =
   let file = Source.register ~name ~line_starts:decoded.line_starts in
-  Parse_context.file := file;
+  Parse_context.start file;
   let at_start = Source.region file 0 1 in
   try
     if options.strict && decoded.byte_order_mark then

@@ -40,6 +40,10 @@ let region (startpos : Lexing.position) (endpos : Lexing.position) =
 
 let at startpos endpos it = { it; at = region startpos endpos }
 
+let required_argument startpos endpos name (e : expression) =
+  let at = region startpos endpos in
+  { it = Ast.required_argument name e at; at }
+
 let refuse startpos endpos message =
   raise (Parse_context.Refused (region startpos endpos, message))
 
@@ -96,8 +100,8 @@ module_file:
 (* TASK is not reserved (§2.4): the lexer marks the word, which begins a task declaration
    (§2.18) where a data declaration may stand and is an identifier everywhere else. *)
 identifier:
-  | s = IDENT { at $startpos $endpos (Ident s) }
-  | s = TASK  { at $startpos $endpos (Ident s) }
+  | s = IDENT { at $startpos $endpos (Parse_context.ident s) }
+  | s = TASK  { at $startpos $endpos (Parse_context.ident s) }
   | ID_PH     { at $startpos $endpos ID_placeholder }
 
 ident:
@@ -275,7 +279,7 @@ expression:
    NOT applies to the first logical term; OR and XOR then associate to the left. *)
 expr:
   | t = logical_term { t }
-  | NOT t = logical_term { at $startpos $endpos (Unary (Not, t)) }
+  | NOT t = logical_term { at $startpos $endpos (Unary (Not, t.it, t.at)) }
   | e = expr op = or_operator t = logical_term { at $startpos $endpos (Binary (op, e, t)) }
 
 or_operator:
@@ -297,7 +301,7 @@ relation:
 simple_expr:
   | t = term { t }
   | op = addop t = term
-    { at $startpos $endpos (Unary ((match op with Plus -> Unary_plus | _ -> Unary_minus), t)) }
+    { at $startpos $endpos (Unary ((match op with Plus -> Unary_plus | _ -> Unary_minus), t.it, t.at)) }
   | e = simple_expr op = addop t = term { at $startpos $endpos (Binary (op, e, t)) }
 
 (* §3.1 <term> ::= <primary> { <mulop> <primary> } *)
@@ -309,10 +313,12 @@ term:
    | <function call> | <aggregate> | '(' <expr> ')'
    (<variable>, <persistent>, <constant> and <parameter> are one nonterminal: see the head.) *)
 primary:
-  | l = literal { at $startpos $endpos (Literal l) }
-  | v = variable { at $startpos $endpos (Data_reference v) }
+  | l = literal { at $startpos $endpos l }
+  | v = variable
+    { at $startpos $endpos
+        (match v.it with Entire s -> Parse_context.entire_reference s | r -> Data_reference r) }
   | f = function_call { at $startpos $endpos (Function_call f) }
-  | a = aggregate { at $startpos $endpos (Aggregate a) }
+  | a = aggregate { at $startpos $endpos (Ast.aggregate a) }
   | LPAREN e = expr RPAREN { e }
 
 (* §3.1 *)
@@ -348,7 +354,7 @@ conditional_expression:
 
 (* §3.5 <literal> ::= <num literal> | <string literal> | <bool literal> *)
 literal:
-  | n = NUM { Num_literal n }
+  | n = NUM { Parse_context.num_literal n }
   | s = STRING { String_literal s }
   | b = bool_literal { Bool_literal b }
 
@@ -360,7 +366,7 @@ bool_literal:
 (* §3.6 <variable> ::= <entire variable> | <variable element> | <variable component>
    (also §3.7 <persistent>, §3.8 <constant>, §3.9 <parameter>: see the head) *)
 variable:
-  | v = entire_variable { at $startpos $endpos (Entire v) }
+  | v = entire_variable { at $startpos $endpos (Entire v.it) }
   | v = variable_element { v }
   | v = variable_component { v }
 
@@ -395,7 +401,8 @@ aggregate:
 (* §3.11 <function call> ::= <function> '(' [ <function argument list> ] ')' *)
 function_call:
   | func = function_ LPAREN arguments = loption(function_argument_list) RPAREN
-    { { func; arguments } }
+    { let (arguments, argument_regions) = Ast.argument_arrays arguments in
+      { func; arguments; argument_regions } }
 
 (* §3.11 <function> ::= <identifier> *)
 function_:
@@ -423,19 +430,19 @@ function_argument:
 
 (* §3.11 <required function argument> ::= [ <ident> ':=' ] <expr> *)
 required_function_argument:
-  | e = expr { at $startpos $endpos (Required_argument (None, e)) }
+  | e = expr { required_argument $startpos $endpos None e }
   | n = ident ASSIGN e = expr
-    { at $startpos $endpos (Required_argument (Some { it = Ident n.it; at = n.at }, e)) }
+    { required_argument $startpos $endpos (Some { it = Parse_context.ident n.it; at = n.at }) e }
 
 (* §3.11 <optional function argument> ::= '\' <ident> [ ':=' <expr> ] *)
 optional_function_argument:
   | BACKSLASH n = ident v = preceded(ASSIGN, expr)?
-    { at $startpos $endpos (Optional_argument ({ it = Ident n.it; at = n.at }, v)) }
+    { at $startpos $endpos (Optional_argument ({ it = Parse_context.ident n.it; at = n.at }, v)) }
 
 (* §3.11 <conditional function argument> ::= '\' <ident> '?' <parameter> *)
 conditional_function_argument:
   | BACKSLASH n = ident QUESTION p = parameter
-    { at $startpos $endpos (Conditional_argument ({ it = Ident n.it; at = n.at }, p)) }
+    { at $startpos $endpos (Conditional_argument ({ it = Parse_context.ident n.it; at = n.at }, p)) }
 
 (* ---------------------------------------------------------------- §4 Statements *)
 
@@ -495,7 +502,8 @@ assignment_target:
 
 (* §4.6 <procedure call> ::= <procedure> [ <procedure argument list> ] ';' *)
 procedure_call:
-  | p = procedure args = loption(procedure_argument_list) SEMICOLON { Procedure_call (p, args) }
+  | p = procedure args = loption(procedure_argument_list) SEMICOLON
+    { let (args, regions) = Ast.argument_arrays args in Procedure_call (p, args, regions) }
 
 (* §4.6 <procedure> ::= <identifier> | '%' <expression> '%' *)
 procedure:
@@ -527,8 +535,9 @@ procedure_argument:
 
 (* §4.6 <required procedure argument> ::= [ <identifier> ':=' ] <expression> *)
 required_procedure_argument:
-  | e = expression { at $startpos $endpos (Required_argument (None, e)) }
-  | n = identifier ASSIGN e = expression { at $startpos $endpos (Required_argument (Some n, e)) }
+  | e = expression { required_argument $startpos $endpos None e }
+  | n = identifier ASSIGN e = expression
+    { required_argument $startpos $endpos (Some n) e }
 
 (* §4.6 <optional procedure argument> ::= '\' <identifier> [ ':=' <expression> ] *)
 optional_procedure_argument:

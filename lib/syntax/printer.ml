@@ -55,14 +55,10 @@ let binary_operator = function
 let level_of (e : expression) =
   match e.it with
   | Binary (op, _, _) -> binary_level op
-  | Unary (Not, _) -> level_expr
-  | Unary ((Unary_plus | Unary_minus), _) -> level_simple_expr
-  | Literal _ | Data_reference _ | Function_call _ | Aggregate _ | EXP_placeholder -> level_primary
-
-let literal b = function
-  | Num_literal s -> str b s                              (* §2.5, as written *)
-  | String_literal s -> str b "\""; str b s.raw; str b "\""   (* §2.7, as written *)
-  | Bool_literal v -> str b (if v then "TRUE" else "FALSE")
+  | Unary (Not, _, _) -> level_expr
+  | Unary ((Unary_plus | Unary_minus), _, _) -> level_simple_expr
+  | Num_literal _ | String_literal _ | Bool_literal _ | Data_reference _ | Function_call _ | Aggregate _
+  | EXP_placeholder -> level_primary
 
 (* [expression b level e] writes [e] where the grammar asks for the nonterminal [level]. *)
 let rec expression b level (e : expression) =
@@ -72,15 +68,20 @@ let rec expression b level (e : expression) =
 
 and expression_bare b (e : expression) =
   match e.it with
-  | Literal l -> literal b l
-  | Data_reference r -> data_reference b r
+  | Num_literal s -> str b s                              (* §2.5, as written *)
+  | String_literal s -> str b "\""; str b s.raw; str b "\""   (* §2.7, as written *)
+  | Bool_literal v -> str b (if v then "TRUE" else "FALSE")
+  | Data_reference r -> reference b r
   | Function_call f ->
       (* §3.11 *)
-      identifier b f.func; str b "("; arguments b ~first_separator:"" f.arguments; str b ")"
-  | Aggregate es -> str b "["; expression_list b es; str b "]"      (* §3.10 *)
-  | Unary (Not, e) -> str b "NOT "; expression b level_logical_term e
-  | Unary (Unary_plus, e) -> str b "+"; expression b level_term e
-  | Unary (Unary_minus, e) -> str b "-"; expression b level_term e
+      identifier b f.func; str b "("; arguments b ~first_separator:"" (call_arguments f); str b ")"
+  | Aggregate (es, rs) ->                                           (* §3.10 *)
+      str b "[";
+      Array.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) (members es rs);
+      str b "]"
+  | Unary (Not, e, at) -> str b "NOT "; expression b level_logical_term (operand e at)
+  | Unary (Unary_plus, e, at) -> str b "+"; expression b level_term (operand e at)
+  | Unary (Unary_minus, e, at) -> str b "-"; expression b level_term (operand e at)
   | Binary (op, l, r) ->
       let level = binary_level op in
       (* Left-associative levels take their own level on the left; relations do not chain,
@@ -96,9 +97,11 @@ and expression_list b es =
   List.iteri (fun i e -> if i > 0 then str b ", "; expression b level_expr e) es
 
 (* §3.6 *)
-and data_reference b (r : data_reference) =
-  match r.it with
-  | Entire n -> name b n
+and data_reference b (r : data_reference) = reference b r.it
+
+and reference b (r : data_reference_desc) =
+  match r with
+  | Entire n -> str b n
   | Element (n, es) -> name b n; str b "{"; expression_list b es; str b "}"
   | Component (r, n) -> data_reference b r; str b "."; name b n
   | VAR_placeholder -> str b "<VAR>"
@@ -108,15 +111,17 @@ and data_reference b (r : data_reference) =
    loosest level: where the grammar asks for <expr> (functions) rather than <expression>
    (procedures), the two differ only by <EXP>, which a derivable tree does not put there. *)
 and arguments b ~first_separator args =
-  List.iteri (fun i (a : argument) ->
+  Array.iteri (fun i (a : argument) ->
       (match a.it with
-       | Required_argument _ | ARG_placeholder ->
+       | Required_argument _ | Positional_argument _ | ARG_placeholder ->
            str b (if i = 0 then first_separator else ", ")
        | Optional_argument _ | Conditional_argument _ ->
            str b (if i = 0 then first_separator else " "));
       match a.it with
-      | Required_argument (None, e) -> expression b level_expr e
-      | Required_argument (Some n, e) -> identifier b n; str b ":="; expression b level_expr e
+      | Required_argument (None, e, at) -> expression b level_expr (operand e at)
+      | Positional_argument e -> expression b level_expr (operand e a.at)
+      | Required_argument (Some n, e, at) ->
+          identifier b n; str b ":="; expression b level_expr (operand e at)
       | Optional_argument (n, None) -> str b "\\"; identifier b n
       | Optional_argument (n, Some e) ->
           str b "\\"; identifier b n; str b ":="; expression b level_expr e
@@ -134,11 +139,11 @@ let rec statement b ind (s : statement) = indent b ind; statement_rest b ind s
 and statement_rest b ind (s : statement) =
   match s.it with
   | Assignment (r, e) -> data_reference b r; str b " := "; expression_text b e; str b ";"; newline b
-  | Procedure_call (p, args) ->
+  | Procedure_call (p, args, regions) ->
       (match p with
        | Procedure_name i -> identifier b i
        | Late_bound e -> str b "%"; expression_text b e; str b "%");
-      arguments b ~first_separator:" " args;
+      arguments b ~first_separator:" " (Ast.arguments args regions);
       str b ";"; newline b
   | Goto i -> str b "GOTO "; identifier b i; str b ";"; newline b
   | Break -> str b "BREAK;"; newline b

@@ -166,7 +166,8 @@ type reference = { object_ : Env.data_object option; rtype : ty }
 let rec reference ctx place (r : data_reference) : reference =
   match r.it with
   | VAR_placeholder -> { object_ = None; rtype = Unknown }
-  | Entire name -> (
+  | Entire spelling -> (
+      let name = { it = spelling; at = r.at } in
       match Env.lookup place.scope name.it with
       | Some (Data d as o) ->
           Hashtbl.replace ctx.elab.names name.at o;
@@ -178,7 +179,7 @@ let rec reference ctx place (r : data_reference) : reference =
           { object_ = None; rtype = Unknown }
       | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
   | Element (name, indexes) -> (
-      let whole = reference ctx place { r with it = Entire name } in
+      let whole = reference ctx place { it = Entire name.it; at = name.at } in
       List.iter (fun i -> check_expression ~sections:"3.6,2.17" ctx place i (T.scalar Num)) indexes;
       match whole.rtype with
       | Known { base; dims = Sized sizes } when List.length sizes <> List.length indexes ->
@@ -232,16 +233,16 @@ and index_count ctx (name : name) indexes rank =
 and infer ctx place (e : expression) : ty =
   match e.it with
   | EXP_placeholder -> Unknown
-  | Literal (Num_literal _) -> Numeric_literal
-  | Literal (String_literal _) -> Known (T.scalar String)
-  | Literal (Bool_literal _) -> Known (T.scalar Bool)
-  | Data_reference r -> value_of_reference ctx place r
+  | Num_literal _ -> Numeric_literal
+  | String_literal _ -> Known (T.scalar String)
+  | Bool_literal _ -> Known (T.scalar Bool)
+  | Data_reference r -> value_of_reference ctx place (Ast.reference e r)
   | Function_call call -> function_call ctx place e.at call
   | Aggregate _ ->
       error ctx ~rule:"aggregate-context" ~section:"3.10" e.at
         "the data type of this aggregate cannot be determined by its context";
       Unknown
-  | Unary (op, a) -> unary ctx place e op a
+  | Unary (op, a, at) -> unary ctx place e op (operand a at)
   | Binary (op, a, b) -> binary ctx place e op a b
 
 (* §2.16: an object used in an expression is of a value type, or of a semi-value type used as
@@ -381,7 +382,7 @@ and equality ctx place e op a b =
    initial values, arguments, RETURN, test values, aggregate members. *)
 and check_expression ?(sections = "2.17") ctx place (e : expression) (expected : T.object_type) =
   match e.it with
-  | Aggregate members -> aggregate ~sections ctx place e members expected
+  | Aggregate (es, rs) -> aggregate ~sections ctx place e (members es rs) expected
   | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
@@ -401,7 +402,7 @@ and mismatch ~sections ctx (e : expression) expected actual =
 (* §3.10, §2.17 rule 2: an aggregate is an array or record value whose members have the types of
    the corresponding elements or components. *)
 and aggregate ~sections ctx place e members expected =
-  let count = List.length members in
+  let count = Array.length members in
   let element_type (dims : T.dims) : T.dims =
     match dims with
     | Sized [ _ ] | Conformant 1 -> Scalar
@@ -418,17 +419,17 @@ and aggregate ~sections ctx place e members expected =
       if n <> count then
         error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the array dimension is %d" count n;
-      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
+      Array.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Conformant _, base ->
-      List.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
+      Array.iter (fun m -> check_expression ~sections ctx place m { base; dims = element_type expected.dims }) members
   | Scalar, Record rt ->
       let components = rt.components in
       if List.length components <> count then
         error ctx ~rule:"aggregate-size" ~section:("3.10," ^ sections) e.at
           "this aggregate has %d members, but the record type %s has %d components" count
           rt.record_name (List.length components)
-      else List.iter2 (fun m (_, t) -> check_expression ~sections ctx place m (T.scalar t)) members components
-  | Scalar, T.Anytype -> List.iter (fun m -> ignore (infer ctx place m)) members
+      else List.iteri (fun i (_, t) -> check_expression ~sections ctx place members.(i) (T.scalar t)) components
+  | Scalar, T.Anytype -> Array.iter (fun m -> ignore (infer ctx place m)) members
   | Scalar, _ | Sized [], _ ->
       error ctx ~rule:"equal-types" ~section:("3.10," ^ sections) e.at "expected a value of type %s, found an aggregate"
         (T.to_string expected)
@@ -474,7 +475,7 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
                   p.p_name (type_string actual))
       | mode -> (
-          let r = match e.it with Data_reference r -> Some (reference ctx place r) | _ -> None in
+          let r = match e.it with Data_reference r -> Some (reference ctx place (Ast.reference e r)) | _ -> None in
           let kind = argument_kind e r in
           let unresolved = match r with Some { object_ = None; rtype = Unknown } -> true | _ -> false in
           (match Tables.access_cell kind mode with
@@ -512,8 +513,10 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
           | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
 
 (* §3.11, §4.6: the arguments of a call against the routine's parameter list, in order. *)
-and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument list) =
+and arguments ctx place (call_region : Source.region) (routine : Env.routine) (args : argument array) =
   if routine.r_open then loose_arguments ctx place args else
+  (* The matching against the parameter slots consumes the arguments from the front. *)
+  let args = Array.to_list args in
   let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
   let bound = ref [] in
   let bind p a = bound := (p, a) :: !bound in
@@ -521,8 +524,8 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   let arg_name (a : argument) =
     match a.it with
     | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
-    | Required_argument (Some n, _) -> name_of_identifier n
-    | Required_argument (None, _) | ARG_placeholder -> None
+    | Required_argument (Some n, _, _) -> name_of_identifier n
+    | Required_argument (None, _, _) | Positional_argument _ | ARG_placeholder -> None
   in
   let rec go slots (args : argument list) =
     match slots, args with
@@ -530,13 +533,18 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | [], [] -> ()
     | [], a :: _ ->
         error ctx ~rule:"argument-count" ~section:call a.at "%s takes no more arguments" routine.r_name
-    | Env.Required_slot p :: slots, ({ it = Required_argument (name, e); _ } as a) :: rest ->
+    | Env.Required_slot p :: slots, ({ it = Required_argument (name, e, e_at); _ } as a) :: rest ->
+        let e = operand e e_at in
         (match Option.bind name name_of_identifier with
          | Some n when not (T.same_name n p.p_name) ->
              error ctx ~rule:"argument-name" ~section:call a.at
                "the argument is named %s, but the parameter in this place is %s" n p.p_name
          | _ -> ());
         argument ~call ctx place a e p;
+        bind p a;
+        go slots rest
+    | Env.Required_slot p :: slots, ({ it = Positional_argument e; at } as a) :: rest ->
+        argument ~call ctx place a (operand e at) p;
         bind p a;
         go slots rest
     | Env.Required_slot p :: _, (a :: _) ->
@@ -620,24 +628,24 @@ and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
             error ctx ~rule:"equal-types" ~section:(call ^ ",2.17") a.at "expected a value of type %s, found %s"
               (T.to_string pt) (T.to_string t)
       | _ -> ())
-  | Required_argument _ | ARG_placeholder -> ()
+  | Required_argument _ | Positional_argument _ | ARG_placeholder -> ()
 
 (* An expression whose expected type is not known (an argument of an unknown routine or of a
    parameter whose type is unknown): a data reference may be of any value class there. *)
 and loosely_expression ctx place (e : expression) =
   match e.it with
-  | Aggregate es -> List.iter (loosely_expression ctx place) es
-  | Data_reference r -> ignore (reference ctx place r)
+  | Aggregate (es, rs) -> Array.iter (loosely_expression ctx place) (members es rs)
+  | Data_reference r -> ignore (reference ctx place (Ast.reference e r))
   | _ -> ignore (infer ctx place e)
 
 and function_call ctx place region (call : function_call) : ty =
   match call.func.it with
-  | ID_placeholder -> loose_arguments ctx place call.arguments; Unknown
+  | ID_placeholder -> loose_arguments ctx place (call_arguments call); Unknown
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Function result; _ } as r) as o) ->
           Hashtbl.replace ctx.elab.names call.func.at o;
-          arguments ctx place region r call.arguments;
+          arguments ctx place region r (call_arguments call);
           if is_unknown result then Unknown else Known result
       | Some (Routine _) ->
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is not a function" name;
@@ -646,14 +654,14 @@ and function_call ctx place region (call : function_call) : ty =
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
             (Env.obj_kind_name o);
           Unknown
-      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place call.arguments; Unknown)
+      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
 
-and loose_arguments ctx place (args : argument list) =
-  List.iter (fun (a : argument) ->
+and loose_arguments ctx place (args : argument array) =
+  Array.iter (fun (a : argument) ->
       match a.it with
-      | Required_argument (_, e) | Optional_argument (_, Some e) -> loosely_expression ctx place e
-      | Conditional_argument (_, r) -> ignore (reference ctx place r)
-      | Optional_argument (_, None) | ARG_placeholder -> ()) args
+      | Required_argument _ | Positional_argument _ | Optional_argument _ | ARG_placeholder ->
+          Option.iter (loosely_expression ctx place) (argument_value a)
+      | Conditional_argument (_, r) -> ignore (reference ctx place r)) args
 
 (* ------------------------------------------------------------------ assignment targets *)
 
@@ -702,18 +710,18 @@ let constant_expression ctx place ~what (e : expression) =
   let rec walk (e : expression) =
     if !offending = None then
       match e.it with
-      | Literal _ | EXP_placeholder -> ()
+      | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> ()
       | Function_call _ -> offending := Some (e.at, "a function call")
-      | Aggregate es -> List.iter walk es
-      | Unary (_, a) -> walk a
+      | Aggregate (es, rs) -> Array.iter walk (members es rs)
+      | Unary (_, a, at) -> walk (operand a at)
       | Binary (_, a, b) -> walk a; walk b
-      | Data_reference r -> reference_walk r
+      | Data_reference r -> reference_walk (Ast.reference e r)
   and reference_walk (r : data_reference) =
     match r.it with
     | VAR_placeholder -> ()
     | Component (inner, _) -> reference_walk inner
     | Element (name, indexes) -> entire name; List.iter walk indexes
-    | Entire name -> entire name
+    | Entire spelling -> entire { it = spelling; at = r.at }
   and entire (name : name) =
     if !offending = None then
       match Env.lookup place.scope name.it with
@@ -737,14 +745,16 @@ let constant_expression ctx place ~what (e : expression) =
 let literal_expression ctx (e : expression) =
   let rec ok (e : expression) =
     match e.it with
-    | Literal _ | EXP_placeholder -> true
-    | Unary ((Unary_plus | Unary_minus), { it = Literal (Num_literal _); _ }) -> true
-    | Aggregate es -> List.for_all ok es
+    | Num_literal _ | String_literal _ | Bool_literal _ | EXP_placeholder -> true
+    | Unary ((Unary_plus | Unary_minus), Num_literal _, _) -> true
+    | Aggregate (es, rs) -> Array.for_all ok (members es rs)
     | _ -> false
   in
   let rec first_bad (e : expression) =
     match e.it with
-    | Aggregate es -> List.find_map (fun m -> if ok m then None else Some (first_bad m)) es |> Option.value ~default:e.at
+    | Aggregate (es, rs) ->
+        Array.find_map (fun m -> if ok m then None else Some (first_bad m)) (members es rs)
+        |> Option.value ~default:e.at
     | _ -> e.at
   in
   if not (ok e) then
@@ -770,8 +780,10 @@ and statement ctx place (s : statement) =
       match assignment_target ctx place target with
       | Known t -> check_expression ~sections:"4.5,2.17" ctx place e t
       | Numeric_literal | Unknown -> loosely_expression ctx place e)
-  | Procedure_call (Procedure_name id, args) -> procedure_call ctx place s id args
-  | Procedure_call (Late_bound e, args) ->
+  | Procedure_call (Procedure_name id, args, regions) ->
+      procedure_call ctx place s id (Ast.arguments args regions)
+  | Procedure_call (Late_bound e, args, regions) ->
+      let args = Ast.arguments args regions in
       (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
          routine then (ERR_REFUNKPRC, ERR_CALLPROC). *)
       check_expression ~sections:"4.6,2.17" ctx place e (T.scalar String);

@@ -23,17 +23,17 @@ let eval ~lookup e =
      instead of looping (the judgement reports the cycle). *)
   let rec eval seen (e : expression) =
     match e.it with
-    | Literal (Num_literal text) -> (
+    | Num_literal text -> (
         match Num_literal.of_text text with Ok t -> Some (Number (Num_literal.to_q t)) | Error _ -> None)
-    | Literal (String_literal s) -> Some (Text s.bytes)
-    | Literal (Bool_literal b) -> Some (Boolean b)
-    | Data_reference { it = Entire name; _ } ->
-        let key = String.lowercase_ascii name.it in
+    | String_literal s -> Some (Text s.bytes)
+    | Bool_literal b -> Some (Boolean b)
+    | Data_reference (Entire name) ->
+        let key = String.lowercase_ascii name in
         if List.mem key seen then None
-        else Option.bind (lookup name.it) (eval (key :: seen))
+        else Option.bind (lookup name) (eval (key :: seen))
     | Data_reference _ | Function_call _ | Aggregate _ | EXP_placeholder -> None
-    | Unary (op, a) -> (
-        match op, eval seen a with
+    | Unary (op, a, at) -> (
+        match op, eval seen (operand a at) with
         | Unary_plus, Some (Number q) -> Some (Number q)
         | Unary_minus, Some (Number q) -> Some (Number (Q.neg q))
         | Not, Some (Boolean b) -> Some (Boolean (not b))
