@@ -24,12 +24,16 @@ bench: build
 
 # After a change to lib/syntax/parser.mly: add the automaton's new error states to
 # parser.messages (each with menhir's placeholder, which the build refuses until it is written).
+MESSAGES_TMP = _build/messages
+
 messages:
-	menhir --list-errors lib/syntax/parser.mly > /tmp/rapid-sem.auto.messages
-	menhir --merge-errors /tmp/rapid-sem.auto.messages --merge-errors lib/syntax/parser.messages \
-	  lib/syntax/parser.mly > /tmp/rapid-sem.merged.messages
-	menhir --update-errors /tmp/rapid-sem.merged.messages lib/syntax/parser.mly > lib/syntax/parser.messages
-	rm -f lib/syntax/parser.automaton lib/syntax/parser.conflicts lib/syntax/parser.ml lib/syntax/parser.mli
+	mkdir -p $(MESSAGES_TMP)
+	menhir --base $(MESSAGES_TMP)/parser --list-errors lib/syntax/parser.mly > $(MESSAGES_TMP)/auto.messages
+	menhir --base $(MESSAGES_TMP)/parser --merge-errors $(MESSAGES_TMP)/auto.messages \
+	  --merge-errors lib/syntax/parser.messages lib/syntax/parser.mly > $(MESSAGES_TMP)/merged.messages
+	menhir --base $(MESSAGES_TMP)/parser --update-errors $(MESSAGES_TMP)/merged.messages \
+	  lib/syntax/parser.mly > $(MESSAGES_TMP)/updated.messages
+	mv $(MESSAGES_TMP)/updated.messages lib/syntax/parser.messages
 
 clean:
 	dune clean
