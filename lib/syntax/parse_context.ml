@@ -15,23 +15,20 @@ let num_literals : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.cr
    (up to its limit), so the table adds a node per distinct name, not per occurrence. *)
 let idents : (string, Ast.identifier_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
 
-let ident spelling =
-  match Hashtbl.find_opt !idents spelling with
+(* The node [make spelling] kept in [table], made on the first occurrence of [spelling]. *)
+let shared table make spelling =
+  match Hashtbl.find_opt !table spelling with
   | Some node -> node
   | None ->
-      let node = Ast.Ident spelling in
-      Hashtbl.add !idents spelling node;
+      let node = make spelling in
+      Hashtbl.add !table spelling node;
       node
+
+let ident spelling = shared idents (fun s -> Ast.Ident s) spelling
 
 let num_literal text =
   if String.length text > 5 then Ast.Num_literal text
-  else
-    match Hashtbl.find_opt !num_literals text with
-    | Some node -> node
-    | None ->
-        let node = Ast.Num_literal text in
-        Hashtbl.add !num_literals text node;
-        node
+  else shared num_literals (fun t -> Ast.Num_literal t) text
 
 (* And for an entire variable read in an expression, [Data_reference (Entire name)]: the two
    nodes hold no region since the expression's record holds it (ast.ml), and tool0, wobj0, v500
@@ -39,12 +36,7 @@ let num_literal text =
 let entire_references : (string, Ast.expression_desc) Hashtbl.t ref = ref (Hashtbl.create 1)
 
 let entire_reference spelling =
-  match Hashtbl.find_opt !entire_references spelling with
-  | Some node -> node
-  | None ->
-      let node = Ast.Data_reference (Entire spelling) in
-      Hashtbl.add !entire_references spelling node;
-      node
+  shared entire_references (fun s -> Ast.Data_reference (Entire s)) spelling
 
 let start f =
   file := f;

@@ -12,20 +12,11 @@ exception Refused of Source.region * string
 val start : Source.file -> unit
 (** Before a parse of [file]: sets [file] and fresh tables of shared nodes. *)
 
-val num_literals : (string, Ast.expression_desc) Hashtbl.t ref
-(** The [Num_literal] nodes shared in the parse in progress. *)
-
 val num_literal : string -> Ast.expression_desc
 (** [Num_literal text], the same node for every occurrence of a short [text] in one parse. *)
 
-val idents : (string, Ast.identifier_desc) Hashtbl.t ref
-(** The [Ident] nodes shared in the parse in progress. *)
-
 val ident : string -> Ast.identifier_desc
 (** [Ident spelling], the same node for every occurrence of [spelling] in one parse. *)
-
-val entire_references : (string, Ast.expression_desc) Hashtbl.t ref
-(** The [Data_reference (Entire _)] nodes shared in the parse in progress. *)
 
 val entire_reference : string -> Ast.expression_desc
 (** [Data_reference (Entire spelling)], the same node for every occurrence of [spelling] as an
