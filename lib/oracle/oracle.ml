@@ -1,0 +1,72 @@
+type program = { name : string; files : string list }
+
+let is_dir p = try Sys.is_directory p with Sys_error _ -> false
+
+let sorted_entries dir = let a = Sys.readdir dir in Array.sort compare a; Array.to_list a
+
+let module_files dir =
+  List.filter (fun f -> Filename.check_suffix f ".mod" || Filename.check_suffix f ".sys") (sorted_entries dir)
+  |> List.map (Filename.concat dir)
+
+let programs_of_paths paths =
+  let rec walk acc path =
+    match acc with
+    | Error _ -> acc
+    | Ok found ->
+        if is_dir path then
+          if Filename.check_suffix path ".task" then
+            (try Ok ({ name = path; files = module_files path } :: found)
+             with Sys_error m -> Error m)
+          else
+            (match sorted_entries path with
+             | entries -> List.fold_left (fun acc e -> walk acc (Filename.concat path e)) acc entries
+             | exception Sys_error m -> Error m)
+        else if Sys.file_exists path then
+          if Filename.check_suffix path ".mod" then Ok ({ name = path; files = [ path ] } :: found) else acc
+        else Error (path ^ ": no such file or folder")
+  in
+  (* A path named on the command line is a program whatever its extension. *)
+  List.fold_left (fun acc p ->
+      match acc with
+      | Error _ -> acc
+      | Ok found when (not (is_dir p)) && Sys.file_exists p -> Ok ({ name = p; files = [ p ] } :: found)
+      | _ -> walk acc p) (Ok []) paths
+  |> Result.map List.rev
+
+type verdict = Agree of int | Diverge of Event_diff.divergence | Broken of string
+
+let stream_of who (r : Implementation.result) =
+  match r.status with
+  | `Timed_out -> Error (who ^ " did not finish in time")
+  | `Signaled n -> Error (Printf.sprintf "%s was killed by signal %d" who n)
+  | `Exited _ -> (
+      match Event_stream.parse r.stdout with
+      | Ok s -> Ok s
+      | Error m -> Error (Printf.sprintf "%s wrote something that is not an event stream: %s" who m))
+
+let run_stream who ?timeout ~template files =
+  match Implementation.run ?timeout ~template files with
+  | r -> stream_of who r
+  | exception (Unix.Unix_error (e, _, _)) -> Error (Printf.sprintf "%s could not be run: %s" who (Unix.error_message e))
+  | exception (Sys_error m) -> Error (Printf.sprintf "%s could not be run: %s" who m)
+
+let check ?ignore ?timeout ~reference ~impl program =
+  match run_stream "rapid-sem" ?timeout ~template:reference program.files with
+  | Error m -> Broken m
+  | Ok expected -> (
+      match run_stream "the implementation" ?timeout ~template:impl program.files with
+      | Error m -> Broken m
+      | Ok actual ->
+          if actual.schema <> expected.schema then
+            Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s"
+                      (Option.value actual.schema ~default:"(none)")
+                      (Option.value expected.schema ~default:"(none)"))
+          else
+            match Event_diff.compare ?ignore ~expected:expected.events ~actual:actual.events () with
+            | None -> Agree (List.length expected.events)
+            | Some d -> Diverge d)
+
+let verdict_report program = function
+  | Agree n -> Printf.sprintf "%s: agree (%d events)\n" program.name n
+  | Diverge d -> Event_diff.report ~file:program.name d
+  | Broken m -> Printf.sprintf "%s: %s\n" program.name m

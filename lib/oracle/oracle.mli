@@ -1,0 +1,22 @@
+(** The oracle: rapid-sem's observable events for a program against another implementation's
+    (doc/oracle.md). *)
+
+type program = { name : string; files : string list }
+(** A task buffer: one module file, or the module files of a [*.task] folder. *)
+
+val programs_of_paths : string list -> (program list, string) result
+(** A file is a program; a folder is searched recursively: each [*.mod] file not inside a
+    [*.task] folder is a program, each [*.task] folder (its [.mod] and [.sys] files) is one.
+    [Error] names a path that cannot be read. *)
+
+type verdict =
+  | Agree of int                                (** the number of events compared *)
+  | Diverge of Event_diff.divergence
+  | Broken of string                            (** an implementation wrote no usable stream *)
+
+val check :
+  ?ignore:string list -> ?timeout:float -> reference:string -> impl:string -> program -> verdict
+(** [reference] and [impl] are command templates ({!Implementation.command_line}); the
+    reference is rapid-sem's own [run --json]. *)
+
+val verdict_report : program -> verdict -> string

@@ -1,0 +1,1 @@
+oracle --impl 'echo not json' oracle-program.mod

@@ -1,0 +1,1 @@
+oracle --impl 'sh oracle-partial-impl.sh {file}' --ignore routine-entered --ignore routine-left oracle-program.mod

@@ -1,0 +1,1 @@
+oracle --impl 'sh oracle-partial-impl.sh {file}' oracle-program.mod

@@ -1,0 +1,1 @@
+oracle --impl '"$RAPID_SEM" run --json {files}' oracle-program.mod

@@ -1,0 +1,1 @@
+oracle --impl 'sh oracle-wrong-impl.sh {file}' oracle-program.mod
