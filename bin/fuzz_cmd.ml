@@ -1,0 +1,84 @@
+(* rapid-sem fuzz: a differential fuzzing campaign (doc/oracle.md, "Fuzzing"). *)
+
+open Cmdliner
+module C = Rapid_fuzz.Campaign
+
+let shard_conv =
+  let parse s =
+    match String.split_on_char '/' s with
+    | [ k; n ] -> (
+        match int_of_string_opt k, int_of_string_opt n with
+        | Some k, Some n when n >= 1 && k >= 1 && k <= n -> Ok { C.index = k; count = n }
+        | _ -> Error (`Msg (Printf.sprintf "%S: a shard is K/N with 1 <= K <= N" s)))
+    | _ -> Error (`Msg (Printf.sprintf "%S: a shard is K/N, for example 2/8" s))
+  in
+  Arg.conv (parse, fun ppf s -> Format.fprintf ppf "%d/%d" s.C.index s.count)
+
+let positive_int what =
+  let parse s = match int_of_string_opt s with
+    | Some n when n >= 0 -> Ok n
+    | _ -> Error (`Msg (Printf.sprintf "%s must be a whole number >= 0, not %S" what s)) in
+  Arg.conv (parse, Format.pp_print_int)
+
+(* On a terminal, one line rewritten in place; elsewhere nothing until the summary. *)
+let progress_line started ~done_ ~total ~failures ~rules_seen =
+  if done_ = total || done_ mod 25 = 0 then begin
+    let elapsed = Unix.gettimeofday () -. started in
+    let width = 30 in
+    let filled = if total = 0 then width else done_ * width / total in
+    Printf.eprintf "\r[%s%s] %d/%d  %.0f programs/s  %d failures  %d rules%!"
+      (String.make filled '#') (String.make (width - filled) '.') done_ total
+      (if elapsed > 0. then float done_ /. elapsed else 0.) failures rules_seen
+  end
+
+let cmd =
+  let count = Arg.(value & opt (positive_int "--count") 1000 & info [ "count" ] ~docv:"N" ~doc:"Programs in the whole campaign.") in
+  let seed = Arg.(value & opt int 1 & info [ "seed" ] ~docv:"S" ~doc:"The campaign's seed: the same seed gives the same programs.") in
+  let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N" ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
+  let out = Arg.(value & opt string "fuzz-failures" & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events.") in
+  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does.") in
+  let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too.") in
+  let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
+  let run count seed shard out impl mismatching coverage =
+    let started = Unix.gettimeofday () in
+    let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
+    let external_check = Option.map (fun template source ->
+        let file = Filename.temp_file "rapid-fuzz" ".mod" in
+        Fun.protect ~finally:(fun () -> try Sys.remove file with Sys_error _ -> ()) (fun () ->
+            let oc = open_out_bin file in
+            output_string oc source; close_out oc;
+            Unix.putenv "RAPID_SEM" Sys.executable_name;
+            let reference = Filename.quote Sys.executable_name ^ " run --json {files}" in
+            match Rapid_oracle.Oracle.check ~reference ~impl:template { name = file; files = [ file ] } with
+            | Agree _ -> Ok ()
+            | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
+    let options = { Rapid_fuzz.Program_gen.default_options with mismatching } in
+    let s = C.run ~options ?external_check ?progress ~seed ~count ~shard () in
+    if progress <> None then prerr_newline ();
+    List.iter (fun (f : C.failure_found) ->
+        let path = C.save ~dir:out f in
+        Printf.printf "FAIL program %d: %s\n  minimal program (%d statements, from %d): %s\n" f.program_index
+          (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path) s.failures;
+    let known = Rapid_semantics.Machine.rule_names in
+    let seen = List.filter (fun r -> List.mem_assoc r s.rules) known in
+    Printf.printf "%d programs (shard %d/%d, seed %d) in %.1f s: %.0f programs/s\n" s.programs shard.index
+      shard.count seed s.seconds (if s.seconds > 0. then float s.programs /. s.seconds else 0.);
+    Printf.printf "outcomes: %s\n" (String.concat ", " (List.map (fun (k, n) -> Printf.sprintf "%s %d" k n) s.outcomes));
+    Printf.printf "rules applied: %d of %d\n" (List.length seen) (List.length known);
+    if coverage then begin
+      List.iter (fun r -> Printf.printf "  %-28s %d\n" r (Option.value (List.assoc_opt r s.rules) ~default:0)) known
+    end;
+    Printf.printf "%d passed, %d failed\n" (s.programs - List.length s.failures) (List.length s.failures);
+    if s.failures = [] then 0 else 1
+  in
+  let doc = "generate well-typed RAPID programs and check the semantics' properties on each" in
+  let man = [
+    `S Manpage.s_description;
+    `P "Generates COUNT programs type-directed (lib/fuzz), and for each: the printer's round \
+        trip, the static semantics accepts it, progress (no state without a rule, no OCaml \
+        exception), determinism (two runs give the same events), the engines agree, and with \
+        $(b,--impl) another implementation agrees (doc/oracle.md). Each failure is shrunk to a \
+        minimal program, saved in DIR with its expected events.";
+    `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
+  ] in
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ mismatching $ coverage)

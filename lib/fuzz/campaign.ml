@@ -1,0 +1,100 @@
+type shard = { index : int; count : int }
+
+type failure_found = {
+  program_index : int;
+  failure : Fuzz_run.failure;
+  source : string;
+  original_size : int;
+  minimal_size : int;
+}
+
+type summary = {
+  programs : int;
+  failures : failure_found list;
+  outcomes : (string * int) list;
+  rules : (string * int) list;
+  seconds : float;
+}
+
+let program_seed ~seed i = Random.State.make [| seed; i |]
+
+let same_class (a : Fuzz_run.failure) (b : Fuzz_run.failure) =
+  match a, b with
+  | Refused _, Refused _ | Exception _, Exception _ | Stuck _, Stuck _
+  | Nondeterministic _, Nondeterministic _ | Engines_differ _, Engines_differ _
+  | Round_trip _, Round_trip _ -> true
+  | _ -> false
+
+(* Greedy shrinking: take the first smaller program that fails in the same way, until none
+   does. A candidate that no longer checks is not a smaller failure of the same kind (unless
+   the failure is itself a refusal). *)
+let minimise judge program failure =
+  let rec go program failure budget =
+    if budget = 0 then (program, failure)
+    else
+      let next = Seq.filter_map (fun candidate ->
+          match judge candidate with
+          | Error f when same_class f failure -> Some (candidate, f)
+          | _ -> None) (Program_gen.shrink program) in
+      match next () with
+      | Seq.Nil -> (program, failure)
+      | Seq.Cons ((smaller, f), _) -> go smaller f (budget - 1)
+  in
+  go program failure 500
+
+let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
+    ?(max_steps = 200_000) ~seed ~count ~shard () =
+  let started = Unix.gettimeofday () in
+  let outcomes = Hashtbl.create 8 in
+  Fuzz_run.reset_rule_counts ();
+  let judge program =
+    let source = Program_gen.to_source program in
+    match Fuzz_run.check_program ~engines ~max_steps source with
+    | Error f -> Error f
+    | Ok observed -> (
+        match external_check with
+        | None -> Ok observed
+        | Some check -> (
+            match check source with
+            | Ok () -> Ok observed
+            | Error m -> Error (Fuzz_run.Engines_differ ("the implementation: " ^ m))))
+  in
+  let failures = ref [] and programs = ref 0 in
+  for i = 0 to count - 1 do
+    if i mod shard.count = shard.index - 1 then begin
+      incr programs;
+      let program = Program_gen.generate ~options (program_seed ~seed i) in
+      (match judge program with
+       | Ok observed ->
+           let kind = List.hd (String.split_on_char ' ' observed.outcome) in
+           Hashtbl.replace outcomes kind (1 + Option.value (Hashtbl.find_opt outcomes kind) ~default:0)
+       | Error failure ->
+           let minimal, failure = minimise judge program failure in
+           failures := { program_index = i; failure; source = Program_gen.to_source minimal;
+                         original_size = Program_gen.size program; minimal_size = Program_gen.size minimal }
+                       :: !failures);
+      match progress with
+      | Some f -> f ~done_:!programs ~total:((count - shard.index) / shard.count + 1)
+                    ~failures:(List.length !failures) ~rules_seen:(List.length (Fuzz_run.rule_counts ()))
+      | None -> ()
+    end
+  done;
+  { programs = !programs; failures = List.rev !failures;
+    outcomes = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) outcomes []);
+    rules = Fuzz_run.rule_counts (); seconds = Unix.gettimeofday () -. started }
+
+let write path text =
+  let oc = open_out_bin path in
+  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+
+let save ~dir f =
+  if not (Sys.file_exists dir) then Sys.mkdir dir 0o755;
+  let base = Filename.concat dir (Printf.sprintf "fuzz-%d" f.program_index) in
+  write (base ^ ".mod") f.source;
+  write (base ^ ".failure") (Fuzz_run.failure_to_string f.failure ^ "\n");
+  let expected =
+    match Fuzz_run.observe f.source with
+    | Ok o -> String.concat "\n" (o.events @ [ "end " ^ o.outcome ]) ^ "\n"
+    | Error m -> m ^ "\n" in
+  write (base ^ ".expected") expected;
+  base ^ ".mod"

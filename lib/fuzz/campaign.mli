@@ -1,0 +1,40 @@
+(** A fuzzing campaign: generate, check and run programs, shrink each failure to a minimal
+    program and save it (doc/oracle.md, "Fuzzing"). *)
+
+type shard = { index : int; count : int }
+(** Shard [index] of [count] (1-based): program [i] of the campaign belongs to shard
+    [i mod count + 1], so that shards split the programs and together cover them all. *)
+
+type failure_found = {
+  program_index : int;
+  failure : Fuzz_run.failure;
+  source : string;                       (** the minimal program *)
+  original_size : int;
+  minimal_size : int;
+}
+
+type summary = {
+  programs : int;                        (** programs of this shard run *)
+  failures : failure_found list;
+  outcomes : (string * int) list;        (** how runs ended: ended, stopped, exhausted ... *)
+  rules : (string * int) list;           (** the machine's rules, with how often each applied *)
+  seconds : float;
+}
+
+val program_seed : seed:int -> int -> Random.State.t
+(** The random state of program [i] of a campaign: the same for every shard layout. *)
+
+val run :
+  ?options:Program_gen.options ->
+  ?engines:Fuzz_run.engine list ->
+  ?external_check:(string -> (unit, string) result) ->
+  ?progress:(done_:int -> total:int -> failures:int -> rules_seen:int -> unit) ->
+  ?max_steps:int ->
+  seed:int -> count:int -> shard:shard -> unit -> summary
+(** [external_check source] compares another implementation on a program that passed every
+    property (the oracle); an [Error] is a failure too. *)
+
+val save : dir:string -> failure_found -> string
+(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.failure] (what went wrong) and
+    [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
+    missing; returns the .mod's path. *)

@@ -1,0 +1,131 @@
+open Rapid_syntax
+module M = Rapid_semantics.Machine
+
+type observed = { events : string list; outcome : string; finished : bool }
+
+type failure =
+  | Refused of string
+  | Exception of string
+  | Stuck of string
+  | Nondeterministic of string
+  | Engines_differ of string
+  | Round_trip of string
+
+let failure_to_string = function
+  | Refused m -> "the generated program does not check: " ^ m
+  | Exception m -> "an OCaml exception escaped: " ^ m
+  | Stuck m -> "no rule applies (exit 125): " ^ m
+  | Nondeterministic m -> "two runs differ: " ^ m
+  | Engines_differ m -> "the engines differ: " ^ m
+  | Round_trip m -> "the printer's round trip fails: " ^ m
+
+type engine = { engine_name : string; run : Rapid_semantics.Ir.program -> max_steps:int -> observed }
+
+let place at = Source.to_string at
+
+let event_text (e : M.event) =
+  match e with
+  | Output s -> "output " ^ String.escaped s
+  | Erase -> "erase"
+  | Log s -> "log " ^ String.escaped s
+  | Routine_entered r -> "routine-entered " ^ r
+  | Routine_left r -> "routine-left " ^ r
+  | Error_raised { name; number; at } -> Printf.sprintf "error-raised %s %d %s" name number (place at)
+  | Error_handled { name; routine } -> Printf.sprintf "error-handled %s %s" name routine
+  | Undo_run r -> "undo-run " ^ r
+  | Task_ended -> "task-ended"
+
+let outcome_text (o : M.outcome) =
+  match o with
+  | Running -> "running"
+  | Ended -> "ended"
+  | Stopped { name; number; at; chain } ->
+      Printf.sprintf "stopped %s %d %s [%s]" name number (place at) (String.concat " " chain)
+  | Resource_exhausted m -> "exhausted " ^ m
+  | Unsupported m -> "unsupported " ^ m
+  | Stuck m -> "stuck " ^ m
+
+let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
+let reset_rule_counts () = Hashtbl.reset rule_table
+let rule_counts () = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) rule_table [])
+
+let machine =
+  let run program ~max_steps =
+    match M.start program ~entry:"main" with
+    | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
+    | Ok cfg ->
+        let events = ref [] in
+        while M.outcome cfg = Running && M.steps cfg < max_steps do
+          let rule, evs = M.step cfg in
+          Hashtbl.replace rule_table rule (1 + Option.value (Hashtbl.find_opt rule_table rule) ~default:0);
+          List.iter (fun e -> events := event_text e :: !events) evs
+        done;
+        let o = M.outcome cfg in
+        let finished = match o with Running | Resource_exhausted _ -> false | _ -> true in
+        { events = List.rev !events; outcome = outcome_text o; finished }
+  in
+  { engine_name = "machine"; run }
+
+let first_difference a b =
+  let rec go i a b =
+    match a, b with
+    | [], [] -> "equal"
+    | x :: a', y :: b' -> if x = y then go (i + 1) a' b' else Printf.sprintf "event %d: %s / %s" i x y
+    | x :: _, [] -> Printf.sprintf "event %d: %s / (none)" i x
+    | [], y :: _ -> Printf.sprintf "event %d: (none) / %s" i y
+  in
+  go 1 a b
+
+let compare_observed name (a : observed) (b : observed) =
+  if a.events <> b.events then Some (Printf.sprintf "%s: %s" name (first_difference a.events b.events))
+  else if a.outcome <> b.outcome then Some (Printf.sprintf "%s: outcome %s / %s" name a.outcome b.outcome)
+  else None
+
+let check_program ?(engines = []) ?(max_steps = 200_000) source =
+  try
+    match Parse.parse_string ~name:"fuzz.mod" source with
+    | Error d -> Error (Refused (Diagnostic.to_string d))
+    | Ok m -> (
+        (* The printer's round trip: the printed module reads back to the same tree. *)
+        let printed = Printer.module_declaration m in
+        match Parse.parse_string ~name:"fuzz.mod" printed with
+        | Error d -> Error (Round_trip (Diagnostic.to_string d))
+        | Ok m' when Ast_dump.module_declaration m <> Ast_dump.module_declaration m' ->
+            Error (Round_trip "the printed module parses to another tree")
+        | Ok _ -> (
+            match Rapid_semantics.Session.load_modules [ m ] with
+            | Error (Front_end ds) -> Error (Refused (String.concat "; " (List.map Diagnostic.to_string ds)))
+            | Error (Static rs) ->
+                Error (Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
+                                                      (List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs))))
+            | Error (Internal m) -> Error (Exception m)
+            | Ok loaded ->
+                let first = machine.run loaded.program ~max_steps in
+                if String.length first.outcome >= 5 && String.sub first.outcome 0 5 = "stuck" then
+                  Error (Stuck first.outcome)
+                else
+                  let again = machine.run loaded.program ~max_steps in
+                  match compare_observed "machine twice" first again with
+                  | Some d -> Error (Nondeterministic d)
+                  | None ->
+                      let differ = List.find_map (fun e ->
+                          let other = e.run loaded.program ~max_steps in
+                          (* An engine counts its own fuel: a run that exhausts it is compared
+                             only when both finished. *)
+                          if not (first.finished && other.finished) then None
+                          else compare_observed ("machine / " ^ e.engine_name) first other) engines in
+                      match differ with
+                      | Some d -> Error (Engines_differ d)
+                      | None -> Ok first))
+  with
+  | Stack_overflow -> Error (Exception "stack overflow")
+  | Out_of_memory -> Error (Exception "out of memory")
+  | e -> Error (Exception (Printexc.to_string e))
+
+let observe ?(max_steps = 200_000) source =
+  match Parse.parse_string ~name:"fuzz.mod" source with
+  | Error d -> Error (Diagnostic.to_string d)
+  | Ok m -> (
+      match Rapid_semantics.Session.load_modules [ m ] with
+      | Ok loaded -> Ok (machine.run loaded.program ~max_steps)
+      | Error _ -> Error "the program does not check")

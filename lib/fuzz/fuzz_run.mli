@@ -1,0 +1,37 @@
+(** Running a generated program and judging the properties of doc/oracle.md ("Fuzzing"). *)
+
+type observed = {
+  events : string list;        (** the observable events, one line each, as run --json writes them *)
+  outcome : string;            (** how the run ended, with the error's name and place *)
+  finished : bool;             (** ended within the step bound (not exhausted) *)
+}
+
+type failure =
+  | Refused of string          (** the generated program does not pass check: a generator or checker bug *)
+  | Exception of string        (** an OCaml exception escaped *)
+  | Stuck of string            (** a checked program reached a state with no rule (exit 125) *)
+  | Nondeterministic of string (** two runs gave different events *)
+  | Engines_differ of string   (** the engines' events differ *)
+  | Round_trip of string       (** print (parse s) does not parse to the same tree *)
+
+val failure_to_string : failure -> string
+
+type engine = {
+  engine_name : string;
+  run : Rapid_semantics.Ir.program -> max_steps:int -> observed;
+}
+
+val machine : engine
+(** The small-step machine, the definition. *)
+
+val check_program : ?engines:engine list -> ?max_steps:int -> string -> (observed, failure) result
+(** Parses, checks and runs the source with the machine twice and with every other engine;
+    [Ok] with the machine's observation when every property holds. *)
+
+val observe : ?max_steps:int -> string -> (observed, string) result
+(** The machine's observation of a source, without judging any property. *)
+
+val rule_counts : unit -> (string * int) list
+(** The machine's rules applied since the last {!reset_rule_counts}, with counts, by name. *)
+
+val reset_rule_counts : unit -> unit
