@@ -317,4 +317,4 @@ let spec_cmd =
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
-  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd ]))
+  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))

@@ -1,0 +1,1 @@
+mem mem-chapter16.mod
