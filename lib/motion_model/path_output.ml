@@ -98,13 +98,21 @@ let path_svg ?(title = "TCP path") p =
     let start = (Planner.pose_at p 0.).trans in
     buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"#333\">start</text>\n"
       (px start -. 4.) (py start -. 4.) (px start +. 7.) (py start +. 14.);
+    (* Labels of points that fall together (a vertical move seen from above) are stacked. *)
+    let placed = ref [] in
+    let place x y w =
+      let rec go y = if List.exists (fun (x', y', w') -> Float.abs (y -. y') < 13. && x < x' +. w' && x' < x +. w) !placed
+        then go (y +. 14.) else y in
+      let y = go y in
+      placed := (x, y, w) :: !placed; y in
     List.iter (fun (sg : Planner.segment_info) ->
         let x = px sg.target and y = py sg.target in
         if sg.seg_fine then buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"#c0392b\"/>\n" x y
         else buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"white\" stroke=\"#c0392b\" stroke-width=\"1.5\"/>\n" x y;
         if sg.seg_label <> "" then
+          let ly = place (x +. 6.) (y -. 6.) (7. *. float_of_int (String.length sg.seg_label)) in
           buf_printf b "<text x=\"%.1f\" y=\"%.1f\" fill=\"#c0392b\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">%s</text>\n"
-            (x +. 6.) (y -. 6.) (esc sg.seg_label)) segs;
+            (x +. 6.) ly (esc sg.seg_label)) segs;
     Buffer.add_string b "</g>\n" in
   view 0. "Top view (x–y)" "x" "y" (fun q -> q.x) (fun q -> q.y) xr yr;
   view (panel +. 60.) "Side view (x–z)" "x" "z" (fun q -> q.x) (fun q -> q.z) xr zr;
@@ -145,9 +153,36 @@ let timeline_svg ?(title = "Motion timeline") p =
   List.iter (fun (s : Planner.segment_info) ->
       if s.seg_fine then
         match List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces with
-        | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"50\" x2=\"%.1f\" y2=\"92\" stroke=\"#c0392b\" stroke-width=\"2\"/><text x=\"%.1f\" y=\"104\" text-anchor=\"middle\" fill=\"#c0392b\" font-size=\"10\">fine</text>\n"
-                      (sx i.t_to) (sx i.t_to) (sx i.t_to)
+        | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"48\" x2=\"%.1f\" y2=\"88\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n"
+                      (sx i.t_to) (sx i.t_to)
         | None -> ()) (Array.to_list segs);
+  (* Each programmed point under the time it is passed: the end of its segment at a stop point,
+     the middle of its corner path at a fly-by point; labels in three staggered rows. *)
+  let rows = Array.make 3 neg_infinity in
+  Array.iter (fun (s : Planner.segment_info) ->
+      let own = List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces in
+      let corner = List.find_opt (fun (i : Planner.piece_info) ->
+          match i.kind with Planner.Corner (a, _) -> a = s.seg_id | _ -> false) pieces in
+      let at = match corner, own with
+        | Some c, _ -> Some ((c.t_from +. c.t_to) /. 2.)
+        | None, Some i -> Some i.t_to
+        | None, None -> None in
+      match at with
+      | None -> ()
+      | Some t ->
+          let name = if s.seg_label = "" then "#" ^ string_of_int s.seg_id else s.seg_label in
+          let x = sx t and w = 6.5 *. float_of_int (String.length name) in
+          let row = ref 0 in
+          while !row < 2 && x -. w /. 2. < rows.(!row) +. 4. do incr row done;
+          rows.(!row) <- x +. w /. 2.;
+          let y = 100. +. 12. *. float_of_int !row in
+          buf_printf b "<line x1=\"%.1f\" y1=\"85\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" stroke-width=\"0.5\"/><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" fill=\"#333\">%s</text>\n"
+            x x (y -. 9.) x y (esc name)) segs;
+  buf_printf b "<g font-size=\"11\"><rect x=\"300\" y=\"12\" width=\"12\" height=\"10\" fill=\"#1f5fbf\"/><text x=\"316\" y=\"21\">move</text>\
+<rect x=\"360\" y=\"12\" width=\"12\" height=\"10\" fill=\"#e67e00\"/><text x=\"376\" y=\"21\">corner path (fly-by point)</text>\
+<rect x=\"530\" y=\"12\" width=\"12\" height=\"10\" fill=\"#bbbbbb\"/><text x=\"546\" y=\"21\">standing still</text>\
+<line x1=\"640\" y1=\"10\" x2=\"640\" y2=\"24\" stroke=\"#c0392b\" stroke-width=\"2\"/><text x=\"646\" y=\"21\">stop point (fine)</text>\
+<text x=\"760\" y=\"21\" fill=\"#333\">names: programmed points</text></g>\n";
   (* TCP speed by differences of positions. *)
   let n = 600 in
   let dt = tend /. float_of_int n in
@@ -155,7 +190,7 @@ let timeline_svg ?(title = "Motion timeline") p =
       let t0 = float_of_int k *. dt in
       distance (Planner.pose_at p t0).trans (Planner.pose_at p (t0 +. dt)).trans /. dt) in
   let vmax = Array.fold_left Float.max 1. speeds in
-  let top = 120. and h = 160. in
+  let top = 140. and h = 140. in
   buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#999\"/>\n" left (top +. h) (w -. 30.) (top +. h);
   buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">%.0f mm/s</text><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">0</text>\n"
     (left -. 4.) (top +. 4.) vmax (left -. 4.) (top +. h);
