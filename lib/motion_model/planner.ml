@@ -71,8 +71,8 @@ let seg_joints k sg s =
 
 type shape =
   | Part of segment  (* the parameter is the segment's s *)
-  | Blend of { a : segment; b : segment; c0 : pos; c1 : pos; c2 : pos; r0 : orient; r1 : orient;
-               qa : float array; qp : float array; qb : float array }
+  | Blend of { a : segment; b : segment; fa : float; fb : float; c0 : pos; c1 : pos; c2 : pos;
+               r0 : orient; r1 : orient }
   | Joint_blend of { a : segment; b : segment; j0 : float array; j1 : float array;
                      j2 : float array }
 
@@ -102,7 +102,8 @@ let piece_joints k pc u =
   match pc.shape with
   | Part sg -> seg_joints k sg u
   | Blend b ->
-      joints_of_tcp k (piece_pose k pc u) (blend_tframe b.a b.b u) (bezier_q b.qa b.qp b.qb u)
+      let qa = lerp_q b.a.q_start b.a.q_end (1. -. b.fa) and qb = lerp_q b.b.q_start b.b.q_end b.fb in
+      joints_of_tcp k (piece_pose k pc u) (blend_tframe b.a b.b u) (bezier_q qa b.a.q_end qb u)
   | Joint_blend b -> Ok (bezier_q b.j0 b.j1 b.j2 u)
 
 (* ------------------------------------------------------------------ growable arrays *)
@@ -305,10 +306,9 @@ let plan t ~now m =
                   let j s g = match seg_joints k s g with Ok q -> q | Error _ -> lerp_q s.q_start s.q_end g in
                   Joint_blend { a; b = sg; j0 = j a (1. -. fa); j1 = a.q_end; j2 = j sg fb }
               | _ ->
-                  Blend { a; b = sg; c0 = seg_pos k a (1. -. fa); c1 = a.end_tcp; c2 = seg_pos k sg fb;
-                          r0 = slerp a.rot0 a.rot1 (1. -. fa); r1 = slerp sg.rot0 sg.rot1 fb;
-                          qa = lerp_q a.q_start a.q_end (1. -. fa); qp = a.q_end;
-                          qb = lerp_q sg.q_start sg.q_end fb }
+                  Blend { a; b = sg; fa; fb; c0 = seg_pos k a (1. -. fa); c1 = a.end_tcp;
+                          c2 = seg_pos k sg fb; r0 = slerp a.rot0 a.rot1 (1. -. fa);
+                          r1 = slerp sg.rot0 sg.rot1 fb }
             in
             push_piece t { t0 = tc0; t1 = tc1; p0 = 0.; p1 = 1.; shape }
           end;
