@@ -49,19 +49,6 @@ let forward k q =
 
 let quadrant a = int_of_float (Float.floor (a /. 90.))
 
-let psi (r : Robot.t) = atan2 r.axes.(3).d r.axes.(2).a
-
-let conf_of k q =
-  let r = k.robot in
-  let f = forward k q in
-  let z6 = rotate f.rot { x = 0.; y = 0.; z = 1. } in
-  let w = sub f.trans (scale r.axes.(5).d z6) in
-  let t1 = rad (q.(0) +. r.axes.(0).offset) in
-  let behind = w.x *. cos t1 +. w.y *. sin t1 < 0. in
-  let t3 = rad (q.(2) +. r.axes.(2).offset) in
-  let elbow = sin (t3 +. psi r) < 0. in
-  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if q.(4) < 0. then 1 else 0) in
-  { cf1 = quadrant q.(0); cf4 = quadrant q.(3); cf6 = quadrant q.(5); cfx }
 
 let singular_zone = 1.0
 
@@ -194,6 +181,11 @@ let arm_of k q =
   let l3 = sqrt (a3 *. a3 +. d4 *. d4) and ps = atan2 d4 a3 in
   let radial = ax.(0).a +. ax.(1).a *. cos t2 +. l3 *. cos (t2 +. t3 +. ps) in
   (radial < 0., sin (t3 +. ps) < 0.)
+
+let conf_of k q =
+  let behind, elbow = arm_of k q in
+  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if q.(4) < 0. then 1 else 0) in
+  { cf1 = quadrant q.(0); cf4 = quadrant q.(3); cf6 = quadrant q.(5); cfx }
 
 let nearest_of (r : Robot.t) sols q0 =
   let dist q = let d = ref 0. in

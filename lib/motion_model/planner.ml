@@ -226,9 +226,10 @@ let build t ~now_p m id =
       let* q, f = goal_joints rt (Kinematics.Nearest q_start) in
       let* q =
         if st.conf_l then
-          let* qc, _ = goal_joints rt (Kinematics.With_conf rt.conf) in
-          if (Kinematics.conf_of k q).cfx <> rt.conf.cfx then Error Motion_error.Configuration_error
-          else Ok qc
+          let c = Kinematics.conf_of k q in
+          if c.cfx <> rt.conf.cfx then Error Motion_error.Configuration_error
+          else if c.cf1 = rt.conf.cf1 && c.cf4 = rt.conf.cf4 && c.cf6 = rt.conf.cf6 then Ok q
+          else let* qc, _ = goal_joints rt (Kinematics.With_conf rt.conf) in Ok qc
         else Ok q in
       if (not st.sing_area_wrist) && Kinematics.wrist_singular k q then Error Motion_error.Close_to_singularity
       else Ok (q, f) in
