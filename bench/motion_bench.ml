@@ -97,4 +97,8 @@ let () =
   Printf.printf "simulated robot time     %.1f s = %.0f x the processor time   target >= 10000\n"
     robot_time (robot_time /. cpu_s);
   Printf.printf "pose_at queries          %.0f per second (processor)\n" (float_of_int q /. qcpu);
-  Printf.printf "peak resident set        %d KB (%d KB above the start)\n" (vm_hwm_kb ()) (vm_hwm_kb () - base)
+  Printf.printf "peak resident set        %d KB (%d KB above the start)\n" (vm_hwm_kb ()) (vm_hwm_kb () - base);
+  let words x = Obj.reachable_words (Obj.repr x) in
+  Printf.printf "planner's data           %.1f MB (%.0f bytes per move); the generated moves %.1f MB\n"
+    (float_of_int (words p * 8) /. 1e6) (float_of_int (words p * 8) /. float_of_int !n)
+    (float_of_int (words moves * 8) /. 1e6)

@@ -36,8 +36,12 @@ type geometry =
 type segment = {
   id : int; label : string; kind : string; geometry : geometry;
   rot0 : orient; rot1 : orient; q_start : float array; q_end : float array; tframe : pose;
-  length : float; angle : float; duration : float; t_start : float;
-  fine : bool; zone_tcp : float; zone_ori : float; end_tcp : pos;
+  f : figures; fine : bool; end_tcp : pos;
+}
+
+(* All floats: one flat block, not six boxes (the queue holds one per move). *)
+and figures = {
+  length : float; angle : float; duration : float; t_start : float; zone_tcp : float; zone_ori : float;
 }
 
 let lerp_q a b s = Array.init (Array.length a) (fun i -> a.(i) +. s *. (b.(i) -. a.(i)))
@@ -77,13 +81,14 @@ type shape =
                      j2 : float array }
 
 (* The parameter goes linearly from p0 at t0 to p1 at t1 (path time). *)
-type piece = { t0 : float; mutable t1 : float; p0 : float; mutable p1 : float; shape : shape }
+type span = { t0 : float; mutable t1 : float; p0 : float; mutable p1 : float }
+type piece = { tm : span; shape : shape }
 
 let param pc tp =
-  if pc.t1 <= pc.t0 then pc.p1
+  if pc.tm.t1 <= pc.tm.t0 then pc.tm.p1
   else
-    let tau = Float.max 0. (Float.min 1. ((tp -. pc.t0) /. (pc.t1 -. pc.t0))) in
-    pc.p0 +. (pc.p1 -. pc.p0) *. tau
+    let tau = Float.max 0. (Float.min 1. ((tp -. pc.tm.t0) /. (pc.tm.t1 -. pc.tm.t0))) in
+    pc.tm.p0 +. (pc.tm.p1 -. pc.tm.p0) *. tau
 
 let bezier a b c u = add (add (scale ((1. -. u) *. (1. -. u)) a) (scale (2. *. u *. (1. -. u)) b)) (scale (u *. u) c)
 let bezier_q a b c u = Array.init (Array.length a) (fun i ->
@@ -199,12 +204,12 @@ let side_fraction ~length ~angle zr zo =
   else 0.
 
 let corner_fractions (a : segment) (b : segment) =
-  if a.length > 0. && b.length > 0. then
-    let r = Float.min a.zone_tcp (Float.min (a.length /. 2.) (b.length /. 2.)) in
-    (r /. a.length, r /. b.length)
+  if a.f.length > 0. && b.f.length > 0. then
+    let r = Float.min a.f.zone_tcp (Float.min (a.f.length /. 2.) (b.f.length /. 2.)) in
+    (r /. a.f.length, r /. b.f.length)
   else
-    (side_fraction ~length:a.length ~angle:a.angle a.zone_tcp a.zone_ori,
-     side_fraction ~length:b.length ~angle:b.angle a.zone_tcp a.zone_ori)
+    (side_fraction ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
+     side_fraction ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
 
 let build t ~now_p m id =
   let k = t.kin and st = t.settings in
@@ -268,11 +273,13 @@ let build t ~now_p m id =
           Profile.joint robot st.velset m.timing ~deltas:(Array.mapi (fun i a -> a -. q0.(i)) q1) ~length ~angle
       | _ -> Profile.cartesian robot st.velset m.timing ~length ~angle in
     let fine = m.zone.finep || m.inpos <> None in
-    Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; length;
-          angle; duration; t_start = now_p; fine; zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
-          zone_ori = (if fine then 0. else m.zone.zone_ori); end_tcp }, f_end)
+    let f = { length; angle; duration; t_start = now_p;
+              zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
+              zone_ori = (if fine then 0. else m.zone.zone_ori) } in
+    Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; f; fine;
+          end_tcp }, f_end)
 
-let push_piece t pc = if pc.t1 > pc.t0 || pc.p1 <> pc.p0 then Vec.push t.pieces pc
+let push_piece t pc = if pc.tm.t1 > pc.tm.t0 || pc.tm.p1 <> pc.tm.p0 then Vec.push t.pieces pc
 
 let plan t ~now m =
   let now_p = path_time t now in
@@ -282,24 +289,24 @@ let plan t ~now m =
   (* Where the segment starts in time, and the corner into it (law Z-corner). *)
   let sg, own_from, motion_from =
     match t.open_seg with
-    | None -> let ts = Float.max now_p t.end_time in ({ sg with t_start = ts }, 0., ts)
+    | None -> let ts = Float.max now_p t.end_time in ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
     | Some (a, idx) ->
         let fa, fb = corner_fractions a sg in
-        let a_end = a.t_start +. a.duration in
-        let tc0 = a.t_start +. (1. -. fa) *. a.duration in
+        let a_end = a.f.t_start +. a.f.duration in
+        let tc0 = a.f.t_start +. (1. -. fa) *. a.f.duration in
         if now_p > tc0 +. 1e-9 then begin
           (* Too late for the corner: the fly-by point becomes a stop point. *)
           warnings := [ Corner_path_failure a.id ];
           let ts = Float.max now_p a_end in
-          ({ sg with t_start = ts }, 0., ts)
+          ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
         end else begin
-          let sg = { sg with t_start = a_end } in
-          let tc1 = a_end +. fb *. sg.duration in
+          let sg = { sg with f = { sg.f with t_start = a_end } } in
+          let tc1 = a_end +. fb *. sg.f.duration in
           if fa > 0. || fb > 0. then begin
             let pa = Vec.get t.pieces idx in
-            pa.p1 <- 1. -. fa;
-            pa.t1 <- tc0;
-            if pa.t1 <= pa.t0 then Vec.truncate t.pieces idx;
+            pa.tm.p1 <- 1. -. fa;
+            pa.tm.t1 <- tc0;
+            if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.pieces idx;
             let k = t.kin in
             let shape =
               match a.geometry, sg.geometry with
@@ -311,14 +318,14 @@ let plan t ~now m =
                           c2 = seg_pos k sg fb; r0 = slerp a.rot0 a.rot1 (1. -. fa);
                           r1 = slerp sg.rot0 sg.rot1 fb }
             in
-            push_piece t { t0 = tc0; t1 = tc1; p0 = 0.; p1 = 1.; shape }
+            push_piece t { tm = { t0 = tc0; t1 = tc1; p0 = 0.; p1 = 1. }; shape }
           end;
           (sg, fb, tc0)
         end
   in
-  let t_end = sg.t_start +. sg.duration in
+  let t_end = sg.f.t_start +. sg.f.duration in
   let idx = t.pieces.len in
-  push_piece t { t0 = sg.t_start +. own_from *. sg.duration; t1 = t_end; p0 = own_from; p1 = 1.; shape = Part sg };
+  push_piece t { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
   let arrive_ready =
     match m.inpos with
     | None -> t_end
@@ -331,8 +338,8 @@ let plan t ~now m =
     if m.conc then Float.max now_p motion_from
     else if sg.fine then arrive_ready
     else
-      let fmax = side_fraction ~length:sg.length ~angle:sg.angle sg.zone_tcp sg.zone_ori in
-      Float.max now_p (sg.t_start +. (1. -. fmax) *. sg.duration -. t.settings.look_ahead)
+      let fmax = side_fraction ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
+      Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
   in
   t.end_joints <- sg.q_end;
   t.end_flange <- f_end;
@@ -351,7 +358,7 @@ let find t tp =
   let lo = ref 0 and hi = ref (t.pieces.len - 1) and best = ref (-1) in
   while !lo <= !hi do
     let mid = (!lo + !hi) / 2 in
-    if (Vec.get t.pieces mid).t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
+    if (Vec.get t.pieces mid).tm.t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
   done;
   !best
 
@@ -389,7 +396,7 @@ let clear t ~at =
   Vec.truncate t.pieces (i + 1);
   if i >= 0 then begin
     let pc = Vec.get t.pieces i in
-    if pc.t1 > tp then (pc.p1 <- param pc tp; pc.t1 <- tp)
+    if pc.tm.t1 > tp then (pc.tm.p1 <- param pc tp; pc.tm.t1 <- tp)
   end;
   if tp < t.end_time then begin
     t.end_joints <- q;
@@ -405,14 +412,14 @@ let pieces t =
   let out = ref [] and last = ref 0. in
   for i = 0 to t.pieces.len - 1 do
     let pc = Vec.get t.pieces i in
-    if pc.t0 > !last +. 1e-9 then
-      out := { t_from = real_time t !last; t_to = real_time t pc.t0; kind = Still } :: !out;
+    if pc.tm.t0 > !last +. 1e-9 then
+      out := { t_from = real_time t !last; t_to = real_time t pc.tm.t0; kind = Still } :: !out;
     let kind = match pc.shape with
       | Part sg -> Segment sg.id
       | Blend b -> Corner (b.a.id, b.b.id)
       | Joint_blend b -> Corner (b.a.id, b.b.id) in
-    out := { t_from = real_time t pc.t0; t_to = real_time t pc.t1; kind } :: !out;
-    last := pc.t1
+    out := { t_from = real_time t pc.tm.t0; t_to = real_time t pc.tm.t1; kind } :: !out;
+    last := pc.tm.t1
   done;
   List.rev !out
 
@@ -425,4 +432,4 @@ let segments t =
   List.init t.segs.len (fun i ->
       let s = Vec.get t.segs i in
       { seg_id = s.id; seg_label = s.label; seg_kind = s.kind; target = s.end_tcp; seg_fine = s.fine;
-        seg_length = s.length; seg_duration = s.duration })
+        seg_length = s.f.length; seg_duration = s.f.duration })
