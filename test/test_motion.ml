@@ -368,6 +368,29 @@ let test_move_errors () =
   expect "stationary tool" Motion_error.Stationary_tool
     (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing))
 
+(* Bad input never raises: not-a-number targets and speeds, and any description text. *)
+let test_bad_input () =
+  let p = planner () in
+  let bad = target nan 0. 300. in
+  let refused m = match Planner.plan p ~now:0. m with Error _ -> true | Ok _ -> false in
+  Alcotest.(check bool) "NaN target" true (refused (Planner.move (speed "v100") (zone "fine") (Linear bad)));
+  Alcotest.(check bool) "NaN circle point" true
+    (refused (Planner.move (speed "v100") (zone "fine") (Circular (bad, target 350. 0. 300.))));
+  Alcotest.(check bool) "NaN axis" true
+    (refused (Planner.move (speed "v100") (zone "fine") (Abs_joint [| nan; 0.; 0.; 0.; 0.; 0. |])));
+  Alcotest.(check bool) "NaN speed" true
+    (refused (Planner.move { (speed "v100") with v_tcp = nan } (zone "fine") (Linear (target 350. 0. 300.))));
+  Alcotest.(check int) "nothing planned" 0 (List.length (Planner.segments p));
+  let lines = String.split_on_char '\n' Robot.irb120_text in
+  run_property ~seed:5 ~count:2000 ~name:"the description parser answers every text"
+    (QCheck.make ~print:Fun.id
+       QCheck.Gen.(oneof [ string_size ~gen:printable (int_bound 200);
+                           map (fun (i, junk) -> String.concat "\n" (List.mapi (fun j l -> if j = i then junk else l) lines))
+                             (pair (int_bound (List.length lines)) (string_size ~gen:printable (int_bound 40))) ]))
+    (fun text -> match Robot.parse ~file:"f" text with
+       | Ok _ -> true
+       | Error e -> e.line >= 1 && e.col >= 1 && String.length (Robot.error_to_string e) > 0)
+
 let test_stop_start_clear () =
   let p = planner () in
   let r0 = plan p (Planner.move (speed "v1000") (zone "fine") (Joint (target 300. 0. 300.))) in
@@ -493,6 +516,7 @@ let suite =
       Alcotest.test_case "Z-failure: corner path failure" `Quick test_corner_failure;
       Alcotest.test_case "errors of moves, ConfL, SingArea" `Quick test_move_errors;
       Alcotest.test_case "StopMove, StartMove, ClearPath" `Quick test_stop_start_clear;
+      Alcotest.test_case "bad input never raises" `Quick test_bad_input;
       Alcotest.test_case "L-sum: path length, random" `Quick test_length_sum;
       Alcotest.test_case "I-continuous: at boundaries, random" `Quick test_continuity;
       Alcotest.test_case "SVG and CSV output" `Quick test_output ] )

@@ -75,8 +75,9 @@ let seg_joints k sg s =
 
 type shape =
   | Part of segment  (* the parameter is the segment's s *)
-  | Blend of { a : segment; b : segment; fa : float; fb : float; c0 : pos; c1 : pos; c2 : pos;
-               r0 : orient; r1 : orient }
+  | Blend of { a : segment; b : segment; fa : float; fb : float }
+      (* The Bezier's control points are A at 1 - fa, A's programmed point, B at fb: computed
+         when asked, not kept (the queue holds one corner per fly-by point). *)
   | Joint_blend of { a : segment; b : segment; j0 : float array; j1 : float array;
                      j2 : float array }
 
@@ -100,7 +101,10 @@ let blend_tframe (a : segment) (b : segment) u =
 let piece_pose k pc u =
   match pc.shape with
   | Part sg -> seg_pose k sg u
-  | Blend b -> { trans = bezier b.c0 b.c1 b.c2 u; rot = slerp b.r0 b.r1 u }
+  | Blend b ->
+      let ua = 1. -. b.fa in
+      { trans = bezier (seg_pos k b.a ua) b.a.end_tcp (seg_pos k b.b b.fb) u;
+        rot = slerp (slerp b.a.rot0 b.a.rot1 ua) (slerp b.b.rot0 b.b.rot1 b.fb) u }
   | Joint_blend b -> tcp_of_flange (Kinematics.forward k (bezier_q b.j0 b.j1 b.j2 u)) (blend_tframe b.a b.b u)
 
 let piece_joints k pc u =
@@ -187,7 +191,10 @@ let circle s c e =
   else
     let m = [| [| u.x; u.y; u.z |]; [| v.x; v.y; v.z |]; [| n.x; n.y; n.z |] |] in
     let rhs = [| (dot c c -. dot s s) /. 2.; (dot e e -. dot s s) /. 2.; dot n s |] in
-    let x = Gsl.Linalg.solve_LU ~protect:true (`AA m) (`A rhs) in
+    match Gsl.Linalg.solve_LU ~protect:true (`AA m) (`A rhs) with
+    | exception Gsl.Error.Gsl_exn _ -> Error Motion_error.Circle_uncertain
+    | x when not (Array.for_all Float.is_finite x) -> Error Motion_error.Circle_uncertain
+    | x ->
     let centre = { x = x.(0); y = x.(1); z = x.(2) } in
     let radius = distance s centre in
     let e1 = scale (1. /. radius) (sub s centre) in
@@ -272,6 +279,9 @@ let build t ~now_p m id =
       | Joints (q0, q1) ->
           Profile.joint robot st.velset m.timing ~deltas:(Array.mapi (fun i a -> a -. q0.(i)) q1) ~length ~angle
       | _ -> Profile.cartesian robot st.velset m.timing ~length ~angle in
+    let* () =
+      if Float.is_finite duration && Float.is_finite length then Ok ()
+      else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in
     let fine = m.zone.finep || m.inpos <> None in
     let f = { length; angle; duration; t_start = now_p;
               zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
@@ -314,9 +324,7 @@ let plan t ~now m =
                   let j s g = match seg_joints k s g with Ok q -> q | Error _ -> lerp_q s.q_start s.q_end g in
                   Joint_blend { a; b = sg; j0 = j a (1. -. fa); j1 = a.q_end; j2 = j sg fb }
               | _ ->
-                  Blend { a; b = sg; fa; fb; c0 = seg_pos k a (1. -. fa); c1 = a.end_tcp;
-                          c2 = seg_pos k sg fb; r0 = slerp a.rot0 a.rot1 (1. -. fa);
-                          r1 = slerp sg.rot0 sg.rot1 fb }
+                  Blend { a; b = sg; fa; fb }
             in
             push_piece t { tm = { t0 = tc0; t1 = tc1; p0 = 0.; p1 = 1. }; shape }
           end;
