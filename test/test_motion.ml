@@ -368,6 +368,34 @@ let test_move_errors () =
   expect "stationary tool" Motion_error.Stationary_tool
     (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing))
 
+(* S-level: StorePath keeps level 1 stopped while level 2 moves; RestoPath brings it back. *)
+let test_path_level () =
+  let p = planner () in
+  let r0 = plan p (Planner.move (speed "v1000") (zone "fine") (Joint (target 300. 0. 300.))) in
+  let now = r0.ready_time in
+  let a = plan p ~now (Planner.move (speed "v100") (zone "fine") (Linear (target 400. 0. 300.))) in
+  Planner.stop p ~at:(now +. 0.3);
+  Alcotest.(check int) "level 1" 1 (Planner.path_level p);
+  ok "StorePath" (Planner.store_path p ~at:(now +. 0.5));
+  Alcotest.(check int) "level 2" 2 (Planner.path_level p);
+  (match Planner.store_path p ~at:(now +. 0.5) with
+   | Error (Motion_error.Path_level _) -> ()
+   | _ -> Alcotest.fail "StorePath twice");
+  let up = plan p ~now:(now +. 0.5) (Planner.move (speed "v100") (zone "fine") (Linear (target 330. 0. 350.))) in
+  close "level 2 moves at once" up.ready_time (now +. 1.0);
+  close_pos "level 2 under way" (Planner.pose_at p (now +. 0.75)).trans { x = 330.; y = 0.; z = 325. };
+  let down = plan p ~now:up.ready_time (Planner.move (speed "v100") (zone "fine") (Linear (target 330. 0. 300.))) in
+  ok "RestoPath" (Planner.resto_path p ~at:down.ready_time);
+  Alcotest.(check int) "level 1 again" 1 (Planner.path_level p);
+  (match Planner.resto_path p ~at:down.ready_time with
+   | Error (Motion_error.Path_level _) -> ()
+   | _ -> Alcotest.fail "RestoPath on level 1");
+  close "level 1 still stopped" (Planner.ready_time p a.id) infinity;
+  close "a dropped level's move keeps its time" (Planner.ready_time p up.id) (now +. 1.0);
+  Planner.start p ~at:(now +. 2.);
+  close "StartMove resumes level 1" (Planner.ready_time p a.id) (now +. 2.7);
+  close_pos "from where it stopped" (Planner.pose_at p (now +. 2.)).trans { x = 330.; y = 0.; z = 300. }
+
 (* Bad input never raises: not-a-number targets and speeds, and any description text. *)
 let test_bad_input () =
   let p = planner () in
@@ -517,6 +545,7 @@ let suite =
       Alcotest.test_case "errors of moves, ConfL, SingArea" `Quick test_move_errors;
       Alcotest.test_case "StopMove, StartMove, ClearPath" `Quick test_stop_start_clear;
       Alcotest.test_case "bad input never raises" `Quick test_bad_input;
+      Alcotest.test_case "S-level: StorePath, RestoPath" `Quick test_path_level;
       Alcotest.test_case "L-sum: path length, random" `Quick test_length_sum;
       Alcotest.test_case "I-continuous: at boundaries, random" `Quick test_continuity;
       Alcotest.test_case "SVG and CSV output" `Quick test_output ] )

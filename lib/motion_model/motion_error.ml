@@ -7,6 +7,7 @@ type t =
   | Invalid_speed of string
   | Stationary_tool
   | Robhold_conflict
+  | Path_level of string
 
 let name = function
   | Out_of_reach -> "position outside reach"
@@ -17,6 +18,7 @@ let name = function
                          point, or on their line"
   | Invalid_speed m -> "invalid speed: " ^ m
   | Stationary_tool -> "a stationary tool (robhold FALSE) in a move is not modelled"
+  | Path_level m -> m
   | Robhold_conflict -> "the tool and the work object cannot both be held (or both not be held) \
                          by the robot"
 

@@ -11,6 +11,7 @@ type t =
   | Invalid_speed of string  (** a speed or \T that cannot give the move a duration *)
   | Stationary_tool  (** a move with a stationary tool (robhold FALSE): not modelled yet *)
   | Robhold_conflict  (** tool and work object both held, or both not held, by the robot *)
+  | Path_level of string  (** StorePath on level 2, RestoPath on level 1 *)
 
 val name : t -> string
 (** A one-line message, e.g. ["joint 4 out of range"]. *)

@@ -134,13 +134,10 @@ end
 
 (* ------------------------------------------------------------------ the planner *)
 
-type t = {
-  kin : Kinematics.t;
-  settings : settings;
+(* One path level: its queue, and its own clock of StopMove pauses. *)
+type level = {
   start_joints : float array;
   pieces : piece Vec.t;
-  segs : segment Vec.t;
-  ready : float Vec.t;  (* path time at which the program may leave each move *)
   mutable end_joints : float array;  (* where the queue leaves the robot *)
   mutable end_flange : pose;
   mutable end_time : float;  (* path time from which the robot stands at the end of the queue *)
@@ -149,26 +146,42 @@ type t = {
   mutable stopped_at : float option;
 }
 
+type t = {
+  kin : Kinematics.t;
+  settings : settings;
+  segs : segment Vec.t;
+  ready : float Vec.t;  (* path time at which the program may leave each move *)
+  ready_real : float Vec.t;  (* the same as answered by plan, for moves of a level dropped since *)
+  ready_level : level Vec.t;  (* the level each move was planned on *)
+  mutable cur : level;
+  mutable stored : level option;  (* path level 1, kept by StorePath while level 2 runs *)
+}
+
+let new_level kin joints ~from =
+  { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
+    end_flange = Kinematics.forward kin joints; end_time = from; open_seg = None; pauses = [];
+    stopped_at = None }
+
 let create ?(joints = Array.make 6 0.) kin =
+  let cur = new_level kin joints ~from:0. in
   { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
                       sing_area_wrist = false; look_ahead = 0.1 };
-    start_joints = Array.copy joints; pieces = Vec.create (); segs = Vec.create ();
-    ready = Vec.create (); end_joints = Array.copy joints; end_flange = Kinematics.forward kin joints;
-    end_time = 0.; open_seg = None; pauses = []; stopped_at = None }
+    segs = Vec.create (); ready = Vec.create (); ready_real = Vec.create ();
+    ready_level = Vec.create (); cur; stored = None }
 
 let settings t = t.settings
 let kinematics t = t.kin
-let stopped t = t.stopped_at <> None
+let stopped t = t.cur.stopped_at <> None
 
 (* Virtual time less the time the robot stood by StopMove: the time the path runs on. *)
-let path_time t real =
-  let p = List.fold_left (fun acc (ts, te) -> acc -. Float.max 0. (Float.min real te -. ts)) real t.pauses in
-  match t.stopped_at with Some ts when real > ts -> p -. (real -. ts) | _ -> p
+let path_time (l : level) real =
+  let p = List.fold_left (fun acc (ts, te) -> acc -. Float.max 0. (Float.min real te -. ts)) real l.pauses in
+  match l.stopped_at with Some ts when real > ts -> p -. (real -. ts) | _ -> p
 
-let real_time t path =
-  let r = List.fold_left (fun r (ts, te) -> if path > path_time t ts then r +. (te -. ts) else r) path t.pauses in
-  match t.stopped_at with
-  | Some ts when path > path_time t ts +. 1e-12 -> infinity
+let real_time (l : level) path =
+  let r = List.fold_left (fun r (ts, te) -> if path > path_time l ts then r +. (te -. ts) else r) path l.pauses in
+  match l.stopped_at with
+  | Some ts when path > path_time l ts +. 1e-12 -> infinity
   | _ -> r
 
 let ( let* ) = Result.bind
@@ -225,8 +238,8 @@ let build t ~now_p m id =
   else if m.wobj.wobj_robhold then Error Motion_error.Robhold_conflict
   else
     let tframe = m.tool.tframe in
-    let q_start = t.end_joints in
-    let start = tcp_of_flange t.end_flange tframe in
+    let q_start = t.cur.end_joints in
+    let start = tcp_of_flange t.cur.end_flange tframe in
     let w = Frames.object_frame m.wobj in
     let world (rt : Frames.robtarget) = pmult w { rt.pose with rot = normalize rt.pose.rot } in
     let goal_joints rt choice =
@@ -289,17 +302,17 @@ let build t ~now_p m id =
     Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; f; fine;
           end_tcp }, f_end)
 
-let push_piece t pc = if pc.tm.t1 > pc.tm.t0 || pc.tm.p1 <> pc.tm.p0 then Vec.push t.pieces pc
+let push_piece t pc = if pc.tm.t1 > pc.tm.t0 || pc.tm.p1 <> pc.tm.p0 then Vec.push t.cur.pieces pc
 
 let plan t ~now m =
-  let now_p = path_time t now in
+  let now_p = path_time t.cur now in
   let id = t.segs.len in
   let* sg, f_end = build t ~now_p m id in
   let warnings = ref [] in
   (* Where the segment starts in time, and the corner into it (law Z-corner). *)
   let sg, own_from, motion_from =
-    match t.open_seg with
-    | None -> let ts = Float.max now_p t.end_time in ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
+    match t.cur.open_seg with
+    | None -> let ts = Float.max now_p t.cur.end_time in ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
     | Some (a, idx) ->
         let fa, fb = corner_fractions a sg in
         let a_end = a.f.t_start +. a.f.duration in
@@ -313,10 +326,10 @@ let plan t ~now m =
           let sg = { sg with f = { sg.f with t_start = a_end } } in
           let tc1 = a_end +. fb *. sg.f.duration in
           if fa > 0. || fb > 0. then begin
-            let pa = Vec.get t.pieces idx in
+            let pa = Vec.get t.cur.pieces idx in
             pa.tm.p1 <- 1. -. fa;
             pa.tm.t1 <- tc0;
-            if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.pieces idx;
+            if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.cur.pieces idx;
             let k = t.kin in
             let shape =
               match a.geometry, sg.geometry with
@@ -332,7 +345,7 @@ let plan t ~now m =
         end
   in
   let t_end = sg.f.t_start +. sg.f.duration in
-  let idx = t.pieces.len in
+  let idx = t.cur.pieces.len in
   push_piece t { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
   let arrive_ready =
     match m.inpos with
@@ -349,84 +362,90 @@ let plan t ~now m =
       let fmax = side_fraction ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
       Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
   in
-  t.end_joints <- sg.q_end;
-  t.end_flange <- f_end;
-  t.end_time <- (if sg.fine then Float.max t_end arrive_ready else t_end);
-  t.open_seg <- (if sg.fine then None else Some (sg, idx));
+  t.cur.end_joints <- sg.q_end;
+  t.cur.end_flange <- f_end;
+  t.cur.end_time <- (if sg.fine then Float.max t_end arrive_ready else t_end);
+  t.cur.open_seg <- (if sg.fine then None else Some (sg, idx));
   Vec.push t.segs sg;
   Vec.push t.ready ready;
-  Ok { id; ready_time = real_time t ready; warnings = !warnings }
+  let ready_time = real_time t.cur ready in
+  Vec.push t.ready_real ready_time;
+  Vec.push t.ready_level t.cur;
+  Ok { id; ready_time; warnings = !warnings }
 
 let ready_time t id =
   if id < 0 || id >= t.ready.len then invalid_arg "Planner.ready_time: unknown move"
-  else real_time t (Vec.get t.ready id)
+  else
+    let l = Vec.get t.ready_level id in
+    let live = l == t.cur || (match t.stored with Some s -> l == s | None -> false) in
+    if live then real_time l (Vec.get t.ready id) else Vec.get t.ready_real id
 
 (* The last piece that has begun by path time [tp], or -1. *)
 let find t tp =
-  let lo = ref 0 and hi = ref (t.pieces.len - 1) and best = ref (-1) in
+  let lo = ref 0 and hi = ref (t.cur.pieces.len - 1) and best = ref (-1) in
   while !lo <= !hi do
     let mid = (!lo + !hi) / 2 in
-    if (Vec.get t.pieces mid).tm.t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
+    if (Vec.get t.cur.pieces mid).tm.t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
   done;
   !best
 
 let pose_at t real =
-  let tp = path_time t real in
+  let tp = path_time t.cur real in
   match find t tp with
-  | -1 -> tcp_of_flange (Kinematics.forward t.kin t.start_joints) Motion_data.tool0.tframe
-  | i -> let pc = Vec.get t.pieces i in piece_pose t.kin pc (param pc tp)
+  | -1 -> tcp_of_flange (Kinematics.forward t.kin t.cur.start_joints) Motion_data.tool0.tframe
+  | i -> let pc = Vec.get t.cur.pieces i in piece_pose t.kin pc (param pc tp)
 
 let joints_at t real =
-  let tp = path_time t real in
+  let tp = path_time t.cur real in
   match find t tp with
-  | -1 -> Ok (Array.copy t.start_joints)
+  | -1 -> Ok (Array.copy t.cur.start_joints)
   | i ->
-      let pc = Vec.get t.pieces i in
+      let pc = Vec.get t.cur.pieces i in
       let u = param pc tp in
       (* The ends of a Part are exact: the programmed point's own solution. *)
       match pc.shape with
       | Part sg when u >= 1. -> Ok (Array.copy sg.q_end)
       | _ -> piece_joints t.kin pc u
 
-let finished_by t = real_time t t.end_time
+let finished_by t = real_time t.cur t.cur.end_time
 
-let stop t ~at = if t.stopped_at = None then t.stopped_at <- Some at
+let stop t ~at = if t.cur.stopped_at = None then t.cur.stopped_at <- Some at
 
 let start t ~at =
-  match t.stopped_at with
-  | Some ts -> t.pauses <- t.pauses @ [ (ts, Float.max ts at) ]; t.stopped_at <- None
+  match t.cur.stopped_at with
+  | Some ts -> t.cur.pauses <- t.cur.pauses @ [ (ts, Float.max ts at) ]; t.cur.stopped_at <- None
   | None -> ()
 
 let clear t ~at =
-  let tp = path_time t at in
-  let q = match joints_at t at with Ok q -> q | Error _ -> t.end_joints in
+  let tp = path_time t.cur at in
+  let q = match joints_at t at with Ok q -> q | Error _ -> t.cur.end_joints in
   let i = find t tp in
-  Vec.truncate t.pieces (i + 1);
+  Vec.truncate t.cur.pieces (i + 1);
   if i >= 0 then begin
-    let pc = Vec.get t.pieces i in
+    let pc = Vec.get t.cur.pieces i in
     if pc.tm.t1 > tp then (pc.tm.p1 <- param pc tp; pc.tm.t1 <- tp)
   end;
-  if tp < t.end_time then begin
-    t.end_joints <- q;
-    t.end_flange <- Kinematics.forward t.kin q;
-    t.end_time <- tp
+  if tp < t.cur.end_time then begin
+    t.cur.end_joints <- q;
+    t.cur.end_flange <- Kinematics.forward t.kin q;
+    t.cur.end_time <- tp
   end;
-  t.open_seg <- None
+  t.cur.open_seg <- None
 
 type piece_kind = Segment of int | Corner of int * int | Still
 type piece_info = { t_from : float; t_to : float; kind : piece_kind }
 
 let pieces t =
   let out = ref [] and last = ref 0. in
-  for i = 0 to t.pieces.len - 1 do
-    let pc = Vec.get t.pieces i in
+  for i = 0 to t.cur.pieces.len - 1 do
+    let pc = Vec.get t.cur.pieces i in
     if pc.tm.t0 > !last +. 1e-9 then
-      out := { t_from = real_time t !last; t_to = real_time t pc.tm.t0; kind = Still } :: !out;
+      out := { t_from = real_time t.cur !last; t_to = real_time t.cur pc.tm.t0; kind = Still } :: !out;
     let kind = match pc.shape with
       | Part sg -> Segment sg.id
       | Blend b -> Corner (b.a.id, b.b.id)
       | Joint_blend b -> Corner (b.a.id, b.b.id) in
-    out := { t_from = real_time t pc.tm.t0; t_to = real_time t pc.tm.t1; kind } :: !out;
+    out := { t_from = real_time t.cur pc.tm.t0; t_to = real_time t.cur pc.tm.t1; kind } :: !out;
     last := pc.tm.t1
   done;
   List.rev !out
@@ -441,3 +460,21 @@ let segments t =
       let s = Vec.get t.segs i in
       { seg_id = s.id; seg_label = s.label; seg_kind = s.kind; target = s.end_tcp; seg_fine = s.fine;
         seg_length = s.f.length; seg_duration = s.f.duration })
+
+let path_level t = if t.stored = None then 1 else 2
+
+let store_path t ~at =
+  match t.stored with
+  | Some _ -> Error (Motion_error.Path_level "StorePath: a path is stored already (path level 2)")
+  | None ->
+      let l1 = t.cur in
+      let q = match joints_at t at with Ok q -> q | Error _ -> l1.end_joints in
+      stop t ~at;
+      t.stored <- Some l1;
+      t.cur <- new_level t.kin q ~from:at;
+      Ok ()
+
+let resto_path t ~at:_ =
+  match t.stored with
+  | None -> Error (Motion_error.Path_level "RestoPath: no path is stored (path level 1)")
+  | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()

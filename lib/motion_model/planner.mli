@@ -59,7 +59,9 @@ val plan : t -> now:float -> move -> (planned, Motion_error.t) result
 
 val ready_time : t -> int -> float
 (** When the program may leave the move with this id, in the light of StopMove and StartMove
-    since it was planned; [infinity] while the robot is stopped short of it. *)
+    since it was planned; [infinity] while the robot is stopped short of it. For a move of a path
+    level dropped by RestoPath, the time [plan] answered. Raises [Invalid_argument] for an id
+    [plan] did not give. *)
 
 val pose_at : t -> float -> Geom.pose
 (** The TCP pose (base frame, tool of the move under way) at a time. *)
@@ -82,6 +84,18 @@ val stopped : t -> bool
 val clear : t -> at:float -> unit
 (** ClearPath: everything not done at [at] is dropped; the robot stands where it is and the next
     move starts from there. *)
+
+val path_level : t -> int
+(** PathLevel(): 1, or 2 between StorePath and RestoPath. *)
+
+val store_path : t -> at:float -> (unit, Motion_error.t) result
+(** StorePath: the path of level 1 is stopped at [at] (if it is not already) and kept; level 2
+    begins, empty, with the robot where it stands. On level 2 already: an error. *)
+
+val resto_path : t -> at:float -> (unit, Motion_error.t) result
+(** RestoPath: level 2 is dropped and level 1 comes back, still stopped: StartMove resumes it
+    from where it stopped (the program is to have moved the robot back there). On level 1: an
+    error. *)
 
 (** {1 The planned path, for output} *)
 
