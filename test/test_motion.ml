@@ -409,6 +409,11 @@ let test_bad_input () =
   Alcotest.(check bool) "NaN speed" true
     (refused (Planner.move { (speed "v100") with v_tcp = nan } (zone "fine") (Linear (target 350. 0. 300.))));
   Alcotest.(check int) "nothing planned" 0 (List.length (Planner.segments p));
+  (* A fly-by move that goes nowhere takes no time and has no piece; the next one still corners. *)
+  let here = Kinematics.forward kin rest in
+  let _ = plan p (Planner.move (speed "v100") (zone "z10") (Linear { Frames.pose = here; conf = conf0 })) in
+  let r = plan p (Planner.move (speed "v100") (zone "fine") (Linear (target 302. 0. 458.))) in
+  close "then 100 mm" r.ready_time 1.;
   let lines = String.split_on_char '\n' Robot.irb120_text in
   run_property ~seed:5 ~count:2000 ~name:"the description parser answers every text"
     (QCheck.make ~print:Fun.id

@@ -326,10 +326,13 @@ let plan t ~now m =
           let sg = { sg with f = { sg.f with t_start = a_end } } in
           let tc1 = a_end +. fb *. sg.f.duration in
           if fa > 0. || fb > 0. then begin
-            let pa = Vec.get t.cur.pieces idx in
-            pa.tm.p1 <- 1. -. fa;
-            pa.tm.t1 <- tc0;
-            if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.cur.pieces idx;
+            (* A's own piece, if it has one (a move of no time has none), now ends at the zone. *)
+            if idx >= 0 then begin
+              let pa = Vec.get t.cur.pieces idx in
+              pa.tm.p1 <- 1. -. fa;
+              pa.tm.t1 <- tc0;
+              if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.cur.pieces idx
+            end;
             let k = t.kin in
             let shape =
               match a.geometry, sg.geometry with
@@ -365,6 +368,7 @@ let plan t ~now m =
   t.cur.end_joints <- sg.q_end;
   t.cur.end_flange <- f_end;
   t.cur.end_time <- (if sg.fine then Float.max t_end arrive_ready else t_end);
+  let idx = if t.cur.pieces.len > idx then idx else -1 in
   t.cur.open_seg <- (if sg.fine then None else Some (sg, idx));
   Vec.push t.segs sg;
   Vec.push t.ready ready;
