@@ -203,12 +203,12 @@ let inverse k p choice =
   | With_conf c ->
       let mid cf = float_of_int cf *. 90. +. 45. in
       let hint = [| mid c.cf1; 0.; 0.; mid c.cf4; 0.; mid c.cf6 |] in
-      (match solutions k p ~t4_hint:hint with
-       | [] -> Error Out_of_reach
-       | sols ->
-           match List.find_opt (fun s -> s.raw_cfx = c.cfx) sols with
-           | None -> Error Configuration_error
-           | Some s -> place r s hint)
+      (* Only the arm configuration cfx names is solved; the others only to tell an
+         unreachable position from a configuration it cannot be reached in. *)
+      let arm = (c.cfx land 4 <> 0, c.cfx land 2 <> 0) in
+      (match List.find_opt (fun s -> s.raw_cfx = c.cfx) (solutions ~arm k p ~t4_hint:hint) with
+       | Some s -> place r s hint
+       | None -> if solutions k p ~t4_hint:hint = [] then Error Out_of_reach else Error Configuration_error)
   | Nearest q0 ->
       (* A path keeps its arm configuration: the reference's is tried first, alone. *)
       match nearest_of r (solutions ~arm:(arm_of k q0) k p ~t4_hint:q0) q0 with
