@@ -1,7 +1,8 @@
-(** The motion planner (doc/motion.md, "The planner"): the motion queue of one robot on virtual
-    time. A move instruction hands its segment to [plan], which says when the program may go on
-    ([ready_time]: at once for a fly-by point, up to the look-ahead horizon before its zone;
-    when the robot stands in position for a stop point). [pose_at] and [joints_at] say where the
+(** The motion planner (doc/motion.md, "The program pointer and the motion pointer"): the motion
+    queue of one robot on virtual time. A move instruction hands its segment to [plan], which says
+    when the program may go on ([ready_time]: for a fly-by point the look-ahead horizon before the
+    robot can enter its zone, or at once if that has passed; for a stop point when the robot
+    stands in position there). [pose_at] and [joints_at] say where the
     robot is at any time, between programmed points too. Times are seconds of the machine's
     virtual clock, which only moves forward. *)
 
