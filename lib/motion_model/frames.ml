@@ -1,0 +1,29 @@
+open Geom
+open Motion_data
+
+type robtarget = { pose : pose; conf : Kinematics.conf }
+
+let object_frame w = pmult w.uframe w.oframe
+
+let flange_of_target tool wobj target =
+  match tool.tool_robhold, wobj.wobj_robhold with
+  | true, false -> Ok (pmult (pmult (object_frame wobj) target) (pinv tool.tframe))
+  | false, true -> Ok (pmult tool.tframe (pinv (pmult (object_frame wobj) target)))
+  | _ -> Error Motion_error.Robhold_conflict
+
+let target_of_flange tool wobj flange =
+  match tool.tool_robhold, wobj.wobj_robhold with
+  | true, false -> Ok (pmult (pinv (object_frame wobj)) (pmult flange tool.tframe))
+  | false, true -> Ok (pinv (pmult (pmult (pinv tool.tframe) flange) (object_frame wobj)))
+  | _ -> Error Motion_error.Robhold_conflict
+
+let calc_rob_t k joints tool wobj =
+  Result.map (fun pose -> { pose; conf = Kinematics.conf_of k joints })
+    (target_of_flange tool wobj (Kinematics.forward k joints))
+
+let calc_joint_t k (t : robtarget) tool wobj =
+  Result.bind (flange_of_target tool wobj t.pose) (fun f ->
+      Kinematics.inverse k f (Kinematics.With_conf t.conf))
+
+let c_rob_t k ~joints tool wobj = calc_rob_t k joints tool wobj
+let c_pos k ~joints tool wobj = Result.map (fun r -> r.pose.trans) (c_rob_t k ~joints tool wobj)

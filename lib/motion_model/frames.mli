@@ -1,0 +1,40 @@
+(** Frames (doc/motion.md, "Frames"): a robtarget is in the work object (uframe · oframe) and is
+    reached by the tool's TCP (tframe); the base frame is the world frame. The position
+    functions CRobT, CPos, CalcRobT, CalcJointT and CJointT in floats. *)
+
+type robtarget = { pose : Geom.pose; conf : Kinematics.conf }
+(** The robot part of a robtarget (external axes are not modelled). *)
+
+val object_frame : Motion_data.wobjdata -> Geom.pose
+(** uframe · oframe. *)
+
+val flange_of_target :
+  Motion_data.tooldata -> Motion_data.wobjdata -> Geom.pose -> (Geom.pose, Motion_error.t) result
+(** The flange pose (base frame) that puts the TCP at the target. A robot-held tool and a fixed
+    work object: W · target · tframe⁻¹. A stationary tool and a robot-held work object:
+    tframe · (W · target)⁻¹. Both or neither held: [Robhold_conflict]. *)
+
+val target_of_flange :
+  Motion_data.tooldata -> Motion_data.wobjdata -> Geom.pose -> (Geom.pose, Motion_error.t) result
+(** The inverse of [flange_of_target]. *)
+
+val calc_rob_t :
+  Kinematics.t -> float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  (robtarget, Motion_error.t) result
+(** CalcRobT(Joint_target, Tool [\WObj]): the robtarget of axis angles, with their confdata. *)
+
+val calc_joint_t :
+  Kinematics.t -> robtarget -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  (float array, Motion_error.t) result
+(** CalcJointT(Rob_target, Tool [\WObj]): the axis angles with the robtarget's confdata; an
+    error carries ERR_ROBLIMIT for \ErrorNumber ({!Motion_error.errnum}). *)
+
+val c_rob_t :
+  Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  (robtarget, Motion_error.t) result
+(** CRobT([\Tool] [\WObj]) given the current axis angles (CJointT, from the planner). *)
+
+val c_pos :
+  Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  (Geom.pos, Motion_error.t) result
+(** CPos([\Tool] [\WObj]): the translation of CRobT. *)

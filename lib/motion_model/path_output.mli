@@ -1,0 +1,16 @@
+(** The planned path as a robot programmer reads it (doc/motion.md, "Output"): the TCP path as
+    SVG (top view x–y beside side view x–z, programmed points labelled, corner paths in their own
+    colour), a timeline SVG (moves, corners and standstills against time, with the TCP speed),
+    and CSV samples. *)
+
+val csv : ?step:float -> Planner.t -> string
+(** One line per [step] seconds (default 0.01) from 0 to the end of the path, and one at the
+    end: [t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6] (s, mm, quaternion, degrees). Axis angles that
+    cannot be computed are left empty. *)
+
+val path_svg : ?title:string -> Planner.t -> string
+(** The TCP path in the base frame, two views. *)
+
+val timeline_svg : ?title:string -> Planner.t -> string
+(** Moves (labelled by their target), corner paths and standstills against time, and the TCP
+    speed below them. *)

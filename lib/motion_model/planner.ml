@@ -1,0 +1,484 @@
+open Geom
+
+type motion =
+  | Linear of Frames.robtarget
+  | Circular of Frames.robtarget * Frames.robtarget
+  | Joint of Frames.robtarget
+  | Abs_joint of float array
+
+type move = {
+  motion : motion; timing : Profile.timing; zone : Motion_data.zonedata; z : float option;
+  inpos : Motion_data.stoppointdata option; conc : bool; tool : Motion_data.tooldata;
+  wobj : Motion_data.wobjdata; label : string;
+}
+
+let move ?v ?t ?z ?inpos ?(conc = false) ?(tool = Motion_data.tool0) ?(wobj = Motion_data.wobj0)
+    ?(label = "") speed zone motion =
+  { motion; timing = { Profile.speed; v; t }; zone; z; inpos; conc; tool; wobj; label }
+
+type settings = {
+  mutable velset : Profile.velset; mutable conf_l : bool; mutable conf_j : bool;
+  mutable sing_area_wrist : bool; mutable look_ahead : float;
+}
+
+type warning = Corner_path_failure of int
+type planned = { id : int; ready_time : float; warnings : warning list }
+
+(* ------------------------------------------------------------------ segments *)
+
+type geometry =
+  | Line of pos * pos
+  | Arc of { centre : pos; e1 : pos; e2 : pos; radius : float; sweep : float }
+  | Joints of float array * float array
+
+(* A programmed segment, whole: s runs over [0, 1] in [duration] seconds from [t_start] (path
+   time), at constant speed. *)
+type segment = {
+  id : int; label : string; kind : string; geometry : geometry;
+  rot0 : orient; rot1 : orient; q_start : float array; q_end : float array; tframe : pose;
+  f : figures; fine : bool; end_tcp : pos;
+}
+
+(* All floats: one flat block, not six boxes (the queue holds one per move). *)
+and figures = {
+  length : float; angle : float; duration : float; t_start : float; zone_tcp : float; zone_ori : float;
+}
+
+let lerp_q a b s = Array.init (Array.length a) (fun i -> a.(i) +. s *. (b.(i) -. a.(i)))
+
+let tcp_of_flange f tframe = pmult f tframe
+
+let seg_pos k sg s =
+  match sg.geometry with
+  | Line (p0, p1) -> lerp p0 p1 s
+  | Arc a ->
+      let th = s *. a.sweep in
+      add a.centre (add (scale (a.radius *. cos th) a.e1) (scale (a.radius *. sin th) a.e2))
+  | Joints (q0, q1) -> (tcp_of_flange (Kinematics.forward k (lerp_q q0 q1 s)) sg.tframe).trans
+
+let seg_pose k sg s =
+  match sg.geometry with
+  | Joints (q0, q1) -> tcp_of_flange (Kinematics.forward k (lerp_q q0 q1 s)) sg.tframe
+  | _ -> { trans = seg_pos k sg s; rot = slerp sg.rot0 sg.rot1 s }
+
+(* Axis angles on a Cartesian path: the solution nearest the straight joint-space line between
+   the segment's ends, which keeps the arm in one configuration along a segment. *)
+let joints_of_tcp k tcp tframe reference =
+  Kinematics.inverse k (pmult tcp (pinv tframe)) (Kinematics.Nearest reference)
+
+let seg_joints k sg s =
+  match sg.geometry with
+  | Joints (q0, q1) -> Ok (lerp_q q0 q1 s)
+  | _ -> joints_of_tcp k (seg_pose k sg s) sg.tframe (lerp_q sg.q_start sg.q_end s)
+
+(* ------------------------------------------------------------------ pieces *)
+
+type shape =
+  | Part of segment  (* the parameter is the segment's s *)
+  | Blend of { a : segment; b : segment; fa : float; fb : float }
+      (* The Bezier's control points are A at 1 - fa, A's programmed point, B at fb: computed
+         when asked, not kept (the queue holds one corner per fly-by point). *)
+  | Joint_blend of { a : segment; b : segment; j0 : float array; j1 : float array;
+                     j2 : float array }
+
+(* The parameter goes linearly from p0 at t0 to p1 at t1 (path time). *)
+type span = { t0 : float; mutable t1 : float; p0 : float; mutable p1 : float }
+type piece = { tm : span; shape : shape }
+
+let param pc tp =
+  if pc.tm.t1 <= pc.tm.t0 then pc.tm.p1
+  else
+    let tau = Float.max 0. (Float.min 1. ((tp -. pc.tm.t0) /. (pc.tm.t1 -. pc.tm.t0))) in
+    pc.tm.p0 +. (pc.tm.p1 -. pc.tm.p0) *. tau
+
+let bezier a b c u = add (add (scale ((1. -. u) *. (1. -. u)) a) (scale (2. *. u *. (1. -. u)) b)) (scale (u *. u) c)
+let bezier_q a b c u = Array.init (Array.length a) (fun i ->
+    (1. -. u) *. (1. -. u) *. a.(i) +. 2. *. u *. (1. -. u) *. b.(i) +. u *. u *. c.(i))
+
+let blend_tframe (a : segment) (b : segment) u =
+  { trans = lerp a.tframe.trans b.tframe.trans u; rot = slerp a.tframe.rot b.tframe.rot u }
+
+let piece_pose k pc u =
+  match pc.shape with
+  | Part sg -> seg_pose k sg u
+  | Blend b ->
+      let ua = 1. -. b.fa in
+      { trans = bezier (seg_pos k b.a ua) b.a.end_tcp (seg_pos k b.b b.fb) u;
+        rot = slerp (slerp b.a.rot0 b.a.rot1 ua) (slerp b.b.rot0 b.b.rot1 b.fb) u }
+  | Joint_blend b -> tcp_of_flange (Kinematics.forward k (bezier_q b.j0 b.j1 b.j2 u)) (blend_tframe b.a b.b u)
+
+let piece_joints k pc u =
+  match pc.shape with
+  | Part sg -> seg_joints k sg u
+  | Blend b ->
+      let qa = lerp_q b.a.q_start b.a.q_end (1. -. b.fa) and qb = lerp_q b.b.q_start b.b.q_end b.fb in
+      joints_of_tcp k (piece_pose k pc u) (blend_tframe b.a b.b u) (bezier_q qa b.a.q_end qb u)
+  | Joint_blend b -> Ok (bezier_q b.j0 b.j1 b.j2 u)
+
+(* ------------------------------------------------------------------ growable arrays *)
+
+module Vec = struct
+  type 'a t = { mutable data : 'a array; mutable len : int }
+  let create () = { data = [||]; len = 0 }
+  let push v x =
+    if v.len = Array.length v.data then begin
+      let d = Array.make (max 16 (2 * v.len)) x in
+      Array.blit v.data 0 d 0 v.len;
+      v.data <- d
+    end;
+    v.data.(v.len) <- x;
+    v.len <- v.len + 1
+  let get v i = v.data.(i)
+  let truncate v n = if n < v.len then v.len <- n
+end
+
+(* ------------------------------------------------------------------ the planner *)
+
+(* One path level: its queue, and its own clock of StopMove pauses. *)
+type level = {
+  start_joints : float array;
+  pieces : piece Vec.t;
+  mutable end_joints : float array;  (* where the queue leaves the robot *)
+  mutable end_flange : pose;
+  mutable end_time : float;  (* path time from which the robot stands at the end of the queue *)
+  mutable open_seg : (segment * int) option;  (* the last segment if fly-by: its Part's index *)
+  mutable pauses : (float * float) list;  (* StopMove … StartMove, real time, oldest first *)
+  mutable stopped_at : float option;
+}
+
+type t = {
+  kin : Kinematics.t;
+  settings : settings;
+  segs : segment Vec.t;
+  ready : float Vec.t;  (* path time at which the program may leave each move *)
+  ready_real : float Vec.t;  (* the same as answered by plan, for moves of a level dropped since *)
+  ready_level : level Vec.t;  (* the level each move was planned on *)
+  mutable cur : level;
+  mutable stored : level option;  (* path level 1, kept by StorePath while level 2 runs *)
+}
+
+let new_level kin joints ~from =
+  { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
+    end_flange = Kinematics.forward kin joints; end_time = from; open_seg = None; pauses = [];
+    stopped_at = None }
+
+let create ?(joints = Array.make 6 0.) kin =
+  let cur = new_level kin joints ~from:0. in
+  { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
+                      sing_area_wrist = false; look_ahead = 0.1 };
+    segs = Vec.create (); ready = Vec.create (); ready_real = Vec.create ();
+    ready_level = Vec.create (); cur; stored = None }
+
+let settings t = t.settings
+let kinematics t = t.kin
+let stopped t = t.cur.stopped_at <> None
+
+(* Virtual time less the time the robot stood by StopMove: the time the path runs on. *)
+let path_time (l : level) real =
+  let p = List.fold_left (fun acc (ts, te) -> acc -. Float.max 0. (Float.min real te -. ts)) real l.pauses in
+  match l.stopped_at with Some ts when real > ts -> p -. (real -. ts) | _ -> p
+
+let real_time (l : level) path =
+  let r = List.fold_left (fun r (ts, te) -> if path > path_time l ts then r +. (te -. ts) else r) path l.pauses in
+  match l.stopped_at with
+  | Some ts when path > path_time l ts +. 1e-12 -> infinity
+  | _ -> r
+
+let ( let* ) = Result.bind
+
+let check_range (r : Robot.t) q =
+  let bad = ref None in
+  Array.iteri (fun i a ->
+      let ax = r.axes.(i) in
+      if !bad = None && (a < ax.min -. 1e-9 || a > ax.max +. 1e-9) then bad := Some (i + 1)) q;
+  match !bad with None -> Ok () | Some k -> Error (Motion_error.Joint_out_of_range k)
+
+(* The circle through three points (law G-circle): centre from the two perpendicular bisector
+   planes and the points' plane, a 3x3 system solved by LU decomposition (GSL). *)
+let circle s c e =
+  let u = sub c s and v = sub e s in
+  let n = cross u v in
+  let scale_ = norm u *. norm v in
+  if norm u < 0.1 || norm v < 0.1 || distance c e < 0.1 || norm n < 1e-6 *. scale_ then
+    Error Motion_error.Circle_uncertain
+  else
+    let m = [| [| u.x; u.y; u.z |]; [| v.x; v.y; v.z |]; [| n.x; n.y; n.z |] |] in
+    let rhs = [| (dot c c -. dot s s) /. 2.; (dot e e -. dot s s) /. 2.; dot n s |] in
+    match Gsl.Linalg.solve_LU ~protect:true (`AA m) (`A rhs) with
+    | exception Gsl.Error.Gsl_exn _ -> Error Motion_error.Circle_uncertain
+    | x when not (Array.for_all Float.is_finite x) -> Error Motion_error.Circle_uncertain
+    | x ->
+    let centre = { x = x.(0); y = x.(1); z = x.(2) } in
+    let radius = distance s centre in
+    let e1 = scale (1. /. radius) (sub s centre) in
+    let e2 = scale (1. /. norm n) (cross n e1) in
+    let angle p = let d = sub p centre in
+      let a = atan2 (dot d e2) (dot d e1) in if a < 0. then a +. 8. *. atan 1. else a in
+    Ok (Arc { centre; e1; e2; radius; sweep = angle e })
+
+(* The share of a segment's length a zone of [zr] mm (or [zo] degrees when the TCP does not
+   move) may take, at most half the segment (law Z-clip). *)
+let side_fraction ~length ~angle zr zo =
+  if length > 0. then Float.min 0.5 (zr /. length)
+  else if angle > 0. then Float.min 0.5 (zo /. angle)
+  else 0.
+
+let corner_fractions (a : segment) (b : segment) =
+  if a.f.length > 0. && b.f.length > 0. then
+    let r = Float.min a.f.zone_tcp (Float.min (a.f.length /. 2.) (b.f.length /. 2.)) in
+    (r /. a.f.length, r /. b.f.length)
+  else
+    (side_fraction ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
+     side_fraction ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
+
+let build t ~now_p m id =
+  let k = t.kin and st = t.settings in
+  let robot = Kinematics.robot k in
+  if not m.tool.tool_robhold then Error Motion_error.Stationary_tool
+  else if m.wobj.wobj_robhold then Error Motion_error.Robhold_conflict
+  else
+    let tframe = m.tool.tframe in
+    let q_start = t.cur.end_joints in
+    let start = tcp_of_flange t.cur.end_flange tframe in
+    let w = Frames.object_frame m.wobj in
+    let world (rt : Frames.robtarget) = pmult w { rt.pose with rot = normalize rt.pose.rot } in
+    let goal_joints rt choice =
+      let* f = Frames.flange_of_target m.tool m.wobj { rt.Frames.pose with rot = normalize rt.Frames.pose.rot } in
+      let* q = Kinematics.inverse k f choice in
+      Ok (q, f) in
+    (* Linear and circular moves: ConfL and SingArea at the programmed point. *)
+    let cartesian_end (rt : Frames.robtarget) =
+      let* q, f = goal_joints rt (Kinematics.Nearest q_start) in
+      let* q =
+        if st.conf_l then
+          let c = Kinematics.conf_of k q in
+          if c.cfx <> rt.conf.cfx then Error Motion_error.Configuration_error
+          else if c.cf1 = rt.conf.cf1 && c.cf4 = rt.conf.cf4 && c.cf6 = rt.conf.cf6 then Ok q
+          else let* qc, _ = goal_joints rt (Kinematics.With_conf rt.conf) in Ok qc
+        else Ok q in
+      if (not st.sing_area_wrist) && Kinematics.wrist_singular k q then Error Motion_error.Close_to_singularity
+      else Ok (q, f) in
+    let* kind, geometry, rot1, q_end, f_end =
+      match m.motion with
+      | Linear rt ->
+          let* q, f = cartesian_end rt in
+          let g = world rt in
+          Ok ("MoveL", Line (start.trans, g.trans), g.rot, q, f)
+      | Circular (cir, rt) ->
+          let* q, f = cartesian_end rt in
+          let g = world rt in
+          let* arc = circle start.trans (world cir).trans g.trans in
+          Ok ("MoveC", arc, g.rot, q, f)
+      | Joint rt ->
+          let choice = if st.conf_j then Kinematics.With_conf rt.conf else Kinematics.Nearest q_start in
+          let* q, f = goal_joints rt choice in
+          Ok ("MoveJ", Joints (q_start, q), (tcp_of_flange f tframe).rot, q, f)
+      | Abs_joint q ->
+          if Array.length q <> 6 || Array.exists (fun a -> not (Float.is_finite a)) q then
+            Error (Motion_error.Joint_out_of_range 1)
+          else
+            let* () = check_range robot q in
+            let f = Kinematics.forward k q in
+            Ok ("MoveAbsJ", Joints (q_start, Array.copy q), (tcp_of_flange f tframe).rot, Array.copy q, f)
+    in
+    let end_tcp = (tcp_of_flange f_end tframe).trans in
+    let length = match geometry with
+      | Line (p0, p1) -> distance p0 p1
+      | Arc a -> a.radius *. a.sweep
+      | Joints _ -> distance start.trans end_tcp in
+    let angle = deg (angle_between start.rot rot1) in
+    let* duration =
+      match geometry with
+      | Joints (q0, q1) ->
+          Profile.joint robot st.velset m.timing ~deltas:(Array.mapi (fun i a -> a -. q0.(i)) q1) ~length ~angle
+      | _ -> Profile.cartesian robot st.velset m.timing ~length ~angle in
+    let* () =
+      if Float.is_finite duration && Float.is_finite length then Ok ()
+      else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in
+    let fine = m.zone.finep || m.inpos <> None in
+    let f = { length; angle; duration; t_start = now_p;
+              zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
+              zone_ori = (if fine then 0. else m.zone.zone_ori) } in
+    Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; f; fine;
+          end_tcp }, f_end)
+
+let push_piece t pc = if pc.tm.t1 > pc.tm.t0 || pc.tm.p1 <> pc.tm.p0 then Vec.push t.cur.pieces pc
+
+let plan t ~now m =
+  let now_p = path_time t.cur now in
+  let id = t.segs.len in
+  let* sg, f_end = build t ~now_p m id in
+  let warnings = ref [] in
+  (* Where the segment starts in time, and the corner into it (law Z-corner). *)
+  let sg, own_from, motion_from =
+    match t.cur.open_seg with
+    | None -> let ts = Float.max now_p t.cur.end_time in ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
+    | Some (a, idx) ->
+        let fa, fb = corner_fractions a sg in
+        let a_end = a.f.t_start +. a.f.duration in
+        let tc0 = a.f.t_start +. (1. -. fa) *. a.f.duration in
+        if now_p > tc0 +. 1e-9 then begin
+          (* Too late for the corner: the fly-by point becomes a stop point. *)
+          warnings := [ Corner_path_failure a.id ];
+          let ts = Float.max now_p a_end in
+          ({ sg with f = { sg.f with t_start = ts } }, 0., ts)
+        end else begin
+          let sg = { sg with f = { sg.f with t_start = a_end } } in
+          let tc1 = a_end +. fb *. sg.f.duration in
+          if fa > 0. || fb > 0. then begin
+            (* A's own piece, if it has one (a move of no time has none), now ends at the zone. *)
+            if idx >= 0 then begin
+              let pa = Vec.get t.cur.pieces idx in
+              pa.tm.p1 <- 1. -. fa;
+              pa.tm.t1 <- tc0;
+              if pa.tm.t1 <= pa.tm.t0 then Vec.truncate t.cur.pieces idx
+            end;
+            let k = t.kin in
+            let shape =
+              match a.geometry, sg.geometry with
+              | Joints _, _ | _, Joints _ ->
+                  let j s g = match seg_joints k s g with Ok q -> q | Error _ -> lerp_q s.q_start s.q_end g in
+                  Joint_blend { a; b = sg; j0 = j a (1. -. fa); j1 = a.q_end; j2 = j sg fb }
+              | _ ->
+                  Blend { a; b = sg; fa; fb }
+            in
+            push_piece t { tm = { t0 = tc0; t1 = tc1; p0 = 0.; p1 = 1. }; shape }
+          end;
+          (sg, fb, tc0)
+        end
+  in
+  let t_end = sg.f.t_start +. sg.f.duration in
+  let idx = t.cur.pieces.len in
+  push_piece t { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
+  let arrive_ready =
+    match m.inpos with
+    | None -> t_end
+    | Some sp ->
+        (match sp.stop_type with
+         | Motion_data.Inpos -> t_end +. sp.inpos_mintime
+         | Stoptime -> t_end +. sp.stoptime
+         | Fllwtime -> Float.max now_p (t_end -. sp.followtime)) in
+  let ready =
+    if m.conc then Float.max now_p motion_from
+    else if sg.fine then arrive_ready
+    else
+      let fmax = side_fraction ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
+      Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
+  in
+  t.cur.end_joints <- sg.q_end;
+  t.cur.end_flange <- f_end;
+  t.cur.end_time <- (if sg.fine then Float.max t_end arrive_ready else t_end);
+  let idx = if t.cur.pieces.len > idx then idx else -1 in
+  t.cur.open_seg <- (if sg.fine then None else Some (sg, idx));
+  Vec.push t.segs sg;
+  Vec.push t.ready ready;
+  let ready_time = real_time t.cur ready in
+  Vec.push t.ready_real ready_time;
+  Vec.push t.ready_level t.cur;
+  Ok { id; ready_time; warnings = !warnings }
+
+let ready_time t id =
+  if id < 0 || id >= t.ready.len then invalid_arg "Planner.ready_time: unknown move"
+  else
+    let l = Vec.get t.ready_level id in
+    let live = l == t.cur || (match t.stored with Some s -> l == s | None -> false) in
+    if live then real_time l (Vec.get t.ready id) else Vec.get t.ready_real id
+
+(* The last piece that has begun by path time [tp], or -1. *)
+let find t tp =
+  let lo = ref 0 and hi = ref (t.cur.pieces.len - 1) and best = ref (-1) in
+  while !lo <= !hi do
+    let mid = (!lo + !hi) / 2 in
+    if (Vec.get t.cur.pieces mid).tm.t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
+  done;
+  !best
+
+let pose_at t real =
+  let tp = path_time t.cur real in
+  match find t tp with
+  | -1 -> tcp_of_flange (Kinematics.forward t.kin t.cur.start_joints) Motion_data.tool0.tframe
+  | i -> let pc = Vec.get t.cur.pieces i in piece_pose t.kin pc (param pc tp)
+
+let joints_at t real =
+  let tp = path_time t.cur real in
+  match find t tp with
+  | -1 -> Ok (Array.copy t.cur.start_joints)
+  | i ->
+      let pc = Vec.get t.cur.pieces i in
+      let u = param pc tp in
+      (* The ends of a Part are exact: the programmed point's own solution. *)
+      match pc.shape with
+      | Part sg when u >= 1. -> Ok (Array.copy sg.q_end)
+      | _ -> piece_joints t.kin pc u
+
+let finished_by t = real_time t.cur t.cur.end_time
+
+let stop t ~at = if t.cur.stopped_at = None then t.cur.stopped_at <- Some at
+
+let start t ~at =
+  match t.cur.stopped_at with
+  | Some ts -> t.cur.pauses <- t.cur.pauses @ [ (ts, Float.max ts at) ]; t.cur.stopped_at <- None
+  | None -> ()
+
+let clear t ~at =
+  let tp = path_time t.cur at in
+  let q = match joints_at t at with Ok q -> q | Error _ -> t.cur.end_joints in
+  let i = find t tp in
+  Vec.truncate t.cur.pieces (i + 1);
+  if i >= 0 then begin
+    let pc = Vec.get t.cur.pieces i in
+    if pc.tm.t1 > tp then (pc.tm.p1 <- param pc tp; pc.tm.t1 <- tp)
+  end;
+  if tp < t.cur.end_time then begin
+    t.cur.end_joints <- q;
+    t.cur.end_flange <- Kinematics.forward t.kin q;
+    t.cur.end_time <- tp
+  end;
+  t.cur.open_seg <- None
+
+type piece_kind = Segment of int | Corner of int * int | Still
+type piece_info = { t_from : float; t_to : float; kind : piece_kind }
+
+let pieces t =
+  let out = ref [] and last = ref 0. in
+  for i = 0 to t.cur.pieces.len - 1 do
+    let pc = Vec.get t.cur.pieces i in
+    if pc.tm.t0 > !last +. 1e-9 then
+      out := { t_from = real_time t.cur !last; t_to = real_time t.cur pc.tm.t0; kind = Still } :: !out;
+    let kind = match pc.shape with
+      | Part sg -> Segment sg.id
+      | Blend b -> Corner (b.a.id, b.b.id)
+      | Joint_blend b -> Corner (b.a.id, b.b.id) in
+    out := { t_from = real_time t.cur pc.tm.t0; t_to = real_time t.cur pc.tm.t1; kind } :: !out;
+    last := pc.tm.t1
+  done;
+  List.rev !out
+
+type segment_info = {
+  seg_id : int; seg_label : string; seg_kind : string; target : pos;
+  seg_fine : bool; seg_length : float; seg_duration : float;
+}
+
+let segments t =
+  List.init t.segs.len (fun i ->
+      let s = Vec.get t.segs i in
+      { seg_id = s.id; seg_label = s.label; seg_kind = s.kind; target = s.end_tcp; seg_fine = s.fine;
+        seg_length = s.f.length; seg_duration = s.f.duration })
+
+let path_level t = if t.stored = None then 1 else 2
+
+let store_path t ~at =
+  match t.stored with
+  | Some _ -> Error (Motion_error.Path_level "StorePath: a path is stored already (path level 2)")
+  | None ->
+      let l1 = t.cur in
+      let q = match joints_at t at with Ok q -> q | Error _ -> l1.end_joints in
+      stop t ~at;
+      t.stored <- Some l1;
+      t.cur <- new_level t.kin q ~from:at;
+      Ok ()
+
+let resto_path t ~at:_ =
+  match t.stored with
+  | None -> Error (Motion_error.Path_level "RestoPath: no path is stored (path level 1)")
+  | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()

@@ -1,0 +1,116 @@
+(** The motion planner (doc/motion.md, "The program pointer and the motion pointer"): the motion
+    queue of one robot on virtual time. A move instruction hands its segment to [plan], which says
+    when the program may go on ([ready_time]: for a fly-by point the look-ahead horizon before the
+    robot can enter its zone, or at once if that has passed; for a stop point when the robot
+    stands in position there). [pose_at] and [joints_at] say where the
+    robot is at any time, between programmed points too. Times are seconds of the machine's
+    virtual clock, which only moves forward. *)
+
+type motion =
+  | Linear of Frames.robtarget  (** MoveL ToPoint *)
+  | Circular of Frames.robtarget * Frames.robtarget  (** MoveC CirPoint ToPoint *)
+  | Joint of Frames.robtarget  (** MoveJ ToPoint *)
+  | Abs_joint of float array  (** MoveAbsJ ToJointPos: axis angles, degrees *)
+
+type move = {
+  motion : motion;
+  timing : Profile.timing;  (** Speed [\V] [\T] *)
+  zone : Motion_data.zonedata;  (** Zone *)
+  z : float option;  (** \Z: replaces pzone_tcp *)
+  inpos : Motion_data.stoppointdata option;  (** \Inpos: a stop point with these criteria *)
+  conc : bool;  (** \Conc *)
+  tool : Motion_data.tooldata;
+  wobj : Motion_data.wobjdata;  (** \WObj, wobj0 when absent *)
+  label : string;  (** the target's name, for output *)
+}
+
+val move :
+  ?v:float -> ?t:float -> ?z:float -> ?inpos:Motion_data.stoppointdata -> ?conc:bool ->
+  ?tool:Motion_data.tooldata -> ?wobj:Motion_data.wobjdata -> ?label:string ->
+  Motion_data.speeddata -> Motion_data.zonedata -> motion -> move
+(** A move with tool0, wobj0 and no optional argument unless given. *)
+
+type settings = {
+  mutable velset : Profile.velset;  (** VelSet *)
+  mutable conf_l : bool;  (** ConfL \On (default) / \Off *)
+  mutable conf_j : bool;  (** ConfJ \On (default) / \Off *)
+  mutable sing_area_wrist : bool;  (** SingArea \Wrist / \Off (default) *)
+  mutable look_ahead : float;
+      (** how long before a fly-by point's zone the program pointer may leave its move, s
+          (default 0.1: ABB's planning time DT, installed-facts.md §5, CONFIRMED as approximate) *)
+}
+
+type warning =
+  | Corner_path_failure of int
+      (** the segment's fly-by point became a stop point: the next move came after its corner
+          had to begin (ABB event "corner path failure") *)
+
+type planned = { id : int; ready_time : float; warnings : warning list }
+
+type t
+
+val create : ?joints:float array -> Kinematics.t -> t
+(** An empty queue with the robot standing at [joints] (default all 0) from time 0. *)
+
+val settings : t -> settings
+val kinematics : t -> Kinematics.t
+
+val plan : t -> now:float -> move -> (planned, Motion_error.t) result
+(** Hands a move to the planner at time [now]. An error leaves the queue as it was. *)
+
+val ready_time : t -> int -> float
+(** When the program may leave the move with this id, in the light of StopMove and StartMove
+    since it was planned; [infinity] while the robot is stopped short of it. For a move of a path
+    level dropped by RestoPath, the time [plan] answered. Raises [Invalid_argument] for an id
+    [plan] did not give. *)
+
+val pose_at : t -> float -> Geom.pose
+(** The TCP pose (base frame, tool of the move under way) at a time. *)
+
+val joints_at : t -> float -> (float array, Motion_error.t) result
+(** The axis angles at a time (CJointT); an error where a linear path leaves the workspace. *)
+
+val finished_by : t -> float
+(** When the robot will stand still at the end of all it has been given ([infinity] while
+    stopped with motion left). *)
+
+val stop : t -> at:float -> unit
+(** StopMove: the robot stands still at once from [at]; the path is kept. *)
+
+val start : t -> at:float -> unit
+(** StartMove: the path goes on from where it stopped, from [at]. *)
+
+val stopped : t -> bool
+
+val clear : t -> at:float -> unit
+(** ClearPath: everything not done at [at] is dropped; the robot stands where it is and the next
+    move starts from there. *)
+
+val path_level : t -> int
+(** PathLevel(): 1, or 2 between StorePath and RestoPath. *)
+
+val store_path : t -> at:float -> (unit, Motion_error.t) result
+(** StorePath: the path of level 1 is stopped at [at] (if it is not already) and kept; level 2
+    begins, empty, with the robot where it stands. On level 2 already: an error. *)
+
+val resto_path : t -> at:float -> (unit, Motion_error.t) result
+(** RestoPath: level 2 is dropped and level 1 comes back, still stopped: StartMove resumes it
+    from where it stopped (the program is to have moved the robot back there). On level 1: an
+    error. *)
+
+(** {1 The planned path, for output} *)
+
+type piece_kind = Segment of int | Corner of int * int | Still
+
+type piece_info = { t_from : float; t_to : float; kind : piece_kind }
+
+val pieces : t -> piece_info list
+(** The timed pieces of the path, in time order (real time). *)
+
+type segment_info = {
+  seg_id : int; seg_label : string; seg_kind : string;  (** "MoveL", "MoveC", "MoveJ", "MoveAbsJ" *)
+  target : Geom.pos;  (** the programmed point's TCP position, base frame *)
+  seg_fine : bool; seg_length : float; seg_duration : float;
+}
+
+val segments : t -> segment_info list

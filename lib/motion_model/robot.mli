@@ -1,0 +1,43 @@
+(** The robot description: a six-axis arm given by its Denavit–Hartenberg parameters, axis
+    ranges and axis speeds, in a small text format (doc/motion.md, "The robot description"), so
+    that a robot other than the built-in default can be given on the command line
+    ([--robot FILE], to come). *)
+
+type axis = {
+  a : float;  (** DH link length, mm *)
+  alpha : float;  (** DH link twist, degrees *)
+  d : float;  (** DH link offset, mm *)
+  offset : float;  (** DH joint angle at axis angle 0, degrees: theta = angle + offset *)
+  min : float;  (** lower axis limit, degrees *)
+  max : float;  (** upper axis limit, degrees *)
+  speed : float;  (** maximum axis speed, degrees/s *)
+}
+
+type t = {
+  name : string;
+  axes : axis array;  (** six axes, axis 1 first *)
+  max_tcp_speed : float;  (** mm/s: vmax's v_tcp and MaxRobSpeed() *)
+}
+
+val irb120 : t
+(** The default robot: ABB IRB 120 with the dimensions, ranges and speeds of installed-facts.md
+    §3 "A default robot for the kinematic model". *)
+
+val irb120_text : string
+(** The same robot as a description file: the format's reference example. *)
+
+type error = { file : string; line : int; col : int; message : string }
+
+val error_to_string : error -> string
+(** [FILE:LINE:COL: robot description error: MESSAGE]. *)
+
+val parse : file:string -> string -> (t, error) result
+(** Reads a description. Refuses what the model cannot move: a missing or repeated axis, an
+    empty or inverted range, a speed that is not positive, and a kinematic structure other than
+    the one the analytic inverse kinematics solves (see {!Kinematics}). *)
+
+val load : string -> (t, error) result
+(** [parse] of a file's contents; an unreadable file is an error at 1:1. *)
+
+val structure_error : t -> string option
+(** Why the analytic inverse kinematics cannot solve this arm, or [None]. *)
