@@ -27,14 +27,25 @@ let contains_sub s p =
   let rec go i = if i + n > m then raise Not_found else if String.sub s i n = p then i else go (i + 1) in
   go 0
 
+let contains_sub_bool s p = match contains_sub s p with _ -> true | exception Not_found -> false
+
 (* No OCaml exception may reach a user as such: anything that escapes is a bug of rapid-sem,
    reported as one. *)
+let stdout_broken m =
+  contains_sub_bool m "Broken pipe" || (try flush stdout; false with Sys_error _ -> true)
+
 let guard f =
-  try let status = f () in flush_output (); status with
+  try
+    try let status = f () in flush_output (); status
+    with Sys_error m when stdout_broken m -> raise (Output_failed m)
+  with
   | Output_failed m ->
       (* A closed pipe is the reader's choice: quiet. Anything else is said once. *)
-      let broken_pipe = try ignore (contains_sub m "Broken pipe"); true with Not_found -> false in
+      let broken_pipe = contains_sub_bool m "Broken pipe" in
       if not broken_pipe then (try Printf.eprintf "rapid-sem: cannot write the standard output: %s\n%!" m with _ -> ());
+      (* What is left in the buffer cannot be written either: closing drops it, so that the
+         flushes at exit have nothing to fail on. *)
+      close_out_noerr stdout;
       exit_output_failed
   | Stack_overflow ->
       prerr_endline "rapid-sem: internal error: stack overflow (please report this input)";
