@@ -363,6 +363,28 @@ let primitive_context cfg events : Primitive.context = {
 
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
 
+(* The routine a late-bound name denotes (§4.6): "name1:name2" the routine name2 of module
+   name1 (a LOCAL one too); a plain name by the scope rules of §5.3 from the calling module: its
+   own routines, then the global ones. The routines of a name come from a table built once, so
+   the look-up is O(1) in the size of the program. *)
+let late_routine cfg name =
+  let module_name, routine_name =
+    match String.index_opt name ':' with
+    | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
+    | None -> (None, name)
+  in
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let here = cfg.act.routine.module_name in
+  let candidates =
+    Option.value (Hashtbl.find_opt cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
+  let find pred = List.find_opt (fun i -> pred cfg.program.routines.(i)) candidates in
+  match module_name with
+  | Some m -> find (fun (r : Ir.routine) -> same r.module_name m)
+  | None -> (
+      match find (fun (r : Ir.routine) -> same r.module_name here) with
+      | Some i -> Some i
+      | None -> find (fun (r : Ir.routine) -> not r.local))
+
 let call_primitive cfg (cs : call_state) name =
   let events = ref [] in
   match Primitive.call (primitive_context cfg events) name cs.primitive_args with
@@ -376,7 +398,7 @@ let call_primitive cfg (cs : call_state) name =
   | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
   | Primitive.Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
-      match routine_index_in cfg.by_name target with
+      match late_routine cfg target with
       | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           raise_ ~about:target cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
@@ -868,28 +890,7 @@ let value_step cfg v =
       cfg.stack <- rest;
       match v with
       | V.String name -> (
-          (* §4.6: "name1:name2" names the procedure name2 of module name1. *)
-          let module_name, routine_name =
-            match String.index_opt name ':' with
-            | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
-            | None -> (None, name)
-          in
-          (* Without a module, the scope rules of §5.3 apply from the calling module: its own
-             routines, then the global ones; "module:name" reaches a LOCAL one too (§4.6). The
-             routines of that name come from a table built once (O(1) in the program's size). *)
-          let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
-          let here = cfg.act.routine.module_name in
-          let candidates =
-            Option.value (Hashtbl.find_opt cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
-          let find pred = List.find_opt (fun i -> pred cfg.program.routines.(i)) candidates in
-          let found =
-            match module_name with
-            | Some m -> find (fun (r : Ir.routine) -> same r.module_name m)
-            | None -> (
-                match find (fun (r : Ir.routine) -> same r.module_name here) with
-                | Some i -> Some i
-                | None -> find (fun (r : Ir.routine) -> not r.local))
-          in
+          let found = late_routine cfg name in
           match found with
           | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
           | Some i when cfg.program.routines.(i).kind <> Procedure ->
