@@ -259,7 +259,7 @@ let run_cmd =
     `S Manpage.s_description;
     `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the small-step semantics of doc/semantics.md. Standard output carries only the program's output, one line per TPWrite.";
     `S Manpage.s_exit_status;
-    `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
+    `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
