@@ -15,6 +15,16 @@ let equal_type (p : Ir.parameter) (t : T.object_type) =
   | None -> is_switch_type t
   | Some pt -> is_anytype pt || T.equal_types ~value_context:(p.p_mode = Mode_in) pt t
 
+(* §2.16: a non-value object has no value for an in parameter; a non-value or semi-value object
+   is passed only to a VAR or REF parameter (footnote iii of the table of object references). *)
+let value_class_fits (p : Ir.parameter) (t : T.object_type) =
+  is_switch_type t
+  || (match T.value_class t.base, p.p_mode with
+      | Value, _ -> true
+      | Semi_value, (Mode_in | Mode_var | Mode_ref) -> true
+      | Non_value, (Mode_var | Mode_ref) -> true
+      | (Semi_value | Non_value), _ -> false)
+
 let is_num_scalar (p : Ir.parameter) =
   match p.p_type with
   | Some { base = Num | Dnum; dims = Scalar } -> true
@@ -54,7 +64,7 @@ let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
     | Late_expr _ when p.p_switch -> callproc ()
     | Late_expr e -> (
         let e = match a.late_type, e.e with
-          | Late_typed t, _ -> if equal_type p t then e else callproc ()
+          | Late_typed t, _ -> if equal_type p t && value_class_fits p t then e else callproc ()
           | Late_numeric d, _ -> if not (is_num_scalar p) then callproc () else if is_dnum_scalar p then d else e
           | Late_untyped, Aggregate _ -> (
               match aggregate_shape p with

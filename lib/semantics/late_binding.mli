@@ -17,7 +17,9 @@ val bind :
     one optional parameter both given (§5.2), a switch for a parameter that is not one or the
     reverse, a conditional argument for a required parameter, a type that is not the
     parameter's (§3.11: equal types; a numeric literal is num or dnum as its parameter is,
-    R-2.5-b; an aggregate must fit the parameter's type, checked when its value is known).
+    R-2.5-b; an aggregate must fit the parameter's type, checked when its value is known), an
+    object of a non-value type for an in, PERS or INOUT parameter or of a semi-value type for a
+    PERS or INOUT one (§2.16).
     [Error "ERR_ARGNOTVAR"] when a VAR or INOUT parameter gets something other than a variable
     (a constant, a read-only variable, a persistent for VAR, any other expression), and
     [Error "ERR_ARGNOTPER"] when a PERS parameter gets something other than a persistent: the
