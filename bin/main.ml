@@ -156,7 +156,7 @@ let report_load_failure = function
 
 (* JSON text is UTF-8: RAPID strings and names are bytes, read as Latin-1 where they are not
    UTF-8 (doc/trace-format.md). *)
-let text s = `String (Utf8_text.of_bytes s)
+let text s = `String (Rapid_semantics.Utf8_text.of_bytes s)
 
 let region_json r =
   let p = Source.start r and q = Source.stop r in
@@ -276,7 +276,7 @@ let region_text r =
         | Some l -> l
         | None ->
             let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
-            let latin1 = not (Array.for_all Utf8_text.is_utf8 l) in
+            let latin1 = not (Array.for_all Rapid_semantics.Utf8_text.is_utf8 l) in
             (* A byte-order mark is not a character of the module. *)
             if (not latin1) && Array.length l > 0 && String.length l.(0) >= 3 && String.sub l.(0) 0 3 = "\xEF\xBB\xBF" then
               l.(0) <- String.sub l.(0) 3 (String.length l.(0) - 3);
@@ -284,7 +284,7 @@ let region_text r =
       let p = Source.start r and q = Source.stop r in
       if p.line < 1 || p.line > Array.length lines then ""
       else
-        let chars = Utf8_text.characters ~latin1 lines.(p.line - 1) in
+        let chars = Rapid_semantics.Utf8_text.characters ~latin1 lines.(p.line - 1) in
         let n = Array.length chars in
         let stop = if q.line = p.line then max 0 (min n (q.col - 1)) else n in
         let start = max 0 (min n (p.col - 1)) in

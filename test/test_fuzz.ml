@@ -841,6 +841,26 @@ let recursion_through_handlers () =
               if seconds > 2.0 then Alcotest.failf "%.2f s to reach the depth limit" seconds;
               if grown > 8 * 1024 * 1024 then Alcotest.failf "the heap grew by %d bytes" grown))
 
+(* JSON text is valid UTF-8 whatever the bytes (doc/trace-format.md, "Text"): valid UTF-8 is kept,
+   any other byte becomes its Latin-1 character. *)
+let json_text () =
+  let module U = Rapid_semantics.Utf8_text in
+  let valid = [ ""; "abc"; "café"; "é😀"; "\xEF\xBB\xBF"; "\xF4\x8F\xBF\xBF" ] in
+  List.iter (fun s -> Alcotest.(check string) "valid UTF-8 is kept" s (U.of_bytes s)) valid;
+  List.iter (fun (s, expected) -> Alcotest.(check string) (Printf.sprintf "%S" s) expected (U.of_bytes s))
+    [ ("caf\xE9", "café"); ("\xC3", "Ã"); ("\xED\xA0\x80", "í\xC2\xA0\xC2\x80"); ("\xC0\xAF", "À¯");
+      ("\xF5", "õ"); ("a\x80b", "a\xC2\x80b") ];
+  let rand = Random.State.make [| 8 |] in
+  for _ = 1 to 2000 do
+    let s = String.init (Random.State.int rand 40) (fun _ -> Char.chr (Random.State.int rand 256)) in
+    let u = U.of_bytes s in
+    if not (U.is_utf8 u) then Alcotest.failf "%S gave %S, not UTF-8" s u;
+    if U.of_bytes u <> u then Alcotest.failf "%S: not idempotent" s;
+    let chars = U.characters ~latin1:true s in
+    if Array.length chars <> String.length s || String.concat "" (Array.to_list chars) <> U.of_bytes (String.concat "" (List.map (fun c -> U.of_bytes (String.make 1 c)) (List.init (String.length s) (String.get s)))) then
+      Alcotest.failf "%S: Latin-1 characters" s
+  done
+
 (* A closed pipe on standard output ends rapid-sem with exit status 141, quietly. *)
 let closed_output () =
   let dir = Filename.get_temp_dir_name () in
@@ -877,5 +897,6 @@ let suite =
       ("nesting at the limit (§1.4)", `Quick, at_the_limit);
       ("checked programs never get stuck", `Quick, programs_run);
       ("a closed standard output", `Quick, closed_output);
+      ("JSON text is UTF-8", `Quick, json_text);
       ("recursion through error handlers (O(1) errors)", `Quick, recursion_through_handlers);
     ] )
