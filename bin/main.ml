@@ -51,8 +51,11 @@ let guard f =
       prerr_endline "rapid-sem: internal error: stack overflow (please report this input)";
       exit_internal
   | Out_of_memory ->
-      prerr_endline "rapid-sem: internal error: out of memory";
-      exit_internal
+      (* The machine's memory, not a rule of rapid-sem: a resource exhausted (§1.4). The RAPID
+         data of a run is bounded by --max-memory, so this means a budget beyond the memory the
+         machine has. *)
+      prerr_endline "rapid-sem: out of memory (resource exhaustion, §1.4): try a smaller --max-memory";
+      3
   | e ->
       Printf.eprintf "rapid-sem: internal error: %s (please report this input)\n"
         (Printexc.to_string e);

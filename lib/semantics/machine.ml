@@ -299,6 +299,10 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
 
 (* ------------------------------------------------------------------ calls *)
 
+(* What an activation costs by the model of Value.bytes, besides its data: a record, its frames
+   and one slot per parameter and routine data object. *)
+let activation_bytes (r : Ir.routine) = 256 + 16 * r.locals
+
 let enter_routine cfg (cs : call_state) =
   let r = cs.callee in
   let depth = cfg.act.call_depth + 1 in
@@ -307,6 +311,11 @@ let enter_routine cfg (cs : call_state) =
                            (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" cfg.limits.max_call_depth));
     ("call-depth-exceeded", [])
   end
+  else if activation_bytes r > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin
+    (* The activation itself counts: a very deep recursion stays within the budget too. *)
+    cfg.focus <- F_done (memory_exhausted cfg ("the call of " ^ r.name) (region_of_focus_stmt cfg));
+    ("memory-exhausted", [])
+  end
   else begin
     let slots = Array.make r.locals { box = [||]; idx = 0 } in
     Array.blit cs.args_slots 0 slots 0 (Array.length cs.args_slots);
@@ -314,8 +323,8 @@ let enter_routine cfg (cs : call_state) =
     let act = activation ~routine:r ~slots ~present:cs.args_present ~kinds:cs.args_kinds
         ~module_data:cs.args_module_data ~caller:(Some cfg.act) ~return_to:cfg.stack ~caller_mark:cfg.mark in
     (* The in arguments' copies were checked against the budget when they were made. *)
-    act.memory <- cs.args_memory;
-    cfg.memory <- cfg.memory + cs.args_memory;
+    act.memory <- cs.args_memory + activation_bytes r;
+    cfg.memory <- cfg.memory + act.memory;
     cfg.act <- act;
     (* Routine data is fresh for every call (§2.21): initialised, then the body runs. *)
     cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
