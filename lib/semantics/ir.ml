@@ -96,6 +96,8 @@ and for_loop = {
 
 and late_argument = {
   late_name : string option;                 (* for optional and named arguments *)
+  late_optional : bool;                      (* written \name: an optional, switch or conditional
+                                                argument, bound by name (§3.11) *)
   late_value : late_value;
   late_kind : reference_kind;                (* what a data reference argument denotes *)
   late_type : late_type;                     (* what the call's parameter must be (§5.2) *)

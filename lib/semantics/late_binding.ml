@@ -114,19 +114,22 @@ let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
   in
   try
     Array.iter (fun (a : Ir.late_argument) ->
+        (* §3.11: an optional argument names its parameter, which must be an optional one; a
+           required argument goes to the next required parameter, whose name it may give. *)
         let optional =
           match a.late_name with
-          | Some name ->
+          | Some name when a.late_optional ->
               let rec find i =
                 if i >= n then None
                 else if r.parameters.(i).p_optional && same r.parameters.(i).p_name name then Some i
                 else find (i + 1) in
               find 0
-          | None -> None in
+          | _ -> None in
         match optional with
         | Some i -> put i a
         | None -> (
             match a.late_value with
+            | _ when a.late_optional -> callproc ()
             | Late_switch | Late_conditional _ -> callproc ()
             | Late_expr _ -> (
                 match next_required !next with

@@ -241,23 +241,23 @@ and statement ctx (s : A.statement) : Ir.stmt =
           | None -> Late_untyped in
         let value n (e : A.expression) : Ir.late_argument =
           { late_name = n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e;
-            late_type = typed e; late_read_only = read_only ctx e } in
+            late_type = typed e; late_read_only = read_only ctx e; late_optional = false } in
         match a.it with
         | Required_argument (n, e, at) -> value (Option.bind n name) (A.operand e at)
         | Positional_argument e -> value None (A.operand e a.at)
         | Optional_argument (n, None) ->
             { late_name = name n; late_value = Late_switch; late_kind = Ref_other; late_type = Late_untyped;
-              late_read_only = false }
-        | Optional_argument (n, Some e) -> value (name n) e
+              late_read_only = false; late_optional = true }
+        | Optional_argument (n, Some e) -> { (value (name n) e) with late_optional = true }
         | Conditional_argument (n, r) ->
             let slot = match place ctx r with Whole s -> Some s | _ -> None in
             let late_type = match Hashtbl.find_opt ctx.elab.late_arguments a.at with
               | Some (Some t) -> Ir.Late_typed t | _ -> Late_untyped in
             { late_name = name n; late_value = Late_conditional slot; late_kind = Ref_variable; late_type;
-              late_read_only = false }
+              late_read_only = false; late_optional = true }
         | ARG_placeholder ->
             { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other;
-              late_type = Late_untyped; late_read_only = false }
+              late_type = Late_untyped; late_read_only = false; late_optional = false }
       in
       make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (

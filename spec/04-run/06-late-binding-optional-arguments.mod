@@ -3,7 +3,7 @@ MODULE late_binding_optional_arguments
 ! @section 4.6
 ! @section 5.2
 ! @expect ok
-! @description Section 4.6's move with late binding: the optional arguments are bound by name when the call runs; both alternatives of \speed | \time, the same optional argument twice, a switch for a parameter that is not one, or a value for a switch raise ERR_CALLPROC.
+! @description Section 4.6's move with late binding: the optional arguments are bound by name when the call runs; both alternatives of \speed | \time, the same optional argument twice, a switch for a parameter that is not one, a value for a switch, an optional parameter named as a required argument (name := value) or a required one as an optional argument (\name := value) raise ERR_CALLPROC.
 ! @output speed 100
 ! @output time 20
 ! @output reltool
@@ -14,6 +14,10 @@ MODULE late_binding_optional_arguments
 ! @output switch for a value: 
 ! @output callproc
 ! @output value for a switch: 
+! @output callproc
+! @output required form for an optional: 
+! @output callproc
+! @output optional form for a required: 
 ! @output callproc
 ! @exit 0
   PROC move(\switch reltool, num dest \num speed | num time)
@@ -33,6 +37,10 @@ MODULE late_binding_optional_arguments
     % "move" % 1 \speed;
     TPWrite "value for a switch: ";
     % "move" % \reltool:=1, 1;
+    TPWrite "required form for an optional: ";
+    % "move" % 1, speed:=100;
+    TPWrite "optional form for a required: ";
+    % "move" % \dest:=1;
   ERROR
     IF ERRNO = ERR_CALLPROC THEN
       TPWrite "callproc";
