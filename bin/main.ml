@@ -10,16 +10,52 @@ let exit_static_error = 2
 let exit_spec_failed = 1
 let exit_internal = 125
 
+(* Standard output closed (a pipe whose reader has gone) or not writable (a full disk): the run
+   ends at once with this status, 128 + SIGPIPE as a shell reports a process that a closed pipe
+   ended (doc/user-guide.md). *)
+let exit_output_failed = 141
+
+exception Output_failed of string
+
+let print_line s =
+  try print_string s; print_char '\n' with Sys_error m -> raise (Output_failed m)
+
+let flush_output () = try flush stdout with Sys_error m -> raise (Output_failed m)
+
+let contains_sub s p =
+  let n = String.length p and m = String.length s in
+  let rec go i = if i + n > m then raise Not_found else if String.sub s i n = p then i else go (i + 1) in
+  go 0
+
+let contains_sub_bool s p = match contains_sub s p with _ -> true | exception Not_found -> false
+
 (* No OCaml exception may reach a user as such: anything that escapes is a bug of rapid-sem,
    reported as one. *)
+let stdout_broken m =
+  contains_sub_bool m "Broken pipe" || (try flush stdout; false with Sys_error _ -> true)
+
 let guard f =
-  try f () with
+  try
+    try let status = f () in flush_output (); status
+    with Sys_error m when stdout_broken m -> raise (Output_failed m)
+  with
+  | Output_failed m ->
+      (* A closed pipe is the reader's choice: quiet. Anything else is said once. *)
+      let broken_pipe = contains_sub_bool m "Broken pipe" in
+      if not broken_pipe then (try Printf.eprintf "rapid-sem: cannot write the standard output: %s\n%!" m with _ -> ());
+      (* What is left in the buffer cannot be written either: closing drops it, so that the
+         flushes at exit have nothing to fail on. *)
+      close_out_noerr stdout;
+      exit_output_failed
   | Stack_overflow ->
       prerr_endline "rapid-sem: internal error: stack overflow (please report this input)";
       exit_internal
   | Out_of_memory ->
-      prerr_endline "rapid-sem: internal error: out of memory";
-      exit_internal
+      (* The machine's memory, not a rule of rapid-sem: a resource exhausted (§1.4). The RAPID
+         data of a run is bounded by --max-memory, so this means a budget beyond the memory the
+         machine has. *)
+      prerr_endline "rapid-sem: out of memory (resource exhaustion, §1.4): try a smaller --max-memory";
+      3
   | e ->
       Printf.eprintf "rapid-sem: internal error: %s (please report this input)\n"
         (Printexc.to_string e);
@@ -121,24 +157,28 @@ let report_load_failure = function
   | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
 
+(* JSON text is UTF-8: RAPID strings and names are bytes, read as Latin-1 where they are not
+   UTF-8 (doc/trace-format.md). *)
+let text s = `String (Rapid_semantics.Utf8_text.of_bytes s)
+
 let region_json r =
   let p = Source.start r and q = Source.stop r in
-  `Assoc [ ("file", `String (match Source.file_of r with Some f -> Source.name f | None -> ""));
+  `Assoc [ ("file", text (match Source.file_of r with Some f -> Source.name f | None -> ""));
            ("line", `Int p.line); ("col", `Int p.col); ("end_line", `Int q.line); ("end_col", `Int q.col) ]
 
 let event_json (e : M.event) : Yojson.Safe.t =
   match e with
-  | Output s -> `Assoc [ ("event", `String "output"); ("text", `String s) ]
+  | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
   | Erase -> `Assoc [ ("event", `String "erase") ]
-  | Log s -> `Assoc [ ("event", `String "log"); ("text", `String s) ]
-  | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", `String r) ]
-  | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", `String r) ]
+  | Log s -> `Assoc [ ("event", `String "log"); ("text", text s) ]
+  | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
+  | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
   | Error_raised { name; number; at } ->
-      `Assoc [ ("event", `String "error-raised"); ("name", `String name); ("number", `Int number);
+      `Assoc [ ("event", `String "error-raised"); ("name", text name); ("number", `Int number);
                ("at", region_json at) ]
   | Error_handled { name; routine } ->
-      `Assoc [ ("event", `String "error-handled"); ("name", `String name); ("routine", `String routine) ]
-  | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", `String r) ]
+      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("routine", text routine) ]
+  | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", text r) ]
   | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
 
 let schema = "rapid-sem/1"
@@ -148,19 +188,21 @@ let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
   match o with
   | Running -> base "running" []
   | Ended -> base "ended" []
-  | Stopped { name; number; at; chain } ->
-      base "stopped" [ ("name", `String name); ("number", `Int number); ("at", region_json at);
-                       ("chain", `List (List.map (fun r -> `String r) chain)) ]
-  | Resource_exhausted m -> base "exhausted" [ ("reason", `String m) ]
-  | Unsupported m -> base "unsupported" [ ("reason", `String m) ]
-  | Stuck m -> base "stuck" [ ("reason", `String m) ]
+  | Stopped { name; number; at; chain; about } ->
+      base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
+                        ("chain", `List (List.map text chain)) ]
+                      @ (match about with Some a -> [ ("about", text a) ] | None -> []))
+  | Resource_exhausted m -> base "exhausted" [ ("reason", text m) ]
+  | Unsupported m -> base "unsupported" [ ("reason", text m) ]
+  | Stuck m -> base "stuck" [ ("reason", text m) ]
 
 let finish (o : M.outcome) steps ~max_steps =
   match o with
   | Ended -> exit_ok
-  | Stopped { name; at; chain; _ } ->
-      Printf.eprintf "%s: execution error: %s: the system error handler stopped the task (%s)\n"
-        (Source.to_string at) name (String.concat " <- " chain);
+  | Stopped { name; at; chain; about; _ } ->
+      Printf.eprintf "%s: execution error: %s%s: the system error handler stopped the task (%s)\n"
+        (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
+        (String.concat " <- " chain);
       exit_stopped
   | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported m -> Printf.eprintf "rapid-sem: %s\n" m; exit_unsupported
@@ -174,7 +216,8 @@ let common_run_args =
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
   let max_depth = Arg.(value & opt int M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
   let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
-  (files, entry, max_steps, allow_unknown, max_depth, retry_limit)
+  let max_memory = Arg.(value & opt int M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
+  (files, entry, max_steps, allow_unknown, max_depth, Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
 
 (* A run allocates frames that live as long as their routine: with deep recursion the live heap
    grows with the call depth, and the collector's default pace makes each step cost more the
@@ -188,7 +231,8 @@ let start_machine files entry allow_unknown max_depth retry_limit k =
   | Error f -> report_load_failure f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } loaded.program ~entry with
+      let retry_limit, max_memory = retry_limit in
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
@@ -198,18 +242,19 @@ let run_cmd =
   let run files entry max_steps allow_unknown max_depth retry_limit json =
     guard @@ fun () ->
     start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
-    if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+    if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
         List.iter (fun (e : M.event) ->
-            if json then print_endline (Yojson.Safe.to_string (event_json e))
-            else match e with Output s -> print_endline s | _ -> ()) events;
+            if json then print_line (Yojson.Safe.to_string (event_json e))
+            else match e with Output s -> print_line s | _ -> ()) events;
         loop ()
       end
     in
     loop ();
-    if json then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
+    if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
+    flush_output ();
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "run a task: check the modules, then execute the entry routine" in
@@ -217,31 +262,43 @@ let run_cmd =
     `S Manpage.s_description;
     `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the small-step semantics of doc/semantics.md. Standard output carries only the program's output, one line per TPWrite.";
     `S Manpage.s_exit_status;
-    `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
+    `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
 
-(* The text of a region, for the trace: its first line, cut at 60 characters. *)
+(* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
+   characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)
 let source_cache = Hashtbl.create 8
 let region_text r =
   match Source.file_of r with
   | None -> ""
   | Some f -> (
       let name = Source.name f in
-      let lines = match Hashtbl.find_opt source_cache name with
+      let lines, latin1 = match Hashtbl.find_opt source_cache name with
         | Some l -> l
         | None ->
             let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
-            Hashtbl.replace source_cache name l; l in
+            let latin1 = not (Array.for_all Rapid_semantics.Utf8_text.is_utf8 l) in
+            (* A byte-order mark is not a character of the module. *)
+            if (not latin1) && Array.length l > 0 && String.length l.(0) >= 3 && String.sub l.(0) 0 3 = "\xEF\xBB\xBF" then
+              l.(0) <- String.sub l.(0) 3 (String.length l.(0) - 3);
+            Hashtbl.replace source_cache name (l, latin1); (l, latin1) in
       let p = Source.start r and q = Source.stop r in
       if p.line < 1 || p.line > Array.length lines then ""
       else
-        let line = lines.(p.line - 1) in
-        let stop = if q.line = p.line then min (String.length line) (q.col - 1) else String.length line in
-        let start = min (String.length line) (p.col - 1) in
-        let text = String.trim (String.sub line start (max 0 (stop - start))) in
-        if String.length text > 60 then String.sub text 0 57 ^ "..." else text)
+        let chars = Rapid_semantics.Utf8_text.characters ~latin1 lines.(p.line - 1) in
+        let n = Array.length chars in
+        let stop = if q.line = p.line then max 0 (min n (q.col - 1)) else n in
+        let start = max 0 (min n (p.col - 1)) in
+        let piece = Array.sub chars start (max 0 (stop - start)) in
+        let is_blank c = c = " " || c = "\t" || c = "\r" || c = "\n" || c = "\012" in
+        let first = ref 0 and last = ref (Array.length piece) in
+        while !first < !last && is_blank piece.(!first) do incr first done;
+        while !last > !first && is_blank piece.(!last - 1) do decr last done;
+        let piece = Array.sub piece !first (!last - !first) in
+        if Array.length piece > 60 then String.concat "" (Array.to_list (Array.sub piece 0 57)) ^ "..."
+        else String.concat "" (Array.to_list piece))
 
 let trace_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
@@ -256,7 +313,7 @@ let trace_cmd =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
       n = 0 || go 0 in
-    if format = `Jsonl then print_endline (Yojson.Safe.to_string (`Assoc [ ("schema", `String schema); ("kind", `String "trace") ]));
+    if format = `Jsonl then print_line (Yojson.Safe.to_string (`Assoc [ ("schema", `String schema); ("kind", `String "trace") ]));
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
@@ -266,13 +323,13 @@ let trace_cmd =
         if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
           match format with
           | `Human ->
-              Printf.printf "%6d %-24s %s %-10s %s | %s\n" n rule (Source.to_string region) kind
-                (region_text region) (String.concat " " stack);
-              List.iter (function M.Output s -> Printf.printf "       > %s\n" s | _ -> ()) events
+              print_line (Printf.sprintf "%6d %-24s %s %-10s %s | %s" n rule (Source.to_string region) kind
+                (Rapid_semantics.Format.display (region_text region)) (String.concat " " stack));
+              List.iter (function M.Output s -> print_line (Printf.sprintf "       > %s" s) | _ -> ()) events
           | `Jsonl ->
-              print_endline (Yojson.Safe.to_string (`Assoc [
+              print_line (Yojson.Safe.to_string (`Assoc [
                   ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
-                  ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", `String (region_text region)) ]);
+                  ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", text (region_text region)) ]);
                   ("stack", `List (List.map (fun s -> `String s) stack));
                   ("events", `List (List.map event_json events)) ]))
         end;
@@ -280,8 +337,8 @@ let trace_cmd =
       end
     in
     loop ();
-    if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
-    else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
+    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
+    else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted m | Unsupported m | Stuck m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
@@ -315,6 +372,8 @@ let spec_cmd =
   Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose)
 
 let () =
+  (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)
+  Sys.set_signal Sys.sigpipe Sys.Signal_ignore;
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
   exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))

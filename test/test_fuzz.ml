@@ -643,6 +643,246 @@ let at_the_limit () =
   refused "max_nesting + 1 in statements and expressions" ~line:(n / 2 + 3)
     ~col:(String.length "x := " + (n - n / 2) + 1) (mixed (n - n / 2))
 
+(* ---------------------------------------------------------------- programs that run *)
+
+(* Random programs that pass the static semantics and then run: late-bound calls with arguments
+   that fit their procedure and arguments that do not (types, access modes, alternatives,
+   switches, conditional arguments), CallByVar, conditional arguments of mutually exclusive
+   alternatives, CONNECT through parameters, errors in ELSEIF conditions, functions without
+   RETURN, arrays too large for the memory budget. The property: a checked program never ends
+   stuck (exit status 125) nor with an OCaml exception. *)
+
+let run_module_header array_size = Printf.sprintf {|MODULE fz
+  RECORD point
+    num x;
+    num y;
+    num z;
+  ENDRECORD
+  CONST num c := 5;
+  VAR num v;
+  VAR dnum d;
+  PERS num pv := 0;
+  PERS intnum pirq := 0;
+  VAR string s := "p_num";
+  VAR num arr{%d};
+  VAR pos p;
+  VAR point pt;
+  VAR intnum irq1;
+  VAR intnum irq2;
+  VAR num k;
+  PROC p_num(num x)
+    v := x * 2;
+  ENDPROC
+  PROC p_dnum(dnum x)
+    d := x + 1;
+  ENDPROC
+  PROC p_var(VAR num x)
+    x := x + 1;
+  ENDPROC
+  PROC p_inout(INOUT num x)
+    x := 2;
+  ENDPROC
+  PROC p_pers(PERS num x)
+    x := 3;
+  ENDPROC
+  PROC p_pos(pos x)
+    p := x;
+    v := x.z + p.y;
+  ENDPROC
+  PROC p_point(point x)
+    pt := x;
+    v := x.z * 2;
+  ENDPROC
+  PROC p_opt(\num a | num b, \switch sw)
+    IF Present(a) v := a;
+    IF Present(b) v := b;
+  ENDPROC
+  PROC p_arr(num a{*})
+    v := Dim(a, 1) + a{1};
+  ENDPROC
+  PROC p_string(string x)
+    s := x + "";
+  ENDPROC
+  PROC p_alt(\switch on | switch off)
+    IF Present(on) v := 1;
+  ENDPROC
+  PROC pass_late(\num a, \num b)
+    %% "p_opt" %% \a ? a \b ? b;
+  ENDPROC
+  PROC pass_direct(\switch a, \switch b)
+    p_alt \on ? a \off ? b;
+  ENDPROC
+  PROC conn_var(VAR intnum t)
+    CONNECT t WITH tr;
+  ENDPROC
+  PROC conn_inout(INOUT intnum t)
+    CONNECT t WITH tr;
+  ENDPROC
+  PROC conn_local()
+    VAR intnum r;
+    conn_var r;
+  ENDPROC
+  PROC big_local()
+    VAR num big{%d};
+    big{1} := 1;
+  ENDPROC
+  PROC deep(num n)
+    IF n > 0 deep n - 1;
+    RAISE 5;
+  ERROR
+    IF n MOD 2 = 0 RAISE;
+    TRYNEXT;
+  ENDPROC
+  PROC cb1()
+    v := 1;
+  ENDPROC
+  PROC cb2(num x)
+    v := x;
+  ENDPROC
+  FUNC num f_noret(num x)
+    IF x > 0 RETURN x;
+  ENDFUNC
+  TRAP tr
+    v := 0;
+  ENDTRAP
+|} array_size array_size
+
+let late_names = [| "p_num"; "p_dnum"; "p_var"; "p_inout"; "p_pers"; "p_pos"; "p_point"; "p_opt";
+                    "p_arr"; "p_string"; "p_alt"; "pass_late"; "conn_var"; "conn_inout"; "big_local";
+                    "deep"; "cb1"; "f_noret"; "tr"; "no_such"; "fz:p_num"; "other:p_num"; "" |]
+
+let late_arguments = [| "v"; "c"; "5"; "2.5"; "4294967295"; "d"; "pv"; "p"; "pt"; "arr"; "[1,2,3]";
+                        "[1,2]"; "[[1,2],[3,4]]"; "s"; "\"txt\""; "\\a:=1"; "\\b:=2"; "\\sw"; "\\a";
+                        "TRUE"; "x:=v"; "y:=v"; "arr{1}"; "pt.x"; "k"; "irq1"; "pirq"; "1 + c";
+                        "f_noret(1)"; "-v" |]
+
+let run_statements = [|
+  (fun pick -> Printf.sprintf "%% \"%s\" %% %s;" (pick late_names)
+      (String.concat ", " (List.init (Random.int 4) (fun _ -> pick late_arguments))));
+  (fun pick ->
+     let a = pick late_arguments and b = pick late_arguments in
+     Printf.sprintf "%% \"%s\" %% %s%s%s;" (pick late_names) a (if b.[0] = '\\' then " " else ", ") b);
+  (fun pick -> Printf.sprintf "s := \"%s\";\n    %% s %% %s;" (pick late_names) (pick late_arguments));
+  (fun pick -> Printf.sprintf "CallByVar \"cb\", %s;" (pick [| "1"; "2"; "3"; "v" |]));
+  (fun pick -> pick [| "pass_late \\a:=1;"; "pass_late \\b:=2;"; "pass_late \\a:=1 \\b:=2;"; "pass_late;" |]);
+  (fun pick -> pick [| "pass_direct \\a;"; "pass_direct \\b;"; "pass_direct \\a \\b;"; "pass_direct;" |]);
+  (fun pick -> pick [| "conn_var irq1;"; "conn_var irq2;"; "conn_inout irq1;"; "conn_inout pirq;"; "conn_local;";
+                       "CONNECT irq2 WITH tr;" |]);
+  (fun pick -> pick [| "big_local;"; "arr{1} := 2;"; "p_arr arr;" |]);
+  (fun pick -> pick [| "v := f_noret(-1);"; "v := f_noret(1);" |]);
+  (fun pick -> Printf.sprintf "IF v = %s THEN\n      v := 1;\n    ELSEIF 1 / k > 0 THEN\n      v := 2;\n    ELSEIF v = 3 THEN\n      v := 3;\n    ENDIF"
+      (pick [| "1"; "2"; "0" |]));
+  (fun pick -> Printf.sprintf "deep %s;" (pick [| "0"; "3"; "8" |]));
+|]
+
+let random_program rand =
+  let pick a = a.(Random.State.int rand (Array.length a)) in
+  let array_size = pick [| 3; 10; 1000; 100_000_000 |] in
+  let statements = List.init (1 + Random.State.int rand 8) (fun _ -> (pick run_statements) pick) in
+  let handler = pick [| "TRYNEXT;"; "IF ERRNO = ERR_DIVZERO k := 1;\n    RETRY;"; "RETURN;"; "" |] in
+  run_module_header array_size
+  ^ "  PROC main()\n    " ^ String.concat "\n    " statements ^ "\n  ERROR\n    " ^ handler
+  ^ "\n  ENDPROC\nENDMODULE\n"
+
+let programs_run () =
+  let module M = Rapid_semantics.Machine in
+  let rand = Random.State.make [| 2026 |] in
+  Random.init 2026;
+  let checked = ref 0 and total = 200 in
+  for _ = 1 to total do
+    let text = random_program rand in
+    match Parse.parse_string ~name:file_name text with
+    | Error d -> Alcotest.failf "a generated program does not parse: %s\n%s" (Diagnostic.to_string d) text
+    | Ok m -> (
+        match Rapid_semantics.Session.load_modules [ m ] with
+        | Error _ -> ()
+        | Ok loaded -> (
+            incr checked;
+            let limits = { M.default_limits with max_memory = 1_000_000 } in
+            match M.start ~limits loaded.program ~entry:"main" with
+            | Error e -> Alcotest.failf "cannot start: %s\n%s" e text
+            | Ok cfg ->
+                (try
+                   while M.outcome cfg = Running && M.steps cfg < 200_000 do ignore (M.step cfg) done
+                 with e -> Alcotest.failf "exception %s running\n%s" (Printexc.to_string e) text);
+                match M.outcome cfg with
+                | Stuck m -> Alcotest.failf "stuck (%s) after %d steps:\n%s" m (M.steps cfg) text
+                | o -> if Sys.getenv_opt "FUZZ_STATS" <> None then prerr_endline (match o with
+                    | Stopped { name; _ } -> "stopped " ^ name | Ended -> "ended" | Resource_exhausted m -> "exhausted " ^ m
+                    | Running -> "running" | Unsupported m -> "unsupported " ^ m | Stuck _ -> "")))
+  done;
+  (* The generator is meant to make checked programs: the property must not hold vacuously. *)
+  if !checked < total * 9 / 10 then Alcotest.failf "only %d of %d generated programs pass the check" !checked total
+
+(* Raising and handling an error costs O(1) at any call depth: a recursion through error
+   handlers down to the depth limit takes well under a second and a few MB (it took minutes and
+   more than a GB when each error copied the call chain). *)
+let recursion_through_handlers () =
+  let module M = Rapid_semantics.Machine in
+  let text = "MODULE r\n  PROC dive(num n)\n    RAISE 1;\n  ERROR\n    dive n + 1;\n  ENDPROC\n  PROC main()\n    dive 1;\n  ENDPROC\nENDMODULE\n" in
+  match Parse.parse_string ~name:file_name text with
+  | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
+  | Ok m -> (
+      match Rapid_semantics.Session.load_modules [ m ] with
+      | Error _ -> Alcotest.fail "the program does not pass the check"
+      | Ok loaded -> (
+          match M.start loaded.program ~entry:"main" with
+          | Error e -> Alcotest.fail e
+          | Ok cfg ->
+              Gc.compact ();
+              let heap_before = (Gc.quick_stat ()).heap_words in
+              let t0 = Unix.gettimeofday () in
+              while M.outcome cfg = Running do ignore (M.step cfg) done;
+              let seconds = Unix.gettimeofday () -. t0 in
+              let grown = ((Gc.quick_stat ()).heap_words - heap_before) * (Sys.word_size / 8) in
+              (match M.outcome cfg with
+               | Resource_exhausted _ -> ()
+               | _ -> Alcotest.fail "expected the call-depth limit");
+              if seconds > 2.0 then Alcotest.failf "%.2f s to reach the depth limit" seconds;
+              if grown > 8 * 1024 * 1024 then Alcotest.failf "the heap grew by %d bytes" grown))
+
+(* JSON text is valid UTF-8 whatever the bytes (doc/trace-format.md, "Text"): valid UTF-8 is kept,
+   any other byte becomes its Latin-1 character. *)
+let json_text () =
+  let module U = Rapid_semantics.Utf8_text in
+  let valid = [ ""; "abc"; "café"; "é😀"; "\xEF\xBB\xBF"; "\xF4\x8F\xBF\xBF" ] in
+  List.iter (fun s -> Alcotest.(check string) "valid UTF-8 is kept" s (U.of_bytes s)) valid;
+  List.iter (fun (s, expected) -> Alcotest.(check string) (Printf.sprintf "%S" s) expected (U.of_bytes s))
+    [ ("caf\xE9", "café"); ("\xC3", "Ã"); ("\xED\xA0\x80", "í\xC2\xA0\xC2\x80"); ("\xC0\xAF", "À¯");
+      ("\xF5", "õ"); ("a\x80b", "a\xC2\x80b") ];
+  let rand = Random.State.make [| 8 |] in
+  for _ = 1 to 2000 do
+    let s = String.init (Random.State.int rand 40) (fun _ -> Char.chr (Random.State.int rand 256)) in
+    let u = U.of_bytes s in
+    if not (U.is_utf8 u) then Alcotest.failf "%S gave %S, not UTF-8" s u;
+    if U.of_bytes u <> u then Alcotest.failf "%S: not idempotent" s;
+    let chars = U.characters ~latin1:true s in
+    if Array.length chars <> String.length s || String.concat "" (Array.to_list chars) <> U.of_bytes (String.concat "" (List.map (fun c -> U.of_bytes (String.make 1 c)) (List.init (String.length s) (String.get s)))) then
+      Alcotest.failf "%S: Latin-1 characters" s
+  done
+
+(* A closed pipe on standard output ends rapid-sem with exit status 141, quietly. *)
+let closed_output () =
+  let dir = Filename.get_temp_dir_name () in
+  let file = Filename.concat dir "rapid-sem-fuzz-lines.mod" and status = Filename.concat dir "rapid-sem-fuzz-status" in
+  let oc = open_out_bin file in
+  output_string oc "MODULE lines\n  PROC main()\n    FOR i FROM 1 TO 100000 DO\n      TPWrite \"line \" \\Num:=i;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+  close_out oc;
+  let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe" in
+  List.iter (fun args ->
+      let command = Printf.sprintf "(%s %s %s 2>%s.err; echo $? > %s) | head -1 > /dev/null"
+          (Filename.quote binary) args (Filename.quote file) (Filename.quote status) (Filename.quote status) in
+      ignore (Sys.command command);
+      let ic = open_in status in
+      let code = String.trim (input_line ic) in
+      close_in ic;
+      let ic = open_in (status ^ ".err") in
+      let err = really_input_string ic (in_channel_length ic) in
+      close_in ic;
+      Alcotest.(check string) (args ^ ": exit status") "141" code;
+      Alcotest.(check string) (args ^ ": standard error") "" err)
+    [ "run"; "run --json"; "trace"; "trace --format jsonl" ]
+
 let suite =
   ( "fuzz",
     List.map (fun (name, speed, f) -> Alcotest.test_case name speed f) [
@@ -655,4 +895,8 @@ let suite =
       ("deep nesting and long lists", `Quick, deep_nesting);
       ("deep input never closed", `Quick, unclosed);
       ("nesting at the limit (§1.4)", `Quick, at_the_limit);
+      ("checked programs never get stuck", `Quick, programs_run);
+      ("a closed standard output", `Quick, closed_output);
+      ("JSON text is UTF-8", `Quick, json_text);
+      ("recursion through error handlers (O(1) errors)", `Quick, recursion_through_handlers);
     ] )

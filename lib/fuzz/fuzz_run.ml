@@ -39,8 +39,9 @@ let outcome_text (o : M.outcome) =
   match o with
   | Running -> "running"
   | Ended -> "ended"
-  | Stopped { name; number; at; chain } ->
-      Printf.sprintf "stopped %s %d %s [%s]" name number (place at) (String.concat " " chain)
+  | Stopped { name; number; at; chain; about } ->
+      Printf.sprintf "stopped %s %d %s [%s]%s" name number (place at) (String.concat " " chain)
+        (match about with Some a -> " about " ^ a | None -> "")
   | Resource_exhausted m -> "exhausted " ^ m
   | Unsupported m -> "unsupported " ^ m
   | Stuck m -> "stuck " ^ m

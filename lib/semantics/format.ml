@@ -112,6 +112,16 @@ let string_literal s =
   Buffer.add_char b '"';
   Buffer.contents b
 
+let display s =
+  if not (String.exists (fun c -> Char.code c < 32 || Char.code c = 127) s) then s
+  else begin
+    let b = Buffer.create (String.length s + 8) in
+    String.iter (fun c ->
+        if Char.code c < 32 || Char.code c = 127 then Buffer.add_string b (Printf.sprintf "\\%02X" (Char.code c))
+        else Buffer.add_char b c) s;
+    Buffer.contents b
+  end
+
 let rec value_text (v : Value.t) =
   match v with
   | Num x -> num_text x

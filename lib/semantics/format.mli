@@ -31,6 +31,11 @@ val string_literal : string -> string
 (** A string as a RAPID string literal (§2.7): in double quotes, with [""] for a quote, [\\]
     for a backslash and [\hh] for control characters (codes below 32, and 127). *)
 
+val display : string -> string
+(** A line as the pendant shows it: a control character (codes below 32, and 127) as a
+    backslash and its code in two upper-case hex digits, as RAPID writes character codes in
+    string literals (§2.7): ["a\rb"] shows as [a\0Db]. Other bytes are unchanged. *)
+
 val value_text : Value.t -> string
 (** ValToStr without the length check: numbers as {!num_text} and {!dnum_text}, [TRUE],
     [FALSE], strings as {!string_literal}, records and arrays as [[a,b,c]] without spaces.

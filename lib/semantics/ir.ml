@@ -32,6 +32,8 @@ and expr_desc =
   | Aggregate of expr array * aggregate_kind
   | Call of call                             (* a function call, §3.11 *)
   | Placeholder                              (* <EXP>: executing it is ERR_EXECPHR (§2.9) *)
+  | Fitted of expr * Value.shape             (* an aggregate argument of a late-bound call: it
+                                                takes its parameter's type if it fits (§3.10) *)
 
 and aggregate_kind = Record_value | Array_value
 
@@ -72,6 +74,8 @@ and stmt_desc =
   | Trynext
   | Connect of place * int                   (* the trap's routine index *)
   | If of expr * block * block
+  | Elseif of expr * block * block           (* an ELSEIF clause: part of its IF statement, which
+                                                RETRY and TRYNEXT refer to (§4.13, §4.16) *)
   | Compact_if of expr * stmt                (* one statement with its condition (§4.17) *)
   | For of for_loop
   | While of expr * block
@@ -92,14 +96,27 @@ and for_loop = {
 
 and late_argument = {
   late_name : string option;                 (* for optional and named arguments *)
+  late_optional : bool;                      (* written \name: an optional, switch or conditional
+                                                argument, bound by name (§3.11) *)
   late_value : late_value;
   late_kind : reference_kind;                (* what a data reference argument denotes *)
+  late_type : late_type;                     (* what the call's parameter must be (§5.2) *)
+  late_read_only : bool;                     (* a loop variable, ERRNO, INTNO (§5.2 table, i) *)
 }
 
 and late_value =
   | Late_expr of expr
   | Late_switch
-  | Late_reference of place
+  | Late_conditional of slot option          (* \p ? x: x's slot, [None] for an unknown name *)
+
+(* The static type of a late-bound argument, which the binding compares with the parameter's
+   when the call runs (§3.11, §5.2: equal types). *)
+and late_type =
+  | Late_typed of Rapid_typing.Types.object_type
+  | Late_numeric of expr                     (* a numeric literal expression: its dnum reading,
+                                                for a dnum parameter (§2.5, R-2.5-b) *)
+  | Late_untyped                             (* an aggregate (typed by its parameter, §3.10), or
+                                                a name neither declared nor installed *)
 
 type routine_kind = Procedure | Function | Trap
 
@@ -108,7 +125,10 @@ type parameter = {
   p_mode : Rapid_typing.Tables.access_mode;
   p_optional : bool;
   p_switch : bool;
-  p_default : Value.t;                       (* shape of an absent parameter's type *)
+  p_default : Value.shape;                   (* shape of an absent parameter's type *)
+  p_type : Rapid_typing.Types.object_type option;  (* [None] for a switch *)
+  p_group : int;                             (* optional parameters: the alternatives of one
+                                                slot share it (§5.2); -1 for a required one *)
 }
 
 (* An error number of an error recovery point (§7.2): a literal, or a data object read when the
@@ -139,13 +159,14 @@ type routine = {
 
 (* The initial value of a data object: a constant expression, or the type's initial value
    (§2.22, §2.23). *)
-and init = Init_expr of expr | Init_default of Value.t
+and init = Init_expr of expr | Init_default of Value.shape
 
 type global = {
   g_name : string;
   g_module : string;
   g_init : init;
   g_read_only : bool;                        (* ERRNO, INTNO (ch. 12) *)
+  g_at : region;                             (* its declaration, for a memory budget exceeded *)
 }
 
 type program = {

@@ -1,6 +1,27 @@
 (** The arguments of a late-bound procedure call (§4.6, §5.4 "后期绑定") bound to the parameters of
-    the procedure its name denotes when the call runs. *)
+    the procedure its name denotes when the call runs. "The general rules for the argument list
+    of a procedure call are exactly those of a function call" (§4.6): what a direct call checks
+    statically (§3.11, §5.2), the binding checks here. *)
 
-val bind : Ir.routine -> Ir.late_argument array -> Ir.argument array option
-(** Required arguments in order (a named one must name the parameter in its place), optional
-    and switch arguments by name; [None] when they do not fit the procedure (ERR_CALLPROC). *)
+val bind :
+  Ir.routine ->
+  kind:(Ir.place -> Ir.reference_kind -> Ir.reference_kind) ->
+  Ir.late_argument array ->
+  (Ir.argument array, string) result
+(** Required arguments in order (a named one must name the parameter in its place), optional,
+    switch and conditional arguments by name. [kind] tells what a data reference denotes at
+    run time (a parameter passes on what it is bound to, §5.2).
+
+    [Error "ERR_CALLPROC"] when the arguments do not fit the procedure: too many or too few, a
+    name that is not the parameter's, an optional argument given twice or two alternatives of
+    one optional parameter both given (§5.2), a switch for a parameter that is not one or the
+    reverse, a conditional argument for a required parameter, a type that is not the
+    parameter's (§3.11: equal types; a numeric literal is num or dnum as its parameter is,
+    R-2.5-b; an aggregate must fit the parameter's type, checked when its value is known), an
+    object of a non-value type for an in, PERS or INOUT parameter or of a semi-value type for a
+    PERS or INOUT one (§2.16).
+    [Error "ERR_ARGNOTVAR"] when a VAR or INOUT parameter gets something other than a variable
+    (a constant, a read-only variable, a persistent for VAR, any other expression), and
+    [Error "ERR_ARGNOTPER"] when a PERS parameter gets something other than a persistent: the
+    "-" cells of the access-mode table of §5.2, with the errors chapter 12 names for them
+    (doc/rulings.md R-4.6-b). *)

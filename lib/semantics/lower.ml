@@ -31,10 +31,11 @@ let slot_of ctx (d : Env.data_object) : Ir.slot option =
   | Module_level _ | Installed_level ->
       Option.map (fun i -> Ir.Global i) (Hashtbl.find_opt ctx.global_index d.d_region)
 
+(* The shape only: the value is built when the machine runs, within its memory budget. *)
 let shape_default (t : Types.object_type) =
   match Value.shape_of_type t with
-  | shape -> Value.default_of shape
-  | exception Invalid_argument _ -> Value.Bool false
+  | shape -> shape
+  | exception Invalid_argument _ -> Value.S_bool
 
 (* ------------------------------------------------------------------ expressions *)
 
@@ -154,6 +155,15 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
 and parameters_of (r : Env.routine) =
   List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
 
+(* A loop variable, ERRNO or INTNO: a read-only variable of the access-mode table (§5.2). *)
+and read_only ctx (e : A.expression) =
+  match e.it with
+  | Data_reference r -> (
+      match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
+      | Some (Data { d_kind = Loop_variable | Read_only_variable; _ }) -> true
+      | _ -> false)
+  | _ -> false
+
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
@@ -222,21 +232,32 @@ and statement ctx (s : A.statement) : Ir.stmt =
       let args = A.arguments args regions in
       let late (a : A.argument) : Ir.late_argument =
         let name (i : A.identifier) = match i.it with Ident n -> Some n | ID_placeholder -> None in
+        (* §4.6, §5.2: the type the checker found, compared with the parameter's when the call
+           runs; a numeric literal expression is lowered both ways (R-2.5-b). *)
+        let typed (e : A.expression) : Ir.late_type =
+          match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+          | Some (Some t) -> Late_typed t
+          | Some None -> Late_numeric (expr ctx ~dnum:true e)
+          | None -> Late_untyped in
+        let value n (e : A.expression) : Ir.late_argument =
+          { late_name = n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e;
+            late_type = typed e; late_read_only = read_only ctx e; late_optional = false } in
         match a.it with
-        | Required_argument (n, e, at) ->
-            let e = A.operand e at in
-            { late_name = Option.bind n name; late_value = Late_expr (expr ctx ~dnum:false e);
-              late_kind = reference_kind ctx e }
-        | Positional_argument e ->
-            let e = A.operand e a.at in
-            { late_name = None; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
-        | Optional_argument (n, None) -> { late_name = name n; late_value = Late_switch; late_kind = Ref_other }
-        | Optional_argument (n, Some e) ->
-            { late_name = name n; late_value = Late_expr (expr ctx ~dnum:false e); late_kind = reference_kind ctx e }
+        | Required_argument (n, e, at) -> value (Option.bind n name) (A.operand e at)
+        | Positional_argument e -> value None (A.operand e a.at)
+        | Optional_argument (n, None) ->
+            { late_name = name n; late_value = Late_switch; late_kind = Ref_other; late_type = Late_untyped;
+              late_read_only = false; late_optional = true }
+        | Optional_argument (n, Some e) -> { (value (name n) e) with late_optional = true }
         | Conditional_argument (n, r) ->
-            { late_name = name n; late_value = Late_reference (place ctx r); late_kind = Ref_variable }
+            let slot = match place ctx r with Whole s -> Some s | _ -> None in
+            let late_type = match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+              | Some (Some t) -> Ir.Late_typed t | _ -> Late_untyped in
+            { late_name = name n; late_value = Late_conditional slot; late_kind = Ref_variable; late_type;
+              late_read_only = false; late_optional = true }
         | ARG_placeholder ->
-            { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other }
+            { late_name = None; late_value = Late_expr { e = Placeholder; at = a.at }; late_kind = Ref_other;
+              late_type = Late_untyped; late_read_only = false; late_optional = false }
       in
       make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (
@@ -264,7 +285,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
       let rec chain = function
         | [] -> (match i.else_branch with Some l -> block ctx l | None -> block ctx [])
         | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest ->
-            let inner = { Ir.s = Ir.If (expr ctx ~dnum:false c, block ctx l, chain rest); sat = at } in
+            let inner = { Ir.s = Ir.Elseif (expr ctx ~dnum:false c, block ctx l, chain rest); sat = at } in
             { id = new_block ctx; body = [| inner |] }
         | { it = EIT_placeholder; at } :: _ ->
             { id = new_block ctx; body = [| { s = Placeholder_statement; sat = at } |] }
@@ -310,10 +331,18 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         ctx.local_count <- List.length params;
         let optional p = List.exists (function
             | Env.Optional_slot ps -> List.memq p ps | Env.Required_slot _ -> false) r.r_slots in
+        (* §5.2: the alternatives of one optional slot are mutually exclusive. *)
+        let group p =
+          let rec find k = function
+            | [] -> -1
+            | Env.Optional_slot ps :: _ when List.memq p ps -> k
+            | _ :: rest -> find (k + 1) rest in
+          find 0 r.r_slots in
         let parameters = Array.of_list (List.map (fun (p : Env.parameter) ->
             { Ir.p_name = p.p_name; p_mode = p.p_mode; p_optional = optional p;
               p_switch = p.p_type = None;
-              p_default = (match p.p_type with Some t -> shape_default t | None -> Value.Bool false) })
+              p_default = (match p.p_type with Some t -> shape_default t | None -> Value.S_bool);
+              p_type = p.p_type; p_group = group p })
             params) in
         let inits = List.filter_map (fun (d : A.data_declaration) ->
             match d.it with
@@ -388,7 +417,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region i) global_decls;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
       { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
-        g_read_only = obj.d_kind = Read_only_variable }) global_decls in
+        g_read_only = obj.d_kind = Read_only_variable; g_at = obj.d_region }) global_decls in
   let routines = map_long (fun (m, inst, r, _) ->
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r -> r

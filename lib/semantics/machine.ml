@@ -10,8 +10,11 @@ module V = Value
 type loc = { box : V.t array; idx : int }
 
 (* An error in flight: [chain] is the call chain where it occurred, innermost first, which the
-   system error handler reports even after the error has been propagated. *)
-type err = { name : string; number : int; err_at : Source.region; searched : bool; chain : string list }
+   system error handler reports even after the error has been propagated: computed only then,
+   so that raising an error costs O(1) at any call depth. [about] is the name the error is
+   about (the unknown data object or routine, the function without RETURN). *)
+type err = { name : string; number : int; err_at : Source.region; searched : bool;
+             chain : string list Lazy.t; about : string option }
 
 type event =
   | Output of string
@@ -27,21 +30,25 @@ type event =
 type outcome =
   | Running
   | Ended
-  | Stopped of { name : string; number : int; at : Source.region; chain : string list }
+  | Stopped of { name : string; number : int; at : Source.region; chain : string list;
+                 about : string option }
   | Resource_exhausted of string
   | Unsupported of string
   | Stuck of string
 
-type limits = { max_call_depth : int; retry_limit : int }
+type limits = { max_call_depth : int; retry_limit : int; max_memory : int }
 
-let default_limits = { max_call_depth = 10_000; retry_limit = 4 }
+let default_limits = { max_call_depth = 10_000; retry_limit = 4; max_memory = 256 * 1024 * 1024 }
 
 type activation = {
   routine : Ir.routine;
   slots : loc array;
   present : bool array;                 (* per parameter *)
   kinds : Ir.reference_kind array;      (* per parameter: what an alias parameter denotes *)
+  module_data : bool array;             (* per parameter: the alias denotes module data (§4.15) *)
   caller : activation option;
+  recovery_up : activation option;      (* the nearest caller with an error recovery point (§7.2) *)
+  mutable memory : int;                 (* bytes of RAPID data this activation holds *)
   return_to : frame list;               (* the caller's stack at the call *)
   caller_mark : frame list;
   call_depth : int;
@@ -78,7 +85,8 @@ and frame =
   | K_test_value of V.t * (Ir.expr array * Ir.block) array * Ir.block * int * int
   | K_return_value
   | K_raise_value
-  | K_connect_target of int
+  | K_connect_target of int * Ir.place
+  | K_fit of Value.shape                (* an aggregate argument takes its parameter's type *)
   | K_late_name of Ir.late_argument array * Source.region
   | K_read
   | K_unary of Arith.unary * Source.region
@@ -103,6 +111,8 @@ and call_state = {
   args_slots : loc array;
   args_present : bool array;
   args_kinds : Ir.reference_kind array;
+  args_module_data : bool array;
+  mutable args_memory : int;            (* bytes of the in arguments' copies *)
   primitive_args : Primitive.argument array;
   mutable next : int;
   by_value : bool;                      (* waiting for a value (true) or a location (false) *)
@@ -131,6 +141,8 @@ type config = {
   mutable count : int;
   mutable booked : int;                 (* BookErrNo *)
   mutable interrupt_numbers : int;      (* CONNECT *)
+  mutable memory : int;                 (* bytes of RAPID data: module data and activations *)
+  by_name : (string, int list) Hashtbl.t;  (* routines by lower-case name, for late binding *)
   (* Later issues: execution levels and the interrupt queue, the motion queue, other tasks. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   mutable level : [ `Normal | `Trap | `User ];
@@ -144,12 +156,13 @@ let set l v = Array.unsafe_set l.box l.idx (V.copy v)
 let error_number cfg name =
   match List.assoc_opt name cfg.program.error_numbers with Some n -> n | None -> 0
 
-let rec call_chain = function
-  | None -> []
-  | Some a -> a.routine.Ir.name :: call_chain a.caller
+let call_chain act =
+  let rec go acc = function None -> List.rev acc | Some a -> go (a.routine.Ir.name :: acc) a.caller in
+  go [] (Some act)
 
-let error cfg name at =
-  { name; number = error_number cfg name; err_at = at; searched = false; chain = call_chain (Some cfg.act) }
+let error ?about cfg name at =
+  let act = cfg.act in
+  { name; number = error_number cfg name; err_at = at; searched = false; chain = lazy (call_chain act); about }
 
 (* The name the system error handler reports: an ERR_ constant's name, or a user error's
    number. *)
@@ -159,40 +172,73 @@ let error_of_number cfg n at =
     | Some (name, _) -> name
     | None -> string_of_int n
   in
-  { name; number = n; err_at = at; searched = false; chain = call_chain (Some cfg.act) }
+  let act = cfg.act in
+  { name; number = n; err_at = at; searched = false; chain = lazy (call_chain act); about = None }
 
 let region_of_focus_stmt cfg =
   match cfg.mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> cfg.act.routine.at
 
-let raise_ cfg name = cfg.focus <- F_raise (error cfg name (region_of_focus_stmt cfg))
+let raise_ ?about cfg name = cfg.focus <- F_raise (error ?about cfg name (region_of_focus_stmt cfg))
 
 let push cfg f = cfg.stack <- f :: cfg.stack
 
 (* ------------------------------------------------------------------ start *)
 
-let routine_index program name =
-  let rec find i =
-    if i >= Array.length program.Ir.routines then None
-    else if String.lowercase_ascii program.routines.(i).name = String.lowercase_ascii name then Some i
-    else find (i + 1)
-  in
-  find 0
+(* Routines by lower-case name, built once: a late-bound call looks its name up in O(1). *)
+let routines_by_name (program : Ir.program) =
+  let t = Hashtbl.create (2 * Array.length program.routines + 1) in
+  for i = Array.length program.routines - 1 downto 0 do
+    let key = String.lowercase_ascii program.routines.(i).name in
+    Hashtbl.replace t key (i :: Option.value (Hashtbl.find_opt t key) ~default:[])
+  done;
+  t
 
-let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
-  { routine; slots; present; kinds; caller; return_to; caller_mark;
+let routine_index_in by_name name =
+  match Hashtbl.find_opt by_name (String.lowercase_ascii name) with Some (i :: _) -> Some i | _ -> None
+
+let has_recovery_point (a : activation) =
+  match a.routine.error with Some { recovery = Some _; _ } -> true | _ -> false
+
+let activation ~routine ~slots ~present ~kinds ~module_data ~caller ~return_to ~caller_mark =
+  { routine; slots; present; kinds; module_data; caller; return_to; caller_mark;
     call_depth = (match caller with None -> 1 | Some c -> c.call_depth + 1);
-    handling = Body; retries = 0; retried = None }
+    recovery_up = (match caller with
+        | Some c when has_recovery_point c -> Some c
+        | Some c -> c.recovery_up
+        | None -> None);
+    memory = 0; handling = Body; retries = 0; retried = None }
+
+let memory_exhausted cfg what at =
+  Resource_exhausted
+    (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
+       (Source.to_string at) what cfg.limits.max_memory)
+
+(* Charges [bytes] of RAPID data to the activation, or says the budget does not hold them. *)
+let charge cfg (act : activation) bytes =
+  if bytes > cfg.limits.max_memory - cfg.memory then false
+  else (cfg.memory <- cfg.memory + bytes; act.memory <- act.memory + bytes; true)
+
+let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
 
 let start ?(limits = default_limits) (program : Ir.program) ~entry =
-  match routine_index program entry with
+  let by_name = routines_by_name program in
+  match routine_index_in by_name entry with
   | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
   | Some i ->
       let routine = program.routines.(i) in
       if routine.kind <> Procedure || Array.length routine.parameters > 0 then
         Error (Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" entry)
       else begin
+        (* §2.21: module data first takes its type's initial value, within the memory budget. *)
+        let memory = ref 0 in
+        let too_big = ref None in
         let globals = Array.map (fun (g : Ir.global) ->
-            fresh_loc (match g.g_init with Init_default v -> V.copy v | Init_expr _ -> V.Bool false))
+            match g.g_init with
+            | Init_default shape when !too_big = None ->
+                let bytes = V.shape_bytes shape in
+                if bytes > limits.max_memory - !memory then (too_big := Some g; fresh_loc (V.Bool false))
+                else (memory := !memory + bytes; fresh_loc (V.default_of shape))
+            | _ -> fresh_loc (V.Bool false))
             program.globals in
         (* §2.21: module data is static, initialised when its module is loaded, before the task
            runs: constant and literal expressions (§3.2, §3.3), evaluated here, not as steps. *)
@@ -214,7 +260,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
                       | Error m, _ | _, Error m -> Error m
                       | _ -> Error "ERR_OUTOFBND") (Ok v) idx
               | Error m -> Error m)
-          | Read _ | Read_signal _ | Call _ | Placeholder | And _ | Or _ -> Error "ERR_EXECPHR"
+          | Read _ | Read_signal _ | Call _ | Placeholder | And _ | Or _ | Fitted _ -> Error "ERR_EXECPHR"
           | Unary (op, a) -> Result.bind (eval a) (Arith.unary op)
           | Binary (op, a, b) -> Result.bind (eval a) (fun x -> Result.bind (eval b) (Arith.binary op x))
           | Aggregate (es, kind) ->
@@ -228,27 +274,34 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
         let failed = ref None in
         Array.iteri (fun i (g : Ir.global) ->
             match g.g_init with
-            | Init_expr e when !failed = None -> (
+            | Init_expr e when !failed = None && !too_big = None -> (
                 match eval e with
-                | Ok v -> set globals.(i) v
+                | Ok v -> memory := !memory + V.bytes v; set globals.(i) v
                 | Error name -> failed := Some (Printf.sprintf "the initial value of %s: %s" g.g_name name))
             | _ -> ()) program.globals;
         match !failed with
         | Some m -> Error m
         | None ->
         let slots = Array.init routine.locals (fun _ -> fresh_loc (V.Bool false)) in
-        let act = activation ~routine ~slots ~present:[||] ~kinds:[||] ~caller:None
+        let act = activation ~routine ~slots ~present:[||] ~kinds:[||] ~module_data:[||] ~caller:None
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; interrupt_numbers = 0; unmarked = false; level = `Normal;
-          interrupt_queue = Queue.create ();
+          count = 0; booked = 0; interrupt_numbers = 0; memory = !memory; by_name;
+          unmarked = false; level = `Normal; interrupt_queue = Queue.create ();
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
+        (match !too_big with
+         | Some g -> cfg.focus <- F_done (memory_exhausted cfg ("the initial value of " ^ g.g_name) g.g_at)
+         | None -> ());
         Ok cfg
       end
 
 (* ------------------------------------------------------------------ calls *)
+
+(* What an activation costs by the model of Value.bytes, besides its data: a record, its frames
+   and one slot per parameter and routine data object. *)
+let activation_bytes (r : Ir.routine) = 256 + 16 * r.locals
 
 let enter_routine cfg (cs : call_state) =
   let r = cs.callee in
@@ -258,12 +311,20 @@ let enter_routine cfg (cs : call_state) =
                            (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" cfg.limits.max_call_depth));
     ("call-depth-exceeded", [])
   end
+  else if activation_bytes r > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin
+    (* The activation itself counts: a very deep recursion stays within the budget too. *)
+    cfg.focus <- F_done (memory_exhausted cfg ("the call of " ^ r.name) (region_of_focus_stmt cfg));
+    ("memory-exhausted", [])
+  end
   else begin
     let slots = Array.make r.locals { box = [||]; idx = 0 } in
     Array.blit cs.args_slots 0 slots 0 (Array.length cs.args_slots);
     for i = Array.length cs.args_slots to r.locals - 1 do slots.(i) <- fresh_loc (V.Bool false) done;
     let act = activation ~routine:r ~slots ~present:cs.args_present ~kinds:cs.args_kinds
-        ~caller:(Some cfg.act) ~return_to:cfg.stack ~caller_mark:cfg.mark in
+        ~module_data:cs.args_module_data ~caller:(Some cfg.act) ~return_to:cfg.stack ~caller_mark:cfg.mark in
+    (* The in arguments' copies were checked against the budget when they were made. *)
+    act.memory <- cs.args_memory + activation_bytes r;
+    cfg.memory <- cfg.memory + act.memory;
     cfg.act <- act;
     (* Routine data is fresh for every call (§2.21): initialised, then the body runs. *)
     cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
@@ -279,6 +340,7 @@ let return_from cfg value =
       cfg.focus <- F_done Ended;
       ("return-entry", [ Routine_left act.routine.name; Task_ended ])
   | Some caller ->
+      release cfg act;
       cfg.act <- caller;
       cfg.stack <- act.return_to;
       cfg.mark <- act.caller_mark;
@@ -300,7 +362,8 @@ let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
   | _ -> k
 
 let primitive_context cfg events : Primitive.context = {
-  output = (fun line -> events := Output line :: !events);
+  (* The pendant shows a control character as its character code (Format.display). *)
+  output = (fun line -> events := Output (Format.display line) :: !events);
   erase = (fun () -> events := Erase :: !events);
   log = (fun line -> events := Log line :: !events);
   book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
@@ -308,6 +371,28 @@ let primitive_context cfg events : Primitive.context = {
 }
 
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
+
+(* The routine a late-bound name denotes (§4.6): "name1:name2" the routine name2 of module
+   name1 (a LOCAL one too); a plain name by the scope rules of §5.3 from the calling module: its
+   own routines, then the global ones. The routines of a name come from a table built once, so
+   the look-up is O(1) in the size of the program. *)
+let late_routine cfg name =
+  let module_name, routine_name =
+    match String.index_opt name ':' with
+    | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
+    | None -> (None, name)
+  in
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let here = cfg.act.routine.module_name in
+  let candidates =
+    Option.value (Hashtbl.find_opt cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
+  let find pred = List.find_opt (fun i -> pred cfg.program.routines.(i)) candidates in
+  match module_name with
+  | Some m -> find (fun (r : Ir.routine) -> same r.module_name m)
+  | None -> (
+      match find (fun (r : Ir.routine) -> same r.module_name here) with
+      | Some i -> Some i
+      | None -> find (fun (r : Ir.routine) -> not r.local))
 
 let call_primitive cfg (cs : call_state) name =
   let events = ref [] in
@@ -322,12 +407,14 @@ let call_primitive cfg (cs : call_state) name =
   | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
   | Primitive.Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
-      match routine_index cfg.program target with
-      | None -> raise_ cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
+      match late_routine cfg target with
+      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
+      | Some i when cfg.program.routines.(i).kind <> Procedure ->
+          raise_ ~about:target cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
       | Some i -> (
-          match Late_binding.bind cfg.program.routines.(i) [||] with
-          | None -> raise_ cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
-          | Some arguments ->
+          match Late_binding.bind cfg.program.routines.(i) ~kind:(reference_kind cfg) [||] with
+          | Error name -> raise_ ~about:target cfg name; ("call-by-var-mismatch", List.rev !events)
+          | Ok arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
               ignore rule; ("call-by-var", List.rev !events)))
   | Primitive.Not_modelled ->
@@ -337,17 +424,49 @@ let call_primitive cfg (cs : call_state) name =
 
 let begin_call cfg (call : Ir.call) =
   match call.callee with
-  | Unknown_routine _ -> raise_ cfg "ERR_REFUNKPRC"; "call-unknown"
+  | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKPRC"; "call-unknown"
   | Routine i ->
       let callee = cfg.program.routines.(i) in
       let n = Array.length callee.parameters in
       push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                          args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
+                         args_module_data = Array.make n false; args_memory = 0;
                          primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
       cfg.focus <- F_next;
       "call-arguments"
 
 let () = begin_call_ref := begin_call
+
+(* Does the place denote module data (a module variable), seen through the parameters it goes
+   through? CONNECT needs it (§4.15). *)
+let denotes_module_data cfg (p : Ir.place) =
+  let rec root = function
+    | Ir.Whole s -> Some s
+    | Element (p, _) | Component (p, _) -> root p
+    | Unresolved _ -> None
+  in
+  match root p with
+  | Some (Global _) -> true
+  | Some (Local i) -> i < Array.length cfg.act.module_data && cfg.act.module_data.(i)
+  | None -> false
+
+(* §3.11, §5.2: of mutually exclusive optional parameters at most one is present; two made
+   present by conditional arguments is ERR_ARGDUPCND (ch. 12). The alternatives of one
+   optional parameter stand together in the parameter list. *)
+let duplicate_alternative cfg (cs : call_state) i =
+  let params = cs.callee.parameters in
+  let g = params.(i).p_group in
+  g >= 0
+  && (let present j =
+        cs.args_present.(j)
+        || (match cs.call.arguments.(j) with
+            | Present_switch | By_value _ | By_reference _ -> true
+            | Pass_on (Local k) -> k < Array.length cfg.act.present && cfg.act.present.(k)
+            | Absent | Pass_on (Global _) -> false) in
+      let rec around j step =
+        j >= 0 && j < Array.length params && params.(j).p_group = g
+        && (present j || around (j + step) step) in
+      around (i - 1) (-1) || around (i + 1) 1)
 
 (* The next argument of a call in progress, or the call itself when all are there (§5.2). *)
 let next_argument cfg (cs : call_state) rest =
@@ -361,11 +480,23 @@ let next_argument cfg (cs : call_state) rest =
   else begin
     let i = cs.next in
     let p = cs.callee.parameters.(i) in
-    match cs.call.arguments.(i) with
-    | Absent ->
+    let absent rule =
+      (* An absent parameter still has storage of its type (it cannot be used, §5.2). *)
+      let bytes = V.shape_bytes p.p_default in
+      if bytes > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin
+        cfg.stack <- rest;
+        cfg.focus <- F_done (memory_exhausted cfg ("the absent parameter " ^ p.p_name) (region_of_focus_stmt cfg));
+        ("memory-exhausted", [])
+      end
+      else begin
         cs.next <- i + 1;
-        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
-        ("argument-absent", [])
+        cs.args_memory <- cs.args_memory + bytes;
+        cs.args_slots.(i) <- fresh_loc (V.default_of p.p_default);
+        (rule, [])
+      end
+    in
+    match cs.call.arguments.(i) with
+    | Absent -> absent "argument-absent"
     | Present_switch ->
         cs.next <- i + 1;
         cs.args_present.(i) <- true;
@@ -377,20 +508,24 @@ let next_argument cfg (cs : call_state) rest =
         ("argument-value", [])
     | By_reference (place, k) ->
         cs.args_kinds.(i) <- reference_kind cfg place k;
+        cs.args_module_data.(i) <- denotes_module_data cfg place;
         cfg.stack <- K_args { cs with by_value = false } :: rest;
         cfg.focus <- F_place place;
         ("argument-reference", [])
     | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
-        cs.next <- i + 1;
-        cs.args_present.(i) <- true;
-        cs.args_slots.(i) <- cfg.act.slots.(j);
-        cs.args_kinds.(i) <- cfg.act.kinds.(j);
-        cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
-        ("argument-pass-on-present", [])
-    | Pass_on _ ->
-        cs.next <- i + 1;
-        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
-        ("argument-pass-on-absent", [])
+        if duplicate_alternative cfg cs i then begin
+          cfg.stack <- rest; raise_ cfg "ERR_ARGDUPCND"; ("argument-pass-on-duplicate", [])
+        end
+        else begin
+          cs.next <- i + 1;
+          cs.args_present.(i) <- true;
+          cs.args_slots.(i) <- cfg.act.slots.(j);
+          cs.args_kinds.(i) <- cfg.act.kinds.(j);
+          cs.args_module_data.(i) <- j < Array.length cfg.act.module_data && cfg.act.module_data.(j);
+          cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
+          ("argument-pass-on-present", [])
+        end
+    | Pass_on _ -> absent "argument-pass-on-absent"
   end
 
 (* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
@@ -419,7 +554,8 @@ let handle cfg (e : err) =
       ("raise-handle", [ Error_handled { name = e.name; routine = act.routine.name } ])
 
 let stop cfg (e : err) rule =
-  cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at; chain = e.chain });
+  cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at; chain = Lazy.force e.chain;
+                                 about = e.about });
   (rule, [])
 
 (* An error in flight in the current activation (§7.1, §7.2). *)
@@ -432,8 +568,10 @@ let raise_step cfg (e : err) =
       match act.caller with
       | None -> stop cfg e "raise-unhandled"
       | Some caller ->
+          ignore caller;
+          (* §7.2: only the routines with an error recovery point are searched. *)
           if e.searched then (cfg.focus <- F_abandon (Go_on_propagate e); ("raise-propagate", []))
-          else (cfg.focus <- F_search (e, Some caller); ("longjump-search-start", [])))
+          else (cfg.focus <- F_search (e, act.recovery_up); ("longjump-search-start", [])))
 
 let recovery_point cfg (a : activation) (e : err) =
   match a.routine.error with
@@ -453,6 +591,12 @@ let bool_of = function V.Bool b -> Some b | _ -> None
 let num_of = function V.Num f | V.Dnum f -> Some f | _ -> None
 
 let to_int f = if Float.is_integer f && Float.abs f < 1e15 then Some (int_of_float f) else None
+
+(* "The statement that caused the error" (§4.13, §4.14): an error in an ELSEIF condition is the
+   IF statement's, which the ELSEIF's mark leads to (one mark per ELSEIF of the statement). *)
+let rec statement_point = function
+  | K_stmt ({ s = Elseif _; _ }, prev) :: _ -> statement_point prev
+  | point -> point
 
 (* The statements of a statement list, one by one. *)
 let exec cfg (s : Ir.stmt) =
@@ -509,8 +653,8 @@ let exec cfg (s : Ir.stmt) =
       | In_handler (e, _) -> (
           match cfg.act.caller with
           | None -> stop cfg e "raise-again-unhandled"
-          | Some caller ->
-              cfg.focus <- F_search ({ e with searched = false }, Some caller);
+          | Some _ ->
+              cfg.focus <- F_search ({ e with searched = false }, cfg.act.recovery_up);
               ("raise-again", []))
       | _ -> cfg.focus <- F_done (Stuck "RAISE without a number outside an error handler"); ("stuck", []))
   | Raise (Some e) -> mark_here (); push cfg K_raise_value; cfg.focus <- F_expr e; ("raise-number", [])
@@ -531,7 +675,7 @@ let exec cfg (s : Ir.stmt) =
           end
           else begin
             act.handling <- Body;
-            (match point with
+            (match statement_point point with
              | K_stmt (st, prev) :: rest ->
                  act.retried <- Some st;
                  cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_stmt st
@@ -543,13 +687,16 @@ let exec cfg (s : Ir.stmt) =
       match cfg.act.handling with
       | In_handler (_, point) ->
           cfg.act.handling <- Body;
-          (match point with
+          (match statement_point point with
            | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
           ("trynext", [])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
-  | Connect (p, trap) -> mark_here (); push cfg (K_connect_target trap); cfg.focus <- F_place p; ("connect", [])
+  | Connect (p, trap) -> mark_here (); push cfg (K_connect_target (trap, p)); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
+  | Elseif (c, t, f) ->
+      (* Marked for the error's place (the ELSEIF); RETRY and TRYNEXT go to its IF. *)
+      mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("elseif", [])
   | Compact_if (c, inner) ->
       mark_here (); push cfg (K_compact_if inner); cfg.focus <- F_expr c; ("compact-if", [])
   | While (c, b) -> mark_here (); push cfg (K_while_test (c, b)); cfg.focus <- F_expr c; ("while", [])
@@ -563,7 +710,7 @@ let frame_kind = function
   | K_while_body _ -> "while-body" | K_for_from _ -> "for-from" | K_for_to _ -> "for-to"
   | K_for_step _ -> "for-step" | K_for_body _ -> "for-body" | K_test_subject _ -> "test"
   | K_test_value _ -> "test-value" | K_return_value -> "return" | K_raise_value -> "raise"
-  | K_connect_target _ -> "connect" | K_late_name _ -> "late-call" | K_read -> "read"
+  | K_connect_target _ -> "connect" | K_fit _ -> "fit" | K_late_name _ -> "late-call" | K_read -> "read"
   | K_unary _ -> "unary" | K_binary_left _ -> "binary-left" | K_binary_right _ -> "binary-right"
   | K_and _ -> "and" | K_or _ -> "or" | K_aggregate _ -> "aggregate" | K_component _ -> "component"
   | K_element_base _ | K_element_index _ -> "element" | K_args _ -> "arguments"
@@ -607,8 +754,9 @@ let next cfg =
           (match act.caller with
            | None -> cfg.focus <- F_done (Stuck "a function as entry routine")
            | Some caller ->
+               release cfg act;
                cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
-               cfg.focus <- F_raise (error cfg "ERR_FNCNORET" (region_of_focus_stmt cfg)));
+               cfg.focus <- F_raise (error ~about:act.routine.name cfg "ERR_FNCNORET" (region_of_focus_stmt cfg)));
           ("function-no-return", [ Routine_left act.routine.name ])
       | Procedure | Trap -> return_from cfg None)
   | K_handler_end :: _ -> (
@@ -621,6 +769,7 @@ let next cfg =
       match act.caller with
       | None -> cfg.focus <- F_done Ended; ("undo-done-entry", [ Task_ended ])
       | Some caller ->
+          release cfg act;
           cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
           (match after with
            | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
@@ -632,9 +781,17 @@ let next cfg =
   | K_local_init (act, inits) :: rest -> (
       match inits with
       | [] -> cfg.stack <- rest; ("locals-initialised", [])
-      | (slot, Init_default v) :: more ->
-          act.slots.(slot) <- fresh_loc (V.copy v);
-          cfg.stack <- K_local_init (act, more) :: rest; ("local-default", [])
+      | (slot, Init_default shape) :: more ->
+          (* Routine data is counted in the memory budget while its routine is active. *)
+          if charge cfg act (V.shape_bytes shape) then begin
+            act.slots.(slot) <- fresh_loc (V.default_of shape);
+            cfg.stack <- K_local_init (act, more) :: rest; ("local-default", [])
+          end
+          else begin
+            cfg.focus <- F_done (memory_exhausted cfg ("the routine data of " ^ act.routine.name)
+                                   (match act.caller_mark with K_stmt (s, _) :: _ -> s.sat | _ -> act.routine.at));
+            ("memory-exhausted", [])
+          end
       | (slot, Init_expr e) :: more ->
           act.slots.(slot) <- fresh_loc (V.Bool false);
           cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
@@ -742,42 +899,35 @@ let value_step cfg v =
       cfg.stack <- rest;
       match v with
       | V.String name -> (
-          (* §4.6: "name1:name2" names the procedure name2 of module name1. *)
-          let module_name, routine_name =
-            match String.index_opt name ':' with
-            | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
-            | None -> (None, name)
-          in
-          (* Without a module, the scope rules of §5.3 apply from the calling module: its own
-             routines, then the global ones; "module:name" reaches a LOCAL one too (§4.6). *)
-          let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
-          let here = cfg.act.routine.module_name in
-          let found = ref None in
-          let consider pred =
-            if !found = None then
-              Array.iteri (fun i (r : Ir.routine) ->
-                  if !found = None && same r.name routine_name && pred r then found := Some i)
-                cfg.program.routines in
-          (match module_name with
-           | Some m -> consider (fun r -> same r.module_name m)
-           | None ->
-               consider (fun r -> same r.module_name here);
-               consider (fun r -> not r.local));
-          match !found with
-          | None -> raise_ cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
+          let found = late_routine cfg name in
+          match found with
+          | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
           | Some i when cfg.program.routines.(i).kind <> Procedure ->
               (* §4.6: late binding calls procedures only. *)
-              raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
+              raise_ ~about:name cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
           | Some i -> (
               let r = cfg.program.routines.(i) in
-              match Late_binding.bind r args with
-              | None -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
-              | Some arguments ->
+              match Late_binding.bind r ~kind:(reference_kind cfg) args with
+              | Error error_name -> raise_ ~about:name cfg error_name; ("call-late-mismatch", [])
+              | Ok arguments ->
                   (begin_call cfg { Ir.callee = Routine i; arguments; call_at = at }, [])))
       | _ -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", []))
+  | K_fit shape :: rest -> (
+      cfg.stack <- rest;
+      (* §3.10: an aggregate takes its parameter's type, when its members fit it. *)
+      match V.conform shape v with
+      | Some v -> cfg.focus <- F_value v; ("argument-fit", [])
+      | None -> (match rest with K_args _ :: r -> cfg.stack <- r | _ -> ());
+          raise_ cfg "ERR_CALLPROC"; ("argument-fit-refused", []))
+  | K_args cs :: rest when cs.by_value && V.bytes v > cfg.limits.max_memory - cfg.memory - cs.args_memory ->
+      cfg.stack <- rest;
+      cfg.focus <- F_done (memory_exhausted cfg ("the copy for the parameter " ^ cs.callee.parameters.(cs.next).p_name)
+                             (region_of_focus_stmt cfg));
+      ("memory-exhausted", [])
   | K_args cs :: rest ->
       let i = cs.next in
       (* §5.2: an in parameter is a copy of the argument's value. *)
+      cs.args_memory <- cs.args_memory + V.bytes v;
       cs.args_slots.(i) <- fresh_loc (V.copy v);
       cs.args_present.(i) <- true;
       cs.primitive_args.(i) <- Primitive.Value v;
@@ -827,10 +977,14 @@ let loc_step cfg l =
           cfg.stack <- K_args cs :: rest;
           cfg.focus <- F_next;
           ("argument-alias", []))
-  | K_connect_target trap :: rest -> (
+  | K_connect_target (trap, target) :: rest -> (
       cfg.stack <- rest;
-      (* §4.15: a connected interrupt number cannot be connected again (ERR_ALRDYCNT). *)
+      (* §4.15: the target "must be (or denote) a module variable (not a routine variable)":
+         through a VAR or INOUT parameter, what the parameter denotes (ERR_CNTNOTVAR). A
+         connected interrupt number cannot be connected again (ERR_ALRDYCNT). *)
       match get l with
+      | _ when reference_kind cfg target Ref_variable = Ref_persistent || not (denotes_module_data cfg target) ->
+          raise_ cfg "ERR_CNTNOTVAR"; ("connect-not-variable", [])
       | V.Num n when n <> 0. -> raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
       | _ ->
           cfg.interrupt_numbers <- cfg.interrupt_numbers + 1;
@@ -851,7 +1005,7 @@ let place_step cfg (p : Ir.place) =
       else (cfg.focus <- F_loc cfg.act.slots.(i); ("place-local", []))
   | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])
   | Element (q, idx) -> push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q; ("place-element", [])
-  | Unresolved _ -> raise_ cfg "ERR_REFUNKDAT"; ("place-unknown", [])
+  | Unresolved name -> raise_ ~about:name cfg "ERR_REFUNKDAT"; ("place-unknown", [])
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
@@ -869,9 +1023,10 @@ let expr_step cfg (e : Ir.expr) =
       cfg.focus <- F_expr es.(0); ("aggregate-first", [])
   | Call c -> (
       match c.callee with
-      | Unknown_routine _ -> raise_ cfg "ERR_REFUNKFUN"; ("call-unknown-function", [])
+      | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKFUN"; ("call-unknown-function", [])
       | Routine _ -> (begin_call cfg c, []))
   | Placeholder -> raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
+  | Fitted (a, shape) -> push cfg (K_fit shape); cfg.focus <- F_expr a; ("argument-aggregate", [])
 
 (* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
    handler runs first (§7.2, §1.2). *)
@@ -896,7 +1051,7 @@ let search_step cfg (e : err) candidate =
   match candidate with
   | Some a when recovery_point cfg a e ->
       cfg.focus <- F_abandon (Go_on_long_jump ({ e with searched = true }, a)); ("longjump-found", [])
-  | Some a -> cfg.focus <- F_search (e, a.caller); ("longjump-search", [])
+  | Some a -> cfg.focus <- F_search (e, a.recovery_up); ("longjump-search", [])
   | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); ("raise-propagate", [])
 
 let step_unguarded cfg =
@@ -952,6 +1107,8 @@ let rule_names = [
   "assign-target"; "store"; "call-arguments"; "argument-absent"; "argument-switch";
   "argument-value"; "argument-reference"; "argument-bound"; "argument-alias";
   "argument-alias-refused"; "argument-pass-on-present"; "argument-pass-on-absent"; "call-enter";
+  "argument-pass-on-duplicate"; "argument-aggregate"; "argument-fit"; "argument-fit-refused";
+  "elseif"; "connect-not-variable"; "memory-exhausted";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
   "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";

@@ -28,16 +28,22 @@ type outcome =
   | Running
   | Ended                                  (** end of the entry routine, RETURN in it, EXIT *)
   | Stopped of { name : string; number : int; at : Rapid_syntax.Source.region;
-                 chain : string list }
-      (** the system error handler stopped the task: the error, where it occurred, and the call
-          chain at that point, innermost first *)
-  | Resource_exhausted of string           (** call depth beyond the limit *)
+                 chain : string list; about : string option }
+      (** the system error handler stopped the task: the error, where it occurred, the call
+          chain at that point, innermost first, and the name the error is about (the unknown
+          data object or routine of ERR_REFUNKDAT, ERR_REFUNKFUN, ERR_REFUNKPRC, the procedure
+          name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
+  | Resource_exhausted of string
+      (** call depth beyond the limit, or RAPID data beyond the memory budget (with the place) *)
   | Unsupported of string                  (** an installed routine rapid-sem does not model yet *)
   | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
 
 type limits = {
   max_call_depth : int;                    (** default 10,000 *)
   retry_limit : int;                       (** "No Of Retry": default 4 (§7.1) *)
+  max_memory : int;
+      (** bytes of RAPID data (module data, routine data and in arguments of the active
+          routines, by the model of {!Value.bytes}): default 256 MiB *)
 }
 
 val default_limits : limits

@@ -114,6 +114,35 @@ let rec default_of = function
   | S_record components -> Record (Array.map default_of components)
   | S_array (n, element) -> Array (Array.init n (fun _ -> default_of element))
 
+(* ------------------------------------------------------------------------------ memory *)
+
+let add_sat a b = if a > max_int - b then max_int else a + b
+let mul_sat n a = if n > 0 && a > max_int / n then max_int else n * a
+
+let rec shape_bytes = function
+  | S_num | S_dnum | S_bool | S_handle _ -> 32
+  | S_string -> 32
+  | S_record cs -> Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (shape_bytes c))) 16 cs
+  | S_array (n, e) -> add_sat 16 (mul_sat n (add_sat 8 (shape_bytes e)))
+
+let rec bytes = function
+  | Num _ | Dnum _ | Bool _ | Handle _ -> 32
+  | String s -> 32 + String.length s
+  | Record a | Array a -> Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (bytes c))) 16 a
+
+let rec conform shape v =
+  let all shapes vs =
+    let out = Array.map2 conform shapes vs in
+    if Array.for_all Option.is_some out then Some (Array.map Option.get out) else None in
+  match shape, v with
+  | S_num, Num _ | S_dnum, Dnum _ | S_bool, Bool _ | S_string, String _ -> Some v
+  | S_dnum, Num x -> Some (Dnum x)
+  | S_handle k, Handle h when h.kind = k -> Some v
+  | S_record cs, (Record a | Array a) when Array.length cs = Array.length a ->
+      Option.map (fun a -> Record a) (all cs a)
+  | S_array (n, e), Array a when Array.length a = n -> Option.map (fun a -> Array a) (all (Array.make n e) a)
+  | _ -> None
+
 let rec shape_of_data_type (t : Rapid_typing.Types.data_type) =
   match t with
   | Num -> S_num

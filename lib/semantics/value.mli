@@ -94,6 +94,25 @@ val default_of : shape -> t
 (** 0 for num and dnum, FALSE, "", and a handle of identity 0 ("all bits 0") for an installed
     atomic type; records and arrays component by component. *)
 
+(** {1 Memory accounting}
+
+    The memory budget of a run (doc/user-guide.md, "Resources") counts RAPID data in bytes by
+    this model, close to what the values occupy: a num, dnum, bool or handle 32 bytes, a
+    string 32 bytes and its length, a record or an array 16 bytes, 8 a component or element,
+    and its components or elements. Sums saturate at [max_int]. *)
+
+val shape_bytes : shape -> int
+(** The size of {!default_of} of the shape, computed without building it. *)
+
+val bytes : t -> int
+(** The size of a value. *)
+
+val conform : shape -> t -> t option
+(** The value as a value of the shape, if it fits: an aggregate has no type of its own and
+    takes that of its context (§3.10), so an array value fits a record shape of as many
+    components, and a num fits a dnum (a numeric literal member read as num, then widened
+    exactly). [None] when the structure or a scalar's type differs. *)
+
 val shape_of_type : Rapid_typing.Types.object_type -> shape
 (** The shape of a declared type. Raises [Invalid_argument] for [anytype] and for an array
     parameter declared with [{*}], whose sizes only a value has. *)

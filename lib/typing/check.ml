@@ -663,6 +663,21 @@ and loose_arguments ctx place (args : argument array) =
           Option.iter (loosely_expression ctx place) (argument_value a)
       | Conditional_argument (_, r) -> ignore (reference ctx place r)) args
 
+(* §4.6: the arguments of a late-bound call, whose types the binding compares with the
+   parameters' when the call runs (ERR_CALLPROC); recorded by the argument's region. *)
+and late_arguments ctx place (args : argument array) =
+  let record (a : argument) = function
+    | Known t -> Hashtbl.replace ctx.elab.late_arguments a.at (Some t)
+    | Numeric_literal -> Hashtbl.replace ctx.elab.late_arguments a.at None
+    | Unknown -> () in
+  Array.iter (fun (a : argument) ->
+      match a.it, argument_value a with
+      | Conditional_argument (_, r), _ -> record a (reference ctx place r).rtype
+      | _, Some ({ it = Data_reference r; _ } as e) -> record a (reference ctx place (Ast.reference e r)).rtype
+      | _, Some ({ it = Aggregate _; _ } as e) -> loosely_expression ctx place e
+      | _, Some e -> record a (infer ctx place e)
+      | _, None -> ()) args
+
 (* ------------------------------------------------------------------ assignment targets *)
 
 (* §4.5: the target is a variable, persistent or parameter of a value or semi-value type; not a
@@ -787,7 +802,7 @@ and statement ctx place (s : statement) =
       (* §4.6: the name is a string evaluated at run time; the arguments are checked against the
          routine then (ERR_REFUNKPRC, ERR_CALLPROC). *)
       check_expression ~sections:"4.6,2.17" ctx place e (T.scalar String);
-      loose_arguments ctx place args
+      late_arguments ctx place args
   | Goto id -> goto ctx place id
   | Break ->
       if not place.in_loop then

@@ -11,10 +11,12 @@ type t = {
   dnum_literals : (Source.region, unit) Hashtbl.t;
   bindings : (Source.region, binding) Hashtbl.t;
   aggregates : (Source.region, [ `Record | `Array ]) Hashtbl.t;
+  late_arguments : (Source.region, Types.object_type option) Hashtbl.t;
 }
 
 let create () = {
   names = Hashtbl.create 1024; declared = Hashtbl.create 1024; components = Hashtbl.create 256;
   binary = Hashtbl.create 256; unary = Hashtbl.create 64; dnum_literals = Hashtbl.create 64;
   bindings = Hashtbl.create 256; aggregates = Hashtbl.create 256;
+  late_arguments = Hashtbl.create 16;
 }

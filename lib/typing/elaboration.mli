@@ -27,6 +27,11 @@ type t = {
           call statement) → its arguments' binding (§3.11, §4.6) *)
   aggregates : (Source.region, [ `Record | `Array ]) Hashtbl.t;
       (** an aggregate → the kind of value its context gives it (§3.10) *)
+  late_arguments : (Source.region, Types.object_type option) Hashtbl.t;
+      (** an argument of a late-bound procedure call (§4.6), by the argument's region → its
+          type ([None]: a numeric literal expression, num or dnum as its parameter wants); not
+          there: no type (an aggregate, an unknown name). The binding checks it when the call
+          runs. *)
 }
 
 val create : unit -> t

@@ -1,0 +1,1 @@
+run latin1-strings.mod

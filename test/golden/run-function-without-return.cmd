@@ -1,0 +1,1 @@
+run run-function-without-return.mod

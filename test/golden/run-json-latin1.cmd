@@ -1,0 +1,1 @@
+run --json latin1-strings.mod

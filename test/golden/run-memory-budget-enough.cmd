@@ -1,0 +1,1 @@
+run --max-memory 1000000 run-memory-budget.mod

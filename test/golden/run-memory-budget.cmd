@@ -1,0 +1,1 @@
+run --max-memory 100000 run-memory-budget.mod

@@ -1,0 +1,1 @@
+run --allow-unknown run-unknown-data.mod

@@ -1,0 +1,1 @@
+run --allow-unknown --json --entry second run-unknown-names.mod

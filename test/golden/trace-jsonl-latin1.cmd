@@ -1,0 +1,1 @@
+trace --format jsonl --rules call-primitive latin1-strings.mod
