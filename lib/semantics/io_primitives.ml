@@ -214,7 +214,11 @@ let call (ctx : context) name args =
             Some (if same name "TestAndSet" then Returned (Some (V.Bool (not was))) else done_)
           end
       | _ -> Some (Failed "ERR_ARGNOTVAR"))
-  | "idelete" -> Some (let* n = interrupt ctx args in W.delete w n; done_)
+  | "idelete" ->
+      (* A number that is not connected has nothing to delete: programs guard a CONNECT with an
+         IDelete (R-8-f). *)
+      (match interrupt ctx args with Ok n -> W.delete w n | Error _ -> ());
+      Some done_
   | "idisable" -> W.disable w; Some done_
   | "ienable" -> W.enable w; Some done_
   | "isleep" | "iwatch" ->

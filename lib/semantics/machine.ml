@@ -690,8 +690,8 @@ let next_frame cfg =
       ("stuck", [])
   | [] -> cfg.focus <- F_done (Stuck "empty stack"); ("stuck", [])
 
-(* ch. 8: an interrupt is served when the next statement is entered, and during waits; never
-   at trap level, where it stays queued until the trap ends. The trap runs as a routine called
+(* ch. 8: an interrupt is served at the entry of the next statement, after the last statement
+   of a statement list, and during waits; never at trap level, where it stays queued until the trap ends. The trap runs as a routine called
    from the point of interruption, with INTNO set to the interrupt's number (ch. 12). *)
 let serve_interrupt cfg =
   if cfg.act.trap_level then None
@@ -763,6 +763,9 @@ let next cfg =
   end
   else match cfg.stack with
     | K_wait ws :: rest -> wait_step cfg ws rest
+    | K_seq _ :: _ -> (
+        (* ch. 8: "after the last statement of a statement list" is a point of response too. *)
+        match serve_interrupt cfg with Some r -> r | None -> next_frame cfg)
     | _ -> next_frame cfg
 
 let start_loop cfg (f : Ir.for_loop) from t step rest =
