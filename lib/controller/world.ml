@@ -21,10 +21,14 @@ type signal = { s_name : string; s_kind : Io_config.signal_type; mutable value :
 
 type trigger = old:float -> now:float -> bool
 
+type error_datum = { domain : int; id : int; error_type : int; strings : string list }
+
 type source =
   | No_source
   | Timer of { period : int; single : bool }
   | Signal_edge of { signal : int; trigger : trigger; single : bool }
+  | Watch of { changed : unit -> bool; single : bool }
+  | Error_log of { domain : int; id : int option; error_type : int }
 
 type interrupt = {
   trap : int;
@@ -57,8 +61,10 @@ type t = {
   mutable sequence : int;
   interrupts : (int, interrupt) Hashtbl.t;
   mutable last_number : int;
-  queue : int Queue.t;
+  queue : (int * error_datum option) Queue.t;
   mutable disabled : bool;
+  mutable served_datum : error_datum option;    (* of the interrupt served last (GetTrapData) *)
+  mutable data : error_datum list;              (* trapdata objects, newest first *)
   clocks : (int, clock) Hashtbl.t;
   mutable observations : observation list;      (* newest first *)
 }
@@ -80,7 +86,7 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             events = []; sequence = 0; interrupts = Hashtbl.create 8; last_number = 0;
-            queue = Queue.create (); disabled = false; clocks = Hashtbl.create 4; observations = [] } in
+            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
   List.iter (fun (st : Io_config.stimulus) ->
       let id = ref 0 in
       Array.iteri (fun i s -> if String.lowercase_ascii s.s_name = String.lowercase_ascii st.signal then id := i + 1) signals;
@@ -95,7 +101,7 @@ let epoch w = w.epoch
 
 (* An interrupt occurs: queued for its trap, unless it sleeps (ISleep: "discarded without any
    trap execution") or the queue is full (R-8-c). *)
-let occur w number =
+let occur ?datum w number =
   match Hashtbl.find_opt w.interrupts number with
   | None -> ()
   | Some i ->
@@ -103,7 +109,7 @@ let occur w number =
       if i.sleeping then observe w (Interrupt_discarded { time; number; reason = "sleeping (ISleep)" })
       else if Queue.length w.queue >= queue_capacity then
         observe w (Interrupt_discarded { time; number; reason = "the interrupt queue is full" })
-      else (Queue.add number w.queue; observe w (Interrupt_occurred { time; number }))
+      else (Queue.add (number, datum) w.queue; observe w (Interrupt_occurred { time; number }))
 
 let signal_changed w id old value =
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
@@ -195,23 +201,67 @@ let order_signal w n ~signal ~trigger ~single =
       i.source <- Signal_edge { signal; trigger; single };
       Ok ())
 
+let order_watch w n ~changed ~single =
+  with_interrupt w n (fun i ->
+      i.generation <- i.generation + 1;
+      i.source <- Watch { changed; single };
+      Ok ())
+
+let order_error w n ~domain ~id ~error_type =
+  with_interrupt w n (fun i ->
+      i.generation <- i.generation + 1;
+      i.source <- Error_log { domain; id; error_type };
+      Ok ())
+
+(* IError: COMMON_ERR (0) is every domain, an absent ErrorId every number, TYPE_ALL (0) every
+   type. *)
+let post_error w (d : error_datum) =
+  Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
+  |> List.sort compare
+  |> List.iter (fun (n, i) ->
+      match i.source with
+      | Error_log { domain; id; error_type }
+        when (domain = 0 || domain = d.domain) && (id = None || id = Some d.id)
+             && (error_type = 0 || error_type = d.error_type) ->
+          occur ~datum:d w n
+      | _ -> ())
+
+(* IPers: a persistent changed since the last look. Looked at wherever an interrupt may be
+   served. *)
+let look_at_watches w =
+  Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
+  |> List.sort compare
+  |> List.iter (fun (n, i) ->
+      match i.source with
+      | Watch { changed; single } when changed () ->
+          if single then i.source <- No_source;
+          occur w n
+      | _ -> ())
+
 let sleep w n = with_interrupt w n (fun i -> i.sleeping <- true; Ok ())
 let watch w n = with_interrupt w n (fun i -> i.sleeping <- false; Ok ())
 let disable w = w.disabled <- true
 let enable w = w.disabled <- false
 let enabled w = not w.disabled
 
-let rec take w =
+let rec take_queued w =
   if w.disabled || Queue.is_empty w.queue then None
   else
-    let n = Queue.pop w.queue in
+    let n, datum = Queue.pop w.queue in
     match Hashtbl.find_opt w.interrupts n with
-    | Some i -> Some (n, i.trap)
-    | None -> take w
+    | Some i -> w.served_datum <- datum; Some (n, i.trap)
+    | None -> take_queued w
 
-let can_occur w =
-  not (Queue.is_empty w.queue)
-  || Hashtbl.fold (fun _ i acc -> acc || (match i.source with No_source -> false | _ -> true)) w.interrupts false
+let take w = look_at_watches w; take_queued w
+
+let trap_data w =
+  match w.served_datum with
+  | None -> 0
+  | Some d -> w.data <- d :: w.data; List.length w.data
+
+let error_datum w k =
+  let n = List.length w.data in
+  if k >= 1 && k <= n then Some (List.nth w.data (n - k)) else None
 
 (* ---------------------------------------------------------------- clocks *)
 

@@ -107,10 +107,31 @@ val order_timer : t -> int -> period:float -> single:bool -> (unit, string) resu
 (** ITimer; ERR_UNKINO for a number that is not connected. *)
 
 type trigger = old:float -> now:float -> bool
+(** May keep a state of its own (ISignalAI's reference value). *)
 
 val order_signal : t -> int -> signal:int -> trigger:trigger -> single:bool -> (unit, string) result
 (** ISignalDI/DO/AI/AO/GI/GO: an interrupt at each change of the signal that satisfies the
     trigger. *)
+
+val order_watch : t -> int -> changed:(unit -> bool) -> single:bool -> (unit, string) result
+(** IPers: [changed ()] says whether the persistent changed since it was last asked; it is asked
+    wherever an interrupt may be served. *)
+
+(** An entry of the event log that IError sees: its domain (errdomain), number and type
+    (errtype), and its text lines. *)
+type error_datum = { domain : int; id : int; error_type : int; strings : string list }
+
+val order_error : t -> int -> domain:int -> id:int option -> error_type:int -> (unit, string) result
+(** IError: COMMON_ERR (0) is every domain, [None] every number, TYPE_ALL (0) every type. *)
+
+val post_error : t -> error_datum -> unit
+(** An entry in the event log: the IError interrupts it matches occur, carrying it. *)
+
+val trap_data : t -> int
+(** GetTrapData: an identity for the event of the interrupt served last (0: it has none). *)
+
+val error_datum : t -> int -> error_datum option
+(** ReadErrData: the event a trapdata identity denotes. *)
 
 val sleep : t -> int -> (unit, string) result
 val watch : t -> int -> (unit, string) result
@@ -121,9 +142,6 @@ val enabled : t -> bool
 val take : t -> (int * int) option
 (** The first queued interrupt and its trap, when interrupts are enabled: it leaves the queue.
     Occurrences of a deleted number are dropped. *)
-
-val can_occur : t -> bool
-(** Whether an interrupt is queued or some source may still produce one. *)
 
 (** {1 Clocks (ClkReset, ClkStart, ClkStop, ClkRead)} *)
 

@@ -132,13 +132,39 @@ let digital_trigger t ~old ~now =
   | 2. -> old <> now
   | t -> now = t && old <> now
 
+(* ISignalAI/AO: the condition on the value (aiotrigg, io.sys), and DeltaValue: an interrupt at a
+   change where the condition holds and either did not hold before, or the value moved more than
+   DeltaValue (up with \DPos, down with \DNeg) from where it was at the last interrupt
+   (R-8-k). *)
+let analog_trigger ~condition ~high ~low ~delta ~direction =
+  let holds v = match condition with
+    | 1 -> v > high | 2 -> v < high | 3 -> v > low | 4 -> v < low
+    | 5 -> v >= low && v <= high | 6 -> v < low || v > high | _ -> true in
+  let reference = ref None in
+  fun ~old ~now ->
+    let moved = match !reference with
+      | None -> true
+      | Some r -> (match direction with
+          | `Up -> now -. r > delta | `Down -> r -. now > delta | `Any -> Float.abs (now -. r) > delta) in
+    let fire = holds now && (not (holds old) || moved) in
+    if fire then reference := Some now;
+    fire
+
+(* The text lines of an ErrWrite entry: the header, the reason and up to three more lines. *)
+let err_write_datum ctx args =
+  let text name = match arg ctx args name with Value (V.String s) -> Some s | _ -> None in
+  let error_type, id =
+    if present ctx args "W" then (2, 2) else if present ctx args "I" then (1, 3) else (3, 1) in
+  { W.domain = 8; id; error_type;
+    strings = List.filter_map text [ "Header"; "Reason"; "RL2"; "RL3"; "RL4" ] }
+
 let names = [
   "WaitTime"; "WaitUntil"; "WaitDI"; "WaitDO"; "WaitGI"; "WaitGO"; "WaitAI"; "WaitAO";
   "SetDO"; "Set"; "Reset"; "InvertDO"; "PulseDO"; "SetAO"; "SetGO";
   "DInput"; "DOutput"; "AInput"; "AOutput"; "GInput"; "GOutput"; "GInputDnum"; "GOutputDnum";
   "TestDI"; "TestAndSet"; "WaitTestAndSet";
   "IDelete"; "IDisable"; "IEnable"; "ISleep"; "IWatch"; "ITimer"; "ISignalDI"; "ISignalDO";
-  "ISignalGI"; "ISignalGO"; "ISignalAI"; "ISignalAO";
+  "ISignalGI"; "ISignalGO"; "ISignalAI"; "ISignalAO"; "IPers"; "IError"; "GetTrapData"; "ReadErrData";
   "ClkReset"; "ClkStart"; "ClkStop"; "ClkRead"; "CDate"; "CTime"; "GetTime";
 ]
 
@@ -242,6 +268,52 @@ let call (ctx : context) name args =
             let* id = signal ctx args "Signal" in
             match W.order_signal w n ~signal:id ~trigger:(fun ~old ~now -> old <> now) ~single:(single ctx args) with
             | Ok () -> done_ | Error e -> Failed e)
+  | "isignalai" | "isignalao" ->
+      Some (let* n = interrupt ctx args in
+            let* id = signal ctx args "Signal" in
+            let get k = Option.value (num ctx args k) ~default:0. in
+            let condition = int_of_float (get "Condition") in
+            let* () = if condition >= 1 && condition <= 7 then Ok () else Error "ERR_ARGVALERR" in
+            let direction = if present ctx args "DPos" then `Up else if present ctx args "DNeg" then `Down else `Any in
+            let trigger = analog_trigger ~condition ~high:(get "HighValue") ~low:(get "LowValue")
+                ~delta:(Float.abs (get "DeltaValue")) ~direction in
+            match W.order_signal w n ~signal:id ~trigger ~single:(single ctx args) with
+            | Ok () -> done_ | Error e -> Failed e)
+  | "ipers" -> (
+      (* IPers: an interrupt each time the persistent gets a new value. *)
+      match arg ctx args "Name" with
+      | Location (box, i, _) ->
+          let last = ref (V.copy box.(i)) in
+          let changed () =
+            if V.equal !last box.(i) then false else (last := V.copy box.(i); true) in
+          Some (let* n = interrupt ctx args in
+                match W.order_watch w n ~changed ~single:(single ctx args) with Ok () -> done_ | Error e -> Failed e)
+      | _ -> Some (Failed "ERR_ARGNOTPER"))
+  | "ierror" ->
+      Some (let* n = interrupt ctx args in
+            let int_of name = Option.map int_of_float (num ctx args name) in
+            match W.order_error w n ~domain:(Option.value (int_of "ErrorDomain") ~default:0)
+                    ~id:(int_of "ErrorId") ~error_type:(Option.value (int_of "ErrorType") ~default:0) with
+            | Ok () -> done_ | Error e -> Failed e)
+  | "errwrite" ->
+      (* The entry goes to the event log (Primitive writes it), where IError sees it (R-8-l). *)
+      W.post_error w (err_write_datum ctx args); None
+  | "gettrapdata" ->
+      store ctx args "TrapEvent" (V.Handle (V.make_handle ~kind:"trapdata" (W.trap_data w)));
+      Some done_
+  | "readerrdata" -> (
+      match arg ctx args "TrapEvent" with
+      | Location (box, i, _) -> (
+          let datum = match box.(i) with V.Handle h -> W.error_datum w (V.handle_id h) | _ -> None in
+          match datum with
+          | None -> Some (Failed "ERR_ARGVALERR")
+          | Some d ->
+              store ctx args "ErrorDomain" (V.num (float_of_int d.domain));
+              store ctx args "ErrorId" (V.num (float_of_int d.id));
+              store ctx args "ErrorType" (V.num (float_of_int d.error_type));
+              List.iteri (fun k s -> store ctx args (Printf.sprintf "Str%d" (k + 1)) (V.String s)) d.strings;
+              Some done_)
+      | _ -> Some (Failed "ERR_ARGVALERR"))
   | "clkreset" -> W.clock_reset w (clock ctx args); Some done_
   | "clkstart" -> W.clock_start w (clock ctx args); Some done_
   | "clkstop" -> W.clock_stop w (clock ctx args); Some done_
