@@ -339,7 +339,18 @@ let trace_cmd =
           | `Human ->
               Printf.printf "%6d %-24s %s %-10s %s | %s\n" n rule (Source.to_string region) kind
                 (region_text region) (String.concat " " stack);
-              List.iter (function M.Output s -> Printf.printf "       > %s\n" s | _ -> ()) events
+              List.iter (function
+                  | M.Output s -> Printf.printf "       > %s\n" s
+                  | M.Controller (Signal_changed { time; signal; value }) ->
+                      Printf.printf "       ~ %.6f s: %s = %g\n" time signal value
+                  | M.Controller (Interrupt_occurred { time; number }) ->
+                      Printf.printf "       ~ %.6f s: interrupt %d occurred\n" time number
+                  | M.Controller (Interrupt_discarded { time; number; reason }) ->
+                      Printf.printf "       ~ %.6f s: interrupt %d discarded (%s)\n" time number reason
+                  | M.Trap_entered { time; number; trap } ->
+                      Printf.printf "       ~ %.6f s: trap %s serves interrupt %d\n" time trap number
+                  | M.Trap_left { time; trap } -> Printf.printf "       ~ %.6f s: trap %s left\n" time trap
+                  | _ -> ()) events
           | `Jsonl ->
               print_endline (Yojson.Safe.to_string (`Assoc [
                   ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);

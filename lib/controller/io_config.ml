@@ -27,7 +27,9 @@ let check_name line col name =
   if name = "" || String.length name > 32
      || not (match name.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
      || not (String.for_all ok_char name)
-  then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal" name))
+  then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal" name));
+  if Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii name) then
+    raise (Bad (line, col, Printf.sprintf "%s is a reserved word (§2.4), so it cannot name a signal" name))
 
 let number line col w =
   match float_of_string_opt w with
