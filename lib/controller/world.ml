@@ -125,6 +125,12 @@ let signal_changed w id old value =
 
 let signal_of w id = if id >= 1 && id <= Array.length w.signals then Some w.signals.(id - 1) else None
 let signals w = Array.to_list (Array.mapi (fun i s -> (s.s_name, s.s_kind, i + 1)) w.signals)
+let find_signal w name =
+  let rec go i = if i >= Array.length w.signals then None
+    else if String.lowercase_ascii w.signals.(i).s_name = String.lowercase_ascii name then Some (i + 1)
+    else go (i + 1) in
+  go 0
+
 let signal_name w id = match signal_of w id with Some s -> s.s_name | None -> "?"
 let signal_kind w id = Option.map (fun s -> s.s_kind) (signal_of w id)
 let read w id = match signal_of w id with Some s -> s.value | None -> 0.

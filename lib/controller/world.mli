@@ -69,6 +69,9 @@ val seconds : float -> int
 val signals : t -> (string * Io_config.signal_type * int) list
 (** The configured signals, with the identity each has ([1], [2], ...; 0 is "not connected"). *)
 
+val find_signal : t -> string -> int option
+(** The identity of the signal of this name (letter case aside). *)
+
 val signal_name : t -> int -> string
 val signal_kind : t -> int -> Io_config.signal_type option
 (** [None]: no such signal. *)

@@ -162,7 +162,7 @@ let names = [
   "WaitTime"; "WaitUntil"; "WaitDI"; "WaitDO"; "WaitGI"; "WaitGO"; "WaitAI"; "WaitAO";
   "SetDO"; "Set"; "Reset"; "InvertDO"; "PulseDO"; "SetAO"; "SetGO";
   "DInput"; "DOutput"; "AInput"; "AOutput"; "GInput"; "GOutput"; "GInputDnum"; "GOutputDnum";
-  "TestDI"; "TestAndSet"; "WaitTestAndSet";
+  "TestDI"; "TestAndSet"; "WaitTestAndSet"; "AliasIO";
   "IDelete"; "IDisable"; "IEnable"; "ISleep"; "IWatch"; "ITimer"; "ISignalDI"; "ISignalDO";
   "ISignalGI"; "ISignalGO"; "ISignalAI"; "ISignalAO"; "IPers"; "IError"; "GetTrapData"; "ReadErrData";
   "ClkReset"; "ClkStart"; "ClkStop"; "ClkRead"; "CDate"; "CTime"; "GetTime";
@@ -314,6 +314,24 @@ let call (ctx : context) name args =
               List.iteri (fun k s -> store ctx args (Printf.sprintf "Str%d" (k + 1)) (V.String s)) d.strings;
               Some done_)
       | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "aliasio" -> (
+      (* AliasIO: the program's signal variable denotes the configured signal named by a signal
+         object or a string, of the same kind (ERR_ALIASIO_DEF, ERR_ALIASIO_TYPE). *)
+      let from = match arg ctx args "FromSignal" with
+        | Location (box, i, _) -> (
+            match box.(i) with
+            | V.String name -> W.find_signal w name
+            | V.Handle h when W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
+            | _ -> None)
+        | _ -> None in
+      match from, arg ctx args "ToSignal" with
+      | None, _ -> Some (Failed "ERR_ALIASIO_DEF")
+      | Some id, Location (box, i, _) -> (
+          match box.(i), W.signal_kind w id with
+          | V.Handle h, Some kind when V.handle_kind h = C.type_name kind ->
+              box.(i) <- V.Handle (V.make_handle ~kind:(V.handle_kind h) id); Some done_
+          | _ -> Some (Failed "ERR_ALIASIO_TYPE"))
+      | Some _, _ -> Some (Failed "ERR_ALIASIO_TYPE"))
   | "clkreset" -> W.clock_reset w (clock ctx args); Some done_
   | "clkstart" -> W.clock_start w (clock ctx args); Some done_
   | "clkstop" -> W.clock_stop w (clock ctx args); Some done_
