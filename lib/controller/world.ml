@@ -60,7 +60,7 @@ type t = {
   mutable events : (int * int * action) list;  (* time, sequence, action: sorted *)
   mutable sequence : int;
   interrupts : (int, interrupt) Hashtbl.t;
-  mutable last_number : int;
+  mutable watching : bool;             (* some IPers was ordered: look at persistents *)
   queue : (int * error_datum option) Queue.t;
   mutable disabled : bool;
   mutable served_datum : error_datum option;    (* of the interrupt served last (GetTrapData) *)
@@ -85,7 +85,7 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
-            events = []; sequence = 0; interrupts = Hashtbl.create 8; last_number = 0;
+            events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
   List.iter (fun (st : Io_config.stimulus) ->
       let id = ref 0 in
@@ -182,7 +182,6 @@ let connect w ~trap =
     (* The lowest number not in use: numbers are freed by IDelete. *)
     let rec free n = if Hashtbl.mem w.interrupts n then free (n + 1) else n in
     let n = free 1 in
-    w.last_number <- max w.last_number n;
     Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false };
     Ok n
   end
@@ -211,6 +210,7 @@ let order_watch w n ~changed ~single =
   with_interrupt w n (fun i ->
       i.generation <- i.generation + 1;
       i.source <- Watch { changed; single };
+      w.watching <- true;
       Ok ())
 
 let order_error w n ~domain ~id ~error_type =
@@ -235,6 +235,7 @@ let post_error w (d : error_datum) =
 (* IPers: a persistent changed since the last look. Looked at wherever an interrupt may be
    served. *)
 let look_at_watches w =
+  if w.watching then
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
   |> List.sort compare
   |> List.iter (fun (n, i) ->

@@ -90,7 +90,7 @@ let set_signal ctx id v = W.write ctx.world id v; done_
 
 (* The wall clock: the epoch plus the virtual time. Days to a civil date (proleptic Gregorian). *)
 let date_time seconds =
-  let total = Float.to_int (Float.of_int (Float.to_int (Float.round (Float.floor seconds)))) in
+  let total = int_of_float (Float.floor seconds) in
   let days = if total >= 0 then total / 86400 else ((total + 1) / 86400) - 1 in
   let secs = total - (days * 86400) in
   let z = days + 719468 in
