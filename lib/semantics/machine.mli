@@ -7,8 +7,9 @@
     or the depth of recursion: no rule walks the stack or rebuilds the path to the focus. Errors,
     long jumps and UNDO handlers unwind the stack one frame or one activation per step.
 
-    The configuration is ready for what later issues add: execution levels (normal, trap, user)
-    with an interrupt queue, a motion queue, and several tasks. *)
+    The configuration holds the controller around the program (a {!Rapid_controller.World}: the
+    virtual clock, the signals, the interrupt queue; doc/controller.md); traps run at trap level.
+    It is ready for what later issues add: the user level, a motion queue, and several tasks. *)
 
 type config
 
