@@ -590,6 +590,10 @@ let exec cfg (s : Ir.stmt) =
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
           ("trynext", [])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
+  | Connect (p, _) when reference_kind cfg p Ir.Ref_other = Ir.Ref_persistent ->
+      (* §4.15: the target is a variable; an INOUT parameter bound to a persistent is not
+         (ERR_CNTNOTVAR), which only the run can tell. *)
+      mark_here (); raise_ cfg "ERR_CNTNOTVAR"; ("connect-not-variable", [])
   | Connect (p, trap) -> mark_here (); push cfg (K_connect_target trap); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
   | Compact_if (c, inner) ->
@@ -1134,6 +1138,6 @@ let rule_names = [
   "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
   "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
   "wait-time-limit"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
-  "raise-in-trap";
+  "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]
