@@ -176,6 +176,10 @@ let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 
+(* Generations are unique in the run, so that a timer event of a deleted interrupt never matches
+   a later interrupt that got the same number. *)
+let fresh_generation w = w.sequence <- w.sequence + 1; w.sequence
+
 let connect w ~trap =
   if Hashtbl.length w.interrupts >= max_interrupts then Error "ERR_INOMAX"
   else begin
@@ -195,27 +199,27 @@ let with_interrupt w n f =
 let order_timer w n ~period ~single =
   with_interrupt w n (fun i ->
       let p = max 1 (seconds period) in
-      i.generation <- i.generation + 1;
+      i.generation <- fresh_generation w;
       i.source <- Timer { period = p; single };
       schedule w (w.now + p) (Timer_due (n, i.generation));
       Ok ())
 
 let order_signal w n ~signal ~trigger ~single =
   with_interrupt w n (fun i ->
-      i.generation <- i.generation + 1;
+      i.generation <- fresh_generation w;
       i.source <- Signal_edge { signal; trigger; single };
       Ok ())
 
 let order_watch w n ~changed ~single =
   with_interrupt w n (fun i ->
-      i.generation <- i.generation + 1;
+      i.generation <- fresh_generation w;
       i.source <- Watch { changed; single };
       w.watching <- true;
       Ok ())
 
 let order_error w n ~domain ~id ~error_type =
   with_interrupt w n (fun i ->
-      i.generation <- i.generation + 1;
+      i.generation <- fresh_generation w;
       i.source <- Error_log { domain; id; error_type };
       Ok ())
 
