@@ -64,6 +64,7 @@ let check_value line col kind v =
 
 let parse_stimulus lines =
   let signals = ref [] and stimuli = ref [] in
+  let by_name = Hashtbl.create 16 in
   List.iteri (fun i line ->
       let ln = i + 1 in
       match words line with
@@ -79,14 +80,15 @@ let parse_stimulus lines =
                 | [] -> 0.
                 | [ (w, c) ] -> let v = number ln c w in check_value ln c kind v; v
                 | _ :: (_, c) :: _ -> raise (Bad (ln, c, "more than a name, a type and an initial value")) in
-              signals := add_signal !signals ln nc { name; kind; initial }
+              signals := add_signal !signals ln nc { name; kind; initial };
+              Hashtbl.replace by_name (String.lowercase_ascii name) (List.hd !signals)
           | _ -> raise (Bad (ln, 1, "expected: signal NAME TYPE [INITIAL]")))
       | ("at", _) :: rest -> (
           match rest with
           | [ (t, tc); (name, nc); (v, vc) ] ->
               let time = number ln tc t in
               if time < 0. then raise (Bad (ln, tc, "a time is not negative"));
-              let s = match List.find_opt (fun (o : signal) -> String.lowercase_ascii o.name = String.lowercase_ascii name) !signals with
+              let s = match Hashtbl.find_opt by_name (String.lowercase_ascii name) with
                 | Some s -> s
                 | None -> raise (Bad (ln, nc, Printf.sprintf "the signal %s is not declared above" name)) in
               if not (is_input s.kind) then

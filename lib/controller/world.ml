@@ -87,10 +87,13 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
-  List.iter (fun (st : Io_config.stimulus) ->
-      let id = ref 0 in
-      Array.iteri (fun i s -> if String.lowercase_ascii s.s_name = String.lowercase_ascii st.signal then id := i + 1) signals;
-      if !id > 0 then schedule w (seconds st.time) (Set_signal (!id, st.value))) config.stimuli;
+  (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
+  let ids = Hashtbl.create 16 in
+  Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
+  w.events <- List.filter_map (fun (st : Io_config.stimulus) ->
+      match Hashtbl.find_opt ids (String.lowercase_ascii st.signal) with
+      | Some id -> w.sequence <- w.sequence + 1; Some (seconds st.time, w.sequence, Set_signal (id, st.value))
+      | None -> None) config.stimuli;
   w
 
 let now w = to_seconds w.now
@@ -113,7 +116,7 @@ let occur ?datum w number =
 
 let signal_changed w id old value =
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
-  |> List.sort compare
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
   |> List.iter (fun (n, i) ->
       match i.source with
       | Signal_edge { signal; trigger; single } when signal = id && trigger ~old ~now:value ->
@@ -227,7 +230,7 @@ let order_error w n ~domain ~id ~error_type =
    type. *)
 let post_error w (d : error_datum) =
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
-  |> List.sort compare
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
   |> List.iter (fun (n, i) ->
       match i.source with
       | Error_log { domain; id; error_type }
@@ -241,7 +244,7 @@ let post_error w (d : error_datum) =
 let look_at_watches w =
   if w.watching then
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
-  |> List.sort compare
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
   |> List.iter (fun (n, i) ->
       match i.source with
       | Watch { changed; single } when changed () ->
