@@ -100,11 +100,26 @@ let reproducible () =
   Alcotest.(check bool) "events" true (String.length first > 1000);
   Alcotest.(check string) "byte-identical" first second
 
+(* Any text, and texts made of the files' own words: the reader answers, never raises. *)
+let never_raises () =
+  let words = [| "signal"; "at"; "di"; "do"; "gi"; "ai"; "x1"; "1"; "0"; "-1"; "0.5"; "1e400"; "nan";
+                 "#"; "\\"; "\n"; "\r\n"; " "; "\t"; "EIO_SIGNAL:"; "EIO:CFG_1.0::"; "-Name"; "\"";
+                 "-SignalType"; "\"DI\""; "-Default"; "EIO_CROSS:"; "-" |] in
+  let gen = QCheck.Gen.(oneof [
+      string_size ~gen:printable (0 -- 200);
+      map (String.concat "") (list_size (0 -- 60) (oneofa words)) ]) in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 8 |])
+    (QCheck.Test.make ~count:3000 ~name:"io reader" (QCheck.make ~print:(Printf.sprintf "%S") gen)
+       (fun text -> match Io.parse ~file:"f" text with
+          | Ok _ -> true
+          | Error m -> String.length m > 5 && String.sub m 0 2 = "f:"))
+
 let suite =
   ("controller", [
       Alcotest.test_case "the stimulus file" `Quick stimulus_file;
       Alcotest.test_case "errors in the stimulus file: FILE:LINE:COL" `Quick stimulus_errors;
       Alcotest.test_case "EIO.cfg: EIO_SIGNAL entries" `Quick eio_file;
+      Alcotest.test_case "the io reader never raises" `Quick never_raises;
       Alcotest.test_case "the clock counts microseconds exactly" `Quick exact_clock;
       Alcotest.test_case "timed events in order" `Quick events_in_order;
       Alcotest.test_case "the interrupt queue and its capacity" `Quick queue;
