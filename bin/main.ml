@@ -93,6 +93,7 @@ let check_cmd =
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
           List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
+          Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
           if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -140,6 +141,8 @@ let event_json (e : M.event) : Yojson.Safe.t =
       `Assoc [ ("event", `String "error-handled"); ("name", `String name); ("routine", `String routine) ]
   | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", `String r) ]
   | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
+  | Stubbed { routine; at } ->
+      `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
 
 let schema = "rapid-sem/1"
 
@@ -152,7 +155,8 @@ let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
       base "stopped" [ ("name", `String name); ("number", `Int number); ("at", region_json at);
                        ("chain", `List (List.map (fun r -> `String r) chain)) ]
   | Resource_exhausted m -> base "exhausted" [ ("reason", `String m) ]
-  | Unsupported m -> base "unsupported" [ ("reason", `String m) ]
+  | Unsupported { name; reason; at } ->
+      base "unsupported" [ ("name", `String name); ("reason", `String reason); ("at", region_json at) ]
   | Stuck m -> base "stuck" [ ("reason", `String m) ]
 
 let finish (o : M.outcome) steps ~max_steps =
@@ -163,7 +167,10 @@ let finish (o : M.outcome) steps ~max_steps =
         (Source.to_string at) name (String.concat " <- " chain);
       exit_stopped
   | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
-  | Unsupported m -> Printf.eprintf "rapid-sem: %s\n" m; exit_unsupported
+  | Unsupported { reason; at; _ } ->
+      Printf.eprintf "%s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n"
+        (Source.to_string at) reason;
+      exit_unsupported
   | Stuck m -> Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n" m steps; exit_internal
   | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
 
@@ -174,7 +181,8 @@ let common_run_args =
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
   let max_depth = Arg.(value & opt int M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
   let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
-  (files, entry, max_steps, allow_unknown, max_depth, retry_limit)
+  let stub = Arg.(value & flag & info [ "stub-unmodelled" ] ~doc:"Run an installed routine whose behaviour rapid-sem does not model as a no-op (a function returns its type's initial value; VAR and INOUT arguments are left as they are), with one warning per routine, instead of ending the run with exit status 4.") in
+  (files, entry, max_steps, Term.(const (fun a b -> (a, b)) $ allow_unknown $ stub), max_depth, retry_limit)
 
 (* A run allocates frames that live as long as their routine: with deep recursion the live heap
    grows with the call depth, and the collector's default pace makes each step cost more the
@@ -182,13 +190,22 @@ let common_run_args =
    (bench/README.md, "The machine"). *)
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 
-let start_machine files entry allow_unknown max_depth retry_limit k =
+(* --stub-unmodelled: each stubbed routine once, at its first call. *)
+let report_stubbed events =
+  List.iter (function
+      | M.Stubbed { routine; at } ->
+          Printf.eprintf "%s: warning: %s is not modelled; --stub-unmodelled ran it as a no-op\n%!"
+            (Source.to_string at) routine
+      | _ -> ()) events
+
+let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_limit k =
   machine_gc ();
   match Rapid_semantics.Session.load ~allow_unknown files with
   | Error f -> report_load_failure f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } loaded.program ~entry with
+      Option.iter prerr_endline loaded.unknown_summary;
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } ~stub_unmodelled loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
@@ -202,6 +219,7 @@ let run_cmd =
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
+        report_stubbed events;
         List.iter (fun (e : M.event) ->
             if json then print_endline (Yojson.Safe.to_string (event_json e))
             else match e with Output s -> print_endline s | _ -> ()) events;
@@ -262,6 +280,7 @@ let trace_cmd =
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
         let depth = M.depth cfg in
         let rule, events = M.step cfg in
+        report_stubbed events;
         let n = M.steps cfg in
         if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
           match format with
@@ -283,7 +302,7 @@ let trace_cmd =
     if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported m | Stuck m -> m | Running -> "step limit") (M.steps cfg);
+        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "print the reductions of a run one by one" in

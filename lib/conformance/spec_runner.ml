@@ -41,7 +41,7 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
   let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
-  match M.start ~limits program ~entry:run.entry with
+  match M.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok cfg ->
       let max_steps = Option.value run.max_steps ~default:10_000_000 in
@@ -57,7 +57,7 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
         | Running | Resource_exhausted _ -> (3, None, None)
-        | Unsupported _ -> (4, None, None)
+        | Unsupported { name; at; _ } -> let p = Source.start at in (4, Some (name, p.line, p.col), file_of at)
         | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0), None)
       in
       let problems =

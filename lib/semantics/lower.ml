@@ -348,6 +348,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         Some { Ir.name = r.r_name; module_name; kind; parameters; locals = ctx.local_count;
                local_inits = inits; body = main; backward; error; undo;
                primitive = (if installed && is_empty then Some r.r_name else None); at = name.at;
+               stub_result = (match r.r_kind with Function t -> Some (shape_default t) | _ -> None);
                local = r.r_local }
     | _ -> None
   in

@@ -23,13 +23,14 @@ type event =
   | Error_handled of { name : string; routine : string }
   | Undo_run of string
   | Task_ended
+  | Stubbed of { routine : string; at : Source.region }
 
 type outcome =
   | Running
   | Ended
   | Stopped of { name : string; number : int; at : Source.region; chain : string list }
   | Resource_exhausted of string
-  | Unsupported of string
+  | Unsupported of { name : string; reason : string; at : Source.region }
   | Stuck of string
 
 type limits = { max_call_depth : int; retry_limit : int }
@@ -135,6 +136,8 @@ type config = {
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   mutable level : [ `Normal | `Trap | `User ];
   interrupt_queue : int Queue.t;
+  stub_unmodelled : bool;               (* --stub-unmodelled: unmodelled routines are no-ops *)
+  stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -183,7 +186,7 @@ let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
     call_depth = (match caller with None -> 1 | Some c -> c.call_depth + 1);
     handling = Body; retries = 0; retried = None }
 
-let start ?(limits = default_limits) (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?(stub_unmodelled = false) (program : Ir.program) ~entry =
   match routine_index program entry with
   | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
   | Some i ->
@@ -242,7 +245,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; interrupt_numbers = 0; unmarked = false; level = `Normal;
-          interrupt_queue = Queue.create ();
+          interrupt_queue = Queue.create (); stub_unmodelled; stubbed = Hashtbl.create 8;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         Ok cfg
@@ -330,9 +333,21 @@ let call_primitive cfg (cs : call_state) name =
           | Some arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
               ignore rule; ("call-by-var", List.rev !events)))
+  | Primitive.Not_modelled when cfg.stub_unmodelled ->
+      (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
+         initial value of its type (§2.22); VAR and INOUT arguments keep their values. *)
+      let key = String.lowercase_ascii name in
+      let first = not (Hashtbl.mem cfg.stubbed key) in
+      if first then Hashtbl.replace cfg.stubbed key ();
+      (match cs.callee.kind with
+       | Function -> cfg.focus <- F_value (V.copy (Option.value cs.callee.stub_result ~default:(V.num 0.)))
+       | Procedure | Trap -> cfg.focus <- F_next);
+      ("call-stubbed",
+       List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
   | Primitive.Not_modelled ->
       cfg.focus <- F_done (Unsupported
-                             (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name));
+                             { name = cs.callee.name; at = cs.call.call_at;
+                               reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" cs.callee.name });
       ("call-not-modelled", List.rev !events)
 
 let begin_call cfg (call : Ir.call) =
@@ -858,7 +873,8 @@ let expr_step cfg (e : Ir.expr) =
   | Literal v -> cfg.focus <- F_value v; ("literal", [])
   | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
   | Read_signal _ ->
-      cfg.focus <- F_done (Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet");
+      cfg.focus <- F_done (Unsupported { name = "signal"; at = e.at;
+                                         reason = "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet" });
       ("read-signal", [])
   | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
   | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
@@ -953,7 +969,7 @@ let rule_names = [
   "argument-value"; "argument-reference"; "argument-bound"; "argument-alias";
   "argument-alias-refused"; "argument-pass-on-present"; "argument-pass-on-absent"; "call-enter";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
-  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
+  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-stubbed"; "call-depth-exceeded"; "call-unknown";
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
   "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
   "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";

@@ -22,6 +22,9 @@ type event =
   | Error_handled of { name : string; routine : string }
   | Undo_run of string
   | Task_ended
+  | Stubbed of { routine : string; at : Rapid_syntax.Source.region }
+      (** --stub-unmodelled ran an unmodelled installed routine as a no-op: once per routine,
+          at its first call *)
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -32,7 +35,9 @@ type outcome =
       (** the system error handler stopped the task: the error, where it occurred, and the call
           chain at that point, innermost first *)
   | Resource_exhausted of string           (** call depth beyond the limit *)
-  | Unsupported of string                  (** an installed routine rapid-sem does not model yet *)
+  | Unsupported of { name : string; reason : string; at : Rapid_syntax.Source.region }
+      (** an installed routine rapid-sem does not model yet was called ([name] is the routine,
+          [at] the call), or an I/O signal was read ([name] is "signal") *)
   | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
 
 type limits = {
@@ -42,9 +47,13 @@ type limits = {
 
 val default_limits : limits
 
-val start : ?limits:limits -> Ir.program -> entry:string -> (config, string) result
+val start :
+  ?limits:limits -> ?stub_unmodelled:bool -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
-    (§2.21: static data initialised on load). [Error] when there is no such procedure. *)
+    (§2.21: static data initialised on load). [Error] when there is no such procedure.
+    [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
+    no-op (a function gives its type's initial value) instead of ending the run as
+    [Unsupported]. *)
 
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while
