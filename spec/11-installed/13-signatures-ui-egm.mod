@@ -20,7 +20,7 @@ MODULE sig_ui_egm
     UIMsgBox \Header:="Cell", "Part missing" \MsgLine2:="Load a part" \Buttons:=btnOKCancel
       \Icon:=iconWarning \Result:=answer \MaxTime:=30;
     answer := UIMessageBox(\Header:="Cell" \MsgArray:=lines \Wrap \Buttons:=btnYesNo
-      \DefaultBtn:=resYes \Icon:=iconQuestion);
+      \DefaultBtn:=resYes \Icon:=iconError);
     force := UINumEntry(\Header:="Force" \Message:="N" \Icon:=iconInfo \InitValue:=50
       \MinValue:=0 \MaxValue:=900 \AsInteger \MaxTime:=60);
     choice := UIListView(\Result:=answer \Header:="Menu", items \Buttons:=btnOK
