@@ -85,8 +85,8 @@ let unknown_name ctx region what name =
       compare (file a, Source.start_offset a) (file b, Source.start_offset b) < 0 in
     match Hashtbl.find_opt ctx.unknown_uses k with
     | Some (u, _) ->
-        let first = if earlier region u.first then region else u.first in
-        Hashtbl.replace ctx.unknown_uses k ({ u with first; uses = u.uses + 1 }, section)
+        let u = if earlier region u.first then { u with first = region; name } else u in
+        Hashtbl.replace ctx.unknown_uses k ({ u with uses = u.uses + 1 }, section)
     | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section)
   end
   else

@@ -15,7 +15,7 @@ val default_options : options
 (** A name neither declared nor installed, allowed by [allow_unknown]. *)
 type unknown_name = {
   what : string;                    (** "data object", "procedure", "function", "data type", "trap" *)
-  name : string;                    (** as first written *)
+  name : string;                    (** as written at its first use *)
   first : Rapid_syntax.Source.region; (** its first use in source order *)
   uses : int;
 }
