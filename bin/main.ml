@@ -174,6 +174,7 @@ let check_cmd =
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
           List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
+          Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
           if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -241,6 +242,8 @@ let event_json (e : M.event) : Yojson.Safe.t =
                ("trap", `String trap) ]
   | Trap_left { trap; time } ->
       `Assoc [ ("event", `String "trap-left"); ("time", time_json time); ("trap", `String trap) ]
+  | Stubbed { routine; at } ->
+      `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
 
 let schema = "rapid-sem/1"
 
@@ -254,7 +257,8 @@ let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
                         ("chain", `List (List.map text chain)) ]
                       @ (match about with Some a -> [ ("about", text a) ] | None -> []))
   | Resource_exhausted m -> base "exhausted" [ ("reason", text m) ]
-  | Unsupported m -> base "unsupported" [ ("reason", text m) ]
+  | Unsupported { name; reason; at } ->
+      base "unsupported" [ ("name", text name); ("reason", text reason); ("at", region_json at) ]
   | Stuck m -> base "stuck" [ ("reason", text m) ]
   | Deadlock m -> base "deadlock" [ ("reason", text m) ]
 
@@ -268,7 +272,10 @@ let finish (o : M.outcome) steps ~max_steps =
       exit_stopped
   | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
-  | Unsupported m -> Printf.eprintf "rapid-sem: %s\n" m; exit_unsupported
+  | Unsupported { reason; at; _ } ->
+      Printf.eprintf "%s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n"
+        (Source.to_string at) reason;
+      exit_unsupported
   | Stuck m -> Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n" m steps; exit_internal
   | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
 
@@ -280,7 +287,9 @@ let common_run_args =
   let max_depth = Arg.(value & opt int M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
   let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
   let max_memory = Arg.(value & opt int M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
-  (files, entry, max_steps, allow_unknown, max_depth, Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
+  let stub = Arg.(value & flag & info [ "stub-unmodelled" ] ~doc:"Run an installed routine whose behaviour rapid-sem does not model as a no-op (a function returns its type's initial value; VAR and INOUT arguments are left as they are), with one warning per routine, instead of ending the run with exit status 4.") in
+  (files, entry, max_steps, Term.(const (fun a b -> (a, b)) $ allow_unknown $ stub), max_depth,
+   Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
 
 (* A run allocates frames that live as long as their routine: with deep recursion the live heap
    grows with the call depth, and the collector's default pace makes each step cost more the
@@ -288,7 +297,15 @@ let common_run_args =
    (bench/README.md, "The machine"). *)
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 
-let start_machine files entry allow_unknown max_depth retry_limit controller k =
+(* --stub-unmodelled: each stubbed routine once, at its first call. *)
+let report_stubbed events =
+  List.iter (function
+      | M.Stubbed { routine; at } ->
+          Printf.eprintf "%s: warning: %s is not modelled; --stub-unmodelled ran it as a no-op\n%!"
+            (Source.to_string at) routine
+      | _ -> ()) events
+
+let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io with
   | Error m -> prerr_endline m; exit_static_error
@@ -300,10 +317,12 @@ let start_machine files entry allow_unknown max_depth retry_limit controller k =
   | Error f -> report_load_failure f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      Option.iter prerr_endline loaded.unknown_summary;
       let retry_limit, max_memory = retry_limit in
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world loaded.program ~entry with
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled
+              loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
@@ -317,6 +336,7 @@ let run_cmd =
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
+        report_stubbed events;
         List.iter (fun (e : M.event) ->
             if json then print_line (Yojson.Safe.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
@@ -390,6 +410,7 @@ let trace_cmd =
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
         let depth = M.depth cfg in
         let rule, events = M.step cfg in
+        report_stubbed events;
         let n = M.steps cfg in
         if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
           match format with
@@ -422,7 +443,7 @@ let trace_cmd =
     if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported m | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);
+        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "print the reductions of a run one by one" in

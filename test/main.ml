@@ -15,4 +15,5 @@ let () =
       Test_memory.suite;
       Test_motion.suite;
       Test_controller.suite;
+      Test_installed.suite;
     ]

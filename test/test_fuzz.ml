@@ -809,7 +809,7 @@ let programs_run () =
                 | Stuck m -> Alcotest.failf "stuck (%s) after %d steps:\n%s" m (M.steps cfg) text
                 | o -> if Sys.getenv_opt "FUZZ_STATS" <> None then prerr_endline (match o with
                     | Stopped { name; _ } -> "stopped " ^ name | Ended -> "ended" | Resource_exhausted m -> "exhausted " ^ m
-                    | Running -> "running" | Unsupported m -> "unsupported " ^ m | Deadlock m -> "deadlock " ^ m | Stuck _ -> "")))
+                    | Running -> "running" | Unsupported { name; _ } -> "unsupported " ^ name | Deadlock m -> "deadlock " ^ m | Stuck _ -> "")))
   done;
   (* The generator is meant to make checked programs: the property must not hold vacuously. *)
   if !checked < total * 9 / 10 then Alcotest.failf "only %d of %d generated programs pass the check" !checked total

@@ -63,8 +63,75 @@ let task_checks (name, files) =
           Alcotest.failf "false errors:\n%s"
             (String.concat "\n" (List.map Rapid_typing.Report.to_string errors)))
 
+(* The installed environment holds every installed name the corpus uses: what stays unknown
+   under --allow-unknown is only the I/O signals of the controllers' configurations, which the
+   corpus names by their type's prefix (README.md: di signaldi, do signaldo, ...). *)
+let is_signal_name name =
+  String.length name > 2
+  && List.mem (String.sub name 0 2) [ "di"; "do"; "gi"; "go"; "ai"; "ao" ]
+  && Char.uppercase_ascii name.[2] = name.[2] && Char.lowercase_ascii name.[2] <> name.[2]
+
+let installed () =
+  match Rapid_typing.Installed_env.modules () with
+  | Ok ms -> ms | Error d -> Alcotest.failf "installed: %s" (Diagnostic.to_string d)
+
+let only_signals_unknown (name, files) =
+  Alcotest.test_case ("only I/O signals unknown: " ^ name) `Quick (fun () ->
+      let result =
+        Rapid_typing.Check.check_task ~options:{ allow_unknown = true } ~installed:(installed ())
+          (List.map parse files) in
+      let others = List.filter (fun (u : Rapid_typing.Check.unknown_name) ->
+          not (u.what = "data object" && is_signal_name u.name)) result.unknown in
+      if others <> [] then
+        Alcotest.failf "names the installed environment lacks: %s"
+          (String.concat ", " (List.map (fun (u : Rapid_typing.Check.unknown_name) ->
+               Printf.sprintf "%s %s (%s)" u.what u.name (Source.to_string u.first)) others)))
+
+(* The polishing cell run as it is and with --stub-unmodelled. As it is, the run ends at the
+   first installed routine rapid-sem does not model (ConfL), at that call. Stubbed, the moves
+   and settings run as no-ops and the run goes on to the first feature that is genuinely
+   missing: SetDO of doPolisherOn, an I/O signal of the controller's configuration, which is
+   unknown here and raises ERR_REFUNKDAT when reached. *)
+let run_polishing ~stub_unmodelled =
+  let module M = Rapid_semantics.Machine in
+  match Rapid_semantics.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
+  | Error _ -> Alcotest.fail "the polishing cell does not load"
+  | Ok loaded -> (
+      match M.start ~stub_unmodelled loaded.program ~entry:"main" with
+      | Error m -> Alcotest.fail m
+      | Ok cfg ->
+          let stubbed = ref [] in
+          while M.outcome cfg = Running && M.steps cfg < 1_000_000 do
+            List.iter (function M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed | _ -> ())
+              (snd (M.step cfg))
+          done;
+          (M.outcome cfg, List.rev !stubbed))
+
+let place at =
+  let p = Source.start at in
+  ((match Source.file_of at with Some f -> Filename.basename (Source.name f) | None -> ""), p.line, p.col)
+
+let polishing_not_modelled () =
+  match run_polishing ~stub_unmodelled:false with
+  | Unsupported { name; at; _ }, [] ->
+      Alcotest.(check string) "routine" "ConfL" name;
+      Alcotest.(check (triple string int int)) "place" ("CadPolishCover.mod", 327, 9) (place at)
+  | _ -> Alcotest.fail "expected the run to end at ConfL, not modelled"
+
+let polishing_stubbed () =
+  match run_polishing ~stub_unmodelled:true with
+  | Stopped { name; at; _ }, stubbed ->
+      Alcotest.(check string) "error" "ERR_REFUNKDAT" name;
+      Alcotest.(check (triple string int int)) "place" ("CadPolishCover.mod", 329, 9) (place at);
+      Alcotest.(check (list string)) "stubbed, once each" [ "ConfL"; "SingArea" ] stubbed
+  | _ -> Alcotest.fail "expected the stubbed run to stop at the unknown signal doPolisherOn"
+
 let suite =
   ( "realworld",
     [ Alcotest.test_case "every file belongs to a task" `Quick every_file_in_a_task;
       Alcotest.test_case "every file parses and round-trips" `Quick parses_and_prints ]
-    @ List.map task_checks (tasks ()) )
+    @ List.map task_checks (tasks ())
+    @ List.map only_signals_unknown (tasks ())
+    @ [ Alcotest.test_case "polishing cell: exit 4 at the first unmodelled call" `Quick polishing_not_modelled;
+        Alcotest.test_case "polishing cell: --stub-unmodelled runs on to the first unknown signal" `Quick
+          polishing_stubbed ] )

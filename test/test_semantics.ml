@@ -57,7 +57,7 @@ let rules_in_spec () =
             let limits = { M.default_limits with
                            retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
             let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-            match M.start ~limits ~world program ~entry:run.entry with
+            match M.start ~limits ~world ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
             | Ok cfg ->
                 let max = Option.value run.max_steps ~default:1_000_000 in
                 while M.outcome cfg = Running && M.steps cfg < max do

@@ -9,6 +9,7 @@ type t = {
   expectation : expectation option;
   strict : bool;
   allow_unknown : bool;
+  stub_unmodelled : bool;
   description : string option;
   problems : string list;
   format : string;
@@ -87,7 +88,7 @@ let read path =
       |> List.map (Filename.concat path)
     else [ path ]
   in
-  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false; description = None;
+  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false; stub_unmodelled = false; description = None;
                 problems = []; format = "1"; run = None } in
   let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
   (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
@@ -119,6 +120,7 @@ let read path =
                       match w with
                       | "strict" -> { case with strict = true }
                       | "allow-unknown" -> { case with allow_unknown = true }
+                      | "stub-unmodelled" -> { case with stub_unmodelled = true }
                       | other -> add_problem case ("unknown option " ^ other))
                     case (String.split_on_char ' ' v |> List.filter (( <> ) ""))
               | Some ("description", v) -> { case with description = Some v }

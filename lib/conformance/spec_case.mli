@@ -14,6 +14,9 @@ type t = {
   expectation : expectation option;
   strict : bool;                  (** [! @options strict] *)
   allow_unknown : bool;           (** [! @options allow-unknown]: unknown names are warnings *)
+  stub_unmodelled : bool;
+      (** [! @options stub-unmodelled] (format 3): installed routines rapid-sem does not model
+          run as no-ops (rapid-sem run --stub-unmodelled) *)
   description : string option;
   problems : string list;         (** malformed or conflicting directives *)
   format : string;                (** [! @format N]; "1" when absent *)
@@ -25,7 +28,9 @@ and run = {
   entry : string;                 (** [! @entry NAME]; main by default *)
   outputs : string list;          (** [! @output TEXT], in order: the whole output *)
   exit_status : int;              (** [! @exit N]; 0 by default *)
-  error : (string * int * int) option;  (** [! @error NAME LINE:COL] *)
+  error : (string * int * int) option;
+      (** [! @error NAME LINE:COL]: with [@exit 1] the error and the statement where it
+          occurred; with [@exit 4] the installed routine rapid-sem does not model and its call *)
   error_file : string option;     (** [! @error NAME FILE:LINE:COL] in a [.task] case *)
   max_steps : int option;         (** [! @max-steps N] *)
   retry_limit : int option;       (** [! @retry-limit N] *)

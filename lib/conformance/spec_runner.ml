@@ -43,7 +43,7 @@ let run_program case (run : Spec_case.run) ~io ~installed ~modules (result : Rap
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  match M.start ~limits ~world program ~entry:run.entry with
+  match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok cfg ->
       let max_steps = Option.value run.max_steps ~default:10_000_000 in
@@ -59,7 +59,7 @@ let run_program case (run : Spec_case.run) ~io ~installed ~modules (result : Rap
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
         | Running | Resource_exhausted _ | Deadlock _ -> (3, None, None)
-        | Unsupported _ -> (4, None, None)
+        | Unsupported { name; at; _ } -> let p = Source.start at in (4, Some (name, p.line, p.col), file_of at)
         | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0), None)
       in
       let problems =

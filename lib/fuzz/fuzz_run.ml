@@ -40,6 +40,7 @@ let event_text (e : M.event) =
       Printf.sprintf "interrupt-discarded %d at %g (%s)" number time reason
   | Trap_entered { number; trap; time } -> Printf.sprintf "trap-entered %s %d at %g" trap number time
   | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
+  | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (place at)
 
 let outcome_text (o : M.outcome) =
   match o with
@@ -49,7 +50,7 @@ let outcome_text (o : M.outcome) =
       Printf.sprintf "stopped %s %d %s [%s]%s" name number (place at) (String.concat " " chain)
         (match about with Some a -> " about " ^ a | None -> "")
   | Resource_exhausted m -> "exhausted " ^ m
-  | Unsupported m -> "unsupported " ^ m
+  | Unsupported { name; at; _ } -> Printf.sprintf "unsupported %s %s" name (place at)
   | Deadlock m -> "deadlock " ^ m
   | Stuck m -> "stuck " ^ m
 

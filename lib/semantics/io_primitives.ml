@@ -319,12 +319,12 @@ let call (ctx : context) name args =
   | "aliasio" -> (
       (* AliasIO: the program's signal variable denotes the configured signal named by a signal
          object or a string, of the same kind (ERR_ALIASIO_DEF, ERR_ALIASIO_TYPE). *)
-      let from = match arg ctx args "FromSignal" with
-        | Location (box, i, _) -> (
-            match box.(i) with
-            | V.String name -> W.find_signal w name
-            | V.Handle h when W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
-            | _ -> None)
+      (* FromSignal is a value parameter (io.sys), so that a string literal names a signal too. *)
+      let given = match arg ctx args "FromSignal" with
+        | Value v -> Some v | Location (box, i, _) -> Some box.(i) | Switch | Missing -> None in
+      let from = match given with
+        | Some (V.String name) -> W.find_signal w name
+        | Some (V.Handle h) when W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
         | _ -> None in
       match from, arg ctx args "ToSignal" with
       | None, _ -> Some (Failed "ERR_ALIASIO_DEF")

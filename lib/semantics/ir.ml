@@ -153,6 +153,8 @@ type routine = {
   error : error_handler option;
   undo : block option;
   primitive : string option;                 (* an installed routine bound to a primitive *)
+  stub_result : Value.t option;              (* a function's result type's initial value, what
+                                                --stub-unmodelled returns (§2.22) *)
   local : bool;                              (* LOCAL: visible in its module only (§5.3) *)
   at : region;
 }

@@ -186,6 +186,12 @@ and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
   let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
   let value (e : A.expression) : Ir.argument =
     match p.p_mode with
+    | Mode_in when (match p.p_type with Some { base = Anytype; _ } -> true | _ -> false) -> (
+        (* An anytype parameter is no value context (§2.16): a semi-value object passed to
+           one (AliasIO's FromSignal) is the object, not its value (doc/rulings.md R-8-m). *)
+        match expr ctx ~dnum e with
+        | { e = Read_signal place; at } -> By_value { e = Read place; at }
+        | other -> By_value other)
     | Mode_in -> By_value (expr ctx ~dnum e)
     | Mode_ref when optional_parameter_slot ctx e <> None ->
         (* Present and the other REF parameters see an absent optional parameter as absent
@@ -377,6 +383,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         Some { Ir.name = r.r_name; module_name; kind; parameters; locals = ctx.local_count;
                local_inits = inits; body = main; backward; error; undo;
                primitive = (if installed && is_empty then Some r.r_name else None); at = name.at;
+               stub_result = (match r.r_kind with Function t -> Some (Value.default_of (shape_default t)) | _ -> None);
                local = r.r_local }
     | _ -> None
   in

@@ -30,6 +30,7 @@ type event =
   | Controller of W.observation
   | Trap_entered of { number : int; trap : string; time : float }
   | Trap_left of { trap : string; time : float }
+  | Stubbed of { routine : string; at : Source.region }
 
 type outcome =
   | Running
@@ -37,7 +38,7 @@ type outcome =
   | Stopped of { name : string; number : int; at : Source.region; chain : string list;
                  about : string option }
   | Resource_exhausted of string
-  | Unsupported of string
+  | Unsupported of { name : string; reason : string; at : Source.region }
   | Deadlock of string
   | Stuck of string
 
@@ -157,6 +158,8 @@ type config = {
      the activation's; the interrupt numbers and queue are the world's. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   world : W.t;                          (* the controller around the program *)
+  stub_unmodelled : bool;               (* --stub-unmodelled: unmodelled routines are no-ops *)
+  stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -231,7 +234,7 @@ let charge cfg (act : activation) bytes =
 
 let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
 
-let start ?(limits = default_limits) ?world (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) (program : Ir.program) ~entry =
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
@@ -300,6 +303,7 @@ let start ?(limits = default_limits) ?world (program : Ir.program) ~entry =
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
+          stub_unmodelled; stubbed = Hashtbl.create 8;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -455,9 +459,21 @@ let call_primitive cfg (cs : call_state) name =
           | Ok arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
               ignore rule; ("call-by-var", List.rev !events)))
+  | Primitive.Not_modelled when cfg.stub_unmodelled ->
+      (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
+         initial value of its type (§2.22); VAR and INOUT arguments keep their values. *)
+      let key = String.lowercase_ascii name in
+      let first = not (Hashtbl.mem cfg.stubbed key) in
+      if first then Hashtbl.replace cfg.stubbed key ();
+      (match cs.callee.kind with
+       | Function -> cfg.focus <- F_value (V.copy (Option.value cs.callee.stub_result ~default:(V.num 0.)))
+       | Procedure | Trap -> cfg.focus <- F_next);
+      ("call-stubbed",
+       List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
   | Primitive.Not_modelled ->
       cfg.focus <- F_done (Unsupported
-                             (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name));
+                             { name = cs.callee.name; at = cs.call.call_at;
+                               reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" cs.callee.name });
       ("call-not-modelled", List.rev !events)
 
 let begin_call cfg (call : Ir.call) =
@@ -1271,7 +1287,7 @@ let rule_names = [
   "argument-pass-on-duplicate"; "argument-aggregate"; "argument-fit"; "argument-fit-refused";
   "elseif"; "connect-not-variable"; "memory-exhausted";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
-  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
+  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-stubbed"; "call-depth-exceeded"; "call-unknown";
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
   "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
   "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";

@@ -28,6 +28,9 @@ type event =
   | Trap_entered of { number : int; trap : string; time : float }
       (** an interrupt is served: its trap runs (ch. 8) *)
   | Trap_left of { trap : string; time : float }
+  | Stubbed of { routine : string; at : Rapid_syntax.Source.region }
+      (** --stub-unmodelled ran an unmodelled installed routine as a no-op: once per routine,
+          at its first call *)
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -41,7 +44,9 @@ type outcome =
           name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
   | Resource_exhausted of string
       (** call depth beyond the limit, or RAPID data beyond the memory budget (with the place) *)
-  | Unsupported of string                  (** an installed routine rapid-sem does not model yet *)
+  | Unsupported of { name : string; reason : string; at : Rapid_syntax.Source.region }
+      (** an installed routine rapid-sem does not model yet was called ([name] is the routine,
+          [at] the call) *)
   | Deadlock of string                     (** a wait nothing can ever end (doc/controller.md) *)
   | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
 
@@ -56,9 +61,12 @@ type limits = {
 val default_limits : limits
 
 val start :
-  ?limits:limits -> ?world:Rapid_controller.World.t -> Ir.program -> entry:string -> (config, string) result
+  ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
-    (§2.21: static data initialised on load). [Error] when there is no such procedure. *)
+    (§2.21: static data initialised on load). [Error] when there is no such procedure.
+    [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
+    no-op (a function gives its type's initial value) instead of ending the run as
+    [Unsupported]. *)
 
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while

@@ -1,6 +1,6 @@
 open Rapid_syntax
 
-type loaded = { program : Ir.program; warnings : Rapid_typing.Report.t list }
+type loaded = { program : Ir.program; warnings : Rapid_typing.Report.t list; unknown_summary : string option }
 
 type failure =
   | Front_end of Diagnostic.t list
@@ -57,7 +57,7 @@ let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
         let program = connect_signals io (Lower.program ~installed ~modules result.elaboration) in
-        Ok { program; warnings = result.reports }
+        Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
 
 let load ?(strict = false) ?allow_unknown ?io files =
   let options = { Parse.default_options with strict } in

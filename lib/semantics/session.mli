@@ -6,6 +6,7 @@ open Rapid_syntax
 type loaded = {
   program : Ir.program;
   warnings : Rapid_typing.Report.t list;
+  unknown_summary : string option;   (** {!Rapid_typing.Check.unknown_summary} *)
 }
 
 type failure =

@@ -9,7 +9,9 @@ type options = { allow_unknown : bool }
 
 let default_options = { allow_unknown = false }
 
-type result = { reports : Report.t list; elaboration : Elaboration.t }
+type unknown_name = { what : string; name : string; first : Source.region; uses : int }
+
+type result = { reports : Report.t list; elaboration : Elaboration.t; unknown : unknown_name list }
 
 let errors r = List.filter (fun (d : Report.t) -> d.severity = Error) r.reports
 
@@ -33,6 +35,9 @@ type ctx = {
       (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
+  unknown_uses : (string * string, unknown_name * string) Hashtbl.t;
+      (* --allow-unknown: (kind, name in lower case) -> the name, its first use, the number of
+         uses, the sections; reported once per name when the task is checked *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -73,9 +78,17 @@ let unknown_name ctx region what name =
     | "procedure" -> "4.6,5.3,13"
     | "trap" -> "4.15,5.3,13"
     | _ -> "2.20,13" in
-  if ctx.options.allow_unknown then
-    Report.warning ctx.report ~rule:"unknown-name" ~section region
-      (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown)" what name)
+  if ctx.options.allow_unknown then begin
+    let k = (what, key name) in
+    let earlier a b =
+      let file r = match Source.file_of r with Some f -> Source.name f | None -> "" in
+      compare (file a, Source.start_offset a) (file b, Source.start_offset b) < 0 in
+    match Hashtbl.find_opt ctx.unknown_uses k with
+    | Some (u, _) ->
+        let u = if earlier region u.first then { u with first = region; name } else u in
+        Hashtbl.replace ctx.unknown_uses k ({ u with uses = u.uses + 1 }, section)
+    | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section)
+  end
   else
     error ctx ~rule:"unknown-name" ~section region "unknown %s %s: it is neither declared nor installed" what name
 
@@ -1459,6 +1472,7 @@ let builtin_environment report options =
     module_names = Env.create_table ();
     elab = Elaboration.create ();
     early_constants = Hashtbl.create 64;
+    unknown_uses = Hashtbl.create 16;
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
@@ -1530,4 +1544,23 @@ let check_task ?(options = default_options) ~installed modules =
   List.iter (fun (i, (routine, body)) ->
       if not i.is_installed then entry_routine ctx routine;
       routine_body ctx (module_place ctx i) routine body) bodies;
-  { reports = Report.all report; elaboration = ctx.elab }
+  (* --allow-unknown: one warning per unknown name, at its first use, with the number of uses. *)
+  let unknown = Hashtbl.fold (fun _ u acc -> u :: acc) ctx.unknown_uses [] in
+  List.iter (fun ((u : unknown_name), section) ->
+      Report.warning report ~rule:"unknown-name" ~section u.first
+        (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown): %s"
+           u.what u.name (if u.uses = 1 then "1 use" else Printf.sprintf "%d uses, the first here" u.uses)))
+    unknown;
+  let unknown = List.sort (fun (a : unknown_name) b ->
+      compare (String.lowercase_ascii a.name, a.what) (String.lowercase_ascii b.name, b.what))
+      (List.map fst unknown) in
+  { reports = Report.all report; elaboration = ctx.elab; unknown }
+
+let unknown_summary r =
+  match r.unknown with
+  | [] -> None
+  | names ->
+      let uses = List.fold_left (fun n u -> n + u.uses) 0 names in
+      Some (Printf.sprintf "%d name%s unknown (%d use%s); they are warnings under --allow-unknown"
+              (List.length names) (if List.length names = 1 then "" else "s")
+              uses (if uses = 1 then "" else "s"))

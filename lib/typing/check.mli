@@ -12,9 +12,19 @@ type options = {
 
 val default_options : options
 
+(** A name neither declared nor installed, allowed by [allow_unknown]. *)
+type unknown_name = {
+  what : string;                    (** "data object", "procedure", "function", "data type", "trap" *)
+  name : string;                    (** as written at its first use *)
+  first : Rapid_syntax.Source.region; (** its first use in source order *)
+  uses : int;
+}
+
 type result = {
-  reports : Report.t list;          (** errors and warnings, in source order *)
+  reports : Report.t list;          (** errors and warnings, in source order; under
+                                        [allow_unknown] one warning per unknown name *)
   elaboration : Elaboration.t;      (** what the dynamic semantics needs to know (no errors) *)
+  unknown : unknown_name list;      (** under [allow_unknown], by name *)
 }
 
 val check_task :
@@ -27,3 +37,7 @@ val check_task :
     [installed]. *)
 
 val errors : result -> Report.t list
+
+val unknown_summary : result -> string option
+(** Under [allow_unknown], when a name was unknown: ["N names unknown (M uses); they are
+    warnings under --allow-unknown"]. *)

@@ -33,6 +33,21 @@ let atomic_types : (string * Types.value_class * Types.data_type option) list = 
   (* The event that started the current trap, read by GetTrapData/ReadErrData after IError
      (installed-facts.md §6 names trapdata; its class is UNCERTAIN). *)
   ("trapdata", Types.Non_value, None);
+  (* The following are declared in RAPID only as the types of installed routines' parameters
+     (io.sys, system.sys, egm.sys, motion.sys); RobotWare's data type pages call each a
+     non-value type (UNCERTAIN: from memory of those pages). *)
+  (* A directory opened with OpenDir. *)
+  ("dir", Types.Non_value, None);
+  (* The meeting point of WaitSyncTask and SyncMoveOn. *)
+  ("syncident", Types.Non_value, None);
+  (* A trigger on the path, defined by TriggIO and used by TriggL. *)
+  ("triggdata", Types.Non_value, None);
+  (* A block of the program (task, module, routine) for GetDataVal and SetDataVal. *)
+  ("datapos", Types.Non_value, None);
+  (* An EGM process. *)
+  ("egmident", Types.Non_value, None);
+  (* A mechanical unit of the configuration (ROB_1, ...). *)
+  ("mecunit", Types.Non_value, None);
 ]
 
 let find name =

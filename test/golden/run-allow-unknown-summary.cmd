@@ -1,0 +1,1 @@
+run --allow-unknown unknown-repeated.mod

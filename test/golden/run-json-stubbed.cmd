@@ -1,0 +1,1 @@
+run --json --stub-unmodelled stub-unmodelled.mod

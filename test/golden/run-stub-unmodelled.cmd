@@ -1,0 +1,1 @@
+run --stub-unmodelled stub-unmodelled.mod

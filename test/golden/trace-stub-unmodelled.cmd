@@ -1,0 +1,1 @@
+trace --stub-unmodelled --rules call stub-unmodelled.mod

@@ -1,0 +1,75 @@
+(* The installed environment and the names it lacks: --allow-unknown reports each unknown name
+   once, at its first use in source order, with its number of uses (doc/typing.md, unknown-name);
+   every installed routine without a primitive is one the machine reports as not modelled. *)
+
+open Rapid_syntax
+
+let installed () =
+  match Rapid_typing.Installed_env.modules () with
+  | Ok ms -> ms | Error d -> Alcotest.failf "installed: %s" (Diagnostic.to_string d)
+
+let parse name text =
+  match Parse.parse_string ~name text with
+  | Ok m -> m | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
+
+let check modules =
+  Rapid_typing.Check.check_task ~options:{ allow_unknown = true } ~installed:(installed ()) modules
+
+let describe (u : Rapid_typing.Check.unknown_name) =
+  let p = Source.start u.first in
+  let file = match Source.file_of u.first with Some f -> Source.name f | None -> "" in
+  Printf.sprintf "%s %s %s:%d:%d x%d" u.what u.name file p.line p.col u.uses
+
+(* The module-level declaration of b.mod is judged before the routine bodies of a.mod, yet the
+   first use is a.mod's: source order is file order, then position. Letter case does not make
+   another name (§2.3); a procedure and a data object of one name are two unknown names. *)
+let first_use_in_source_order () =
+  let a = parse "a.mod" "MODULE a\n  PROC main()\n    Grip;\n    x := 1;\n    GRIP;\n  ENDPROC\nENDMODULE\n" in
+  let b = parse "b.mod" "MODULE b\n  VAR num y := X;\n  PROC other()\n    grip;\n  ENDPROC\nENDMODULE\n" in
+  let result = check [ a; b ] in
+  Alcotest.(check (list string)) "unknown names"
+    [ "procedure Grip a.mod:3:5 x3"; "data object x a.mod:4:5 x2" ]
+    (List.map describe result.unknown);
+  Alcotest.(check int) "one warning per name" 2
+    (List.length (List.filter (fun (r : Rapid_typing.Report.t) -> r.rule = "unknown-name") result.reports));
+  Alcotest.(check (option string)) "summary"
+    (Some "2 names unknown (5 uses); they are warnings under --allow-unknown")
+    (Rapid_typing.Check.unknown_summary result)
+
+(* Without --allow-unknown every use is an error: nothing is aggregated, nothing summed up. *)
+let errors_stay_per_use () =
+  let a = parse "a.mod" "MODULE a\n  PROC main()\n    Grip;\n    Grip;\n  ENDPROC\nENDMODULE\n" in
+  let result = Rapid_typing.Check.check_task ~installed:(installed ()) [ a ] in
+  Alcotest.(check int) "two errors" 2 (List.length (Rapid_typing.Check.errors result));
+  Alcotest.(check (option string)) "no summary" None (Rapid_typing.Check.unknown_summary result)
+
+(* A stubbed function gives its result type's initial value, whatever the type: a record
+   (robtarget of CRobT) is all zeros, and the run goes on. *)
+let stubbed_record_result () =
+  let m = parse "r.mod"
+      "MODULE r\n  VAR robtarget here;\n  PROC main()\n    here := CRobT(\\Tool:=tool0);\n    TPWrite \"x=\" \\Num:=here.trans.x + here.rot.q1;\n  ENDPROC\nENDMODULE\n" in
+  match Rapid_semantics.Session.load_modules [ m ] with
+  | Error _ -> Alcotest.fail "does not load"
+  | Ok loaded -> (
+      let module M = Rapid_semantics.Machine in
+      match M.start ~stub_unmodelled:true loaded.program ~entry:"main" with
+      | Error e -> Alcotest.fail e
+      | Ok cfg ->
+          let out = ref [] and stubbed = ref [] in
+          while M.outcome cfg = Running do
+            List.iter (function
+                | M.Output s -> out := s :: !out
+                | M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed
+                | _ -> ()) (snd (M.step cfg))
+          done;
+          Alcotest.(check bool) "ended" true (M.outcome cfg = Ended);
+          Alcotest.(check (list string)) "stubbed" [ "CRobT" ] !stubbed;
+          Alcotest.(check (list string)) "output" [ "x=0" ] !out)
+
+let suite =
+  ( "installed",
+    [ Alcotest.test_case "--allow-unknown: one report per name, first use in source order" `Quick
+        first_use_in_source_order;
+      Alcotest.test_case "without --allow-unknown: an error per use" `Quick errors_stay_per_use;
+      Alcotest.test_case "--stub-unmodelled: a record result is its initial value" `Quick
+        stubbed_record_result ] )
