@@ -188,6 +188,7 @@ let run_parser options file lexer =
   in
   let lexbuf = Lexing.from_string "" in
   let last = ref (Parser.EOF, Lexing.dummy_pos, Lexing.dummy_pos) in
+  let before_module = ref true in
   let next _ =
     let ((token, s, e) as t) = Lexer.next lexer in
     (match token with
@@ -195,6 +196,12 @@ let run_parser options file lexer =
          refuse Syntax_error (region_of t)
            "a %%% header block is not part of a module declaration (§9.2); \
             accepted without --strict (doc/dialect.md)"
+     | COMMENT _ when options.strict && !before_module ->
+         refuse Syntax_error (region_of t)
+           "a comment before MODULE is not part of a module declaration: comments are \
+            elements of the module's lists (§9.2, §2.10); accepted without --strict \
+            (doc/dialect.md)"
+     | MODULE -> before_module := false
      | _ -> ());
     last := t;
     lexbuf.lex_start_p <- s;
@@ -211,6 +218,7 @@ let run_parser options file lexer =
 let parse_decoded options name (decoded : Decode.t) =
   let file = Source.register ~name ~line_starts:decoded.line_starts in
   Parse_context.start file;
+  Parse_context.strict := options.strict;
   let at_start = Source.region file 0 1 in
   try
     if options.strict && decoded.byte_order_mark then
