@@ -232,7 +232,9 @@ let region_text r =
       let lines = match Hashtbl.find_opt source_cache name with
         | Some l -> l
         | None ->
-            let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
+            let l =
+              if name = Parse.stdin_name then Array.of_list (String.split_on_char '\n' (Parse.source_text "-"))
+              else match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
             Hashtbl.replace source_cache name l; l in
       let p = Source.start r and q = Source.stop r in
       if p.line < 1 || p.line > Array.length lines then ""
