@@ -9,6 +9,7 @@ let exit_ok = 0
 let exit_static_error = 2
 let exit_spec_failed = 1
 let exit_internal = 125
+let version = "0.1.0"
 
 (* No OCaml exception may reach a user as such: anything that escapes is a bug of rapid-sem,
    reported as one. *)
@@ -75,13 +76,24 @@ let check_cmd =
   let strict =
     Arg.(value & flag & info [ "strict" ] ~doc:"Refuse the dialect extensions of doc/dialect.md.")
   in
-  let run files allow_unknown strict =
+  let format =
+    Arg.(value & opt (enum [ ("text", Check_output.Text); ("json", Check_output.Json);
+                             ("sarif", Check_output.Sarif) ]) Check_output.Text
+         & info [ "format" ] ~docv:"FORMAT"
+             ~doc:"$(b,text) (standard error, the default), $(b,json) or $(b,sarif) (SARIF 2.1.0), \
+                   both on standard output: every diagnostic with its file, region, class, \
+                   sections, message and hint (doc/user-guide.md).")
+  in
+  let run files allow_unknown strict format =
     guard @@ fun () ->
     let options = { Parse.default_options with strict } in
     let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
     let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
-    List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) syntax_errors;
-    if syntax_errors <> [] then exit_static_error
+    let print = Check_output.print ~version format in
+    if syntax_errors <> [] then begin
+      print (List.map Check_output.of_diagnostic syntax_errors);
+      exit_static_error
+    end
     else
       match Rapid_typing.Installed_env.modules () with
       | Error d ->
@@ -92,7 +104,7 @@ let check_cmd =
           let modules = List.filter_map Result.to_option parsed in
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
+          print (List.map Check_output.of_report result.reports);
           if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -101,12 +113,14 @@ let check_cmd =
     `P "Reads each FILE as a module and checks them together as one task buffer (§9.1) \
         against the rules of chapters 2-5 and 9 of the RAPID kernel manual, with the installed \
         environment of types, data and routines that real programs use. Each error is reported \
-        on standard error as $(b,FILE:LINE:COL: semantic error: MESSAGE (§x.y)); independent \
-        errors are all reported in one run.";
+        on standard error as $(b,FILE:LINE:COL: semantic error: MESSAGE (§x.y)), with a hint \
+        on an indented next line where one helps; independent errors are all reported in one \
+        run. $(b,--format json) and $(b,--format sarif) write them all to standard output \
+        instead. A FILE $(b,-) is standard input.";
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -318,5 +332,5 @@ let spec_cmd =
 
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
-  let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
+  let info = Cmd.info "rapid-sem" ~version ~doc in
   exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd ]))

@@ -33,6 +33,8 @@ type ctx = {
       (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
+  unknown_reported : (string, unit) Hashtbl.t;
+      (* routine, kind and name of each unknown name reported in a routine: once is enough *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -65,19 +67,55 @@ let type_string = function
 
 (* ------------------------------------------------------------------ names *)
 
-(* §2.20, ch. 13: a name that is neither declared nor installed. *)
-let unknown_name ctx region what name =
-  let section = match what with
-    | "data type" -> "2.11,2.12,13"
-    | "function" -> "3.11,5.3,13"
-    | "procedure" -> "4.6,5.3,13"
-    | "trap" -> "4.15,5.3,13"
-    | _ -> "2.20,13" in
-  if ctx.options.allow_unknown then
-    Report.warning ctx.report ~rule:"unknown-name" ~section region
-      (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown)" what name)
-  else
-    error ctx ~rule:"unknown-name" ~section region "unknown %s %s: it is neither declared nor installed" what name
+(* The names in scope at [place] of the kind [what] names, innermost first, spelt as declared:
+   the candidates of "did you mean" (Suggest). *)
+let names_in_scope (place : place) what =
+  let fits (o : Env.obj) = match what, o with
+    | "data type", Type _ -> true
+    | "function", Routine { r_kind = Function _; _ } -> true
+    | "procedure", Routine { r_kind = Procedure; _ } -> true
+    | "trap", Routine { r_kind = Trap; _ } -> true
+    | "data object", Data _ -> true
+    | _ -> false
+  in
+  let spelling (o : Env.obj) = match o with
+    | Data d -> Some d.d_name | Routine r -> Some r.r_name | Type t -> Some t.t_name
+    | Label _ | Module _ -> None
+  in
+  let from table =
+    let acc = ref [] in
+    Env.iter (fun _ o -> if fits o then Option.iter (fun n -> acc := n :: !acc) (spelling o)) table;
+    List.sort compare !acc
+  in
+  let sc = place.scope in
+  List.concat_map from sc.routine @ from sc.module_objects
+  @ (if sc.in_installed_module then [] else from sc.globals) @ from sc.installed
+
+(* §2.20, ch. 13: a name that is neither declared nor installed. In a routine it is reported
+   at its first use only, not at every use; each module-level declaration is judged on its own.
+   The hint names the names in scope closest to it. *)
+let unknown_name ctx place region what name =
+  let k = match place.routine with
+    | Some r ->
+        Some (String.concat "\000" [ key place.module_name;
+                                      string_of_int (Source.start_offset r.r_region); what; key name ])
+    | None -> None in
+  if not (match k with Some k -> Hashtbl.mem ctx.unknown_reported k | None -> false) then begin
+    Option.iter (fun k -> Hashtbl.add ctx.unknown_reported k ()) k;
+    let section = match what with
+      | "data type" -> "2.11,2.12,13"
+      | "function" -> "3.11,5.3,13"
+      | "procedure" -> "4.6,5.3,13"
+      | "trap" -> "4.15,5.3,13"
+      | _ -> "2.20,13" in
+    let hint = Suggest.hint name (names_in_scope place what) in
+    if ctx.options.allow_unknown then
+      Report.warning ctx.report ?hint ~rule:"unknown-name" ~section region
+        (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown)" what name)
+    else
+      Report.error ctx.report ?hint ~rule:"unknown-name" ~section region
+        (Printf.sprintf "unknown %s %s: it is neither declared nor installed" what name)
+  end
 
 (* §2.11: <data type> ::= <identifier>, bound to a type definition. *)
 let resolve_type ctx place (id : identifier) : T.data_type option =
@@ -96,7 +134,7 @@ let resolve_type ctx place (id : identifier) : T.data_type option =
           error ctx ~rule:"data-type-name" ~section:"2.11,13" id.at "%s is a %s, not a data type" name
             (Env.obj_kind_name o);
           None
-      | None -> unknown_name ctx id.at "data type" name; None)
+      | None -> unknown_name ctx place id.at "data type" name; None)
 
 (* ------------------------------------------------------------------ constants *)
 
@@ -177,7 +215,7 @@ let rec reference ctx place (r : data_reference) : reference =
             ~section:(match o with Label _ -> "4.4,3.6" | _ -> "3.6,2.20,13") name.at "%s is a %s, not a data object"
             name.it (Env.obj_kind_name o);
           { object_ = None; rtype = Unknown }
-      | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
+      | None -> unknown_name ctx place name.at "data object" name.it; { object_ = None; rtype = Unknown })
   | Element (name, indexes) -> (
       let whole = reference ctx place { it = Entire name.it; at = name.at } in
       List.iter (fun i -> check_expression ~sections:"3.6,2.17" ctx place i (T.scalar Num)) indexes;
@@ -532,13 +570,15 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | _, ({ it = ARG_placeholder; _ } :: rest) -> go (match slots with _ :: s -> s | [] -> []) rest
     | [], [] -> ()
     | [], a :: _ ->
-        error ctx ~rule:"argument-count" ~section:call a.at "%s takes no more arguments" routine.r_name
+        Report.error ctx.report ?hint:(backslash_hint ctx place routine a) ~rule:"argument-count"
+          ~section:call a.at (Printf.sprintf "%s takes no more arguments" routine.r_name)
     | Env.Required_slot p :: slots, ({ it = Required_argument (name, e, e_at); _ } as a) :: rest ->
         let e = operand e e_at in
         (match Option.bind name name_of_identifier with
          | Some n when not (T.same_name n p.p_name) ->
-             error ctx ~rule:"argument-name" ~section:call a.at
-               "the argument is named %s, but the parameter in this place is %s" n p.p_name
+             Report.error ctx.report ?hint:(backslash_hint ctx place routine a) ~rule:"argument-name"
+               ~section:call a.at
+               (Printf.sprintf "the argument is named %s, but the parameter in this place is %s" n p.p_name)
          | _ -> ());
         argument ~call ctx place a e p;
         bind p a;
@@ -602,6 +642,38 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
             error ctx ~rule:"argument-name" ~section:call a.at "%s has no optional parameter %s" routine.r_name n
       | _ -> ()) args
 
+(* §4.6, §3.11: an optional argument is written with a backslash and its parameter's name. A
+   required argument that names an optional parameter ("WObj:=wobj0"), or one more argument
+   than the required parameters take whose type is that of exactly one optional parameter
+   ("TPWrite "a = ", a;"), most likely lacks the backslash: the hint writes it out. *)
+and backslash_hint ctx place (routine : Env.routine) (a : argument) =
+  let optionals = List.concat_map (function
+      | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) routine.r_slots in
+  let written e = Rapid_syntax.Printer.expression e in
+  match a.it with
+  | Required_argument (Some { it = Ident n; _ }, e, e_at) -> (
+      match List.find_opt (fun (p : Env.parameter) -> T.same_name p.p_name n) optionals with
+      | Some p ->
+          Some (Printf.sprintf "%s is an optional parameter of %s: write \\%s:=%s (§4.6)"
+                  p.p_name routine.r_name p.p_name (written (operand e e_at)))
+      | None -> None)
+  | Positional_argument _ | Required_argument (None, _, _) -> (
+      let e = match Ast.argument_value a with Some e -> e | None -> operand EXP_placeholder a.at in
+      (* The argument's type, judged apart: its errors are not this call's to report. *)
+      let quiet = { ctx with report = Report.create (); unknown_reported = Hashtbl.copy ctx.unknown_reported } in
+      let fits (p : Env.parameter) =
+        match infer quiet place e, p.p_type with
+        | Known t, Some pt -> T.equal_types ~value_context:true t pt
+        | Numeric_literal, Some pt -> pt.base = T.Num && pt.dims = T.Scalar
+        | _ -> false
+      in
+      match List.filter fits optionals with
+      | [ p ] ->
+          Some (Printf.sprintf "an optional argument is written with a backslash and its \
+                                parameter's name: \\%s:=%s (§4.6)" p.p_name (written e))
+      | _ -> None)
+  | _ -> None
+
 (* §3.11: an optional argument gives the parameter's value (a switch has none); a conditional
    argument passes on an optional parameter of the calling routine. *)
 and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
@@ -654,7 +726,7 @@ and function_call ctx place region (call : function_call) : ty =
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
             (Env.obj_kind_name o);
           Unknown
-      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
+      | None -> unknown_name ctx place call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
 
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
@@ -843,7 +915,7 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
             "%s is a %s, not a procedure" name
             (Env.obj_kind_name o);
           loose ()
-      | None -> unknown_name ctx id.at "procedure" name; loose ())
+      | None -> unknown_name ctx place id.at "procedure" name; loose ())
 
 (* §4.7: GOTO continues at a label of the same routine, and may not transfer control into a
    statement list: the label stands in the GOTO's own statement list or an enclosing one. *)
@@ -920,7 +992,7 @@ and connect ctx place (target : data_reference) (trap : identifier) =
       | Some o ->
           error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
             (Env.obj_kind_name o)
-      | None -> unknown_name ctx trap.at "trap" name)
+      | None -> unknown_name ctx place trap.at "trap" name)
 
 (* §4.18: the loop variable is declared by its appearance, of type num, read-only, scoped to the
    loop's statement list, hiding other objects of the same name; FROM, TO and STEP are num. *)
@@ -1186,7 +1258,7 @@ let recovery_error_number ctx place (n : recovery_error_number) =
       | Some o ->
           error ctx ~rule:"error-number-list" ~section:"7.2" n.at "%s is a %s, not an error number" name.it
             (Env.obj_kind_name o)
-      | None -> unknown_name ctx name.at "data object" name.it)
+      | None -> unknown_name ctx place name.at "data object" name.it)
 
 let routine_body ctx (module_place : place) (routine : Env.routine) (body : routine_body) =
   let table = Env.create_table () in
@@ -1444,6 +1516,7 @@ let builtin_environment report options =
     module_names = Env.create_table ();
     elab = Elaboration.create ();
     early_constants = Hashtbl.create 64;
+    unknown_reported = Hashtbl.create 16;
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
