@@ -98,7 +98,27 @@ let json_shape () =
       Alcotest.(check int) "warnings" (count "warning") (int_field "warnings" doc))
     files
 
+(* "did you mean": the distance, the limit, ties, letter case (§2.3). *)
+let suggestions () =
+  let open Rapid_typing in
+  Alcotest.(check int) "substitution" 1 (Suggest.distance "tool0" "tool1");
+  Alcotest.(check int) "transposition" 1 (Suggest.distance "WObj" "wboj");
+  Alcotest.(check int) "letter case" 0 (Suggest.distance "TPWRITE" "TPWrite");
+  Alcotest.(check int) "insertion" 1 (Suggest.distance "countr" "counter");
+  Alcotest.(check int) "two edits" 2 (Suggest.distance "cnter" "counter");
+  Alcotest.(check (list string)) "nearest only" [ "tool0" ]
+    (Suggest.closest "tol0" [ "tool0"; "tooldata"; "wobj0"; "tol00x" ]);
+  Alcotest.(check (list string)) "ties, at most three, in the order given" [ "p10"; "p11"; "p12" ]
+    (Suggest.closest "p1x" [ "p10"; "p11"; "p12"; "p13"; "v100" ]);
+  Alcotest.(check (list string)) "too far" [] (Suggest.closest "pHome" [ "pStart"; "pHomePosition" ]);
+  Alcotest.(check (list string)) "short names get none" [] (Suggest.closest "p" [ "a"; "p1" ]);
+  Alcotest.(check (list string)) "the same name in another case is no suggestion" []
+    (Suggest.closest "reg1" [ "REG1" ]);
+  Alcotest.(check (option string)) "hint" (Some "did you mean a12, a13 or a14?")
+    (Suggest.hint "a1x" [ "a12"; "a13"; "a14" ])
+
 let suite =
   ( "check-output",
     [ Alcotest.test_case "SARIF 2.1.0 required fields, one result per diagnostic" `Quick sarif_shape;
-      Alcotest.test_case "JSON fields, one item per diagnostic" `Quick json_shape ] )
+      Alcotest.test_case "JSON fields, one item per diagnostic" `Quick json_shape;
+      Alcotest.test_case "did you mean" `Quick suggestions ] )

@@ -210,6 +210,7 @@ let begins_statement cx j =
           let rec back k depth =
             if k < 0 then false
             else match cx.tokens.(k).token with
+              | SEMICOLON -> false
               | RPAREN -> back (k - 1) (depth + 1)
               | LPAREN when depth = 1 ->
                   k >= 2 && (match cx.tokens.(k - 2).token with PROC -> true | _ -> false)
