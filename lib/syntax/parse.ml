@@ -236,7 +236,8 @@ let parse_decoded options name (decoded : Decode.t) =
     Ok m
   with
   | Refused d -> Error d
-  | Lexer.Error (region, message) -> Error (Diagnostic.make Lexical_error region message)
+  | Lexer.Error (region, message) ->
+      Error (Diagnostic.make ?hint:(Syntax_hint.lexical_hint message) Lexical_error region message)
   | Parse_context.Refused (region, message) -> Error (Diagnostic.make Syntax_error region message)
 
 (* Speed (bench/README.md): nearly all that a parse allocates is the tree, which stays alive

@@ -144,9 +144,16 @@ let missing_header_word cx stack =
       match header_word o.word with
       | Some w when header_end cx w o.at cx.error = None && o.at < cx.error - 1
                     && (o.word <> "FOR" || range_complete cx o.at) ->
-          Some (Printf.sprintf "%s has no %s after its %s (§%s)"
-                  (describe cx o) w
-                  (if o.word = "FOR" then "range" else "condition") o.section)
+          let wrong = match cx.tokens.(cx.error).token with
+            | THEN when w = "DO" -> Some "THEN" | DO when w = "THEN" -> Some "DO" | _ -> None in
+          (match wrong with
+           | Some found ->
+               Some (Printf.sprintf "%s takes %s after its %s, not %s (§%s)" (describe cx o) w
+                       (if o.word = "FOR" then "range" else "condition") found o.section)
+           | None ->
+               Some (Printf.sprintf "%s has no %s after its %s (§%s)"
+                       (describe cx o) w
+                       (if o.word = "FOR" then "range" else "condition") o.section))
       | _ -> None)
   | [] -> None
 
@@ -284,6 +291,60 @@ let equals_for_assignment cx =
     | _ -> None
   else None
 
+(* Tokens that may end an expression, and so a statement that lacks its ';'. *)
+let ends_expression = function
+  | IDENT _ | TASK _ | NUM _ | STRING _ | TRUE | FALSE | RPAREN | RBRACKET | RBRACE -> true
+  | _ -> false
+
+(* Tokens that begin a statement, a declaration or an end word at the start of a line. *)
+let begins_line_item = function
+  | IDENT _ | TASK _ | IF | WHILE | FOR | TEST | RETURN | RAISE | EXIT | RETRY | TRYNEXT | GOTO
+  | BREAK | CONTINUE | CONNECT | VAR | PERS | CONST | LOCAL | ENDIF | ENDWHILE | ENDFOR | ENDTEST
+  | ENDPROC | ENDFUNC | ENDTRAP | ELSE | ELSEIF | CASE | DEFAULT | ERROR | UNDO | BACKWARD
+  | ENDRECORD | ENDMODULE | PROC | FUNC | TRAP | PERCENT -> true
+  | _ -> false
+
+(* The first token of the line the token [i] stands on. *)
+let first_of_line cx i =
+  let line = line_of cx i in
+  let rec back j = if j > 0 && line_of cx (j - 1) = line then back (j - 1) else j in
+  back i
+
+(* Tokens that begin a simple statement or a declaration, which end with ';'. *)
+let begins_simple_item = function
+  | IDENT _ | TASK _ | GOTO | RETURN | RAISE | VAR | PERS | CONST | LOCAL | ALIAS | CONNECT
+  | PERCENT -> true
+  | _ -> false
+
+(* §4.3, §2.18: a statement or declaration whose ';' is missing is refused at the next line's
+   first token (or at a comment on its line). The line that lacks it must begin like a simple
+   statement or a declaration: a header line (IF ... THEN, CASE 1:, PROC p()) ends otherwise. *)
+let missing_semicolon cx =
+  let k = cx.error in
+  if k < 1 || not (begins_simple_item cx.tokens.(first_of_line cx (k - 1)).token) then None
+  else
+    let prev = cx.tokens.(k - 1) and t = cx.tokens.(k) in
+    let next_line = line_of cx k > (Source.pos_of_offset cx.file prev.stop).line in
+    match t.token with
+    | COMMENT _ when ends_expression prev.token && not next_line ->
+        Some (Printf.sprintf "';' is missing before the comment on line %d: a simple statement \
+                              and a declaration end with ';' (§4.3, §2.18)" (line_of cx k))
+    | tok when ends_expression prev.token && next_line && begins_line_item tok ->
+        Some (Printf.sprintf "';' is missing at the end of line %d: a simple statement and a \
+                              declaration end with ';' (§4.3, §2.18)"
+                (Source.pos_of_offset cx.file prev.stop).line)
+    | _ -> None
+
+(* §3.1: the logical operators are words. *)
+let operator_words cx =
+  let k = cx.error in
+  match cx.tokens.(k).token with
+  | BAR when k + 1 < Array.length cx.tokens && cx.tokens.(k + 1).token = BAR ->
+      Some "'or' is written OR (§3.1)"
+  | COMMENT c when String.length c > 0 && c.[0] = '=' ->
+      Some "'!' begins a comment (§2.10): 'not equal' is written <> (§3.1)"
+  | _ -> None
+
 let first_some fs = List.fold_left (fun acc f -> match acc with Some _ -> acc | None -> f ()) None fs
 
 let find cx =
@@ -292,14 +353,29 @@ let find cx =
     let stack, compact = scan cx in
     first_some [
       (fun () -> double_equal cx);
+      (fun () -> operator_words cx);
       (fun () -> equals_for_assignment cx);
       (fun () -> unclosed cx stack compact);
       (fun () -> missing_header_word cx stack);
       (fun () -> procedure_with_parentheses cx);
+      (fun () -> missing_semicolon cx);
     ]
 
 (* The tokens past the error that the hints look at: the rest of the statement. *)
 let lookahead = 64
+
+(* Lexical errors: characters other languages use where RAPID has a word or another delimiter. *)
+let lexical_hint message =
+  let mentions c =
+    let needle = Printf.sprintf "illegal character '%c'" c in
+    let n = String.length needle and m = String.length message in
+    let rec go i = i + n <= m && (String.sub message i n = needle || go (i + 1)) in
+    go 0
+  in
+  if mentions '\'' then Some "a string literal is written between double quotes: \"text\" (§2.7)"
+  else if mentions '&' then Some "'and' is written AND (§3.1); strings are joined with + (§3.12)"
+  else if mentions '#' then Some "a comment begins with '!' (§2.10)"
+  else None
 
 let hint file (decoded : Decode.t) ~installed ~error_start =
   let lexer = Lexer.create ~installed file decoded in

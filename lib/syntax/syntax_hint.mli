@@ -7,3 +7,6 @@ val hint :
 (** [hint file decoded ~installed ~error_start]: the hint for a syntax error at the token that
     starts at character offset [error_start], from the tokens of [decoded] read again from its
     start. [None] when no mistake is recognised. Never raises. *)
+
+val lexical_hint : string -> string option
+(** The hint for a lexical error's message: a string in single quotes, [&], [#]. *)
