@@ -9,24 +9,35 @@ open Parser
 
 type token_at = { token : Parser.token; start : int; stop : int }  (* character offsets *)
 
-(* The compound constructs whose end words chapter 10 pairs with their openers. *)
+(* The tokens past the error that the hints look at: the rest of the statement. *)
+let lookahead = 64
+
+(* The compound constructs whose end words chapter 10 pairs with their openers, as the scan
+   met them: all it later needs is kept here, so that only a window of tokens is kept. *)
 type opener = {
   word : string;          (* IF, WHILE, FOR, TEST, PROC, FUNC, TRAP, RECORD, MODULE *)
   closer : string;        (* ENDIF, ... *)
   section : string;
-  at : int;               (* index of the opening token *)
+  line : int;
+  order : int;            (* the opening token's number in the file *)
+  mutable name : string;  (* of a routine, record or module, once read *)
+  mutable name_in : int;  (* tokens until the name: 1 after PROC, 2 after FUNC; 0 none *)
+  mutable condition_at : int;   (* offset of the token after the opener, -1 before it *)
+  mutable header_open : bool;   (* IF, WHILE, FOR: THEN or DO not met yet *)
+  mutable range_words : int;    (* FOR: FROM and TO met *)
+  mutable else_if_line : int;   (* IF: line of an ELSE IF inside it, 0 none *)
 }
 
-let opener_of index = function
-  | IF -> Some { word = "IF"; closer = "ENDIF"; section = "4.16"; at = index }
-  | WHILE -> Some { word = "WHILE"; closer = "ENDWHILE"; section = "4.19"; at = index }
-  | FOR -> Some { word = "FOR"; closer = "ENDFOR"; section = "4.18"; at = index }
-  | TEST -> Some { word = "TEST"; closer = "ENDTEST"; section = "4.20"; at = index }
-  | PROC -> Some { word = "PROC"; closer = "ENDPROC"; section = "5.4"; at = index }
-  | FUNC -> Some { word = "FUNC"; closer = "ENDFUNC"; section = "5.5"; at = index }
-  | TRAP -> Some { word = "TRAP"; closer = "ENDTRAP"; section = "5.6"; at = index }
-  | RECORD -> Some { word = "RECORD"; closer = "ENDRECORD"; section = "2.14"; at = index }
-  | MODULE -> Some { word = "MODULE"; closer = "ENDMODULE"; section = "9.2"; at = index }
+let opener_of = function
+  | IF -> Some ("IF", "ENDIF", "4.16", 0)
+  | WHILE -> Some ("WHILE", "ENDWHILE", "4.19", 0)
+  | FOR -> Some ("FOR", "ENDFOR", "4.18", 0)
+  | TEST -> Some ("TEST", "ENDTEST", "4.20", 0)
+  | PROC -> Some ("PROC", "ENDPROC", "5.4", 1)
+  | FUNC -> Some ("FUNC", "ENDFUNC", "5.5", 2)
+  | TRAP -> Some ("TRAP", "ENDTRAP", "5.6", 1)
+  | RECORD -> Some ("RECORD", "ENDRECORD", "2.14", 1)
+  | MODULE -> Some ("MODULE", "ENDMODULE", "9.2", 1)
   | _ -> None
 
 let closer_word = function
@@ -39,16 +50,62 @@ let closer_word = function
    (§4.18). *)
 let header_word = function "IF" -> Some "THEN" | "WHILE" | "FOR" -> Some "DO" | _ -> None
 
-let is_header_end word (t : Parser.token) =
-  match word, t with
-  | "THEN", THEN | "DO", DO -> true
-  | _ -> false
+(* The compound statements and declarations open before the error, innermost first, and the
+   last compact IF (an IF whose statement ended with ';' before any THEN), read token by token
+   from the start of the file. *)
+type scanner = {
+  file : Source.file;
+  mutable stack : opener list;
+  mutable compact : opener option;
+  mutable previous : Parser.token;
+  mutable count : int;
+}
+
+let new_scanner file = { file; stack = []; compact = None; previous = EOF; count = 0 }
+
+let step sc (t : Parser.token) start =
+  let line () = (Source.pos_of_offset sc.file start).line in
+  (* What the innermost opener learns from the token after it. *)
+  (match sc.stack with
+   | o :: rest ->
+       if o.condition_at < 0 then o.condition_at <- start;
+       if o.name_in > 0 then begin
+         o.name_in <- o.name_in - 1;
+         if o.name_in = 0 then
+           (match t with IDENT s | TASK s -> o.name <- s | _ -> ())
+       end;
+       if o.header_open then begin
+         match o.word, t with
+         | "IF", THEN | ("WHILE" | "FOR"), DO -> o.header_open <- false
+         | "IF", SEMICOLON -> sc.stack <- rest; sc.compact <- Some o
+         | "FOR", (FROM | TO) -> o.range_words <- o.range_words + 1
+         | _ -> ()
+       end
+   | [] -> ());
+  (match opener_of t with
+   | Some (word, closer, section, name_in) ->
+       let o = { word; closer; section; line = line (); order = sc.count; name = "";
+                 name_in; condition_at = -1; header_open = header_word word <> None;
+                 range_words = 0; else_if_line = 0 } in
+       (match t, sc.previous, sc.stack with
+        | IF, ELSE, (p :: _) when p.word = "IF" && p.else_if_line = 0 -> p.else_if_line <- o.line
+        | _ -> ());
+       sc.stack <- o :: sc.stack
+   | None -> (
+       match closer_word t, sc.stack with
+       | Some w, o :: rest when o.closer = w -> sc.stack <- rest
+       | _ -> ()));
+  sc.previous <- t;
+  sc.count <- sc.count + 1
 
 type context = {
   file : Source.file;
   text : string;              (* the decoded text, UTF-8 *)
-  tokens : token_at array;    (* from the start of the file, past the error where they lex *)
-  error : int;                (* index of the error token *)
+  tokens : token_at array;    (* a window: the tokens before the error, the error's, a few after *)
+  error : int;                (* index of the error token in [tokens] *)
+  from_start : bool;          (* the window begins at the file's first token *)
+  stack : opener list;
+  compact : opener option;
 }
 
 let line_of cx i = (Source.pos_of_offset cx.file cx.tokens.(i).start).line
@@ -74,110 +131,52 @@ let slice cx start stop =
 let token_text cx i = slice cx cx.tokens.(i).start cx.tokens.(i).stop
 
 (* An opener's description: "the IF at line 4", "the PROC main at line 2". *)
-let describe cx (o : opener) =
-  let name_after i =
-    if i < Array.length cx.tokens then
-      match cx.tokens.(i).token with IDENT s | TASK s -> " " ^ s | _ -> ""
-    else ""
-  in
-  let name = match o.word with
-    | "PROC" | "TRAP" | "RECORD" | "MODULE" -> name_after (o.at + 1)
-    | "FUNC" -> name_after (o.at + 2)
-    | _ -> ""
-  in
-  Printf.sprintf "the %s%s at line %d" o.word name (line_of cx o.at)
-
-(* Where the header of the IF, WHILE or FOR at [i] ends: the index of its THEN or DO, of the
-   ';' that ends a compact IF (§4.17), or [None] when neither comes before [limit]. *)
-let header_end cx word i limit =
-  let rec go j =
-    if j >= limit then None
-    else match cx.tokens.(j).token with
-      | SEMICOLON -> Some (`Compact j)
-      | t when is_header_end word t -> Some (`Block j)
-      | _ -> go (j + 1)
-  in
-  go (i + 1)
-
-(* The compound statements and declarations open before the error, innermost first, and the
-   last compact IF (an IF whose statement ended without THEN). *)
-let scan cx =
-  let stack = ref [] and compact = ref None in
-  let i = ref 0 in
-  while !i < cx.error do
-    let t = cx.tokens.(!i).token in
-    (match opener_of !i t with
-     | Some o -> (
-         match header_word o.word with
-         | Some w -> (
-             match header_end cx w !i cx.error with
-             | Some (`Compact _) when o.word = "IF" -> compact := Some o
-             | Some (`Block _) | None -> stack := o :: !stack
-             | Some (`Compact _) -> stack := o :: !stack)
-         | None -> stack := o :: !stack)
-     | None -> (
-         match closer_word t with
-         | Some w -> (
-             match !stack with
-             | o :: rest when o.closer = w -> stack := rest
-             | _ -> ())
-         | None -> ()));
-    incr i
-  done;
-  (!stack, !compact)
+let describe (o : opener) =
+  Printf.sprintf "the %s%s at line %d" o.word (if o.name = "" then "" else " " ^ o.name) o.line
 
 let no_then cx (o : opener) =
-  Printf.sprintf "%s has no THEN after its condition (at %s), so it was read as a compact IF \
+  Printf.sprintf "%s has no THEN after its condition%s, so it was read as a compact IF \
                   (§4.17), which takes one simple statement and no ENDIF: write THEN after the \
                   condition (§4.16)"
-    (describe cx o) (pos_string cx cx.tokens.(o.at + 1).start)
+    (describe o) (if o.condition_at < 0 then "" else " (at " ^ pos_string cx o.condition_at ^ ")")
 
-(* A FOR whose FROM and TO came before the error: what is missing is its DO (or STEP). *)
-let range_complete cx at =
-  let seen t = let rec go j = j < cx.error && (cx.tokens.(j).token = t || go (j + 1)) in go at in
-  seen FROM && seen TO
-
-(* An IF, WHILE or FOR whose header is still open at the error: its THEN or DO is missing. *)
+(* An IF, WHILE or FOR whose header is still open at the error: its THEN or DO is missing (for
+   a FOR, once its FROM and TO came). *)
 let missing_header_word cx stack =
   match stack with
   | (o : opener) :: _ -> (
       match header_word o.word with
-      | Some w when header_end cx w o.at cx.error = None && o.at < cx.error - 1
-                    && (o.word <> "FOR" || range_complete cx o.at) ->
+      | Some w when o.header_open && o.condition_at >= 0
+                    && o.condition_at < cx.tokens.(cx.error).start
+                    && (o.word <> "FOR" || o.range_words >= 2) ->
           let wrong = match cx.tokens.(cx.error).token with
             | THEN when w = "DO" -> Some "THEN" | DO when w = "THEN" -> Some "DO" | _ -> None in
           (match wrong with
            | Some found ->
-               Some (Printf.sprintf "%s takes %s after its %s, not %s (§%s)" (describe cx o) w
+               Some (Printf.sprintf "%s takes %s after its %s, not %s (§%s)" (describe o) w
                        (if o.word = "FOR" then "range" else "condition") found o.section)
            | None ->
                Some (Printf.sprintf "%s has no %s after its %s (§%s)"
-                       (describe cx o) w
+                       (describe o) w
                        (if o.word = "FOR" then "range" else "condition") o.section))
       | _ -> None)
   | [] -> None
 
 (* §4.16: "ELSE IF" inside the open IF [o] opened a nested IF, whose ENDIF closed it; the
    outer one is then left without its ENDIF. *)
-let else_if cx (o : opener) =
-  if o.word <> "IF" then None
+let else_if (o : opener) =
+  if o.word <> "IF" || o.else_if_line = 0 then None
   else
-    let rec go j =
-      if j + 1 >= cx.error then None
-      else if cx.tokens.(j).token = ELSE && cx.tokens.(j + 1).token = IF then
-        Some (Printf.sprintf "%s is not closed: the ELSE IF at line %d opened a new IF, closed by \
-                              the first ENDIF; write ELSEIF for another condition of the same IF \
-                              (§4.16)" (describe cx o) (line_of cx j))
-      else go (j + 1)
-    in
-    go (o.at + 1)
+    Some (Printf.sprintf "%s is not closed: the ELSE IF at line %d opened a new IF, closed by \
+                          the first ENDIF; write ELSEIF for another condition of the same IF \
+                          (§4.16)" (describe o) o.else_if_line)
 
 (* The hint for an end word, a routine or the end of the file met while constructs are open. *)
 let unclosed cx stack compact =
   let t = cx.tokens.(cx.error).token in
   let innermost = match stack with o :: _ -> Some o | [] -> None in
   let recent_compact = match compact, innermost with
-    | Some (c : opener), Some o -> if c.at > o.at then Some c else None
+    | Some (c : opener), Some o -> if c.order > o.order then Some c else None
     | Some c, None -> Some c
     | None, _ -> None
   in
@@ -187,14 +186,14 @@ let unclosed cx stack compact =
       Option.map (no_then cx) recent_compact
   | Some w, _ -> (
       match innermost with
-      | Some o when o.closer <> w && else_if cx o <> None -> else_if cx o
+      | Some o when o.closer <> w && else_if o <> None -> else_if o
       | Some o when o.closer <> w ->
           if List.exists (fun (p : opener) -> p.closer = w) stack then
             Some (Printf.sprintf "%s is not closed: %s is missing before this %s (§%s)"
-                    (describe cx o) o.closer w o.section)
+                    (describe o) o.closer w o.section)
           else
             Some (Printf.sprintf "%s closes no open construct here; %s is closed by %s (§%s)"
-                    w (describe cx o) o.closer o.section)
+                    w (describe o) o.closer o.section)
       | _ -> None)
   | None, (ELSE | ELSEIF) when (match innermost with Some o -> o.word <> "IF" | None -> true)
                                && recent_compact <> None ->
@@ -203,14 +202,14 @@ let unclosed cx stack compact =
       match innermost with
       | Some o when o.word <> "MODULE" || t = EOF ->
           Some (Printf.sprintf "%s is not closed: %s is missing (§%s)"
-                  (describe cx o) o.closer o.section)
+                  (describe o) o.closer o.section)
       | _ -> None)
   | _ -> None
 
 (* Tokens that end the statement before a new one: the IDENT at [j] begins a statement. *)
 let begins_statement cx j =
-  j = 0
-  || (match cx.tokens.(j - 1).token with
+  (j = 0 && cx.from_start)
+  || j > 0 && (match cx.tokens.(j - 1).token with
       | SEMICOLON | THEN | ELSE | DO | COMMENT _ | COLON -> true
       | RPAREN ->
           (* the closing parenthesis of a routine's parameter list *)
@@ -350,19 +349,16 @@ let first_some fs = List.fold_left (fun acc f -> match acc with Some _ -> acc | 
 let find cx =
   if cx.error < 0 || cx.error >= Array.length cx.tokens then None
   else
-    let stack, compact = scan cx in
     first_some [
       (fun () -> double_equal cx);
       (fun () -> operator_words cx);
       (fun () -> equals_for_assignment cx);
-      (fun () -> unclosed cx stack compact);
-      (fun () -> missing_header_word cx stack);
+      (fun () -> unclosed cx cx.stack cx.compact);
+      (fun () -> missing_header_word cx cx.stack);
       (fun () -> procedure_with_parentheses cx);
       (fun () -> missing_semicolon cx);
     ]
 
-(* The tokens past the error that the hints look at: the rest of the statement. *)
-let lookahead = 64
 
 (* Lexical errors: characters other languages use where RAPID has a word or another delimiter. *)
 let lexical_hint message =
@@ -377,21 +373,42 @@ let lexical_hint message =
   else if mentions '#' then Some "a comment begins with '!' (§2.10)"
   else None
 
+(* The tokens before the error that the local hints look back at: a statement's worth. *)
+let window = 512
+
 let hint file (decoded : Decode.t) ~installed ~error_start =
   let lexer = Lexer.create ~installed file decoded in
-  let tokens = ref [] and error = ref (-1) and count = ref 0 in
+  let sc = new_scanner file in
+  (* The last [window] tokens before the error, in a ring. *)
+  let ring = Array.make window { token = EOF; start = 0; stop = 0 } in
+  let before = ref 0 in
+  let after = ref [] and error = ref None in
   (try
      let continue = ref true in
      while !continue do
        let token, (s : Lexing.position), (e : Lexing.position) = Lexer.next lexer in
        let t = { token; start = s.pos_cnum; stop = e.pos_cnum } in
-       if !error < 0 && t.start >= error_start then error := !count;
-       tokens := t :: !tokens;
-       incr count;
-       if token = EOF || (!error >= 0 && !count > !error + lookahead) then continue := false
+       match !error with
+       | None when t.start < error_start && token <> EOF ->
+           step sc token t.start;
+           ring.(!before mod window) <- t;
+           incr before
+       | None -> error := Some t; if token = EOF then continue := false
+       | Some _ ->
+           after := t :: !after;
+           if token = EOF || List.length !after >= lookahead then continue := false
      done
    with Lexer.Error _ -> ());
-  let tokens = Array.of_list (List.rev !tokens) in
-  match find { file; text = decoded.text; tokens; error = !error } with
-  | h -> h
-  | exception (Not_found | Invalid_argument _) -> None
+  match !error with
+  | None -> None
+  | Some e ->
+      let kept = min !before window in
+      let first = !before - kept in
+      let tokens = Array.concat [
+          Array.init kept (fun i -> ring.((first + i) mod window)); [| e |];
+          Array.of_list (List.rev !after) ] in
+      let cx = { file; text = decoded.text; tokens; error = kept; from_start = first = 0;
+                 stack = sc.stack; compact = sc.compact } in
+      match find cx with
+      | h -> h
+      | exception (Not_found | Invalid_argument _) -> None
