@@ -463,6 +463,34 @@ let argument_regions () =
   check_call "P ( a );" ~argument:(3, 8) ~expression:(5, 6);
   check_call "P x := a;" ~argument:(3, 9) ~expression:(8, 9)
 
+(* Hints (Syntax_hint) that depend on what lies far before the error: the open constructs are
+   remembered from the start of the file, while only a window of tokens is kept. *)
+let hint_of text =
+  match parse text with
+  | Ok _ -> Alcotest.failf "%S: accepted" text
+  | Error d -> d.hint
+
+let distant_hints () =
+  let many = String.concat "\n" (List.init 5000 (fun i -> Printf.sprintf "    x{%d} := %d;" i i)) in
+  Alcotest.(check (option string)) "an IF opened 5000 statements before"
+    (Some "the IF at line 3 is not closed: ENDIF is missing before this ENDPROC (§4.16)")
+    (hint_of (in_module ("PROC p()\n  IF a THEN\n" ^ many ^ "\nENDPROC")));
+  Alcotest.(check (option string)) "ELSE IF 5000 statements before"
+    (Some "the IF at line 3 is not closed: the ELSE IF at line 5 opened a new IF, closed by the \
+           first ENDIF; write ELSEIF for another condition of the same IF (§4.16)")
+    (hint_of (in_module ("PROC p()\n  IF a THEN\n    x := 1;\n  ELSE IF b THEN\n" ^ many
+                         ^ "\n  ENDIF\nENDPROC")));
+  Alcotest.(check (option string)) "a routine left open, then another"
+    (Some "the FUNC f at line 2 is not closed: ENDFUNC is missing (§5.5)")
+    (hint_of (in_module ("FUNC num f()\n" ^ many ^ "\nPROC q()\nENDPROC")));
+  Alcotest.(check (option string)) "no hint where no mistake is recognised" None
+    (hint_of (in_routine "x := 1 +;"));
+  (* a hint needs no more than the tokens of its statement *)
+  Alcotest.(check (option string)) "a procedure called with parentheses after 5000 statements"
+    (Some "a procedure call takes its arguments without parentheses (§4.6): write greet \"Bob\", \
+           2; instead of greet(\"Bob\", 2);")
+    (hint_of (in_routine (many ^ "\n    greet(\"Bob\", 2);")))
+
 let suite =
   ( "parser",
     List.map (fun (name, f) -> Alcotest.test_case name `Quick f) [
@@ -478,4 +506,5 @@ let suite =
       ("§7.2 error number lists", error_lists);
       ("diagnostic positions", error_positions);
       ("§4 compound statements", compound_statements);
+      ("hints from far before the error", distant_hints);
     ] )
