@@ -661,8 +661,9 @@ and backslash_hint ctx place (routine : Env.routine) (a : argument) =
       let e = match Ast.argument_value a with Some e -> e | None -> operand EXP_placeholder a.at in
       (* The argument's type, judged apart: its errors are not this call's to report. *)
       let quiet = { ctx with report = Report.create (); unknown_reported = Hashtbl.copy ctx.unknown_reported } in
+      let ty = infer quiet place e in
       let fits (p : Env.parameter) =
-        match infer quiet place e, p.p_type with
+        match ty, p.p_type with
         | Known t, Some pt -> T.equal_types ~value_context:true t pt
         | Numeric_literal, Some pt -> pt.base = T.Num && pt.dims = T.Scalar
         | _ -> false
