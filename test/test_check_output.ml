@@ -100,7 +100,7 @@ let json_shape () =
 
 (* "did you mean": the distance, the limit, ties, letter case (§2.3). *)
 let suggestions () =
-  let open Rapid_typing in
+  let open Rapid_syntax in
   Alcotest.(check int) "substitution" 1 (Suggest.distance "tool0" "tool1");
   Alcotest.(check int) "transposition" 1 (Suggest.distance "WObj" "wboj");
   Alcotest.(check int) "letter case" 0 (Suggest.distance "TPWRITE" "TPWrite");

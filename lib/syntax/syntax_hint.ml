@@ -334,6 +334,53 @@ let missing_semicolon cx =
                 (Source.pos_of_offset cx.file prev.stop).line)
     | _ -> None
 
+(* §2.4: reserved words that begin or end a statement, a declaration or a routine, which a
+   slip of the fingers turns into an identifier (ENDFI, ELSIF, WHLIE): the parser then reads a
+   procedure call, and stops a little later. *)
+let structure_words = [
+  "IF"; "THEN"; "ELSEIF"; "ELSE"; "ENDIF"; "WHILE"; "ENDWHILE"; "FOR"; "ENDFOR"; "TEST"; "CASE";
+  "DEFAULT"; "ENDTEST"; "RETURN"; "RAISE"; "RETRY"; "TRYNEXT"; "GOTO"; "CONNECT"; "BREAK";
+  "CONTINUE"; "ENDPROC"; "ENDFUNC"; "ENDTRAP"; "ENDRECORD"; "ENDMODULE"; "LOCAL"; "CONST";
+  "PERS"; "PROC"; "FUNC"; "TRAP"; "RECORD"; "ALIAS"; "BACKWARD"; "UNDO" ]
+
+(* Spellings of other languages. *)
+let other_spellings = [ ("ELSIF", "ELSEIF"); ("ELIF", "ELSEIF"); ("ELSE_IF", "ELSEIF");
+                        ("END_IF", "ENDIF"); ("WEND", "ENDWHILE"); ("END_WHILE", "ENDWHILE");
+                        ("END_FOR", "ENDFOR"); ("NEXT", "ENDFOR"); ("END_PROC", "ENDPROC");
+                        ("ENDSUB", "ENDPROC") ]
+
+let misspelt_word cx =
+  let k = cx.error in
+  let candidate i =
+    if i < 0 || i > k then None
+    else
+      let followed_by_use =
+        i + 1 < Array.length cx.tokens
+        && (match cx.tokens.(i + 1).token with
+            | ASSIGN | LBRACE | DOT | COLON -> true | _ -> false) in
+      match cx.tokens.(i).token with
+      | IDENT s when not followed_by_use -> (
+          let upper = String.uppercase_ascii s in
+          match List.assoc_opt upper other_spellings with
+          | Some w -> Some (s, [ w ])
+          | None ->
+              if String.length s < 4 then None
+              else
+                match Suggest.closest s structure_words with
+                | [] -> None
+                | ws when List.for_all (fun w -> Suggest.distance s w <= 1
+                                                 || String.length s > 6) ws -> Some (s, ws)
+                | _ -> None)
+      | _ -> None
+  in
+  let here = first_of_line cx k in
+  let before = if k >= 1 then first_of_line cx (k - 1) else -1 in
+  match (match candidate here with Some c -> Some c | None -> candidate before) with
+  | Some (s, ws) ->
+      Some (Printf.sprintf "%s is not a reserved word of RAPID (§2.4): did you mean %s?" s
+              (String.concat " or " ws))
+  | None -> None
+
 (* §3.1: the logical operators are words. *)
 let operator_words cx =
   let k = cx.error in
@@ -353,6 +400,7 @@ let find cx =
       (fun () -> double_equal cx);
       (fun () -> operator_words cx);
       (fun () -> equals_for_assignment cx);
+      (fun () -> misspelt_word cx);
       (fun () -> unclosed cx cx.stack cx.compact);
       (fun () -> missing_header_word cx cx.stack);
       (fun () -> procedure_with_parentheses cx);
