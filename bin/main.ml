@@ -38,8 +38,9 @@ let parse_cmd =
   in
   let strict =
     Arg.(value & flag & info [ "strict" ]
-           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, a byte-order \
-                 mark, a file without a final line break (doc/dialect.md).")
+           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, comment lines \
+                 before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
+                 without a final line break (doc/dialect.md).")
   in
   let run files print ast strict =
     guard @@ fun () ->
@@ -57,10 +58,11 @@ let parse_cmd =
   let doc = "read RAPID modules and report every lexical and syntax error" in
   let man = [
     `S Manpage.s_description;
-    `P "Reads each FILE as one RAPID module (chapter 10 of the RAPID kernel manual). A file \
-        that is refused gets one diagnostic on standard error, \
+    `P "Reads each FILE as one RAPID module (chapter 10 of the RAPID kernel manual); a FILE \
+        $(b,-) is standard input. A file that is refused gets one diagnostic on standard error, \
         $(b,FILE:LINE:COL: CLASS: MESSAGE), where CLASS is lexical error, syntax error or \
-        fatal error (§1.4) and columns count characters.";
+        fatal error (§1.4) and columns count characters, and where one helps a hint on an \
+        indented next line.";
     `S Manpage.s_exit_status;
     `P "0 when every file parses; 2 when one does not.";
   ] in
