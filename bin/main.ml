@@ -9,6 +9,7 @@ let exit_ok = 0
 let exit_static_error = 2
 let exit_spec_failed = 1
 let exit_internal = 125
+let version = "0.1.0"
 
 (* Standard output closed (a pipe whose reader has gone) or not writable (a full disk): the run
    ends at once with this status, 128 + SIGPIPE as a shell reports a process that a closed pipe
@@ -115,8 +116,9 @@ let parse_cmd =
   in
   let strict =
     Arg.(value & flag & info [ "strict" ]
-           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, a byte-order \
-                 mark, a file without a final line break (doc/dialect.md).")
+           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, comment lines \
+                 before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
+                 without a final line break (doc/dialect.md).")
   in
   let run files print ast strict =
     guard @@ fun () ->
@@ -134,10 +136,11 @@ let parse_cmd =
   let doc = "read RAPID modules and report every lexical and syntax error" in
   let man = [
     `S Manpage.s_description;
-    `P "Reads each FILE as one RAPID module (chapter 10 of the RAPID kernel manual). A file \
-        that is refused gets one diagnostic on standard error, \
+    `P "Reads each FILE as one RAPID module (chapter 10 of the RAPID kernel manual); a FILE \
+        $(b,-) is standard input. A file that is refused gets one diagnostic on standard error, \
         $(b,FILE:LINE:COL: CLASS: MESSAGE), where CLASS is lexical error, syntax error or \
-        fatal error (§1.4) and columns count characters.";
+        fatal error (§1.4) and columns count characters, and where one helps a hint on an \
+        indented next line.";
     `S Manpage.s_exit_status;
     `P "0 when every file parses; 2 when one does not.";
   ] in
@@ -153,7 +156,15 @@ let check_cmd =
   let strict =
     Arg.(value & flag & info [ "strict" ] ~doc:"Refuse the dialect extensions of doc/dialect.md.")
   in
-  let run files allow_unknown strict io =
+  let format =
+    Arg.(value & opt (enum [ ("text", Check_output.Text); ("json", Check_output.Json);
+                             ("sarif", Check_output.Sarif) ]) Check_output.Text
+         & info [ "format" ] ~docv:"FORMAT"
+             ~doc:"$(b,text) (standard error, the default), $(b,json) or $(b,sarif) (SARIF 2.1.0), \
+                   both on standard output: every diagnostic with its file, region, class, \
+                   sections, message and hint (doc/user-guide.md).")
+  in
+  let run files allow_unknown strict format io =
     guard @@ fun () ->
     match read_io io with
     | Error m -> prerr_endline m; exit_static_error
@@ -161,8 +172,11 @@ let check_cmd =
     let options = { Parse.default_options with strict } in
     let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
     let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
-    List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) syntax_errors;
-    if syntax_errors <> [] then exit_static_error
+    let print = Check_output.print ~version format in
+    if syntax_errors <> [] then begin
+      print (List.map Check_output.of_diagnostic syntax_errors);
+      exit_static_error
+    end
     else
       match Rapid_semantics.Session.installed ~io () with
       | Error d ->
@@ -173,8 +187,9 @@ let check_cmd =
           let modules = List.filter_map Result.to_option parsed in
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
-          Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
+          print (List.map Check_output.of_report result.reports);
+          (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
+          if format = Check_output.Text then Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
           if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -183,12 +198,14 @@ let check_cmd =
     `P "Reads each FILE as a module and checks them together as one task buffer (§9.1) \
         against the rules of chapters 2-5 and 9 of the RAPID kernel manual, with the installed \
         environment of types, data and routines that real programs use. Each error is reported \
-        on standard error as $(b,FILE:LINE:COL: semantic error: MESSAGE (§x.y)); independent \
-        errors are all reported in one run.";
+        on standard error as $(b,FILE:LINE:COL: semantic error: MESSAGE (§x.y)), with a hint \
+        on an indented next line where one helps; independent errors are all reported in one \
+        run. $(b,--format json) and $(b,--format sarif) write them all to standard output \
+        instead. A FILE $(b,-) is standard input.";
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ io_arg)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format $ io_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -369,7 +386,9 @@ let region_text r =
       let lines, latin1 = match Hashtbl.find_opt source_cache name with
         | Some l -> l
         | None ->
-            let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
+            let l =
+              if name = Parse.stdin_name then Array.of_list (String.split_on_char '\n' (Parse.source_text "-"))
+              else match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
             let latin1 = not (Array.for_all Rapid_semantics.Utf8_text.is_utf8 l) in
             (* A byte-order mark is not a character of the module. *)
             if (not latin1) && Array.length l > 0 && String.length l.(0) >= 3 && String.sub l.(0) 0 3 = "\xEF\xBB\xBF" then
@@ -478,5 +497,5 @@ let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)
   Sys.set_signal Sys.sigpipe Sys.Signal_ignore;
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
-  let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
+  let info = Cmd.info "rapid-sem" ~version ~doc in
   exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))

@@ -523,6 +523,8 @@ let module_attributes st : module_attribute list =
 
 let module_declaration_sized n st : module_declaration =
   let header = optional st 0.2 (fun () -> List.init (int st 4) (fun _ -> header_line st)) in
+  (* comment lines before MODULE (doc/dialect.md) *)
+  let prologue_comments = if chance st 0.2 then List.init (1 + int st 3) (fun _ -> comment_text st) else [] in
   let module_name = identifier st in
   let attributes = module_attributes st in
   let type_definitions =
@@ -530,7 +532,7 @@ let module_declaration_sized n st : module_declaration =
   in
   let data_declarations = data_declarations ~module_level:true (n / 3) st in
   let routine_declarations = list_of st 4 n (fun m -> routine_declaration m st) in
-  { header; module_name; attributes; type_definitions; data_declarations;
+  { header; prologue_comments; module_name; attributes; type_definitions; data_declarations;
     routine_declarations; module_region = Source.no_region }
 
 (* A module of size at most about [max_size] nodes of fuel. *)

@@ -16,4 +16,5 @@ let () =
       Test_motion.suite;
       Test_controller.suite;
       Test_installed.suite;
+      Test_check_output.suite;
     ]

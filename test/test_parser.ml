@@ -7,7 +7,8 @@ open Ast
 
 let file_name = "parse.mod"
 
-let parse text = Parse.parse_string ~name:file_name text
+let parse ?(strict = false) text =
+  Parse.parse_string ~options:{ Parse.default_options with strict } ~name:file_name text
 
 let in_module body = "MODULE m\n" ^ body ^ "\nENDMODULE\n"
 let in_routine body = in_module ("PROC p()\n" ^ body ^ "\nENDPROC")
@@ -17,8 +18,8 @@ let parse_ok text =
   | Ok m -> m
   | Error d -> Alcotest.failf "%S: unexpected error %s" text (Diagnostic.to_string d)
 
-let error_at ?message ~cls ~line ~col text =
-  match parse text with
+let error_at ?strict ?message ~cls ~line ~col text =
+  match parse ?strict text with
   | Ok _ -> Alcotest.failf "%S: accepted, expected a %s" text (Diagnostic.class_name cls)
   | Error d ->
       let where = Diagnostic.to_string d in
@@ -232,10 +233,20 @@ let record_comments () =
    | _ -> Alcotest.fail "one record");
   let message = "a comment may not stand on a line of its own inside RECORD ... ENDRECORD, \
                  except on the last line (§2.10)" in
-  syntax_error_at ~message ~line:3 ~col:3
+  syntax_error_at ~strict:true ~message ~line:3 ~col:3
     (in_module "RECORD my_rec\n  ! DISALLOWED COMMENT\n  num mynum;\nENDRECORD");
-  syntax_error_at ~message ~line:4 ~col:3
+  syntax_error_at ~strict:true ~message ~line:4 ~col:3
     (in_module "RECORD r\n  num a; ! fine\n  ! alone\n  ! last\nENDRECORD");
+  (* Without --strict, comment lines of their own are the dialect's (doc/dialect.md), kept in
+     order among the components. *)
+  (match (parse_ok (in_module "RECORD r\n  ! the speed,\n  ! in mm/s\n  num a; ! fine\n  ! alone\n  num b;\nENDRECORD")).type_definitions with
+   | [ { it = Record_definition { components; _ }; _ } ] ->
+       Alcotest.check strings "components in order"
+         [ "! the speed,"; "! in mm/s"; "num a"; "! fine"; "! alone"; "num b" ]
+         (List.map (fun (c : record_component) -> match c.it with
+              | Component_comment c -> "!" ^ c
+              | Record_component (t, n) -> identifier t ^ " " ^ identifier n) components)
+   | _ -> Alcotest.fail "one record");
   (* The missing component is reported where it was due: at ENDRECORD. *)
   syntax_error_at ~line:4 ~col:1
     ~message:"expected a record component: a record definition has at least one (§2.14); found ENDRECORD"
@@ -452,6 +463,34 @@ let argument_regions () =
   check_call "P ( a );" ~argument:(3, 8) ~expression:(5, 6);
   check_call "P x := a;" ~argument:(3, 9) ~expression:(8, 9)
 
+(* Hints (Syntax_hint) that depend on what lies far before the error: the open constructs are
+   remembered from the start of the file, while only a window of tokens is kept. *)
+let hint_of text =
+  match parse text with
+  | Ok _ -> Alcotest.failf "%S: accepted" text
+  | Error d -> d.hint
+
+let distant_hints () =
+  let many = String.concat "\n" (List.init 5000 (fun i -> Printf.sprintf "    x{%d} := %d;" i i)) in
+  Alcotest.(check (option string)) "an IF opened 5000 statements before"
+    (Some "the IF at line 3 is not closed: ENDIF is missing before this ENDPROC (§4.16)")
+    (hint_of (in_module ("PROC p()\n  IF a THEN\n" ^ many ^ "\nENDPROC")));
+  Alcotest.(check (option string)) "ELSE IF 5000 statements before"
+    (Some "the IF at line 3 is not closed: the ELSE IF at line 5 opened a new IF, closed by the \
+           first ENDIF; write ELSEIF for another condition of the same IF (§4.16)")
+    (hint_of (in_module ("PROC p()\n  IF a THEN\n    x := 1;\n  ELSE IF b THEN\n" ^ many
+                         ^ "\n  ENDIF\nENDPROC")));
+  Alcotest.(check (option string)) "a routine left open, then another"
+    (Some "the FUNC f at line 2 is not closed: ENDFUNC is missing (§5.5)")
+    (hint_of (in_module ("FUNC num f()\n" ^ many ^ "\nPROC q()\nENDPROC")));
+  Alcotest.(check (option string)) "no hint where no mistake is recognised" None
+    (hint_of (in_routine "x := 1 +;"));
+  (* a hint needs no more than the tokens of its statement *)
+  Alcotest.(check (option string)) "a procedure called with parentheses after 5000 statements"
+    (Some "a procedure call takes its arguments without parentheses (§4.6): write greet \"Bob\", \
+           2; instead of greet(\"Bob\", 2);")
+    (hint_of (in_routine (many ^ "\n    greet(\"Bob\", 2);")))
+
 let suite =
   ( "parser",
     List.map (fun (name, f) -> Alcotest.test_case name `Quick f) [
@@ -467,4 +506,5 @@ let suite =
       ("§7.2 error number lists", error_lists);
       ("diagnostic positions", error_positions);
       ("§4 compound statements", compound_statements);
+      ("hints from far before the error", distant_hints);
     ] )

@@ -147,6 +147,9 @@ let statement_layout =
 let messy_module = {|%%%
   VERSION:1
 %%%
+
+! made by a generator
+
 module Cell (sysmodule,noview)
 record pos2  ! header comment
 num x;   ! on x's line
@@ -181,10 +184,12 @@ endmodule
 let canonical_module = {|%%%
   VERSION:1
 %%%
+! made by a generator
 MODULE Cell(SYSMODULE, NOVIEW)
   RECORD pos2 ! header comment
     num x; ! on x's line
-    num y; ! alone, but on the last line
+    num y;
+    ! alone, but on the last line
   ENDRECORD
   ! goes with the alias
   LOCAL ALIAS num mm;

@@ -57,7 +57,7 @@ let expression_round_trip =
         let x = loc (Entire "x") in
         let body = { declarations = []; statements = [ loc (Assignment (x, e)) ]; backward = None;
                      error = None; undo = None } in
-        { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
+        { header = None; prologue_comments = []; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
           data_declarations = [];
           routine_declarations =
             [ loc (Procedure_declaration
@@ -380,7 +380,7 @@ let million_elements =
       let statements = loc (Assignment (loc (Entire "y"), loc (Aggregate (Array.make n one.it, Array.make n one.at)))) :: statements in
       let body = { declarations = []; statements; backward = None; error = None; undo = None } in
       let m =
-        { header = None; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
+        { header = None; prologue_comments = []; module_name = loc (Ident "m"); attributes = []; type_definitions = [];
           data_declarations = [];
           routine_declarations =
             [ loc (Procedure_declaration { local = false; name = loc (Ident "p"); parameters = []; body }) ];

@@ -259,6 +259,7 @@ and module_attribute_desc = SYSMODULE | NOVIEW | NOSTEPIN | VIEWONLY | READONLY
 
 type module_declaration = {
   header : string list option;   (* the lines of a %%% header block (doc/dialect.md) *)
+  prologue_comments : string list;   (* comment lines before MODULE, text after '!' (doc/dialect.md) *)
   module_name : identifier;
   attributes : module_attribute list;
   type_definitions : type_definition list;

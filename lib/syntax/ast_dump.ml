@@ -320,6 +320,9 @@ let module_declaration (m : module_declaration) =
   Buffer.add_string b "(Module_declaration";
   Option.iter (fun lines ->
       line_node b 2 "header"; List.iter (quoted b) lines; close b) m.header;
+  if m.prologue_comments <> [] then begin
+    line_node b 2 "prologue_comments"; List.iter (quoted b) m.prologue_comments; close b
+  end;
   line_node b 2 "module_name"; identifier b m.module_name; close b;
   line_node b 2 "attributes"; List.iter (fun a -> word b (module_attribute a)) m.attributes; close b;
   line_node b 2 "type_definitions"; List.iter (type_definition b 4) m.type_definitions; close b;

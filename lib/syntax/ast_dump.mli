@@ -7,7 +7,8 @@
     without arguments is an atom ([Break], [EXP_placeholder]), one with arguments a list headed
     by its name ([(Binary Plus ...)]); record fields are lists headed by the field's name
     ([(scope Local)]), and an optional list field (ELSE, DEFAULT, BACKWARD, ERROR, UNDO, a step,
-    an initial value, the %%% header) is present exactly when the tree has it. Identifiers keep
+    an initial value, the %%% header, the comment lines before MODULE) is present exactly when
+    the tree has it. Identifiers keep
     their spelling and are written bare, without the constructor [Ident] (the placeholder <ID>
     as [<ID>]), numeric literals as written; string literals (their raw text), comments and header lines are quoted, with the
     double quote, the backslash and control characters escaped. Declarations, statements and

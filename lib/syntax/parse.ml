@@ -182,12 +182,13 @@ end
    automaton's state, which is all the messages of parser.messages need; it parses about three
    times as fast as the table back end (bench/README.md). It reads each token's positions from
    the lexbuf it is handed, which is there for that only. *)
-let run_parser options file lexer =
+let run_parser options file decoded lexer =
   let region_of (_, (s : Lexing.position), (e : Lexing.position)) =
     Source.region file s.pos_cnum e.pos_cnum
   in
   let lexbuf = Lexing.from_string "" in
   let last = ref (Parser.EOF, Lexing.dummy_pos, Lexing.dummy_pos) in
+  let before_module = ref true in
   let next _ =
     let ((token, s, e) as t) = Lexer.next lexer in
     (match token with
@@ -195,6 +196,12 @@ let run_parser options file lexer =
          refuse Syntax_error (region_of t)
            "a %%% header block is not part of a module declaration (§9.2); \
             accepted without --strict (doc/dialect.md)"
+     | COMMENT _ when options.strict && !before_module ->
+         refuse Syntax_error (region_of t)
+           "a comment before MODULE is not part of a module declaration: comments are \
+            elements of the module's lists (§9.2, §2.10); accepted without --strict \
+            (doc/dialect.md)"
+     | MODULE -> before_module := false
      | _ -> ());
     last := t;
     lexbuf.lex_start_p <- s;
@@ -204,20 +211,23 @@ let run_parser options file lexer =
   match Parser.module_file next lexbuf with
   | m -> m
   | exception Parser.Error state ->
-      let (token, _, _) = !last in
-      refuse Syntax_error (region_of !last)
-        (Printf.sprintf "%s; found %s" (syntax_message state) (describe_token token))
+      let (token, (s : Lexing.position), _) = !last in
+      let hint =
+        Syntax_hint.hint file decoded ~installed:options.installed ~error_start:s.pos_cnum in
+      raise (Refused (Diagnostic.make ?hint Syntax_error (region_of !last)
+                        (Printf.sprintf "%s; found %s" (syntax_message state) (describe_token token))))
 
 let parse_decoded options name (decoded : Decode.t) =
   let file = Source.register ~name ~line_starts:decoded.line_starts in
   Parse_context.start file;
+  Parse_context.strict := options.strict;
   let at_start = Source.region file 0 1 in
   try
     if options.strict && decoded.byte_order_mark then
       refuse Lexical_error at_start
         "byte-order mark at the start of the file: §2.1 defines no such character; accepted \
          without --strict (doc/dialect.md)";
-    let m = run_parser options file (Lexer.create ~installed:options.installed file decoded) in
+    let m = run_parser options file decoded (Lexer.create ~installed:options.installed file decoded) in
     if options.strict && not decoded.final_newline then
       refuse Syntax_error (Source.region file (decoded.length - 1) decoded.length)
         "the file does not end with a line break (§2.10: a line ends with <newline>); \
@@ -226,7 +236,8 @@ let parse_decoded options name (decoded : Decode.t) =
     Ok m
   with
   | Refused d -> Error d
-  | Lexer.Error (region, message) -> Error (Diagnostic.make Lexical_error region message)
+  | Lexer.Error (region, message) ->
+      Error (Diagnostic.make ?hint:(Syntax_hint.lexical_hint message) Lexical_error region message)
   | Parse_context.Refused (region, message) -> Error (Diagnostic.make Syntax_error region message)
 
 (* Speed (bench/README.md): nearly all that a parse allocates is the tree, which stays alive
@@ -255,11 +266,36 @@ let read_file path =
   Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
       really_input_string ic (in_channel_length ic))
 
+(* "-" is standard input (doc/user-guide.md), read once: a second "-" in the same command
+   reads the same text again rather than an exhausted stream. *)
+let stdin_name = "<stdin>"
+let stdin_text = ref None
+
+let read_stdin () =
+  match !stdin_text with
+  | Some text -> text
+  | None ->
+      set_binary_mode_in stdin true;
+      let b = Buffer.create 65536 in
+      let chunk = Bytes.create 65536 in
+      let rec go () =
+        let n = input stdin chunk 0 (Bytes.length chunk) in
+        if n > 0 then begin Buffer.add_subbytes b chunk 0 n; go () end
+      in
+      go ();
+      let text = Buffer.contents b in
+      stdin_text := Some text;
+      text
+
+let source_text path = if path = "-" then read_stdin () else read_file path
+
+let display_name path = if path = "-" then stdin_name else path
+
 let parse_file ?(options = default_options) path =
-  match read_file path with
-  | contents -> parse_string ~options ~name:path contents
+  match source_text path with
+  | contents -> parse_string ~options ~name:(display_name path) contents
   | exception Sys_error message ->
-      let file = Source.register ~name:path ~line_starts:[| 0 |] in
+      let file = Source.register ~name:(display_name path) ~line_starts:[| 0 |] in
       (* Sys_error says "PATH: reason"; the diagnostic names the path already. *)
       let prefix = path ^ ": " in
       let reason =

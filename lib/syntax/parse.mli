@@ -21,4 +21,12 @@ val parse_string :
 
 val parse_file : ?options:options -> string -> (Ast.module_declaration, Diagnostic.t) result
 (** Like {!parse_string}, reading the file; a file that cannot be read is reported as a
-    diagnostic at line 1, column 1. *)
+    diagnostic at line 1, column 1. The path ["-"] reads standard input, named {!stdin_name}
+    in diagnostics. *)
+
+val stdin_name : string
+(** ["<stdin>"]: the file name of standard input in diagnostics, JSON and SARIF. *)
+
+val source_text : string -> string
+(** The bytes of the file at this path (["-"]: standard input, read once and kept). Raises
+    [Sys_error]. *)

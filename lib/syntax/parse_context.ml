@@ -1,5 +1,7 @@
 let file = ref (Source.register ~name:"<none>" ~line_starts:[| 0 |])
 
+let strict = ref false
+
 exception Refused of Source.region * string
 
 (* One [Num_literal] node per short spelling and parse: 9E+09, 0, 1 and the like stand for a

@@ -5,6 +5,9 @@
 val file : Source.file ref
 (** The file being parsed: the grammar's actions build their regions in it. *)
 
+val strict : bool ref
+(** The parse refuses the dialect extensions (doc/dialect.md); set by Parse before a parse. *)
+
 exception Refused of Source.region * string
 (** Raised by a grammar action for a syntax error that one token of look-ahead cannot see
     (comments in records, TASK). *)

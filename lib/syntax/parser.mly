@@ -55,8 +55,10 @@ let file_comments make cs items =
   List.rev_append (List.rev_map (fun (text, at) -> { it = make text; at }) cs) items
 
 (* §2.10: inside RECORD..ENDRECORD a comment may not stand on a line of its own, except on the
-   last line. [header_line] is the line of the record's name. *)
+   last line. [header_line] is the line of the record's name. Without --strict such comments
+   are accepted (doc/dialect.md): RobotWare add-ins write a component's comment over lines. *)
 let check_record_comments header_line items =
+  if !Parse_context.strict then begin
   let line_of r = (Source.start r).line in
   let rec walk previous_line = function
     | [] -> ()
@@ -71,6 +73,7 @@ let check_record_comments header_line items =
     | { it = Record_component _; at } :: rest -> walk (Source.stop at).line rest
   in
   walk header_line items
+  end
 %}
 
 %token <string> IDENT NUM COMMENT TASK
@@ -91,9 +94,12 @@ let check_record_comments header_line items =
 
 %%
 
-(* A file holds one module, optionally preceded by a %%% header block (doc/dialect.md). *)
+(* A file holds one module, optionally preceded by a %%% header block and by comment lines
+   (doc/dialect.md: generated programs start with a comment naming their tool). Under --strict
+   Parse refuses both where they are read. *)
 module_file:
-  | header = HEADER? m = module_declaration EOF { { m with header } }
+  | header = HEADER? cs = comments m = module_declaration EOF
+    { { m with header; prologue_comments = List.map fst cs } }
 
 (* ---------------------------------------------------------------- §2.3 Identifiers *)
 
@@ -114,7 +120,7 @@ module_declaration:
   | MODULE name = module_name attributes = loption(module_attribute_list)
     body = module_body ENDMODULE
     { let (type_definitions, data_declarations, routine_declarations) = body in
-      { header = None; module_name = name; attributes; type_definitions; data_declarations;
+      { header = None; prologue_comments = []; module_name = name; attributes; type_definitions; data_declarations;
         routine_declarations; module_region = region $startpos $endpos } }
 
 module_name:

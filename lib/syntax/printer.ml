@@ -235,19 +235,25 @@ let data_declaration b ind (d : data_declaration) =
 
 (* §2.14 with §2.10: inside RECORD..ENDRECORD a comment may stand on a line of its own only on
    the last line. Each component starts a line; a comment goes on the line of the item before
-   it (the record's name or a component); only a comment after a comment, which a parsed
-   record has only as its last item, gets a line of its own. *)
-let record_components b ind components =
+   it (the record's name or a component), unless it followed a comment, or stood on a line of
+   its own where it was read (the dialect's comment lines, doc/dialect.md: its region starts
+   on a later line than the previous item's ends; trees built without regions have none). *)
+let record_components b ind (name : identifier) components =
   (* [open_line]: the current line ends with the record's name or a component and may still
-     take a comment. *)
-  let open_line = ref true in
+     take a comment. [previous]: that item's region. *)
+  let open_line = ref true and previous = ref name.at in
+  let own_line at =
+    Source.file_of at <> None && Source.file_of !previous <> None
+    && (Source.start at).line > (Source.stop !previous).line
+  in
   List.iter (fun (c : record_component) ->
       match c.it with
       | Record_component (t, n) ->
           newline b; indent b ind; identifier b t; str b " "; identifier b n; str b ";";
-          open_line := true
+          open_line := true; previous := c.at
       | Component_comment text ->
-          if !open_line then str b " " else begin newline b; indent b ind end;
+          if !open_line && not (own_line c.at) then str b " "
+          else begin newline b; indent b ind end;
           comment b text;
           open_line := false) components;
   newline b
@@ -259,7 +265,7 @@ let type_definition b ind (t : type_definition) =
       indent b ind;
       if r.local then str b "LOCAL ";
       str b "RECORD "; identifier b r.name;
-      record_components b (ind + indent_step) r.components;
+      record_components b (ind + indent_step) r.name r.components;
       indent b ind; str b "ENDRECORD"; newline b
   | Alias_definition a ->
       indent b ind;
@@ -359,6 +365,7 @@ let module_declaration (m : module_declaration) =
       str b "%%%"; newline b;
       List.iter (fun l -> str b l; newline b) lines;
       str b "%%%"; newline b) m.header;
+  List.iter (fun c -> comment b c; newline b) m.prologue_comments;
   str b "MODULE "; identifier b m.module_name;
   (match m.attributes with
    | [] -> ()

@@ -11,10 +11,12 @@
       (their raw text, §2.7) as written; switch parameters as [switch name] (§5.2);
     - one declaration, statement or record component per line; a compact IF (§4.17) on one line;
     - a comment as [!] and its text, ending its line; in a record a comment stands on the line
-      of the name or component before it, and on a line of its own only after another comment
-      (which a parsed record has only as its last item, §2.10);
+      of the name or component before it, and on a line of its own after another comment or
+      where it stood on a line of its own in the text it was read from (its region starts on a
+      later line than the item before it ends: the dialect's comment lines, doc/dialect.md);
     - type definitions, then data declarations, then routines (§9.2);
-    - the %%% header block (doc/dialect.md) before MODULE when the tree has one;
+    - the %%% header block (doc/dialect.md) before MODULE when the tree has one, then the
+      comment lines that preceded MODULE, one per line;
     - expressions with spaces around binary operators and the fewest parentheses that give the
       tree back (§3.1: NOT heads an <expr>, a sign heads a <simple expr>, relations do not
       chain);

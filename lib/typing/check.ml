@@ -35,9 +35,11 @@ type ctx = {
       (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
-  unknown_uses : (string * string, unknown_name * string) Hashtbl.t;
+  unknown_uses : (string * string, unknown_name * string * string option) Hashtbl.t;
       (* --allow-unknown: (kind, name in lower case) -> the name, its first use, the number of
          uses, the sections; reported once per name when the task is checked *)
+  unknown_reported : (string, unit) Hashtbl.t;
+      (* routine, kind and name of each unknown name reported in a routine: once is enough *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -70,27 +72,72 @@ let type_string = function
 
 (* ------------------------------------------------------------------ names *)
 
-(* §2.20, ch. 13: a name that is neither declared nor installed. *)
-let unknown_name ctx region what name =
+(* --allow-unknown: every use of an unknown name counted, one warning per name (its first use)
+   when the task is checked. *)
+let unknown_use ctx ?hint region what name =
   let section = match what with
     | "data type" -> "2.11,2.12,13"
     | "function" -> "3.11,5.3,13"
     | "procedure" -> "4.6,5.3,13"
     | "trap" -> "4.15,5.3,13"
     | _ -> "2.20,13" in
-  if ctx.options.allow_unknown then begin
-    let k = (what, key name) in
-    let earlier a b =
-      let file r = match Source.file_of r with Some f -> Source.name f | None -> "" in
-      compare (file a, Source.start_offset a) (file b, Source.start_offset b) < 0 in
-    match Hashtbl.find_opt ctx.unknown_uses k with
-    | Some (u, _) ->
-        let u = if earlier region u.first then { u with first = region; name } else u in
-        Hashtbl.replace ctx.unknown_uses k ({ u with uses = u.uses + 1 }, section)
-    | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section)
+  let k = (what, key name) in
+  let earlier a b =
+    let file r = match Source.file_of r with Some f -> Source.name f | None -> "" in
+    compare (file a, Source.start_offset a) (file b, Source.start_offset b) < 0 in
+  match Hashtbl.find_opt ctx.unknown_uses k with
+  | Some (u, _, first_hint) ->
+      let u, hint = if earlier region u.first then ({ u with first = region; name }, hint) else (u, first_hint) in
+      Hashtbl.replace ctx.unknown_uses k ({ u with uses = u.uses + 1 }, section, hint)
+  | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section, hint)
+
+(* The names in scope at [place] of the kind [what] names, innermost first, spelt as declared:
+   the candidates of "did you mean" (Suggest). *)
+let names_in_scope (place : place) what =
+  let fits (o : Env.obj) = match what, o with
+    | "data type", Type _ -> true
+    | "function", Routine { r_kind = Function _; _ } -> true
+    | "procedure", Routine { r_kind = Procedure; _ } -> true
+    | "trap", Routine { r_kind = Trap; _ } -> true
+    | "data object", Data _ -> true
+    | _ -> false
+  in
+  let spelling (o : Env.obj) = match o with
+    | Data d -> Some d.d_name | Routine r -> Some r.r_name | Type t -> Some t.t_name
+    | Label _ | Module _ -> None
+  in
+  let from table =
+    let acc = ref [] in
+    Env.iter (fun _ o -> if fits o then Option.iter (fun n -> acc := n :: !acc) (spelling o)) table;
+    List.sort compare !acc
+  in
+  let sc = place.scope in
+  List.concat_map from sc.routine @ from sc.module_objects
+  @ (if sc.in_installed_module then [] else from sc.globals) @ from sc.installed
+
+(* §2.20, ch. 13: a name that is neither declared nor installed. In a routine it is reported
+   at its first use only, not at every use; each module-level declaration is judged on its own.
+   The hint names the names in scope closest to it. *)
+let unknown_name ctx place region what name =
+  let k = match place.routine with
+    | Some r ->
+        Some (String.concat "\000" [ key place.module_name;
+                                      string_of_int (Source.start_offset r.r_region); what; key name ])
+    | None -> None in
+  if ctx.options.allow_unknown then
+    unknown_use ctx ?hint:(Suggest.hint name (names_in_scope place what)) region what name
+  else if not (match k with Some k -> Hashtbl.mem ctx.unknown_reported k | None -> false) then begin
+    Option.iter (fun k -> Hashtbl.add ctx.unknown_reported k ()) k;
+    let section = match what with
+      | "data type" -> "2.11,2.12,13"
+      | "function" -> "3.11,5.3,13"
+      | "procedure" -> "4.6,5.3,13"
+      | "trap" -> "4.15,5.3,13"
+      | _ -> "2.20,13" in
+    let hint = Suggest.hint name (names_in_scope place what) in
+    Report.error ctx.report ?hint ~rule:"unknown-name" ~section region
+      (Printf.sprintf "unknown %s %s: it is neither declared nor installed" what name)
   end
-  else
-    error ctx ~rule:"unknown-name" ~section region "unknown %s %s: it is neither declared nor installed" what name
 
 (* §2.11: <data type> ::= <identifier>, bound to a type definition. *)
 let resolve_type ctx place (id : identifier) : T.data_type option =
@@ -109,7 +156,7 @@ let resolve_type ctx place (id : identifier) : T.data_type option =
           error ctx ~rule:"data-type-name" ~section:"2.11,13" id.at "%s is a %s, not a data type" name
             (Env.obj_kind_name o);
           None
-      | None -> unknown_name ctx id.at "data type" name; None)
+      | None -> unknown_name ctx place id.at "data type" name; None)
 
 (* ------------------------------------------------------------------ constants *)
 
@@ -190,7 +237,7 @@ let rec reference ctx place (r : data_reference) : reference =
             ~section:(match o with Label _ -> "4.4,3.6" | _ -> "3.6,2.20,13") name.at "%s is a %s, not a data object"
             name.it (Env.obj_kind_name o);
           { object_ = None; rtype = Unknown }
-      | None -> unknown_name ctx name.at "data object" name.it; { object_ = None; rtype = Unknown })
+      | None -> unknown_name ctx place name.at "data object" name.it; { object_ = None; rtype = Unknown })
   | Element (name, indexes) -> (
       let whole = reference ctx place { it = Entire name.it; at = name.at } in
       List.iter (fun i -> check_expression ~sections:"3.6,2.17" ctx place i (T.scalar Num)) indexes;
@@ -545,13 +592,15 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | _, ({ it = ARG_placeholder; _ } :: rest) -> go (match slots with _ :: s -> s | [] -> []) rest
     | [], [] -> ()
     | [], a :: _ ->
-        error ctx ~rule:"argument-count" ~section:call a.at "%s takes no more arguments" routine.r_name
+        Report.error ctx.report ?hint:(backslash_hint ctx place routine a) ~rule:"argument-count"
+          ~section:call a.at (Printf.sprintf "%s takes no more arguments" routine.r_name)
     | Env.Required_slot p :: slots, ({ it = Required_argument (name, e, e_at); _ } as a) :: rest ->
         let e = operand e e_at in
         (match Option.bind name name_of_identifier with
          | Some n when not (T.same_name n p.p_name) ->
-             error ctx ~rule:"argument-name" ~section:call a.at
-               "the argument is named %s, but the parameter in this place is %s" n p.p_name
+             Report.error ctx.report ?hint:(backslash_hint ctx place routine a) ~rule:"argument-name"
+               ~section:call a.at
+               (Printf.sprintf "the argument is named %s, but the parameter in this place is %s" n p.p_name)
          | _ -> ());
         argument ~call ctx place a e p;
         bind p a;
@@ -615,6 +664,39 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
             error ctx ~rule:"argument-name" ~section:call a.at "%s has no optional parameter %s" routine.r_name n
       | _ -> ()) args
 
+(* §4.6, §3.11: an optional argument is written with a backslash and its parameter's name. A
+   required argument that names an optional parameter ("WObj:=wobj0"), or one more argument
+   than the required parameters take whose type is that of exactly one optional parameter
+   ("TPWrite "a = ", a;"), most likely lacks the backslash: the hint writes it out. *)
+and backslash_hint ctx place (routine : Env.routine) (a : argument) =
+  let optionals = List.concat_map (function
+      | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) routine.r_slots in
+  let written e = Rapid_syntax.Printer.expression e in
+  match a.it with
+  | Required_argument (Some { it = Ident n; _ }, e, e_at) -> (
+      match List.find_opt (fun (p : Env.parameter) -> T.same_name p.p_name n) optionals with
+      | Some p ->
+          Some (Printf.sprintf "%s is an optional parameter of %s: write \\%s:=%s (§4.6)"
+                  p.p_name routine.r_name p.p_name (written (operand e e_at)))
+      | None -> None)
+  | Positional_argument _ | Required_argument (None, _, _) -> (
+      let e = match Ast.argument_value a with Some e -> e | None -> operand EXP_placeholder a.at in
+      (* The argument's type, judged apart: its errors are not this call's to report. *)
+      let quiet = { ctx with report = Report.create (); unknown_reported = Hashtbl.copy ctx.unknown_reported } in
+      let ty = infer quiet place e in
+      let fits (p : Env.parameter) =
+        match ty, p.p_type with
+        | Known t, Some pt -> T.equal_types ~value_context:true t pt
+        | Numeric_literal, Some pt -> pt.base = T.Num && pt.dims = T.Scalar
+        | _ -> false
+      in
+      match List.filter fits optionals with
+      | [ p ] ->
+          Some (Printf.sprintf "an optional argument is written with a backslash and its \
+                                parameter's name: \\%s:=%s (§4.6)" p.p_name (written e))
+      | _ -> None)
+  | _ -> None
+
 (* §3.11: an optional argument gives the parameter's value (a switch has none); a conditional
    argument passes on an optional parameter of the calling routine. *)
 and optional_argument ~call ctx place (a : argument) (p : Env.parameter) =
@@ -667,7 +749,7 @@ and function_call ctx place region (call : function_call) : ty =
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
             (Env.obj_kind_name o);
           Unknown
-      | None -> unknown_name ctx call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
+      | None -> unknown_name ctx place call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
 
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
@@ -871,7 +953,7 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
             "%s is a %s, not a procedure" name
             (Env.obj_kind_name o);
           loose ()
-      | None -> unknown_name ctx id.at "procedure" name; loose ())
+      | None -> unknown_name ctx place id.at "procedure" name; loose ())
 
 (* §4.7: GOTO continues at a label of the same routine, and may not transfer control into a
    statement list: the label stands in the GOTO's own statement list or an enclosing one. *)
@@ -948,7 +1030,7 @@ and connect ctx place (target : data_reference) (trap : identifier) =
       | Some o ->
           error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
             (Env.obj_kind_name o)
-      | None -> unknown_name ctx trap.at "trap" name)
+      | None -> unknown_name ctx place trap.at "trap" name)
 
 (* §4.18: the loop variable is declared by its appearance, of type num, read-only, scoped to the
    loop's statement list, hiding other objects of the same name; FROM, TO and STEP are num. *)
@@ -1214,7 +1296,7 @@ let recovery_error_number ctx place (n : recovery_error_number) =
       | Some o ->
           error ctx ~rule:"error-number-list" ~section:"7.2" n.at "%s is a %s, not an error number" name.it
             (Env.obj_kind_name o)
-      | None -> unknown_name ctx name.at "data object" name.it)
+      | None -> unknown_name ctx place name.at "data object" name.it)
 
 let routine_body ctx (module_place : place) (routine : Env.routine) (body : routine_body) =
   let table = Env.create_table () in
@@ -1473,6 +1555,7 @@ let builtin_environment report options =
     elab = Elaboration.create ();
     early_constants = Hashtbl.create 64;
     unknown_uses = Hashtbl.create 16;
+    unknown_reported = Hashtbl.create 16;
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
@@ -1546,14 +1629,14 @@ let check_task ?(options = default_options) ~installed modules =
       routine_body ctx (module_place ctx i) routine body) bodies;
   (* --allow-unknown: one warning per unknown name, at its first use, with the number of uses. *)
   let unknown = Hashtbl.fold (fun _ u acc -> u :: acc) ctx.unknown_uses [] in
-  List.iter (fun ((u : unknown_name), section) ->
-      Report.warning report ~rule:"unknown-name" ~section u.first
+  List.iter (fun ((u : unknown_name), section, hint) ->
+      Report.warning report ?hint ~rule:"unknown-name" ~section u.first
         (Printf.sprintf "unknown %s %s (neither declared nor installed; allowed by --allow-unknown): %s"
            u.what u.name (if u.uses = 1 then "1 use" else Printf.sprintf "%d uses, the first here" u.uses)))
     unknown;
   let unknown = List.sort (fun (a : unknown_name) b ->
       compare (String.lowercase_ascii a.name, a.what) (String.lowercase_ascii b.name, b.what))
-      (List.map fst unknown) in
+      (List.map (fun (u, _, _) -> u) unknown) in
   { reports = Report.all report; elaboration = ctx.elab; unknown }
 
 let unknown_summary r =

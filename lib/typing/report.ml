@@ -8,18 +8,20 @@ type t = {
   sections : string list;
   region : Source.region;
   message : string;
+  hint : string option;
 }
 
 type collector = { mutable items : t list }
 
 let create () = { items = [] }
 
-let add c severity ~rule ~section region message =
+let add c ?hint severity ~rule ~section region message =
   let sections = String.split_on_char ',' section |> List.map String.trim |> List.filter (( <> ) "") in
-  c.items <- { severity; rule; sections; region; message } :: c.items
+  c.items <- { severity; rule; sections; region; message; hint } :: c.items
 
-let error c = add c Error
-let warning c = add c Warning
+let error c ?hint ~rule ~section region message = add c ?hint Error ~rule ~section region message
+let warning c ?hint ~rule ~section region message =
+  add c ?hint Warning ~rule ~section region message
 
 let file_name r = match Source.file_of r with Some f -> Source.name f | None -> ""
 
@@ -31,10 +33,15 @@ let all c =
 
 let cited d = String.concat ", " (List.map (fun s -> "§" ^ s) d.sections)
 
+let class_name d = match d.severity with Error -> "semantic error" | Warning -> "warning"
+
+let headline d =
+  Printf.sprintf "%s: %s: %s (%s)" (Source.to_string d.region) (class_name d) d.message (cited d)
+
 let to_string d =
-  Printf.sprintf "%s: %s: %s (%s)" (Source.to_string d.region)
-    (match d.severity with Error -> "semantic error" | Warning -> "warning")
-    d.message (cited d)
+  match d.hint with
+  | None -> headline d
+  | Some h -> headline d ^ "\n" ^ Diagnostic.hint_line h
 
 let to_diagnostic d =
-  Diagnostic.make Semantic_error d.region (Printf.sprintf "%s (%s)" d.message (cited d))
+  Diagnostic.make ?hint:d.hint Semantic_error d.region (Printf.sprintf "%s (%s)" d.message (cited d))

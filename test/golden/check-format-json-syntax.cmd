@@ -1,0 +1,1 @@
+check --format json double-equal.mod

@@ -1,0 +1,1 @@
+check --allow-unknown hints.mod

@@ -1,0 +1,1 @@
+parse --strict generated.mod

@@ -1,0 +1,1 @@
+parse --print generated.mod

@@ -1,0 +1,1 @@
+parse - < double-equal.mod

@@ -1,0 +1,1 @@
+run - < run-hello.mod

@@ -1,0 +1,1 @@
+trace --to 3 - < run-hello.mod
