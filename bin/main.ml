@@ -88,12 +88,19 @@ let check_cmd =
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
           exit_internal
-      | Ok installed ->
+      | Ok _ -> (
+          (* The whole static semantics, the initial values known before the run included
+             (Session: check, lower, evaluate them). *)
           let modules = List.filter_map Result.to_option parsed in
-          let result =
-            Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) result.reports;
-          if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
+          match Rapid_semantics.Session.load_modules ~allow_unknown modules with
+          | Ok loaded ->
+              List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+              exit_ok
+          | Error (Static reports) ->
+              List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports;
+              exit_static_error
+          | Error (Front_end ds) -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
+          | Error (Internal m) -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal)
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
   let man = [

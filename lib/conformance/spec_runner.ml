@@ -36,9 +36,8 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
-let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_typing.Check.result) =
+let run_program case (run : Spec_case.run) program =
   let module M = Rapid_semantics.Machine in
-  let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   match M.start ~limits program ~entry:run.entry with
@@ -96,16 +95,18 @@ let run_case (case : Spec_case.t) =
     | None when not (Spec_case.checks_semantics case) -> accepted case expected
     | None -> (
         let modules = List.filter_map Result.to_option results in
-        match Rapid_typing.Installed_env.modules () with
-        | Error d -> fail case ("the installed environment does not parse: " ^ Diagnostic.to_string d)
-        | Ok installed -> (
-            let result =
-              Rapid_typing.Check.check_task ~options:{ allow_unknown = case.allow_unknown } ~installed modules in
-            match Rapid_typing.Check.errors result with
-            | [] -> (
-                match case.run, expected with
-                | Some run, Spec_case.Accepted -> run_program case run ~installed ~modules result
-                | _ -> accepted case expected)
+        (* The whole static semantics, the initial values known before the run included. *)
+        match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown modules with
+        | Error (Internal m) -> fail case m
+        | Error (Front_end (d :: _)) -> compare_refusal case expected d
+        | Error (Front_end []) -> fail case "refused without a diagnostic"
+        | Ok loaded -> (
+            match case.run, expected with
+            | Some run, Spec_case.Accepted -> run_program case run loaded.program
+            | _ -> accepted case expected)
+        | Error (Static reports) -> (
+            match List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports with
+            | [] -> fail case "refused without an error"
             | first :: _ -> (
                 (* The report must also name one of the sections the case tests. *)
                 match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with

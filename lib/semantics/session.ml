@@ -15,7 +15,10 @@ let load_modules ?(allow_unknown = false) modules =
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
         let program = Lower.program ~installed ~modules result.elaboration in
-        Ok { program; warnings = result.reports }
+        (* The initial values of data are known before the run (§3.2): their errors are static. *)
+        match Initial_values.evaluate program with
+        | Ok program -> Ok { program; warnings = result.reports }
+        | Error reports -> Error (Static (result.reports @ reports))
 
 let load ?(strict = false) ?allow_unknown files =
   let options = { Parse.default_options with strict } in

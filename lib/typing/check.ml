@@ -1347,25 +1347,28 @@ let type_definitions ctx infos =
                         | None -> None
                       end)) components
       | `Alias _ -> ()) pending;
-  (* A record that contains itself, directly or through other records, has no finite value. *)
-  List.iter (function
-      | `Record (info, (rt : T.record_type), _) ->
-          let rec contains visited (t : T.data_type) =
-            match t with
-            | Record r when r.record_id = rt.record_id -> true
-            | Record r when List.mem r.record_id visited -> false
-            | Record r -> List.exists (fun (_, c) -> contains (r.record_id :: visited) c) r.components
-            | _ -> false
-          in
-          if List.exists (fun (_, c) -> contains [] c) rt.components then begin
-            (match Env.find info.objects rt.record_name with
-             | Some o ->
-                 error ctx ~rule:"record-recursive" ~section:"2.14" (Env.obj_region o)
-                   "the record %s contains itself" rt.record_name
-             | None -> ());
-            rt.components <- []
-          end
-      | `Alias _ -> ()) pending
+  (* A record that contains itself, directly or through other records, has no finite value
+     (§2.14): exactly the records on a cycle of the "has a component of type" graph. One pass
+     over the graph (Tarjan's strongly connected components), so that long chains of records
+     each using the previous one cost time linear in their number. *)
+  let records = List.filter_map (function
+      | `Record (info, (rt : T.record_type), _) -> Some (info, rt)
+      | `Alias _ -> None) pending in
+  let on_cycle = Record_cycles.on_cycle
+      ~id:(fun (_, (rt : T.record_type)) -> rt.record_id)
+      ~successors:(fun (_, (rt : T.record_type)) ->
+          List.filter_map (fun (_, (c : T.data_type)) ->
+              match c with Record r -> Some r.record_id | _ -> None) rt.components)
+      records in
+  List.iter (fun (info, (rt : T.record_type)) ->
+      if on_cycle rt.record_id then begin
+        (match Env.find info.objects rt.record_name with
+         | Some o ->
+             error ctx ~rule:"record-recursive" ~section:"2.14" (Env.obj_region o)
+               "the record %s contains itself" rt.record_name
+         | None -> ())
+      end) records;
+  List.iter (fun (_, (rt : T.record_type)) -> if on_cycle rt.record_id then rt.components <- []) records
 
 (* §5.1-§5.6: a routine's signature, registered before any body is checked so that calls may
    name routines declared later or in other modules. *)

@@ -42,16 +42,27 @@ let to_string { base; dims } =
   | Conformant rank -> Printf.sprintf "%s{%s}" (name base) (String.concat "," (List.init rank (fun _ -> "*")))
 
 (* A record whose definition refers back to itself is refused before it gets here (the
-   resolution of type definitions checks for cycles), so these walks terminate. *)
+   resolution of type definitions checks for cycles), so these walks terminate. Each record's
+   class is computed once and kept with the component list it was computed from (records that
+   share component types would otherwise be walked once per path, exponentially many). *)
+let class_cache : (int, (string * data_type) list * value_class) Hashtbl.t = Hashtbl.create 64
+
 let rec value_class = function
   | Num | Dnum | Bool | String -> Value
   | Installed_atomic a -> a.atomic_class
   | Anytype -> Value
-  | Record r ->
-      let classes = List.map (fun (_, t) -> value_class t) r.components in
-      if List.mem Non_value classes then Non_value
-      else if List.mem Semi_value classes then Semi_value
-      else Value
+  | Record r -> (
+      match Hashtbl.find_opt class_cache r.record_id with
+      | Some (components, cls) when components == r.components -> cls
+      | _ ->
+          let classes = List.map (fun (_, t) -> value_class t) r.components in
+          let cls =
+            if List.mem Non_value classes then Non_value
+            else if List.mem Semi_value classes then Semi_value
+            else Value
+          in
+          Hashtbl.replace class_cache r.record_id (r.components, cls);
+          cls)
 
 let same_data_type a b =
   match a, b with
