@@ -261,16 +261,24 @@ and statement ctx (s : A.statement) : Ir.stmt =
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
   | If i ->
-      let rec chain = function
-        | [] -> (match i.else_branch with Some l -> block ctx l | None -> block ctx [])
-        | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest ->
-            let inner = { Ir.s = Ir.If (expr ctx ~dnum:false c, block ctx l, chain rest); sat = at } in
-            { id = new_block ctx; body = [| inner |] }
-        | { it = EIT_placeholder; at } :: _ ->
-            { id = new_block ctx; body = [| { s = Placeholder_statement; sat = at } |] }
+      (* ELSEIF is an IF in the ELSE list: the chain is built from its end, in a loop, since a
+         generated program may hold hundreds of thousands of ELSEIF clauses. Nothing after an
+         <EIT> placeholder is reached. *)
+      let rec upto_placeholder acc = function
+        | [] -> (acc, None)
+        | ({ it = A.EIT_placeholder; at } : A.elseif_clause) :: _ -> (acc, Some at)
+        | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest -> upto_placeholder ((c, l, at) :: acc) rest
       in
+      let reversed, placeholder = upto_placeholder [] i.elseifs in
       let then_ = block ctx i.then_branch in
-      make (If (expr ctx ~dnum:false i.condition, then_, chain i.elseifs))
+      let condition = expr ctx ~dnum:false i.condition in
+      let last = match placeholder with
+        | Some at -> { Ir.id = new_block ctx; body = [| { Ir.s = Placeholder_statement; sat = at } |] }
+        | None -> (match i.else_branch with Some l -> block ctx l | None -> block ctx []) in
+      let chain = List.fold_left (fun else_ (c, l, at) ->
+          let inner = { Ir.s = Ir.If (expr ctx ~dnum:false c, block ctx l, else_); sat = at } in
+          { Ir.id = new_block ctx; body = [| inner |] }) last reversed in
+      make (If (condition, then_, chain))
   | Compact_if (c, body) -> make (Compact_if (expr ctx ~dnum:false c, statement ctx body))
   | For f ->
       let variable = ctx.local_count in
@@ -280,9 +288,9 @@ and statement ctx (s : A.statement) : Ir.stmt =
                   step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
   | While (c, body) -> make (While (expr ctx ~dnum:false c, block ctx body))
   | Test t ->
-      let cases = List.map (fun (c : A.case_clause) ->
+      let cases = list_long (fun (c : A.case_clause) ->
           match c.it with
-          | Case (values, l) -> (Array.of_list (List.map (expr ctx ~dnum:false) values), block ctx l)
+          | Case (values, l) -> (map_long (expr ctx ~dnum:false) values, block ctx l)
           | CSE_placeholder -> ([| { Ir.e = Placeholder; at = c.at } |], block ctx [])) t.cases in
       make (Test (expr ctx ~dnum:false t.test_expression, Array.of_list cases,
                   (match t.default with Some l -> block ctx l | None -> block ctx [])))

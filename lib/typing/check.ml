@@ -33,6 +33,7 @@ type ctx = {
       (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
+  const_cache : Const_eval.cache;   (* each constant's value computed once (R-3.2-b) *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -113,7 +114,7 @@ let constant_lookup ctx place name =
            List.find_map (fun (m, local, e) ->
                if local || T.same_name m place.module_name then None else Some e) candidates)
 
-let const_value ctx place e = Const_eval.eval ~lookup:(constant_lookup ctx place) e
+let const_value ctx place e = Const_eval.eval ~cache:ctx.const_cache ~lookup:(constant_lookup ctx place) e
 
 (* ------------------------------------------------------------------ types of operands *)
 
@@ -1447,6 +1448,7 @@ let builtin_environment report options =
     module_names = Env.create_table ();
     elab = Elaboration.create ();
     early_constants = Hashtbl.create 64;
+    const_cache = Const_eval.create_cache ();
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
