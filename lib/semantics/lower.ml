@@ -144,10 +144,13 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       | None -> unknown ()
       | Some index ->
           let params = parameters_of r in
+          (* The bound arguments are in parameter order (Elaboration): one walk along both lists,
+             not a search per parameter, since a call may have thousands of arguments. *)
+          let bound = ref binding.bound in
           let arguments = Array.map (fun (p : Env.parameter) ->
-              match List.find_opt (fun ((q : Env.parameter), _) -> q == p) binding.bound with
-              | None -> Ir.Absent
-              | Some (_, a) -> argument ctx p a) (Array.of_list params) in
+              match !bound with
+              | ((q : Env.parameter), a) :: rest when q == p -> bound := rest; argument ctx p a
+              | _ -> Ir.Absent) (Array.of_list params) in
           { callee = Routine index; arguments; call_at = at })
   | _ -> unknown ()
 
@@ -316,8 +319,9 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         let params = parameters_of r in
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
         ctx.local_count <- List.length params;
-        let optional p = List.exists (function
-            | Env.Optional_slot ps -> List.memq p ps | Env.Required_slot _ -> false) r.r_slots in
+        let optionals = List.concat_map (function
+            | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) r.r_slots in
+        let optional p = optionals <> [] && List.memq p optionals in
         let parameters = Array.of_list (List.map (fun (p : Env.parameter) ->
             { Ir.p_name = p.p_name; p_mode = p.p_mode; p_optional = optional p;
               p_switch = p.p_type = None;
