@@ -987,6 +987,20 @@ let dimensions ctx place (dims : expression list) : T.dims option =
     else None
   end
 
+(* R-1.4-b: a value is built in memory, component by component: a type whose values have more
+   components than this is a program too complex for the system's resources (§1.4). *)
+let max_value_components = 5_000_000
+
+let value_size_allowed ctx (at : Source.region) what (t : T.object_type) =
+  let n = T.value_size t in
+  if n > max_value_components then begin
+    error ctx ~rule:"value-too-large" ~section:"1.4,2.14" at
+      "program too complex: a value of %s has %s atomic components, more than the %d a value        may hold (a system resource, §1.4)" what
+      (if n = max_int then "too many" else string_of_int n) max_value_components;
+    false
+  end
+  else true
+
 (* §2.16, first table: which declarations each value class allows. *)
 let value_class_allows ctx ~rule ~section (at : Source.region) kind (t : T.data_type) what =
   let cls = T.value_class t in
@@ -1041,6 +1055,9 @@ let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : En
               persistents may omit it"
        | _, None -> ());
       let object_type = match base, shape with Some b, Some d -> Some { T.base = b; dims = d } | _ -> None in
+      let object_type = match object_type with
+        | Some t when not (value_size_allowed ctx data_type.at ("the type " ^ T.to_string t) t) -> None
+        | t -> t in
       let sections = match storage with Var -> "2.22,2.17" | Pers -> "2.23,2.17" | Const -> "2.24,2.17" in
       (* Module data is in scope in its whole module (§2.20): initial values are judged once every
          module's data is registered ([later]). *)
@@ -1110,7 +1127,8 @@ let parameter_declaration ctx place ~optional (p : parameter_declaration) : Env.
       | None -> None
       | Some n ->
           let p_type = match base, dims with
-            | Some b, Some d -> Some { T.base = b; dims = d }
+            | Some b, Some d when value_size_allowed ctx data_type.at ("the type " ^ T.name b) { T.base = b; dims = Scalar } ->
+                Some { T.base = b; dims = d }
             | _ -> Some unknown_object_type in
           Some { p_name = n; p_mode = mode; p_type; p_region = name.at })
 
@@ -1403,6 +1421,8 @@ let routine_signature ctx info (r : routine_declaration) =
       Option.map (fun x -> (x, body)) (make local name Procedure parameters)
   | Function_declaration { local; return_type; name; parameters; body } -> (
       match resolve_type ctx place return_type with
+      | Some t when not (value_size_allowed ctx return_type.at ("the type " ^ T.name t) (T.scalar t)) ->
+          Option.map (fun x -> (x, body)) (make local name (Function unknown_object_type) parameters)
       | Some t ->
           value_class_allows ctx ~rule:"function-value-class" ~section:"2.16" return_type.at
             Function_return t "the return value of a function";

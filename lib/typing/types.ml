@@ -64,6 +64,28 @@ let rec value_class = function
           Hashtbl.replace class_cache r.record_id (r.components, cls);
           cls)
 
+(* Saturating arithmetic: sizes beyond [max_int] are all "too large". *)
+let saturating_add a b = if a > max_int - b then max_int else a + b
+let saturating_mul a b = if a <> 0 && b > max_int / a then max_int else a * b
+
+let size_cache : (int, (string * data_type) list * int) Hashtbl.t = Hashtbl.create 64
+
+let rec data_type_size = function
+  | Num | Dnum | Bool | String | Installed_atomic _ | Anytype -> 1
+  | Record r -> (
+      match Hashtbl.find_opt size_cache r.record_id with
+      | Some (components, n) when components == r.components -> n
+      | _ ->
+          let n = List.fold_left (fun acc (_, t) -> saturating_add acc (data_type_size t)) 0 r.components in
+          Hashtbl.replace size_cache r.record_id (r.components, n);
+          n)
+
+let value_size { base; dims } =
+  let element = data_type_size base in
+  match dims with
+  | Scalar | Conformant _ -> element
+  | Sized sizes -> List.fold_left saturating_mul element sizes
+
 let same_data_type a b =
   match a, b with
   | Num, Num | Dnum, Dnum | Bool, Bool | String, String | Anytype, Anytype -> true
