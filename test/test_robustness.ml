@@ -262,6 +262,55 @@ let generated_constants () =
     (QCheck.Test.make ~count:150 ~name:"generated constants"
        (QCheck.make ~print:(fun s -> s) constant_program) answer)
 
+(* ---------------------------------------------------------------- no infinity at run time *)
+
+(* R-3.12-c: no operator and no installed function makes an infinity or a NaN out of finite
+   arguments, at the edges of num and dnum either: each gives a finite value or an error. *)
+let rec finite (v : Rapid_semantics.Value.t) =
+  match v with
+  | Num x | Dnum x -> Float.is_finite x
+  | Record a | Array a -> Array.for_all finite a
+  | Bool _ | String _ | Handle _ -> true
+
+let no_infinity () =
+  let module V = Rapid_semantics.Value in
+  let max_single = Int32.float_of_bits 0x7f7fffffl and min_single = Int32.float_of_bits 1l in
+  let singles = [ 0.; -0.; 1.; -1.; 0.5; 90.; 360.; 8388608.; 16777216.; 1e30; -1e30;
+                  max_single; -.max_single; min_single ] in
+  let doubles = [ 0.; 1.; -1.; 0.5; 4503599627370496.; 1e300; -1e300; max_float; -.max_float; 4.9e-324 ] in
+  let edges = [ 0.; 1.; max_single; -.max_single ] in
+  let pos = List.concat_map (fun x -> List.concat_map (fun y -> List.map (fun z ->
+      V.Record [| Num x; Num y; Num z |]) edges) edges) edges in
+  let orients = List.map (fun (a, b, c, d) -> V.Record [| Num a; Num b; Num c; Num d |])
+      [ (1., 0., 0., 0.); (max_single, 0., 0., max_single); (0.5, 0.5, 0.5, 0.5); (min_single, 0., 0., 0.) ] in
+  let values = List.map (fun x -> V.Num x) singles @ List.map (fun x -> V.Dnum x) doubles @ pos @ orients in
+  let check what r =
+    match r with
+    | Ok v when not (finite v) -> Alcotest.failf "%s gave %s" what (V.to_debug_string v)
+    | Ok _ | Error _ -> ()
+  in
+  let apply what f = match f () with r -> check what r | exception V.Type_mismatch _ -> () in
+  List.iter (fun (name, arity, f) ->
+      let rec args k acc =
+        if k = 0 then
+          apply name (fun () ->
+              let given = List.rev_map Option.some acc in
+              f (Array.of_list (given @ List.init (arity - List.length given) (fun _ -> None))))
+        else List.iter (fun v -> args (k - 1) (v :: acc)) (if arity > 2 then List.filteri (fun i _ -> i mod 3 = 0) values else values)
+      in
+      args (min arity 3) []) Rapid_semantics.Library.functions;
+  let ops = Rapid_semantics.Arith.[ Num_add; Num_sub; Num_mul; Num_div; Num_intdiv; Num_mod;
+                                    Dnum_add; Dnum_sub; Dnum_mul; Dnum_div; Dnum_intdiv; Dnum_mod;
+                                    Pos_add; Pos_sub; Num_pos_mul; Pos_num_mul; Pos_cross; Pos_num_div; Orient_mul ] in
+  List.iter (fun op -> List.iter (fun a -> List.iter (fun b ->
+      apply (Rapid_semantics.Arith.binary_name op) (fun () -> Rapid_semantics.Arith.binary op a b)) values) values) ops;
+  (* Were an infinity to reach the formatting, it would be refused, not loop. *)
+  (match Rapid_semantics.Format.num_text infinity with
+   | exception V.Type_mismatch _ -> ()
+   | s -> Alcotest.failf "an infinity written as %s" s);
+  Alcotest.(check bool) "NumToStr of an infinity" true
+    (Rapid_semantics.Library.num_to_str (V.Num infinity) (V.Num 2.) ~exp:false = Error "ERR_OVERFLOW")
+
 (* ---------------------------------------------------------------- the conformance runner *)
 
 let runner () =
@@ -299,4 +348,5 @@ let suite =
       Alcotest.test_case "chains of record and alias types" `Quick chains_of_types;
       Alcotest.test_case "chains of constants" `Quick chains_of_constants;
       Alcotest.test_case "generated constants: a static error at a place, or a run that ends" `Quick generated_constants;
+      Alcotest.test_case "no infinity from finite numbers (R-3.12-c)" `Quick no_infinity;
       Alcotest.test_case "the conformance runner reports what it cannot read" `Quick runner ] )
