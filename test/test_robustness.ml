@@ -58,6 +58,14 @@ let every_phase ?(read_back = true) name text expected =
 let in_main ?(declarations = "") ?(routines = "") body =
   "MODULE long\n" ^ declarations ^ "  PROC main()\n" ^ body ^ "  ENDPROC\n" ^ routines ^ "ENDMODULE\n"
 
+(* Checking time, against a bound far above a linear checker's and far below a cubic one's
+   (2,000 chained records took 17 s before). *)
+let quickly name seconds f =
+  let t0 = Unix.gettimeofday () in
+  f ();
+  let t = Unix.gettimeofday () -. t0 in
+  if t > seconds then Alcotest.failf "%s took %.1f s" name t
+
 let long_lists () =
   let n = 200_000 in
   every_phase ~read_back:false "200,000 ELSEIF clauses"
@@ -81,6 +89,15 @@ let long_lists () =
         ^ "    ENDTEST\n    TPWrite \"x=\" \\Num:=x;\n"))
     [ Printf.sprintf "x=%d" n ];
   (* Long statement lists: test_semantics.ml runs 500,000 statements, test_fuzz.ml parses 1,000,000. *)
+  let n = 10_000 in
+  quickly "10,000 labels and GOTOs" 5.0 (fun () ->
+      every_phase "10,000 labels and GOTOs"
+        (in_main
+           ("    VAR num x := 0;\n"
+            ^ repeat n (fun i -> Printf.sprintf "  l%d:\n    x := x + 1;\n" i)
+            ^ repeat n (fun i -> Printf.sprintf "    IF x < 0 GOTO l%d;\n" i)
+            ^ "    TPWrite \"x=\" \\Num:=x;\n"))
+        [ Printf.sprintf "x=%d" n ]);
   let n = 5_000 in
   every_phase "a call with 5,000 arguments"
     (in_main
@@ -93,14 +110,6 @@ let long_lists () =
        ~declarations:("  CONST num a{50000} := [" ^ String.concat "," (List.init 50_000 string_of_int) ^ "];\n")
        "    TPWrite \"a=\" \\Num:=a{50000};\n")
     [ "a=49999" ]
-
-(* Checking time, against a bound far above a linear checker's and far below a cubic one's
-   (2,000 chained records took 17 s before). *)
-let quickly name seconds f =
-  let t0 = Unix.gettimeofday () in
-  f ();
-  let t = Unix.gettimeofday () -. t0 in
-  if t > seconds then Alcotest.failf "%s took %.1f s" name t
 
 let accepted name text = ignore (load name (parse name text))
 

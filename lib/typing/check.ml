@@ -43,7 +43,9 @@ type place = {
   routine : Env.routine option;          (* None: module-level declarations *)
   in_error_handler : bool;
   in_loop : bool;
-  labels : string list list;             (* labels of the enclosing statement lists, innermost first *)
+  labels : (string, unit) Hashtbl.t option list;
+      (* labels of the enclosing statement lists (by key), innermost first; None: a list without
+         labels. Tables, since a routine may hold thousands of labels and GOTOs. *)
 }
 
 let error ctx ~rule ~section region fmt =
@@ -766,7 +768,13 @@ let literal_expression ctx (e : expression) =
 (* ------------------------------------------------------------------ statements *)
 
 let labels_of (l : statement list) =
-  List.filter_map (fun (s : statement) -> match s.it with Label i -> name_of_identifier i | _ -> None) l
+  match List.filter_map (fun (s : statement) ->
+      match s.it with Label i -> name_of_identifier i | _ -> None) l with
+  | [] -> None
+  | names ->
+      let t = Hashtbl.create 8 in
+      List.iter (fun n -> Hashtbl.replace t (key n) ()) names;
+      Some t
 
 let check_condition ~section ctx place (e : expression) =
   check_expression ~sections:(section ^ ",3.4,2.17") ctx place e (T.scalar Bool)
@@ -852,7 +860,7 @@ and goto ctx place (id : identifier) =
   match name_of_identifier id with
   | None -> ()
   | Some name ->
-      let visible = List.exists (List.exists (T.same_name name)) place.labels in
+      let visible = List.exists (function Some t -> Hashtbl.mem t (key name) | None -> false) place.labels in
       (match Env.lookup place.scope name with
        | Some (Label _ as o) -> Hashtbl.replace ctx.elab.names id.at o
        | _ -> ());
