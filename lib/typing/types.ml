@@ -118,7 +118,14 @@ let equal_types ~value_context a b =
 let counter = ref 0
 let new_record_id () = incr counter; !counter
 
-let same_name a b = String.lowercase_ascii a = String.lowercase_ascii b
+(* Without building lowered copies: names are compared wherever components and labels are
+   looked up, thousands of times in a large record. *)
+let same_name a b =
+  let n = String.length a in
+  n = String.length b
+  && (let rec from i =
+        i >= n || (Char.lowercase_ascii a.[i] = Char.lowercase_ascii b.[i] && from (i + 1)) in
+      from 0)
 
 let component r name =
   List.find_map (fun (n, t) -> if same_name n name then Some t else None) r.components
