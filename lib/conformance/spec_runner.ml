@@ -145,7 +145,10 @@ let collect dir =
                   |> List.fold_left (fun acc name -> walk acc (Filename.concat path name)) acc
             end
         | _ when not (Filename.check_suffix path ".mod") -> acc
-        | S_REG -> path :: acc
+        | S_REG -> (
+            match Unix.access path [ Unix.R_OK ] with
+            | () -> path :: acc
+            | exception Unix.Unix_error (e, _, _) -> error path (Unix.error_message e); acc)
         | _ -> (
             match Spec_case.readable_file path with
             | Error m -> error path m; acc
