@@ -1003,7 +1003,8 @@ let value_size_allowed ctx (at : Source.region) what (t : T.object_type) =
   let n = T.value_size t in
   if n > max_value_components then begin
     error ctx ~rule:"value-too-large" ~section:"1.4,2.14" at
-      "program too complex: a value of %s has %s atomic components, more than the %d a value        may hold (a system resource, §1.4)" what
+      "program too complex: a value of %s has %s atomic components, more than the %d a value \
+       may hold (a system resource, §1.4)" what
       (if n = max_int then "too many" else string_of_int n) max_value_components;
     false
   end
