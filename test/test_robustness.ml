@@ -196,41 +196,79 @@ let chains_of_constants () =
    accepted program runs to its end (its initial values cannot fail any more). *)
 let constant_program =
   let open QCheck.Gen in
-  let literal = oneofl [ "0"; "1"; "2"; "7"; "0.5"; "3E38"; "1E39"; "1E-50"; "16777216"; "8388608" ] in
+  (* Mostly harmless numbers, sometimes one at an edge of num. *)
+  let literal = frequency [ (12, map string_of_int (int_range 0 9)); (1, return "0.5");
+                            (1, oneofl [ "3E38"; "1E39"; "1E-50"; "16777216"; "8388608" ]) ] in
+  let operator = frequency [ (4, oneofl [ "+"; "-"; "*" ]); (1, oneofl [ "/"; "DIV"; "MOD" ]) ] in
+  (* A name, or an element of the constant array t (index possibly not an integer, or outside). *)
+  let operand names depth expr =
+    if depth > 0 then frequency [ (12, oneofl names); (1, map (Printf.sprintf "t{%s}") (expr names (depth - 1))) ]
+    else oneofl names
+  in
   let rec expr names depth =
     if depth = 0 || names = [] then
       if names = [] then literal else frequency [ (2, literal); (3, oneofl names) ]
     else
       frequency
-        [ (2, literal); (3, oneofl names);
+        [ (2, literal); (3, operand names depth expr);
           (4, map3 (fun a op b -> Printf.sprintf "(%s %s %s)" a op b)
-               (expr names (depth - 1)) (oneofl [ "+"; "-"; "*"; "/"; "DIV"; "MOD" ])
+               (expr names (depth - 1)) operator
                (expr names (depth - 1)));
           (1, map (fun a -> "(-" ^ a ^ ")") (expr names (depth - 1))) ]
   in
-  int_range 1 6 >>= fun k ->
+  (* Strings: concatenations of constants that may pass 80 bytes. *)
+  let text = oneofl [ "\"\""; "\"abc\""; "\"" ^ String.make 40 'x' ^ "\""; "\"" ^ String.make 79 'y' ^ "\"" ] in
+  let rec string_expr names depth =
+    if depth = 0 || names = [] then (if names = [] then text else frequency [ (1, text); (2, oneofl names) ])
+    else
+      frequency [ (1, text); (2, oneofl names);
+                  (2, map2 (Printf.sprintf "%s + %s") (string_expr names (depth - 1)) (string_expr names (depth - 1))) ]
+  in
+  int_range 1 4 >>= fun k ->
   let module_names = List.init k (Printf.sprintf "c%d") in
-  (* Module constants may name any module constant: later ones, themselves (cycles). *)
-  list_repeat k (expr module_names 3) >>= fun module_inits ->
+  (* Module constants name mostly the ones before them, sometimes any: later ones, themselves
+     (cycles). *)
+  let rec module_constants i acc =
+    if i = k then return (List.rev acc)
+    else
+      frequency [ (6, expr (List.filteri (fun j _ -> j < i) module_names) 2); (1, expr module_names 2) ]
+      >>= fun e -> module_constants (i + 1) (e :: acc)
+  in
+  module_constants 0 [] >>= fun module_inits ->
+  list_repeat 3 (expr module_names 1) >>= fun table ->
+  int_range 0 2 >>= fun m ->
+  let string_names = List.init m (Printf.sprintf "s%d") in
+  let rec string_constants i acc =
+    if i = m then return (List.rev acc)
+    else
+      frequency [ (4, string_expr (List.filteri (fun j _ -> j < i) string_names) 2); (1, string_expr string_names 2) ]
+      >>= fun e -> string_constants (i + 1) (e :: acc)
+  in
+  string_constants 0 [] >>= fun string_inits ->
   int_range 0 3 >>= fun r ->
   let routine_names = List.init r (Printf.sprintf "v%d") in
   (* Routine data may name module constants and routine data declared before. *)
   let rec routine i acc =
     if i = r then return (List.rev acc)
     else
-      expr (module_names @ List.filteri (fun j _ -> j < i) routine_names) 3 >>= fun e ->
+      expr (module_names @ List.filteri (fun j _ -> j < i) routine_names) 2 >>= fun e ->
       bool >>= fun const -> routine (i + 1) ((const, e) :: acc)
   in
   routine 0 [] >>= fun routine_inits ->
   return
     ("MODULE gen\n"
      ^ String.concat "" (List.mapi (fun i e -> Printf.sprintf "  CONST num c%d := %s;\n" i e) module_inits)
+     ^ Printf.sprintf "  CONST num t{3} := [%s];\n" (String.concat ", " table)
+     ^ String.concat "" (List.mapi (fun i e -> Printf.sprintf "  CONST string s%d := %s;\n" i e) string_inits)
      ^ "  PROC main()\n"
      ^ String.concat "" (List.mapi (fun i (const, e) ->
          Printf.sprintf "    %s num v%d := %s;\n" (if const then "CONST" else "VAR") i e) routine_inits)
      ^ String.concat "" (List.map (fun n -> Printf.sprintf "    TPWrite \"%s=\" \\Num:=%s;\n" n n)
                            (module_names @ routine_names))
+     ^ String.concat "" (List.map (fun n -> Printf.sprintf "    TPWrite %s;\n" n) string_names)
      ^ "  ENDPROC\nENDMODULE\n")
+
+let accepted_runs = ref 0 and refusals = ref 0
 
 let answer text =
   match Parse.parse_string ~name:"gen.mod" text with
@@ -245,6 +283,7 @@ let answer text =
               | _ -> QCheck.Test.fail_reportf "a report without a place: %s" (Rapid_typing.Report.to_string r)) rs;
           if not (List.exists (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs) then
             QCheck.Test.fail_report "refused without an error";
+          incr refusals;
           true
       | Error (Front_end _ | Internal _) -> QCheck.Test.fail_report "refused by the front end"
       | Ok loaded -> (
@@ -257,7 +296,7 @@ let answer text =
               | exception e -> QCheck.Test.fail_reportf "the run raised %s" (Printexc.to_string e)
               | () -> (
                   match M.outcome cfg with
-                  | Ended -> true
+                  | Ended -> incr accepted_runs; true
                   | Stopped { name; _ } -> QCheck.Test.fail_reportf "accepted, but stopped by %s" name
                   | Stuck m -> QCheck.Test.fail_reportf "stuck: %s" m
                   | Running | Resource_exhausted _ | Unsupported _ ->
@@ -265,8 +304,12 @@ let answer text =
 
 let generated_constants () =
   QCheck.Test.check_exn ~rand:(Random.State.make [| 20261123 |])
-    (QCheck.Test.make ~count:150 ~name:"generated constants"
-       (QCheck.make ~print:(fun s -> s) constant_program) answer)
+    (QCheck.Test.make ~count:300 ~name:"generated constants"
+       (QCheck.make ~print:(fun s -> s) constant_program) answer);
+  (* The generator reaches both answers, often. *)
+  if !accepted_runs < 30 || !refusals < 30 then
+    Alcotest.failf "%d programs accepted and run, %d refused: the generator misses one side"
+      !accepted_runs !refusals
 
 (* ---------------------------------------------------------------- no infinity at run time *)
 
