@@ -183,14 +183,22 @@ let check_cmd =
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
           exit_internal
-      | Ok installed ->
+      | Ok installed -> (
+          (* The whole static semantics, the initial values known before the run included
+             (Session: check, lower, evaluate them). *)
           let modules = List.filter_map Result.to_option parsed in
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          print (List.map Check_output.of_report result.reports);
+          let reports =
+            if Rapid_typing.Check.errors result <> [] then result.reports
+            else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+              | Ok _ -> result.reports
+              | Error initial_value_errors -> result.reports @ initial_value_errors in
+          print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
           if format = Check_output.Text then Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
-          if Rapid_typing.Check.errors result = [] then exit_ok else exit_static_error
+          if List.exists (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports then exit_static_error
+          else exit_ok)
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
   let man = [
@@ -296,14 +304,26 @@ let finish (o : M.outcome) steps ~max_steps =
   | Stuck m -> Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n" m steps; exit_internal
   | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
 
+(* A count given on the command line: a whole number from 0 to the largest integer; a negative
+   one is refused as a usage error (exit status 2) that says so. *)
+let count ~what =
+  let parse s =
+    match int_of_string_opt (String.trim s) with
+    | Some n when n >= 0 -> Ok n
+    | Some _ -> Error (`Msg (Printf.sprintf "%s must be 0 or more, not %s" what s))
+    | None ->
+        Error (`Msg (Printf.sprintf "%s must be a whole number from 0 to %d, not %S" what max_int s))
+  in
+  Arg.conv (parse, Format.pp_print_int)
+
 let common_run_args =
   let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
   let entry = Arg.(value & opt string "main" & info [ "entry" ] ~docv:"NAME" ~doc:"The entry routine (default main).") in
-  let max_steps = Arg.(value & opt int 100_000_000 & info [ "max-steps" ] ~docv:"N" ~doc:"Stop after N reduction steps (exit status 3).") in
+  let max_steps = Arg.(value & opt (count ~what:"--max-steps") 100_000_000 & info [ "max-steps" ] ~docv:"N" ~doc:"Stop after N reduction steps (exit status 3).") in
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
-  let max_depth = Arg.(value & opt int M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
-  let retry_limit = Arg.(value & opt int M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
-  let max_memory = Arg.(value & opt int M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
+  let max_depth = Arg.(value & opt (count ~what:"--max-call-depth") M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
+  let retry_limit = Arg.(value & opt (count ~what:"--retry-limit") M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
+  let max_memory = Arg.(value & opt (count ~what:"--max-memory") M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
   let stub = Arg.(value & flag & info [ "stub-unmodelled" ] ~doc:"Run an installed routine whose behaviour rapid-sem does not model as a no-op (a function returns its type's initial value; VAR and INOUT arguments are left as they are), with one warning per routine, instead of ending the run with exit status 4.") in
   (files, entry, max_steps, Term.(const (fun a b -> (a, b)) $ allow_unknown $ stub), max_depth,
    Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
@@ -413,8 +433,8 @@ let region_text r =
 let trace_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let format = Arg.(value & opt (enum [ ("human", `Human); ("jsonl", `Jsonl) ]) `Human & info [ "format" ] ~docv:"FORMAT" ~doc:"$(b,human) or $(b,jsonl) (doc/trace-format.md).") in
-  let from_ = Arg.(value & opt int 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
-  let to_ = Arg.(value & opt int max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
+  let from_ = Arg.(value & opt (count ~what:"--from") 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
+  let to_ = Arg.(value & opt (count ~what:"--to") max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
   let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller =
     guard @@ fun () ->
@@ -498,4 +518,20 @@ let () =
   Sys.set_signal Sys.sigpipe Sys.Signal_ignore;
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version ~doc in
-  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))
+  (* cmdliner reads "--max-steps -1" as an option "-1": joined as "--max-steps=-1", the value
+     reaches [count], whose message says what is wrong with it. *)
+  let count_options = [ "--max-steps"; "--max-call-depth"; "--retry-limit"; "--from"; "--to"; "--max-memory" ] in
+  let rec join = function
+    | opt :: value :: rest
+      when List.mem opt count_options && String.length value > 1 && value.[0] = '-'
+           && int_of_string_opt value <> None ->
+        (opt ^ "=" ^ value) :: join rest
+    | a :: rest -> a :: join rest
+    | [] -> []
+  in
+  let argv = Array.of_list (join (Array.to_list Sys.argv)) in
+  let status = Cmd.eval' ~argv (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
+                                                 Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]) in
+  (* A command line that cannot be read (an unknown option, a negative limit) is refused like a
+     static error, with cmdliner's message saying what is wrong. *)
+  exit (if status = Cmd.Exit.cli_error then exit_static_error else status)

@@ -17,4 +17,5 @@ let () =
       Test_controller.suite;
       Test_installed.suite;
       Test_check_output.suite;
+      Test_robustness.suite;
     ]

@@ -8,5 +8,6 @@ let read_lines path =
             match input_line ic with
             | line -> loop (line :: acc)
             | exception End_of_file -> Ok (List.rev acc)
+            | exception Sys_error m -> Error m
           in
           loop [])

@@ -81,11 +81,27 @@ let parse_expect value =
 
 let is_module_file f = Filename.check_suffix f ".mod" || Filename.check_suffix f ".sys"
 
+(* A file to read, or why it cannot be: opening a FIFO would wait for a writer for ever, and
+   reading a device need not end. *)
+let readable_file path =
+  match (Unix.stat path).st_kind with
+  | S_REG -> Ok ()
+  | S_DIR -> Error "a folder, not a file"
+  | S_FIFO -> Error "a FIFO, not a regular file"
+  | S_CHR | S_BLK -> Error "a device, not a regular file"
+  | S_SOCK -> Error "a socket, not a regular file"
+  | S_LNK -> Error "a symbolic link that leads nowhere"
+  | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
+
 let read path =
+  let listing_problem = ref None in
   let files =
     if Sys.file_exists path && Sys.is_directory path then
-      Sys.readdir path |> Array.to_list |> List.filter is_module_file |> List.sort compare
-      |> List.map (Filename.concat path)
+      match Sys.readdir path with
+      | names ->
+          names |> Array.to_list |> List.filter is_module_file |> List.sort compare
+          |> List.map (Filename.concat path)
+      | exception Sys_error m -> listing_problem := Some m; []
     else [ path ]
   in
   let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false; stub_unmodelled = false; description = None;
@@ -103,7 +119,8 @@ let read path =
   in
   let add_problem case m = { case with problems = case.problems @ [ m ] } in
   let case = List.fold_left (fun case file ->
-      match In_channel_compat.read_lines file with
+      match Result.bind (Result.map_error (fun m -> file ^ ": " ^ m) (readable_file file))
+              (fun () -> In_channel_compat.read_lines file) with
       | Error message -> add_problem case message
       | Ok lines ->
           List.fold_left (fun case line ->
@@ -162,7 +179,8 @@ let read path =
               | Some (k, v) -> add_problem case (Printf.sprintf "unknown directive @%s %s" k v))
             case lines) empty files
   in
-  let case = if files = [] then add_problem case "a .task folder without modules" else case in
+  let case = match !listing_problem with Some m -> add_problem case m | None -> case in
+  let case = if files = [] && !listing_problem = None then add_problem case "a .task folder without modules" else case in
   let case = if case.format = "3" && case.run = None then { case with run = Some no_run } else case in
   let case = if case.expectation = None then add_problem case "no @expect directive" else case in
   if case.sections = [] then add_problem case "no @section directive" else case

@@ -43,6 +43,10 @@ val read : string -> t
 (** Reads the directives of the case at this path (a file, or a [.task] folder). A case that
     cannot be read has a problem. *)
 
+val readable_file : string -> (unit, string) result
+(** [Ok ()] for a regular file; otherwise why it is not read: a FIFO, a device, a folder, a file
+    that cannot be looked at. *)
+
 val known_formats : string list
 (** The formats this runner reads: ["1"] (the front end), ["2"] (the static semantics too) and
     ["3"] (running the program too). *)

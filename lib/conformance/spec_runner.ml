@@ -36,10 +36,8 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
-let run_program case (run : Spec_case.run) ~io ~installed ~modules (result : Rapid_typing.Check.result) =
+let run_program case (run : Spec_case.run) ~io program =
   let module M = Rapid_semantics.Machine in
-  let program = Rapid_semantics.Session.connect_signals io
-      (Rapid_semantics.Lower.program ~installed ~modules result.elaboration) in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
@@ -104,16 +102,18 @@ let run_case (case : Spec_case.t) =
         match io with
         | Error m -> fail case m
         | Ok io ->
-        match Rapid_semantics.Session.installed ~io () with
-        | Error d -> fail case ("the installed environment does not parse: " ^ Diagnostic.to_string d)
-        | Ok installed -> (
-            let result =
-              Rapid_typing.Check.check_task ~options:{ allow_unknown = case.allow_unknown } ~installed modules in
-            match Rapid_typing.Check.errors result with
-            | [] -> (
-                match case.run, expected with
-                | Some run, Spec_case.Accepted -> run_program case run ~io ~installed ~modules result
-                | _ -> accepted case expected)
+        (* The whole static semantics, the initial values known before the run included. *)
+        match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
+        | Error (Internal m) -> fail case m
+        | Error (Front_end (d :: _)) -> compare_refusal case expected d
+        | Error (Front_end []) -> fail case "refused without a diagnostic"
+        | Ok loaded -> (
+            match case.run, expected with
+            | Some run, Spec_case.Accepted -> run_program case run ~io loaded.program
+            | _ -> accepted case expected)
+        | Error (Static reports) -> (
+            match List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports with
+            | [] -> fail case "refused without an error"
             | first :: _ -> (
                 (* The report must also name one of the sections the case tests. *)
                 match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with
@@ -124,16 +124,51 @@ let run_case (case : Spec_case.t) =
                                  (String.concat ", §" first.sections) (String.concat ", §" case.sections) o.detail }
                 | o -> o)))
 
-let find_cases dir =
+(* The cases below [dir], and what could not be looked at (path, reason). Folders are walked
+   once each, by their identity, so that a symbolic link that leads back up is reported instead of
+   followed for ever; a [.mod] entry that is not a regular file (a FIFO, a device) is reported
+   instead of opened, since opening a FIFO waits for a writer. *)
+let collect dir =
+  let errors = ref [] in
+  let error path message = errors := (path, message) :: !errors in
+  let visited = Hashtbl.create 64 in
   let rec walk acc path =
-    if Sys.is_directory path && Filename.check_suffix path ".task" then path :: acc
-    else if Sys.is_directory path then
-      Sys.readdir path |> Array.to_list |> List.sort compare
-      |> List.fold_left (fun acc name -> walk acc (Filename.concat path name)) acc
-    else if Filename.check_suffix path ".mod" then path :: acc
-    else acc
+    match Unix.stat path with
+    | exception Unix.Unix_error (e, _, _) -> error path (Unix.error_message e); acc
+    | st -> (
+        match st.st_kind with
+        | S_DIR when Filename.check_suffix path ".task" -> path :: acc
+        | S_DIR ->
+            if Hashtbl.mem visited (st.st_dev, st.st_ino) then begin
+              error path "a folder reached twice (a symbolic link loop): not walked again";
+              acc
+            end
+            else begin
+              Hashtbl.replace visited (st.st_dev, st.st_ino) ();
+              match Sys.readdir path with
+              | exception Sys_error m -> error path ("cannot list the folder: " ^ m); acc
+              | names ->
+                  names |> Array.to_list |> List.sort compare
+                  |> List.fold_left (fun acc name -> walk acc (Filename.concat path name)) acc
+            end
+        | _ when not (Filename.check_suffix path ".mod") -> acc
+        | S_REG -> (
+            match Unix.access path [ Unix.R_OK ] with
+            | () -> path :: acc
+            | exception Unix.Unix_error (e, _, _) -> error path (Unix.error_message e); acc)
+        | _ -> (
+            match Spec_case.readable_file path with
+            | Error m -> error path m; acc
+            | Ok () -> path :: acc))
   in
-  if Sys.file_exists dir then List.rev (walk [] dir) else []
+  let cases =
+    match Unix.lstat dir with
+    | exception Unix.Unix_error (e, _, _) -> error dir (Unix.error_message e); []
+    | _ -> List.rev (walk [] dir)
+  in
+  (cases, List.rev !errors)
+
+let find_cases dir = fst (collect dir)
 
 (* Sections sort by their numbers: 2.5 before 2.10 before 10.1. *)
 let compare_sections a b =
@@ -142,7 +177,10 @@ let compare_sections a b =
   compare (key a, a) (key b, b)
 
 let run ?(verbose = false) out dir =
-  let outcomes = List.map (fun path -> run_case (Spec_case.read path)) (find_cases dir) in
+  let paths, errors = collect dir in
+  let outcomes = List.map (fun path -> run_case (Spec_case.read path)) paths in
+  (* What could not be looked at fails the run: a suite that is not all there has not passed. *)
+  List.iter (fun (path, m) -> Format.fprintf out "ERROR %s: %s@." path m) errors;
   let by_section = Hashtbl.create 64 in
   List.iter (fun o ->
       let sections = if o.case.sections = [] then [ "(none)" ] else o.case.sections in
@@ -162,7 +200,7 @@ let run ?(verbose = false) out dir =
       let p, f = Hashtbl.find by_section s in
       Format.fprintf out "%-10s %7d %7d@." s p f) sections;
   let count v = List.length (List.filter (fun o -> o.verdict = v) outcomes) in
-  let passed = count Passed and failed = count Failed and skipped = count Skipped in
+  let passed = count Passed and failed = count Failed + List.length errors and skipped = count Skipped in
   if skipped = 0 then Format.fprintf out "@.%d passed, %d failed@." passed failed
   else Format.fprintf out "@.%d passed, %d failed, %d skipped@." passed failed skipped;
   (passed, failed)

@@ -10,6 +10,12 @@ val run_case : Spec_case.t -> outcome
 val find_cases : string -> string list
 (** The [.mod] files below a folder, in a stable order. *)
 
+val collect : string -> string list * (string * string) list
+(** The cases below a folder ([.mod] files and [.task] folders, in a stable order), and what could
+    not be looked at, with the reason: an unreadable folder, a symbolic link loop, a [.mod] entry
+    that is a FIFO or a device or cannot be looked at. Never blocks, never raises. *)
+
 val run : ?verbose:bool -> Format.formatter -> string -> int * int
-(** [run out dir] runs every case below [dir], prints each failure, the summary per section and
-    [N passed, N failed], and returns (passed, failed). *)
+(** [run out dir] runs every case below [dir], prints each failure, each path it could not look at
+    ([ERROR PATH: reason], counted as failed), the summary per section and [N passed, N failed],
+    and returns (passed, failed). *)

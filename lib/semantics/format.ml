@@ -23,7 +23,12 @@ let with_point n decimals =
 
 let signed negative text = if negative then "-" ^ text else text
 
+(* R-3.12-c: no num or dnum value is infinite or NaN; were one to reach these functions, the
+   digit loops below would not end, so it is refused as the bug it would be. *)
+let finite x = if not (Float.is_finite x) then Value.type_mismatch "a finite number (R-3.12-c)"
+
 let fixed x ~decimals =
+  finite x;
   let n = round_half_away (Q.mul (Q.of_float x) (pow10 decimals)) in
   signed (Z.sign n < 0) (with_point (Z.abs n) decimals)
 
@@ -49,6 +54,7 @@ let significant a digits =
 let exponent_text e = Printf.sprintf "E%c%02d" (if e < 0 then '-' else '+') (abs e)
 
 let scientific x ~decimals =
+  finite x;
   if x = 0. then with_point Z.zero decimals ^ exponent_text 0
   else
     let n, e = significant (Q.abs (Q.of_float x)) (decimals + 1) in
@@ -77,6 +83,7 @@ let general a digits =
 let integer_tolerance = Q.make (Z.of_int 5) (Z.of_int 1_000_000)
 
 let num_text x =
+  finite x;
   if x = 0. then "0"
   else
     let a = Q.abs (Q.of_float x) in
@@ -92,6 +99,7 @@ let num_text x =
     | _ -> signed (x < 0.) (general a 6)
 
 let dnum_text x =
+  finite x;
   if x = 0. then "0"
   else if Float.is_integer x && Float.abs x <= 4503599627370496. then
     Z.to_string (Z.of_float x)

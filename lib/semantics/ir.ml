@@ -153,7 +153,7 @@ type routine = {
   error : error_handler option;
   undo : block option;
   primitive : string option;                 (* an installed routine bound to a primitive *)
-  stub_result : Value.t option;              (* a function's result type's initial value, what
+  stub_result : Value.shape option;          (* a function's result type, whose initial value is what
                                                 --stub-unmodelled returns (§2.22) *)
   local : bool;                              (* LOCAL: visible in its module only (§5.3) *)
   at : region;

@@ -109,6 +109,7 @@ let to_str v dec ~exp =
   let* d = decimals dec in
   (* Every result has at least d + 2 characters: refuse before building a huge one. *)
   if d > 80 then Error "ERR_STRTOOLNG"
+  else if not (Float.is_finite x) then Error "ERR_OVERFLOW"   (* R-3.12-c: none is infinite *)
   else string_result (if exp then Format.scientific x ~decimals:d else Format.fixed x ~decimals:d)
 
 let num_to_str v dec ~exp =

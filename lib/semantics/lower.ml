@@ -145,10 +145,13 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       | None -> unknown ()
       | Some index ->
           let params = parameters_of r in
+          (* The bound arguments are in parameter order (Elaboration): one walk along both lists,
+             not a search per parameter, since a call may have thousands of arguments. *)
+          let bound = ref binding.bound in
           let arguments = Array.map (fun (p : Env.parameter) ->
-              match List.find_opt (fun ((q : Env.parameter), _) -> q == p) binding.bound with
-              | None -> Ir.Absent
-              | Some (_, a) -> argument ctx p a) (Array.of_list params) in
+              match !bound with
+              | ((q : Env.parameter), a) :: rest when q == p -> bound := rest; argument ctx p a
+              | _ -> Ir.Absent) (Array.of_list params) in
           { callee = Routine index; arguments; call_at = at })
   | _ -> unknown ()
 
@@ -288,16 +291,25 @@ and statement ctx (s : A.statement) : Ir.stmt =
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
   | If i ->
-      let rec chain = function
-        | [] -> (match i.else_branch with Some l -> block ctx l | None -> block ctx [])
-        | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest ->
-            let inner = { Ir.s = Ir.Elseif (expr ctx ~dnum:false c, block ctx l, chain rest); sat = at } in
-            { id = new_block ctx; body = [| inner |] }
-        | { it = EIT_placeholder; at } :: _ ->
-            { id = new_block ctx; body = [| { s = Placeholder_statement; sat = at } |] }
+      (* ELSEIF is an IF in the ELSE list: the chain is built from its end, in a loop, since a
+         generated program may hold hundreds of thousands of ELSEIF clauses. Nothing after an
+         <EIT> placeholder is reached. *)
+      let rec upto_placeholder acc = function
+        | [] -> (acc, None)
+        | ({ it = A.EIT_placeholder; at } : A.elseif_clause) :: _ -> (acc, Some at)
+        | ({ it = A.Elseif (c, l); at } : A.elseif_clause) :: rest -> upto_placeholder ((c, l, at) :: acc) rest
       in
+      let reversed, placeholder = upto_placeholder [] i.elseifs in
       let then_ = block ctx i.then_branch in
-      make (If (expr ctx ~dnum:false i.condition, then_, chain i.elseifs))
+      let condition = expr ctx ~dnum:false i.condition in
+      let last = match placeholder with
+        | Some at -> { Ir.id = new_block ctx; body = [| { Ir.s = Placeholder_statement; sat = at } |] }
+        | None -> (match i.else_branch with Some l -> block ctx l | None -> block ctx []) in
+      let chain = List.fold_left (fun else_ (c, l, at) ->
+          (* Elseif: RETRY and TRYNEXT after an error in its condition go to the whole IF (R-4.16). *)
+          let inner = { Ir.s = Ir.Elseif (expr ctx ~dnum:false c, block ctx l, else_); sat = at } in
+          { Ir.id = new_block ctx; body = [| inner |] }) last reversed in
+      make (If (condition, then_, chain))
   | Compact_if (c, body) -> make (Compact_if (expr ctx ~dnum:false c, statement ctx body))
   | For f ->
       let variable = ctx.local_count in
@@ -307,9 +319,9 @@ and statement ctx (s : A.statement) : Ir.stmt =
                   step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
   | While (c, body) -> make (While (expr ctx ~dnum:false c, block ctx body))
   | Test t ->
-      let cases = List.map (fun (c : A.case_clause) ->
+      let cases = list_long (fun (c : A.case_clause) ->
           match c.it with
-          | Case (values, l) -> (Array.of_list (List.map (expr ctx ~dnum:false) values), block ctx l)
+          | Case (values, l) -> (map_long (expr ctx ~dnum:false) values, block ctx l)
           | CSE_placeholder -> ([| { Ir.e = Placeholder; at = c.at } |], block ctx [])) t.cases in
       make (Test (expr ctx ~dnum:false t.test_expression, Array.of_list cases,
                   (match t.default with Some l -> block ctx l | None -> block ctx [])))
@@ -335,8 +347,9 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         let params = parameters_of r in
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
         ctx.local_count <- List.length params;
-        let optional p = List.exists (function
-            | Env.Optional_slot ps -> List.memq p ps | Env.Required_slot _ -> false) r.r_slots in
+        let optionals = List.concat_map (function
+            | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) r.r_slots in
+        let optional p = optionals <> [] && List.memq p optionals in
         (* §5.2: the alternatives of one optional slot are mutually exclusive. *)
         let group p =
           let rec find k = function
@@ -383,7 +396,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         Some { Ir.name = r.r_name; module_name; kind; parameters; locals = ctx.local_count;
                local_inits = inits; body = main; backward; error; undo;
                primitive = (if installed && is_empty then Some r.r_name else None); at = name.at;
-               stub_result = (match r.r_kind with Function t -> Some (Value.default_of (shape_default t)) | _ -> None);
+               stub_result = (match r.r_kind with Function t -> Some (shape_default t) | _ -> None);
                local = r.r_local }
     | _ -> None
   in

@@ -466,7 +466,7 @@ let call_primitive cfg (cs : call_state) name =
       let first = not (Hashtbl.mem cfg.stubbed key) in
       if first then Hashtbl.replace cfg.stubbed key ();
       (match cs.callee.kind with
-       | Function -> cfg.focus <- F_value (V.copy (Option.value cs.callee.stub_result ~default:(V.num 0.)))
+       | Function -> cfg.focus <- F_value (V.default_of (Option.value cs.callee.stub_result ~default:V.S_num))
        | Procedure | Trap -> cfg.focus <- F_next);
       ("call-stubbed",
        List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))

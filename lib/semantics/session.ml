@@ -49,6 +49,11 @@ let connect_signals (io : Io.t) (program : Ir.program) =
         find 1 io.signals) program.globals in
   { program with globals }
 
+(* The program of a checked task, its signals connected and the initial values of its data
+   computed: they are known before the run (§3.2), so their errors are static. *)
+let lower ?(io = Io.empty) ~installed ~modules (result : Rapid_typing.Check.result) =
+  Initial_values.evaluate (connect_signals io (Lower.program ~installed ~modules result.elaboration))
+
 let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
   match installed ~io () with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
@@ -56,8 +61,10 @@ let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
       let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
-        let program = connect_signals io (Lower.program ~installed ~modules result.elaboration) in
-        Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
+        match lower ~io ~installed ~modules result with
+        | Ok program ->
+            Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
+        | Error reports -> Error (Static (result.reports @ reports))
 
 let load ?(strict = false) ?allow_unknown ?io files =
   let options = { Parse.default_options with strict } in

@@ -28,6 +28,14 @@ val installed :
 (** The installed environment, with a generated module declaring the signals of the I/O
     configuration (VAR signaldi di1; ...). *)
 
+val lower :
+  ?io:Rapid_controller.Io_config.t -> installed:Ast.module_declaration list ->
+  modules:Ast.module_declaration list -> Rapid_typing.Check.result ->
+  (Ir.program, Rapid_typing.Report.t list) result
+(** The program of a task that checked without error: lowered, its signals connected, and the
+    initial values of its data computed before the run (§3.2, doc/rulings.md R-3.2-a); [Error]
+    holds the semantic errors of initial values that cannot be computed. *)
+
 val connect_signals : Rapid_controller.Io_config.t -> Ir.program -> Ir.program
 (** Each signal object of the generated module gets the handle of its signal in the run's
     world. *)

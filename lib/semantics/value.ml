@@ -119,11 +119,22 @@ let rec default_of = function
 let add_sat a b = if a > max_int - b then max_int else a + b
 let mul_sat n a = if n > 0 && a > max_int / n then max_int else n * a
 
-let rec shape_bytes = function
-  | S_num | S_dnum | S_bool | S_handle _ -> 32
-  | S_string -> 32
-  | S_record cs -> Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (shape_bytes c))) 16 cs
-  | S_array (n, e) -> add_sat 16 (mul_sat n (add_sat 8 (shape_bytes e)))
+(* Shapes share their record nodes (shape_of_data_type): each node's size is computed once. *)
+let shape_bytes shape =
+  let known = ref [] in
+  let rec go s =
+    match s with
+    | S_num | S_dnum | S_bool | S_handle _ -> 32
+    | S_string -> 32
+    | S_record cs -> (
+        match List.assq_opt s !known with
+        | Some n -> n
+        | None ->
+            let n = Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (go c))) 16 cs in
+            known := (s, n) :: !known; n)
+    | S_array (n, e) -> add_sat 16 (mul_sat n (add_sat 8 (go e)))
+  in
+  go shape
 
 let rec bytes = function
   | Num _ | Dnum _ | Bool _ | Handle _ -> 32
@@ -143,15 +154,27 @@ let rec conform shape v =
   | S_array (n, e), Array a when Array.length a = n -> Option.map (fun a -> Array a) (all (Array.make n e) a)
   | _ -> None
 
-let rec shape_of_data_type (t : Rapid_typing.Types.data_type) =
-  match t with
-  | Num -> S_num
-  | Dnum -> S_dnum
-  | Bool -> S_bool
-  | String -> S_string
-  | Installed_atomic a -> S_handle a.atomic_name
-  | Record r -> S_record (Array.of_list (List.map (fun (_, c) -> shape_of_data_type c) r.components))
-  | Anytype -> invalid_arg "Value.shape_of_type: anytype has no values of its own"
+(* One shape per record type within a call: records whose components share a record type share
+   its shape, so a record of two components of a record of two … 40 levels down is a shape of 40
+   nodes, not 2^40 (R-1.4-c). *)
+let shape_of_data_type (t : Rapid_typing.Types.data_type) =
+  let memo = Hashtbl.create 8 in
+  let rec go (t : Rapid_typing.Types.data_type) =
+    match t with
+    | Num -> S_num
+    | Dnum -> S_dnum
+    | Bool -> S_bool
+    | String -> S_string
+    | Installed_atomic a -> S_handle a.atomic_name
+    | Record r -> (
+        match Hashtbl.find_opt memo r.record_id with
+        | Some s -> s
+        | None ->
+            let s = S_record (Array.of_list (List.map (fun (_, c) -> go c) r.components)) in
+            Hashtbl.replace memo r.record_id s; s)
+    | Anytype -> invalid_arg "Value.shape_of_type: anytype has no values of its own"
+  in
+  go t
 
 let shape_of_type (t : Rapid_typing.Types.object_type) =
   let element = shape_of_data_type t.base in

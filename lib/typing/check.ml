@@ -40,6 +40,7 @@ type ctx = {
          uses, the sections; reported once per name when the task is checked *)
   unknown_reported : (string, unit) Hashtbl.t;
       (* routine, kind and name of each unknown name reported in a routine: once is enough *)
+  const_cache : Const_eval.cache;   (* each constant's value computed once (R-3.2-b) *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -49,7 +50,9 @@ type place = {
   routine : Env.routine option;          (* None: module-level declarations *)
   in_error_handler : bool;
   in_loop : bool;
-  labels : string list list;             (* labels of the enclosing statement lists, innermost first *)
+  labels : (string, unit) Hashtbl.t option list;
+      (* labels of the enclosing statement lists (by key), innermost first; None: a list without
+         labels. Tables, since a routine may hold thousands of labels and GOTOs. *)
 }
 
 let error ctx ~rule ~section region fmt =
@@ -173,7 +176,7 @@ let constant_lookup ctx place name =
            List.find_map (fun (m, local, e) ->
                if local || T.same_name m place.module_name then None else Some e) candidates)
 
-let const_value ctx place e = Const_eval.eval ~lookup:(constant_lookup ctx place) e
+let const_value ctx place e = Const_eval.eval ~cache:ctx.const_cache ~lookup:(constant_lookup ctx place) e
 
 (* ------------------------------------------------------------------ types of operands *)
 
@@ -875,7 +878,13 @@ let literal_expression ctx (e : expression) =
 (* ------------------------------------------------------------------ statements *)
 
 let labels_of (l : statement list) =
-  List.filter_map (fun (s : statement) -> match s.it with Label i -> name_of_identifier i | _ -> None) l
+  match List.filter_map (fun (s : statement) ->
+      match s.it with Label i -> name_of_identifier i | _ -> None) l with
+  | [] -> None
+  | names ->
+      let t = Hashtbl.create 8 in
+      List.iter (fun n -> Hashtbl.replace t (key n) ()) names;
+      Some t
 
 let check_condition ~section ctx place (e : expression) =
   check_expression ~sections:(section ^ ",3.4,2.17") ctx place e (T.scalar Bool)
@@ -961,7 +970,7 @@ and goto ctx place (id : identifier) =
   match name_of_identifier id with
   | None -> ()
   | Some name ->
-      let visible = List.exists (List.exists (T.same_name name)) place.labels in
+      let visible = List.exists (function Some t -> Hashtbl.mem t (key name) | None -> false) place.labels in
       (match Env.lookup place.scope name with
        | Some (Label _ as o) -> Hashtbl.replace ctx.elab.names id.at o
        | _ -> ());
@@ -1096,6 +1105,23 @@ let dimensions ctx place (dims : expression list) : T.dims option =
     else None
   end
 
+(* R-1.4-c: a type whose values have more components than any memory could hold (records of
+   records grow exponentially with their depth) is a program too complex for the system's
+   resources (§1.4). Values that some memory could hold are the run's memory budget's (R-1.4-b:
+   exit status 3 at the declaration). *)
+let max_value_components = 1 lsl 40
+
+let value_size_allowed ctx (at : Source.region) what (t : T.object_type) =
+  let n = T.value_size t in
+  if n > max_value_components then begin
+    error ctx ~rule:"value-too-large" ~section:"1.4,2.14" at
+      "program too complex: a value of %s has %s atomic components, more than the %d a value \
+       may hold in any memory (a system resource, §1.4)" what
+      (if n = max_int then "too many" else string_of_int n) max_value_components;
+    false
+  end
+  else true
+
 (* §2.16, first table: which declarations each value class allows. *)
 let value_class_allows ctx ~rule ~section (at : Source.region) kind (t : T.data_type) what =
   let cls = T.value_class t in
@@ -1150,6 +1176,9 @@ let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : En
               persistents may omit it"
        | _, None -> ());
       let object_type = match base, shape with Some b, Some d -> Some { T.base = b; dims = d } | _ -> None in
+      let object_type = match object_type with
+        | Some t when not (value_size_allowed ctx data_type.at ("the type " ^ T.to_string t) t) -> None
+        | t -> t in
       let sections = match storage with Var -> "2.22,2.17" | Pers -> "2.23,2.17" | Const -> "2.24,2.17" in
       (* Module data is in scope in its whole module (§2.20): initial values are judged once every
          module's data is registered ([later]). *)
@@ -1219,7 +1248,8 @@ let parameter_declaration ctx place ~optional (p : parameter_declaration) : Env.
       | None -> None
       | Some n ->
           let p_type = match base, dims with
-            | Some b, Some d -> Some { T.base = b; dims = d }
+            | Some b, Some d when value_size_allowed ctx data_type.at ("the type " ^ T.name b) { T.base = b; dims = Scalar } ->
+                Some { T.base = b; dims = d }
             | _ -> Some unknown_object_type in
           Some { p_name = n; p_mode = mode; p_type; p_region = name.at })
 
@@ -1457,25 +1487,28 @@ let type_definitions ctx infos =
                         | None -> None
                       end)) components
       | `Alias _ -> ()) pending;
-  (* A record that contains itself, directly or through other records, has no finite value. *)
-  List.iter (function
-      | `Record (info, (rt : T.record_type), _) ->
-          let rec contains visited (t : T.data_type) =
-            match t with
-            | Record r when r.record_id = rt.record_id -> true
-            | Record r when List.mem r.record_id visited -> false
-            | Record r -> List.exists (fun (_, c) -> contains (r.record_id :: visited) c) r.components
-            | _ -> false
-          in
-          if List.exists (fun (_, c) -> contains [] c) rt.components then begin
-            (match Env.find info.objects rt.record_name with
-             | Some o ->
-                 error ctx ~rule:"record-recursive" ~section:"2.14" (Env.obj_region o)
-                   "the record %s contains itself" rt.record_name
-             | None -> ());
-            rt.components <- []
-          end
-      | `Alias _ -> ()) pending
+  (* A record that contains itself, directly or through other records, has no finite value
+     (§2.14): exactly the records on a cycle of the "has a component of type" graph. One pass
+     over the graph (Tarjan's strongly connected components), so that long chains of records
+     each using the previous one cost time linear in their number. *)
+  let records = List.filter_map (function
+      | `Record (info, (rt : T.record_type), _) -> Some (info, rt)
+      | `Alias _ -> None) pending in
+  let on_cycle = Record_cycles.on_cycle
+      ~id:(fun (_, (rt : T.record_type)) -> rt.record_id)
+      ~successors:(fun (_, (rt : T.record_type)) ->
+          List.filter_map (fun (_, (c : T.data_type)) ->
+              match c with Record r -> Some r.record_id | _ -> None) rt.components)
+      records in
+  List.iter (fun (info, (rt : T.record_type)) ->
+      if on_cycle rt.record_id then begin
+        (match Env.find info.objects rt.record_name with
+         | Some o ->
+             error ctx ~rule:"record-recursive" ~section:"2.14" (Env.obj_region o)
+               "the record %s contains itself" rt.record_name
+         | None -> ())
+      end) records;
+  List.iter (fun (_, (rt : T.record_type)) -> if on_cycle rt.record_id then rt.components <- []) records
 
 (* §5.1-§5.6: a routine's signature, registered before any body is checked so that calls may
    name routines declared later or in other modules. *)
@@ -1509,6 +1542,8 @@ let routine_signature ctx info (r : routine_declaration) =
       Option.map (fun x -> (x, body)) (make local name Procedure parameters)
   | Function_declaration { local; return_type; name; parameters; body } -> (
       match resolve_type ctx place return_type with
+      | Some t when not (value_size_allowed ctx return_type.at ("the type " ^ T.name t) (T.scalar t)) ->
+          Option.map (fun x -> (x, body)) (make local name (Function unknown_object_type) parameters)
       | Some t ->
           value_class_allows ctx ~rule:"function-value-class" ~section:"2.16" return_type.at
             Function_return t "the return value of a function";
@@ -1556,6 +1591,7 @@ let builtin_environment report options =
     early_constants = Hashtbl.create 64;
     unknown_uses = Hashtbl.create 16;
     unknown_reported = Hashtbl.create 16;
+    const_cache = Const_eval.create_cache ();
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)

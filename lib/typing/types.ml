@@ -42,16 +42,49 @@ let to_string { base; dims } =
   | Conformant rank -> Printf.sprintf "%s{%s}" (name base) (String.concat "," (List.init rank (fun _ -> "*")))
 
 (* A record whose definition refers back to itself is refused before it gets here (the
-   resolution of type definitions checks for cycles), so these walks terminate. *)
+   resolution of type definitions checks for cycles), so these walks terminate. Each record's
+   class is computed once and kept with the component list it was computed from (records that
+   share component types would otherwise be walked once per path, exponentially many). *)
+let class_cache : (int, (string * data_type) list * value_class) Hashtbl.t = Hashtbl.create 64
+
 let rec value_class = function
   | Num | Dnum | Bool | String -> Value
   | Installed_atomic a -> a.atomic_class
   | Anytype -> Value
-  | Record r ->
-      let classes = List.map (fun (_, t) -> value_class t) r.components in
-      if List.mem Non_value classes then Non_value
-      else if List.mem Semi_value classes then Semi_value
-      else Value
+  | Record r -> (
+      match Hashtbl.find_opt class_cache r.record_id with
+      | Some (components, cls) when components == r.components -> cls
+      | _ ->
+          let classes = List.map (fun (_, t) -> value_class t) r.components in
+          let cls =
+            if List.mem Non_value classes then Non_value
+            else if List.mem Semi_value classes then Semi_value
+            else Value
+          in
+          Hashtbl.replace class_cache r.record_id (r.components, cls);
+          cls)
+
+(* Saturating arithmetic: sizes beyond [max_int] are all "too large". *)
+let saturating_add a b = if a > max_int - b then max_int else a + b
+let saturating_mul a b = if a <> 0 && b > max_int / a then max_int else a * b
+
+let size_cache : (int, (string * data_type) list * int) Hashtbl.t = Hashtbl.create 64
+
+let rec data_type_size = function
+  | Num | Dnum | Bool | String | Installed_atomic _ | Anytype -> 1
+  | Record r -> (
+      match Hashtbl.find_opt size_cache r.record_id with
+      | Some (components, n) when components == r.components -> n
+      | _ ->
+          let n = List.fold_left (fun acc (_, t) -> saturating_add acc (data_type_size t)) 0 r.components in
+          Hashtbl.replace size_cache r.record_id (r.components, n);
+          n)
+
+let value_size { base; dims } =
+  let element = data_type_size base in
+  match dims with
+  | Scalar | Conformant _ -> element
+  | Sized sizes -> List.fold_left saturating_mul element sizes
 
 let same_data_type a b =
   match a, b with
@@ -85,7 +118,14 @@ let equal_types ~value_context a b =
 let counter = ref 0
 let new_record_id () = incr counter; !counter
 
-let same_name a b = String.lowercase_ascii a = String.lowercase_ascii b
+(* Without building lowered copies: names are compared wherever components and labels are
+   looked up, thousands of times in a large record. *)
+let same_name a b =
+  let n = String.length a in
+  n = String.length b
+  && (let rec from i =
+        i >= n || (Char.lowercase_ascii a.[i] = Char.lowercase_ascii b.[i] && from (i + 1)) in
+      from 0)
 
 let component r name =
   List.find_map (fun (n, t) -> if same_name n name then Some t else None) r.components

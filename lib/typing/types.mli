@@ -51,6 +51,11 @@ val value_class : data_type -> value_class
 val associated_value_type : data_type -> data_type option
 (** §2.16: the associated value type of a semi-value type; [None] for other types. *)
 
+val value_size : object_type -> int
+(** The number of atomic components of a value of this type (its records and arrays flattened;
+    for a [{*}] parameter, of one element), [max_int] when larger. Computed once per record
+    type, so records that share component types cost their number, not their paths. *)
+
 val same_data_type : data_type -> data_type -> bool
 (** §2.17 rule 1: the same type (aliases already replaced). *)
 

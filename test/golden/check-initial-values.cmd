@@ -1,0 +1,1 @@
+check check-initial-values.mod

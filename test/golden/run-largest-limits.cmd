@@ -1,0 +1,1 @@
+run --max-steps 4611686018427387903 --max-call-depth 4611686018427387903 --retry-limit 4611686018427387903 run-hello.mod

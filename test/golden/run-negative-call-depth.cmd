@@ -1,0 +1,1 @@
+run --max-call-depth -5 run-hello.mod

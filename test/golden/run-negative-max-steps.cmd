@@ -1,0 +1,1 @@
+run --max-steps -1 run-hello.mod

@@ -1,0 +1,1 @@
+trace --retry-limit -1 run-hello.mod
