@@ -25,6 +25,48 @@ let guard f =
         (Printexc.to_string e);
       exit_internal
 
+(* The controller around the run (doc/controller.md): --io, --statement-time, --max-time,
+   --epoch. *)
+type controller_options = { io : string option; statement_time : float; max_time : float; epoch : float }
+
+let io_arg =
+  Arg.(value & opt (some string) None & info [ "io" ] ~docv:"FILE"
+         ~doc:"The I/O configuration and the stimulus of the inputs (doc/controller.md): a stimulus file, or a RobotWare EIO.cfg file whose EIO_SIGNAL entries declare the signals.")
+
+(* --epoch YYYY-MM-DDTHH:MM:SS, read as seconds since 1970 (UTC, no leap seconds). *)
+let epoch_conv =
+  let parse s =
+    try Scanf.sscanf s "%4d-%2d-%2dT%2d:%2d:%2d%!" (fun y m d hh mm ss ->
+        if m < 1 || m > 12 || d < 1 || d > 31 || hh > 23 || mm > 59 || ss > 59 then Error (`Msg "a date and time out of range")
+        else
+          let y' = if m <= 2 then y - 1 else y in
+          let era = (if y' >= 0 then y' else y' - 399) / 400 in
+          let yoe = y' - (era * 400) in
+          let mp = if m > 2 then m - 3 else m + 9 in
+          let doy = ((153 * mp) + 2) / 5 + d - 1 in
+          let doe = (yoe * 365) + (yoe / 4) - (yoe / 100) + doy in
+          let days = (era * 146097) + doe - 719468 in
+          Ok (float_of_int ((days * 86400) + (hh * 3600) + (mm * 60) + ss)))
+    with _ -> Error (`Msg "expected YYYY-MM-DDTHH:MM:SS") in
+  let print ppf t = let y, m, d, hh, mm, ss, _ = Rapid_semantics.Io_primitives.date_time t in
+    Format.fprintf ppf "%04d-%02d-%02dT%02d:%02d:%02d" y m d hh mm ss in
+  Arg.conv (parse, print)
+
+let controller_args =
+  let module W = Rapid_controller.World in
+  let statement_time = Arg.(value & opt float W.default_statement_time & info [ "statement-time" ] ~docv:"SECONDS"
+                              ~doc:"Virtual time each executed statement (and each round of a loop) takes.") in
+  let max_time = Arg.(value & opt float W.default_max_time & info [ "max-time" ] ~docv:"SECONDS"
+                        ~doc:"Stop the run when its virtual time goes beyond SECONDS (exit status 3).") in
+  let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
+                     ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default 2024-01-01T00:00:00).") in
+  Term.(const (fun io statement_time max_time epoch -> { io; statement_time; max_time; epoch })
+        $ io_arg $ statement_time $ max_time $ epoch)
+
+let read_io = function
+  | None -> Ok Rapid_controller.Io_config.empty
+  | Some file -> Rapid_controller.Io_config.read_file file
+
 let parse_cmd =
   let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files.") in
   let print =
@@ -75,15 +117,18 @@ let check_cmd =
   let strict =
     Arg.(value & flag & info [ "strict" ] ~doc:"Refuse the dialect extensions of doc/dialect.md.")
   in
-  let run files allow_unknown strict =
+  let run files allow_unknown strict io =
     guard @@ fun () ->
+    match read_io io with
+    | Error m -> prerr_endline m; exit_static_error
+    | Ok io ->
     let options = { Parse.default_options with strict } in
     let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
     let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
     List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) syntax_errors;
     if syntax_errors <> [] then exit_static_error
     else
-      match Rapid_typing.Installed_env.modules () with
+      match Rapid_semantics.Session.installed ~io () with
       | Error d ->
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
@@ -106,7 +151,7 @@ let check_cmd =
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ io_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -126,6 +171,9 @@ let region_json r =
   `Assoc [ ("file", `String (match Source.file_of r with Some f -> Source.name f | None -> ""));
            ("line", `Int p.line); ("col", `Int p.col); ("end_line", `Int q.line); ("end_col", `Int q.col) ]
 
+(* A virtual time: seconds to the microsecond, written as such (not as the nearest double). *)
+let time_json t = `Intlit (Printf.sprintf "%.6f" t)
+
 let event_json (e : M.event) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", `String s) ]
@@ -140,6 +188,19 @@ let event_json (e : M.event) : Yojson.Safe.t =
       `Assoc [ ("event", `String "error-handled"); ("name", `String name); ("routine", `String routine) ]
   | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", `String r) ]
   | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
+  | Controller (Signal_changed { time; signal; value }) ->
+      `Assoc [ ("event", `String "signal-changed"); ("time", time_json time); ("signal", `String signal);
+               ("value", `Float value) ]
+  | Controller (Interrupt_occurred { time; number }) ->
+      `Assoc [ ("event", `String "interrupt-occurred"); ("time", time_json time); ("number", `Int number) ]
+  | Controller (Interrupt_discarded { time; number; reason }) ->
+      `Assoc [ ("event", `String "interrupt-discarded"); ("time", time_json time); ("number", `Int number);
+               ("reason", `String reason) ]
+  | Trap_entered { number; trap; time } ->
+      `Assoc [ ("event", `String "trap-entered"); ("time", time_json time); ("number", `Int number);
+               ("trap", `String trap) ]
+  | Trap_left { trap; time } ->
+      `Assoc [ ("event", `String "trap-left"); ("time", time_json time); ("trap", `String trap) ]
 
 let schema = "rapid-sem/1"
 
@@ -154,6 +215,7 @@ let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
   | Resource_exhausted m -> base "exhausted" [ ("reason", `String m) ]
   | Unsupported m -> base "unsupported" [ ("reason", `String m) ]
   | Stuck m -> base "stuck" [ ("reason", `String m) ]
+  | Deadlock m -> base "deadlock" [ ("reason", `String m) ]
 
 let finish (o : M.outcome) steps ~max_steps =
   match o with
@@ -163,6 +225,7 @@ let finish (o : M.outcome) steps ~max_steps =
         (Source.to_string at) name (String.concat " <- " chain);
       exit_stopped
   | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
+  | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported m -> Printf.eprintf "rapid-sem: %s\n" m; exit_unsupported
   | Stuck m -> Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n" m steps; exit_internal
   | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
@@ -182,22 +245,30 @@ let common_run_args =
    (bench/README.md, "The machine"). *)
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 
-let start_machine files entry allow_unknown max_depth retry_limit k =
+let start_machine files entry allow_unknown max_depth retry_limit controller k =
   machine_gc ();
-  match Rapid_semantics.Session.load ~allow_unknown files with
+  match read_io controller.io with
+  | Error m -> prerr_endline m; exit_static_error
+  | Ok io ->
+  if controller.statement_time < 0. || controller.max_time < 0. then
+    (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
+  else
+  match Rapid_semantics.Session.load ~allow_unknown ~io files with
   | Error f -> report_load_failure f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } loaded.program ~entry with
+      let world = Rapid_controller.World.create ~statement_time:controller.statement_time
+          ~max_time:controller.max_time ~epoch:controller.epoch io in
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } ~world loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json =
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
+    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
@@ -220,7 +291,7 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. *)
 let source_cache = Hashtbl.create 8
@@ -249,9 +320,9 @@ let trace_cmd =
   let from_ = Arg.(value & opt int 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt int max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules =
+  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
+    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     let contains s p =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
@@ -268,7 +339,18 @@ let trace_cmd =
           | `Human ->
               Printf.printf "%6d %-24s %s %-10s %s | %s\n" n rule (Source.to_string region) kind
                 (region_text region) (String.concat " " stack);
-              List.iter (function M.Output s -> Printf.printf "       > %s\n" s | _ -> ()) events
+              List.iter (function
+                  | M.Output s -> Printf.printf "       > %s\n" s
+                  | M.Controller (Signal_changed { time; signal; value }) ->
+                      Printf.printf "       ~ %.6f s: %s = %g\n" time signal value
+                  | M.Controller (Interrupt_occurred { time; number }) ->
+                      Printf.printf "       ~ %.6f s: interrupt %d occurred\n" time number
+                  | M.Controller (Interrupt_discarded { time; number; reason }) ->
+                      Printf.printf "       ~ %.6f s: interrupt %d discarded (%s)\n" time number reason
+                  | M.Trap_entered { time; number; trap } ->
+                      Printf.printf "       ~ %.6f s: trap %s serves interrupt %d\n" time trap number
+                  | M.Trap_left { time; trap } -> Printf.printf "       ~ %.6f s: trap %s left\n" time trap
+                  | _ -> ()) events
           | `Jsonl ->
               print_endline (Yojson.Safe.to_string (`Assoc [
                   ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
@@ -283,7 +365,7 @@ let trace_cmd =
     if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported m | Stuck m -> m | Running -> "step limit") (M.steps cfg);
+        | Resource_exhausted m | Unsupported m | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "print the reductions of a run one by one" in
@@ -293,7 +375,7 @@ let trace_cmd =
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in

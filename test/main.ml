@@ -14,4 +14,5 @@ let () =
       Test_campaign.suite;
       Test_memory.suite;
       Test_motion.suite;
+      Test_controller.suite;
     ]

@@ -43,13 +43,21 @@ let rules_in_spec () =
       match case.run with
       | Some run when case.format = "3" -> (
           let modules = List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) case.files in
+          (* A case with a stimulus file (! @io) runs with its signals (doc/controller.md). *)
+          let io = match run.io with
+            | Some f -> Result.value (Rapid_controller.Io_config.read_file f) ~default:Rapid_controller.Io_config.empty
+            | None -> Rapid_controller.Io_config.empty in
+          let installed = if run.io = None then installed
+            else Result.value (Rapid_semantics.Session.installed ~io ()) ~default:installed in
           let result =
             Rapid_typing.Check.check_task ~options:{ allow_unknown = case.allow_unknown } ~installed modules in
           if Rapid_typing.Check.errors result = [] then
-            let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
+            let program = Rapid_semantics.Session.connect_signals io
+                (Rapid_semantics.Lower.program ~installed ~modules result.elaboration) in
             let limits = { M.default_limits with
                            retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
-            match M.start ~limits program ~entry:run.entry with
+            let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+            match M.start ~limits ~world program ~entry:run.entry with
             | Ok cfg ->
                 let max = Option.value run.max_steps ~default:1_000_000 in
                 while M.outcome cfg = Running && M.steps cfg < max do

@@ -23,10 +23,13 @@ and run = {
   error_file : string option;
   max_steps : int option;
   retry_limit : int option;
+  io : string option;
+  statement_time : float option;
+  max_time : float option;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
-               max_steps = None; retry_limit = None }
+               max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None }
 
 let known_formats = [ "1"; "2"; "3" ]
 let checks_semantics case = case.format = "2" || case.format = "3"
@@ -144,6 +147,16 @@ let read path =
                   match int_of_string_opt v with
                   | Some n -> with_run case (fun r -> { r with retry_limit = Some n })
                   | None -> add_problem case ("bad @retry-limit " ^ v))
+              | Some ("io", v) when v <> "" ->
+                  (* The stimulus file is named relative to the case's folder. *)
+                  let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
+                  with_run case (fun r -> { r with io = Some (Filename.concat dir v) })
+              | Some (("statement-time" | "max-time") as k, v) -> (
+                  match float_of_string_opt v with
+                  | Some f when f >= 0. && Float.is_finite f ->
+                      with_run case (fun r ->
+                          if k = "max-time" then { r with max_time = Some f } else { r with statement_time = Some f })
+                  | _ -> add_problem case (Printf.sprintf "bad @%s %s" k v))
               | Some (k, v) -> add_problem case (Printf.sprintf "unknown directive @%s %s" k v))
             case lines) empty files
   in

@@ -29,6 +29,9 @@ and run = {
   error_file : string option;     (** [! @error NAME FILE:LINE:COL] in a [.task] case *)
   max_steps : int option;         (** [! @max-steps N] *)
   retry_limit : int option;       (** [! @retry-limit N] *)
+  io : string option;             (** [! @io FILE]: the stimulus file, beside the case *)
+  statement_time : float option;  (** [! @statement-time SECONDS] *)
+  max_time : float option;        (** [! @max-time SECONDS] *)
 }
 
 val read : string -> t

@@ -36,12 +36,14 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
-let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_typing.Check.result) =
+let run_program case (run : Spec_case.run) ~io ~installed ~modules (result : Rapid_typing.Check.result) =
   let module M = Rapid_semantics.Machine in
-  let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
+  let program = Rapid_semantics.Session.connect_signals io
+      (Rapid_semantics.Lower.program ~installed ~modules result.elaboration) in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
-  match M.start ~limits program ~entry:run.entry with
+  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  match M.start ~limits ~world program ~entry:run.entry with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok cfg ->
       let max_steps = Option.value run.max_steps ~default:10_000_000 in
@@ -56,7 +58,7 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
         match M.outcome cfg with
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
-        | Running | Resource_exhausted _ -> (3, None, None)
+        | Running | Resource_exhausted _ | Deadlock _ -> (3, None, None)
         | Unsupported _ -> (4, None, None)
         | Stuck m -> (125, Some ("stuck: " ^ m, 0, 0), None)
       in
@@ -96,7 +98,13 @@ let run_case (case : Spec_case.t) =
     | None when not (Spec_case.checks_semantics case) -> accepted case expected
     | None -> (
         let modules = List.filter_map Result.to_option results in
-        match Rapid_typing.Installed_env.modules () with
+        let io = match case.run with
+          | Some { io = Some file; _ } -> Rapid_controller.Io_config.read_file file
+          | _ -> Ok Rapid_controller.Io_config.empty in
+        match io with
+        | Error m -> fail case m
+        | Ok io ->
+        match Rapid_semantics.Session.installed ~io () with
         | Error d -> fail case ("the installed environment does not parse: " ^ Diagnostic.to_string d)
         | Ok installed -> (
             let result =
@@ -104,7 +112,7 @@ let run_case (case : Spec_case.t) =
             match Rapid_typing.Check.errors result with
             | [] -> (
                 match case.run, expected with
-                | Some run, Spec_case.Accepted -> run_program case run ~installed ~modules result
+                | Some run, Spec_case.Accepted -> run_program case run ~io ~installed ~modules result
                 | _ -> accepted case expected)
             | first :: _ -> (
                 (* The report must also name one of the sections the case tests. *)

@@ -6,6 +6,7 @@
 
 open Rapid_syntax
 module V = Value
+module W = Rapid_controller.World
 
 type loc = { box : V.t array; idx : int }
 
@@ -23,6 +24,9 @@ type event =
   | Error_handled of { name : string; routine : string }
   | Undo_run of string
   | Task_ended
+  | Controller of W.observation
+  | Trap_entered of { number : int; trap : string; time : float }
+  | Trap_left of { trap : string; time : float }
 
 type outcome =
   | Running
@@ -30,6 +34,7 @@ type outcome =
   | Stopped of { name : string; number : int; at : Source.region; chain : string list }
   | Resource_exhausted of string
   | Unsupported of string
+  | Deadlock of string
   | Stuck of string
 
 type limits = { max_call_depth : int; retry_limit : int }
@@ -48,6 +53,7 @@ type activation = {
   mutable handling : handling;
   mutable retries : int;
   mutable retried : Ir.stmt option;
+  trap_level : bool;                    (* a trap, or a routine a trap called (§7.2, ch. 8) *)
 }
 
 and handling =
@@ -96,6 +102,11 @@ and frame =
   | K_handler_end                       (* falling off the end of an error handler (§7.1) *)
   | K_undo_end of after_abandon
   | K_task_end
+  | K_wait of wait_state                (* a waiting instruction (doc/controller.md) *)
+  | K_poll of wait_state                (* WaitUntil: its condition is being evaluated *)
+  | K_read_signal
+
+and wait_state = { wait : W.wait; cond : Ir.expr option; mutable next_poll : float }
 
 and call_state = {
   call : Ir.call;
@@ -130,11 +141,10 @@ type config = {
   mutable focus : focus;
   mutable count : int;
   mutable booked : int;                 (* BookErrNo *)
-  mutable interrupt_numbers : int;      (* CONNECT *)
-  (* Later issues: execution levels and the interrupt queue, the motion queue, other tasks. *)
+  (* Later issues: the user execution level, the motion queue, other tasks. The trap level is
+     the activation's; the interrupt numbers and queue are the world's. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
-  mutable level : [ `Normal | `Trap | `User ];
-  interrupt_queue : int Queue.t;
+  world : W.t;                          (* the controller around the program *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -181,9 +191,11 @@ let routine_index program name =
 let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
   { routine; slots; present; kinds; caller; return_to; caller_mark;
     call_depth = (match caller with None -> 1 | Some c -> c.call_depth + 1);
-    handling = Body; retries = 0; retried = None }
+    handling = Body; retries = 0; retried = None;
+    trap_level = (match caller with None -> false | Some c -> c.trap_level) }
 
-let start ?(limits = default_limits) (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world (program : Ir.program) ~entry =
+  let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   match routine_index program entry with
   | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
   | Some i ->
@@ -241,8 +253,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; interrupt_numbers = 0; unmarked = false; level = `Normal;
-          interrupt_queue = Queue.create ();
+          count = 0; booked = 0; unmarked = false; world;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         Ok cfg
@@ -278,6 +289,11 @@ let return_from cfg value =
   | None ->
       cfg.focus <- F_done Ended;
       ("return-entry", [ Routine_left act.routine.name; Task_ended ])
+  | Some caller when act.routine.kind = Trap ->
+      (* ch. 8: after ENDTRAP or RETURN, execution goes on where the interrupt came in. *)
+      cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+      cfg.focus <- F_next;
+      ("trap-end", [ Routine_left act.routine.name; Trap_left { trap = act.routine.name; time = W.now cfg.world } ])
   | Some caller ->
       cfg.act <- caller;
       cfg.stack <- act.return_to;
@@ -305,13 +321,35 @@ let primitive_context cfg events : Primitive.context = {
   log = (fun line -> events := Log line :: !events);
   book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
   error_number = (fun name -> error_number cfg name);
+  world = cfg.world;
+  parameters = [||];
 }
 
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
 
 let call_primitive cfg (cs : call_state) name =
   let events = ref [] in
-  match Primitive.call (primitive_context cfg events) name cs.primitive_args with
+  let ctx = { (primitive_context cfg events) with
+              parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
+  let result = match Io_primitives.call ctx name cs.primitive_args with
+    | Some r -> r
+    | None -> Primitive.call ctx name cs.primitive_args in
+  match result with
+  | Primitive.Wait wait ->
+      (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
+      let cond =
+        if wait.poll = None then None
+        else
+          let found = ref None in
+          Array.iteri (fun i (p : Ir.parameter) ->
+              if String.lowercase_ascii p.p_name = "cond" then
+                match cs.call.arguments.(i) with Ir.By_value e -> found := Some e | _ -> ())
+            cs.callee.parameters;
+          !found in
+      let now = W.now cfg.world in
+      push cfg (K_wait { wait; cond; next_poll = now +. Option.value wait.poll ~default:0. });
+      cfg.focus <- F_next;
+      ("wait-start", List.rev !events)
   | Primitive.Returned v ->
       (match cs.callee.kind, v with
        | Function, Some v -> cfg.focus <- F_value v
@@ -431,6 +469,10 @@ let raise_step cfg (e : err) =
   | Body, None -> (
       match act.caller with
       | None -> stop cfg e "raise-unhandled"
+      | Some _ when act.routine.kind = Trap && e.searched ->
+          (* An error that leaves a trap goes to the system error handler: there is no call
+             point to raise it at (installed-facts.md section 6, R-8-e). *)
+          stop cfg e "raise-in-trap"
       | Some caller ->
           if e.searched then (cfg.focus <- F_abandon (Go_on_propagate e); ("raise-propagate", []))
           else (cfg.focus <- F_search (e, Some caller); ("longjump-search-start", [])))
@@ -548,6 +590,10 @@ let exec cfg (s : Ir.stmt) =
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
           ("trynext", [])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
+  | Connect (p, _) when reference_kind cfg p Ir.Ref_other = Ir.Ref_persistent ->
+      (* §4.15: the target is a variable; an INOUT parameter bound to a persistent is not
+         (ERR_CNTNOTVAR), which only the run can tell. *)
+      mark_here (); raise_ cfg "ERR_CNTNOTVAR"; ("connect-not-variable", [])
   | Connect (p, trap) -> mark_here (); push cfg (K_connect_target trap); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
   | Compact_if (c, inner) ->
@@ -569,6 +615,7 @@ let frame_kind = function
   | K_element_base _ | K_element_index _ -> "element" | K_args _ -> "arguments"
   | K_local_init _ -> "local-init" | K_routine_end -> "routine-end"
   | K_handler_end -> "handler-end" | K_undo_end _ -> "undo-end" | K_task_end -> "task-end"
+  | K_wait _ -> "wait" | K_poll _ -> "poll" | K_read_signal -> "read-signal"
 
 (* §4.18: is the loop variable still in its range? *)
 let for_in_range v t step =
@@ -577,7 +624,7 @@ let for_in_range v t step =
   | _ -> false
 
 (* A statement has completed: the frame on top continues. *)
-let next cfg =
+let next_frame cfg =
   match cfg.stack with
   | K_stmt (s, prev) :: rest ->
       cfg.stack <- rest; cfg.mark <- prev;
@@ -628,7 +675,8 @@ let next cfg =
            | Go_on_long_jump (e, target) ->
                if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
                else cfg.focus <- F_abandon after);
-          ("undo-done", [ Routine_left act.routine.name ]))
+          ("undo-done", Routine_left act.routine.name
+                        :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else [])))
   | K_local_init (act, inits) :: rest -> (
       match inits with
       | [] -> cfg.stack <- rest; ("locals-initialised", [])
@@ -646,6 +694,84 @@ let next cfg =
       ("stuck", [])
   | [] -> cfg.focus <- F_done (Stuck "empty stack"); ("stuck", [])
 
+(* ch. 8: an interrupt is served at the entry of the next statement, after the last statement
+   of a statement list, and during waits; never at trap level, where it stays queued until the trap ends. The trap runs as a routine called
+   from the point of interruption, with INTNO set to the interrupt's number (ch. 12). *)
+let serve_interrupt cfg =
+  if cfg.act.trap_level then None
+  else
+    match W.take cfg.world with
+    | None -> None
+    | Some (number, trap) ->
+        let r = cfg.program.routines.(trap) in
+        set cfg.globals.(cfg.program.intno) (V.num (float_of_int number));
+        let slots = Array.init r.locals (fun _ -> fresh_loc (V.Bool false)) in
+        let act = { (activation ~routine:r ~slots ~present:[||] ~kinds:[||] ~caller:(Some cfg.act)
+                       ~return_to:cfg.stack ~caller_mark:cfg.mark) with trap_level = true } in
+        cfg.act <- act;
+        cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
+        cfg.mark <- [];
+        cfg.focus <- F_next;
+        Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = W.now cfg.world };
+                                   Routine_entered r.name ])
+
+let time_exhausted cfg rule =
+  cfg.focus <- F_done (Resource_exhausted
+                         (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world)));
+  (rule, [])
+
+(* A waiting instruction, one step at a time (doc/controller.md): interrupts come in; the wait
+   ends when its condition holds or its deadline passes; otherwise the clock jumps to the next
+   thing that can change anything: a timed event, the deadline, the next poll. With none, nothing
+   can ever end the wait: a deadlock. *)
+let wait_step cfg ws rest =
+  match serve_interrupt cfg with
+  | Some r -> r
+  | None -> (
+      let w = cfg.world in
+      let now = W.now w in
+      let reached t = W.seconds now >= W.seconds t in
+      let finish timed_out rule =
+        cfg.stack <- rest;
+        match ws.wait.finish ~timed_out with
+        | None -> cfg.focus <- F_next; (rule, [])
+        | Some name -> raise_ cfg name; (rule, [])
+      in
+      match ws.cond with
+      | Some e when reached ws.next_poll ->
+          cfg.stack <- K_poll ws :: cfg.stack; cfg.focus <- F_expr e; ("wait-poll", [])
+      | _ when ws.cond = None && ws.wait.satisfied () -> finish false "wait-done"
+      | _ when (match ws.wait.deadline with Some d -> reached d | None -> false) -> finish true "wait-timeout"
+      | _ -> (
+          let candidates = List.filter_map Fun.id
+              [ ws.wait.deadline; W.next_event w; (if ws.cond = None then None else Some ws.next_poll) ] in
+          match List.sort compare candidates with
+          | [] ->
+              cfg.focus <- F_done (Deadlock
+                                     (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
+                                        now ws.wait.what));
+              ("wait-deadlock", [])
+          | t :: _ when t > W.max_time w -> time_exhausted cfg "wait-time-limit"
+          | t :: _ -> W.advance_to w t; ("wait-advance", [])))
+
+let next cfg =
+  let statement_point = match cfg.stack with
+    | K_seq (b, i) :: _ -> i < Array.length b.Ir.body
+    | (K_while_body _ | K_for_body _) :: _ -> true
+    | _ -> false in
+  if statement_point then begin
+    (* Each statement entered, and each new round of a loop, takes the statement time. *)
+    W.statement cfg.world;
+    if W.now cfg.world > W.max_time cfg.world then time_exhausted cfg "time-limit"
+    else match serve_interrupt cfg with Some r -> r | None -> next_frame cfg
+  end
+  else match cfg.stack with
+    | K_wait ws :: rest -> wait_step cfg ws rest
+    | K_seq _ :: _ -> (
+        (* ch. 8: "after the last statement of a statement list" is a point of response too. *)
+        match serve_interrupt cfg with Some r -> r | None -> next_frame cfg)
+    | _ -> next_frame cfg
+
 let start_loop cfg (f : Ir.for_loop) from t step rest =
   set cfg.act.slots.(f.variable) from;
   cfg.focus <- F_next;
@@ -656,7 +782,29 @@ let start_loop cfg (f : Ir.for_loop) from t step rest =
 
 let value_step cfg v =
   match cfg.stack with
-  | K_assign_store l :: rest -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", [])
+  | K_assign_store l :: rest -> (
+      match get l with
+      | V.Handle h when String.length (V.handle_kind h) > 6 && String.sub (V.handle_kind h) 0 6 = "signal" -> (
+          (* §2.16: assigning to an output signal sets it. *)
+          cfg.stack <- rest;
+          let id = V.handle_id h in
+          match W.signal_kind cfg.world id, v with
+          | None, _ -> raise_ cfg "ERR_NO_ALIASIO_DEF"; ("store-signal", [])
+          | Some (DO | DI), V.Num f when f <> 0. && f <> 1. -> raise_ cfg "ERR_ARGVALERR"; ("store-signal", [])
+          | Some _, V.Num f -> W.write cfg.world id f; cfg.focus <- F_next; ("store-signal", [])
+          | _ -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", []))
+      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", []))
+  | K_poll ws :: K_wait _ :: rest -> (
+      match bool_of v with
+      | Some true ->
+          cfg.stack <- rest;
+          (match ws.wait.finish ~timed_out:false with
+           | None -> cfg.focus <- F_next
+           | Some name -> raise_ cfg name);
+          ("wait-poll-true", [])
+      | _ ->
+          ws.next_poll <- ws.next_poll +. Option.value ws.wait.poll ~default:W.default_poll_rate;
+          cfg.stack <- K_wait ws :: rest; cfg.focus <- F_next; ("wait-poll-false", []))
   | K_read :: _ -> cfg.focus <- F_done (Stuck "a value where a place was read"); ("stuck", [])
   | K_unary (op, _) :: rest -> (
       cfg.stack <- rest;
@@ -829,14 +977,22 @@ let loc_step cfg l =
           ("argument-alias", []))
   | K_connect_target trap :: rest -> (
       cfg.stack <- rest;
-      (* §4.15: a connected interrupt number cannot be connected again (ERR_ALRDYCNT). *)
+      (* §4.15: a connected interrupt number cannot be connected again (ERR_ALRDYCNT); one
+         freed by IDelete can (R-8-f). *)
       match get l with
-      | V.Num n when n <> 0. -> raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
-      | _ ->
-          cfg.interrupt_numbers <- cfg.interrupt_numbers + 1;
-          ignore trap;
-          set l (V.num (float_of_int cfg.interrupt_numbers));
-          cfg.focus <- F_next; ("connect-allocate", []))
+      | V.Num n when n <> 0. && Float.is_integer n && W.connected cfg.world (int_of_float n) ->
+          raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
+      | _ -> (
+          match W.connect cfg.world ~trap with
+          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", [])
+          | Error name -> raise_ cfg name; ("connect-inomax", [])))
+  | K_read_signal :: rest -> (
+      cfg.stack <- rest;
+      (* §2.16: a signal in value context is its value. *)
+      match get l with
+      | V.Handle h when W.signal_kind cfg.world (V.handle_id h) <> None ->
+          cfg.focus <- F_value (V.num (W.read cfg.world (V.handle_id h))); ("signal-value", [])
+      | _ -> raise_ cfg "ERR_NO_ALIASIO_DEF"; ("signal-not-connected", []))
   | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
 
 let place_step cfg (p : Ir.place) =
@@ -857,9 +1013,7 @@ let expr_step cfg (e : Ir.expr) =
   match e.e with
   | Literal v -> cfg.focus <- F_value v; ("literal", [])
   | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
-  | Read_signal _ ->
-      cfg.focus <- F_done (Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet");
-      ("read-signal", [])
+  | Read_signal p -> push cfg K_read_signal; cfg.focus <- F_place p; ("read-signal", [])
   | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
   | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
   | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
@@ -897,6 +1051,7 @@ let search_step cfg (e : err) candidate =
   | Some a when recovery_point cfg a e ->
       cfg.focus <- F_abandon (Go_on_long_jump ({ e with searched = true }, a)); ("longjump-found", [])
   | Some a -> cfg.focus <- F_search (e, a.caller); ("longjump-search", [])
+  | None when cfg.act.routine.kind = Trap -> stop cfg e "raise-in-trap"
   | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); ("raise-propagate", [])
 
 let step_unguarded cfg =
@@ -918,9 +1073,19 @@ let step_unguarded cfg =
    is a bug of rapid-sem, reported as a stuck configuration. *)
 let step cfg =
   cfg.count <- cfg.count + 1;
-  try step_unguarded cfg with
-  | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
-  | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
+  let rule, events =
+    try step_unguarded cfg with
+    | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
+    | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
+  in
+  (* What the world did during the step (signal changes, interrupts), with its times: mostly
+     while the clock moved on, at the start of the step. *)
+  match W.drain cfg.world with
+  | [] -> (rule, events)
+  | seen -> (rule, List.map (fun o -> Controller o) seen @ events)
+
+let world cfg = cfg.world
+let trap_level cfg = cfg.act.trap_level
 
 let outcome cfg = match cfg.focus with F_done o -> o | _ -> Running
 let steps cfg = cfg.count
@@ -970,5 +1135,9 @@ let rule_names = [
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
   "aggregate-first"; "aggregate-next"; "aggregate"; "locals-initialised"; "local-default";
   "local-initial-value";
+  "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
+  "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
+  "wait-time-limit"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
+  "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]

@@ -7,8 +7,9 @@
     or the depth of recursion: no rule walks the stack or rebuilds the path to the focus. Errors,
     long jumps and UNDO handlers unwind the stack one frame or one activation per step.
 
-    The configuration is ready for what later issues add: execution levels (normal, trap, user)
-    with an interrupt queue, a motion queue, and several tasks. *)
+    The configuration holds the controller around the program (a {!Rapid_controller.World}: the
+    virtual clock, the signals, the interrupt queue; doc/controller.md); traps run at trap level.
+    It is ready for what later issues add: the user level, a motion queue, and several tasks. *)
 
 type config
 
@@ -22,6 +23,11 @@ type event =
   | Error_handled of { name : string; routine : string }
   | Undo_run of string
   | Task_ended
+  | Controller of Rapid_controller.World.observation
+      (** a signal changed, an interrupt occurred or was discarded (doc/controller.md) *)
+  | Trap_entered of { number : int; trap : string; time : float }
+      (** an interrupt is served: its trap runs (ch. 8) *)
+  | Trap_left of { trap : string; time : float }
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -33,6 +39,7 @@ type outcome =
           chain at that point, innermost first *)
   | Resource_exhausted of string           (** call depth beyond the limit *)
   | Unsupported of string                  (** an installed routine rapid-sem does not model yet *)
+  | Deadlock of string                     (** a wait nothing can ever end (doc/controller.md) *)
   | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
 
 type limits = {
@@ -42,7 +49,8 @@ type limits = {
 
 val default_limits : limits
 
-val start : ?limits:limits -> Ir.program -> entry:string -> (config, string) result
+val start :
+  ?limits:limits -> ?world:Rapid_controller.World.t -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure. *)
 
@@ -51,6 +59,13 @@ val step : config -> string * event list
     [outcome] is [Running]. *)
 
 val outcome : config -> outcome
+
+val world : config -> Rapid_controller.World.t
+(** The controller around the run: its clock, signals and interrupts. *)
+
+val trap_level : config -> bool
+(** Whether the task executes at trap level (a trap, or a routine called from one; §7.2). *)
+
 val steps : config -> int
 
 (** {1 A view of the configuration, for the trace} *)

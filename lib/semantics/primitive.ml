@@ -12,6 +12,8 @@ type context = {
   log : string -> unit;
   book_error : unit -> int;
   error_number : string -> int;
+  world : Rapid_controller.World.t;
+  parameters : string array;
 }
 
 type outcome =
@@ -20,6 +22,7 @@ type outcome =
   | Call_by_name of string
   | Stop_requested
   | Not_modelled
+  | Wait of Rapid_controller.World.wait
 
 (* The shape of a value, for StrToVal, whose target's type is only known by its value. *)
 let rec shape_of_value : V.t -> V.shape = function

@@ -20,6 +20,8 @@ type context = {
   log : string -> unit;                              (** the event log (ErrWrite) *)
   book_error : unit -> int;                          (** BookErrNo: a new error number *)
   error_number : string -> int;
+  world : Rapid_controller.World.t;                  (** the controller around the run *)
+  parameters : string array;                         (** the routine's parameter names, in order *)
 }
 
 type outcome =
@@ -28,6 +30,7 @@ type outcome =
   | Call_by_name of string                           (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                                   (** Stop: the task stops *)
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
+  | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
 
 val call : context -> string -> argument array -> outcome
 

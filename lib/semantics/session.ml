@@ -7,19 +7,60 @@ type failure =
   | Static of Rapid_typing.Report.t list
   | Internal of string
 
-let load_modules ?(allow_unknown = false) modules =
-  match Rapid_typing.Installed_env.modules () with
+module Io = Rapid_controller.Io_config
+
+(* The signals of the I/O configuration are installed data objects of the signal types
+   (§2.16): a generated installed module declares them, so that the checker knows them. *)
+let signal_module_name = "Installed_signals"
+
+let signal_module (io : Io.t) =
+  if io.signals = [] then Ok None
+  else
+    let text = Buffer.create 256 in
+    Buffer.add_string text ("MODULE " ^ signal_module_name ^ " (SYSMODULE)\n");
+    List.iter (fun (s : Io.signal) ->
+        Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
+    Buffer.add_string text "ENDMODULE\n";
+    match Parse.parse_string ~options:{ Parse.default_options with installed = true }
+            ~name:"the signals of the I/O configuration" (Buffer.contents text) with
+    | Ok m -> Ok (Some m)
+    | Error d -> Error d
+
+let installed ?(io = Io.empty) () =
+  match Rapid_typing.Installed_env.modules (), signal_module io with
+  | Error d, _ | _, Error d -> Error d
+  | Ok installed, Ok None -> Ok installed
+  | Ok installed, Ok (Some m) -> Ok (installed @ [ m ])
+
+(* Each declared signal object denotes its signal of the world: identity i for the i-th signal
+   of the configuration (Rapid_controller.World.signals). *)
+let connect_signals (io : Io.t) (program : Ir.program) =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let globals = Array.map (fun (g : Ir.global) ->
+      if not (same g.g_module signal_module_name) then g
+      else
+        let rec find i = function
+          | [] -> g
+          | (s : Io.signal) :: rest ->
+              if same s.name g.g_name then
+                { g with g_init = Init_default (Value.Handle (Value.make_handle ~kind:(Io.type_name s.kind) i)) }
+              else find (i + 1) rest in
+        find 1 io.signals) program.globals in
+  { program with globals }
+
+let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
+  match installed ~io () with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->
       let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
-        let program = Lower.program ~installed ~modules result.elaboration in
+        let program = connect_signals io (Lower.program ~installed ~modules result.elaboration) in
         Ok { program; warnings = result.reports }
 
-let load ?(strict = false) ?allow_unknown files =
+let load ?(strict = false) ?allow_unknown ?io files =
   let options = { Parse.default_options with strict } in
   let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
-  | [] -> load_modules ?allow_unknown (List.filter_map Result.to_option parsed)
+  | [] -> load_modules ?allow_unknown ?io (List.filter_map Result.to_option parsed)
   | errors -> Error (Front_end errors)

@@ -1,0 +1,304 @@
+(* The world of one run. Time is an integer count of microseconds; timed events are kept in a
+   list sorted by time and then by the order they were scheduled in, so that equal times
+   happen in a reproducible order. *)
+
+type observation =
+  | Signal_changed of { time : float; signal : string; value : float }
+  | Interrupt_occurred of { time : float; number : int }
+  | Interrupt_discarded of { time : float; number : int; reason : string }
+
+let default_statement_time = 0.0001
+let default_max_time = 3600.
+let default_epoch = 1704067200.   (* 2024-01-01 00:00:00 UTC, a Monday *)
+let default_poll_rate = 0.1
+let max_interrupts = 100
+let queue_capacity = 30
+
+let seconds s = int_of_float (Float.round (s *. 1e6))
+let to_seconds us = float_of_int us /. 1e6
+
+type signal = { s_name : string; s_kind : Io_config.signal_type; mutable value : float }
+
+type trigger = old:float -> now:float -> bool
+
+type error_datum = { domain : int; id : int; error_type : int; strings : string list }
+
+type source =
+  | No_source
+  | Timer of { period : int; single : bool }
+  | Signal_edge of { signal : int; trigger : trigger; single : bool }
+  | Watch of { changed : unit -> bool; single : bool }
+  | Error_log of { domain : int; id : int option; error_type : int }
+
+type interrupt = {
+  trap : int;
+  mutable source : source;
+  mutable generation : int;           (* a new order cancels the pending timer events of the old *)
+  mutable sleeping : bool;
+}
+
+type action =
+  | Set_signal of int * float
+  | Timer_due of int * int            (* number, generation *)
+
+type clock = { mutable since : int option; mutable total : int }
+
+type wait = {
+  what : string;
+  satisfied : unit -> bool;
+  deadline : float option;
+  finish : timed_out:bool -> string option;
+  poll : float option;
+}
+
+type t = {
+  mutable now : int;
+  statement_time : int;
+  max_time : float;
+  epoch : float;
+  signals : signal array;             (* identity i is signals.(i - 1) *)
+  mutable events : (int * int * action) list;  (* time, sequence, action: sorted *)
+  mutable sequence : int;
+  interrupts : (int, interrupt) Hashtbl.t;
+  mutable watching : bool;             (* some IPers was ordered: look at persistents *)
+  queue : (int * error_datum option) Queue.t;
+  mutable disabled : bool;
+  mutable served_datum : error_datum option;    (* of the interrupt served last (GetTrapData) *)
+  mutable data : error_datum list;              (* trapdata objects, newest first *)
+  clocks : (int, clock) Hashtbl.t;
+  mutable observations : observation list;      (* newest first *)
+}
+
+let schedule w time action =
+  w.sequence <- w.sequence + 1;
+  let entry = (time, w.sequence, action) in
+  let rec insert = function
+    | [] -> [ entry ]
+    | ((t, s, _) as e) :: rest -> if (t, s) > (time, w.sequence) then entry :: e :: rest else e :: insert rest
+  in
+  w.events <- insert w.events
+
+let observe w o = w.observations <- o :: w.observations
+
+let create ?(statement_time = default_statement_time) ?(max_time = default_max_time)
+    ?(epoch = default_epoch) (config : Io_config.t) =
+  let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
+      { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
+  let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
+            events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
+            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
+  (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
+  let ids = Hashtbl.create 16 in
+  Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
+  w.events <- List.filter_map (fun (st : Io_config.stimulus) ->
+      match Hashtbl.find_opt ids (String.lowercase_ascii st.signal) with
+      | Some id -> w.sequence <- w.sequence + 1; Some (seconds st.time, w.sequence, Set_signal (id, st.value))
+      | None -> None) config.stimuli;
+  w
+
+let now w = to_seconds w.now
+let max_time w = w.max_time
+let epoch w = w.epoch
+
+(* ---------------------------------------------------------------- interrupts *)
+
+(* An interrupt occurs: queued for its trap, unless it sleeps (ISleep: "discarded without any
+   trap execution") or the queue is full (R-8-c). *)
+let occur ?datum w number =
+  match Hashtbl.find_opt w.interrupts number with
+  | None -> ()
+  | Some i ->
+      let time = now w in
+      if i.sleeping then observe w (Interrupt_discarded { time; number; reason = "sleeping (ISleep)" })
+      else if Queue.length w.queue >= queue_capacity then
+        observe w (Interrupt_discarded { time; number; reason = "the interrupt queue is full" })
+      else (Queue.add (number, datum) w.queue; observe w (Interrupt_occurred { time; number }))
+
+let signal_changed w id old value =
+  Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
+  |> List.iter (fun (n, i) ->
+      match i.source with
+      | Signal_edge { signal; trigger; single } when signal = id && trigger ~old ~now:value ->
+          if single then i.source <- No_source;
+          occur w n
+      | _ -> ())
+
+(* ---------------------------------------------------------------- signals *)
+
+let signal_of w id = if id >= 1 && id <= Array.length w.signals then Some w.signals.(id - 1) else None
+let signals w = Array.to_list (Array.mapi (fun i s -> (s.s_name, s.s_kind, i + 1)) w.signals)
+let find_signal w name =
+  let rec go i = if i >= Array.length w.signals then None
+    else if String.lowercase_ascii w.signals.(i).s_name = String.lowercase_ascii name then Some (i + 1)
+    else go (i + 1) in
+  go 0
+
+let signal_name w id = match signal_of w id with Some s -> s.s_name | None -> "?"
+let signal_kind w id = Option.map (fun s -> s.s_kind) (signal_of w id)
+let read w id = match signal_of w id with Some s -> s.value | None -> 0.
+
+let write w id value =
+  match signal_of w id with
+  | Some s when s.value <> value ->
+      let old = s.value in
+      s.value <- value;
+      observe w (Signal_changed { time = now w; signal = s.s_name; value });
+      signal_changed w id old value
+  | _ -> ()
+
+let write_later w id value ~delay = schedule w (w.now + max 0 (seconds delay)) (Set_signal (id, value))
+
+(* ---------------------------------------------------------------- time *)
+
+let perform w = function
+  | Set_signal (id, v) -> write w id v
+  | Timer_due (n, generation) -> (
+      match Hashtbl.find_opt w.interrupts n with
+      | Some ({ source = Timer { period; single }; _ } as i) when i.generation = generation ->
+          if single then i.source <- No_source
+          else schedule w (w.now + period) (Timer_due (n, generation));
+          occur w n
+      | _ -> ())
+
+let advance_us w target =
+  let rec go () =
+    match w.events with
+    | (t, _, a) :: rest when t <= target ->
+        w.events <- rest;
+        if t > w.now then w.now <- t;
+        perform w a; go ()
+    | _ -> ()
+  in
+  go ();
+  if target > w.now then w.now <- target
+
+let advance_to w time = advance_us w (seconds time)
+let statement w = advance_us w (w.now + w.statement_time)
+let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
+
+(* ---------------------------------------------------------------- ordering interrupts *)
+
+(* Generations are unique in the run, so that a timer event of a deleted interrupt never matches
+   a later interrupt that got the same number. *)
+let fresh_generation w = w.sequence <- w.sequence + 1; w.sequence
+
+let connect w ~trap =
+  if Hashtbl.length w.interrupts >= max_interrupts then Error "ERR_INOMAX"
+  else begin
+    (* The lowest number not in use: numbers are freed by IDelete. *)
+    let rec free n = if Hashtbl.mem w.interrupts n then free (n + 1) else n in
+    let n = free 1 in
+    Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false };
+    Ok n
+  end
+
+let connected w n = Hashtbl.mem w.interrupts n
+let delete w n = Hashtbl.remove w.interrupts n
+
+let with_interrupt w n f =
+  match Hashtbl.find_opt w.interrupts n with Some i -> f i | None -> Error "ERR_UNKINO"
+
+let order_timer w n ~period ~single =
+  with_interrupt w n (fun i ->
+      let p = max 1 (seconds period) in
+      i.generation <- fresh_generation w;
+      i.source <- Timer { period = p; single };
+      schedule w (w.now + p) (Timer_due (n, i.generation));
+      Ok ())
+
+let order_signal w n ~signal ~trigger ~single =
+  with_interrupt w n (fun i ->
+      i.generation <- fresh_generation w;
+      i.source <- Signal_edge { signal; trigger; single };
+      Ok ())
+
+let order_watch w n ~changed ~single =
+  with_interrupt w n (fun i ->
+      i.generation <- fresh_generation w;
+      i.source <- Watch { changed; single };
+      w.watching <- true;
+      Ok ())
+
+let order_error w n ~domain ~id ~error_type =
+  with_interrupt w n (fun i ->
+      i.generation <- fresh_generation w;
+      i.source <- Error_log { domain; id; error_type };
+      Ok ())
+
+(* IError: COMMON_ERR (0) is every domain, an absent ErrorId every number, TYPE_ALL (0) every
+   type. *)
+let post_error w (d : error_datum) =
+  Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
+  |> List.iter (fun (n, i) ->
+      match i.source with
+      | Error_log { domain; id; error_type }
+        when (domain = 0 || domain = d.domain) && (id = None || id = Some d.id)
+             && (error_type = 0 || error_type = d.error_type) ->
+          occur ~datum:d w n
+      | _ -> ())
+
+(* IPers: a persistent changed since the last look. Looked at wherever an interrupt may be
+   served. *)
+let look_at_watches w =
+  if w.watching then
+  Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
+  |> List.sort (fun (a, _) (b, _) -> compare a b)
+  |> List.iter (fun (n, i) ->
+      match i.source with
+      | Watch { changed; single } when changed () ->
+          if single then i.source <- No_source;
+          occur w n
+      | _ -> ())
+
+let sleep w n = with_interrupt w n (fun i -> i.sleeping <- true; Ok ())
+let watch w n = with_interrupt w n (fun i -> i.sleeping <- false; Ok ())
+let disable w = w.disabled <- true
+let enable w = w.disabled <- false
+let enabled w = not w.disabled
+
+let rec take_queued w =
+  if w.disabled || Queue.is_empty w.queue then None
+  else
+    let n, datum = Queue.pop w.queue in
+    match Hashtbl.find_opt w.interrupts n with
+    | Some i -> w.served_datum <- datum; Some (n, i.trap)
+    | None -> take_queued w
+
+let take w = look_at_watches w; take_queued w
+
+let trap_data w =
+  match w.served_datum with
+  | None -> 0
+  | Some d -> w.data <- d :: w.data; List.length w.data
+
+let error_datum w k =
+  let n = List.length w.data in
+  if k >= 1 && k <= n then Some (List.nth w.data (n - k)) else None
+
+(* ---------------------------------------------------------------- clocks *)
+
+let new_clock w =
+  let id = Hashtbl.length w.clocks + 1 in
+  Hashtbl.replace w.clocks id { since = None; total = 0 };
+  id
+
+let clock w id =
+  match Hashtbl.find_opt w.clocks id with
+  | Some c -> c
+  | None -> let c = { since = None; total = 0 } in Hashtbl.replace w.clocks id c; c
+
+let elapsed w c = c.total + (match c.since with Some s -> w.now - s | None -> 0)
+
+(* ClkReset stops the clock and sets it to 0 (ABB's ClkReset: "if a clock is running it will be
+   stopped and then reset"). *)
+let clock_reset w id = let c = clock w id in c.total <- 0; c.since <- None
+let clock_start w id = let c = clock w id in if c.since = None then c.since <- Some w.now
+let clock_stop w id = let c = clock w id in c.total <- elapsed w c; c.since <- None
+let clock_read w id = to_seconds (elapsed w (clock w id))
+
+let drain w =
+  match w.observations with
+  | [] -> []
+  | l -> w.observations <- []; List.rev l

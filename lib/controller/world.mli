@@ -1,0 +1,161 @@
+(** The controller around a program: what an engine (the small-step machine, or any other
+    evaluator) asks of the world it runs in, with no type of any engine in it. One world per run.
+
+    - a virtual clock, from 0 s, that only waits, the statements executed and the events of the
+      stimulus move on; nothing reads the host's clock, so a run is reproducible;
+    - the I/O signals of the configuration, their values, and the timed changes of inputs
+      (the stimulus) and of outputs (SetDO \SDelay, PulseDO);
+    - the interrupt numbers, their sources (timers, signal edges), the queue of interrupts that
+      occurred and wait for their trap, IDisable/IEnable, ISleep/IWatch (ch. 8, §4.15);
+    - the clocks of ClkStart/ClkRead, and the wall clock of CDate/CTime/GetTime.
+
+    Times are seconds; inside, the clock counts whole microseconds, so that adding the time of
+    a statement a million times gives exactly a million times it. *)
+
+type t
+
+(** What the world makes observable, each with its virtual time (seconds). *)
+type observation =
+  | Signal_changed of { time : float; signal : string; value : float }
+  | Interrupt_occurred of { time : float; number : int }
+      (** the interrupt is queued for its trap *)
+  | Interrupt_discarded of { time : float; number : int; reason : string }
+      (** sleeping (ISleep), deleted, or the queue was full *)
+
+val default_statement_time : float
+(** 0.0001 s of virtual time for each statement executed (and each new round of a loop). *)
+
+val default_max_time : float
+(** 3600 s: a run whose virtual time goes beyond it is stopped (resource exhaustion). *)
+
+val default_epoch : float
+(** The wall-clock time at virtual time 0, in seconds since 1970-01-01 00:00:00:
+    2024-01-01 00:00:00, a Monday. *)
+
+val default_poll_rate : float
+(** WaitUntil's \PollRate when absent: 0.1 s (installed-facts.md section 4, UNCERTAIN). *)
+
+val max_interrupts : int
+(** Interrupt numbers a task may hold at once: 100 (installed-facts.md section 6); one more
+    CONNECT raises ERR_INOMAX. *)
+
+val queue_capacity : int
+(** Interrupts waiting for their trap at once: 30 (doc/rulings.md R-8-c). *)
+
+val create :
+  ?statement_time:float -> ?max_time:float -> ?epoch:float -> Io_config.t -> t
+
+(** {1 Time} *)
+
+val now : t -> float
+val max_time : t -> float
+val epoch : t -> float
+
+val statement : t -> unit
+(** The time of one statement passes (the events due meanwhile happen). *)
+
+val next_event : t -> float option
+(** When the next timed event (a stimulus, a delayed output, a timer) is due, if any. *)
+
+val advance_to : t -> float -> unit
+(** The clock moves on to this time; the events due until then happen in order of time (and of
+    scheduling for equal times). A time in the past changes nothing. *)
+
+val seconds : float -> int
+(** Seconds to the clock's microseconds, rounded to nearest. *)
+
+(** {1 Signals} *)
+
+val signals : t -> (string * Io_config.signal_type * int) list
+(** The configured signals, with the identity each has ([1], [2], ...; 0 is "not connected"). *)
+
+val find_signal : t -> string -> int option
+(** The identity of the signal of this name (letter case aside). *)
+
+val signal_name : t -> int -> string
+val signal_kind : t -> int -> Io_config.signal_type option
+(** [None]: no such signal. *)
+
+val read : t -> int -> float
+val write : t -> int -> float -> unit
+(** A change now: an observation, and the interrupts it triggers. *)
+
+val write_later : t -> int -> float -> delay:float -> unit
+
+(** {1 Waiting} *)
+
+(** A wait of a waiting instruction, engine-neutral: the engine checks [satisfied] and the
+    deadline at every step of the wait, lets interrupts in, and moves the clock on to the next
+    event, the deadline or the next poll. *)
+type wait = {
+  what : string;                              (** for the deadlock message *)
+  satisfied : unit -> bool;                   (** unused when [poll] is set *)
+  deadline : float option;                    (** absolute virtual time *)
+  finish : timed_out:bool -> string option;   (** at the end: an error (ERR_ name) to raise *)
+  poll : float option;                        (** WaitUntil: the engine re-evaluates a condition *)
+}
+
+(** {1 Interrupts} *)
+
+val connect : t -> trap:int -> (int, string) result
+(** A new interrupt number bound to the trap (the engine's identity of the routine), or
+    ERR_INOMAX. *)
+
+val connected : t -> int -> bool
+val delete : t -> int -> unit
+(** IDelete: the number is free again; its source is cancelled, and queued occurrences are
+    dropped when their turn comes. *)
+
+val order_timer : t -> int -> period:float -> single:bool -> (unit, string) result
+(** ITimer; ERR_UNKINO for a number that is not connected. *)
+
+type trigger = old:float -> now:float -> bool
+(** May keep a state of its own (ISignalAI's reference value). *)
+
+val order_signal : t -> int -> signal:int -> trigger:trigger -> single:bool -> (unit, string) result
+(** ISignalDI/DO/AI/AO/GI/GO: an interrupt at each change of the signal that satisfies the
+    trigger. *)
+
+val order_watch : t -> int -> changed:(unit -> bool) -> single:bool -> (unit, string) result
+(** IPers: [changed ()] says whether the persistent changed since it was last asked; it is asked
+    wherever an interrupt may be served. *)
+
+(** An entry of the event log that IError sees: its domain (errdomain), number and type
+    (errtype), and its text lines. *)
+type error_datum = { domain : int; id : int; error_type : int; strings : string list }
+
+val order_error : t -> int -> domain:int -> id:int option -> error_type:int -> (unit, string) result
+(** IError: COMMON_ERR (0) is every domain, [None] every number, TYPE_ALL (0) every type. *)
+
+val post_error : t -> error_datum -> unit
+(** An entry in the event log: the IError interrupts it matches occur, carrying it. *)
+
+val trap_data : t -> int
+(** GetTrapData: an identity for the event of the interrupt served last (0: it has none). *)
+
+val error_datum : t -> int -> error_datum option
+(** ReadErrData: the event a trapdata identity denotes. *)
+
+val sleep : t -> int -> (unit, string) result
+val watch : t -> int -> (unit, string) result
+val disable : t -> unit
+val enable : t -> unit
+val enabled : t -> bool
+
+val take : t -> (int * int) option
+(** The first queued interrupt and its trap, when interrupts are enabled: it leaves the queue.
+    Occurrences of a deleted number are dropped. *)
+
+(** {1 Clocks (ClkReset, ClkStart, ClkStop, ClkRead)} *)
+
+val new_clock : t -> int
+val clock_reset : t -> int -> unit
+val clock_start : t -> int -> unit
+val clock_stop : t -> int -> unit
+val clock_read : t -> int -> float
+(** Seconds, to the microsecond. *)
+
+(** {1 Observations} *)
+
+val drain : t -> observation list
+(** What happened since the last call, in order. *)

@@ -1,0 +1,1 @@
+run --json --io controller-cell.io controller-cell.mod

@@ -1,0 +1,1 @@
+check --io controller-cell.io controller-cell.mod

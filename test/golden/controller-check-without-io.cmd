@@ -1,0 +1,1 @@
+check controller-cell.mod

@@ -1,0 +1,1 @@
+run --io controller-deadlock.io controller-deadlock.mod

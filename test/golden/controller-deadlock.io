@@ -1,0 +1,1 @@
+signal di_part di

@@ -1,0 +1,1 @@
+run --io controller-bad.io run-hello.mod

@@ -1,0 +1,128 @@
+(* The controller around the program (doc/controller.md): the stimulus file and EIO.cfg reader,
+   the world's clock, events and interrupt queue, the wall clock, and the reproducibility of a
+   whole run. *)
+
+module Io = Rapid_controller.Io_config
+module W = Rapid_controller.World
+
+let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe"
+
+let parse text = Io.parse ~file:"t.io" text
+
+let error_of text = match parse text with Error m -> m | Ok _ -> Alcotest.fail "accepted"
+
+let stimulus_file () =
+  match parse "# comment\nsignal di1 di   # trailing comment\nsignal go1 GO 7\n\nat 0.5 di1 1\nat 0.5 di1 0\n" with
+  | Error m -> Alcotest.fail m
+  | Ok c ->
+      Alcotest.(check (list string)) "names" [ "di1"; "go1" ] (List.map (fun (s : Io.signal) -> s.name) c.signals);
+      Alcotest.(check (float 0.)) "initial" 7. (List.nth c.signals 1).initial;
+      Alcotest.(check int) "events" 2 (List.length c.stimuli)
+
+let stimulus_errors () =
+  let check name expected text = Alcotest.(check string) name expected (error_of text) in
+  check "type" "t.io:1:13: io error: unknown signal type \"dx\" (di, do, ai, ao, gi or go)" "signal di1  dx";
+  check "undeclared" "t.io:1:6: io error: the signal di9 is not declared above" "at 1 di9 1";
+  check "output" "t.io:2:6: io error: do1 is an output: the outside world changes inputs only" "signal do1 do\nat 1 do1 1";
+  check "order" "t.io:3:4: io error: the events are not in order of time" "signal di1 di\nat 2 di1 1\nat 1 di1 0";
+  check "digital" "t.io:2:10: io error: a digital signal takes the value 0 or 1" "signal di1 di\nat 1 di1 2";
+  check "twice" "t.io:2:8: io error: the signal DI1 is declared twice" "signal di1 di\nsignal DI1 do";
+  check "name" "t.io:1:8: io error: \"1x\" is not a RAPID identifier (§2.3), so it cannot name a signal" "signal 1x di";
+  check "entry" "t.io:1:1: io error: unknown entry \"sig\" (signal or at)" "sig di1 di";
+  check "number" "t.io:2:4: io error: \"soon\" is not a number" "signal di1 di\nat soon di1 1";
+  Alcotest.(check string) "missing file" "no-such.io:1:1: io error: cannot read the file (no-such.io: No such file or directory)"
+    (match Io.read_file "no-such.io" with Error m -> m | Ok _ -> "")
+
+let eio_file () =
+  let text = "EIO:CFG_1.0:6:1::\n#\nEIO_DEVICE:\n  -Name \"d1\" -Address 10\nEIO_SIGNAL:\n\n  -Name \"a\" -SignalType \"DI\" -Device \"d1\"\n  -Name \"b\" -SignalType \"AO\" \\\n    -Default 2.5\n#\nEIO_CROSS:\n  -Name \"x\" -SignalType \"DO\"\n" in
+  match parse text with
+  | Error m -> Alcotest.fail m
+  | Ok c ->
+      Alcotest.(check (list string)) "signals" [ "a"; "b" ] (List.map (fun (s : Io.signal) -> s.name) c.signals);
+      Alcotest.(check (float 0.)) "default" 2.5 (List.nth c.signals 1).initial;
+      Alcotest.(check string) "missing type" "t.io:2:1: io error: an EIO_SIGNAL entry without -SignalType"
+        (error_of "EIO_SIGNAL:\n  -Name \"a\"\n")
+
+(* A million statements of 1 microsecond are exactly one second: the clock counts
+   microseconds, not sums of floats. *)
+let exact_clock () =
+  let w = W.create ~statement_time:0.000001 Io.empty in
+  for _ = 1 to 1_000_000 do W.statement w done;
+  Alcotest.(check (float 0.)) "1 s" 1. (W.now w)
+
+let events_in_order () =
+  let io = match parse "signal di1 di\nsignal di2 di\nat 1 di1 1\nat 1 di2 1\nat 2 di1 0\n" with
+    | Ok c -> c | Error m -> Alcotest.fail m in
+  let w = W.create io in
+  Alcotest.(check (option (float 0.))) "next" (Some 1.) (W.next_event w);
+  W.advance_to w 1.5;
+  let seen = List.map (function
+      | W.Signal_changed { signal; value; _ } -> Printf.sprintf "%s=%g" signal value
+      | _ -> "?") (W.drain w) in
+  Alcotest.(check (list string)) "same time: file order" [ "di1=1"; "di2=1" ] seen;
+  Alcotest.(check (option (float 0.))) "next" (Some 2.) (W.next_event w)
+
+let queue () =
+  let w = W.create Io.empty in
+  let n = match W.connect w ~trap:7 with Ok n -> n | Error e -> Alcotest.fail e in
+  ignore (W.order_timer w n ~period:0.1 ~single:false);
+  W.disable w;
+  W.advance_to w 10.;
+  Alcotest.(check (option (pair int int))) "disabled" None (W.take w);
+  W.enable w;
+  let rec count k = match W.take w with Some (m, 7) when m = n -> count (k + 1) | _ -> k in
+  Alcotest.(check int) "queue capacity" W.queue_capacity (count 0);
+  let discarded = List.length (List.filter (function W.Interrupt_discarded _ -> true | _ -> false) (W.drain w)) in
+  Alcotest.(check int) "discarded" (100 - W.queue_capacity) discarded;
+  Alcotest.(check (result unit string)) "unknown number" (Error "ERR_UNKINO") (W.sleep w 99)
+
+let wall_clock () =
+  let show t = let y, m, d, h, mi, s, wd = Rapid_semantics.Io_primitives.date_time t in
+    Printf.sprintf "%04d-%02d-%02d %02d:%02d:%02d %d" y m d h mi s wd in
+  Alcotest.(check string) "epoch" "2024-01-01 00:00:00 1" (show W.default_epoch);
+  Alcotest.(check string) "1970" "1970-01-01 00:00:00 4" (show 0.);
+  Alcotest.(check string) "leap day" "2024-02-29 23:59:59 4" (show (W.default_epoch +. (59. *. 86400.) +. 86399.))
+
+(* The same program with the same stimulus gives the same events, byte for byte. *)
+let reproducible () =
+  let run () =
+    let out = Filename.temp_file "rapid-sem" ".json" in
+    let command = Printf.sprintf "cd golden && %s run --json --io controller-cell.io controller-cell.mod > %s"
+        (Filename.quote binary) (Filename.quote out) in
+    let status = Sys.command command in
+    let ic = open_in_bin out in
+    let text = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
+    Sys.remove out; (status, text)
+  in
+  let s1, first = run () and s2, second = run () in
+  Alcotest.(check int) "exit" 0 s1;
+  Alcotest.(check int) "exit again" 0 s2;
+  Alcotest.(check bool) "events" true (String.length first > 1000);
+  Alcotest.(check string) "byte-identical" first second
+
+(* Any text, and texts made of the files' own words: the reader answers, never raises. *)
+let never_raises () =
+  let words = [| "signal"; "at"; "di"; "do"; "gi"; "ai"; "x1"; "1"; "0"; "-1"; "0.5"; "1e400"; "nan";
+                 "#"; "\\"; "\n"; "\r\n"; " "; "\t"; "EIO_SIGNAL:"; "EIO:CFG_1.0::"; "-Name"; "\"";
+                 "-SignalType"; "\"DI\""; "-Default"; "EIO_CROSS:"; "-" |] in
+  let gen = QCheck.Gen.(oneof [
+      string_size ~gen:printable (0 -- 200);
+      map (String.concat "") (list_size (0 -- 60) (oneofa words)) ]) in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 8 |])
+    (QCheck.Test.make ~count:3000 ~name:"io reader" (QCheck.make ~print:(Printf.sprintf "%S") gen)
+       (fun text -> match Io.parse ~file:"f" text with
+          | Ok _ -> true
+          | Error m -> String.length m > 5 && String.sub m 0 2 = "f:"))
+
+let suite =
+  ("controller", [
+      Alcotest.test_case "the stimulus file" `Quick stimulus_file;
+      Alcotest.test_case "errors in the stimulus file: FILE:LINE:COL" `Quick stimulus_errors;
+      Alcotest.test_case "EIO.cfg: EIO_SIGNAL entries" `Quick eio_file;
+      Alcotest.test_case "the io reader never raises" `Quick never_raises;
+      Alcotest.test_case "the clock counts microseconds exactly" `Quick exact_clock;
+      Alcotest.test_case "timed events in order" `Quick events_in_order;
+      Alcotest.test_case "the interrupt queue and its capacity" `Quick queue;
+      Alcotest.test_case "the wall clock (CDate, CTime, GetTime)" `Quick wall_clock;
+      Alcotest.test_case "two runs give byte-identical run --json" `Quick reproducible;
+    ])
