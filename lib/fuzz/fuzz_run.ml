@@ -34,6 +34,12 @@ let event_text (e : M.event) =
   | Error_handled { name; routine } -> Printf.sprintf "error-handled %s %s" name routine
   | Undo_run r -> "undo-run " ^ r
   | Task_ended -> "task-ended"
+  | Controller (Signal_changed { time; signal; value }) -> Printf.sprintf "signal %s %g at %g" signal value time
+  | Controller (Interrupt_occurred { time; number }) -> Printf.sprintf "interrupt %d at %g" number time
+  | Controller (Interrupt_discarded { time; number; reason }) ->
+      Printf.sprintf "interrupt-discarded %d at %g (%s)" number time reason
+  | Trap_entered { number; trap; time } -> Printf.sprintf "trap-entered %s %d at %g" trap number time
+  | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
 
 let outcome_text (o : M.outcome) =
   match o with
@@ -43,6 +49,7 @@ let outcome_text (o : M.outcome) =
       Printf.sprintf "stopped %s %d %s [%s]" name number (place at) (String.concat " " chain)
   | Resource_exhausted m -> "exhausted " ^ m
   | Unsupported m -> "unsupported " ^ m
+  | Deadlock m -> "deadlock " ^ m
   | Stuck m -> "stuck " ^ m
 
 let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
@@ -61,7 +68,7 @@ let machine =
           List.iter (fun e -> events := event_text e :: !events) evs
         done;
         let o = M.outcome cfg in
-        let finished = match o with Running | Resource_exhausted _ -> false | _ -> true in
+        let finished = match o with Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
         { events = List.rev !events; outcome = outcome_text o; finished }
   in
   { engine_name = "machine"; run }
