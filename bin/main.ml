@@ -201,6 +201,7 @@ let event_json (e : M.event) : Yojson.Safe.t =
                ("trap", `String trap) ]
   | Trap_left { trap; time } ->
       `Assoc [ ("event", `String "trap-left"); ("time", time_json time); ("trap", `String trap) ]
+  | Motion m -> Motion_json.event m
 
 let schema = "rapid-sem/1"
 
@@ -350,6 +351,7 @@ let trace_cmd =
                   | M.Trap_entered { time; number; trap } ->
                       Printf.printf "       ~ %.6f s: trap %s serves interrupt %d\n" time trap number
                   | M.Trap_left { time; trap } -> Printf.printf "       ~ %.6f s: trap %s left\n" time trap
+                  | M.Motion m -> Printf.printf "       ~ %s\n" (Rapid_semantics.Motion_primitives.event_to_string m)
                   | _ -> ()) events
           | `Jsonl ->
               print_endline (Yojson.Safe.to_string (`Assoc [

@@ -40,6 +40,7 @@ type interrupt = {
 type action =
   | Set_signal of int * float
   | Timer_due of int * int            (* number, generation *)
+  | Wake                              (* nothing happens: a wait looks again (wake_at) *)
 
 type clock = { mutable since : int option; mutable total : int }
 
@@ -160,6 +161,7 @@ let perform w = function
           else schedule w (w.now + period) (Timer_due (n, generation));
           occur w n
       | _ -> ())
+  | Wake -> ()
 
 let advance_us w target =
   let rec go () =
@@ -176,6 +178,12 @@ let advance_us w target =
 let advance_to w time = advance_us w (seconds time)
 let statement w = advance_us w (w.now + w.statement_time)
 let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
+
+(* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
+   clock stop there. *)
+let wake_at w time =
+  let us = seconds time in
+  if Float.is_finite time && us > w.now then schedule w us Wake
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 

@@ -61,6 +61,11 @@ val advance_to : t -> float -> unit
 (** The clock moves on to this time; the events due until then happen in order of time (and of
     scheduling for equal times). A time in the past changes nothing. *)
 
+val wake_at : t -> float -> unit
+(** A timed event that changes nothing, so that a wait whose end another model computes (a move
+    until the robot's ready time, doc/motion.md) is looked at again at that time. Past and
+    infinite times are ignored. *)
+
 val seconds : float -> int
 (** Seconds to the clock's microseconds, rounded to nearest. *)
 

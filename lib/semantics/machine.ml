@@ -27,6 +27,7 @@ type event =
   | Controller of W.observation
   | Trap_entered of { number : int; trap : string; time : float }
   | Trap_left of { trap : string; time : float }
+  | Motion of Motion_primitives.event
 
 type outcome =
   | Running
@@ -145,6 +146,7 @@ type config = {
      the activation's; the interrupt numbers and queue are the world's. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   world : W.t;                          (* the controller around the program *)
+  motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -194,7 +196,8 @@ let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
     handling = Body; retries = 0; retried = None;
     trap_level = (match caller with None -> false | Some c -> c.trap_level) }
 
-let start ?(limits = default_limits) ?world (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world ?motion (program : Ir.program) ~entry =
+  let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   match routine_index program entry with
   | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
@@ -253,7 +256,7 @@ let start ?(limits = default_limits) ?world (program : Ir.program) ~entry =
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; unmarked = false; world;
+          count = 0; booked = 0; unmarked = false; world; motion;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         Ok cfg
@@ -323,7 +326,19 @@ let primitive_context cfg events : Primitive.context = {
   error_number = (fun name -> error_number cfg name);
   world = cfg.world;
   parameters = [||];
+  argument_label = (fun _ -> None);
 }
+
+(* The data object an argument names, for the motion's output (p10, z10). *)
+let argument_label cfg (cs : call_state) name =
+  let found = ref None in
+  Array.iteri (fun i (p : Ir.parameter) ->
+      if String.lowercase_ascii p.p_name = String.lowercase_ascii name && i < Array.length cs.call.arguments then
+        match cs.call.arguments.(i) with
+        | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
+            found := Some cfg.program.globals.(g).g_name
+        | _ -> ()) cs.callee.parameters;
+  !found
 
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
 
@@ -331,7 +346,10 @@ let call_primitive cfg (cs : call_state) name =
   let events = ref [] in
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
-  let result = match Io_primitives.call ctx name cs.primitive_args with
+  let ctx = { ctx with argument_label = argument_label cfg cs } in
+  let result = match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
+    | Some r -> r
+    | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
     | None -> Primitive.call ctx name cs.primitive_args in
   match result with
@@ -347,7 +365,10 @@ let call_primitive cfg (cs : call_state) name =
             cs.callee.parameters;
           !found in
       let now = W.now cfg.world in
-      push cfg (K_wait { wait; cond; next_poll = now +. Option.value wait.poll ~default:0. });
+      let next_poll = match Motion_primitives.take_first_poll cfg.motion with
+        | Some t -> Float.max t (now +. Option.value wait.poll ~default:0.)
+        | None -> now +. Option.value wait.poll ~default:0. in
+      push cfg (K_wait { wait; cond; next_poll });
       cfg.focus <- F_next;
       ("wait-start", List.rev !events)
   | Primitive.Returned v ->
@@ -1080,11 +1101,20 @@ let step cfg =
   in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
      while the clock moved on, at the start of the step. *)
-  match W.drain cfg.world with
+  let events = match W.drain cfg.world with
+    | [] -> events
+    | seen -> List.map (fun o -> Controller o) seen @ events in
+  (* The motion: moves planned, begun and ended as the clock passes them; at the end of the
+     task, what the robot still does. *)
+  let moved = match cfg.focus with
+    | F_done Ended -> Motion_primitives.drain cfg.motion cfg.world @ Motion_primitives.finish cfg.motion
+    | _ -> Motion_primitives.drain cfg.motion cfg.world in
+  match moved with
   | [] -> (rule, events)
-  | seen -> (rule, List.map (fun o -> Controller o) seen @ events)
+  | moved -> (rule, events @ List.map (fun e -> Motion e) moved)
 
 let world cfg = cfg.world
+let motion cfg = cfg.motion
 let trap_level cfg = cfg.act.trap_level
 
 let outcome cfg = match cfg.focus with F_done o -> o | _ -> Running

@@ -28,6 +28,8 @@ type event =
   | Trap_entered of { number : int; trap : string; time : float }
       (** an interrupt is served: its trap runs (ch. 8) *)
   | Trap_left of { trap : string; time : float }
+  | Motion of Motion_primitives.event
+      (** a move planned, begun, ended; a path command (doc/motion.md, doc/trace-format.md) *)
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -50,7 +52,7 @@ type limits = {
 val default_limits : limits
 
 val start :
-  ?limits:limits -> ?world:Rapid_controller.World.t -> Ir.program -> entry:string -> (config, string) result
+  ?limits:limits -> ?world:Rapid_controller.World.t -> ?motion:Motion_primitives.state -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure. *)
 
@@ -62,6 +64,9 @@ val outcome : config -> outcome
 
 val world : config -> Rapid_controller.World.t
 (** The controller around the run: its clock, signals and interrupts. *)
+
+val motion : config -> Motion_primitives.state
+(** The robot of the run and its planner. *)
 
 val trap_level : config -> bool
 (** Whether the task executes at trap level (a trap, or a routine called from one; §7.2). *)

@@ -14,6 +14,7 @@ type context = {
   error_number : string -> int;
   world : Rapid_controller.World.t;
   parameters : string array;
+  argument_label : string -> string option;
 }
 
 type outcome =

@@ -22,6 +22,9 @@ type context = {
   error_number : string -> int;
   world : Rapid_controller.World.t;                  (** the controller around the run *)
   parameters : string array;                         (** the routine's parameter names, in order *)
+  argument_label : string -> string option;
+      (** the name of the data object given for a parameter (by the parameter's name), for the
+          motion's output: [p10], [z10]; [None] for any other expression *)
 }
 
 type outcome =
