@@ -331,11 +331,22 @@ let call (ctx : context) st name args =
               let s = standstill st () in
               if Float.is_finite s then Float.max now s +. t else infinity))
       | _ -> Some (Failed "ERR_ARGVALERR"))
-  | "waituntil" when present ctx args "InPos" ->
-      (* The condition is first evaluated when the robot stands still (R-4.1-f). *)
-      let s = standstill st () in
-      if Float.is_finite s && s > now then st.first_poll <- Some s;
-      None
+  | "waituntil" when present ctx args "InPos" && not (reached w (standstill st ())) ->
+      (* The condition is first evaluated when the robot stands still (R-4.1-f), then at the
+         poll rate, as without \InPos. *)
+      let rate = Option.value (num ctx args "PollRate") ~default:W.default_poll_rate in
+      let flag = present ctx args "TimeFlag" in
+      let max_time = num ctx args "MaxTime" in
+      if rate <= 0. || (match max_time with Some m -> not (m >= 0.) | None -> false) then Some (Failed "ERR_ARGVALERR")
+      else begin
+        let s = standstill st () in
+        if Float.is_finite s then st.first_poll <- Some s;
+        let finish ~timed_out =
+          if flag then ((match arg ctx args "TimeFlag" with Location (box, i, _) -> box.(i) <- V.Bool timed_out | _ -> ()); None)
+          else if timed_out then Some "ERR_WAIT_MAXTIME" else None in
+        Some (Wait { W.what = "a condition (WaitUntil \\InPos)"; satisfied = (fun () -> false);
+                     deadline = Option.map (fun m -> now +. m) max_time; finish; poll = Some rate })
+      end
   | "waitrob" -> Some (until ctx ~what:"the robot to stand still (WaitRob)" (standstill st))
   | "stopmove" -> Some (path_command ctx st "StopMove" (fun at -> P.stop st.planner ~at; Ok ()))
   | "startmove" -> Some (path_command ctx st "StartMove" (fun at -> P.start st.planner ~at; Ok ()))

@@ -1,4 +1,4 @@
-MODULE conc
+MODULE conc_case
 ! @format 3
 ! @section 13
 ! @expect ok
