@@ -117,11 +117,11 @@ let check_cmd =
   let strict =
     Arg.(value & flag & info [ "strict" ] ~doc:"Refuse the dialect extensions of doc/dialect.md.")
   in
-  let run files allow_unknown strict io =
+  let run files allow_unknown strict io robot =
     guard @@ fun () ->
-    match read_io io with
-    | Error m -> prerr_endline m; exit_static_error
-    | Ok io ->
+    match read_io io, Motion_cmd.load_robot robot with
+    | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
+    | Ok io, Ok _ ->
     let options = { Parse.default_options with strict } in
     let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
     let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
@@ -151,7 +151,7 @@ let check_cmd =
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ io_arg)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ io_arg $ Motion_cmd.robot_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -246,11 +246,11 @@ let common_run_args =
    (bench/README.md, "The machine"). *)
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 
-let start_machine files entry allow_unknown max_depth retry_limit controller k =
+let start_machine ?robot files entry allow_unknown max_depth retry_limit controller k =
   machine_gc ();
-  match read_io controller.io with
-  | Error m -> prerr_endline m; exit_static_error
-  | Ok io ->
+  match read_io controller.io, Motion_cmd.load_robot robot with
+  | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
+  | Ok io, Ok robot ->
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
@@ -260,20 +260,27 @@ let start_machine files entry allow_unknown max_depth retry_limit controller k =
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } ~world loaded.program ~entry with
+      let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit } ~world ~motion loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller =
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+    (* --samples: TCP samples as the clock passes them (JSON only). *)
+    let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
+    let print_samples l = List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) l in
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
+        Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
+                                               ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
         List.iter (fun (e : M.event) ->
             if json then print_endline (Yojson.Safe.to_string (event_json e))
             else match e with Output s -> print_endline s | _ -> ()) events;
@@ -281,6 +288,7 @@ let run_cmd =
       end
     in
     loop ();
+    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
     if json then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
@@ -292,7 +300,8 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. *)
 let source_cache = Hashtbl.create 8
@@ -321,9 +330,11 @@ let trace_cmd =
   let from_ = Arg.(value & opt int 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt int max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller =
+  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller robot samples =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    let sampler = match samples with Some hz when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
@@ -358,12 +369,16 @@ let trace_cmd =
                   ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
                   ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", `String (region_text region)) ]);
                   ("stack", `List (List.map (fun s -> `String s) stack));
-                  ("events", `List (List.map event_json events)) ]))
+                  ("events", `List (List.map event_json events
+                                    @ (match sampler with
+                                        | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
+                                        | None -> []))) ]))
         end;
         loop ()
       end
     in
     loop ();
+    Option.iter (fun s -> List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) sampler;
     if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
@@ -377,7 +392,8 @@ let trace_cmd =
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
@@ -401,4 +417,7 @@ let spec_cmd =
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in
   let info = Cmd.info "rapid-sem" ~version:"0.1.0" ~doc in
-  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))
+  exit (Cmd.eval' (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
+                                   Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
+                                       guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                     ~finish ~common_run_args ~controller_args; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]))
