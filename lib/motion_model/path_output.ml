@@ -211,13 +211,19 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
     List.iteri (fun k name ->
         buf_printf b "<text x=\"10\" y=\"%.0f\">%s</text>\n" (350. +. 30. *. float_of_int k) name)
       [ "waits"; "traps"; "signals" ];
+    (* A signal's name is written where the one before it in the lane leaves room. *)
+    let free = ref neg_infinity in
     List.iter (fun m ->
         let y = 336. +. 30. *. float_of_int (lane_row m.lane) in
         let x0 = sx m.m_from and x1 = sx m.m_to in
         match m.lane with
         | Signals ->
-            buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#8e44ad\" stroke-width=\"1.5\"/><text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s<title>%.6f s</title></text>\n"
-              x0 y x0 (y +. 20.) (x0 +. 2.) (y +. 10.) (esc m.m_label) m.m_from
+            buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#8e44ad\" stroke-width=\"1.5\"><title>%s %.6f s</title></line>\n"
+              x0 y x0 (y +. 20.) (esc m.m_label) m.m_from;
+            if x0 > !free then begin
+              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s</text>\n" (x0 +. 2.) (y +. 10.) (esc m.m_label);
+              free := x0 +. 6. *. float_of_int (String.length m.m_label) +. 6.
+            end
         | Waits | Traps ->
             buf_printf b "<rect x=\"%.2f\" y=\"%.1f\" width=\"%.2f\" height=\"20\" fill=\"%s\"><title>%s %.6f–%.6f s</title></rect>\n"
               x0 y (Float.max 1. (x1 -. x0)) (if m.lane = Waits then "#7f8c8d" else "#c0392b") (esc m.m_label) m.m_from m.m_to;

@@ -329,7 +329,8 @@ let primitive_context cfg events : Primitive.context = {
   argument_label = (fun _ -> None);
 }
 
-(* The data object an argument names, for the motion's output (p10, z10). *)
+(* The data object an argument names, for the motion's output (p10, z10), or the line of
+   another expression (an inline target, Offs(...)). *)
 let argument_label cfg (cs : call_state) name =
   let found = ref None in
   Array.iteri (fun i (p : Ir.parameter) ->
@@ -337,6 +338,7 @@ let argument_label cfg (cs : call_state) name =
         match cs.call.arguments.(i) with
         | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
             found := Some cfg.program.globals.(g).g_name
+        | By_value { at; _ } -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line)
         | _ -> ()) cs.callee.parameters;
   !found
 

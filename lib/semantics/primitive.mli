@@ -24,7 +24,7 @@ type context = {
   parameters : string array;                         (** the routine's parameter names, in order *)
   argument_label : string -> string option;
       (** the name of the data object given for a parameter (by the parameter's name), for the
-          motion's output: [p10], [z10]; [None] for any other expression *)
+          motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
 }
 
 type outcome =
