@@ -46,6 +46,8 @@ let final_samples s cfg =
   let motion = M.motion cfg in
   let stop = MM.Planner.finished_by (MP.planner motion) in
   let now = Rapid_controller.World.now (M.world cfg) in
+  (* Not beyond --max-time: a move of 1E30 s is planned, not sampled. *)
+  let stop = Float.min stop (Rapid_controller.World.max_time (M.world cfg)) in
   if M.outcome cfg = M.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
   else samples s motion ~until:now
 

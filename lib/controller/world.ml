@@ -182,8 +182,7 @@ let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [
 (* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
    clock stop there. *)
 let wake_at w time =
-  let us = seconds time in
-  if Float.is_finite time && us > w.now then schedule w us Wake
+  if Float.is_finite time && time < 1e12 && seconds time > w.now then schedule w (seconds time) Wake
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 

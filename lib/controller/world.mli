@@ -63,8 +63,8 @@ val advance_to : t -> float -> unit
 
 val wake_at : t -> float -> unit
 (** A timed event that changes nothing, so that a wait whose end another model computes (a move
-    until the robot's ready time, doc/motion.md) is looked at again at that time. Past and
-    infinite times are ignored. *)
+    until the robot's ready time, doc/motion.md) is looked at again at that time. Past, infinite and absurdly
+    large (from 1e12 s) times are ignored. *)
 
 val seconds : float -> int
 (** Seconds to the clock's microseconds, rounded to nearest. *)

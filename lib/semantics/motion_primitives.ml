@@ -83,7 +83,16 @@ let label ctx name = match ctx.argument_label name with Some l -> l | None -> "*
 
 let nums v = Array.map V.num_value (V.components v)
 let pos_of v = let c = nums v in { G.x = c.(0); y = c.(1); z = c.(2) }
-let orient_of v = let c = nums v in G.normalize { G.q1 = c.(0); q2 = c.(1); q3 = c.(2); q4 = c.(3) }
+(* Motion instructions check that quaternions are normalised: |q1² + q2² + q3² + q4² - 1| below
+   0.1 is normalised here, beyond it is ERR_ILLQUAT (installed-facts.md §4, NOrient's
+   thresholds; the error's name UNCERTAIN). *)
+exception Illegal_quaternion
+
+let orient_of v =
+  let c = nums v in
+  let sum = (c.(0) *. c.(0)) +. (c.(1) *. c.(1)) +. (c.(2) *. c.(2)) +. (c.(3) *. c.(3)) in
+  if not (Float.abs (sum -. 1.) < 0.1) then raise Illegal_quaternion;
+  G.normalize { G.q1 = c.(0); q2 = c.(1); q3 = c.(2); q4 = c.(3) }
 let pose_of v = let c = V.components v in { G.trans = pos_of c.(0); rot = orient_of c.(1) }
 
 let conf_of v =
@@ -159,7 +168,8 @@ let fail ctx what e =
 
 (* ------------------------------------------------------------------ waits *)
 
-let reached w t = Float.is_finite t && W.seconds (W.now w) >= W.seconds t
+(* A time beyond the run's --max-time is never reached: the engine's time limit ends the wait. *)
+let reached w t = Float.is_finite t && t <= W.max_time w +. 1. && W.seconds (W.now w) >= W.seconds t
 
 (* The program pointer waits until a time the planner computes, and asks again at every look:
    a StopMove or StartMove in a trap moves it. *)
@@ -170,7 +180,7 @@ let until ctx ~what time =
     let t = time () in
     if reached w t then true
     else begin
-      if t <> !asked then (W.wake_at w t; asked := t);
+      if t <> !asked then (W.wake_at w (Float.min t (W.max_time w +. 1.)); asked := t);
       false
     end in
   if satisfied () then Returned None
@@ -182,7 +192,7 @@ let standstill st () = P.finished_by st.planner
 
 let check st ~now =
   (* The clock counts microseconds: a time is passed when its microsecond is. *)
-  let passed t = t <= now || (Float.is_finite t && Float.is_finite now && W.seconds t <= W.seconds now) in
+  let passed t = t <= now || (t < 1e12 && now < 1e12 && W.seconds t <= W.seconds now) in
   let w_next = ref infinity in
   let events = ref [] in
   let level1 = P.path_level st.planner = 1 in
@@ -314,7 +324,7 @@ let path_command ctx st command f =
   | Ok () -> st.dirty <- true; emit st (Path_command { time = now; command }); Returned None
   | Error e -> fail ctx command e
 
-let call (ctx : context) st name args =
+let call_unguarded (ctx : context) st name args =
   let w = ctx.world in
   let now = W.now w in
   let settings = P.settings st.planner in
@@ -431,3 +441,6 @@ let call (ctx : context) st name args =
               | _ -> Some (fail ctx name e)))
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | _ -> None
+
+let call ctx st name args =
+  try call_unguarded ctx st name args with Illegal_quaternion -> Some (Failed "ERR_ILLQUAT")
