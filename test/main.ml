@@ -14,5 +14,6 @@ let () =
       Test_campaign.suite;
       Test_memory.suite;
       Test_motion.suite;
+      Test_motion_run.suite;
       Test_controller.suite;
     ]
