@@ -147,6 +147,7 @@ type config = {
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
   world : W.t;                          (* the controller around the program *)
   motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
+  mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -256,7 +257,7 @@ let start ?(limits = default_limits) ?world ?motion (program : Ir.program) ~entr
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; unmarked = false; world; motion;
+          count = 0; booked = 0; unmarked = false; world; motion; move_owners = [];
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         Ok cfg
@@ -354,6 +355,10 @@ let call_primitive cfg (cs : call_state) name =
     | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
     | None -> Primitive.call ctx name cs.primitive_args in
+  (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
+  (match Motion_primitives.take_new_move cfg.motion with
+   | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
+   | None -> ());
   match result with
   | Primitive.Wait wait ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
@@ -738,6 +743,26 @@ let serve_interrupt cfg =
         Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = W.now cfg.world };
                                    Routine_entered r.name ])
 
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised in the routine
+   whose move instruction made the robot's path, when it is in the call chain, and handled from
+   there up the chain; otherwise where the program pointer is (§7.6, steps 1-4). It is raised
+   when the program pointer waits (a move instruction, a waiting instruction), whose statement
+   it is raised at; not at trap level: after the trap (R-7.4-a). *)
+let serve_async_error cfg =
+  if cfg.act.trap_level then None
+  else
+    match Motion_primitives.take_org_error cfg.motion with
+    | None -> None
+    | Some (name, move) ->
+        (match cfg.stack with K_wait _ :: rest -> cfg.stack <- rest | _ -> ());
+        let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true } in
+        let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
+        let rec in_chain a = function None -> false | Some b -> b == a || in_chain a b.caller in
+        (match owner with
+         | Some a when a != cfg.act && in_chain a (Some cfg.act) -> cfg.focus <- F_abandon (Go_on_long_jump (e, a))
+         | _ -> cfg.focus <- F_raise e);
+        Some ("async-error", [])
+
 let time_exhausted cfg rule =
   cfg.focus <- F_done (Resource_exhausted
                          (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world)));
@@ -749,6 +774,9 @@ let time_exhausted cfg rule =
    can ever end the wait: a deadlock. *)
 let wait_step cfg ws rest =
   match serve_interrupt cfg with
+  | Some r -> r
+  | None ->
+  match serve_async_error cfg with
   | Some r -> r
   | None -> (
       let w = cfg.world in
@@ -1169,7 +1197,7 @@ let rule_names = [
   "local-initial-value";
   "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
   "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
-  "wait-time-limit"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
+  "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]

@@ -36,6 +36,13 @@ let event_time = function
 
 type track = { t_id : int; t_label : string; mutable started : bool; mutable ended : bool }
 
+(* An asynchronous error (§7.4, §7.6): raised at the move instruction the program pointer is in,
+   or at the next one (\SyncLastMoveInst); or in the routine of the move the robot executes
+   (\SyncOrgMoveInst, a collision), which the machine finds. *)
+type async_mode = Sync_last | Sync_org
+
+type async = { a_name : string; a_move : int option; a_mode : async_mode }
+
 type state = {
   robot : MM.Robot.t;
   kin : MM.Kinematics.t;
@@ -48,6 +55,11 @@ type state = {
   mutable tool : V.t;                          (* the active tool and work object (CTool, CRobT) *)
   mutable wobj : V.t;
   mutable first_poll : float option;           (* WaitUntil \InPos: polls begin at standstill *)
+  mutable async : async option;                (* an asynchronous error not yet raised *)
+  mutable interrupted : (int * string) option; (* a move the error was raised at: its RETRY waits for it *)
+  mutable last_planned : int option;           (* the last move planned *)
+  mutable new_move : int option;               (* for the machine: the move just planned *)
+  mutable collisions : float list;             (* the stimulus's collisions to come *)
 }
 
 let dummy = V.Bool false
@@ -55,7 +67,8 @@ let dummy = V.Bool false
 let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
-    dirty = false; tool = dummy; wobj = dummy; first_poll = None }
+    dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
+    last_planned = None; new_move = None; collisions = [] }
 
 let planner st = st.planner
 let robot st = st.robot
@@ -173,18 +186,29 @@ let reached w t = Float.is_finite t && t <= W.max_time w +. 1. && W.seconds (W.n
 
 (* The program pointer waits until a time the planner computes, and asks again at every look:
    a StopMove or StartMove in a trap moves it. *)
-let until ctx ~what time =
+let until ?move ctx ~what time =
   let w = ctx.world in
   let asked = ref nan in
+  (* A move instruction the program pointer waits in takes a \SyncLastMoveInst error (§7.4). *)
+  let async_here () = match move with
+    | Some (st, _) -> (match st.async with Some { a_mode = Sync_last; _ } -> true | _ -> false)
+    | None -> false in
   let satisfied () =
     let t = time () in
-    if reached w t then true
+    if async_here () then true
+    else if reached w t then true
     else begin
       if t <> !asked then (W.wake_at w (Float.min t (W.max_time w +. 1.)); asked := t);
       false
     end in
-  if satisfied () then Returned None
-  else Wait { W.what; satisfied; deadline = None; finish = (fun ~timed_out:_ -> None); poll = None }
+  let finish ~timed_out:_ =
+    match move with
+    | Some (st, (id, key)) when async_here () ->
+        let a = Option.get st.async in
+        st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
+    | _ -> None in
+  if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+  else Wait { W.what; satisfied; deadline = None; finish; poll = None }
 
 let standstill st () = P.finished_by st.planner
 
@@ -230,10 +254,21 @@ let move ctx st name args =
         | "movec" -> (match get "CirPoint", get "ToPoint" with
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
-      match motion with
-      | None -> Failed "ERR_ARGVALERR"
-      | Some motion -> (
-          let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
+      let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
+      let key = String.lowercase_ascii name ^ " " ^ target_label in
+      let interrupted = st.interrupted in
+      st.interrupted <- None;
+      match motion, st.async, interrupted with
+      | None, _, _ -> Failed "ERR_ARGVALERR"
+      | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
+          (* §7.4: the error waits for the next move instruction, and is raised there. *)
+          st.async <- None; Failed a.a_name
+      | Some _, _, Some (id, k) when k = key && not (List.for_all (fun tr -> tr.t_id <> id) st.tracks) ->
+          (* RETRY of the move the asynchronous error was raised at: its path is still there
+             (StartMove goes on with it); the move is not planned twice. *)
+          until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+            (fun () -> P.ready_time st.planner id)
+      | Some motion, _, _ -> (
           let wobj = get "WObj" in
           let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ?z:(num ctx args "Z")
               ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc:(present ctx args "Conc")
@@ -270,7 +305,8 @@ let move ctx st name args =
                        | _ -> ())
                    | _ -> ())
                | _ -> ());
-              until ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+              st.last_planned <- Some id; st.new_move <- Some id;
+              until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
 
@@ -305,11 +341,26 @@ let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
 ]
 
 let modelled name = List.exists (same name) names
+
+(* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
+   one planned. *)
+let motion_pointer st ~now =
+  ignore now;
+  match List.find_opt (fun tr -> not tr.ended) st.tracks with
+  | Some tr -> Some tr.t_id
+  | None -> st.last_planned
+
+let take_org_error st =
+  match st.async with
+  | Some { a_mode = Sync_org; a_name; a_move } -> st.async <- None; Some (a_name, a_move)
+  | _ -> None
+
+let take_new_move st = let l = st.new_move in st.new_move <- None; l
 
 let result_pose ctx what = function
   | Ok v -> Returned (Some v)
@@ -364,6 +415,16 @@ let call_unguarded (ctx : context) st name args =
   | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; Ok ()))
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
+  | "procerrrecovery" ->
+      (* §7.4: the path stops; the error ERR_PATH_STOP goes to the move instruction the program
+         pointer is in or comes to next (\SyncLastMoveInst), or to the routine of the move
+         that made the robot's path (\SyncOrgMoveInst, also without a switch: R-7.4-a). *)
+      P.stop st.planner ~at:now;
+      emit st (Path_command { time = now; command = "ProcerrRecovery" });
+      st.dirty <- true;
+      let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
+      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st ~now; a_mode = mode };
+      Some (Returned None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
   | "velset" -> (
       match num ctx args "Override", num ctx args "Max" with

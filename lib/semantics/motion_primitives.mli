@@ -51,6 +51,15 @@ val drain : state -> Rapid_controller.World.t -> event list
 val finish : state -> event list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
+val take_new_move : state -> int option
+(** The move the last primitive planned, once: the machine records which routine activation
+    executed it, to raise its asynchronous errors there (§7.4, §7.6). *)
+
+val take_org_error : state -> (string * int option) option
+(** An asynchronous error to raise now in the routine of a move (ProcerrRecovery
+    \SyncOrgMoveInst, a collision): its ERR_ name and the move the robot executed, once. Errors
+    of \SyncLastMoveInst are raised by the move instructions themselves. *)
+
 val take_first_poll : state -> float option
 (** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot moves
     (once). *)
