@@ -123,3 +123,19 @@ let suite =
       Alcotest.test_case "the program pointer waits at stop points" `Quick program_pointer_at_stop_points;
       Alcotest.test_case "realworld: the deburring cell runs to its end" `Quick deburring_runs;
       Alcotest.test_case "realworld: the palletiser palletises" `Quick palletiser_runs ] )
+
+(* The stimulus's collisions (doc/controller.md). *)
+let collision_lines () =
+  let parse text = Rapid_controller.Io_config.parse ~file:"c.io" text in
+  (match parse "signal di1 di\nat 1 di1 1\nat 2.5 collision\nat 3 collision\n" with
+   | Ok c -> Alcotest.(check (list (float 0.))) "collisions" [ 2.5; 3. ] c.collisions
+   | Error m -> Alcotest.fail m);
+  (match parse "at 2 collision\nat 1 collision\n" with
+   | Error m -> Alcotest.(check string) "order" "c.io:2:4: io error: the events are not in order of time" m
+   | Ok _ -> Alcotest.fail "accepted collisions out of order");
+  match parse "at 2 collision\n" |> Result.map (fun _ -> ()), parse "at 2\n" with
+  | Ok (), Error m -> Alcotest.(check string) "form" "c.io:1:1: io error: expected: at TIME NAME VALUE, or at TIME collision" m
+  | Error m, _ -> Alcotest.fail m
+  | Ok (), Ok _ -> Alcotest.fail "accepted a bad at line"
+
+let suite = (fst suite, snd suite @ [ Alcotest.test_case "collisions in the stimulus" `Quick collision_lines ])

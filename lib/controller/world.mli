@@ -51,6 +51,9 @@ val now : t -> float
 val max_time : t -> float
 val epoch : t -> float
 
+val collisions : t -> float list
+(** The times of the stimulus's [at TIME collision] lines, for the motion model. *)
+
 val statement : t -> unit
 (** The time of one statement passes (the events due meanwhile happen). *)
 

@@ -59,7 +59,8 @@ type state = {
   mutable interrupted : (int * string) option; (* a move the error was raised at: its RETRY waits for it *)
   mutable last_planned : int option;           (* the last move planned *)
   mutable new_move : int option;               (* for the machine: the move just planned *)
-  mutable collisions : float list;             (* the stimulus's collisions to come *)
+  mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
+  mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
 }
 
 let dummy = V.Bool false
@@ -68,7 +69,7 @@ let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
-    last_planned = None; new_move = None; collisions = [] }
+    last_planned = None; new_move = None; collisions = None; waiting = None }
 
 let planner st = st.planner
 let robot st = st.robot
@@ -207,8 +208,14 @@ let until ?move ctx ~what time =
         let a = Option.get st.async in
         st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
     | _ -> None in
+  let finish ~timed_out =
+    (match move with Some (st, _) -> st.waiting <- None | None -> ());
+    finish ~timed_out in
   if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
-  else Wait { W.what; satisfied; deadline = None; finish; poll = None }
+  else begin
+    (match move with Some (st, m) -> st.waiting <- Some m | None -> ());
+    Wait { W.what; satisfied; deadline = None; finish; poll = None }
+  end
 
 let standstill st () = P.finished_by st.planner
 
@@ -256,14 +263,18 @@ let move ctx st name args =
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
       let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
-      let interrupted = st.interrupted in
-      st.interrupted <- None;
+      (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
+         the error handler (StorePath ... RestoPath), while its path is there. *)
+      let interrupted = match st.interrupted with
+        | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) st.tracks -> st.interrupted <- None; None
+        | Some (_, k) as i when k = key -> st.interrupted <- None; i
+        | _ -> None in
       match motion, st.async, interrupted with
       | None, _, _ -> Failed "ERR_ARGVALERR"
       | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
           (* §7.4: the error waits for the next move instruction, and is raised there. *)
           st.async <- None; Failed a.a_name
-      | Some _, _, Some (id, k) when k = key && not (List.for_all (fun tr -> tr.t_id <> id) st.tracks) ->
+      | Some _, _, Some (id, _) ->
           (* RETRY of the move the asynchronous error was raised at: its path is still there
              (StartMove goes on with it); the move is not planned twice. *)
           until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
@@ -321,10 +332,40 @@ let place_outputs st w =
         | Some _ -> true
         | None -> false) st.outputs
 
+(* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
+   one planned. *)
+let motion_pointer st ~now =
+  ignore now;
+  match List.find_opt (fun tr -> not tr.ended) st.tracks with
+  | Some tr -> Some tr.t_id
+  | None -> st.last_planned
+
+(* §7.6: a collision of the stimulus while the robot moves stops it there and raises ERR_COLL_STOP
+   in the routine of the move it was on (the Collision Error Handler is taken as configured,
+   R-7.6-a); standing still, nothing collides. *)
+let collide st w =
+  let pending = match st.collisions with
+    | Some c -> c
+    | None -> let c = W.collisions w in List.iter (W.wake_at w) c; c in
+  let now = W.now w in
+  let due, later = List.partition (fun t -> W.seconds t <= W.seconds now) pending in
+  st.collisions <- Some later;
+  List.iter (fun t ->
+      let moving = (not (P.stopped st.planner)) && P.finished_by st.planner > t +. 1e-9 in
+      if moving then begin
+        P.stop st.planner ~at:t;
+        st.dirty <- true;
+        emit st (Path_command { time = t; command = "collision" });
+        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st ~now:t; a_mode = Sync_org }
+      end
+      else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
+    due
+
 let drain st w =
   let now = W.now w in
   if st.outputs <> [] then place_outputs st w;
   let seen = if st.tracks <> [] && (st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12)) then (st.dirty <- false; check st ~now) else [] in
+  if st.collisions <> Some [] then collide st w;
   let fresh = List.rev st.fresh in
   st.fresh <- [];
   fresh @ seen
@@ -347,17 +388,11 @@ let names = [
 
 let modelled name = List.exists (same name) names
 
-(* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
-   one planned. *)
-let motion_pointer st ~now =
-  ignore now;
-  match List.find_opt (fun tr -> not tr.ended) st.tracks with
-  | Some tr -> Some tr.t_id
-  | None -> st.last_planned
-
 let take_org_error st =
   match st.async with
-  | Some { a_mode = Sync_org; a_name; a_move } -> st.async <- None; Some (a_name, a_move)
+  | Some { a_mode = Sync_org; a_name; a_move } ->
+      (* Raised at the move instruction the program pointer waits in: its RETRY waits again. *)
+      st.async <- None; st.interrupted <- st.waiting; st.waiting <- None; Some (a_name, a_move)
   | _ -> None
 
 let take_new_move st = let l = st.new_move in st.new_move <- None; l
