@@ -343,6 +343,8 @@ let argument_label cfg (cs : call_state) name =
         | _ -> ()) cs.callee.parameters;
   !found
 
+let exec_ref : (config -> Ir.stmt -> string * event list) ref = ref (fun _ _ -> ("", []))
+
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
 
 let call_primitive cfg (cs : call_state) name =
@@ -396,6 +398,14 @@ let call_primitive cfg (cs : call_state) name =
           | Some arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
               ignore rule; ("call-by-var", List.rev !events)))
+  | Primitive.Retry_requested -> (
+      (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
+         there is nothing to retry: StartMove alone (R-7.6-b). *)
+      match cfg.act.handling with
+      | In_handler _ ->
+          let rule, more = !exec_ref cfg { Ir.s = Ir.Retry; sat = cs.call.call_at } in
+          (rule, List.rev !events @ more)
+      | _ -> cfg.focus <- F_next; ("call-primitive", List.rev !events))
   | Primitive.Not_modelled ->
       cfg.focus <- F_done (Unsupported
                              (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name));
@@ -630,6 +640,8 @@ let exec cfg (s : Ir.stmt) =
   | For f -> mark_here (); push cfg (K_for_from f); cfg.focus <- F_expr f.from_; ("for", [])
   | Test (e, cases, default) ->
       mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; ("test", [])
+
+let () = exec_ref := exec
 
 let frame_kind = function
   | K_seq _ -> "seq" | K_stmt _ -> "stmt" | K_compact_if _ -> "compact-if" | K_assign_value _ -> "assign-value"

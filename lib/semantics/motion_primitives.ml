@@ -382,7 +382,7 @@ let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
 ]
 
@@ -447,6 +447,11 @@ let call_unguarded (ctx : context) st name args =
   | "stopmove" -> Some (path_command ctx st "StopMove" (fun at -> P.stop st.planner ~at; Ok ()))
   | "startmove" -> Some (path_command ctx st "StartMove" (fun at -> P.start st.planner ~at; Ok ()))
   | "stopmovereset" -> Some (Returned None)
+  | "startmoveretry" ->
+      (* StartMove and RETRY in one (ABB: for error handlers; outside one, RETRY's own rule). *)
+      P.start st.planner ~at:now; st.dirty <- true;
+      emit st (Path_command { time = now; command = "StartMove" });
+      Some Retry_requested
   | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; Ok ()))
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))

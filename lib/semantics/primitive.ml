@@ -24,6 +24,7 @@ type outcome =
   | Stop_requested
   | Not_modelled
   | Wait of Rapid_controller.World.wait
+  | Retry_requested
 
 (* The shape of a value, for StrToVal, whose target's type is only known by its value. *)
 let rec shape_of_value : V.t -> V.shape = function

@@ -34,6 +34,7 @@ type outcome =
   | Stop_requested                                   (** Stop: the task stops *)
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
+  | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
 
 val call : context -> string -> argument array -> outcome
 
