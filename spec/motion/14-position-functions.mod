@@ -6,7 +6,7 @@ MODULE position_functions
 ! @output Offs [300,250,400]
 ! @output RelTool [300,250,200]
 ! @output axis 1 40
-! @output CalcRobT [300,250,300]
+! @output CalcRobT 300.0 250.0 300.0
 ! @output ERR_ROBLIMIT TRUE
   CONST robtarget p2 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   PROC main()
@@ -20,7 +20,7 @@ MODULE position_functions
     j := CalcJointT(p2, tool0);
     TPWrite "axis 1 " \Num:=Round(j.robax.rax_1);
     r := CalcRobT(j, tool0);
-    TPWrite "CalcRobT " \Pos:=r.trans;
+    TPWrite "CalcRobT " + NumToStr(r.trans.x, 1) + " " + NumToStr(r.trans.y, 1) + " " + NumToStr(r.trans.z, 1);
     j := CalcJointT(Offs(p2, 2000, 0, 0), tool0 \ErrorNumber:=err);
     TPWrite "ERR_ROBLIMIT " \Bool:=(err = ERR_ROBLIMIT);
   ENDPROC
