@@ -377,12 +377,83 @@ let finish st =
 
 let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 
+(* SearchL (ABB, RAPID Instructions): a linear move to ToPoint, a stop point, during which the
+   signal is watched; at the first hit (a positive flank by default, \NegFlank, \Flanks, or a
+   level: \HighLevel, \LowLevel) SearchPoint takes the robot's position; with \Stop, \PStop or
+   \SStop the robot stands there and the rest of the path is dropped, otherwise it goes on to
+   ToPoint. No hit by the end of the move: ERR_WHLSEARCH. *)
+let search ctx st args =
+  let w = ctx.world in
+  let get n = value ctx args n in
+  let signal = match arg ctx args "Signal" with
+    | Location (box, i, _) -> (
+        match box.(i) with
+        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
+        | _ -> None)
+    | _ -> None in
+  match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
+  | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
+  | Some id, Some target, Some speed, Some tool, Location (box, i, _) -> (
+      let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
+      let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
+      let hit ~old ~now =
+        if present ctx args "Flanks" then old <> now
+        else if present ctx args "NegFlank" then old <> 0. && now = 0.
+        else if present ctx args "HighLevel" then now <> 0.
+        else if present ctx args "LowLevel" then now = 0.
+        else old = 0. && now <> 0. in
+      let wobj = get "WObj" in
+      let tool_d = tool_of tool and wobj_d = match wobj with Some o -> wobj_of o | None -> D.wobj0 in
+      let target_label = label ctx "ToPoint" in
+      let fine = Option.get (D.find D.zonedata "fine") in
+      let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
+          ~label:target_label (speed_of speed) fine (P.Linear (robtarget_of target)) in
+      let now = W.now w in
+      match P.plan st.planner ~now m with
+      | Error e -> fail ctx "SearchL" e
+      | Ok { id = move; ready_time; _ } ->
+          st.tool <- V.copy tool;
+          st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+          let joints = P.target_joints st.planner move in
+          emit st (Segment_planned { time = now; id = move; instruction = "SearchL"; label = target_label;
+                                     zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
+                                     joints; ready_time; start_time = now; end_time = ready_time });
+          st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
+          st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
+          let previous = ref (W.read w id) and found = ref false and asked = ref nan in
+          let record () =
+            found := true;
+            let t = W.now w in
+            (match P.joints_at st.planner t with
+             | Ok joints -> (
+                 match MM.Frames.c_rob_t st.kin ~joints tool_d wobj_d with
+                 | Ok r -> box.(i) <- robtarget_value r
+                 | Error _ -> ())
+             | Error _ -> ());
+            if stops then (P.clear st.planner ~at:t; st.dirty <- true;
+                           emit st (Path_command { time = t; command = "SearchL stop" })) in
+          if level && hit ~old:!previous ~now:!previous then record ();
+          let satisfied () =
+            let v = W.read w id in
+            if (not !found) && v <> !previous && hit ~old:!previous ~now:v then record ();
+            previous := v;
+            let r = P.ready_time st.planner move in
+            if (!found && stops) || reached w r then true
+            else begin
+              if r <> !asked then (W.wake_at w (Float.min r (W.max_time w +. 1.)); asked := r);
+              false
+            end in
+          let finish ~timed_out:_ = if !found then None else Some "ERR_WHLSEARCH" in
+          if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+          else Wait { W.what = "the robot (SearchL " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
+  | _ -> Failed "ERR_ARGVALERR"
+
 (* ------------------------------------------------------------------ the routines *)
 
 let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
 ]
 
@@ -419,6 +490,7 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
+  | "searchl" -> Some (search ctx st args)
   | "waittime" when present ctx args "InPos" -> (
       match num ctx args "Time" with
       | Some t when t >= 0. && Float.is_finite t ->
