@@ -199,6 +199,7 @@ let activation ~routine ~slots ~present ~kinds ~caller ~return_to ~caller_mark =
 
 let start ?(limits = default_limits) ?world ?motion (program : Ir.program) ~entry =
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
+  let program = Motion_primitives.robot_data motion program in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   match routine_index program entry with
   | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)

@@ -72,6 +72,17 @@ let create ?(robot = MM.Robot.irb120) () =
     last_planned = None; new_move = None; collisions = None; waiting = None }
 
 let planner st = st.planner
+
+(* vmax: v_tcp is the robot's maximum TCP speed (ABB, speeddata; installed-facts.md §3), so the
+   installed constant takes the value of the run's robot. *)
+let robot_data st (program : Ir.program) =
+  let vmax = D.vmax st.robot in
+  let globals = Array.map (fun (g : Ir.global) ->
+      let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+      if same g.g_name "vmax" && same g.g_module "Installed_base" then
+        { g with g_init = Init_default (V.Record (Array.map V.num [| vmax.v_tcp; vmax.v_ori; vmax.v_leax; vmax.v_reax |])) }
+      else g) program.globals in
+  { program with globals }
 let robot st = st.robot
 
 let emit st e = st.fresh <- e :: st.fresh

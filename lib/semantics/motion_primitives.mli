@@ -9,7 +9,7 @@ type event =
   | Segment_planned of {
       time : float;                      (** when the move instruction ran *)
       id : int;
-      instruction : string;              (** MoveL, MoveJ, MoveC, MoveAbsJ, MoveLDO, MoveJDO *)
+      instruction : string;              (** MoveL, MoveJ, MoveC, MoveAbsJ, MoveLDO, MoveJDO, SearchL *)
       label : string;                    (** the target's data object, or [*] *)
       zone : string;                     (** [fine], or the zonedata's object, or [*] *)
       target : Rapid_motion_model.Geom.pose;  (** the programmed TCP pose, base frame *)
@@ -22,7 +22,8 @@ type event =
   | Segment_ended of { time : float; id : int; label : string }
   | Segment_dropped of { time : float; id : int; label : string }  (** ClearPath *)
   | Path_command of { time : float; command : string }
-      (** StopMove, StartMove, ClearPath, StorePath, RestoPath *)
+      (** StopMove, StartMove, ClearPath, StorePath, RestoPath, ProcerrRecovery, collision,
+          SearchL stop *)
   | Motion_warning of { time : float; text : string }  (** corner path failure *)
 
 val event_to_string : event -> string
@@ -35,6 +36,9 @@ type state
 
 val create : ?robot:Rapid_motion_model.Robot.t -> unit -> state
 (** The robot (default the IRB 120) standing at axis angles 0 from time 0. *)
+
+val robot_data : state -> Ir.program -> Ir.program
+(** The installed data that depend on the robot: vmax's v_tcp is its maximum TCP speed. *)
 
 val planner : state -> Rapid_motion_model.Planner.t
 val robot : state -> Rapid_motion_model.Robot.t
