@@ -483,11 +483,19 @@ let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
 let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n))
 
 (* §7.1: the error handler of the current routine takes control. *)
+(* §7.2: a move instruction whose wait an error or a long jump leaves is cancelled, and with it
+   the rest of its path (doc/motion.md, M-abandon). *)
+let waits_left cfg =
+  List.iter (function
+      | K_wait ws -> Motion_primitives.wait_abandoned cfg.motion ws.wait ~now:(W.now cfg.world)
+      | _ -> ()) cfg.stack
+
 let handle cfg (e : err) =
   let act = cfg.act in
   match act.routine.error with
   | None -> assert false
   | Some h ->
+      waits_left cfg;
       act.handling <- In_handler (e, cfg.mark);
       set_errno cfg e.number;
       cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
@@ -1095,6 +1103,7 @@ let expr_step cfg (e : Ir.expr) =
    handler runs first (§7.2, §1.2). *)
 let abandon_step cfg after =
   let act = cfg.act in
+  waits_left cfg;
   match act.routine.undo, act.handling with
   | Some undo, (Body | In_handler _) ->
       act.handling <- In_undo;

@@ -61,6 +61,7 @@ type state = {
   mutable new_move : int option;               (* for the machine: the move just planned *)
   mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
   mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
+  mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
 }
 
 let dummy = V.Bool false
@@ -69,7 +70,7 @@ let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
-    last_planned = None; new_move = None; collisions = None; waiting = None }
+    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [] }
 
 let planner st = st.planner
 
@@ -219,13 +220,21 @@ let until ?move ctx ~what time =
         let a = Option.get st.async in
         st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
     | _ -> None in
+  let self = ref None in
   let finish ~timed_out =
-    (match move with Some (st, _) -> st.waiting <- None | None -> ());
+    (match move with
+     | Some (st, _) ->
+         st.waiting <- None;
+         st.move_waits <- List.filter (fun w -> Some w != !self) st.move_waits
+     | None -> ());
     finish ~timed_out in
   if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
   else begin
-    (match move with Some (st, m) -> st.waiting <- Some m | None -> ());
-    Wait { W.what; satisfied; deadline = None; finish; poll = None }
+    let wait = { W.what; satisfied; deadline = None; finish; poll = None } in
+    (match move with
+     | Some (st, m) -> st.waiting <- Some m; self := Some wait; st.move_waits <- wait :: st.move_waits
+     | None -> ());
+    Wait wait
   end
 
 let standstill st () = P.finished_by st.planner
@@ -385,6 +394,17 @@ let finish st =
   let fresh = List.rev st.fresh in
   st.fresh <- [];
   fresh @ (if st.tracks = [] then [] else check st ~now:infinity)
+
+(* §7.2: "an active Movex instruction clears part of its path": the move instruction whose wait
+   is left by an error or a long jump is cancelled, and the robot stands where it is (ClearPath). *)
+let wait_abandoned st w ~now =
+  if List.exists (fun m -> m == w) st.move_waits then begin
+    st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
+    st.waiting <- None;
+    P.clear st.planner ~at:now;
+    st.dirty <- true;
+    emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
+  end
 
 let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 

@@ -64,6 +64,10 @@ val take_org_error : state -> (string * int option) option
     \SyncOrgMoveInst, a collision): its ERR_ name and the move the robot executed, once. Errors
     of \SyncLastMoveInst are raised by the move instructions themselves. *)
 
+val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
+(** A wait an error or a long jump leaves (§7.2): if it is a move instruction's, the move is
+    cancelled and the rest of the path dropped (ClearPath); any other wait is no concern. *)
+
 val take_first_poll : state -> float option
 (** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot moves
     (once). *)
