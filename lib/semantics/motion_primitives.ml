@@ -446,9 +446,10 @@ let search ctx st args =
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
           let joints = P.target_joints st.planner move in
+          let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
           emit st (Segment_planned { time = now; id = move; instruction = "SearchL"; label = target_label;
                                      zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
-                                     joints; ready_time; start_time = now; end_time = ready_time });
+                                     joints; ready_time; start_time; end_time });
           st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
           st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
           let previous = ref (W.read w id) and found = ref false and asked = ref nan in
