@@ -354,8 +354,7 @@ let place_outputs st w =
 
 (* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
    one planned. *)
-let motion_pointer st ~now =
-  ignore now;
+let motion_pointer st =
   match List.find_opt (fun tr -> not tr.ended) st.tracks with
   | Some tr -> Some tr.t_id
   | None -> st.last_planned
@@ -376,7 +375,7 @@ let collide st w =
         P.stop st.planner ~at:t;
         st.dirty <- true;
         emit st (Path_command { time = t; command = "collision" });
-        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st ~now:t; a_mode = Sync_org }
+        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org }
       end
       else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
     due
@@ -567,7 +566,7 @@ let call_unguarded (ctx : context) st name args =
       emit st (Path_command { time = now; command = "ProcerrRecovery" });
       st.dirty <- true;
       let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
-      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st ~now; a_mode = mode };
+      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode };
       Some (Returned None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
   | "velset" -> (
