@@ -139,3 +139,22 @@ let collision_lines () =
   | Ok (), Ok _ -> Alcotest.fail "accepted a bad at line"
 
 let suite = (fst suite, snd suite @ [ Alcotest.test_case "collisions in the stimulus" `Quick collision_lines ])
+
+(* The waits of move instructions are forgotten when they end: a run of many moves keeps none. *)
+let waits_forgotten () =
+  let text = {|MODULE w
+  CONST robtarget p1 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p2 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    FOR i FROM 1 TO 50 DO
+      MoveL p1, v1000, fine, tool0;
+      MoveL p2, v1000, fine, tool0;
+    ENDFOR
+  ENDPROC
+ENDMODULE
+|} in
+  let r = run [ write_temp text ] in
+  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check int) "move waits in progress" 0 (MP.move_waits_in_progress (M.motion r.cfg))
+
+let suite = (fst suite, snd suite @ [ Alcotest.test_case "move waits are forgotten when they end" `Quick waits_forgotten ])

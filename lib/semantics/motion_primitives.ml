@@ -225,7 +225,7 @@ let until ?move ctx ~what time =
     (match move with
      | Some (st, _) ->
          st.waiting <- None;
-         st.move_waits <- List.filter (fun w -> Some w != !self) st.move_waits
+         (match !self with Some me -> st.move_waits <- List.filter (fun w -> w != me) st.move_waits | None -> ())
      | None -> ());
     finish ~timed_out in
   if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
@@ -404,6 +404,8 @@ let wait_abandoned st w ~now =
     st.dirty <- true;
     emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
   end
+
+let move_waits_in_progress st = List.length st.move_waits
 
 let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 

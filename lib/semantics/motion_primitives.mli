@@ -68,6 +68,10 @@ val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
 (** A wait an error or a long jump leaves (§7.2): if it is a move instruction's, the move is
     cancelled and the rest of the path dropped (ClearPath); any other wait is no concern. *)
 
+val move_waits_in_progress : state -> int
+(** How many move instructions the program pointer waits in (a trap's move above the main one's
+    makes two); 0 when the task has ended. *)
+
 val take_first_poll : state -> float option
 (** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot moves
     (once). *)
