@@ -1,9 +1,12 @@
 # Two commands do all set-up on a fresh Debian bookworm machine:
-#   make run    installs what is missing, builds, and parses and prints the bundled example
+#   make run    installs what is missing, builds, and runs the bundled example cell: its output,
+#               and its path, timeline and samples in $(RUN_DIR)
 #   make test   installs what is missing, builds, and runs every test
 .PHONY: all deps build run test bench messages clean
 
 EXAMPLE ?= examples/weldcell.mod
+EXAMPLE_IO ?= examples/weldcell.io
+RUN_DIR ?= _build/run
 
 all: build
 
@@ -14,7 +17,10 @@ build: deps
 	dune build
 
 run: build
-	./_build/install/default/bin/rapid-sem parse --print $(EXAMPLE)
+	@mkdir -p $(RUN_DIR)
+	./_build/install/default/bin/rapid-sem motion --io $(EXAMPLE_IO) $(EXAMPLE) \
+	  --svg $(RUN_DIR)/path.svg --timeline $(RUN_DIR)/timeline.svg --csv $(RUN_DIR)/path.csv
+	@echo "The robot's path, the timeline and the samples: $(RUN_DIR)/path.svg, $(RUN_DIR)/timeline.svg, $(RUN_DIR)/path.csv"
 
 test: build
 	scripts/run-tests.sh

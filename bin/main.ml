@@ -164,11 +164,11 @@ let check_cmd =
                    both on standard output: every diagnostic with its file, region, class, \
                    sections, message and hint (doc/user-guide.md).")
   in
-  let run files allow_unknown strict format io =
+  let run files allow_unknown strict format io robot =
     guard @@ fun () ->
-    match read_io io with
-    | Error m -> prerr_endline m; exit_static_error
-    | Ok io ->
+    match read_io io, Motion_cmd.load_robot robot with
+    | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
+    | Ok io, Ok _ ->
     let options = { Parse.default_options with strict } in
     let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
     let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
@@ -213,7 +213,7 @@ let check_cmd =
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format $ io_arg)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format $ io_arg $ Motion_cmd.robot_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -269,6 +269,7 @@ let event_json (e : M.event) : Yojson.Safe.t =
       `Assoc [ ("event", `String "trap-left"); ("time", time_json time); ("trap", `String trap) ]
   | Stubbed { routine; at } ->
       `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
+  | Motion m -> Motion_json.event m
 
 let schema = "rapid-sem/1"
 
@@ -342,11 +343,11 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
-let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+let start_machine ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
-  match read_io controller.io with
-  | Error m -> prerr_endline m; exit_static_error
-  | Ok io ->
+  match read_io controller.io, Motion_cmd.load_robot robot with
+  | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
+  | Ok io, Ok robot ->
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
@@ -358,7 +359,8 @@ let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_l
       let retry_limit, max_memory = retry_limit in
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled
+      let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
               loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
@@ -366,14 +368,20 @@ let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_l
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller =
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+    (* --samples: TCP samples as the clock passes them (JSON only). *)
+    let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
+    let print_samples l = List.iter (fun j -> print_line (Yojson.Safe.to_string j)) l in
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
         report_stubbed events;
+        Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
+                                               ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
         List.iter (fun (e : M.event) ->
             if json then print_line (Yojson.Safe.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
@@ -381,6 +389,7 @@ let run_cmd =
       end
     in
     loop ();
+    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
     if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
@@ -393,7 +402,8 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
    characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)
@@ -436,9 +446,11 @@ let trace_cmd =
   let from_ = Arg.(value & opt (count ~what:"--from") 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt (count ~what:"--to") max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller =
+  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller robot samples =
     guard @@ fun () ->
-    start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    let sampler = match samples with Some hz when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
@@ -467,18 +479,23 @@ let trace_cmd =
                   | M.Trap_entered { time; number; trap } ->
                       print_line (Printf.sprintf "       ~ %.6f s: trap %s serves interrupt %d" time trap number)
                   | M.Trap_left { time; trap } -> print_line (Printf.sprintf "       ~ %.6f s: trap %s left" time trap)
+                  | M.Motion m -> print_line (Printf.sprintf "       ~ %s" (Rapid_semantics.Motion_primitives.event_to_string m))
                   | _ -> ()) events
           | `Jsonl ->
               print_line (Yojson.Safe.to_string (`Assoc [
                   ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
                   ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", text (region_text region)) ]);
                   ("stack", `List (List.map (fun s -> `String s) stack));
-                  ("events", `List (List.map event_json events)) ]))
+                  ("events", `List (List.map event_json events
+                                    @ (match sampler with
+                                        | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
+                                        | None -> []))) ]))
         end;
         loop ()
       end
     in
     loop ();
+    Option.iter (fun s -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) sampler;
     if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
@@ -492,7 +509,8 @@ let trace_cmd =
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
@@ -531,6 +549,9 @@ let () =
   in
   let argv = Array.of_list (join (Array.to_list Sys.argv)) in
   let status = Cmd.eval' ~argv (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
+                                                 Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
+                                                     guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                                   ~finish ~common_run_args ~controller_args;
                                                  Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]) in
   (* A command line that cannot be read (an unknown option, a negative limit) is refused like a
      static error, with cmdliner's message saying what is wrong. *)

@@ -44,11 +44,11 @@ let errors_stay_per_use () =
   Alcotest.(check int) "one error per routine" 2 (List.length (Rapid_typing.Check.errors result));
   Alcotest.(check (option string)) "no summary" None (Rapid_typing.Check.unknown_summary result)
 
-(* A stubbed function gives its result type's initial value, whatever the type: a record
-   (robtarget of CRobT) is all zeros, and the run goes on. *)
+(* A stubbed function gives its result type's initial value (OpMode: a symnum, 0), and the run
+   goes on. *)
 let stubbed_record_result () =
   let m = parse "r.mod"
-      "MODULE r\n  VAR robtarget here;\n  PROC main()\n    here := CRobT(\\Tool:=tool0);\n    TPWrite \"x=\" \\Num:=here.trans.x + here.rot.q1;\n  ENDPROC\nENDMODULE\n" in
+      "MODULE r\n  VAR symnum m;\n  PROC main()\n    m := OpMode();\n    TPWrite \"m=\" \\Num:=m;\n  ENDPROC\nENDMODULE\n" in
   match Rapid_semantics.Session.load_modules [ m ] with
   | Error _ -> Alcotest.fail "does not load"
   | Ok loaded -> (
@@ -64,8 +64,8 @@ let stubbed_record_result () =
                 | _ -> ()) (snd (M.step cfg))
           done;
           Alcotest.(check bool) "ended" true (M.outcome cfg = Ended);
-          Alcotest.(check (list string)) "stubbed" [ "CRobT" ] !stubbed;
-          Alcotest.(check (list string)) "output" [ "x=0" ] !out)
+          Alcotest.(check (list string)) "stubbed" [ "OpMode" ] !stubbed;
+          Alcotest.(check (list string)) "output" [ "m=0" ] !out)
 
 let suite =
   ( "installed",

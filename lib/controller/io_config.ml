@@ -2,9 +2,9 @@ type signal_type = DI | DO | AI | AO | GI | GO
 
 type signal = { name : string; kind : signal_type; initial : float }
 type stimulus = { time : float; signal : string; value : float }
-type t = { signals : signal list; stimuli : stimulus list }
+type t = { signals : signal list; stimuli : stimulus list; collisions : float list }
 
-let empty = { signals = []; stimuli = [] }
+let empty = { signals = []; stimuli = []; collisions = [] }
 
 let type_name = function
   | DI -> "signaldi" | DO -> "signaldo" | AI -> "signalai" | AO -> "signalao"
@@ -63,7 +63,7 @@ let check_value line col kind v =
   | _ -> ()
 
 let parse_stimulus lines =
-  let signals = ref [] and stimuli = ref [] in
+  let signals = ref [] and stimuli = ref [] and collisions = ref [] and last_time = ref 0. in
   let by_name = Hashtbl.create 16 in
   List.iteri (fun i line ->
       let ln = i + 1 in
@@ -85,6 +85,13 @@ let parse_stimulus lines =
           | _ -> raise (Bad (ln, 1, "expected: signal NAME TYPE [INITIAL]")))
       | ("at", _) :: rest -> (
           match rest with
+          | [ (t, tc); ("collision", _) ] ->
+              (* A collision of the robot (doc/motion.md, §7.6). *)
+              let time = number ln tc t in
+              if time < 0. then raise (Bad (ln, tc, "a time is not negative"));
+              if time < !last_time then raise (Bad (ln, tc, "the events are not in order of time"));
+              last_time := time;
+              collisions := time :: !collisions
           | [ (t, tc); (name, nc); (v, vc) ] ->
               let time = number ln tc t in
               if time < 0. then raise (Bad (ln, tc, "a time is not negative"));
@@ -98,11 +105,13 @@ let parse_stimulus lines =
               (match !stimuli with
                | last :: _ when last.time > time -> raise (Bad (ln, tc, "the events are not in order of time"))
                | _ -> ());
+              if time < !last_time then raise (Bad (ln, tc, "the events are not in order of time"));
+              last_time := time;
               stimuli := { time; signal = s.name; value } :: !stimuli
-          | _ -> raise (Bad (ln, 1, "expected: at TIME NAME VALUE")))
+          | _ -> raise (Bad (ln, 1, "expected: at TIME NAME VALUE, or at TIME collision")))
       | (w, c) :: _ -> raise (Bad (ln, c, Printf.sprintf "unknown entry %S (signal or at)" w)))
     lines;
-  { signals = List.rev !signals; stimuli = List.rev !stimuli }
+  { signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions }
 
 (* EIO.cfg: sections start with a line "NAME:"; an instance is a list of "-Key value" pairs and
    goes on over lines that end with a backslash. Only EIO_SIGNAL is read. *)
@@ -168,7 +177,7 @@ let parse_eio lines =
       else finish ())
     lines;
   finish ();
-  { signals = List.rev !signals; stimuli = [] }
+  { signals = List.rev !signals; stimuli = []; collisions = [] }
 
 let is_eio lines =
   List.exists (fun l -> let l = String.trim l in l = "EIO_SIGNAL:" || (String.length l >= 8 && String.sub l 0 8 = "EIO:CFG_")) lines

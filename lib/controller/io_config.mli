@@ -16,6 +16,7 @@ type stimulus = { time : float; signal : string; value : float }
 type t = {
   signals : signal list;            (** in the order of the file *)
   stimuli : stimulus list;          (** in the order of the file *)
+  collisions : float list;          (** [at TIME collision]: the robot collides (doc/motion.md) *)
 }
 
 val empty : t

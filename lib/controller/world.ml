@@ -40,6 +40,7 @@ type interrupt = {
 type action =
   | Set_signal of int * float
   | Timer_due of int * int            (* number, generation *)
+  | Wake                              (* nothing happens: a wait looks again (wake_at) *)
 
 type clock = { mutable since : int option; mutable total : int }
 
@@ -67,6 +68,7 @@ type t = {
   mutable data : error_datum list;              (* trapdata objects, newest first *)
   clocks : (int, clock) Hashtbl.t;
   mutable observations : observation list;      (* newest first *)
+  collisions : float list;                      (* of the stimulus, for the motion model *)
 }
 
 let schedule w time action =
@@ -86,7 +88,8 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
-            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
+            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
+            collisions = config.collisions } in
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in
   Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
@@ -97,6 +100,7 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   w
 
 let now w = to_seconds w.now
+let collisions w = w.collisions
 let max_time w = w.max_time
 let epoch w = w.epoch
 
@@ -160,6 +164,7 @@ let perform w = function
           else schedule w (w.now + period) (Timer_due (n, generation));
           occur w n
       | _ -> ())
+  | Wake -> ()
 
 let advance_us w target =
   let rec go () =
@@ -176,6 +181,11 @@ let advance_us w target =
 let advance_to w time = advance_us w (seconds time)
 let statement w = advance_us w (w.now + w.statement_time)
 let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
+
+(* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
+   clock stop there. *)
+let wake_at w time =
+  if Float.is_finite time && time < 1e12 && seconds time > w.now then schedule w (seconds time) Wake
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 

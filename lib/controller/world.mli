@@ -51,6 +51,9 @@ val now : t -> float
 val max_time : t -> float
 val epoch : t -> float
 
+val collisions : t -> float list
+(** The times of the stimulus's [at TIME collision] lines, for the motion model. *)
+
 val statement : t -> unit
 (** The time of one statement passes (the events due meanwhile happen). *)
 
@@ -60,6 +63,11 @@ val next_event : t -> float option
 val advance_to : t -> float -> unit
 (** The clock moves on to this time; the events due until then happen in order of time (and of
     scheduling for equal times). A time in the past changes nothing. *)
+
+val wake_at : t -> float -> unit
+(** A timed event that changes nothing, so that a wait whose end another model computes (a move
+    until the robot's ready time, doc/motion.md) is looked at again at that time. Past, infinite and absurdly
+    large (from 1e12 s) times are ignored. *)
 
 val seconds : float -> int
 (** Seconds to the clock's microseconds, rounded to nearest. *)

@@ -41,6 +41,7 @@ let event_text (e : M.event) =
   | Trap_entered { number; trap; time } -> Printf.sprintf "trap-entered %s %d at %g" trap number time
   | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
   | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (place at)
+  | Motion m -> Rapid_semantics.Motion_primitives.event_to_string m
 
 let outcome_text (o : M.outcome) =
   match o with

@@ -47,7 +47,9 @@ let forward k q =
   let g = Gsl.Matrix.get k.acc in
   { trans = { x = g 0 3; y = g 1 3; z = g 2 3 }; rot = of_matrix (rotation_of k.acc) }
 
-let quadrant a = int_of_float (Float.floor (a /. 90.))
+(* An angle a rounding error below a quadrant's edge (axis 4 at -1e-14 degrees for 0) is on the
+   edge: the quadrant of a computed 0 is 0, as the programmed one is. *)
+let quadrant a = int_of_float (Float.floor ((a +. 1e-9) /. 90.))
 
 
 let singular_zone = 1.0

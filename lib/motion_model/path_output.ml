@@ -119,14 +119,22 @@ let path_svg ?(title = "TCP path") p =
   Buffer.add_string b "</svg>\n";
   Buffer.contents b
 
-let timeline_svg ?(title = "Motion timeline") p =
+type lane = Waits | Traps | Signals
+
+type mark = { lane : lane; m_from : float; m_to : float; m_label : string }
+
+let lane_row = function Waits -> 0 | Traps -> 1 | Signals -> 2
+
+let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
   let pieces = List.filter (fun (i : Planner.piece_info) -> Float.is_finite i.t_to) (Planner.pieces p) in
   let segs = Array.of_list (Planner.segments p) in
-  let tend = Float.max 1e-3 (end_time p) in
+  let program = List.filter (fun m -> Float.is_finite m.m_from && Float.is_finite m.m_to) program in
+  let tend = Float.max 1e-3 (List.fold_left (fun t m -> Float.max t m.m_to) (end_time p) program) in
   let w = 960. and left = 90. in
   let sx t = left +. t /. tend *. (w -. left -. 30.) in
   let b = Buffer.create 65536 in
-  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"330\" font-family=\"sans-serif\" font-size=\"12\">\n" w;
+  let height = if program = [] then 330. else 440. in
+  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">\n" w height;
   buf_printf b "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n";
   buf_printf b "<text x=\"20\" y=\"24\" font-size=\"16\" font-weight=\"bold\">%s</text>\n" (esc title);
   buf_printf b "<text x=\"10\" y=\"75\">moves</text><text x=\"10\" y=\"175\">TCP speed</text>\n";
@@ -197,5 +205,31 @@ let timeline_svg ?(title = "Motion timeline") p =
   buf_printf b "<polyline fill=\"none\" stroke=\"#1f8f4f\" stroke-width=\"1.5\" points=\"";
   Array.iteri (fun k v ->
       buf_printf b "%.2f,%.2f " (sx ((float_of_int k +. 0.5) *. dt)) (top +. h -. v /. vmax *. h)) speeds;
-  Buffer.add_string b "\"/>\n</svg>\n";
+  Buffer.add_string b "\"/>\n";
+  (* The program against the same time: where its pointer waited, its traps, its signals. *)
+  if program <> [] then begin
+    List.iteri (fun k name ->
+        buf_printf b "<text x=\"10\" y=\"%.0f\">%s</text>\n" (350. +. 30. *. float_of_int k) name)
+      [ "waits"; "traps"; "signals" ];
+    (* A signal's name is written where the one before it in the lane leaves room. *)
+    let free = ref neg_infinity in
+    List.iter (fun m ->
+        let y = 336. +. 30. *. float_of_int (lane_row m.lane) in
+        let x0 = sx m.m_from and x1 = sx m.m_to in
+        match m.lane with
+        | Signals ->
+            buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#8e44ad\" stroke-width=\"1.5\"><title>%s %.6f s</title></line>\n"
+              x0 y x0 (y +. 20.) (esc m.m_label) m.m_from;
+            if x0 > !free then begin
+              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s</text>\n" (x0 +. 2.) (y +. 10.) (esc m.m_label);
+              free := x0 +. 6. *. float_of_int (String.length m.m_label) +. 6.
+            end
+        | Waits | Traps ->
+            buf_printf b "<rect x=\"%.2f\" y=\"%.1f\" width=\"%.2f\" height=\"20\" fill=\"%s\"><title>%s %.6f–%.6f s</title></rect>\n"
+              x0 y (Float.max 1. (x1 -. x0)) (if m.lane = Waits then "#7f8c8d" else "#c0392b") (esc m.m_label) m.m_from m.m_to;
+            if x1 -. x0 > 6.5 *. float_of_int (String.length m.m_label) then
+              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" fill=\"white\">%s</text>\n"
+                ((x0 +. x1) /. 2.) (y +. 14.) (esc m.m_label)) program
+  end;
+  Buffer.add_string b "</svg>\n";
   Buffer.contents b

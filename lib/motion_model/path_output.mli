@@ -11,6 +11,12 @@ val csv : ?step:float -> Planner.t -> string
 val path_svg : ?title:string -> Planner.t -> string
 (** The TCP path in the base frame, two views. *)
 
-val timeline_svg : ?title:string -> Planner.t -> string
+(** What the program did, for the timeline: the program pointer waiting (a move, WaitTime, ...),
+    traps, signal changes (a mark at [m_from]). *)
+type lane = Waits | Traps | Signals
+
+type mark = { lane : lane; m_from : float; m_to : float; m_label : string }
+
+val timeline_svg : ?title:string -> ?program:mark list -> Planner.t -> string
 (** Moves (labelled by their target), corner paths and standstills against time, and the TCP
-    speed below them. *)
+    speed below them; with [program], three lanes below: waits, traps, signal changes. *)

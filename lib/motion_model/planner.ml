@@ -482,3 +482,49 @@ let resto_path t ~at:_ =
   match t.stored with
   | None -> Error (Motion_error.Path_level "RestoPath: no path is stored (path level 1)")
   | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()
+
+let target_joints t id =
+  if id < 0 || id >= t.segs.len then invalid_arg "Planner.target_joints: unknown move"
+  else Array.copy (Vec.get t.segs id).q_end
+
+(* Pieces are in time order and segment ids grow with time: the pieces of a recent move are
+   found from the end of the queue. *)
+let segment_span t id =
+  let lo = ref infinity and hi = ref neg_infinity in
+  let rec back i =
+    if i >= 0 then begin
+      let pc = Vec.get t.cur.pieces i in
+      let ids = match pc.shape with
+        | Part sg -> [ sg.id ] | Blend b -> [ b.a.id; b.b.id ] | Joint_blend b -> [ b.a.id; b.b.id ] in
+      if List.mem id ids then begin
+        lo := Float.min !lo pc.tm.t0;
+        (* The corner after the move is not its own: it ends where its corner begins. *)
+        let ends_here = match pc.shape with Part _ -> true | Blend b -> b.b.id = id | Joint_blend b -> b.b.id = id in
+        if ends_here then hi := Float.max !hi pc.tm.t1
+        else hi := Float.max !hi pc.tm.t0
+      end;
+      if List.exists (fun j -> j >= id) ids then back (i - 1)
+    end in
+  back (t.cur.pieces.len - 1);
+  if !lo = infinity then None else Some (real_time t.cur !lo, real_time t.cur !hi)
+
+let point_time t id =
+  let corner = ref None and own_end = ref None in
+  let rec back i =
+    if i >= 0 then begin
+      let pc = Vec.get t.cur.pieces i in
+      let newest = match pc.shape with
+        | Part sg -> sg.id | Blend b -> b.b.id | Joint_blend b -> b.b.id in
+      (match pc.shape with
+       | (Blend { a; _ } | Joint_blend { a; _ }) when a.id = id -> corner := Some ((pc.tm.t0 +. pc.tm.t1) /. 2.)
+       | Part sg when sg.id = id -> own_end := Some pc.tm.t1
+       | _ -> ());
+      if newest >= id then back (i - 1)
+    end in
+  back (t.cur.pieces.len - 1);
+  match !corner, !own_end with
+  | Some c, _ -> Some (real_time t.cur c)
+  | None, Some e -> Some (real_time t.cur e)
+  | None, None -> None
+
+let is_open t id = match t.cur.open_seg with Some (sg, _) -> sg.id = id | None -> false

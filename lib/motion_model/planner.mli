@@ -114,3 +114,21 @@ type segment_info = {
 }
 
 val segments : t -> segment_info list
+
+(** {1 For the machine's events} *)
+
+val target_joints : t -> int -> float array
+(** The axis angles at the programmed point of the move with this id. *)
+
+val segment_span : t -> int -> (float * float) option
+(** When the move's motion begins (its incoming corner, or its own part) and ends (where its
+    outgoing corner begins, or at its point), real time, on the current path level; [None] for a
+    move not (or no longer) in the queue. Cheap for recent moves. *)
+
+val point_time : t -> int -> float option
+(** When the robot passes the move's programmed point: the middle of its corner path (MoveLDO,
+    MoveJDO), or the end of its part; [None] when not in the queue. *)
+
+val is_open : t -> int -> bool
+(** Whether the move is the last one, ending in a fly-by point whose corner waits for the next
+    move. *)

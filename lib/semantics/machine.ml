@@ -31,6 +31,7 @@ type event =
   | Trap_entered of { number : int; trap : string; time : float }
   | Trap_left of { trap : string; time : float }
   | Stubbed of { routine : string; at : Source.region }
+  | Motion of Motion_primitives.event
 
 type outcome =
   | Running
@@ -160,6 +161,8 @@ type config = {
   world : W.t;                          (* the controller around the program *)
   stub_unmodelled : bool;               (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
+  motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
+  mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -234,7 +237,9 @@ let charge cfg (act : activation) bytes =
 
 let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
 
-let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (program : Ir.program) ~entry =
+  let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
+  let program = Motion_primitives.robot_data motion program in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
@@ -303,7 +308,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) (program 
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
-          stub_unmodelled; stubbed = Hashtbl.create 8;
+          stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -390,7 +395,23 @@ let primitive_context cfg events : Primitive.context = {
   error_number = (fun name -> error_number cfg name);
   world = cfg.world;
   parameters = [||];
+  argument_label = (fun _ -> None);
 }
+
+(* The data object an argument names, for the motion's output (p10, z10), or the line of
+   another expression (an inline target, Offs(...)). *)
+let argument_label cfg (cs : call_state) name =
+  let found = ref None in
+  Array.iteri (fun i (p : Ir.parameter) ->
+      if String.lowercase_ascii p.p_name = String.lowercase_ascii name && i < Array.length cs.call.arguments then
+        match cs.call.arguments.(i) with
+        | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
+            found := Some cfg.program.globals.(g).g_name
+        | By_value { at; _ } -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line)
+        | _ -> ()) cs.callee.parameters;
+  !found
+
+let exec_ref : (config -> Ir.stmt -> string * event list) ref = ref (fun _ _ -> ("", []))
 
 let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
 
@@ -420,9 +441,16 @@ let call_primitive cfg (cs : call_state) name =
   let events = ref [] in
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
-  let result = match Io_primitives.call ctx name cs.primitive_args with
+  let ctx = { ctx with argument_label = argument_label cfg cs } in
+  let result = match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
+    | Some r -> r
+    | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
     | None -> Primitive.call ctx name cs.primitive_args in
+  (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
+  (match Motion_primitives.take_new_move cfg.motion with
+   | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
+   | None -> ());
   match result with
   | Primitive.Wait wait ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
@@ -436,7 +464,10 @@ let call_primitive cfg (cs : call_state) name =
             cs.callee.parameters;
           !found in
       let now = W.now cfg.world in
-      push cfg (K_wait { wait; cond; next_poll = now +. Option.value wait.poll ~default:0. });
+      let next_poll = match Motion_primitives.take_first_poll cfg.motion with
+        | Some t -> Float.max t (now +. Option.value wait.poll ~default:0.)
+        | None -> now +. Option.value wait.poll ~default:0. in
+      push cfg (K_wait { wait; cond; next_poll });
       cfg.focus <- F_next;
       ("wait-start", List.rev !events)
   | Primitive.Returned v ->
@@ -470,6 +501,14 @@ let call_primitive cfg (cs : call_state) name =
        | Procedure | Trap -> cfg.focus <- F_next);
       ("call-stubbed",
        List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
+  | Primitive.Retry_requested -> (
+      (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
+         there is nothing to retry: StartMove alone (R-7.6-b). *)
+      match cfg.act.handling with
+      | In_handler _ ->
+          let rule, more = !exec_ref cfg { Ir.s = Ir.Retry; sat = cs.call.call_at } in
+          (rule, List.rev !events @ more)
+      | _ -> cfg.focus <- F_next; ("call-primitive", List.rev !events))
   | Primitive.Not_modelled ->
       cfg.focus <- F_done (Unsupported
                              { name = cs.callee.name; at = cs.call.call_at;
@@ -595,11 +634,19 @@ let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
 let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n))
 
 (* §7.1: the error handler of the current routine takes control. *)
+(* §7.2: a move instruction whose wait an error or a long jump leaves is cancelled, and with it
+   the rest of its path (doc/motion.md, M-abandon). *)
+let waits_left cfg =
+  List.iter (function
+      | K_wait ws -> Motion_primitives.wait_abandoned cfg.motion ws.wait ~now:(W.now cfg.world)
+      | _ -> ()) cfg.stack
+
 let handle cfg (e : err) =
   let act = cfg.act in
   match act.routine.error with
   | None -> assert false
   | Some h ->
+      waits_left cfg;
       act.handling <- In_handler (e, cfg.mark);
       set_errno cfg e.number;
       cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
@@ -762,6 +809,8 @@ let exec cfg (s : Ir.stmt) =
   | Test (e, cases, default) ->
       mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; ("test", [])
 
+let () = exec_ref := exec
+
 let frame_kind = function
   | K_seq _ -> "seq" | K_stmt _ -> "stmt" | K_compact_if _ -> "compact-if" | K_assign_value _ -> "assign-value"
   | K_assign_store _ -> "assign-store" | K_if _ -> "if" | K_while_test _ -> "while-test"
@@ -884,6 +933,26 @@ let serve_interrupt cfg =
         Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = W.now cfg.world };
                                    Routine_entered r.name ])
 
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised in the routine
+   whose move instruction made the robot's path, when it is in the call chain, and handled from
+   there up the chain; otherwise where the program pointer is (§7.6, steps 1-4). It is raised
+   when the program pointer waits (a move instruction, a waiting instruction), whose statement
+   it is raised at; not at trap level: after the trap (R-7.4-a). *)
+let serve_async_error cfg =
+  if cfg.act.trap_level then None
+  else
+    match Motion_primitives.take_org_error cfg.motion with
+    | None -> None
+    | Some (name, move) ->
+        (match cfg.stack with K_wait _ :: rest -> cfg.stack <- rest | _ -> ());
+        let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true } in
+        let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
+        let rec in_chain a = function None -> false | Some b -> b == a || in_chain a b.caller in
+        (match owner with
+         | Some a when a != cfg.act && in_chain a (Some cfg.act) -> cfg.focus <- F_abandon (Go_on_long_jump (e, a))
+         | _ -> cfg.focus <- F_raise e);
+        Some ("async-error", [])
+
 let time_exhausted cfg rule =
   cfg.focus <- F_done (Resource_exhausted
                          (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world)));
@@ -895,6 +964,9 @@ let time_exhausted cfg rule =
    can ever end the wait: a deadlock. *)
 let wait_step cfg ws rest =
   match serve_interrupt cfg with
+  | Some r -> r
+  | None ->
+  match serve_async_error cfg with
   | Some r -> r
   | None -> (
       let w = cfg.world in
@@ -1198,6 +1270,7 @@ let expr_step cfg (e : Ir.expr) =
    handler runs first (§7.2, §1.2). *)
 let abandon_step cfg after =
   let act = cfg.act in
+  waits_left cfg;
   match act.routine.undo, act.handling with
   | Some undo, (Body | In_handler _) ->
       act.handling <- In_undo;
@@ -1247,11 +1320,20 @@ let step cfg =
   in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
      while the clock moved on, at the start of the step. *)
-  match W.drain cfg.world with
+  let events = match W.drain cfg.world with
+    | [] -> events
+    | seen -> List.map (fun o -> Controller o) seen @ events in
+  (* The motion: moves planned, begun and ended as the clock passes them; at the end of the
+     task, what the robot still does. *)
+  let moved = match cfg.focus with
+    | F_done Ended -> Motion_primitives.drain cfg.motion cfg.world @ Motion_primitives.finish cfg.motion
+    | _ -> Motion_primitives.drain cfg.motion cfg.world in
+  match moved with
   | [] -> (rule, events)
-  | seen -> (rule, List.map (fun o -> Controller o) seen @ events)
+  | moved -> (rule, events @ List.map (fun e -> Motion e) moved)
 
 let world cfg = cfg.world
+let motion cfg = cfg.motion
 let trap_level cfg = cfg.act.trap_level
 
 let outcome cfg = match cfg.focus with F_done o -> o | _ -> Running
@@ -1306,7 +1388,7 @@ let rule_names = [
   "local-initial-value";
   "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
   "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
-  "wait-time-limit"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
+  "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]

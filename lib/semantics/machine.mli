@@ -31,6 +31,8 @@ type event =
   | Stubbed of { routine : string; at : Rapid_syntax.Source.region }
       (** --stub-unmodelled ran an unmodelled installed routine as a no-op: once per routine,
           at its first call *)
+  | Motion of Motion_primitives.event
+      (** a move planned, begun, ended; a path command (doc/motion.md, doc/trace-format.md) *)
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -61,7 +63,8 @@ type limits = {
 val default_limits : limits
 
 val start :
-  ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> Ir.program -> entry:string -> (config, string) result
+  ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> ?motion:Motion_primitives.state ->
+  Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure.
     [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
@@ -76,6 +79,9 @@ val outcome : config -> outcome
 
 val world : config -> Rapid_controller.World.t
 (** The controller around the run: its clock, signals and interrupts. *)
+
+val motion : config -> Motion_primitives.state
+(** The robot of the run and its planner. *)
 
 val trap_level : config -> bool
 (** Whether the task executes at trap level (a trap, or a routine called from one; §7.2). *)

@@ -14,6 +14,7 @@ type context = {
   error_number : string -> int;
   world : Rapid_controller.World.t;
   parameters : string array;
+  argument_label : string -> string option;
 }
 
 type outcome =
@@ -23,6 +24,7 @@ type outcome =
   | Stop_requested
   | Not_modelled
   | Wait of Rapid_controller.World.wait
+  | Retry_requested
 
 (* The shape of a value, for StrToVal, whose target's type is only known by its value. *)
 let rec shape_of_value : V.t -> V.shape = function

@@ -22,6 +22,9 @@ type context = {
   error_number : string -> int;
   world : Rapid_controller.World.t;                  (** the controller around the run *)
   parameters : string array;                         (** the routine's parameter names, in order *)
+  argument_label : string -> string option;
+      (** the name of the data object given for a parameter (by the parameter's name), for the
+          motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
 }
 
 type outcome =
@@ -31,6 +34,7 @@ type outcome =
   | Stop_requested                                   (** Stop: the task stops *)
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
+  | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
 
 val call : context -> string -> argument array -> outcome
 

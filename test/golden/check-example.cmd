@@ -1,1 +1,1 @@
-check ../../examples/weldcell.mod
+check --io ../../examples/weldcell.io ../../examples/weldcell.mod

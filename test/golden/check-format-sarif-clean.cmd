@@ -1,1 +1,1 @@
-check --format sarif ../../examples/weldcell.mod
+check --format sarif --io ../../examples/weldcell.io ../../examples/weldcell.mod

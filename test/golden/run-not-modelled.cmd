@@ -1,1 +1,1 @@
-run ../../examples/weldcell.mod
+run not-modelled.mod

@@ -1,0 +1,139 @@
+(* rapid-sem motion, and the motion options of run, trace and check: --robot, --samples
+   (doc/motion.md, doc/user-guide.md). *)
+
+open Cmdliner
+module M = Rapid_semantics.Machine
+module MP = Rapid_semantics.Motion_primitives
+module MM = Rapid_motion_model
+
+let robot_arg =
+  Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE"
+         ~doc:"The robot description (doc/motion.md, \"The robot description\"); default the built-in ABB IRB 120.")
+
+let samples_arg =
+  Arg.(value & opt (some float) None & info [ "samples" ] ~docv:"HZ"
+         ~doc:"With JSON output: add a tcp-sample event HZ times per second of virtual time (doc/trace-format.md).")
+
+(* The robot of --robot; an error is FILE:LINE:COL: robot description error: MESSAGE. *)
+let load_robot = function
+  | None -> Ok MM.Robot.irb120
+  | Some file -> Result.map_error MM.Robot.error_to_string (MM.Robot.load file)
+
+let check_samples = function
+  | Some hz when not (hz > 0. && hz <= 10_000.) -> Error "rapid-sem: --samples takes a rate above 0 and at most 10000 Hz"
+  | _ -> Ok ()
+
+(* TCP samples at k / HZ s, each once, as the clock passes them. *)
+type sampler = { hz : float; mutable next : int }
+
+let sampler hz = { hz; next = 0 }
+
+let samples s motion ~until =
+  let p = MP.planner motion in
+  let out = ref [] in
+  let rec go () =
+    let t = float_of_int s.next /. s.hz in
+    if t <= until +. 1e-9 && s.next < 100_000_000 then begin
+      let joints = match MM.Planner.joints_at p t with Ok q -> Some q | Error _ -> None in
+      out := Motion_json.sample t (MM.Planner.pose_at p t) joints :: !out;
+      s.next <- s.next + 1; go ()
+    end in
+  go ();
+  List.rev !out
+
+(* At the end of a run that ended: the samples until the robot stands still. *)
+let final_samples s cfg =
+  let motion = M.motion cfg in
+  let stop = MM.Planner.finished_by (MP.planner motion) in
+  let now = Rapid_controller.World.now (M.world cfg) in
+  (* Not beyond --max-time: a move of 1E30 s is planned, not sampled. *)
+  let stop = Float.min stop (Rapid_controller.World.max_time (M.world cfg)) in
+  if M.outcome cfg = M.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
+  else samples s motion ~until:now
+
+(* ------------------------------------------------------------------ rapid-sem motion *)
+
+let write_file path text =
+  try
+    let oc = open_out_bin path in
+    Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text); Ok ()
+  with Sys_error m -> Error m
+
+(* The program's side of the timeline: waits (from the rule that starts a wait to the one that
+   ends it), traps, signal changes. *)
+let collect cfg =
+  let marks = ref [] and wait_from = ref None and traps = ref [] in
+  let now () = Rapid_controller.World.now (M.world cfg) in
+  let label = ref "" in
+  let observe rule events =
+    let open MM.Path_output in
+    (match rule with
+     | "wait-start" -> wait_from := Some (now ())
+     | "wait-done" | "wait-timeout" -> (
+         match !wait_from with
+         | Some t0 -> marks := { lane = Waits; m_from = t0; m_to = now (); m_label = !label } :: !marks; wait_from := None
+         | None -> ())
+     | _ -> ());
+    List.iter (function
+        | M.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
+        | M.Trap_left { trap; time } -> (
+            match !traps with
+            | (name, t0) :: rest when name = trap ->
+                traps := rest; marks := { lane = Traps; m_from = t0; m_to = time; m_label = trap } :: !marks
+            | _ -> ())
+        | M.Controller (Signal_changed { time; signal; value }) ->
+            marks := { lane = Signals; m_from = time; m_to = time; m_label = Printf.sprintf "%s=%g" signal value } :: !marks
+        | M.Motion (MP.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
+        | _ -> ()) events;
+    if rule = "wait-start" && not (List.exists (function M.Motion (MP.Segment_planned _) -> true | _ -> false) events) then
+      label := "wait"
+  in
+  (observe, fun () -> List.rev !marks)
+
+let cmd ~start_machine ~finish ~common_run_args ~controller_args =
+  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  let out name doc = Arg.(value & opt (some string) None & info [ name ] ~docv:"FILE" ~doc) in
+  let svg = out "svg" "Write the TCP path (top and side views) as SVG to FILE." in
+  let timeline = out "timeline" "Write the timeline (moves, corner paths, TCP speed, the program's waits, traps and signal changes) as SVG to FILE." in
+  let csv = out "csv" "Write TCP and axis samples as CSV to FILE (t,x,y,z,q1,q2,q3,q4,j1..j6)." in
+  let step_ = Arg.(value & opt float 0.01 & info [ "csv-step" ] ~docv:"SECONDS" ~doc:"The CSV's sampling step (default 0.01 s).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit controller robot svg timeline csv csv_step =
+    if not (csv_step > 0. && csv_step <= 1000.) then (prerr_endline "rapid-sem: --csv-step takes a step above 0 and at most 1000 s"; 2)
+    else
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    let observe, marks = collect cfg in
+    let rec loop () =
+      if M.outcome cfg = M.Running && M.steps cfg < max_steps then begin
+        let rule, events = M.step cfg in
+        observe rule events;
+        List.iter (function M.Output s -> print_endline s | _ -> ()) events;
+        loop ()
+      end in
+    loop ();
+    let p = MP.planner (M.motion cfg) in
+    let title = String.concat " " (List.map Filename.basename files) in
+    let written = List.filter_map (fun (target, text) ->
+        match target with
+        | None -> None
+        | Some path -> (
+            match write_file path (Lazy.force text) with
+            | Ok () -> Some (Ok path)
+            | Error m -> Some (Error m)))
+        [ (svg, lazy (MM.Path_output.path_svg ~title p));
+          (timeline, lazy (MM.Path_output.timeline_svg ~title ~program:(marks ()) p));
+          (csv, lazy (MM.Path_output.csv ~step:csv_step p)) ] in
+    List.iter (function
+        | Ok path -> Printf.eprintf "rapid-sem: wrote %s\n" path
+        | Error m -> Printf.eprintf "rapid-sem: cannot write: %s\n" m) written;
+    let status = finish (M.outcome cfg) (M.steps cfg) ~max_steps in
+    if status = 0 && List.exists Result.is_error written then 2 else status
+  in
+  let doc = "run a task and draw its motion: the TCP path, the timeline, samples" in
+  let man = [
+    `S Manpage.s_description;
+    `P "Runs the task as $(b,rapid-sem run) (its output on standard output), then writes what the robot did: $(b,--svg) the TCP path in the base frame (top view x-y, side view x-z), $(b,--timeline) the moves, corner paths and TCP speed against virtual time with the program's waits, traps and signal changes below, $(b,--csv) samples of the TCP pose and the axis angles (doc/motion.md, \"Output\"). Each file written is named on standard error.";
+    `S Manpage.s_exit_status; `P "As $(b,rapid-sem run); 2 also when a file cannot be written.";
+  ] in
+  Cmd.v (Cmd.info "motion" ~doc ~man)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ controller_args
+          $ robot_arg $ svg $ timeline $ csv $ step_)

@@ -1,0 +1,653 @@
+(* The installed routines of motion (lib/typing/installed/motion.sys) as primitives: values to
+   the motion model's floats and back, the planner of the run, and the waits of the program
+   pointer on the robot (doc/motion.md, "Moves in the machine"). *)
+
+module V = Value
+module W = Rapid_controller.World
+module MM = Rapid_motion_model
+module G = MM.Geom
+module D = MM.Motion_data
+module P = MM.Planner
+open Primitive
+
+type event =
+  | Segment_planned of {
+      time : float; id : int; instruction : string; label : string; zone : string;
+      target : G.pose; joints : float array; ready_time : float; start_time : float; end_time : float }
+  | Segment_started of { time : float; id : int; label : string }
+  | Segment_ended of { time : float; id : int; label : string }
+  | Segment_dropped of { time : float; id : int; label : string }
+  | Path_command of { time : float; command : string }
+  | Motion_warning of { time : float; text : string }
+
+let event_to_string = function
+  | Segment_planned { time; id; instruction; label; zone; target; ready_time; start_time; end_time; _ } ->
+      Printf.sprintf "%.6f s: move %d planned: %s %s %s to [%.2f,%.2f,%.2f], from %.6f s to %.6f s, program pointer at %.6f s"
+        time id instruction label zone target.trans.x target.trans.y target.trans.z start_time end_time ready_time
+  | Segment_started { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) begins" time id label
+  | Segment_ended { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) ends" time id label
+  | Segment_dropped { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) dropped" time id label
+  | Path_command { time; command } -> Printf.sprintf "%.6f s: %s" time command
+  | Motion_warning { time; text } -> Printf.sprintf "%.6f s: %s" time text
+
+let event_time = function
+  | Segment_planned { time; _ } | Segment_started { time; _ } | Segment_ended { time; _ }
+  | Segment_dropped { time; _ } | Path_command { time; _ } | Motion_warning { time; _ } -> time
+
+type track = { t_id : int; t_label : string; mutable started : bool; mutable ended : bool }
+
+(* An asynchronous error (§7.4, §7.6): raised at the move instruction the program pointer is in,
+   or at the next one (\SyncLastMoveInst); or in the routine of the move the robot executes
+   (\SyncOrgMoveInst, a collision), which the machine finds. *)
+type async_mode = Sync_last | Sync_org
+
+type async = { a_name : string; a_move : int option; a_mode : async_mode }
+
+type state = {
+  robot : MM.Robot.t;
+  kin : MM.Kinematics.t;
+  planner : P.t;
+  mutable tracks : track list;                 (* moves not yet ended, oldest first *)
+  mutable outputs : (int * int * float) list;  (* MoveLDO/MoveJDO: move, signal, value *)
+  mutable fresh : event list;                  (* newest first *)
+  mutable check_at : float;                    (* the next time a tracked move may change *)
+  mutable dirty : bool;                        (* the queue changed since the last look *)
+  mutable tool : V.t;                          (* the active tool and work object (CTool, CRobT) *)
+  mutable wobj : V.t;
+  mutable first_poll : float option;           (* WaitUntil \InPos: polls begin at standstill *)
+  mutable async : async option;                (* an asynchronous error not yet raised *)
+  mutable interrupted : (int * string) option; (* a move the error was raised at: its RETRY waits for it *)
+  mutable last_planned : int option;           (* the last move planned *)
+  mutable new_move : int option;               (* for the machine: the move just planned *)
+  mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
+  mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
+  mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
+}
+
+let dummy = V.Bool false
+
+let create ?(robot = MM.Robot.irb120) () =
+  let kin = MM.Kinematics.create robot in
+  { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
+    dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
+    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [] }
+
+let planner st = st.planner
+
+(* vmax: v_tcp is the robot's maximum TCP speed (ABB, speeddata; installed-facts.md §3), so the
+   installed constant takes the value of the run's robot. *)
+let robot_data st (program : Ir.program) =
+  let vmax = D.vmax st.robot in
+  let globals = Array.map (fun (g : Ir.global) ->
+      let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+      if same g.g_name "vmax" && same g.g_module "Installed_base" then
+        let value = V.Record (Array.map V.num [| vmax.v_tcp; vmax.v_ori; vmax.v_leax; vmax.v_reax |]) in
+        { g with g_init = Init_expr { e = Literal value; at = g.g_at } }
+      else g) program.globals in
+  { program with globals }
+let robot st = st.robot
+
+let emit st e = st.fresh <- e :: st.fresh
+
+(* ------------------------------------------------------------------ arguments *)
+
+let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+let arg (ctx : context) args name =
+  let rec find i =
+    if i >= Array.length ctx.parameters || i >= Array.length args then Missing
+    else if same ctx.parameters.(i) name then args.(i)
+    else find (i + 1) in
+  find 0
+
+let present ctx args name = arg ctx args name <> Missing
+let value ctx args name = match arg ctx args name with
+  | Value v -> Some v | Location (box, i, _) -> Some box.(i) | Switch -> Some (V.Bool true) | Missing -> None
+let num ctx args name = match value ctx args name with Some (V.Num f | V.Dnum f) -> Some f | _ -> None
+let label ctx name = match ctx.argument_label name with Some l -> l | None -> "*"
+
+(* ------------------------------------------------------------------ values and floats *)
+
+let nums v = Array.map V.num_value (V.components v)
+let pos_of v = let c = nums v in { G.x = c.(0); y = c.(1); z = c.(2) }
+(* Motion instructions check that quaternions are normalised: |q1² + q2² + q3² + q4² - 1| below
+   0.1 is normalised here, beyond it is ERR_ILLQUAT (installed-facts.md §4, NOrient's
+   thresholds; the error's name UNCERTAIN). *)
+exception Illegal_quaternion
+
+let orient_of v =
+  let c = nums v in
+  let sum = (c.(0) *. c.(0)) +. (c.(1) *. c.(1)) +. (c.(2) *. c.(2)) +. (c.(3) *. c.(3)) in
+  if not (Float.abs (sum -. 1.) < 0.1) then raise Illegal_quaternion;
+  G.normalize { G.q1 = c.(0); q2 = c.(1); q3 = c.(2); q4 = c.(3) }
+let pose_of v = let c = V.components v in { G.trans = pos_of c.(0); rot = orient_of c.(1) }
+
+let conf_of v =
+  let c = nums v in
+  let i f = if Float.is_finite f then int_of_float (Float.round f) else 0 in
+  { MM.Kinematics.cf1 = i c.(0); cf4 = i c.(1); cf6 = i c.(2); cfx = i c.(3) }
+
+let robtarget_of v =
+  let c = V.components v in { MM.Frames.pose = pose_of (V.pose c.(0) c.(1)); conf = conf_of c.(2) }
+
+let joints_of_jointtarget v = nums (V.components v).(0)
+
+let speed_of v = let c = nums v in { D.v_tcp = c.(0); v_ori = c.(1); v_leax = c.(2); v_reax = c.(3) }
+
+let zone_of v =
+  let c = V.components v in
+  let n i = V.num_value c.(i) in
+  { D.finep = V.bool_value c.(0); pzone_tcp = n 1; pzone_ori = n 2; pzone_eax = n 3;
+    zone_ori = n 4; zone_leax = n 5; zone_reax = n 6 }
+
+let stoppoint_of v =
+  let c = V.components v in
+  let inpos = nums c.(2) in
+  { D.stop_type = (match V.num_value c.(0) with 2. -> D.Stoptime | 3. -> D.Fllwtime | _ -> D.Inpos);
+    progsynch = V.bool_value c.(1); inpos_position = inpos.(0); inpos_speed = inpos.(1);
+    inpos_mintime = inpos.(2); inpos_maxtime = inpos.(3);
+    stoptime = V.num_value c.(3); followtime = V.num_value c.(4) }
+
+let tool_of v =
+  let c = V.components v in
+  { D.tool_robhold = V.bool_value c.(0); tframe = pose_of c.(1); tool_mass = V.num_value (V.components c.(2)).(0) }
+
+let wobj_of v =
+  let c = V.components v in
+  { D.wobj_robhold = V.bool_value c.(0); ufprog = V.bool_value c.(1); ufmec = V.string_value c.(2);
+    uframe = pose_of c.(3); oframe = pose_of c.(4) }
+
+let pos_value (p : G.pos) = V.pos p.x p.y p.z
+let orient_value (q : G.orient) = V.orient q.q1 q.q2 q.q3 q.q4
+let conf_value (c : MM.Kinematics.conf) =
+  V.Record (Array.map (fun i -> V.num (float_of_int i)) [| c.cf1; c.cf4; c.cf6; c.cfx |])
+
+(* 9E9: an external axis that is not there (ABB's convention for extjoint). *)
+let no_extax () = V.Record (Array.init 6 (fun _ -> V.num 9e9))
+
+let robtarget_value ?extax (r : MM.Frames.robtarget) =
+  V.Record [| pos_value r.pose.trans; orient_value r.pose.rot; conf_value r.conf;
+              (match extax with Some e -> V.copy e | None -> no_extax ()) |]
+
+let jointtarget_value q =
+  V.Record [| V.Record (Array.map V.num q); no_extax () |]
+
+(* A robtarget changed in its pose only: its confdata and external axes are kept. *)
+let with_pose v (p : G.pose) =
+  let c = V.components v in
+  V.Record [| pos_value p.trans; orient_value p.rot; V.copy c.(2); V.copy c.(3) |]
+
+(* ------------------------------------------------------------------ errors *)
+
+(* R-4.1-e: a move or position function that the robot cannot do raises ERR_ROBLIMIT (the
+   errnum ABB gives CalcJointT for a position outside the robot's reach); bad data raises
+   ERR_ARGVALERR. The model's message goes to the event log. *)
+let error_name = function
+  | MM.Motion_error.Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity -> "ERR_ROBLIMIT"
+  | Circle_uncertain | Invalid_speed _ | Robhold_conflict | Path_level _ -> "ERR_ARGVALERR"
+  | Stationary_tool -> "ERR_ARGVALERR"
+
+let fail ctx what e =
+  ctx.log (Printf.sprintf "%s: %s" what (MM.Motion_error.name e));
+  match e with
+  | MM.Motion_error.Stationary_tool -> Not_modelled
+  | e -> Failed (error_name e)
+
+(* ------------------------------------------------------------------ waits *)
+
+(* A time beyond the run's --max-time is never reached: the engine's time limit ends the wait. *)
+let reached w t = Float.is_finite t && t <= W.max_time w +. 1. && W.seconds (W.now w) >= W.seconds t
+
+(* The program pointer waits until a time the planner computes, and asks again at every look:
+   a StopMove or StartMove in a trap moves it. *)
+let until ?move ctx ~what time =
+  let w = ctx.world in
+  let asked = ref nan in
+  (* A move instruction the program pointer waits in takes a \SyncLastMoveInst error (§7.4). *)
+  let async_here () = match move with
+    | Some (st, _) -> (match st.async with Some { a_mode = Sync_last; _ } -> true | _ -> false)
+    | None -> false in
+  let satisfied () =
+    let t = time () in
+    if async_here () then true
+    else if reached w t then true
+    else begin
+      if t <> !asked then (W.wake_at w (Float.min t (W.max_time w +. 1.)); asked := t);
+      false
+    end in
+  let finish ~timed_out:_ =
+    match move with
+    | Some (st, (id, key)) when async_here () ->
+        let a = Option.get st.async in
+        st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
+    | _ -> None in
+  let self = ref None in
+  let finish ~timed_out =
+    (match move with
+     | Some (st, _) ->
+         st.waiting <- None;
+         (match !self with Some me -> st.move_waits <- List.filter (fun w -> w != me) st.move_waits | None -> ())
+     | None -> ());
+    finish ~timed_out in
+  if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+  else begin
+    let wait = { W.what; satisfied; deadline = None; finish; poll = None } in
+    (match move with
+     | Some (st, m) -> st.waiting <- Some m; self := Some wait; st.move_waits <- wait :: st.move_waits
+     | None -> ());
+    Wait wait
+  end
+
+let standstill st () = P.finished_by st.planner
+
+(* ------------------------------------------------------------------ the motion events *)
+
+let check st ~now =
+  (* The clock counts microseconds: a time is passed when its microsecond is. *)
+  let passed t = t <= now || (t < 1e12 && now < 1e12 && W.seconds t <= W.seconds now) in
+  let w_next = ref infinity in
+  let events = ref [] in
+  let level1 = P.path_level st.planner = 1 in
+  st.tracks <- List.filter (fun tr ->
+      match P.segment_span st.planner tr.t_id with
+      | None ->
+          if level1 then (events := Segment_dropped { time = now; id = tr.t_id; label = tr.t_label } :: !events; false)
+          else true
+      | Some (s, e) ->
+          if not tr.started && passed s then begin
+            tr.started <- true; events := Segment_started { time = s; id = tr.t_id; label = tr.t_label } :: !events
+          end;
+          if not tr.ended && passed e then begin
+            tr.ended <- true; events := Segment_ended { time = e; id = tr.t_id; label = tr.t_label } :: !events
+          end;
+          if not tr.started then w_next := Float.min !w_next s;
+          if not tr.ended then w_next := Float.min !w_next e;
+          not tr.ended) st.tracks;
+  st.check_at <- !w_next;
+  List.stable_sort (fun a b -> compare (event_time a) (event_time b)) (List.rev !events)
+
+(* ------------------------------------------------------------------ moves *)
+
+let active_tool st = if st.tool == dummy then None else Some st.tool
+
+let move ctx st name args =
+  let w = ctx.world in
+  let now = W.now w in
+  let get n = value ctx args n in
+  match get "Speed", get "Zone", get "Tool" with
+  | Some speed, Some zone, Some tool -> (
+      let motion = match String.lowercase_ascii name with
+        | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
+        | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
+        | "movec" -> (match get "CirPoint", get "ToPoint" with
+            | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
+        | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
+      let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
+      let key = String.lowercase_ascii name ^ " " ^ target_label in
+      (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
+         the error handler (StorePath ... RestoPath), while its path is there. *)
+      let interrupted = match st.interrupted with
+        | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) st.tracks -> st.interrupted <- None; None
+        | Some (_, k) as i when k = key -> st.interrupted <- None; i
+        | _ -> None in
+      match motion, st.async, interrupted with
+      | None, _, _ -> Failed "ERR_ARGVALERR"
+      | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
+          (* §7.4: the error waits for the next move instruction, and is raised there. *)
+          st.async <- None; Failed a.a_name
+      | Some _, _, Some (id, _) ->
+          (* RETRY of the move the asynchronous error was raised at: its path is still there
+             (StartMove goes on with it); the move is not planned twice. *)
+          until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+            (fun () -> P.ready_time st.planner id)
+      | Some motion, _, _ -> (
+          let wobj = get "WObj" in
+          let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ?z:(num ctx args "Z")
+              ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc:(present ctx args "Conc")
+              ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label
+              (speed_of speed) (zone_of zone) motion in
+          (* What the robot did before this move is observed before it is planned. *)
+          if st.tracks <> [] then st.fresh <- List.rev_append (check st ~now) st.fresh;
+          match P.plan st.planner ~now m with
+          | Error e -> fail ctx name e
+          | Ok { id; ready_time; warnings } ->
+              st.tool <- V.copy tool;
+              st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+              let joints = P.target_joints st.planner id in
+              let tframe = (tool_of tool).tframe in
+              let target = G.pmult (MM.Kinematics.forward st.kin joints) tframe in
+              let start_time, end_time = match P.segment_span st.planner id with
+                | Some s -> s | None -> (now, now) in
+              let zone_name = if (zone_of zone).finep then "fine" else label ctx "Zone" in
+              emit st (Segment_planned { time = now; id; instruction = name; label = target_label;
+                                         zone = zone_name; target; joints; ready_time; start_time; end_time });
+              List.iter (fun (P.Corner_path_failure k) ->
+                  let text = Printf.sprintf "corner path failure: move %d stops at its point" k in
+                  ctx.log text; emit st (Motion_warning { time = now; text })) warnings;
+              st.tracks <- st.tracks @ [ { t_id = id; t_label = target_label; started = false; ended = false } ];
+              st.dirty <- true;
+              (* MoveLDO, MoveJDO: the output changes where the robot passes the point. *)
+              (match String.lowercase_ascii name with
+               | "moveldo" | "movejdo" -> (
+                   match arg ctx args "Signal", num ctx args "Value" with
+                   | Location (box, i, _), Some v -> (
+                       match box.(i) with
+                       | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None ->
+                           st.outputs <- st.outputs @ [ (id, V.handle_id h, v) ]
+                       | _ -> ())
+                   | _ -> ())
+               | _ -> ());
+              st.last_planned <- Some id; st.new_move <- Some id;
+              until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+                (fun () -> P.ready_time st.planner id)))
+  | _ -> Failed "ERR_ARGVALERR"
+
+let place_outputs st w =
+  st.outputs <- List.filter (fun (id, signal, v) ->
+      if P.is_open st.planner id then true
+      else match P.point_time st.planner id with
+        | Some t when Float.is_finite t ->
+            let now = W.now w in
+            if t > now then W.write_later w signal v ~delay:(t -. now) else W.write w signal v;
+            false
+        | Some _ -> true
+        | None -> false) st.outputs
+
+(* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
+   one planned. *)
+let motion_pointer st =
+  match List.find_opt (fun tr -> not tr.ended) st.tracks with
+  | Some tr -> Some tr.t_id
+  | None -> st.last_planned
+
+(* §7.6: a collision of the stimulus while the robot moves stops it there and raises ERR_COLL_STOP
+   in the routine of the move it was on (the Collision Error Handler is taken as configured,
+   R-7.6-a); standing still, nothing collides. *)
+let collide st w =
+  let pending = match st.collisions with
+    | Some c -> c
+    | None -> let c = W.collisions w in List.iter (W.wake_at w) c; c in
+  let now = W.now w in
+  let due, later = List.partition (fun t -> W.seconds t <= W.seconds now) pending in
+  st.collisions <- Some later;
+  List.iter (fun t ->
+      let moving = (not (P.stopped st.planner)) && P.finished_by st.planner > t +. 1e-9 in
+      if moving then begin
+        P.stop st.planner ~at:t;
+        st.dirty <- true;
+        emit st (Path_command { time = t; command = "collision" });
+        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org }
+      end
+      else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
+    due
+
+let drain st w =
+  let now = W.now w in
+  if st.outputs <> [] then place_outputs st w;
+  let seen = if st.tracks <> [] && (st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12)) then (st.dirty <- false; check st ~now) else [] in
+  if st.collisions <> Some [] then collide st w;
+  let fresh = List.rev st.fresh in
+  st.fresh <- [];
+  fresh @ seen
+
+let finish st =
+  let fresh = List.rev st.fresh in
+  st.fresh <- [];
+  fresh @ (if st.tracks = [] then [] else check st ~now:infinity)
+
+(* §7.2: "an active Movex instruction clears part of its path": the move instruction whose wait
+   is left by an error or a long jump is cancelled, and the robot stands where it is (ClearPath). *)
+let wait_abandoned st w ~now =
+  if List.exists (fun m -> m == w) st.move_waits then begin
+    st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
+    st.waiting <- None;
+    P.clear st.planner ~at:now;
+    st.dirty <- true;
+    emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
+  end
+
+let move_waits_in_progress st = List.length st.move_waits
+
+let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
+
+(* SearchL (ABB, RAPID Instructions): a linear move to ToPoint, a stop point, during which the
+   signal is watched; at the first hit (a positive flank by default, \NegFlank, \Flanks, or a
+   level: \HighLevel, \LowLevel) SearchPoint takes the robot's position; with \Stop, \PStop or
+   \SStop the robot stands there and the rest of the path is dropped, otherwise it goes on to
+   ToPoint. No hit by the end of the move: ERR_WHLSEARCH. *)
+let search ctx st args =
+  let w = ctx.world in
+  let get n = value ctx args n in
+  let signal = match arg ctx args "Signal" with
+    | Location (box, i, _) -> (
+        match box.(i) with
+        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
+        | _ -> None)
+    | _ -> None in
+  match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
+  | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
+  | Some id, Some target, Some speed, Some tool, Location (box, i, _) -> (
+      let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
+      let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
+      let hit ~old ~now =
+        if present ctx args "Flanks" then old <> now
+        else if present ctx args "NegFlank" then old <> 0. && now = 0.
+        else if present ctx args "HighLevel" then now <> 0.
+        else if present ctx args "LowLevel" then now = 0.
+        else old = 0. && now <> 0. in
+      let wobj = get "WObj" in
+      let tool_d = tool_of tool and wobj_d = match wobj with Some o -> wobj_of o | None -> D.wobj0 in
+      let target_label = label ctx "ToPoint" in
+      let fine = Option.get (D.find D.zonedata "fine") in
+      let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
+          ~label:target_label (speed_of speed) fine (P.Linear (robtarget_of target)) in
+      let now = W.now w in
+      match P.plan st.planner ~now m with
+      | Error e -> fail ctx "SearchL" e
+      | Ok { id = move; ready_time; _ } ->
+          st.tool <- V.copy tool;
+          st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+          let joints = P.target_joints st.planner move in
+          let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
+          emit st (Segment_planned { time = now; id = move; instruction = "SearchL"; label = target_label;
+                                     zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
+                                     joints; ready_time; start_time; end_time });
+          st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
+          st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
+          let previous = ref (W.read w id) and found = ref false and asked = ref nan in
+          let record () =
+            found := true;
+            let t = W.now w in
+            (match P.joints_at st.planner t with
+             | Ok joints -> (
+                 match MM.Frames.c_rob_t st.kin ~joints tool_d wobj_d with
+                 | Ok r -> box.(i) <- robtarget_value r
+                 | Error _ -> ())
+             | Error _ -> ());
+            if stops then (P.clear st.planner ~at:t; st.dirty <- true;
+                           emit st (Path_command { time = t; command = "SearchL stop" })) in
+          if level && hit ~old:!previous ~now:!previous then record ();
+          let satisfied () =
+            let v = W.read w id in
+            if (not !found) && v <> !previous && hit ~old:!previous ~now:v then record ();
+            previous := v;
+            let r = P.ready_time st.planner move in
+            if (!found && stops) || reached w r then true
+            else begin
+              if r <> !asked then (W.wake_at w (Float.min r (W.max_time w +. 1.)); asked := r);
+              false
+            end in
+          let finish ~timed_out:_ = if !found then None else Some "ERR_WHLSEARCH" in
+          if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+          else Wait { W.what = "the robot (SearchL " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
+  | _ -> Failed "ERR_ARGVALERR"
+
+(* ------------------------------------------------------------------ the routines *)
+
+let names = [
+  "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
+  "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
+]
+
+let modelled name = List.exists (same name) names
+
+let take_org_error st =
+  match st.async with
+  | Some { a_mode = Sync_org; a_name; a_move } ->
+      (* Raised at the move instruction the program pointer waits in: its RETRY waits again. *)
+      st.async <- None; st.interrupted <- st.waiting; st.waiting <- None; Some (a_name, a_move)
+  | _ -> None
+
+let take_new_move st = let l = st.new_move in st.new_move <- None; l
+
+let result_pose ctx what = function
+  | Ok v -> Returned (Some v)
+  | Error e -> fail ctx what e
+
+let current_joints ctx st =
+  P.joints_at st.planner (W.now ctx.world)
+
+let path_command ctx st command f =
+  let now = W.now ctx.world in
+  match f now with
+  | Ok () -> st.dirty <- true; emit st (Path_command { time = now; command }); Returned None
+  | Error e -> fail ctx command e
+
+let call_unguarded (ctx : context) st name args =
+  let w = ctx.world in
+  let now = W.now w in
+  let settings = P.settings st.planner in
+  let get n = value ctx args n in
+  let wobj_data = function Some v -> wobj_of v | None -> D.wobj0 in
+  let lname = String.lowercase_ascii name in
+  match lname with
+  | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
+  | "searchl" -> Some (search ctx st args)
+  | "waittime" when present ctx args "InPos" -> (
+      match num ctx args "Time" with
+      | Some t when t >= 0. && Float.is_finite t ->
+          (* \InPos: the time counts from when the robot stands still. *)
+          Some (until ctx ~what:"the robot to stand still (WaitTime \\InPos)" (fun () ->
+              let s = standstill st () in
+              if Float.is_finite s then Float.max now s +. t else infinity))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "waituntil" when present ctx args "InPos" && not (reached w (standstill st ())) ->
+      (* The condition is first evaluated when the robot stands still (R-4.1-f), then at the
+         poll rate, as without \InPos. *)
+      let rate = Option.value (num ctx args "PollRate") ~default:W.default_poll_rate in
+      let flag = present ctx args "TimeFlag" in
+      let max_time = num ctx args "MaxTime" in
+      if rate <= 0. || (match max_time with Some m -> not (m >= 0.) | None -> false) then Some (Failed "ERR_ARGVALERR")
+      else begin
+        let s = standstill st () in
+        if Float.is_finite s then st.first_poll <- Some s;
+        let finish ~timed_out =
+          if flag then ((match arg ctx args "TimeFlag" with Location (box, i, _) -> box.(i) <- V.Bool timed_out | _ -> ()); None)
+          else if timed_out then Some "ERR_WAIT_MAXTIME" else None in
+        Some (Wait { W.what = "a condition (WaitUntil \\InPos)"; satisfied = (fun () -> false);
+                     deadline = Option.map (fun m -> now +. m) max_time; finish; poll = Some rate })
+      end
+  | "waitrob" -> Some (until ctx ~what:"the robot to stand still (WaitRob)" (standstill st))
+  | "stopmove" -> Some (path_command ctx st "StopMove" (fun at -> P.stop st.planner ~at; Ok ()))
+  | "startmove" -> Some (path_command ctx st "StartMove" (fun at -> P.start st.planner ~at; Ok ()))
+  | "stopmovereset" -> Some (Returned None)
+  | "startmoveretry" ->
+      (* StartMove and RETRY in one (ABB: for error handlers; outside one, RETRY's own rule). *)
+      P.start st.planner ~at:now; st.dirty <- true;
+      emit st (Path_command { time = now; command = "StartMove" });
+      Some Retry_requested
+  | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; Ok ()))
+  | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
+  | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
+  | "procerrrecovery" ->
+      (* §7.4: the path stops; the error ERR_PATH_STOP goes to the move instruction the program
+         pointer is in or comes to next (\SyncLastMoveInst), or to the routine of the move
+         that made the robot's path (\SyncOrgMoveInst, also without a switch: R-7.4-a). *)
+      P.stop st.planner ~at:now;
+      emit st (Path_command { time = now; command = "ProcerrRecovery" });
+      st.dirty <- true;
+      let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
+      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode };
+      Some (Returned None)
+  | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
+  | "velset" -> (
+      match num ctx args "Override", num ctx args "Max" with
+      | Some o, Some m when o > 0. && m > 0. && Float.is_finite o && Float.is_finite m ->
+          settings.velset <- { override = o; max = m }; Some (Returned None)
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "accset" -> Some (Returned None)
+  | "cornerpathwarning" | "gripload" -> Some (Returned None)
+  | "confl" -> settings.conf_l <- not (present ctx args "Off"); Some (Returned None)
+  | "confj" -> settings.conf_j <- not (present ctx args "Off"); Some (Returned None)
+  | "singarea" ->
+      settings.sing_area_wrist <- present ctx args "Wrist" || present ctx args "LockAxis4"; Some (Returned None)
+  | "maxrobspeed" -> Some (Returned (Some (V.num st.robot.max_tcp_speed)))
+  | "cspeedoverride" -> Some (Returned (Some (V.num 100.)))
+  | "ctool" -> Some (Returned (Some (match active_tool st with
+      | Some t -> V.copy t
+      | None -> V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                            V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |])))
+  | "cwobj" -> Some (Returned (Some (if st.wobj == dummy then
+                                       V.Record [| V.Bool false; V.Bool true; V.String "";
+                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
+                                     else V.copy st.wobj)))
+  | "offs" -> (
+      match get "Point", num ctx args "XOffset", num ctx args "YOffset", num ctx args "ZOffset" with
+      | Some p, Some x, Some y, Some z ->
+          Some (Returned (Some (with_pose p (G.offs (robtarget_of p).pose x y z))))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "reltool" -> (
+      match get "Point", num ctx args "Dx", num ctx args "Dy", num ctx args "Dz" with
+      | Some p, Some x, Some y, Some z ->
+          let r = G.rel_tool (robtarget_of p).pose x y z ?rx:(num ctx args "Rx") ?ry:(num ctx args "Ry")
+              ?rz:(num ctx args "Rz") () in
+          Some (Returned (Some (with_pose p r)))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "mirpos" -> (
+      match get "Point", get "MirPlane" with
+      | Some p, Some plane ->
+          let plane = MM.Frames.object_frame (wobj_of plane) in
+          let wobj = Option.map (fun o -> MM.Frames.object_frame (wobj_of o)) (get "WObj") in
+          let r = G.mir_pos ~point:(robtarget_of p).pose ~plane ?wobj ~mir_y:(present ctx args "MirY") () in
+          Some (Returned (Some (with_pose p r)))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "cjointt" -> Some (match current_joints ctx st with
+      | Ok q -> Returned (Some (jointtarget_value q))
+      | Error e -> fail ctx name e)
+  | "crobt" | "cpos" -> (
+      (* Without \Tool and \WObj: the active ones, those of the last move. *)
+      let tool = match get "Tool", active_tool st with
+        | Some t, _ | None, Some t -> tool_of t | None, None -> D.tool0 in
+      let wobj = match get "WObj" with
+        | Some o -> wobj_of o | None -> if st.wobj == dummy then D.wobj0 else wobj_of st.wobj in
+      Some (match current_joints ctx st with
+          | Error e -> fail ctx name e
+          | Ok joints ->
+              if lname = "crobt" then result_pose ctx name (Result.map robtarget_value (MM.Frames.c_rob_t st.kin ~joints tool wobj))
+              else result_pose ctx name (Result.map pos_value (MM.Frames.c_pos st.kin ~joints tool wobj))))
+  | "calcrobt" -> (
+      match get "Joint_target", get "Tool" with
+      | Some j, Some tool ->
+          Some (result_pose ctx name (Result.map robtarget_value
+                                        (MM.Frames.calc_rob_t st.kin (joints_of_jointtarget j) (tool_of tool) (wobj_data (get "WObj")))))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "calcjointt" -> (
+      match get "Rob_target", get "Tool" with
+      | Some p, Some tool -> (
+          match MM.Frames.calc_joint_t st.kin (robtarget_of p) (tool_of tool) (wobj_data (get "WObj")) with
+          | Ok q -> Some (Returned (Some (jointtarget_value q)))
+          | Error e -> (
+              match arg ctx args "ErrorNumber", MM.Motion_error.errnum e with
+              | Location (box, i, _), Some errname ->
+                  (* \ErrorNumber: the error is stored, not raised; the axes are undefined (9E9). *)
+                  box.(i) <- V.num (float_of_int (ctx.error_number errname));
+                  Some (Returned (Some (jointtarget_value (Array.make 6 9e9))))
+              | _ -> Some (fail ctx name e)))
+      | _ -> Some (Failed "ERR_ARGVALERR"))
+  | _ -> None
+
+let call ctx st name args =
+  try call_unguarded ctx st name args with Illegal_quaternion -> Some (Failed "ERR_ILLQUAT")

@@ -1,0 +1,77 @@
+(** The installed routines of motion (lib/typing/installed/motion.sys; ABB's RAPID Instructions,
+    Functions and Data types) as primitives of the machine: the moves hand their segments to the
+    run's planner ({!Rapid_motion_model.Planner}) and the program pointer waits, on the virtual
+    clock and open to interrupts, until the planner's ready time; the position functions read the
+    robot where it is at the current virtual time (doc/motion.md, "Moves in the machine"). *)
+
+(** What the motion of a run makes observable, each with its virtual time (seconds). *)
+type event =
+  | Segment_planned of {
+      time : float;                      (** when the move instruction ran *)
+      id : int;
+      instruction : string;              (** MoveL, MoveJ, MoveC, MoveAbsJ, MoveLDO, MoveJDO, SearchL *)
+      label : string;                    (** the target's data object, or [*] *)
+      zone : string;                     (** [fine], or the zonedata's object, or [*] *)
+      target : Rapid_motion_model.Geom.pose;  (** the programmed TCP pose, base frame *)
+      joints : float array;              (** the axis angles there, degrees *)
+      ready_time : float;                (** when the program pointer may go on *)
+      start_time : float;                (** when the robot begins the move, as planned now *)
+      end_time : float;                  (** when it leaves it (the corner's start for a fly-by) *)
+    }
+  | Segment_started of { time : float; id : int; label : string }
+  | Segment_ended of { time : float; id : int; label : string }
+  | Segment_dropped of { time : float; id : int; label : string }  (** ClearPath *)
+  | Path_command of { time : float; command : string }
+      (** StopMove, StartMove, ClearPath, StorePath, RestoPath, ProcerrRecovery, collision,
+          SearchL stop *)
+  | Motion_warning of { time : float; text : string }  (** corner path failure *)
+
+val event_to_string : event -> string
+(** One line, for the trace and test messages. *)
+
+val event_time : event -> float
+
+type state
+(** The motion of one run: the robot, its planner, the active tool and work object. *)
+
+val create : ?robot:Rapid_motion_model.Robot.t -> unit -> state
+(** The robot (default the IRB 120) standing at axis angles 0 from time 0. *)
+
+val robot_data : state -> Ir.program -> Ir.program
+(** The installed data that depend on the robot: vmax's v_tcp is its maximum TCP speed. *)
+
+val planner : state -> Rapid_motion_model.Planner.t
+val robot : state -> Rapid_motion_model.Robot.t
+
+val call : Primitive.context -> state -> string -> Primitive.argument array -> Primitive.outcome option
+(** [None]: not a routine of motion (WaitTime and WaitUntil without \InPos included). *)
+
+val modelled : string -> bool
+
+val drain : state -> Rapid_controller.World.t -> event list
+(** What happened since the last call: moves planned, moves the clock has seen begin and end;
+    outputs of MoveLDO/MoveJDO are scheduled in the world once their point's time is known. *)
+
+val finish : state -> event list
+(** At the end of the task: the rest of the motion the robot still does, with its times. *)
+
+val take_new_move : state -> int option
+(** The move the last primitive planned, once: the machine records which routine activation
+    executed it, to raise its asynchronous errors there (§7.4, §7.6). *)
+
+val take_org_error : state -> (string * int option) option
+(** An asynchronous error to raise now in the routine of a move (ProcerrRecovery
+    \SyncOrgMoveInst, a collision): its ERR_ name and the move the robot executed, once. Errors
+    of \SyncLastMoveInst are raised by the move instructions themselves. *)
+
+val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
+(** A wait an error or a long jump leaves (§7.2): if it is a move instruction's, the move is
+    cancelled and the rest of the path dropped (ClearPath); any other wait is no concern. *)
+
+val move_waits_in_progress : state -> int
+(** How many move instructions the program pointer waits in (a trap's move above the main one's
+    makes two); 0 when the task has ended. *)
+
+val take_first_poll : state -> float option
+(** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot moves
+    (once). *)

@@ -1,0 +1,59 @@
+MODULE user_module
+! @format 3
+! @section 7.4
+! @expect ok
+! @statement-time 0
+! @io io/procerr.io
+! @description The example of section 7.4 with ProcerrRecovery \\SyncOrgMoveInst: the error belongs to the first MoveL, whose path the robot was on, and is raised in my_process at once (4.85 s) while the program pointer waits in write_log: write_log is abandoned (its UNDO runs, not its error handler, R-7.4-b), my_process handles the error; its RETRY runs the call of write_log again (R-7.4-b), then the second MoveL, at 5.35 s: the robot, restarted at once, had to begin the corner at p2 before that, so p2 became a stop point (Z-failure, reached at 5 s) and the second move runs from 5.35 s to 6.35 s.
+! @output write_log at 4800
+! @output write_log abandoned
+! @output ERR_PATH_STOP in my_process at 4850
+! @output write_log at 4850
+! @output done at 6350
+  CONST robtarget p1 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p2 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  VAR intnum proc_sup_int;
+  VAR clock clk;
+  PROC main()
+    MoveJ p1, v1000, fine, tool0;
+    ClkStart clk;
+    my_process;
+    TPWrite "done at " \Num:=Round(1000 * ClkRead(clk));
+  ENDPROC
+  PROC my_process()
+    my_proc_on;
+    MoveL p2, v100, z10, tool0;
+    write_log;
+    MoveL Offs(p2, 0, 0, 100), v100, fine, tool0;
+    my_proc_off;
+  ERROR
+    IF ERRNO = ERR_PATH_STOP THEN
+      TPWrite "ERR_PATH_STOP in my_process at " \Num:=Round(1000 * ClkRead(clk));
+      my_proc_on;
+      StartMove;
+      RETRY;
+    ENDIF
+  ENDPROC
+  PROC write_log()
+    TPWrite "write_log at " \Num:=Round(1000 * ClkRead(clk));
+    WaitTime 0.5;
+  ERROR
+    TPWrite "not this handler";
+  UNDO
+    TPWrite "write_log abandoned";
+  ENDPROC
+  TRAP iprocfail
+    my_proc_off;
+    ProcerrRecovery \SyncOrgMoveInst;
+    RETURN;
+  ENDTRAP
+  PROC my_proc_on()
+    SetDO do_myproc, 1;
+    CONNECT proc_sup_int WITH iprocfail;
+    ISignalDI di_proc_sup, 1, proc_sup_int;
+  ENDPROC
+  PROC my_proc_off()
+    SetDO do_myproc, 0;
+    IDelete proc_sup_int;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+run --robot bad.robot motion-cell.mod

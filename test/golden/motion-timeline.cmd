@@ -1,0 +1,1 @@
+motion --io motion-cell.io --statement-time 0 --timeline /dev/stdout motion-cell.mod

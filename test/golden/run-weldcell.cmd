@@ -1,0 +1,1 @@
+run --io ../../examples/weldcell.io ../../examples/weldcell.mod

@@ -1,0 +1,2 @@
+# The signals of CadPolishCover.mod (format: doc/controller.md).
+signal doPolisherOn do
