@@ -223,7 +223,12 @@ let exit_stopped = 1
 let exit_exhausted = 3
 let exit_unsupported = 4
 
-let report_load_failure = function
+let report_load_failure ?(json = false) failure =
+  (* With --json, a program refused before it runs still gives an event stream: the start line
+     and an end object naming the first error (doc/oracle.md). *)
+  if json then Option.iter (fun j -> List.iter (fun l -> print_endline (Yojson.Safe.to_string l)) j)
+      (Verdict.stream_of_failure failure);
+  match failure with
   | Rapid_semantics.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
   | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
@@ -271,7 +276,7 @@ let event_json (e : M.event) : Yojson.Safe.t =
       `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
   | Motion m -> Motion_json.event m
 
-let schema = "rapid-sem/1"
+let schema = Verdict.schema
 
 let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
   let base kind extra = `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
@@ -343,7 +348,7 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
-let start_machine ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
@@ -352,7 +357,7 @@ let start_machine ?robot files entry (allow_unknown, stub_unmodelled) max_depth 
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
   match Rapid_semantics.Session.load ~allow_unknown ~io files with
-  | Error f -> report_load_failure f
+  | Error f -> report_load_failure ?json f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       Option.iter prerr_endline loaded.unknown_summary;
@@ -371,7 +376,7 @@ let run_cmd =
   let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ~json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -515,9 +520,19 @@ let trace_cmd =
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
   let verbose = Arg.(value & flag & info [ "verbose"; "v" ] ~doc:"List passing cases too.") in
-  let run dir verbose =
+  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD"
+                    ~doc:"Run the suite against another implementation through the oracle's protocol \
+                          (doc/oracle.md): $(b,{mode}) is parse, check or run, $(b,{options}) the \
+                          case's options, $(b,{files}) its files.") in
+  let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
+  let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
+  let run dir verbose impl junit report =
     guard @@ fun () ->
-    let _, failed = Rapid_conformance.Spec_runner.run ~verbose Format.std_formatter dir in
+    let _, failed = match impl with
+      | None -> Rapid_conformance.Spec_runner.run ~verbose Format.std_formatter dir
+      | Some template ->
+          Unix.putenv "RAPID_SEM" Sys.executable_name;
+          Rapid_conformance.Impl_runner.run ~verbose ?junit ?json:report ~template Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
   let doc = "run the conformance suite" in
@@ -529,7 +544,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)
@@ -552,7 +567,8 @@ let () =
                                                  Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
                                                      guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
                                                    ~finish ~common_run_args ~controller_args;
-                                                 Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]) in
+                                                 Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd;
+                                                 Verdict.cmd ~read_io ~io_arg ]) in
   (* A command line that cannot be read (an unknown option, a negative limit) is refused like a
      static error, with cmdliner's message saying what is wrong. *)
   exit (if status = Cmd.Exit.cli_error then exit_static_error else status)

@@ -1,0 +1,200 @@
+module Stream = Rapid_oracle.Event_stream
+
+type result = { case : Spec_case.t; passed : bool; skipped : bool; detail : string }
+
+let mode (case : Spec_case.t) =
+  match case.format with "1" -> "parse" | "2" -> "check" | _ -> "run"
+
+let options (case : Spec_case.t) =
+  let run = case.run in
+  List.concat [
+    (if case.strict then [ "--strict" ] else []);
+    (if case.allow_unknown then [ "--allow-unknown" ] else []);
+    (if case.stub_unmodelled then [ "--stub-unmodelled" ] else []);
+    (match run with Some { io = Some f; _ } -> [ "--io"; Filename.quote f ] | _ -> []);
+    (match run with Some { entry; _ } when entry <> "main" -> [ "--entry"; entry ] | _ -> []);
+    (match run with Some { retry_limit = Some n; _ } -> [ "--retry-limit"; string_of_int n ] | _ -> []);
+    (match run with Some { statement_time = Some t; _ } -> [ "--statement-time"; Printf.sprintf "%g" t ] | _ -> []);
+    (match run with Some { max_time = Some t; _ } -> [ "--max-time"; Printf.sprintf "%g" t ] | _ -> []);
+  ]
+
+let replace_all ~sub ~by s =
+  let n = String.length sub in
+  let b = Buffer.create (String.length s) in
+  let rec go i =
+    if i > String.length s - n then Buffer.add_string b (String.sub s i (String.length s - i))
+    else if String.sub s i n = sub then (Buffer.add_string b by; go (i + n))
+    else (Buffer.add_char b s.[i]; go (i + 1))
+  in
+  go 0; Buffer.contents b
+
+let command ~template (case : Spec_case.t) =
+  let with_mode = replace_all ~sub:"{mode}" ~by:(mode case)
+      (replace_all ~sub:"{options}" ~by:(String.concat " " (options case)) template) in
+  Rapid_oracle.Implementation.command_line ~template:with_mode ~files:case.files
+
+let field name = function `Assoc f -> List.assoc_opt name f | _ -> None
+let string_field name j = match field name j with Some (`String s) -> Some s | _ -> None
+let int_field name j = match field name j with Some (`Int n) -> Some n | _ -> None
+
+let place j =
+  match field "at" j with
+  | Some at -> (
+      match int_field "line" at, int_field "col" at with
+      | Some l, Some c -> Some (Filename.basename (Option.value (string_field "file" at) ~default:""), l, c)
+      | _ -> None)
+  | None -> None
+
+let show_place = function Some (f, l, c) -> Printf.sprintf "%s:%d:%d" f l c | None -> "(no place)"
+
+(* The exit status of spec/README.md's format 3, from an end object. *)
+let status_of outcome =
+  match outcome with
+  | "ended" -> 0 | "stopped" -> 1 | "refused" -> 2 | "exhausted" | "deadlock" | "running" -> 3
+  | "unsupported" -> 4 | _ -> 125
+
+let judge (case : Spec_case.t) (events : Stream.event list) =
+  let ends = List.filter (fun e -> Stream.kind e = "end") events in
+  match ends with
+  | [] -> Error "the implementation wrote no end object"
+  | _ :: _ :: _ -> Error "the implementation wrote more than one end object"
+  | [ last ] -> (
+      let outcome = Option.value (string_field "outcome" last) ~default:"" in
+      match case.expectation, case.run with
+      | Some (Refused { error_class; file; line; col }), _ ->
+          let got_class = Option.value (string_field "class" last) ~default:"" in
+          let got = place last in
+          let file_ok = match file, got with Some f, Some (g, _, _) -> f = g | None, _ -> true | _ -> false in
+          if outcome = "refused" && got_class = error_class && file_ok
+             && (match got with Some (_, l, c) -> l = line && c = col | None -> false)
+          then Ok ()
+          else Error (Printf.sprintf "expected %s at %d:%d; got %s%s" error_class line col outcome
+                        (if outcome = "refused" then Printf.sprintf " %s at %s" got_class (show_place got) else ""))
+      | Some Accepted, None ->
+          if outcome = "accepted" || outcome = "ended" then Ok ()
+          else Error (Printf.sprintf "expected the case to be accepted; got %s %s" outcome
+                        (Option.value (string_field "class" last) ~default:""))
+      | Some Accepted, Some run ->
+          let output = List.filter_map (fun e ->
+              if Stream.kind e = "output" then string_field "text" e else None) events in
+          let status = status_of outcome in
+          let problems =
+            (if output <> run.outputs then
+               [ Printf.sprintf "output %s, expected %s"
+                   (String.concat " | " (List.map (Printf.sprintf "%S") output))
+                   (String.concat " | " (List.map (Printf.sprintf "%S") run.outputs)) ] else [])
+            @ (if status <> run.exit_status then [ Printf.sprintf "exit %d (%s), expected %d" status outcome run.exit_status ] else [])
+            @ (match run.error with
+               | Some (name, l, c) -> (
+                   let got_name = Option.value (string_field "name" last) ~default:"" in
+                   match place last with
+                   | Some (f, gl, gc) when got_name = name && gl = l && gc = c
+                                           && (match run.error_file with Some ef -> ef = f | None -> true) -> []
+                   | got -> [ Printf.sprintf "error %s at %s, expected %s %d:%d" got_name (show_place got) name l c ])
+               | None -> [])
+          in
+          if problems = [] then Ok () else Error (String.concat "; " problems)
+      | None, _ -> Error "the case has no expectation")
+
+let run_case ?(timeout = 60.) ~template (case : Spec_case.t) =
+  if not (List.mem case.format Spec_case.known_formats) then
+    { case; passed = false; skipped = true; detail = "format " ^ case.format }
+  else if case.problems <> [] then
+    { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
+  else
+    let cmd = command ~template case in
+    match Rapid_oracle.Implementation.run ~timeout ~template:cmd [] with
+    | exception (Unix.Unix_error (e, _, _)) -> { case; passed = false; skipped = false; detail = Unix.error_message e }
+    | r -> (
+        match r.status with
+        | `Timed_out -> { case; passed = false; skipped = false; detail = "the implementation did not finish in time" }
+        | `Signaled n -> { case; passed = false; skipped = false; detail = Printf.sprintf "killed by signal %d" n }
+        | `Exited _ -> (
+            match Stream.parse r.stdout with
+            | Error m -> { case; passed = false; skipped = false; detail = "not an event stream: " ^ m }
+            | Ok s -> (
+                match judge case s.events with
+                | Ok () -> { case; passed = true; skipped = false; detail = "" }
+                | Error m -> { case; passed = false; skipped = false; detail = m })))
+
+let xml_escape s =
+  let b = Buffer.create (String.length s) in
+  String.iter (function
+      | '<' -> Buffer.add_string b "&lt;" | '>' -> Buffer.add_string b "&gt;"
+      | '&' -> Buffer.add_string b "&amp;" | '"' -> Buffer.add_string b "&quot;"
+      | c when Char.code c < 32 && c <> '\n' && c <> '\t' -> Buffer.add_char b ' '
+      | c -> Buffer.add_char b c) s;
+  Buffer.contents b
+
+let write path text =
+  let oc = open_out_bin path in
+  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+
+(* JUnit XML: one test suite per section (a case under its first section), one test case per
+   case, a failure element with the detail. *)
+let junit_xml results =
+  let sections = Hashtbl.create 32 in
+  List.iter (fun r ->
+      let s = match r.case.Spec_case.sections with s :: _ -> s | [] -> "(none)" in
+      Hashtbl.replace sections s (r :: Option.value (Hashtbl.find_opt sections s) ~default:[])) results;
+  let names = List.sort compare (Hashtbl.fold (fun k _ acc -> k :: acc) sections []) in
+  let b = Buffer.create 4096 in
+  Buffer.add_string b "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  let failed l = List.length (List.filter (fun r -> not r.passed && not r.skipped) l) in
+  let skipped l = List.length (List.filter (fun r -> r.skipped) l) in
+  Printf.bprintf b "<testsuites name=\"rapid-sem conformance\" tests=\"%d\" failures=\"%d\" skipped=\"%d\">\n"
+    (List.length results) (failed results) (skipped results);
+  List.iter (fun s ->
+      let rs = List.rev (Hashtbl.find sections s) in
+      Printf.bprintf b "  <testsuite name=\"§%s\" tests=\"%d\" failures=\"%d\" skipped=\"%d\">\n" (xml_escape s)
+        (List.length rs) (failed rs) (skipped rs);
+      List.iter (fun r ->
+          Printf.bprintf b "    <testcase classname=\"spec.§%s\" name=\"%s\"" (xml_escape s) (xml_escape r.case.Spec_case.path);
+          if r.passed then Buffer.add_string b "/>\n"
+          else if r.skipped then Printf.bprintf b "><skipped message=\"%s\"/></testcase>\n" (xml_escape r.detail)
+          else Printf.bprintf b "><failure message=\"%s\"/></testcase>\n" (xml_escape r.detail)) rs;
+      Buffer.add_string b "  </testsuite>\n") names;
+  Buffer.add_string b "</testsuites>\n";
+  Buffer.contents b
+
+let json_report results : Yojson.Safe.t =
+  `Assoc [
+    ("schema", `String "rapid-sem/conformance/1");
+    ("passed", `Int (List.length (List.filter (fun r -> r.passed) results)));
+    ("failed", `Int (List.length (List.filter (fun r -> not r.passed && not r.skipped) results)));
+    ("skipped", `Int (List.length (List.filter (fun r -> r.skipped) results)));
+    ("cases", `List (List.map (fun r ->
+         `Assoc [ ("case", `String r.case.Spec_case.path);
+                  ("sections", `List (List.map (fun s -> `String s) r.case.sections));
+                  ("verdict", `String (if r.passed then "passed" else if r.skipped then "skipped" else "failed"));
+                  ("detail", `String r.detail) ]) results)) ]
+
+let run ?(verbose = false) ?timeout ?junit ?json ~template out dir =
+  let paths, errors = Spec_runner.collect dir in
+  List.iter (fun (path, m) -> Format.fprintf out "ERROR %s: %s@." path m) errors;
+  let results = List.map (fun p -> run_case ?timeout ~template (Spec_case.read p)) paths in
+  List.iter (fun r ->
+      if verbose || not r.passed then
+        Format.fprintf out "%s %s%s@." (if r.passed then "PASS" else if r.skipped then "SKIP" else "FAIL")
+          r.case.Spec_case.path (if r.detail = "" then "" else ": " ^ r.detail)) results;
+  let by_section = Hashtbl.create 64 in
+  List.iter (fun r ->
+      if not r.skipped then
+        List.iter (fun s ->
+            let p, f = Option.value (Hashtbl.find_opt by_section s) ~default:(0, 0) in
+            Hashtbl.replace by_section s (if r.passed then (p + 1, f) else (p, f + 1)))
+          (if r.case.sections = [] then [ "(none)" ] else r.case.sections)) results;
+  (* Sections sort by their numbers: 2.5 before 2.10 before 10.1. *)
+  let key s = List.map (fun p -> Option.value (int_of_string_opt p) ~default:max_int) (String.split_on_char '.' s) in
+  let sections = List.sort (fun a b -> compare (key a, a) (key b, b))
+      (Hashtbl.fold (fun s _ acc -> s :: acc) by_section []) in
+  Format.fprintf out "@.%-10s %7s %7s@." "section" "passed" "failed";
+  List.iter (fun s -> let p, f = Hashtbl.find by_section s in Format.fprintf out "%-10s %7d %7d@." s p f) sections;
+  Option.iter (fun path -> write path (junit_xml results)) junit;
+  Option.iter (fun path -> write path (Yojson.Safe.pretty_to_string (json_report results) ^ "\n")) json;
+  let passed = List.length (List.filter (fun r -> r.passed) results) in
+  let failed = List.length (List.filter (fun r -> not r.passed && not r.skipped) results) + List.length errors in
+  let skipped = List.length (List.filter (fun r -> r.skipped) results) in
+  if skipped = 0 then Format.fprintf out "@.%d passed, %d failed@." passed failed
+  else Format.fprintf out "@.%d passed, %d failed, %d skipped@." passed failed skipped;
+  (passed, failed)

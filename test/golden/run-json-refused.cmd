@@ -1,0 +1,1 @@
+run --json verdict-bad.mod

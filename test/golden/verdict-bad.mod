@@ -1,0 +1,5 @@
+MODULE bad
+  PROC main()
+    x := 1;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+verdict --stage parse ../../spec/02-lexical/05-hex-bad-digit.mod
