@@ -64,7 +64,8 @@ let guard f =
 
 (* The controller around the run (doc/controller.md): --io, --statement-time, --max-time,
    --epoch. *)
-type controller_options = { io : string option; statement_time : float; max_time : float; epoch : float }
+type controller_options = { io : string option; statement_time : float; max_time : float; epoch : float;
+                            services : Services_args.t }
 
 let io_arg =
   Arg.(value & opt (some string) None & info [ "io" ] ~docv:"FILE"
@@ -97,8 +98,8 @@ let controller_args =
                         ~doc:"Stop the run when its virtual time goes beyond SECONDS (exit status 3).") in
   let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default 2024-01-01T00:00:00).") in
-  Term.(const (fun io statement_time max_time epoch -> { io; statement_time; max_time; epoch })
-        $ io_arg $ statement_time $ max_time $ epoch)
+  Term.(const (fun io statement_time max_time epoch services -> { io; statement_time; max_time; epoch; services })
+        $ io_arg $ statement_time $ max_time $ epoch $ Services_args.term)
 
 let read_io = function
   | None -> Ok Rapid_controller.Io_config.empty
@@ -358,6 +359,9 @@ let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_l
       let retry_limit, max_memory = retry_limit in
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
+      match Services_args.install controller.services world with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok () ->
       match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled
               loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error

@@ -67,6 +67,7 @@ type t = {
   mutable data : error_datum list;              (* trapdata objects, newest first *)
   clocks : (int, clock) Hashtbl.t;
   mutable observations : observation list;      (* newest first *)
+  mutable services : Services.t option;         (* files, sockets, text resources: made on first use *)
 }
 
 let schedule w time action =
@@ -86,7 +87,8 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
-            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [] } in
+            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
+            services = None } in
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in
   Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
@@ -97,6 +99,12 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   w
 
 let now w = to_seconds w.now
+
+let set_services w s = w.services <- Some s
+let services w =
+  match w.services with
+  | Some s -> s
+  | None -> let s = Services.create () in w.services <- Some s; s
 let max_time w = w.max_time
 let epoch w = w.epoch
 

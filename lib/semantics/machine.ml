@@ -422,7 +422,9 @@ let call_primitive cfg (cs : call_state) name =
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
   let result = match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
-    | None -> Primitive.call ctx name cs.primitive_args in
+    | None -> match Service_primitives.call ctx name cs.primitive_args with
+      | Some r -> r
+      | None -> Primitive.call ctx name cs.primitive_args in
   match result with
   | Primitive.Wait wait ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
