@@ -18,4 +18,5 @@ let () =
       Test_installed.suite;
       Test_check_output.suite;
       Test_robustness.suite;
+      Test_services.suite;
     ]

@@ -1,0 +1,114 @@
+(* The controller's services end to end (doc/services.md): a RAPID command server under
+   rapid-sem run, and a client over the loopback; the sandbox's refusal of paths that lead
+   out. *)
+
+let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe"
+
+let read_file path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let write_file path text =
+  let oc = open_out_bin path in
+  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+
+let replace ~pattern ~by s = Str.global_replace (Str.regexp_string pattern) by s
+
+(* A port nobody listens on now: the kernel's choice for a socket bound to port 0. *)
+let free_port () =
+  let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+  Fun.protect ~finally:(fun () -> Unix.close s) (fun () ->
+      Unix.bind s (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
+      match Unix.getsockname s with Unix.ADDR_INET (_, p) -> p | _ -> assert false)
+
+let temp_dir () =
+  let d = Filename.temp_file "rapid-sem-services" "" in
+  Sys.remove d; Unix.mkdir d 0o700; d
+
+(* Waits at most [seconds] for the process; kills it when it takes longer. *)
+let wait_bounded pid seconds =
+  let deadline = Unix.gettimeofday () +. seconds in
+  let rec go () =
+    match Unix.waitpid [ Unix.WNOHANG ] pid with
+    | 0, _ when Unix.gettimeofday () < deadline -> Unix.sleepf 0.05; go ()
+    | 0, _ -> Unix.kill pid Sys.sigkill; ignore (Unix.waitpid [] pid); None
+    | _, status -> Some status in
+  go ()
+
+let connect_retrying port =
+  let deadline = Unix.gettimeofday () +. 10. in
+  let rec go () =
+    let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+    match Unix.connect s (Unix.ADDR_INET (Unix.inet_addr_loopback, port)) with
+    | () -> s
+    | exception Unix.Unix_error (Unix.ECONNREFUSED, _, _) when Unix.gettimeofday () < deadline ->
+        Unix.close s; Unix.sleepf 0.05; go () in
+  go ()
+
+(* One line of the server's answer, up to CR LF; the client's reads are bounded in time. *)
+let read_line s =
+  let b = Buffer.create 16 and c = Bytes.create 1 in
+  let rec go () =
+    match Unix.select [ s ] [] [] 10. with
+    | [], _, _ -> Alcotest.fail "no answer from the server within 10 s"
+    | _ ->
+        if Unix.read s c 0 1 = 0 then Buffer.contents b
+        else if Bytes.get c 0 = '\n' then Buffer.contents b
+        else (if Bytes.get c 0 <> '\r' then Buffer.add_bytes b c; go ()) in
+  go ()
+
+let send s text = ignore (Unix.write_substring s text 0 (String.length text))
+
+let command_server () =
+  let dir = temp_dir () in
+  let port = free_port () in
+  let source = replace ~pattern:"@PORT@" ~by:(string_of_int port) (read_file "services/CommandServer.mod") in
+  let module_file = Filename.concat dir "CommandServer.mod" and out = Filename.concat dir "out.txt" in
+  write_file module_file source;
+  let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
+  let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+  let pid = Unix.create_process binary
+      [| binary; "run"; "--fs"; Filename.concat dir "fs"; "--map-address"; "192.168.125.1=127.0.0.1"; module_file |]
+      devnull fd_out fd_out in
+  Unix.close fd_out; Unix.close devnull;
+  let answers =
+    match connect_retrying port with
+    | s ->
+        Fun.protect ~finally:(fun () -> Unix.close s) (fun () ->
+            let ready = read_line s in
+            ready :: List.map (fun c -> send s c; read_line s) [ "PING"; "ADD 2 3"; "ADD 40 -2"; "HELLO"; "QUIT" ])
+    | exception e -> ignore (wait_bounded pid 0.); raise e in
+  let status = wait_bounded pid 10. in
+  Alcotest.(check (list string)) "answers" [ "READY"; "PONG"; "OK 5"; "OK 38"; "ERR unknown command"; "BYE" ] answers;
+  (match status with
+   | Some (Unix.WEXITED 0) -> ()
+   | Some _ -> Alcotest.fail ("the server did not end with status 0: " ^ read_file out)
+   | None -> Alcotest.fail "the server did not end within 10 s");
+  Alcotest.(check string) "server output"
+    "Command client: 127.0.0.1\nStatus after close: 5\nCommand server stopped after commands: 5\n" (read_file out);
+  ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))
+
+(* A symbolic link inside the sandbox that leads out of it is refused, as are .. and host
+   paths; a link that stays inside is followed. *)
+let escapes () =
+  let module FS = Rapid_controller.File_sandbox in
+  let outside = temp_dir () in
+  let sandbox = FS.temporary () in
+  Fun.protect ~finally:(fun () -> FS.remove sandbox; ignore (Sys.command ("rm -rf " ^ Filename.quote outside))) (fun () ->
+      write_file (Filename.concat outside "secret.txt") "secret";
+      (match FS.resolve sandbox "HOME:/a.txt" with Ok _ -> () | Error e -> Alcotest.fail e);
+      let home = Filename.concat (FS.root sandbox) "HOME" in
+      Unix.symlink outside (Filename.concat home "out");
+      Unix.mkdir (Filename.concat home "real") 0o755;
+      Unix.symlink (Filename.concat home "real") (Filename.concat home "in");
+      let refused p = match FS.resolve sandbox p with Error _ -> true | Ok _ -> false in
+      List.iter (fun p -> Alcotest.(check bool) p true (refused p))
+        [ "HOME:/out/secret.txt"; "HOME:/out"; "HOME:/out/new.txt"; "HOME:/../x"; "TEMP:/a/../../b";
+          "/etc/passwd"; "C:/x"; "HOME:/a\000b" ];
+      List.iter (fun p -> Alcotest.(check bool) p false (refused p))
+        [ "HOME:/in/file.txt"; "home:x.txt"; "RAMDISK:"; "DISKHOME:/a/b"; "REMOVABLE:/x"; "plain.txt" ])
+
+let suite = ("services", [
+    Alcotest.test_case "command server over the loopback" `Quick command_server;
+    Alcotest.test_case "sandbox escapes refused" `Quick escapes;
+  ])
