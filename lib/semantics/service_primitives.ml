@@ -87,7 +87,8 @@ let read_field ic ~delims ~discard =
       go ();
       Some (Buffer.contents b)
 
-let delimiters ctx args = match str ctx args "Delim" with Some d -> d | None -> "\n"
+(* \Delim adds its characters to the line feed, which always ends a field (R-13-k). *)
+let delimiters ctx args = match str ctx args "Delim" with Some d -> "\n" ^ d | None -> "\n"
 
 let read_byte ic = try Some (input_byte ic) with End_of_file -> None
 
@@ -383,10 +384,10 @@ let call (ctx : context) name args =
         match decode_any rest 0 with
         | Error e -> seek_in ic start; Failed e
         | Ok (v, used) ->
-            seek_in ic (start + used);
+            (* Data of another type are not read: the next ReadAnyBin sees them again. *)
             match value ctx args "Data" with
-            | Some target when same_shape target v -> store ctx args "Data" v; done_
-            | _ -> Failed "ERR_RANYBIN_CHK")
+            | Some target when same_shape target v -> seek_in ic (start + used); store ctx args "Data" v; done_
+            | _ -> seek_in ic start; Failed "ERR_RANYBIN_CHK")
   | "readstr" ->
       Some (
         let* ic = device_input ctx args in
