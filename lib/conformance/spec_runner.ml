@@ -43,6 +43,7 @@ let run_program case (run : Spec_case.run) ~io program =
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
   (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
   let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
   let services = Rapid_controller.Services.create ~sandbox () in
   Rapid_controller.World.set_services world services;
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in

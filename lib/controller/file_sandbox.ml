@@ -79,3 +79,20 @@ let rec remove_tree path =
   | exception Unix.Unix_error _ -> ()
 
 let remove t = remove_tree t.root
+
+let rec copy_tree src dst =
+  if Sys.is_directory src then begin
+    make_dir dst;
+    Array.iter (fun n -> copy_tree (Filename.concat src n) (Filename.concat dst n)) (Sys.readdir src)
+  end else begin
+    let ic = open_in_bin src in
+    let data = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
+    let oc = open_out_bin dst in
+    Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc data)
+  end
+
+let seed t ~device src =
+  ensure t;
+  match List.assoc_opt (String.uppercase_ascii device) devices with
+  | Some folder -> copy_tree src (Filename.concat t.root folder)
+  | None -> invalid_arg ("File_sandbox.seed: no device " ^ device)

@@ -26,3 +26,7 @@ val temporary : unit -> t
 
 val remove : t -> unit
 (** The sandbox's folder and everything in it; symbolic links are removed, not followed. *)
+
+val seed : t -> device:string -> string -> unit
+(** Copies a host folder's files and folders into the device's folder (a conformance case's
+    [! @home]). *)

@@ -8,16 +8,18 @@ type t = {
   files : (int, file) Hashtbl.t;
   dirs : (int, string list ref) Hashtbl.t;
   raw : (int, Bytes.t * int ref) Hashtbl.t;
+  texts : Text_tables.t;
   mutable next : int;
 }
 
 let create ?sandbox ?sockets () =
   { sandbox = (match sandbox with Some s -> s | None -> File_sandbox.create File_sandbox.default_root);
     sockets = (match sockets with Some s -> s | None -> Sockets.create ());
-    files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; next = 1 }
+    files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; texts = Text_tables.create (); next = 1 }
 
 let sandbox t = t.sandbox
 let sockets t = t.sockets
+let texts t = t.texts
 let max_files = 32
 
 let fresh t = let id = t.next in t.next <- t.next + 1; id

@@ -10,6 +10,8 @@ val create : ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> unit -> t
 
 val sandbox : t -> File_sandbox.t
 val sockets : t -> Sockets.t
+val texts : t -> Text_tables.t
+(** The text tables installed in the run (chapter 15). *)
 
 val max_files : int
 (** Files open at once: 32 (doc/rulings.md R-13-k); one more Open raises ERR_FILEOPEN. *)

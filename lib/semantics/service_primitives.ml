@@ -153,6 +153,14 @@ let rec same_shape a b = match a, b with
       Array.length x = Array.length y && Array.for_all2 same_shape x y
   | _ -> false
 
+module In_channel_text = struct
+  let read host =
+    match open_in_bin host with
+    | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+        try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
+    | exception Sys_error _ -> None
+end
+
 let file_kind host =
   match Unix.stat host with
   | st -> Some st.Unix.st_kind
@@ -311,6 +319,7 @@ let names = [
   "SocketCreate"; "SocketConnect"; "SocketBind"; "SocketListen"; "SocketAccept"; "SocketSend";
   "SocketSendTo"; "SocketReceiveFrom"; "SocketPeek"; "SocketReceive"; "SocketClose"; "SocketGetStatus";
   "ClearRawBytes"; "CopyRawBytes"; "RawBytesLen"; "PackRawBytes"; "UnpackRawBytes";
+  "TextTabInstall"; "TextTabGet"; "TextGet"; "TextTabFreeToUse";
 ]
 
 let modelled name = List.exists (same name) names
@@ -598,4 +607,29 @@ let call (ctx : context) name args =
   | "socketclose" -> K.close (sockets ctx) (object_id ctx args "Socket"); Some done_
   | "socketgetstatus" ->
       Some (ret (V.num (float_of_int (K.status_number (K.status (sockets ctx) (object_id ctx args "Socket"))))))
+  (* ------------------------------------------------------------ text resources (ch. 15) *)
+  | "texttabinstall" ->
+      Some (
+        let* host = resolve ctx (Option.value (str ctx args "File") ~default:"") in
+        match In_channel_text.read host with
+        | None -> Failed "ERR_FILEACC"
+        | Some contents -> (
+            (* A file that is not a text resource cannot be installed (R-15-c). *)
+            match Rapid_controller.Text_tables.parse contents with
+            | Error _ -> Failed "ERR_FILEACC"
+            | Ok table -> Rapid_controller.Text_tables.install (S.texts (sv ())) table; done_))
+  | "texttabfreetouse" ->
+      Some (ret (V.Bool (Rapid_controller.Text_tables.free_to_use (S.texts (sv ())) (Option.value (str ctx args "TableName") ~default:""))))
+  | "texttabget" ->
+      Some (match Rapid_controller.Text_tables.find (S.texts (sv ())) (Option.value (str ctx args "TableName") ~default:"") with
+          | Some n -> ret (V.num (float_of_int n))
+          | None -> Failed "ERR_TXTNOEXIST")
+  | "textget" ->
+      Some (match integer (num ctx args "Table"), integer (num ctx args "Index") with
+          | Some t, Some i -> (
+              match Rapid_controller.Text_tables.text (S.texts (sv ())) t i with
+              | Some text when String.length text <= 80 -> ret (V.String text)
+              | Some _ -> Failed "ERR_STRTOOLNG"
+              | None -> Failed "ERR_TXTNOEXIST")
+          | _ -> Failed "ERR_TXTNOEXIST")
   | _ -> None
