@@ -370,7 +370,11 @@ let start_machine files entry (allow_unknown, stub_unmodelled) max_depth retry_l
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller =
+  let save = Arg.(value & opt (some string) None & info [ "save" ] ~docv:"DIR"
+                    ~doc:"At the end of the run, write each module to DIR (made if missing) with every PERS \
+                          declaration's initial value replaced by the persistent's current value; the rest \
+                          of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller save =
     guard @@ fun () ->
     start_machine files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
@@ -387,7 +391,15 @@ let run_cmd =
     loop ();
     if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
     flush_output ();
-    finish (M.outcome cfg) (M.steps cfg) ~max_steps
+    let saved = match save with
+      | None -> Ok []
+      | Some dir ->
+          (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
+          Rapid_semantics.Persistent_save.save_modules ~dir
+            ~files:(List.filter (( <> ) "-") files) (M.module_data cfg) in
+    match saved with
+    | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
+    | Ok _ -> finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "run a task: check the modules, then execute the entry routine" in
   let man = [
@@ -397,7 +409,7 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args $ save)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
    characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)

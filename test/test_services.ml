@@ -108,7 +108,58 @@ let escapes () =
       List.iter (fun p -> Alcotest.(check bool) p false (refused p))
         [ "HOME:/in/file.txt"; "home:x.txt"; "RAMDISK:"; "DISKHOME:/a/b"; "REMOVABLE:/x"; "plain.txt" ])
 
+(* --save: a run killed at any moment leaves the module either as it was or as the finished run
+   writes it, never a mix. The module is large (many persistents) so that the write takes long
+   enough for some kills to land in it; each run is killed at a random moment up to a little
+   beyond the time a whole run takes. *)
+let kill_during_save () =
+  let dir = temp_dir () in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command ("rm -rf " ^ Filename.quote dir))) (fun () ->
+      let b = Buffer.create (1 lsl 20) in
+      Buffer.add_string b "MODULE keep\n  ! The persistents of a cell, saved by --save.\n";
+      for i = 1 to 1000 do Buffer.add_string b (Printf.sprintf "  PERS num p%d := %d;  ! count %d\n" i i i) done;
+      Buffer.add_string b "  PROC main()\n";
+      for i = 1 to 1000 do Buffer.add_string b (Printf.sprintf "    p%d := p%d * 2 + 1;\n" i i) done;
+      Buffer.add_string b "  ENDPROC\nENDMODULE\n";
+      let old = Buffer.contents b in
+      let source = Filename.concat dir "keep.mod" and out = Filename.concat dir "out" in
+      write_file source old;
+      Unix.mkdir out 0o755;
+      let target = Filename.concat out "keep.mod" in
+      let start () =
+        let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+        let pid = Unix.create_process binary [| binary; "run"; "--save"; out; source |] devnull devnull devnull in
+        Unix.close devnull; pid in
+      (* One whole run: the new text, and how long a run takes. *)
+      write_file target old;
+      let t0 = Unix.gettimeofday () in
+      (match wait_bounded (start ()) 60. with
+       | Some (Unix.WEXITED 0) -> ()
+       | _ -> Alcotest.fail "the run with --save did not end with status 0");
+      let whole = Unix.gettimeofday () -. t0 in
+      let fresh = read_file target in
+      Alcotest.(check bool) "the run saved new values" true (fresh <> old);
+      Alcotest.(check bool) "p1 saved" true
+        (Str.string_match (Str.regexp_string "  PERS num p1 := 3;  ! count 1") (List.nth (String.split_on_char '\n' fresh) 2) 0);
+      Random.init 20261123;
+      let kinds = Hashtbl.create 2 in
+      for _ = 1 to 8 do
+        write_file target old;
+        let pid = start () in
+        Unix.sleepf (Random.float (whole *. 1.2));
+        (try Unix.kill pid Sys.sigkill with Unix.Unix_error _ -> ());
+        ignore (Unix.waitpid [] pid);
+        let now = read_file target in
+        if now = old then Hashtbl.replace kinds "old" ()
+        else if now = fresh then Hashtbl.replace kinds "new" ()
+        else Alcotest.fail "a killed run left a module that is neither the old nor the new one"
+      done;
+      (* What the kills left besides: at most temporary files, never a second module. *)
+      Array.iter (fun f -> if f <> "keep.mod" && not (Filename.check_suffix f ".part") then
+                     Alcotest.failf "unexpected file %s" f) (Sys.readdir out))
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
+    Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;
   ])

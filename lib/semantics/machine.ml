@@ -1312,3 +1312,7 @@ let rule_names = [
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]
+
+(* --save (Persistent_save): the values of the task's module data at the end of a run. *)
+let module_data cfg =
+  Array.to_list (Array.mapi (fun i (g : Ir.global) -> (g.g_module, g.g_name, get cfg.globals.(i))) cfg.program.globals)

@@ -101,3 +101,29 @@ let write_atomically path text =
         Unix.rename tmp path;
         Ok ()
       with Unix.Unix_error (e, _, _) -> (try Sys.remove tmp with Sys_error _ -> ()); Error (Unix.error_message e))
+
+let read_bytes path =
+  match open_in_bin path with
+  | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+      try Ok (really_input_string ic (in_channel_length ic)) with Sys_error m | Failure m -> Error m)
+  | exception Sys_error m -> Error m
+
+let save_modules ~dir ~files data =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let rec go written = function
+    | [] -> Ok (List.rev written)
+    | file :: rest -> (
+        match read_bytes file with
+        | Error m -> Error m
+        | Ok original -> (
+            match Parse.parse_string ~name:file original with
+            | Error d -> Error (Diagnostic.to_string d)
+            | Ok m ->
+                let module_name = match m.module_name.it with Ast.Ident n -> n | Ast.ID_placeholder -> "" in
+                let current name =
+                  List.find_map (fun (md, n, v) -> if same md module_name && same n name then Some v else None) data in
+                let target = Filename.concat dir (Filename.basename file) in
+                match write_atomically target (splice ~original m current) with
+                | Ok () -> go (target :: written) rest
+                | Error e -> Error (target ^ ": " ^ e))) in
+  go [] files

@@ -18,3 +18,9 @@ val write_atomically : string -> string -> (unit, string) result
 (** [write_atomically path text]: the text goes to a temporary file in the same folder, is
     flushed to the disk, and is renamed to [path], so that a run stopped at any moment leaves
     either the old file or the new one. *)
+
+val save_modules :
+  dir:string -> files:string list -> (string * string * Value.t) list -> (string list, string) result
+(** At the end of a run: each module file, spliced with the current values of its module's
+    data (module, name, value), written atomically to [dir] under its own base name. The names
+    written, or the first problem. *)
