@@ -55,14 +55,14 @@ let resolve t path =
       let parts = List.filter (fun p -> p <> "" && p <> ".") parts in
       if List.mem ".." parts then Error "a path with .. leads out of its device"
       else if List.exists (fun p -> String.contains p '\000') parts then Error "a NUL character in the path"
-      else begin
-        ensure t;
+      else match ensure t with
+      | exception (Unix.Unix_error _ | Sys_error _) -> Error "the sandbox's folder cannot be made"
+      | () ->
         let host = List.fold_left Filename.concat (Filename.concat t.root folder) parts in
         match Unix.realpath t.root, real host with
         | r, Some h when inside ~root:r h -> Ok host
         | _ -> Error "a symbolic link leads out of the sandbox"
         | exception Unix.Unix_error _ -> Error "the sandbox's folder cannot be reached"
-      end
 
 let temporary () =
   let f = Filename.temp_file "rapid-sem-fs" "" in

@@ -1,6 +1,6 @@
 (** The controller's mass memory, in a sandbox: the devices a RAPID path names (HOME:, TEMP:,
     RAMDISK:, DISKHOME:, REMOVABLE:) are folders under one root on the host, and no RAPID path
-    reaches outside it (doc/services.md, doc/rulings.md R-13-k). *)
+    reaches outside it (doc/services.md, doc/rulings.md R-13-s). *)
 
 type t
 

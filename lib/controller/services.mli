@@ -14,13 +14,13 @@ val texts : t -> Text_tables.t
 (** The text tables installed in the run (chapter 15). *)
 
 val max_files : int
-(** Files open at once: 32 (doc/rulings.md R-13-k); one more Open raises ERR_FILEOPEN. *)
+(** Files open at once: 32 (doc/rulings.md R-13-s); one more Open raises ERR_FILEOPEN. *)
 
 val new_object : t -> int
 (** An identity for an installed object (a rawbytes buffer) that gets it at its first use. *)
 
 val max_file_size : int
-(** 64 MiB: a write that would make a file longer raises ERR_FILESIZE (doc/rulings.md R-13-k). *)
+(** 64 MiB: a write that would make a file longer raises ERR_FILESIZE (doc/rulings.md R-13-s). *)
 
 (** {1 Files (iodev)} *)
 

@@ -14,7 +14,7 @@ val status_number : status -> int
 (** SOCKET_CREATED 1, SOCKET_CONNECTED 2, SOCKET_BOUND 3, SOCKET_LISTENING 4, SOCKET_CLOSED 5. *)
 
 val max_sockets : int
-(** Sockets open at once in a run: 32 (doc/rulings.md R-13-m). *)
+(** Sockets open at once in a run: 32 (doc/rulings.md R-13-u). *)
 
 val create : ?allowed:(string * int option) list -> ?mapping:(string * string) list -> unit -> t
 (** [allowed]: hosts (and ports, [None] any) reachable beyond the loopback. *)

@@ -87,12 +87,12 @@ let read_field ic ~delims ~discard =
       go ();
       Some (Buffer.contents b)
 
-(* \Delim adds its characters to the line feed, which always ends a field (R-13-k). *)
+(* \Delim adds its characters to the line feed, which always ends a field (R-13-s). *)
 let delimiters ctx args = match str ctx args "Delim" with Some d -> "\n" ^ d | None -> "\n"
 
 let read_byte ic = try Some (input_byte ic) with End_of_file -> None
 
-(* WriteAnyBin's encoding (R-13-l): a tag and the value, then a check byte, the sum of the
+(* WriteAnyBin's encoding (R-13-t): a tag and the value, then a check byte, the sum of the
    bytes modulo 256. *)
 let encode_any v =
   let b = Buffer.create 32 in
@@ -251,7 +251,7 @@ let unpack ctx args b n start =
 let sockets ctx = S.sockets (services ctx)
 
 (* A blocking socket call waits on the host; the virtual clock moves on by the host time it
-   waited (R-13-n). The wait is bounded by \Time (default 60 s) and by the run's --max-time. *)
+   waited (R-13-v). The wait is bounded by \Time (default 60 s) and by the run's --max-time. *)
 let timeout ctx args =
   match num ctx args "Time" with
   | Some t when not (t > 0.) || not (Float.is_finite t) -> Error "ERR_ARGVALERR"
@@ -336,7 +336,7 @@ let call (ctx : context) name args =
           | Some f -> if obj <> "" && obj.[String.length obj - 1] <> ':' && obj.[String.length obj - 1] <> '/' then obj ^ "/" ^ f else obj ^ f
           | None -> obj in
         (* Without \Read, \Write or \Append: \Write for a character file, \Append with \Bin
-           (R-13-k). *)
+           (R-13-s). *)
         let mode =
           if present ctx args "Read" then S.Read
           else if present ctx args "Write" then S.Write
@@ -490,6 +490,7 @@ let call (ctx : context) name args =
   | "readdir" ->
       Some (let* next = S.read_dir (sv ()) (object_id ctx args "Dev") in
             match next with
+            | Some n when String.length n > 80 -> Failed "ERR_STRTOOLNG"
             | Some n -> store ctx args "FileName" (V.String n); ret (V.Bool true)
             | None -> ret (V.Bool false))
   (* ------------------------------------------------------------ raw data *)

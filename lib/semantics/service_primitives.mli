@@ -9,7 +9,7 @@ val call : Primitive.context -> string -> Primitive.argument array -> Primitive.
 val modelled : string -> bool
 
 val encode_any : Value.t -> (string, string) result
-(** WriteAnyBin's encoding of a value (doc/rulings.md R-13-l). *)
+(** WriteAnyBin's encoding of a value (doc/rulings.md R-13-t). *)
 
 val decode_any : string -> int -> (Value.t * int, string) result
 (** The value encoded at this offset and the offset after it; ERR_RANYBIN_EOF when the data
