@@ -158,8 +158,46 @@ let kill_during_save () =
       Array.iter (fun f -> if f <> "keep.mod" && not (Filename.check_suffix f ".part") then
                      Alcotest.failf "unexpected file %s" f) (Sys.readdir out))
 
+(* --net and --map-address: what the options read, and that a mapped address reaches the
+   loopback while an unmapped one is refused before any packet leaves. *)
+let address_policy () =
+  let module K = Rapid_controller.Sockets in
+  Alcotest.(check bool) "--net list" true
+    (K.parse_allowed "10.0.0.5:1025, example:*" = Ok [ ("10.0.0.5", Some 1025); ("example", None) ]);
+  Alcotest.(check bool) "--net bad port" true (Result.is_error (K.parse_allowed "10.0.0.5:70000"));
+  Alcotest.(check bool) "--net no port" true (Result.is_error (K.parse_allowed "10.0.0.5"));
+  Alcotest.(check bool) "--map-address" true
+    (K.parse_mapping "192.168.125.1=127.0.0.1" = Ok [ ("192.168.125.1", "127.0.0.1") ]);
+  Alcotest.(check bool) "--map-address bad" true (Result.is_error (K.parse_mapping "192.168.125.1"));
+  let bind k address =
+    match K.socket k ~udp:true with
+    | Error e -> Error e
+    | Ok id -> let r = K.bind k id address 0 in K.close k id; r in
+  let plain = K.create () and mapped = K.create ~mapping:[ ("192.168.125.1", "127.0.0.1") ] () in
+  Alcotest.(check bool) "unmapped service port refused" true (bind plain "192.168.125.1" = Error "ERR_SOCK_ADDR_INVALID");
+  Alcotest.(check bool) "mapped service port on the loopback" true (bind mapped "192.168.125.1" = Ok ());
+  Alcotest.(check bool) "loopback" true (bind plain "127.0.0.1" = Ok ());
+  Alcotest.(check bool) "not an address" true (bind plain "1.2.3" = Error "ERR_SOCK_ADDR_INVALID")
+
+(* Values written by --save read back as the same values. *)
+let literals () =
+  let module P = Rapid_semantics.Persistent_save in
+  let module V = Rapid_semantics.Value in
+  List.iter (fun (v, text) -> Alcotest.(check string) text text (P.literal v))
+    [ (V.num (1. /. 3.), "0.33333334"); (V.num 0.1, "0.1"); (V.num (-2.5), "-2.5"); (V.num 1e30, "1E+30");
+      (V.dnum (1. /. 3.), "0.3333333333333333"); (V.dnum 12345678901234., "12345678901234");
+      (V.String "say \"hi\"", "\"say \"\"hi\"\"\""); (V.Bool true, "TRUE");
+      (V.Record [| V.num 1.; V.String "" |], "[1,\"\"]") ];
+  for _ = 1 to 1000 do
+    let f = V.to_single (Random.float 2e6 -. 1e6) in
+    let t = P.literal (V.num f) in
+    Alcotest.(check (float 0.)) t f (V.to_single (float_of_string t))
+  done
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
+    Alcotest.test_case "--net and --map-address" `Quick address_policy;
+    Alcotest.test_case "--save writes values that read back" `Quick literals;
     Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;
   ])
