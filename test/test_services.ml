@@ -194,9 +194,46 @@ let literals () =
     Alcotest.(check (float 0.)) t f (V.to_single (float_of_string t))
   done
 
+(* Runs a module in a world whose services are [services]; its output lines. *)
+let run_with services text =
+  let module M = Rapid_semantics.Machine in
+  match Rapid_syntax.Parse.parse_string ~name:"t.mod" text with
+  | Error d -> Alcotest.fail (Rapid_syntax.Diagnostic.to_string d)
+  | Ok m -> (
+      match Rapid_semantics.Session.load_modules ~allow_unknown:false ~io:Rapid_controller.Io_config.empty [ m ] with
+      | Error _ -> Alcotest.fail "the module does not load"
+      | Ok loaded -> (
+          let world = Rapid_controller.World.create Rapid_controller.Io_config.empty in
+          Rapid_controller.World.set_services world services;
+          match M.start ~world loaded.program ~entry:"main" with
+          | Error e -> Alcotest.fail e
+          | Ok cfg ->
+              let out = ref [] in
+              while M.outcome cfg = Running && M.steps cfg < 100_000 do
+                List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+              done;
+              List.rev !out))
+
+(* The bounds of the mass memory (R-13-s): a file may not grow beyond the run's limit
+   (ERR_FILESIZE; 64 MiB by default, 10 bytes here), and 32 files may be open at once. *)
+let file_bounds () =
+  let module S = Rapid_controller.Services in
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Fun.protect ~finally:(fun () -> Rapid_controller.File_sandbox.remove sandbox) (fun () ->
+      let out = run_with (S.create ~sandbox ~max_file_size:10 ())
+          "MODULE t\n  VAR iodev f;\n  VAR iodev many{33};\n  VAR num k;\n  PROC main()\n\
+          \    Open \"HOME:/a.txt\", f \\Write;\n    Write f, \"123456789\";\n    TPWrite \"10 bytes\";\n\
+          \    Write f, \"x\" \\NoNewLine;\n    TPWrite \"not reached\";\n  ERROR\n\
+          \    TPWrite \"ERR_FILESIZE \" \\Bool:=ERRNO = ERR_FILESIZE;\n    TPWrite \"size \" \\Num:=FileSize(\"HOME:/a.txt\");\n\
+          \    Close f;\n    Opens;\n  ENDPROC\n\
+          \  PROC Opens()\n    FOR i FROM 1 TO 33 DO\n      k := i;\n      Open \"TEMP:/f\" + ValToStr(i), many{i} \\Write;\n    ENDFOR\n\
+          \  ERROR\n    TPWrite \"open \" + ValToStr(k) + \" \" + ValToStr(ERRNO = ERR_FILEOPEN);\n  ENDPROC\nENDMODULE\n" in
+      Alcotest.(check (list string)) "output" [ "10 bytes"; "ERR_FILESIZE TRUE"; "size 10"; "open 33 TRUE" ] out)
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
+    Alcotest.test_case "bounds of the mass memory" `Quick file_bounds;
     Alcotest.test_case "--net and --map-address" `Quick address_policy;
     Alcotest.test_case "--save writes values that read back" `Quick literals;
     Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;

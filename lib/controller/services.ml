@@ -9,13 +9,17 @@ type t = {
   dirs : (int, string list ref) Hashtbl.t;
   raw : (int, Bytes.t * int ref) Hashtbl.t;
   texts : Text_tables.t;
+  file_limit : int;
   mutable next : int;
 }
 
-let create ?sandbox ?sockets () =
+let max_file_size = 64 * 1024 * 1024
+let file_limit t = t.file_limit
+
+let create ?sandbox ?sockets ?(max_file_size = max_file_size) () =
   { sandbox = (match sandbox with Some s -> s | None -> File_sandbox.create File_sandbox.default_root);
     sockets = (match sockets with Some s -> s | None -> Sockets.create ());
-    files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; texts = Text_tables.create (); next = 1 }
+    files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; texts = Text_tables.create (); file_limit = max_file_size; next = 1 }
 
 let sandbox t = t.sandbox
 let sockets t = t.sockets
@@ -25,7 +29,6 @@ let max_files = 32
 let fresh t = let id = t.next in t.next <- t.next + 1; id
 let new_object = fresh
 
-let max_file_size = 64 * 1024 * 1024
 
 let open_file t path mode =
   if Hashtbl.length t.files >= max_files then Error "ERR_FILEOPEN"

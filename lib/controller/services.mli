@@ -5,8 +5,9 @@
 
 type t
 
-val create : ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> unit -> t
-(** Without [sandbox], {!File_sandbox.default_root}; without [sockets], loopback only. *)
+val create : ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?max_file_size:int -> unit -> t
+(** Without [sandbox], {!File_sandbox.default_root}; without [sockets], loopback only;
+    [max_file_size] bytes a file may hold (default {!max_file_size}). *)
 
 val sandbox : t -> File_sandbox.t
 val sockets : t -> Sockets.t
@@ -21,6 +22,9 @@ val new_object : t -> int
 
 val max_file_size : int
 (** 64 MiB: a write that would make a file longer raises ERR_FILESIZE (doc/rulings.md R-13-s). *)
+
+val file_limit : t -> int
+(** The run's bound on the size of a file. *)
 
 (** {1 Files (iodev)} *)
 

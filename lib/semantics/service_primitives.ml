@@ -56,7 +56,7 @@ let resolve ctx p = path_error (Rapid_controller.File_sandbox.resolve (S.sandbox
 
 let write_text ctx args text =
   let* oc = S.output (services ctx) (object_id ctx args "IODevice") in
-  match pos_out oc + String.length text > S.max_file_size with
+  match pos_out oc + String.length text > S.file_limit (services ctx) with
   | true -> Failed "ERR_FILESIZE"
   | false -> (
       try output_string oc text; flush oc; done_ with Sys_error _ -> Failed "ERR_FILEACC")
