@@ -65,6 +65,9 @@ let splice ~original (m : Ast.module_declaration) current =
       | Ast.Data_declaration { storage = Pers; name = { it = Ident n; at = name_at }; initial_value; _ } -> (
           match current n with
           | None -> None
+          | Some v when (match literal v with _ -> false | exception V.Type_mismatch _ -> true) ->
+              (* A value without a literal (an installed object) keeps its text. *)
+              None
           | Some v ->
               let text = literal v in
               let text = if d.latin1 then to_latin1 text else text in
