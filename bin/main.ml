@@ -64,7 +64,8 @@ let guard f =
 
 (* The controller around the run (doc/controller.md): --io, --statement-time, --max-time,
    --epoch. *)
-type controller_options = { io : string option; statement_time : float; max_time : float; epoch : float }
+type controller_options = { io : string option; statement_time : float; max_time : float; epoch : float;
+                            services : Services_args.t }
 
 let io_arg =
   Arg.(value & opt (some string) None & info [ "io" ] ~docv:"FILE"
@@ -97,8 +98,8 @@ let controller_args =
                         ~doc:"Stop the run when its virtual time goes beyond SECONDS (exit status 3).") in
   let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default 2024-01-01T00:00:00).") in
-  Term.(const (fun io statement_time max_time epoch -> { io; statement_time; max_time; epoch })
-        $ io_arg $ statement_time $ max_time $ epoch)
+  Term.(const (fun io statement_time max_time epoch services -> { io; statement_time; max_time; epoch; services })
+        $ io_arg $ statement_time $ max_time $ epoch $ Services_args.term)
 
 let read_io = function
   | None -> Ok Rapid_controller.Io_config.empty
@@ -365,6 +366,9 @@ let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
       let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+      match Services_args.install controller.services world with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok () ->
       match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
               loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -373,7 +377,11 @@ let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples =
+  let save = Arg.(value & opt (some string) None & info [ "save" ] ~docv:"DIR"
+                    ~doc:"At the end of the run, write each module to DIR (made if missing) with every PERS \
+                          declaration's initial value replaced by the persistent's current value; the rest \
+                          of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples save =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
@@ -397,7 +405,15 @@ let run_cmd =
     Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
     if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
     flush_output ();
-    finish (M.outcome cfg) (M.steps cfg) ~max_steps
+    let saved = match save with
+      | None -> Ok []
+      | Some dir ->
+          (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
+          Rapid_semantics.Persistent_save.save_modules ~dir
+            ~files:(List.filter (( <> ) "-") files) (M.module_data cfg) in
+    match saved with
+    | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
+    | Ok _ -> finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
   let doc = "run a task: check the modules, then execute the entry routine" in
   let man = [
@@ -408,7 +424,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
-          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
    characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)

@@ -20,4 +20,5 @@ let () =
       Test_robustness.suite;
       Test_motion_run.suite;
       Test_impl_runner.suite;
+      Test_services.suite;
     ]

@@ -27,10 +27,11 @@ and run = {
   io : string option;
   statement_time : float option;
   max_time : float option;
+  home : string option;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
-               max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None }
+               max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None }
 
 let known_formats = [ "1"; "2"; "3" ]
 let checks_semantics case = case.format = "2" || case.format = "3"
@@ -170,6 +171,10 @@ let read path =
                   (* The stimulus file is named relative to the case's folder. *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
                   with_run case (fun r -> { r with io = Some (Filename.concat dir v) })
+              | Some ("home", v) when v <> "" ->
+                  (* The files HOME: holds at the start, a folder beside the case (doc/services.md). *)
+                  let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
+                  with_run case (fun r -> { r with home = Some (Filename.concat dir v) })
               | Some (("statement-time" | "max-time") as k, v) -> (
                   match float_of_string_opt v with
                   | Some f when f >= 0. && Float.is_finite f ->

@@ -37,6 +37,7 @@ and run = {
   io : string option;             (** [! @io FILE]: the stimulus file, beside the case *)
   statement_time : float option;  (** [! @statement-time SECONDS] *)
   max_time : float option;        (** [! @max-time SECONDS] *)
+  home : string option;           (** [! @home FOLDER]: what HOME: holds at the start *)
 }
 
 val read : string -> t

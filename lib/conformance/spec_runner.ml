@@ -41,8 +41,14 @@ let run_program case (run : Spec_case.run) ~io program =
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+  let services = Rapid_controller.Services.create ~sandbox () in
+  Rapid_controller.World.set_services world services;
+  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
   match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
-  | Error m -> fail case ("cannot run: " ^ m)
+  | Error m -> release (); fail case ("cannot run: " ^ m)
   | Ok cfg ->
       let max_steps = Option.value run.max_steps ~default:10_000_000 in
       let output = ref [] in
@@ -50,6 +56,7 @@ let run_program case (run : Spec_case.run) ~io program =
         let _, events = M.step cfg in
         List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
       done;
+      release ();
       let output = List.rev !output in
       let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
       let status, error, error_file =

@@ -69,6 +69,7 @@ type t = {
   clocks : (int, clock) Hashtbl.t;
   mutable observations : observation list;      (* newest first *)
   collisions : float list;                      (* of the stimulus, for the motion model *)
+  mutable services : Services.t option;         (* files, sockets, text resources: made on first use *)
 }
 
 let schedule w time action =
@@ -89,7 +90,7 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
-            collisions = config.collisions } in
+            collisions = config.collisions; services = None } in
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in
   Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
@@ -101,6 +102,12 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
 
 let now w = to_seconds w.now
 let collisions w = w.collisions
+
+let set_services w s = w.services <- Some s
+let services w =
+  match w.services with
+  | Some s -> s
+  | None -> let s = Services.create () in w.services <- Some s; s
 let max_time w = w.max_time
 let epoch w = w.epoch
 

@@ -45,6 +45,13 @@ val queue_capacity : int
 val create :
   ?statement_time:float -> ?max_time:float -> ?epoch:float -> Io_config.t -> t
 
+(** {1 Services (doc/services.md)} *)
+
+val set_services : t -> Services.t -> unit
+val services : t -> Services.t
+(** The files, sockets and text resources of the run; without {!set_services}, the default
+    sandbox ({!File_sandbox.default_root}), loopback sockets only. *)
+
 (** {1 Time} *)
 
 val now : t -> float

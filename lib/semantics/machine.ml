@@ -446,7 +446,9 @@ let call_primitive cfg (cs : call_state) name =
     | Some r -> r
     | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
-    | None -> Primitive.call ctx name cs.primitive_args in
+    | None -> match Service_primitives.call ctx name cs.primitive_args with
+      | Some r -> r
+      | None -> Primitive.call ctx name cs.primitive_args in
   (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
   (match Motion_primitives.take_new_move cfg.motion with
    | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
@@ -1392,3 +1394,7 @@ let rule_names = [
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]
+
+(* --save (Persistent_save): the values of the task's module data at the end of a run. *)
+let module_data cfg =
+  Array.to_list (Array.mapi (fun i (g : Ir.global) -> (g.g_module, g.g_name, get cfg.globals.(i))) cfg.program.globals)

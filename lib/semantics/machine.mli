@@ -102,3 +102,7 @@ val depth : config -> int
 
 val rule_names : string list
 (** Every rule of the machine, as doc/semantics.md lists them. *)
+
+val module_data : config -> (string * string * Value.t) list
+(** Each module data object of the task (and installed datum): its module, its name and its
+    current value (--save). *)

@@ -4,33 +4,31 @@ MODULE stub_unmodelled
 ! @section 2.22
 ! @options stub-unmodelled
 ! @expect ok
-! @description Under rapid-sem's --stub-unmodelled (doc/rulings.md R-13-i) an installed routine it does not model runs as a no-op: a procedure does nothing and leaves its VAR and INOUT arguments as they were (reply keeps its value), a function returns the initial value of its result type (§2.22: 0 for SocketGetStatus's socketstatus, FALSE for IsFile, "" for ReadStr), and the run goes on to its end (exit 0). Each routine is called twice; nothing else changes.
-! @output reply: none
-! @output status: 0
-! @output no file
-! @output line: ""
-! @output reply: none
+! @description Under rapid-sem's --stub-unmodelled (doc/rulings.md R-13-i) an installed routine it does not model runs as a no-op: a procedure does nothing and leaves its VAR and INOUT arguments as they were (answer keeps its value), a function returns the initial value of its result type (§2.22: 0 for OpMode's symnum, FALSE for IsSysId, "" for Type), and the run goes on to its end (exit 0). TPReadFK is called twice, and warned about once.
+! @output answer: 7
+! @output speed: 0
+! @output another system
+! @output type: ""
+! @output answer: 7
 ! @output done
 ! @exit 0
-  VAR socketdev client;
-  VAR iodev log;
-  VAR string reply := "none";
-  VAR num status := 7;
+  VAR num answer := 7;
+  VAR num speed := 7;
+  VAR string kind := "none";
   PROC main()
     FOR i FROM 1 TO 2 DO
-      SocketCreate client;
-      SocketReceive client \Str:=reply;
-      TPWrite "reply: " + reply;
+      TPReadFK answer, "Go on?", "Yes", "No", "", "", "";
+      TPWrite "answer: " \Num:=answer;
       IF i = 1 THEN
-        status := SocketGetStatus(client);
-        TPWrite "status: " \Num:=status;
-        IF IsFile("HOME:/log.txt") THEN
-          TPWrite "a file";
+        speed := OpMode();
+        TPWrite "speed: " \Num:=speed;
+        IF IsSysId("6400-1234") THEN
+          TPWrite "that system";
         ELSE
-          TPWrite "no file";
+          TPWrite "another system";
         ENDIF
-        Open "HOME:/log.txt", log \Read;
-        TPWrite "line: """ + ReadStr(log \RemoveCR) + """";
+        kind := Type(answer);
+        TPWrite "type: """ + kind + """";
       ENDIF
     ENDFOR
     TPWrite "done";

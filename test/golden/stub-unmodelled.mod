@@ -1,21 +1,20 @@
 MODULE client
-  VAR socketdev sock;
-  VAR string reply := "none";
+  VAR num answer := 7;
+  VAR string kind := "none";
   VAR num status := 7;
   PROC main()
-    SocketCreate sock;
-    SocketConnect sock, "192.168.0.10", 1025;
-    SocketReceive sock \Str:=reply;
-    TPWrite "reply: " + reply;
-    status := SocketGetStatus(sock);
+    TPReadFK answer, "Continue?", "Yes", "No", "", "", "";
+    TPReadFK answer, "Continue?", "Yes", "No", "", "", "";
+    TPWrite "answer: " \Num:=answer;
+    status := OpMode();
     TPWrite "status: " \Num:=status;
-    IF IsFile("HOME:/log.txt") THEN
-      TPWrite "a log";
+    IF IsSysId("6400-1234") THEN
+      TPWrite "that system";
     ELSE
-      TPWrite "no log";
+      TPWrite "another system";
     ENDIF
-    SocketClose sock;
-    SocketClose sock;
+    kind := Type(answer);
+    TPWrite "kind: """ + kind + """";
     TPWrite "done";
   ENDPROC
 ENDMODULE
