@@ -552,6 +552,9 @@ let () =
                                                  Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
                                                      guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
                                                    ~finish ~common_run_args ~controller_args;
+                                                 Debug_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
+                                                     guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                                   ~finish ~common_run_args ~controller_args;
                                                  Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd ]) in
   (* A command line that cannot be read (an unknown option, a negative limit) is refused like a
      static error, with cmdliner's message saying what is wrong. *)
