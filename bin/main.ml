@@ -245,6 +245,10 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
   | Erase -> `Assoc [ ("event", `String "erase") ]
   | Log s -> `Assoc [ ("event", `String "log"); ("text", text s) ]
+  | Event_log (Err_log { id; kind; arguments }) ->
+      `Assoc [ ("event", `String "errlog"); ("id", `Int id); ("kind", `String kind);
+               ("arguments", `List (List.map text arguments)) ]
+  | Event_log Skip_warning -> `Assoc [ ("event", `String "skipwarn") ]
   | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
   | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
   | Error_raised { name; number; at } ->

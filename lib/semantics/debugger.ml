@@ -67,6 +67,9 @@ let show_events s events =
   List.iter (function
       | M.Output line -> s.out ("tp> " ^ Format.display line)
       | Log line -> s.out ("log> " ^ Format.display line)
+      | Event_log (Err_log { id; kind; arguments }) ->
+          s.out (Printf.sprintf "log> %s %d: %s" kind id (String.concat " | " (List.map Format.display arguments)))
+      | Event_log Skip_warning -> s.out "log> SkipWarn"
       | Error_raised { name; number; at } ->
           s.out (Printf.sprintf "error> %s (%d) at %s" name number (Source.to_string at))
       | Error_handled { name; routine } -> s.out (Printf.sprintf "error> %s handled by %s" name routine)

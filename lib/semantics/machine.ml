@@ -20,6 +20,7 @@ type err = { name : string; number : int; err_at : Source.region; searched : boo
 type event =
   | Output of string
   | Erase
+  | Event_log of Primitive.log_entry
   | Log of string
   | Routine_entered of string
   | Routine_left of string
@@ -394,6 +395,7 @@ let primitive_context cfg events : Primitive.context = {
   output = (fun line -> events := Output (Format.display line) :: !events);
   erase = (fun () -> events := Erase :: !events);
   log = (fun line -> events := Log line :: !events);
+  event_log = (fun entry -> events := Event_log entry :: !events);
   book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
   error_number = (fun name -> error_number cfg name);
   world = cfg.world;

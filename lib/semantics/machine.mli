@@ -16,6 +16,7 @@ type config
 type event =
   | Output of string                       (** a line written by TPWrite *)
   | Erase                                  (** TPErase *)
+  | Event_log of Primitive.log_entry     (** ErrLog and SkipWarn: the event log (§7.5) *)
   | Log of string                          (** ErrWrite and the like: the event log *)
   | Routine_entered of string
   | Routine_left of string

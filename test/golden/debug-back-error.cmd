@@ -1,1 +1,1 @@
-debug --script debug-back-error.dbg ../../spec/06-backward/03-error-in-backward.mod
+debug --script debug-back-error.dbg ../../spec/06-backward/01-error-in-backward.mod
