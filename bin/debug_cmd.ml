@@ -18,7 +18,29 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     | Ok ic ->
     start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     let echo = script <> None in
-    let session = D.create ~max_steps ~out:print_endline cfg in
+    let parsed = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let ident (i : Rapid_syntax.Ast.identifier) = match i.it with Ident n -> String.lowercase_ascii n | ID_placeholder -> "" in
+    (* The names of each routine's data, in declaration order, by module and routine. *)
+    let data_names = Hashtbl.create 16 in
+    List.iter (fun (m : Rapid_syntax.Ast.module_declaration) ->
+        List.iter (fun (r : Rapid_syntax.Ast.routine_declaration) ->
+            let named name (body : Rapid_syntax.Ast.routine_body) =
+              Hashtbl.replace data_names (ident m.module_name, ident name)
+                (List.filter_map (fun (d : Rapid_syntax.Ast.data_declaration) ->
+                     match d.it with Data_declaration { name; _ } -> Some (ident name) | _ -> None) body.declarations) in
+            match r.it with
+            | Procedure_declaration { name; body; _ } | Function_declaration { name; body; _ }
+            | Trap_declaration { name; body; _ } -> named name body
+            | Routine_comment _ | RDN_placeholder -> ()) m.routine_declarations) parsed;
+    let routine_data (r : Rapid_semantics.Ir.routine) =
+      Option.value ~default:[]
+        (Hashtbl.find_opt data_names (String.lowercase_ascii r.module_name, String.lowercase_ascii r.name)) in
+    (* §9.2, §9.4: the modules stepping does not enter, from their attributes. *)
+    let hidden = List.concat_map (fun (m : Rapid_syntax.Ast.module_declaration) ->
+        if List.exists (fun (a : Rapid_syntax.Ast.module_attribute) ->
+            match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
+        then [ ident m.module_name ] else []) parsed in
+    let session = D.create ~max_steps ~routine_data ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
     let rec loop () =
       match input_line ic with
       | exception End_of_file -> ()

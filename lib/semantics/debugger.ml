@@ -14,6 +14,8 @@ type t = {
   sources : (string, string array) Hashtbl.t;
   rules_seen : (string, unit) Hashtbl.t;
   mutable rules_order : string list;
+  hidden : string -> bool;                            (* NOSTEPIN and NOVIEW modules, by name *)
+  routine_data : Ir.routine -> string list;            (* names of its routine data, in order *)
 }
 
 let config s = s.cfg
@@ -76,6 +78,11 @@ let show_events s events =
       | Trap_entered { trap; number; _ } -> s.out (Printf.sprintf "trap> %s (interrupt %d)" trap number)
       | _ -> ()) events
 
+(* §9.4: stepping does not enter the routines of a NOSTEPIN module; the program pointer is never
+   shown inside one, nor inside a NOVIEW module, whose code cannot be viewed (doc/rulings.md
+   R-9.4-a). *)
+let visible s = not (s.hidden (M.current_routine s.cfg).module_name)
+
 (* Runs the machine until [stop] holds at a statement, the task ends, or the step budget is
    spent. At least one step is taken. *)
 let run_until s stop =
@@ -83,7 +90,7 @@ let run_until s stop =
     match M.outcome s.cfg with
     | M.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
     | M.Running ->
-        if (not first) && M.current_statement s.cfg <> None && stop () then ()
+        if (not first) && M.current_statement s.cfg <> None && visible s && stop () then ()
         else begin
           let rule, events = M.step s.cfg in
           note_rule s rule;
@@ -94,9 +101,9 @@ let run_until s stop =
   in
   go true
 
-let create ?(max_steps = 100_000_000) ~out cfg =
+let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> []) ~out cfg =
   let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
-            rules_seen = Hashtbl.create 64; rules_order = [] } in
+            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data } in
   run_until s (fun () -> true);
   show_pointer s;
   s
@@ -122,9 +129,17 @@ let find_data s name =
   let rec param i =
     if i >= Array.length r.parameters then None
     else if lower r.parameters.(i).p_name = n then Some (Ir.Local i) else param (i + 1) in
+  (* Routine data takes the slots after the parameters, in declaration order (Lower). *)
+  let data () =
+    let names = s.routine_data r in
+    if List.length names <> List.length r.local_inits then None
+    else
+      List.fold_left2 (fun acc name (slot, _) ->
+          match acc with Some _ -> acc | None -> if lower name = n then Some (Ir.Local slot) else None)
+        None names r.local_inits in
   match param 0 with
   | Some slot -> Some slot
-  | None -> M.global_slot s.cfg n
+  | None -> (match data () with Some slot -> Some slot | None -> M.global_slot s.cfg n)
 
 let parse_reference text =
   let text = String.trim text in
@@ -180,7 +195,8 @@ let literal old text =
       match parsed with
       | Ok l ->
           let v = Value.of_literal l (match old with Value.Dnum _ -> `Dnum | _ -> `Num) in
-          Ok (if not negative then v else match v with
+          if not (Float.is_finite (Value.num_value v)) then Error "the number is beyond the range of its type (§2.13)"
+          else Ok (if not negative then v else match v with
             | Value.Num f -> Value.Num (-. f) | Value.Dnum f -> Value.Dnum (-. f) | v -> v)
       | Error _ -> Error "a num literal is expected")
   | Bool _ -> (
@@ -282,7 +298,8 @@ let command s line =
   | "back" | "b" -> back s; `Go_on
   | "break" -> (
       match String.rindex_opt rest ':' with
-      | Some i when int_of_string_opt (String.sub rest (i + 1) (String.length rest - i - 1)) <> None ->
+      | Some i when i > 0 && (match int_of_string_opt (String.sub rest (i + 1) (String.length rest - i - 1)) with
+          | Some l -> l >= 1 | None -> false) ->
           let file = String.sub rest 0 i and l = int_of_string (String.sub rest (i + 1) (String.length rest - i - 1)) in
           let n = s.next_breakpoint in
           s.next_breakpoint <- n + 1;

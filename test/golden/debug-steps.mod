@@ -5,6 +5,8 @@ MODULE steps
   VAR bool flag := FALSE;
 
   PROC Add(num k)
+    VAR num twice;
+    twice := 2 * k;
     total := total + k;
     Inner k;
   ENDPROC
