@@ -251,6 +251,10 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
   | Erase -> `Assoc [ ("event", `String "erase") ]
   | Log s -> `Assoc [ ("event", `String "log"); ("text", text s) ]
+  | Event_log (Err_log { id; kind; arguments }) ->
+      `Assoc [ ("event", `String "errlog"); ("id", `Int id); ("kind", `String kind);
+               ("arguments", `List (List.map text arguments)) ]
+  | Event_log Skip_warning -> `Assoc [ ("event", `String "skipwarn") ]
   | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
   | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
   | Error_raised { name; number; at } ->
@@ -581,6 +585,9 @@ let () =
   let argv = Array.of_list (join (Array.to_list Sys.argv)) in
   let status = Cmd.eval' ~argv (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
                                                  Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
+                                                     guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                                   ~finish ~common_run_args ~controller_args;
+                                                 Debug_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
                                                      guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
                                                    ~finish ~common_run_args ~controller_args;
                                                  Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd;

@@ -21,4 +21,5 @@ let () =
       Test_motion_run.suite;
       Test_impl_runner.suite;
       Test_services.suite;
+      Test_debugger.suite;
     ]

@@ -28,6 +28,9 @@ let event_text (e : M.event) =
   | Output s -> "output " ^ String.escaped s
   | Erase -> "erase"
   | Log s -> "log " ^ String.escaped s
+  | Event_log (Err_log { id; kind; arguments }) ->
+      Printf.sprintf "errlog %d %s %s" id kind (String.concat " " (List.map String.escaped arguments))
+  | Event_log Skip_warning -> "skipwarn"
   | Routine_entered r -> "routine-entered " ^ r
   | Routine_left r -> "routine-left " ^ r
   | Error_raised { name; number; at } -> Printf.sprintf "error-raised %s %d %s" name number (place at)

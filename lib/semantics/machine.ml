@@ -20,6 +20,7 @@ type err = { name : string; number : int; err_at : Source.region; searched : boo
 type event =
   | Output of string
   | Erase
+  | Event_log of Primitive.log_entry
   | Log of string
   | Routine_entered of string
   | Routine_left of string
@@ -115,6 +116,7 @@ and frame =
   | K_wait of wait_state                (* a waiting instruction (doc/controller.md) *)
   | K_poll of wait_state                (* WaitUntil: its condition is being evaluated *)
   | K_read_signal
+  | K_backward_end                      (* the end of a BACKWARD handler's run (ch. 6) *)
 
 and wait_state = { wait : W.wait; cond : Ir.expr option; mutable next_poll : float }
 
@@ -163,6 +165,7 @@ type config = {
   stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
   motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
   mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
+  mutable backward_depth : int;         (* the call depth of a BACKWARD handler running, or -1 (ch. 6) *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -309,6 +312,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
           stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
+          backward_depth = -1;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -391,6 +395,7 @@ let primitive_context cfg events : Primitive.context = {
   output = (fun line -> events := Output (Format.display line) :: !events);
   erase = (fun () -> events := Erase :: !events);
   log = (fun line -> events := Log line :: !events);
+  event_log = (fun entry -> events := Event_log entry :: !events);
   book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
   error_number = (fun name -> error_number cfg name);
   world = cfg.world;
@@ -665,6 +670,9 @@ let stop cfg (e : err) rule =
 let raise_step cfg (e : err) =
   let act = cfg.act in
   match act.handling, act.routine.error with
+  | _ when cfg.backward_depth >= 0 && act.call_depth >= cfg.backward_depth ->
+      (* §6.1: an error while a BACKWARD handler runs cannot be handled by an error handler. *)
+      stop cfg e "raise-in-backward"
   | (In_handler _ | In_undo), _ -> stop cfg e "raise-in-handler"
   | Body, Some _ -> handle cfg e
   | Body, None -> (
@@ -826,6 +834,7 @@ let frame_kind = function
   | K_local_init _ -> "local-init" | K_routine_end -> "routine-end"
   | K_handler_end -> "handler-end" | K_undo_end _ -> "undo-end" | K_task_end -> "task-end"
   | K_wait _ -> "wait" | K_poll _ -> "poll" | K_read_signal -> "read-signal"
+  | K_backward_end -> "backward-end"
 
 (* §4.18: is the loop variable still in its range? *)
 let for_in_range v t step =
@@ -908,6 +917,7 @@ let next_frame cfg =
           cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
           cfg.focus <- F_expr e; ("local-initial-value", []))
   | K_args cs :: rest -> next_argument cfg cs rest
+  | K_backward_end :: rest -> cfg.stack <- rest; cfg.backward_depth <- -1; ("backward-end", [])
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
   | f :: _ ->
       cfg.focus <- F_done (Stuck ("a statement completed over the frame " ^ frame_kind f));
@@ -1398,3 +1408,109 @@ let rule_names = [
 (* --save (Persistent_save): the values of the task's module data at the end of a run. *)
 let module_data cfg =
   Array.to_list (Array.mapi (fun i (g : Ir.global) -> (g.g_module, g.g_name, get cfg.globals.(i))) cfg.program.globals)
+
+(* ------------------------------------------------------------------ the debugger's views *)
+
+(* The program pointer stands at the statements of statement lists: the simple statement of a
+   compact IF is part of its IF (§4.17), and so not a place of its own. *)
+let current_statement cfg =
+  match cfg.focus, cfg.stack with
+  | F_stmt s, K_seq (b, j) :: _ when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == s -> Some s
+  | _ -> None
+
+let current_routine cfg = cfg.act.routine
+
+(* Each active routine and where it stands, innermost first: a caller stands at its call, the
+   statement its callee's activation keeps as the caller's mark. *)
+let call_chain_view cfg =
+  let rec go (a : activation) here acc =
+    let acc = (a.routine, here) :: acc in
+    match a.caller with
+    | None -> List.rev acc
+    | Some c ->
+        let at = match a.caller_mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> c.routine.at in
+        go c at acc
+  in
+  go cfg.act (focus_region cfg) []
+
+let data_location cfg (slot : Ir.slot) =
+  match slot with
+  | Global i -> if i >= 0 && i < Array.length cfg.globals then Some cfg.globals.(i) else None
+  | Local i ->
+      let a = cfg.act in
+      if i < 0 || i >= Array.length a.slots then None
+      else if i < Array.length a.present && not a.present.(i) then None
+      else if Array.length a.slots.(i).box = 0 then None
+      else Some a.slots.(i)
+
+let read_data cfg slot = Option.map get (data_location cfg slot)
+
+let write_data cfg slot v =
+  match data_location cfg slot with Some l -> set l v; true | None -> false
+
+(* ------------------------------------------------------------------ backward execution (ch. 6) *)
+
+let statement_name (s : Ir.stmt) =
+  match s.s with
+  | Assign _ -> "an assignment" | Call_procedure _ -> "a procedure call" | Call_late _ -> "a late-bound procedure call"
+  | Goto _ -> "GOTO" | Break -> "BREAK" | Continue -> "CONTINUE" | Return _ -> "RETURN" | Raise _ -> "RAISE"
+  | Exit -> "EXIT" | Retry -> "RETRY" | Trynext -> "TRYNEXT" | Connect _ -> "CONNECT"
+  | If _ | Elseif _ -> "IF" | Compact_if _ -> "a compact IF" | For _ -> "FOR" | While _ -> "WHILE"
+  | Test _ -> "TEST" | Label -> "a label" | Placeholder_statement -> "<SMT>"
+
+let not_supported why = Error ("backward execution is not supported: " ^ why ^ "; no step taken (§6.1)")
+
+(* One statement backward from the program pointer (§6.1-§6.3): the statement before it in its
+   statement list, which must be simple. The program pointer is then at that statement. *)
+let backward cfg =
+  match cfg.focus, cfg.stack with
+  | F_done _, _ -> Error "the task is not running"
+  | F_stmt cur, K_seq (b, j) :: rest when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == cur ->
+      if cfg.act.handling <> Body then
+        (* §6.2: "the instructions of a BACKWARD handler or an error handler cannot be executed
+           backward"; UNDO handlers likewise (doc/rulings.md R-6.2-a). *)
+        not_supported "the program pointer is in an error or UNDO handler (§6.2)"
+      else if cfg.backward_depth >= 0 then not_supported "backward execution cannot be nested (§6.2)"
+      else if j = 1 then not_supported "the program pointer is at the top of a statement list"
+      else begin
+        let prev = b.body.(j - 2) in
+        let moved () = cfg.stack <- K_seq (b, j - 1) :: rest; cfg.focus <- F_stmt prev in
+        match prev.s with
+        | Label | Assign _ | Connect _ ->
+            (* §6.1: comments, labels, assignments and CONNECT are no-operations backward. *)
+            moved (); Ok "backward-noop"
+        | Call_procedure ({ callee = Routine i; _ } as call) -> (
+            let r = cfg.program.routines.(i) in
+            match r.backward with
+            | None ->
+                not_supported (Printf.sprintf "the procedure %s has no BACKWARD handler (§6.2)" r.name)
+            | Some handler ->
+                (* §6.1: the arguments are evaluated forward and bound to the parameters as in
+                   forward execution; the BACKWARD handler runs in place of the body, with the
+                   routine's data in its scope (§6.2). *)
+                cfg.stack <- K_seq (b, j - 2) :: rest;
+                push cfg (K_stmt (prev, cfg.mark)); cfg.mark <- cfg.stack;
+                push cfg K_backward_end;
+                cfg.backward_depth <- cfg.act.call_depth + 1;
+                cfg.focus <- F_next;
+                let callee = { r with body = handler } in
+                let n = Array.length callee.parameters in
+                push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
+                                   args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
+                                   args_module_data = Array.make n false; args_memory = 0;
+                                   primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
+                Ok "backward-call")
+        | _ -> not_supported (statement_name prev ^ " cannot be executed backward")
+      end
+  | _ -> Error "the program pointer is not at a statement"
+
+let backward_running cfg = cfg.backward_depth >= 0
+
+let backward_rule_names = [ "backward-noop"; "backward-call"; "backward-end"; "raise-in-backward" ]
+
+let global_slot cfg name =
+  let n = String.lowercase_ascii name in
+  let found = ref None in
+  Array.iteri (fun i (g : Ir.global) ->
+      if !found = None && String.lowercase_ascii g.g_name = n then found := Some (Ir.Global i)) cfg.program.globals;
+  !found

@@ -16,6 +16,7 @@ type config
 type event =
   | Output of string                       (** a line written by TPWrite *)
   | Erase                                  (** TPErase *)
+  | Event_log of Primitive.log_entry     (** ErrLog and SkipWarn: the event log (§7.5) *)
   | Log of string                          (** ErrWrite and the like: the event log *)
   | Routine_entered of string
   | Routine_left of string
@@ -106,3 +107,40 @@ val rule_names : string list
 val module_data : config -> (string * string * Value.t) list
 (** Each module data object of the task (and installed datum): its module, its name and its
     current value (--save). *)
+
+(** {1 The debugger's views (doc/debugger.md)} *)
+
+val current_statement : config -> Ir.stmt option
+(** The statement the program pointer is at, when the machine stands before a statement of a
+    statement list (not the simple statement of a compact IF, which is part of its IF). *)
+
+val current_routine : config -> Ir.routine
+
+val call_chain_view : config -> (Ir.routine * Rapid_syntax.Source.region) list
+(** The active routines, innermost first, each with where it stands: the innermost at the
+    focus, a caller at its call. *)
+
+val read_data : config -> Ir.slot -> Value.t option
+(** The value of a data object of the current routine ([Local]) or module data ([Global]);
+    [None] for an absent optional parameter. *)
+
+val write_data : config -> Ir.slot -> Value.t -> bool
+
+(** {1 Backward execution (ch. 6)} *)
+
+val backward : config -> (string, string) result
+(** One statement backward, when the program pointer is at a statement (§6.1-§6.3): [Ok rule]
+    with rule "backward-noop" (the pointer moved back over a label, assignment or CONNECT) or
+    "backward-call" (a procedure call's BACKWARD handler is set to run: [step] runs it, and
+    when it has ended, "backward-end", the pointer is at the call); [Error message] when
+    backward execution is refused: nothing changed. *)
+
+val backward_running : config -> bool
+(** A BACKWARD handler is running: an error now goes to the system error handler
+    ("raise-in-backward", §6.1). *)
+
+val backward_rule_names : string list
+(** The rules of backward execution (doc/semantics.md, "Backward execution"). *)
+
+val global_slot : config -> string -> Ir.slot option
+(** The module data object (or installed data object) of that name, case-insensitively (§2.2). *)

@@ -6,10 +6,18 @@ type argument =
   | Switch
   | Missing
 
+(* An entry of the event log other than ErrWrite's line (§7.5; ABB's ErrLog and SkipWarn). *)
+type log_entry =
+  | Err_log of { id : int; kind : string; arguments : string list }
+      (* ErrLog ErrorId [\W]|[\I] Argument1..Argument5: [kind] "error", "warning" (\W) or
+         "information" (\I) *)
+  | Skip_warning                                     (* SkipWarn (§7.5) *)
+
 type context = {
   output : string -> unit;
   erase : unit -> unit;
   log : string -> unit;
+  event_log : log_entry -> unit;                     (* ErrLog, SkipWarn (§7.5) *)
   book_error : unit -> int;
   error_number : string -> int;
   world : Rapid_controller.World.t;
@@ -84,7 +92,7 @@ let dim args =
 
 let specials = [
   "TPWrite"; "TPErase"; "ErrWrite"; "Present"; "Dim"; "IsVar"; "IsPers"; "Incr"; "Decr"; "Add";
-  "Clear"; "BookErrNo"; "SkipWarn"; "Stop"; "CallByVar"; "StrToVal"; "BitSet"; "BitClear";
+  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "CallByVar"; "StrToVal"; "BitSet"; "BitClear";
   "BitSetDnum"; "BitClearDnum";
 ]
 
@@ -132,7 +140,18 @@ let call ctx name args =
       match args.(0) with
       | Location (box, i, _) -> box.(i) <- V.num (float_of_int (ctx.book_error ())); Returned None
       | _ -> Failed "ERR_ARGNOTVAR")
-  | "skipwarn" -> Returned None
+  | "skipwarn" -> ctx.event_log Skip_warning; Returned None
+  | "errlog" -> (
+      (* ErrLog ErrorId [\W] | [\I] Argument1 .. Argument5 (§7.5; ABB's RAPID Instructions): an
+         entry of the event log with its number and its five texts. *)
+      let kind = match args.(1), args.(2) with
+        | Switch, _ -> "warning" | _, Switch -> "information" | _ -> "error" in
+      match value_of args.(0) with
+      | Some (V.Num id) when Float.is_integer id ->
+          ctx.event_log (Err_log { id = int_of_float id; kind;
+                                   arguments = List.map string_arg (List.filteri (fun i _ -> i >= 3) (Array.to_list args)) });
+          Returned None
+      | _ -> Failed "ERR_ARGVALERR")
   | "stop" -> Stop_requested
   | "callbyvar" -> (
       match value_of args.(0), value_of args.(1) with

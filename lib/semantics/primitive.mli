@@ -14,10 +14,18 @@ type argument =
   | Switch                                           (** a present switch *)
   | Missing                                          (** an absent optional parameter *)
 
+(** An entry of the event log other than ErrWrite's line (§7.5; ABB's ErrLog and SkipWarn). *)
+type log_entry =
+  | Err_log of { id : int; kind : string; arguments : string list }
+      (** ErrLog ErrorId [\W]|[\I] Argument1..Argument5: [kind] "error", "warning" (\W) or
+         "information" (\I) *)
+  | Skip_warning                                     (** SkipWarn (§7.5) *)
+
 type context = {
   output : string -> unit;                           (** a line on the FlexPendant (TPWrite) *)
   erase : unit -> unit;                              (** TPErase *)
   log : string -> unit;                              (** the event log (ErrWrite) *)
+  event_log : log_entry -> unit;                     (** ErrLog, SkipWarn (§7.5) *)
   book_error : unit -> int;                          (** BookErrNo: a new error number *)
   error_number : string -> int;
   world : Rapid_controller.World.t;                  (** the controller around the run *)

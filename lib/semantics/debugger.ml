@@ -1,0 +1,323 @@
+(* The stepping session of doc/debugger.md. The machine reduces one redex per step; the session
+   groups steps into statements: the program pointer is at a statement when the machine's focus
+   is one (Machine.current_statement). *)
+
+open Rapid_syntax
+module M = Machine
+
+type t = {
+  cfg : M.config;
+  out : string -> unit;
+  max_steps : int;
+  mutable breakpoints : (int * string * int) list;   (* number, file, line *)
+  mutable next_breakpoint : int;
+  sources : (string, string array) Hashtbl.t;
+  rules_seen : (string, unit) Hashtbl.t;
+  mutable rules_order : string list;
+  hidden : string -> bool;                            (* NOSTEPIN and NOVIEW modules, by name *)
+  routine_data : Ir.routine -> string list;            (* names of its routine data, in order *)
+}
+
+let config s = s.cfg
+let rules s = List.rev s.rules_order
+
+let note_rule s rule =
+  if not (Hashtbl.mem s.rules_seen rule) then (Hashtbl.add s.rules_seen rule (); s.rules_order <- rule :: s.rules_order)
+
+let source_lines s file =
+  match Hashtbl.find_opt s.sources file with
+  | Some l -> l
+  | None ->
+      let lines =
+        try
+          let ic = open_in_bin file in
+          Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
+              Array.of_list (String.split_on_char '\n' (really_input_string ic (in_channel_length ic))))
+        with Sys_error _ -> [||] in
+      Hashtbl.add s.sources file lines; lines
+
+let file_name region = match Source.file_of region with Some f -> Source.name f | None -> ""
+
+(* The text of the source line a region starts on, without its indentation. *)
+let line_text s region =
+  let line = (Source.start region).line in
+  let lines = source_lines s (file_name region) in
+  if line >= 1 && line <= Array.length lines then
+    String.trim (Format.display (String.trim lines.(line - 1)))
+  else ""
+
+let place s (r : Ir.routine) region =
+  Printf.sprintf "%s:%d  %s" r.module_name (Source.start region).line (line_text s region)
+
+let show_pointer s =
+  match M.outcome s.cfg with
+  | M.Running -> s.out (place s (M.current_routine s.cfg) (M.focus_region s.cfg))
+  | _ -> ()
+
+let outcome_text = function
+  | M.Running -> "running"
+  | Ended -> "the task ended"
+  | Stopped { name; at; about; _ } ->
+      Printf.sprintf "%s: execution error: %s%s: the system error handler stopped the task"
+        (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
+  | Resource_exhausted m -> "resource exhausted: " ^ m
+  | Unsupported { reason; at; _ } -> Printf.sprintf "%s: not modelled: %s" (Source.to_string at) reason
+  | Deadlock m -> m
+  | Stuck m -> "internal error: no rule applies (" ^ m ^ ")"
+
+let show_events s events =
+  List.iter (function
+      | M.Output line -> s.out ("tp> " ^ Format.display line)
+      | Log line -> s.out ("log> " ^ Format.display line)
+      | Event_log (Err_log { id; kind; arguments }) ->
+          s.out (Printf.sprintf "log> %s %d: %s" kind id (String.concat " | " (List.map Format.display arguments)))
+      | Event_log Skip_warning -> s.out "log> SkipWarn"
+      | Error_raised { name; number; at } ->
+          s.out (Printf.sprintf "error> %s (%d) at %s" name number (Source.to_string at))
+      | Error_handled { name; routine } -> s.out (Printf.sprintf "error> %s handled by %s" name routine)
+      | Trap_entered { trap; number; _ } -> s.out (Printf.sprintf "trap> %s (interrupt %d)" trap number)
+      | _ -> ()) events
+
+(* §9.4: stepping does not enter the routines of a NOSTEPIN module; the program pointer is never
+   shown inside one, nor inside a NOVIEW module, whose code cannot be viewed (doc/rulings.md
+   R-9.4-a). *)
+let visible s = not (s.hidden (M.current_routine s.cfg).module_name)
+
+(* Runs the machine until [stop] holds at a statement, the task ends, or the step budget is
+   spent. At least one step is taken. *)
+let run_until s stop =
+  let rec go first =
+    match M.outcome s.cfg with
+    | M.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
+    | M.Running ->
+        if (not first) && M.current_statement s.cfg <> None && visible s && stop () then ()
+        else begin
+          let rule, events = M.step s.cfg in
+          note_rule s rule;
+          show_events s events;
+          go false
+        end
+    | o -> s.out (outcome_text o)
+  in
+  go true
+
+let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> []) ~out cfg =
+  let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
+            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data } in
+  run_until s (fun () -> true);
+  show_pointer s;
+  s
+
+let running s =
+  match M.outcome s.cfg with
+  | M.Running -> true
+  | o -> s.out ("the task is not running: " ^ outcome_text o); false
+
+let at_breakpoint s =
+  let r = M.focus_region s.cfg in
+  let file = file_name r and line = (Source.start r).line in
+  List.exists (fun (_, f, l) ->
+      l = line && (f = file || Filename.basename f = Filename.basename file)) s.breakpoints
+
+(* --- data references: NAME, NAME{i,j}, NAME.component is not modelled (doc/debugger.md) *)
+
+let lower = String.lowercase_ascii
+
+let find_data s name =
+  let r = M.current_routine s.cfg in
+  let n = lower name in
+  let rec param i =
+    if i >= Array.length r.parameters then None
+    else if lower r.parameters.(i).p_name = n then Some (Ir.Local i) else param (i + 1) in
+  (* Routine data takes the slots after the parameters, in declaration order (Lower). *)
+  let data () =
+    let names = s.routine_data r in
+    if List.length names <> List.length r.local_inits then None
+    else
+      List.fold_left2 (fun acc name (slot, _) ->
+          match acc with Some _ -> acc | None -> if lower name = n then Some (Ir.Local slot) else None)
+        None names r.local_inits in
+  match param 0 with
+  | Some slot -> Some slot
+  | None -> (match data () with Some slot -> Some slot | None -> M.global_slot s.cfg n)
+
+let parse_reference text =
+  let text = String.trim text in
+  match String.index_opt text '{' with
+  | None -> Ok (text, [])
+  | Some i ->
+      let name = String.trim (String.sub text 0 i) in
+      let rest = String.sub text (i + 1) (String.length text - i - 1) in
+      if String.length rest = 0 || rest.[String.length rest - 1] <> '}' then Error "an index list ends with }"
+      else
+        let inner = String.sub rest 0 (String.length rest - 1) in
+        let idx = List.map (fun x -> int_of_string_opt (String.trim x)) (String.split_on_char ',' inner) in
+        if List.mem None idx then Error "indexes are whole numbers"
+        else Ok (name, List.map Option.get idx)
+
+let rec element v = function
+  | [] -> Ok v
+  | i :: more -> (
+      match v with
+      | Value.Array es when i >= 1 && i <= Array.length es -> element es.(i - 1) more
+      | Value.Array _ -> Error (Printf.sprintf "index %d out of bounds (ERR_OUTOFBND)" i)
+      | _ -> Error "not an array")
+
+let resolve s text =
+  match parse_reference text with
+  | Error m -> Error m
+  | Ok (name, idx) -> (
+      match find_data s name with
+      | None -> Error (Printf.sprintf "no data object %s in the scope of %s" name (M.current_routine s.cfg).name)
+      | Some slot -> (
+          match M.read_data s.cfg slot with
+          | None -> Error (Printf.sprintf "%s is an absent optional parameter" name)
+          | Some v -> Ok (slot, idx, v)))
+
+let value_text v = try Format.value_text v with Value.Type_mismatch _ -> "<object>"
+
+let print_ s text =
+  match resolve s text with
+  | Error m -> s.out ("print: " ^ m)
+  | Ok (_, idx, v) -> (
+      match element v idx with
+      | Ok e -> s.out (Printf.sprintf "%s = %s" (String.trim text) (value_text e))
+      | Error m -> s.out ("print: " ^ m))
+
+(* A literal of the old value's type (§2.5-§2.8). *)
+let literal old text =
+  let text = String.trim text in
+  match old with
+  | Value.Num _ | Value.Dnum _ -> (
+      let negative = String.length text > 0 && text.[0] = '-' in
+      let digits = if negative then String.trim (String.sub text 1 (String.length text - 1)) else text in
+      let parsed = try Num_literal.of_text digits with Invalid_argument m | Failure m -> Error m in
+      match parsed with
+      | Ok l ->
+          let v = Value.of_literal l (match old with Value.Dnum _ -> `Dnum | _ -> `Num) in
+          if not (Float.is_finite (Value.num_value v)) then Error "the number is beyond the range of its type (§2.13)"
+          else Ok (if not negative then v else match v with
+            | Value.Num f -> Value.Num (-. f) | Value.Dnum f -> Value.Dnum (-. f) | v -> v)
+      | Error _ -> Error "a num literal is expected")
+  | Bool _ -> (
+      match String.uppercase_ascii text with
+      | "TRUE" -> Ok (Value.Bool true) | "FALSE" -> Ok (Value.Bool false)
+      | _ -> Error "TRUE or FALSE is expected")
+  | String _ ->
+      let n = String.length text in
+      if n >= 2 && text.[0] = '"' && text.[n - 1] = '"' && not (String.contains (String.sub text 1 (n - 2)) '"') then
+        if n - 2 > 80 then Error "a string has at most 80 characters (§2.13)"
+        else Ok (Value.String (String.sub text 1 (n - 2)))
+      else Error "a string literal is expected"
+  | _ -> Error "only num, dnum, bool and string data can be set"
+
+let set_ s text =
+  let assignment =
+    match Str.search_forward (Str.regexp_string ":=") text 0 with
+    | i -> Some (String.sub text 0 i, String.sub text (i + 2) (String.length text - i - 2))
+    | exception Not_found -> None in
+  match assignment with
+  | None -> s.out "set: VAR := LITERAL"
+  | Some (target, value) -> (
+      match resolve s target with
+      | Error m -> s.out ("set: " ^ m)
+      | Ok (slot, idx, whole) -> (
+          let store =
+            match List.rev idx with
+            | [] -> (match literal whole value with
+                | Ok v -> if M.write_data s.cfg slot v then Ok v else Error "cannot be written"
+                | Error m -> Error m)
+            | last :: rev_parent -> (
+                match element whole (List.rev rev_parent) with
+                | Ok (Value.Array es) when last >= 1 && last <= Array.length es -> (
+                    match literal es.(last - 1) value with
+                    | Ok v -> es.(last - 1) <- v; Ok v
+                    | Error m -> Error m)
+                | Ok _ -> Error (Printf.sprintf "index %d out of bounds (ERR_OUTOFBND)" last)
+                | Error m -> Error m)
+          in
+          match store with
+          | Ok v -> s.out (Printf.sprintf "%s = %s" (String.trim target) (value_text v))
+          | Error m -> s.out ("set: " ^ m)))
+
+let where s =
+  List.iteri (fun i ((r : Ir.routine), region) ->
+      s.out (Printf.sprintf "#%d %s  %s" i r.name (place s r region))) (M.call_chain_view s.cfg)
+
+let back s =
+  if running s then
+    match M.backward s.cfg with
+    | Error m -> s.out m
+    | Ok rule ->
+        note_rule s rule;
+        if rule = "backward-call" then begin
+          (* The BACKWARD handler runs to its end: breakpoints in it do not stop it, so that
+             backward execution is never nested (§6.2). *)
+          let d = M.depth s.cfg in
+          run_until s (fun () -> M.depth s.cfg <= d && not (M.backward_running s.cfg))
+        end;
+        show_pointer s
+
+let words line =
+  List.filter (fun w -> w <> "") (String.split_on_char ' ' (String.trim line))
+
+let count_arg = function
+  | [] -> Some 1
+  | [ n ] -> (match int_of_string_opt n with Some k when k >= 1 -> Some k | _ -> None)
+  | _ -> None
+
+let command s line =
+  let line = String.trim line in
+  let verb, rest =
+    match String.index_opt line ' ' with
+    | Some i -> (String.sub line 0 i, String.trim (String.sub line (i + 1) (String.length line - i - 1)))
+    | None -> (line, "") in
+  match lower verb with
+  | "" -> `Go_on
+  | "#" -> `Go_on
+  | _ when line.[0] = '#' -> `Go_on
+  | "quit" -> `Quit
+  | "step" | "s" -> (
+      match count_arg (words rest) with
+      | None -> s.out "step: step [N], N at least 1"; `Go_on
+      | Some n ->
+          let rec go k = if k > 0 && running s then (run_until s (fun () -> true); show_pointer s; go (k - 1)) in
+          go n; `Go_on)
+  | "next" | "n" ->
+      if running s then begin
+        let d = M.depth s.cfg in
+        run_until s (fun () -> M.depth s.cfg <= d); show_pointer s
+      end; `Go_on
+  | "finish" ->
+      if running s then begin
+        let d = M.depth s.cfg in
+        run_until s (fun () -> M.depth s.cfg < d); show_pointer s
+      end; `Go_on
+  | "continue" | "c" ->
+      if running s then (run_until s (fun () -> at_breakpoint s); show_pointer s); `Go_on
+  | "back" | "b" -> back s; `Go_on
+  | "break" -> (
+      match String.rindex_opt rest ':' with
+      | Some i when i > 0 && (match int_of_string_opt (String.sub rest (i + 1) (String.length rest - i - 1)) with
+          | Some l -> l >= 1 | None -> false) ->
+          let file = String.sub rest 0 i and l = int_of_string (String.sub rest (i + 1) (String.length rest - i - 1)) in
+          let n = s.next_breakpoint in
+          s.next_breakpoint <- n + 1;
+          s.breakpoints <- s.breakpoints @ [ (n, file, l) ];
+          s.out (Printf.sprintf "breakpoint %d at %s:%d" n file l); `Go_on
+      | _ -> s.out "break: break FILE:LINE"; `Go_on)
+  | "delete" -> (
+      match words rest with
+      | [] -> s.breakpoints <- []; s.out "all breakpoints deleted"; `Go_on
+      | [ n ] when int_of_string_opt n <> None ->
+          let k = int_of_string n in
+          if List.exists (fun (m, _, _) -> m = k) s.breakpoints then begin
+            s.breakpoints <- List.filter (fun (m, _, _) -> m <> k) s.breakpoints;
+            s.out (Printf.sprintf "breakpoint %d deleted" k)
+          end else s.out (Printf.sprintf "delete: no breakpoint %d" k);
+          `Go_on
+      | _ -> s.out "delete: delete [N]"; `Go_on)
+  | "print" | "p" -> if running s then print_ s rest; `Go_on
+  | "set" -> if running s then set_ s rest; `Go_on
+  | "where" -> if running s then where s; `Go_on
+  | _ -> s.out (Printf.sprintf "unknown command %S (step, next, finish, back, continue, break, delete, print, set, where, quit)" verb); `Go_on

@@ -1,0 +1,25 @@
+(** A stepping session over the machine, as a programmer steps a program on the FlexPendant
+    (doc/debugger.md): the program pointer moves statement by statement, forward or backward
+    (ch. 6), and the data of the current routine can be read and written between statements.
+    Every line it prints is deterministic. *)
+
+type t
+
+val create :
+  ?max_steps:int -> ?hidden:(string -> bool) -> ?routine_data:(Ir.routine -> string list) ->
+  out:(string -> unit) -> Machine.config -> t
+(** A session on a machine just started: it runs to the first statement of the entry routine
+    and prints where the program pointer is. [max_steps] bounds the reduction steps of the whole
+    session (default 100,000,000). [hidden] tells the modules the program pointer does not stop
+    in, by name: the NOSTEPIN and NOVIEW modules (§9.2, §9.4); their routines run as one step. [routine_data] names a routine's data declarations in order
+    (the lowered program keeps no names for them), for print and set. *)
+
+val command : t -> string -> [ `Go_on | `Quit ]
+(** Runs one command line (doc/debugger.md) and prints what it does. An unknown or malformed
+    command prints an error line and changes nothing. *)
+
+val config : t -> Machine.config
+
+val rules : t -> string list
+(** The rules of every reduction the session has applied, each once, in the order first
+    applied (the backward rules included). *)

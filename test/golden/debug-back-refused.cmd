@@ -1,0 +1,1 @@
+debug --script debug-back-refused.dbg ../../spec/06-backward/01-restrictions.mod

@@ -1,0 +1,1 @@
+debug --script debug-nostepin.dbg debug-nostepin.mod debug-nostepin-lib.mod

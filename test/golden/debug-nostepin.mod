@@ -1,0 +1,7 @@
+MODULE stepuser
+  PROC main()
+    Tool 1;
+    TPWrite "user";
+    Tool 2;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+debug --script debug-steps.dbg debug-steps.mod

@@ -1,0 +1,141 @@
+(* Backward execution and the debugger: the backward rules of the machine are documented in
+   doc/semantics.md ("Backward execution") and each is applied in one of the debugger sessions
+   of test/golden (the spec/ cases of format 3 run forward only); and the session itself on
+   cases the golden transcripts do not show. *)
+
+module M = Rapid_semantics.Machine
+module D = Rapid_semantics.Debugger
+
+let read_file path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let documented_backward_rules () =
+  let text = read_file "../doc/semantics.md" in
+  let start = Str.search_forward (Str.regexp_string "## Backward execution") text 0 in
+  let section = String.sub text start (String.length text - start) in
+  let rec collect pos acc =
+    match Str.search_forward (Str.regexp "\\*\\*\\([a-z-]+\\)\\*\\*") section pos with
+    | p -> collect (p + 1) (Str.matched_group 1 section :: acc)
+    | exception Not_found -> List.sort_uniq compare acc
+  in
+  collect 0 []
+
+(* A session of FILEs fed the lines of a script; its transcript and rules. *)
+let session ?(entry = "main") files lines =
+  match Rapid_semantics.Session.load files with
+  | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
+  | Ok loaded -> (
+      match M.start loaded.program ~entry with
+      | Error m -> Alcotest.fail m
+      | Ok cfg ->
+          let out = Buffer.create 256 in
+          let d = D.create ~max_steps:1_000_000 ~out:(fun l -> Buffer.add_string out l; Buffer.add_char out '\n') cfg in
+          let rec go = function
+            | [] -> ()
+            | l :: more -> (match D.command d l with `Quit -> () | `Go_on -> go more) in
+          go lines;
+          (Buffer.contents out, D.rules d, cfg))
+
+(* The debugger sessions of test/golden: "debug --script SCRIPT FILE...". *)
+let golden_sessions () =
+  Sys.readdir "golden" |> Array.to_list |> List.sort compare
+  |> List.filter (fun f -> Filename.check_suffix f ".cmd")
+  |> List.filter_map (fun f ->
+      match String.split_on_char ' ' (String.trim (read_file (Filename.concat "golden" f))) with
+      | "debug" :: "--script" :: script :: files ->
+          let in_golden p = Filename.concat "golden" p in
+          Some (List.map in_golden files,
+                String.split_on_char '\n' (read_file (in_golden script)))
+      | _ -> None)
+
+let backward_rules_documented () =
+  Alcotest.(check (list string)) "backward rules of doc/semantics.md"
+    (List.sort compare M.backward_rule_names) (documented_backward_rules ())
+
+let backward_rules_exercised () =
+  let used = List.concat_map (fun (files, lines) -> let _, rules, _ = session files lines in rules) (golden_sessions ()) in
+  let missing = List.filter (fun r -> not (List.mem r used)) M.backward_rule_names in
+  Alcotest.(check (list string)) "backward rules in no debugger session" [] missing
+
+let program text =
+  let file = Filename.temp_file "debugger" ".mod" in
+  let oc = open_out_bin file in
+  output_string oc text; close_out oc;
+  file
+
+(* back inside an error handler is refused (§6.2), and an error in a BACKWARD handler is not
+   handled even by the caller's handler (§6.1). *)
+let back_in_handler () =
+  let file = program {|MODULE m
+  VAR num x := 0;
+  PROC P()
+  BACKWARD
+  ENDPROC
+  PROC main()
+    x := 1 / x;
+  ERROR
+    P;
+    x := 1;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+|} in
+  let text, _, _ = session [ file ] [ "step"; "step"; "back" ] in
+  Alcotest.(check bool) "refused in an error handler" true
+    (Str.string_match (Str.regexp ".*in an error or UNDO handler") (String.concat " " (String.split_on_char '\n' text)) 0)
+
+(* A BACKWARD handler's routine data is initialised as for a call, and its parameters bound:
+   the handler sees the argument evaluated forward (§6.1, §6.2). *)
+let handler_scope () =
+  let file = program {|MODULE m
+  VAR num log := 0;
+  FUNC num Twice(num a)
+    RETURN 2 * a;
+  ENDFUNC
+  PROC P(num k)
+    VAR num extra := 5;
+    log := log + k;
+  BACKWARD
+    log := log * 100 + k + extra;
+  ENDPROC
+  PROC main()
+    P Twice(3);
+    log := log;
+  ENDPROC
+ENDMODULE
+|} in
+  let text, _, _ = session [ file ] [ "next"; "back"; "print log" ] in
+  Alcotest.(check bool) "log = 6 * 100 + 6 + 5" true
+    (List.mem "log = 611" (String.split_on_char '\n' text))
+
+(* The breakpoints of a program that ends: continue runs to the end; a step limit ends a session
+   that loops without end with a clear line. *)
+let step_limit () =
+  let file = program {|MODULE m
+  VAR num x := 0;
+  PROC main()
+    WHILE TRUE DO
+      x := x + 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+|} in
+  match Rapid_semantics.Session.load [ file ] with
+  | Error _ -> Alcotest.fail "load"
+  | Ok loaded -> (
+      match M.start loaded.program ~entry:"main" with
+      | Error m -> Alcotest.fail m
+      | Ok cfg ->
+          let lines = ref [] in
+          let d = D.create ~max_steps:500 ~out:(fun l -> lines := l :: !lines) cfg in
+          ignore (D.command d "continue");
+          Alcotest.(check bool) "step limit" true (List.mem "the step limit (500) is exhausted" !lines))
+
+let suite =
+  ("debugger",
+   [ Alcotest.test_case "backward rules documented" `Quick backward_rules_documented;
+     Alcotest.test_case "backward rules in the golden sessions" `Quick backward_rules_exercised;
+     Alcotest.test_case "back in an error handler" `Quick back_in_handler;
+     Alcotest.test_case "BACKWARD handler scope" `Quick handler_scope;
+     Alcotest.test_case "step limit" `Quick step_limit ])
