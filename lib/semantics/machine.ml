@@ -141,6 +141,10 @@ let fresh_loc v = { box = [| v |]; idx = 0 }
 let get l = Array.unsafe_get l.box l.idx
 let set l v = Array.unsafe_set l.box l.idx (V.copy v)
 
+(* The answer of [static_loc] for a place it cannot locate, compared by identity: an option would
+   cost an allocation on every read. *)
+let no_loc = { box = [||]; idx = 0 }
+
 let error_number cfg name =
   match List.assoc_opt name cfg.program.error_numbers with Some n -> n | None -> 0
 
@@ -167,6 +171,22 @@ let region_of_focus_stmt cfg =
 let raise_ cfg name = cfg.focus <- F_raise (error cfg name (region_of_focus_stmt cfg))
 
 let push cfg f = cfg.stack <- f :: cfg.stack
+
+(* A place without an index expression (a data object, or a component of one) is located in one
+   step: its path is part of the program's text, so this costs nothing that grows with the run.
+   [no_loc] for an absent optional parameter (§5.2) and for a place with indexes, which take
+   steps of their own. *)
+let rec static_loc cfg (p : Ir.place) =
+  match p with
+  | Whole (Global i) -> cfg.globals.(i)
+  | Whole (Local i) ->
+      if i < Array.length cfg.act.present && not (Array.unsafe_get cfg.act.present i) then no_loc
+      else cfg.act.slots.(i)
+  | Component (q, k) -> (
+      let l = static_loc cfg q in
+      if l == no_loc then no_loc
+      else match get l with V.Record cs -> { box = cs; idx = k } | _ -> no_loc)
+  | Element _ | Unresolved _ -> no_loc
 
 (* ------------------------------------------------------------------ start *)
 
@@ -349,7 +369,72 @@ let begin_call cfg (call : Ir.call) =
 
 let () = begin_call_ref := begin_call
 
-(* The next argument of a call in progress, or the call itself when all are there (§5.2). *)
+(* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
+   variable passed on to a PERS parameter, or bound to a persistent passed on to a VAR one. *)
+let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
+  match p.p_mode, k with
+  | Mode_var, Ref_persistent -> Error "ERR_ARGNOTVAR"
+  | Mode_pers, (Ref_variable | Ref_other) -> Error "ERR_ARGNOTPER"
+  | _ -> Ok ()
+
+(* The arguments that need no step of their own are bound as soon as the call reaches them
+   (§5.2): an absent optional parameter, a switch, a conditional argument [\p ? x] (§3.11), a
+   literal. Then the call waits for the expression of a value argument (in focus), a reference
+   argument, or, all bound, the call itself: each of these is a step. O(parameters), like the
+   call state the call allocates. *)
+let bind_value (cs : call_state) v =
+  let i = cs.next in
+  (* §5.2: an in parameter is a copy of the argument's value. *)
+  cs.args_slots.(i) <- fresh_loc (V.copy v);
+  cs.args_present.(i) <- true;
+  cs.primitive_args.(i) <- Primitive.Value v;
+  cs.next <- i + 1
+
+let rec settle_arguments cfg (cs : call_state) =
+  let i = cs.next in
+  if i < Array.length cs.call.arguments then begin
+    let p = cs.callee.parameters.(i) in
+    match cs.call.arguments.(i) with
+    | Absent ->
+        cs.next <- i + 1;
+        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
+        settle_arguments cfg cs
+    | Present_switch ->
+        cs.next <- i + 1;
+        cs.args_present.(i) <- true;
+        cs.primitive_args.(i) <- Primitive.Switch;
+        settle_arguments cfg cs
+    | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
+        cs.next <- i + 1;
+        cs.args_present.(i) <- true;
+        cs.args_slots.(i) <- cfg.act.slots.(j);
+        cs.args_kinds.(i) <- cfg.act.kinds.(j);
+        cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
+        settle_arguments cfg cs
+    | Pass_on _ ->
+        cs.next <- i + 1;
+        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
+        settle_arguments cfg cs
+    | By_value { e = Literal v; _ } -> bind_value cs v; settle_arguments cfg cs
+    | By_value e -> cfg.focus <- F_expr e
+    | By_reference _ -> ()
+  end
+
+(* §5.2: a VAR, PERS, INOUT or REF parameter is the argument's location. *)
+let bind_alias cfg (cs : call_state) rest l =
+  let i = cs.next in
+  let p = cs.callee.parameters.(i) in
+  match alias_allowed p cs.args_kinds.(i) with
+  | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
+  | Ok () ->
+      cs.args_slots.(i) <- l;
+      cs.args_present.(i) <- true;
+      cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
+      cs.next <- i + 1;
+      cfg.focus <- F_next;
+      ("argument-alias", [])
+
+(* A reference argument, or the call itself when every argument is bound (§5.2). *)
 let next_argument cfg (cs : call_state) rest =
   let n = Array.length cs.call.arguments in
   if cs.next >= n then begin
@@ -358,48 +443,16 @@ let next_argument cfg (cs : call_state) rest =
     | Some name -> call_primitive cfg cs name
     | None -> enter_routine cfg cs
   end
-  else begin
-    let i = cs.next in
-    let p = cs.callee.parameters.(i) in
-    match cs.call.arguments.(i) with
-    | Absent ->
-        cs.next <- i + 1;
-        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
-        ("argument-absent", [])
-    | Present_switch ->
-        cs.next <- i + 1;
-        cs.args_present.(i) <- true;
-        cs.primitive_args.(i) <- Primitive.Switch;
-        ("argument-switch", [])
-    | By_value e ->
-        cfg.stack <- K_args { cs with by_value = true } :: rest;
-        cfg.focus <- F_expr e;
-        ("argument-value", [])
+  else
+    match cs.call.arguments.(cs.next) with
     | By_reference (place, k) ->
-        cs.args_kinds.(i) <- reference_kind cfg place k;
-        cfg.stack <- K_args { cs with by_value = false } :: rest;
-        cfg.focus <- F_place place;
-        ("argument-reference", [])
-    | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
-        cs.next <- i + 1;
-        cs.args_present.(i) <- true;
-        cs.args_slots.(i) <- cfg.act.slots.(j);
-        cs.args_kinds.(i) <- cfg.act.kinds.(j);
-        cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
-        ("argument-pass-on-present", [])
-    | Pass_on _ ->
-        cs.next <- i + 1;
-        cs.args_slots.(i) <- fresh_loc (V.copy p.p_default);
-        ("argument-pass-on-absent", [])
-  end
-
-(* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
-   variable passed on to a PERS parameter, or bound to a persistent passed on to a VAR one. *)
-let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
-  match p.p_mode, k with
-  | Mode_var, Ref_persistent -> Error "ERR_ARGNOTVAR"
-  | Mode_pers, (Ref_variable | Ref_other) -> Error "ERR_ARGNOTPER"
-  | _ -> Ok ()
+        cs.args_kinds.(cs.next) <- reference_kind cfg place k;
+        let l = static_loc cfg place in
+        if l != no_loc then bind_alias cfg cs rest l
+        else (cfg.focus <- F_place place; ("argument-reference", []))
+    | _ ->
+        (* Not reached between steps: the configuration is settled (see [settle]). *)
+        settle_arguments cfg cs; ("call-arguments", [])
 
 (* ------------------------------------------------------------------ errors *)
 
@@ -467,8 +520,9 @@ let exec cfg (s : Ir.stmt) =
   | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
   | Assign (p, e) ->
       mark_here ();
-      push cfg (K_assign_value e);
-      cfg.focus <- F_place p;
+      let l = static_loc cfg p in
+      if l != no_loc then (push cfg (K_assign_store l); cfg.focus <- F_expr e)
+      else (push cfg (K_assign_value e); cfg.focus <- F_place p);
       ("assign", [])
   | Call_procedure c -> mark_here (); (begin_call cfg c, [])
   | Call_late (e, args) ->
@@ -579,15 +633,10 @@ let for_in_range v t step =
 (* A statement has completed: the frame on top continues. *)
 let next cfg =
   match cfg.stack with
-  | K_stmt (s, prev) :: rest ->
-      cfg.stack <- rest; cfg.mark <- prev;
-      (match cfg.act.retried with
-       | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
-       | _ -> ());
-      ("statement-done", [])
-  | K_seq (b, i) :: rest ->
-      if i >= Array.length b.body then (cfg.stack <- rest; ("list-done", []))
-      else (cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt b.body.(i); ("list-next", []))
+  | K_seq (b, i) :: rest when i >= Array.length b.body -> cfg.stack <- rest; ("list-done", [])
+  | (K_stmt _ | K_seq _) :: _ ->
+      cfg.focus <- F_done (Stuck "a configuration left unsettled (a completed statement or the next one of a list)");
+      ("stuck", [])
   | K_while_body (c, b) :: rest ->
       cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c; ("while-again", [])
   | K_for_body (f, t, step) :: rest ->
@@ -663,8 +712,6 @@ let value_step cfg v =
       match Arith.unary op v with
       | Ok r -> cfg.focus <- F_value r; ("unary", [])
       | Error name -> cfg.focus <- F_done (Stuck ("a unary operation failed: " ^ name)); ("stuck", []))
-  | K_binary_left (op, b, at) :: rest ->
-      cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; ("binary-left", [])
   | K_binary_right (op, a, _) :: rest -> (
       cfg.stack <- rest;
       match Arith.binary op a v with
@@ -775,16 +822,6 @@ let value_step cfg v =
               | Some arguments ->
                   (begin_call cfg { Ir.callee = Routine i; arguments; call_at = at }, [])))
       | _ -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", []))
-  | K_args cs :: rest ->
-      let i = cs.next in
-      (* §5.2: an in parameter is a copy of the argument's value. *)
-      cs.args_slots.(i) <- fresh_loc (V.copy v);
-      cs.args_present.(i) <- true;
-      cs.primitive_args.(i) <- Primitive.Value v;
-      cs.next <- i + 1;
-      cfg.stack <- K_args cs :: rest;
-      cfg.focus <- F_next;
-      ("argument-bound", [])
   | K_element_index (l, idx, i, at) :: rest -> (
       (* §3.6: an index is an integer within the array's dimension (ERR_OUTOFBND). *)
       match get l, num_of v with
@@ -814,19 +851,7 @@ let loc_step cfg l =
       | _ -> cfg.focus <- F_done (Stuck "a component of a value that is not a record"); ("stuck", []))
   | K_element_base (idx, at) :: rest ->
       cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); ("element-base", [])
-  | K_args cs :: rest -> (
-      let i = cs.next in
-      let p = cs.callee.parameters.(i) in
-      match alias_allowed p cs.args_kinds.(i) with
-      | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
-      | Ok () ->
-          cs.args_slots.(i) <- l;
-          cs.args_present.(i) <- true;
-          cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
-          cs.next <- i + 1;
-          cfg.stack <- K_args cs :: rest;
-          cfg.focus <- F_next;
-          ("argument-alias", []))
+  | K_args cs :: rest -> bind_alias cfg cs rest l
   | K_connect_target trap :: rest -> (
       cfg.stack <- rest;
       (* §4.15: a connected interrupt number cannot be connected again (ERR_ALRDYCNT). *)
@@ -841,22 +866,34 @@ let loc_step cfg l =
 
 let place_step cfg (p : Ir.place) =
   match p with
-  | Whole (Global i) -> cfg.focus <- F_loc cfg.globals.(i); ("place-global", [])
+  | Whole (Global i) -> cfg.focus <- F_loc cfg.globals.(i); ("place", [])
   | Whole (Local i) ->
       (* §5.2: the value of an absent optional parameter cannot be used (ERR_NOTPRES). *)
       if i < Array.length cfg.act.present && not cfg.act.present.(i) then begin
         (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
         raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
       end
-      else (cfg.focus <- F_loc cfg.act.slots.(i); ("place-local", []))
-  | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])
-  | Element (q, idx) -> push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q; ("place-element", [])
+      else (cfg.focus <- F_loc cfg.act.slots.(i); ("place", []))
+  | Component (q, k) -> (
+      let l = static_loc cfg p in
+      if l != no_loc then (cfg.focus <- F_loc l; ("place", []))
+      else (push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])))
+  | Element (q, idx) ->
+      let l = static_loc cfg q in
+      if l != no_loc then (push cfg (K_element_index (l, idx, 0, Source.no_region)); cfg.focus <- F_expr idx.(0))
+      else (push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q)
+      (* [else]: not reached by a checked program (a record component is never an array, §2.14);
+         kept so that the machine needs no such assumption. *);
+      ("place-element", [])
   | Unresolved _ -> raise_ cfg "ERR_REFUNKDAT"; ("place-unknown", [])
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
-  | Literal v -> cfg.focus <- F_value v; ("literal", [])
-  | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
+  | Literal v -> cfg.focus <- F_value v; ("literal", [])  (* not reached: settled *)
+  | Read p ->
+      let l = static_loc cfg p in
+      if l != no_loc then (cfg.focus <- F_value (get l); ("read", []))
+      else (push cfg K_read; cfg.focus <- F_place p; ("read-place", []))
   | Read_signal _ ->
       cfg.focus <- F_done (Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet");
       ("read-signal", [])
@@ -914,11 +951,47 @@ let step_unguarded cfg =
   | F_abandon after -> abandon_step cfg after
   | F_done _ -> ("done", [])
 
+(* After every step, the administrative moves that neither inspect nor change anything a program
+   can observe are made at once, so that the next step is a redex a programmer would name
+   (doc/semantics.md, "Settling"): a literal is a value; the left operand's value moves on to
+   the right operand; an argument's value is bound and the call moves on to the next argument;
+   a located place under a read is read; a completed statement is popped (the mark returns to
+   the enclosing statement, and a statement completed after RETRY resets the RETRY count); the
+   next statement of a list is put in focus. Each move consumes a literal, a frame or an
+   argument, and a statement frame is never directly above another, so this is bounded by the
+   program's text, never by the run's stacks. *)
+let rec settle cfg =
+  match cfg.focus with
+  | F_expr { e = Literal v; _ } -> cfg.focus <- F_value v; settle cfg
+  | F_value v -> (
+      match cfg.stack with
+      | K_binary_left (op, b, at) :: rest ->
+          cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; settle cfg
+      | K_args cs :: _ -> bind_value cs v; cfg.focus <- F_next; settle cfg
+      | _ -> ())
+  | F_loc l -> (
+      match cfg.stack with
+      | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); settle cfg
+      | _ -> ())
+  | F_next -> (
+      match cfg.stack with
+      | K_stmt (s, prev) :: rest ->
+          cfg.stack <- rest; cfg.mark <- prev;
+          (match cfg.act.retried with
+           | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
+           | _ -> ());
+          settle cfg
+      | K_seq (b, i) :: rest when i < Array.length b.body ->
+          cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt (Array.unsafe_get b.body i)
+      | K_args cs :: _ -> settle_arguments cfg cs  (* a literal argument is bound there *)
+      | _ -> ())
+  | _ -> ()
+
 (* A value of the wrong type for an operation is excluded by the static semantics: meeting one
    is a bug of rapid-sem, reported as a stuck configuration. *)
 let step cfg =
   cfg.count <- cfg.count + 1;
-  try step_unguarded cfg with
+  try let r = step_unguarded cfg in settle cfg; r with
   | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
   | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
 
@@ -948,10 +1021,9 @@ let stack_view cfg =
   take 8 cfg.stack
 
 let rule_names = [
-  "list-next"; "list-done"; "statement-done"; "label"; "execute-placeholder"; "assign";
-  "assign-target"; "store"; "call-arguments"; "argument-absent"; "argument-switch";
-  "argument-value"; "argument-reference"; "argument-bound"; "argument-alias";
-  "argument-alias-refused"; "argument-pass-on-present"; "argument-pass-on-absent"; "call-enter";
+  "list-done"; "label"; "execute-placeholder"; "assign";
+  "assign-target"; "store"; "call-arguments"; "argument-reference"; "argument-alias";
+  "argument-alias-refused"; "call-enter";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
   "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
@@ -963,10 +1035,10 @@ let rule_names = [
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
   "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
-  "literal"; "read-place"; "read"; "read-signal"; "place-global"; "place-local"; "place-absent";
-  "place-component"; "place-element"; "place-unknown"; "component"; "element-base";
+  "read-place"; "read"; "read-signal"; "place"; "place-absent";
+  "place-component"; "place-unknown"; "place-element"; "component";
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
-  "unary-operand"; "unary"; "binary-operands"; "binary-left"; "binary";
+  "unary-operand"; "unary"; "binary-operands"; "binary";
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
   "aggregate-first"; "aggregate-next"; "aggregate"; "locals-initialised"; "local-default";
   "local-initial-value";
