@@ -222,78 +222,164 @@ let run_cmd =
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
 
-(* The text of a region, for the trace: its first line, cut at 60 characters. *)
-let source_cache = Hashtbl.create 8
-let region_text r =
-  match Source.file_of r with
-  | None -> ""
-  | Some f -> (
-      let name = Source.name f in
-      let lines = match Hashtbl.find_opt source_cache name with
-        | Some l -> l
-        | None ->
-            let l = match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
-            Hashtbl.replace source_cache name l; l in
-      let p = Source.start r and q = Source.stop r in
-      if p.line < 1 || p.line > Array.length lines then ""
-      else
-        let line = lines.(p.line - 1) in
-        let stop = if q.line = p.line then min (String.length line) (q.col - 1) else String.length line in
-        let start = min (String.length line) (p.col - 1) in
-        let text = String.trim (String.sub line start (max 0 (stop - start))) in
-        if String.length text > 60 then String.sub text 0 57 ^ "..." else text)
+module TV = Rapid_semantics.Trace_view
+
+let write_json (w : TV.change) =
+  match w with
+  | Write { place; value } -> Some (`Assoc [ ("place", `String place); ("value", `String value) ])
+  | _ -> None
+
+(* The changes other than writes, as the events of run --json, with two more kinds. *)
+let change_json (c : TV.change) : Yojson.Safe.t option =
+  let ev (e : M.event) = Some (event_json e) in
+  match c with
+  | Write _ -> None
+  | Output s -> ev (Output s)
+  | Erase -> ev Erase
+  | Log s -> ev (Log s)
+  | Raised { name; number; at } -> ev (Error_raised { name; number; at })
+  | Handled { name; routine } -> ev (Error_handled { name; routine })
+  | Undo_run r -> ev (Undo_run r)
+  | Routine_entered r -> ev (Routine_entered r)
+  | Routine_left r -> ev (Routine_left r)
+  | Task_ended -> ev Task_ended
+  | Retried -> Some (`Assoc [ ("event", `String "retry") ])
+  | Next_tried -> Some (`Assoc [ ("event", `String "trynext") ])
+
+(* A change as the statement-level trace writes it after the statement. *)
+let change_text (c : TV.change) =
+  match c with
+  | Write { place; value } -> Some (place ^ " := " ^ value)
+  | Output s -> Some ("> " ^ s)
+  | Erase -> Some "(erased)"
+  | Log s -> Some ("log: " ^ s)
+  | Raised { name; number; at } -> Some (Printf.sprintf "%s (%d) raised at %s" name number (Source.to_string at))
+  | Handled { routine; _ } -> Some ("handled by " ^ routine)
+  | Retried | Next_tried -> None  (* the statement says it *)
+  | Undo_run r -> Some ("UNDO of " ^ r)
+  | Routine_entered _ | Routine_left _ | Task_ended -> None
+
+(* What a reduction line adds under it: output, errors and handlers, UNDO. *)
+let change_line (c : TV.change) =
+  match c with
+  | Output s -> Some ("> " ^ s)
+  | Erase -> Some "> (erased)"
+  | Log s -> Some ("log: " ^ s)
+  | Undo_run r -> Some ("! the UNDO handler of " ^ r ^ " runs")
+  | Raised _ | Handled _ (* the error's own step says it *) | Write _ | Retried | Next_tried | Routine_entered _ | Routine_left _ | Task_ended -> None
 
 let trace_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let format = Arg.(value & opt (enum [ ("human", `Human); ("jsonl", `Jsonl) ]) `Human & info [ "format" ] ~docv:"FORMAT" ~doc:"$(b,human) or $(b,jsonl) (doc/trace-format.md).") in
+  let level = Arg.(value & opt (enum [ ("reduction", `Reduction); ("statement", `Statement) ]) `Reduction & info [ "level" ] ~docv:"LEVEL" ~doc:"$(b,reduction): one line per reduction step (the default); $(b,statement): one line per statement executed, with the changes it made.") in
   let from_ = Arg.(value & opt int 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt int max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
-  let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules =
+  let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN (reduction level).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit format level from_ to_ rules =
     guard @@ fun () ->
     start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
     let contains s p =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
       n = 0 || go 0 in
-    if format = `Jsonl then print_endline (Yojson.Safe.to_string (`Assoc [ ("schema", `String schema); ("kind", `String "trace") ]));
+    let view = TV.create () in
+    let json j = print_endline (Yojson.Safe.to_string j) in
+    if format = `Jsonl then
+      json (`Assoc [ ("schema", `String schema); ("kind", `String "trace");
+                     ("level", `String (match level with `Reduction -> "reduction" | `Statement -> "statement")) ]);
+    let writes (st : TV.step) = List.filter_map write_json st.changes in
+    let events (st : TV.step) = List.filter_map change_json st.changes in
+    (* The statement level: one line per statement, its changes after it. A change made after a
+       nested statement printed (the store of [x := f(y)] after f's statements) continues its
+       statement on a line of its own. *)
+    let line : (int * Rapid_semantics.Ir.routine * Rapid_semantics.Ir.stmt * int * TV.change list) option ref = ref None in
+    let flush () =
+      match !line with
+      | None -> ()
+      | Some (first, routine, s, depth, changes) ->
+          line := None;
+          if first >= from_ && first <= to_ then begin
+            let changes = List.rev changes in
+            match format with
+            | `Human ->
+                let text = TV.statement_text view s in
+                let shown = List.filter_map change_text changes in
+                Printf.printf "%-20s %s%s%s\n" (TV.place_of_statement view routine s)
+                  (String.make (2 * min 10 (depth - 1)) ' ') text
+                  (if shown = [] then "" else "   " ^ String.concat "; " shown)
+            | `Jsonl ->
+                json (`Assoc [
+                    ("statement", `String (TV.place_of_statement view routine s));
+                    ("step", `Int first); ("depth", `Int depth); ("routine", `String routine.name);
+                    ("at", region_json s.sat); ("text", `String (TV.statement_text view s));
+                    ("writes", `List (List.filter_map write_json changes));
+                    ("events", `List (List.filter_map change_json changes)) ])
+          end
+    in
+    let statement_step (st : TV.step) =
+      let owner = match st.statement with Some s -> Some s | None -> st.in_statement in
+      (match st.statement, !line, owner with
+       | Some s, _, _ -> flush (); line := Some (st.number, st.routine, s, st.depth, [])
+       | None, Some (_, _, s, _, _), Some o when s == o -> ()
+       | None, _, Some o when List.exists (fun c -> change_text c <> None) st.changes ->
+           flush (); line := Some (st.number, st.routine, o, st.depth, [])
+       | _ -> ());
+      match !line with
+      | Some (first, r, s, d, changes) ->
+          line := Some (first, r, s, d, List.rev_append st.changes changes)
+      | None -> ()
+    in
+    let reduction_step (st : TV.step) region kind stack =
+      if st.number >= from_ && st.number <= to_ && (match rules with None -> true | Some p -> contains st.rule p) then
+        match format with
+        | `Human ->
+            let shown_writes = List.filter_map (function
+                | TV.Write { place; value } ->
+                    let w = place ^ " := " ^ value in if w = st.redex then None else Some w
+                | _ -> None) st.changes in
+            let results = (match st.result with Some r -> [ r ] | None -> []) @ shown_writes in
+            Printf.printf "%6d %-22s %-24s %s%s%s\n" st.number st.rule (Source.to_string st.at)
+              (String.make (2 * min 10 (st.depth - 1)) ' ') st.redex
+              (if results = [] then "" else " -> " ^ String.concat "; " results);
+            List.iter (fun c -> match change_line c with Some l -> Printf.printf "       %s\n" l | None -> ()) st.changes
+        | `Jsonl ->
+            json (`Assoc [
+                ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);
+                ("at", region_json st.at); ("redex", `String st.redex);
+                ("result", (match st.result with Some r -> `String r | None -> `Null));
+                ("writes", `List (writes st));
+                ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region);
+                                   ("text", `String (TV.source_text view region)) ]);
+                ("stack", `List (List.map (fun s -> `String s) stack));
+                ("events", `List (events st)) ])
+    in
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
-        let depth = M.depth cfg in
-        let rule, events = M.step cfg in
-        let n = M.steps cfg in
-        if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
-          match format with
-          | `Human ->
-              Printf.printf "%6d %-24s %s %-10s %s | %s\n" n rule (Source.to_string region) kind
-                (region_text region) (String.concat " " stack);
-              List.iter (function M.Output s -> Printf.printf "       > %s\n" s | _ -> ()) events
-          | `Jsonl ->
-              print_endline (Yojson.Safe.to_string (`Assoc [
-                  ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
-                  ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", `String (region_text region)) ]);
-                  ("stack", `List (List.map (fun s -> `String s) stack));
-                  ("events", `List (List.map event_json events)) ]))
-        end;
+        let before = TV.before view cfg in
+        let st = TV.after view before cfg (M.step cfg) in
+        (match level with
+         | `Reduction -> reduction_step st region kind stack
+         | `Statement -> statement_step st);
         loop ()
       end
     in
     loop ();
-    if format = `Jsonl then print_endline (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
+    flush ();
+    if format = `Jsonl then json (outcome_json (M.outcome cfg) (M.steps cfg))
     else Printf.printf "end: %s after %d steps\n" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted m | Unsupported m | Stuck m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
-  let doc = "print the reductions of a run one by one" in
+  let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), the focus (its location, kind and source text) and the topmost continuation frames. $(b,--format jsonl) writes one JSON object per step in the schema of doc/trace-format.md.";
+    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became; output, errors raised and handled follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ level $ from_ $ to_ $ rules)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in

@@ -190,6 +190,9 @@ let rec static_loc cfg (p : Ir.place) =
 
 (* ------------------------------------------------------------------ start *)
 
+(* [settle], defined with the step below: the first configuration is settled too. *)
+let settle_ref : (config -> unit) ref = ref (fun _ -> ())
+
 let routine_index program name =
   let rec find i =
     if i >= Array.length program.Ir.routines then None
@@ -265,6 +268,7 @@ let start ?(limits = default_limits) (program : Ir.program) ~entry =
           interrupt_queue = Queue.create ();
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
+        !settle_ref cfg;
         Ok cfg
       end
 
@@ -633,7 +637,6 @@ let for_in_range v t step =
 (* A statement has completed: the frame on top continues. *)
 let next cfg =
   match cfg.stack with
-  | K_seq (b, i) :: rest when i >= Array.length b.body -> cfg.stack <- rest; ("list-done", [])
   | (K_stmt _ | K_seq _) :: _ ->
       cfg.focus <- F_done (Stuck "a configuration left unsettled (a completed statement or the next one of a list)");
       ("stuck", [])
@@ -680,14 +683,12 @@ let next cfg =
           ("undo-done", [ Routine_left act.routine.name ]))
   | K_local_init (act, inits) :: rest -> (
       match inits with
-      | [] -> cfg.stack <- rest; ("locals-initialised", [])
-      | (slot, Init_default v) :: more ->
-          act.slots.(slot) <- fresh_loc (V.copy v);
-          cfg.stack <- K_local_init (act, more) :: rest; ("local-default", [])
       | (slot, Init_expr e) :: more ->
           act.slots.(slot) <- fresh_loc (V.Bool false);
           cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
-          cfg.focus <- F_expr e; ("local-initial-value", []))
+          cfg.focus <- F_expr e; ("local-initial-value", [])
+      | _ ->
+          cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
   | K_args cs :: rest -> next_argument cfg cs rest
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
   | f :: _ ->
@@ -981,11 +982,23 @@ let rec settle cfg =
            | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
            | _ -> ());
           settle cfg
-      | K_seq (b, i) :: rest when i < Array.length b.body ->
-          cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt (Array.unsafe_get b.body i)
+      | K_seq (b, i) :: rest ->
+          if i < Array.length b.body then begin
+            cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt (Array.unsafe_get b.body i)
+          end
+          else (cfg.stack <- rest; settle cfg)
       | K_args cs :: _ -> settle_arguments cfg cs  (* a literal argument is bound there *)
+      | K_local_init (act, inits) :: rest -> (
+          match inits with
+          | [] -> cfg.stack <- rest; settle cfg
+          | (slot, Init_default v) :: more ->
+              act.slots.(slot) <- fresh_loc (V.copy v);
+              cfg.stack <- K_local_init (act, more) :: rest; settle cfg
+          | (_, Init_expr _) :: _ -> ())
       | _ -> ())
   | _ -> ()
+
+let () = settle_ref := settle
 
 (* A value of the wrong type for an operation is excluded by the static semantics: meeting one
    is a bug of rapid-sem, reported as a stuck configuration. *)
@@ -1004,7 +1017,11 @@ let focus_region cfg =
   | F_expr e -> e.at
   | F_stmt s -> s.sat
   | F_raise e | F_search (e, _) -> e.err_at
-  | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at)
+  | _ -> (
+      match cfg.stack with
+      | (K_binary_right (_, _, at) | K_unary (_, at)) :: _ -> at
+      | K_args cs :: _ -> cs.call.call_at
+      | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at))
 
 let focus_kind cfg =
   match cfg.focus with
@@ -1021,7 +1038,7 @@ let stack_view cfg =
   take 8 cfg.stack
 
 let rule_names = [
-  "list-done"; "label"; "execute-placeholder"; "assign";
+  "label"; "execute-placeholder"; "assign";
   "assign-target"; "store"; "call-arguments"; "argument-reference"; "argument-alias";
   "argument-alias-refused"; "call-enter";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
@@ -1040,7 +1057,154 @@ let rule_names = [
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
   "unary-operand"; "unary"; "binary-operands"; "binary";
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
-  "aggregate-first"; "aggregate-next"; "aggregate"; "locals-initialised"; "local-default";
-  "local-initial-value";
+  "aggregate-first"; "aggregate-next"; "aggregate"; "local-initial-value";
   "done"; "stuck";
 ]
+
+(* ------------------------------------------------------------------ views, for the trace *)
+
+(* Computed only when the trace asks: running never builds them. *)
+
+type location = loc
+
+type focus_view =
+  | Statement of Ir.stmt
+  | Expression of Ir.expr
+  | Place of Ir.place
+  | Location of location
+  | Value of V.t
+  | Next
+  | Error of { name : string; number : int; at : Source.region }
+  | Search of string option
+  | Abandon
+  | End
+
+type argument_view =
+  | Bound_value of V.t
+  | Bound_alias of location
+  | Absent_argument
+  | Switch_argument
+  | Not_bound
+
+type frame_view =
+  | Binary_right of Arith.binary * V.t
+  | Unary_operand of Arith.unary
+  | And_right
+  | Or_right
+  | Aggregate_member of Ir.aggregate_kind * V.t array * int
+  | Store of location * Ir.stmt option
+  | Assign_target of Ir.stmt option
+  | Condition of Ir.stmt option
+  | For_bound of Ir.for_loop * string
+  | For_body of Ir.for_loop
+  | While_body of Ir.expr
+  | Test_value of V.t option
+  | Return_value
+  | Raise_value
+  | Late_name
+  | Element_index of location * int * int
+  | Call_arguments of { callee : Ir.routine; call : Ir.call; arguments : argument_view array; next : int }
+  | Routine_end
+  | Local_init of (int * Ir.init) list
+  | Other_frame of string
+
+let focus_view cfg =
+  match cfg.focus with
+  | F_stmt s -> Statement s
+  | F_expr e -> Expression e
+  | F_place p -> Place p
+  | F_loc l -> Location l
+  | F_value v -> Value v
+  | F_next -> Next
+  | F_raise e -> Error { name = e.name; number = e.number; at = e.err_at }
+  | F_search (_, a) -> Search (Option.map (fun a -> a.routine.Ir.name) a)
+  | F_abandon _ -> Abandon
+  | F_done _ -> End
+
+let statement_below = function K_stmt (s, _) :: _ -> Some s | _ -> None
+
+let frame_view cfg =
+  match cfg.stack with
+  | [] -> Other_frame "empty"
+  | f :: below -> (
+      match f with
+      | K_binary_right (op, v, _) -> Binary_right (op, v)
+      | K_unary (op, _) -> Unary_operand op
+      | K_and _ -> And_right
+      | K_or _ -> Or_right
+      | K_aggregate (_, acc, i, kind) -> Aggregate_member (kind, acc, i)
+      | K_assign_store l -> Store (l, statement_below below)
+      | K_assign_value _ -> Assign_target (statement_below below)
+      | K_if _ | K_compact_if _ | K_while_test _ -> Condition (statement_below below)
+      | K_for_from f -> For_bound (f, "FROM")
+      | K_for_to (f, _) -> For_bound (f, "TO")
+      | K_for_step (f, _, _) -> For_bound (f, "STEP")
+      | K_for_body (f, _, _) -> For_body f
+      | K_while_body (c, _) -> While_body c
+      | K_test_subject _ -> Test_value None
+      | K_test_value (v, _, _, _, _) -> Test_value (Some v)
+      | K_return_value -> Return_value
+      | K_raise_value -> Raise_value
+      | K_late_name _ -> Late_name
+      | K_element_index (l, idx, i, _) -> Element_index (l, i, Array.length idx)
+      | K_args cs ->
+          let arguments = Array.mapi (fun i (a : Ir.argument) ->
+              if i >= cs.next then Not_bound
+              else match a with
+                | Absent -> Absent_argument
+                | Present_switch -> Switch_argument
+                | Pass_on _ when not cs.args_present.(i) -> Absent_argument
+                | By_value _ -> Bound_value (get cs.args_slots.(i))
+                | By_reference _ | Pass_on _ -> Bound_alias cs.args_slots.(i)) cs.call.arguments in
+          Call_arguments { callee = cs.callee; call = cs.call; arguments; next = cs.next }
+      | K_routine_end -> Routine_end
+      | K_local_init (_, inits) -> Local_init inits
+      | f -> Other_frame (frame_kind f))
+
+let location_value = get
+
+(* Where a location is: searched from the current activation's slots, then the module data, by
+   identity of the storage; the path runs from the data object to the location. *)
+type path_step = Index of int | Component_of of int
+
+let location_path cfg (l : location) =
+  let rec within v path =
+    match v with
+    | V.Record cs | V.Array cs ->
+        let step k = match v with V.Record _ -> Component_of k | _ -> Index (k + 1) in
+        if cs == l.box then Some (List.rev (step l.idx :: path))
+        else
+          let rec each k =
+            if k >= Array.length cs then None
+            else match within cs.(k) (step k :: path) with Some p -> Some p | None -> each (k + 1)
+          in
+          each 0
+    | _ -> None
+  in
+  let search roots slot =
+    let rec go i =
+      if i >= Array.length roots then None
+      else
+        let r = roots.(i) in
+        if r.box == l.box && r.idx = l.idx then Some (slot i, [])
+        else match within (get r) [] with
+          | Some path -> Some (slot i, path)
+          | None -> go (i + 1)
+    in
+    go 0
+  in
+  match search cfg.act.slots (fun i -> Ir.Local i) with
+  | Some p -> Some p
+  | None -> search cfg.globals (fun i -> Ir.Global i)
+
+let place_value cfg p =
+  let l = static_loc cfg p in
+  if l == no_loc then None else Some (get l)
+
+let slot_value cfg = function
+  | Ir.Local i -> if i < Array.length cfg.act.slots then Some (get cfg.act.slots.(i)) else None
+  | Global i -> Some (get cfg.globals.(i))
+
+let current_routine cfg = cfg.act.routine
+let current_statement cfg = statement_below cfg.mark
+let program cfg = cfg.program
