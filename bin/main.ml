@@ -304,7 +304,8 @@ let trace_cmd =
             | `Human ->
                 let text = TV.statement_text view s in
                 let shown = List.filter_map change_text changes in
-                Printf.printf "%-20s %s%s%s\n" (TV.place_of_statement view routine s)
+                let place = TV.place_of_statement view routine s in
+                Printf.printf "%s%s%s%s%s\n" place (String.make (max 2 (20 - String.length place)) ' ')
                   (String.make (2 * min 10 (depth - 1)) ' ') text
                   (if shown = [] then "" else "   " ^ String.concat "; " shown)
             | `Jsonl ->

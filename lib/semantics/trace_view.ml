@@ -239,6 +239,8 @@ let before t cfg =
   let routine = M.current_routine cfg in
   let ri = lazy (routine_index program routine) in
   let redex, pure =
+    (* A configuration the machine is about to find stuck must not stop the trace first. *)
+    try
     match focus, frame with
     | Statement s, _ -> (statement_text t s, None)
     | Expression ({ e = Read p; _ } as e), _ ->
@@ -291,7 +293,8 @@ let before t cfg =
     | Next, Local_init ((slot, Init_expr e) :: _) ->
         (slot_name program (Lazy.force ri) (Local slot) ^ " := " ^ source_text t e.at, None)
     | Next, Local_init [] -> ("routine data of " ^ routine.name, None)
-    | Next, Other_frame "seq" -> ("end of a statement list", None)
+    | Next, Other_frame "undo-end" -> ("end of the UNDO handler of " ^ routine.name, None)
+    | Next, Other_frame "handler-end" -> ("end of the error handler of " ^ routine.name, None)
     | Next, Other_frame kind -> (kind, None)
     | Next, _ -> ("", None)
     | Error { name; number; _ }, _ -> (Printf.sprintf "%s (%d)" name number, None)
@@ -299,6 +302,7 @@ let before t cfg =
     | Search None, _ -> ("error recovery point?", None)
     | Abandon, _ -> ("leave " ^ routine.name, None)
     | End, _ -> ("", None)
+    with V.Type_mismatch _ | Invalid_argument _ | Not_found -> ("?", None)
   in
   let aliases =
     match focus, frame with
@@ -374,6 +378,8 @@ let after t (b : before) cfg (rule, events) =
     | ("raise-unhandled" | "raise-in-handler" | "raise-again-unhandled" | "handler-end" | "retry-limit"), _, _ ->
         (Some "the system error handler", [])
     | "raise-propagate", _, _ -> (Some ("propagated: " ^ b.b_routine.name ^ " is left"), [])
+    | "raise-again", _, _ -> (Some ("propagated from " ^ b.b_routine.name), [])
+    | ("undo-done" | "abandon"), _, _ -> (Some (b.b_routine.name ^ " is left"), [])
     | "longjump-found", _, _ -> (Some "found: a long jump to it", [])
     | "longjump-search", _, _ -> (Some "not here", [])
     | "retry", _, _ -> (Some "the statement that caused the error runs again", [])
