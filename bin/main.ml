@@ -330,6 +330,7 @@ let trace_cmd =
           line := Some (first, r, s, d, List.rev_append st.changes changes)
       | None -> ()
     in
+    let last_state = ref None in
     let reduction_step (st : TV.step) region kind stack =
       if st.number >= from_ && st.number <= to_ && (match rules with None -> true | Some p -> contains st.rule p) then
         match format with
@@ -339,9 +340,15 @@ let trace_cmd =
                     let w = place ^ " := " ^ value in if w = st.redex then None else Some w
                 | _ -> None) st.changes in
             let results = (match st.result with Some r -> [ r ] | None -> []) @ shown_writes in
-            Printf.printf "%6d %-22s %-24s %s%s%s\n" st.number st.rule (Source.to_string st.at)
-              (String.make (2 * min 10 (st.depth - 1)) ' ') st.redex
-              (if results = [] then "" else " -> " ^ String.concat "; " results);
+            let step = Printf.sprintf "%s%s%s" (String.make (2 * min 10 (st.depth - 1)) ' ') st.redex
+                (if results = [] then "" else " -> " ^ String.concat "; " results) in
+            (* The statement as it stands, when this step changed it. *)
+            let state = match st.state with
+              | Some s when Some s <> !last_state -> last_state := st.state; "   | " ^ s
+              | Some _ -> ""
+              | None -> last_state := None; "" in
+            if state = "" then Printf.printf "%6d %-22s %-24s %s\n" st.number st.rule (Source.to_string st.at) step
+            else Printf.printf "%6d %-22s %-24s %-44s%s\n" st.number st.rule (Source.to_string st.at) step state;
             List.iter (fun c -> match change_line c with Some l -> Printf.printf "       %s\n" l | None -> ()) st.changes
         | `Jsonl ->
             json (`Assoc [
@@ -349,6 +356,7 @@ let trace_cmd =
                 ("at", region_json st.at); ("redex", `String st.redex);
                 ("result", (match st.result with Some r -> `String r | None -> `Null));
                 ("writes", `List (writes st));
+                ("state", (match st.state with Some s -> `String s | None -> `Null));
                 ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region);
                                    ("text", `String (TV.source_text view region)) ]);
                 ("stack", `List (List.map (fun s -> `String s) stack));

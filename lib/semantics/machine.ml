@@ -81,9 +81,9 @@ and frame =
   | K_connect_target of int
   | K_late_name of Ir.late_argument array * Source.region
   | K_read
-  | K_unary of Arith.unary * Source.region
-  | K_binary_left of Arith.binary * Ir.expr * Source.region
-  | K_binary_right of Arith.binary * V.t * Source.region
+  | K_unary of Arith.unary * Ir.expr               (* the whole expression, for the trace *)
+  | K_binary_left of Arith.binary * Ir.expr * Ir.expr   (* the right operand; the whole *)
+  | K_binary_right of Arith.binary * V.t * Ir.expr
   | K_and of Ir.expr
   | K_or of Ir.expr
   | K_aggregate of Ir.expr array * V.t array * int * Ir.aggregate_kind
@@ -898,8 +898,8 @@ let expr_step cfg (e : Ir.expr) =
   | Read_signal _ ->
       cfg.focus <- F_done (Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet");
       ("read-signal", [])
-  | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
-  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
+  | Unary (op, a) -> push cfg (K_unary (op, e)); cfg.focus <- F_expr a; ("unary-operand", [])
+  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e)); cfg.focus <- F_expr a; ("binary-operands", [])
   | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
   | Or (a, b) -> push cfg (K_or b); cfg.focus <- F_expr a; ("or", [])
   | Aggregate (es, kind) ->
@@ -1019,7 +1019,7 @@ let focus_region cfg =
   | F_raise e | F_search (e, _) -> e.err_at
   | _ -> (
       match cfg.stack with
-      | (K_binary_right (_, _, at) | K_unary (_, at)) :: _ -> at
+      | (K_binary_right (_, _, e) | K_unary (_, e)) :: _ -> e.at
       | K_args cs :: _ -> cs.call.call_at
       | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at))
 
@@ -1208,3 +1208,50 @@ let slot_value cfg = function
 let current_routine cfg = cfg.act.routine
 let current_statement cfg = statement_below cfg.mark
 let program cfg = cfg.program
+
+(* The values computed so far within the innermost statement in progress, each with the region
+   of the expression it is the value of: the statement as it stands, for the trace. The frames
+   from the top down to the statement's are walked: for the trace only. *)
+let computed_values cfg =
+  let stmt_expr pick = match cfg.mark with K_stmt (s, _) :: _ -> pick s.Ir.s | _ -> None in
+  (* The expression whose value the frame on top waits for: the focus's value is its. *)
+  let awaited = function
+    | K_binary_right (_, _, { e = Binary (_, _, b); _ }) -> Some b
+    | K_unary (_, { e = Unary (_, a); _ }) -> Some a
+    | K_assign_store _ -> stmt_expr (function Ir.Assign (_, e) -> Some e | _ -> None)
+    | K_if _ | K_compact_if _ | K_while_test _ ->
+        stmt_expr (function Ir.If (c, _, _) | Compact_if (c, _) | While (c, _) -> Some c | _ -> None)
+    | K_return_value -> stmt_expr (function Ir.Return (Some e) -> Some e | _ -> None)
+    | K_raise_value -> stmt_expr (function Ir.Raise (Some e) -> Some e | _ -> None)
+    | K_late_name _ -> stmt_expr (function Ir.Call_late (e, _) -> Some e | _ -> None)
+    | K_test_subject _ -> stmt_expr (function Ir.Test (e, _, _) -> Some e | _ -> None)
+    | K_test_value (_, cases, _, ci, vi) -> Some (fst cases.(ci)).(vi)
+    | K_aggregate (es, _, i, _) -> Some es.(i)
+    | K_element_index (_, idx, i, _) -> Some idx.(i)
+    | K_for_from f -> Some f.from_
+    | K_for_to (f, _) -> Some f.to_
+    | K_for_step (f, _, _) -> Option.map Fun.id f.step
+    | _ -> None
+  in
+  let held = function
+    | K_binary_right (_, v, { e = Binary (_, a, _); _ }) -> [ (a.at, v) ]
+    | K_aggregate (es, acc, i, _) -> List.init i (fun j -> (es.(j).at, acc.(j)))
+    | K_args cs ->
+        List.concat (List.init (min cs.next (Array.length cs.call.arguments)) (fun j ->
+            match cs.call.arguments.(j) with
+            | By_value e when cs.args_present.(j) -> [ (e.at, get cs.args_slots.(j)) ]
+            | _ -> []))
+    | K_test_value (v, _, _, _, _) -> (
+        match stmt_expr (function Ir.Test (e, _, _) -> Some e | _ -> None) with
+        | Some e -> [ (e.at, v) ] | None -> [])
+    | _ -> []
+  in
+  let rec walk acc = function
+    | [] | K_stmt _ :: _ -> acc
+    | f :: rest -> walk (held f @ acc) rest
+  in
+  let from_frames = walk [] cfg.stack in
+  match cfg.focus, cfg.stack with
+  | F_value v, f :: _ -> (
+      match awaited f with Some e -> (e.at, v) :: from_frames | None -> from_frames)
+  | _ -> from_frames

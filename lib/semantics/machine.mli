@@ -141,5 +141,9 @@ val current_statement : config -> Ir.stmt option
 
 val program : config -> Ir.program
 
+val computed_values : config -> (Rapid_syntax.Source.region * Value.t) list
+(** The values computed so far within the innermost statement in progress, each with the
+    region of the expression it is the value of (the statement as it stands). *)
+
 val rule_names : string list
 (** Every rule of the machine, as doc/semantics.md lists them. *)

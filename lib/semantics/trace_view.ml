@@ -54,54 +54,70 @@ let load name =
       done;
       Some { text; byte_of_char = Array.of_list (!starts @ [ n ]) }
 
-let source_text t r =
+let source_of t r =
   match Source.file_of r with
-  | None -> ""
+  | None -> None
   | Some f -> (
       let name = Source.name f in
-      let src = match Hashtbl.find_opt t.files name with
-        | Some s -> s
-        | None -> let s = load name in Hashtbl.replace t.files name s; s in
-      match src with
-      | None -> ""
-      | Some src ->
-          let chars = Array.length src.byte_of_char - 1 in
-          let a = min chars (max 0 (Source.start_offset r)) and b = min chars (max 0 (Source.stop_offset r)) in
-          if b <= a then ""
-          else begin
-            let raw = String.sub src.text src.byte_of_char.(a) (src.byte_of_char.(b) - src.byte_of_char.(a)) in
-            (* On one line: line breaks, and the blanks around them, as one space. *)
-            let buf = Buffer.create (String.length raw) in
-            let blank = ref false in
-            String.iter (fun c ->
-                if c = '\n' || c = '\r' || c = ' ' || c = '\t' then blank := true
-                else begin
-                  if !blank && Buffer.length buf > 0 then Buffer.add_char buf ' ';
-                  blank := false;
-                  Buffer.add_char buf c
-                end) raw;
-            let s = Buffer.contents buf in
-            if String.length s > 72 then String.sub s 0 69 ^ "..." else s
-          end)
+      match Hashtbl.find_opt t.files name with
+      | Some s -> s
+      | None -> let s = load name in Hashtbl.replace t.files name s; s)
+
+(* On one line: line breaks, and the blanks around them, as one space; cut at [limit]. *)
+let one_line ~limit raw =
+  let buf = Buffer.create (String.length raw) in
+  let blank = ref false in
+  String.iter (fun c ->
+      if c = '\n' || c = '\r' || c = ' ' || c = '\t' then blank := true
+      else begin
+        if !blank && Buffer.length buf > 0 then Buffer.add_char buf ' ';
+        blank := false;
+        Buffer.add_char buf c
+      end) raw;
+  let s = Buffer.contents buf in
+  if String.length s > limit then String.sub s 0 (limit - 3) ^ "..." else s
+
+(* The text of a region with sub-regions replaced (values for the expressions they hold): the
+   outermost of nested replacements wins. *)
+let text_with ?(limit = 72) t r (subs : (Source.region * string) list) =
+  match source_of t r with
+  | None -> ""
+  | Some src ->
+      let chars = Array.length src.byte_of_char - 1 in
+      let clamp o = min chars (max 0 o) in
+      let a = clamp (Source.start_offset r) and b = clamp (Source.stop_offset r) in
+      if b <= a then ""
+      else begin
+        let subs = List.filter_map (fun (q, text) ->
+            let qa = clamp (Source.start_offset q) and qb = clamp (Source.stop_offset q) in
+            if Source.file_of q == Source.file_of r && qa >= a && qb <= b && qb > qa then Some (qa, qb, text) else None) subs in
+        let subs = List.sort (fun (a1, b1, _) (a2, b2, _) -> if a1 <> a2 then compare a1 a2 else compare b2 b1) subs in
+        let buf = Buffer.create 64 in
+        let bytes i j = String.sub src.text src.byte_of_char.(i) (src.byte_of_char.(j) - src.byte_of_char.(i)) in
+        let pos = List.fold_left (fun pos (qa, qb, text) ->
+            if qa < pos then pos
+            else (Buffer.add_string buf (bytes pos qa); Buffer.add_string buf text; qb)) a subs in
+        Buffer.add_string buf (bytes pos b);
+        one_line ~limit (Buffer.contents buf)
+      end
+
+let source_text t r = text_with t r []
 
 (* A compound statement by its first line (IF ... THEN, WHILE ... DO), a simple one whole. *)
-let statement_text t (s : Ir.stmt) =
+let statement_region (s : Ir.stmt) =
   match s.s with
   | If _ | While _ | For _ | Test _ -> (
-      let p = Source.start s.sat in
       match Source.file_of s.sat with
       | Some f ->
-          let line_end =
-            (* the region up to the first line break: the start of the next line, less one *)
-            let next = Source.pos_of_offset f (Source.start_offset s.sat) in
-            ignore next;
-            let rec scan o = if o >= Source.stop_offset s.sat then o
-              else if (Source.pos_of_offset f o).line <> p.line then o - 1 else scan (o + 1) in
-            scan (Source.start_offset s.sat)
-          in
-          source_text t (Source.region f (Source.start_offset s.sat) line_end)
-      | None -> source_text t s.sat)
-  | _ -> source_text t s.sat
+          let line = (Source.start s.sat).line in
+          let rec scan o =
+            if o >= Source.stop_offset s.sat then o
+            else if (Source.pos_of_offset f o).line <> line then o - 1 else scan (o + 1) in
+          Source.region f (Source.start_offset s.sat) (scan (Source.start_offset s.sat))
+      | None -> s.sat)
+  | _ -> s.sat
+
+let statement_text t s = source_text t (statement_region s)
 
 (* ------------------------------------------------------------------ places *)
 
@@ -207,6 +223,7 @@ type step = {
   statement : Ir.stmt option;
   in_statement : Ir.stmt option;
   routine : Ir.routine;
+  state : string option;
 }
 
 type before = {
@@ -316,6 +333,15 @@ let before t cfg =
   { focus; frame; b_at = M.focus_region cfg; b_depth = M.depth cfg; b_routine = routine;
     b_redex = redex; pure_result = pure; aliases; b_statement = M.current_statement cfg }
 
+(* The statement in progress as it stands: its text with the values computed so far. *)
+let statement_state t cfg =
+  match M.current_statement cfg, M.computed_values cfg with
+  | Some s, (_ :: _ as values) ->
+      let now = text_with ~limit:100 t (statement_region s) (List.map (fun (r, v) -> (r, value v)) values) in
+      (* A literal's value written where the literal is changes nothing worth a line. *)
+      if now = text_with ~limit:100 t (statement_region s) [] then None else Some now
+  | _ -> None
+
 let event_change (e : M.event) =
   match e with
   | Output s -> Output s
@@ -398,7 +424,7 @@ let after t (b : before) cfg (rule, events) =
   let statement = match b.focus with Statement s -> Some s | _ -> None in
   { number = M.steps cfg; rule; depth = b.b_depth; at = b.b_at; redex = b.b_redex; result;
     changes = writes @ extra @ List.map event_change events; statement;
-    in_statement = b.b_statement; routine = b.b_routine }
+    in_statement = b.b_statement; routine = b.b_routine; state = statement_state t cfg }
 
 let place_of_statement _ (r : Ir.routine) (s : Ir.stmt) =
   Printf.sprintf "%s:%d" r.module_name (Source.start s.sat).line

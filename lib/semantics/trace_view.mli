@@ -36,6 +36,10 @@ type step = {
   statement : Ir.stmt option;           (** the statement that begins with this step *)
   in_statement : Ir.stmt option;        (** the innermost statement in progress before it *)
   routine : Ir.routine;                 (** the routine the step runs in *)
+  state : string option;
+      (** after the step, the statement in progress as it stands: its text with the values
+          computed so far in place of their expressions ([total := 0 + sq(1);]); [None] when
+          nothing is computed yet *)
 }
 
 type t
