@@ -634,6 +634,22 @@ let for_in_range v t step =
   | V.Num v, V.Num t, V.Num s -> if s >= 0. then v <= t else v >= t
   | _ -> false
 
+(* The activation of an abandoned routine is popped (§7.2): what made it abandoned goes on in
+   the caller. *)
+let leave_abandoned cfg after rule rule_entry =
+  let act = cfg.act in
+  match act.caller with
+  | None -> cfg.focus <- F_done Ended; (rule_entry, [ Task_ended ])
+  | Some caller ->
+      cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+      (match after with
+       | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
+       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
+       | Go_on_long_jump (e, target) ->
+           if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
+           else cfg.focus <- F_abandon after);
+      (rule, [ Routine_left act.routine.name ])
+
 (* A statement has completed: the frame on top continues. *)
 let next cfg =
   match cfg.stack with
@@ -668,19 +684,7 @@ let next cfg =
       match cfg.act.handling with
       | In_handler (e, _) -> stop cfg e "handler-end"
       | _ -> cfg.focus <- F_done (Stuck "end of a handler not in a handler"); ("stuck", []))
-  | K_undo_end after :: _ -> (
-      let act = cfg.act in
-      match act.caller with
-      | None -> cfg.focus <- F_done Ended; ("undo-done-entry", [ Task_ended ])
-      | Some caller ->
-          cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
-          (match after with
-           | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
-           | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
-           | Go_on_long_jump (e, target) ->
-               if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
-               else cfg.focus <- F_abandon after);
-          ("undo-done", [ Routine_left act.routine.name ]))
+  | K_undo_end after :: _ -> leave_abandoned cfg after "undo-done" "undo-done-entry"
   | K_local_init (act, inits) :: rest -> (
       match inits with
       | (slot, Init_expr e) :: more ->
@@ -914,6 +918,8 @@ let expr_step cfg (e : Ir.expr) =
 (* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
    handler runs first (§7.2, §1.2). *)
 let abandon_step cfg after =
+  (* Without an UNDO handler to run, the routine is left in this step (settling: nothing runs
+     in between). *)
   let act = cfg.act in
   match act.routine.undo, act.handling with
   | Some undo, (Body | In_handler _) ->
@@ -922,10 +928,7 @@ let abandon_step cfg after =
       cfg.mark <- [];
       cfg.focus <- F_next;
       ("undo-run", [ Undo_run act.routine.name ])
-  | _ ->
-      cfg.stack <- [ K_undo_end after ];
-      cfg.focus <- F_next;
-      ("abandon", [])
+  | _ -> leave_abandoned cfg after "abandon" "abandon-entry"
 
 (* §7.2: the long jump looks for an error recovery point from the routine where the error
    arrives up the call chain; found, every routine in between is abandoned (UNDO first); not
@@ -1051,7 +1054,7 @@ let rule_names = [
   "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
-  "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
+  "abandon-entry"; "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
   "read-place"; "read"; "read-signal"; "place"; "place-absent";
   "place-component"; "place-unknown"; "place-element"; "component";
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
