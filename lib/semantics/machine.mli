@@ -7,6 +7,13 @@
     or the depth of recursion: no rule walks the stack or rebuilds the path to the focus. Errors,
     long jumps and UNDO handlers unwind the stack one frame or one activation per step.
 
+    A step is a redex a programmer would name; the administrative moves between two of them
+    (a literal becoming a value, an argument bound, a completed statement popped, the next
+    statement of a list put in focus, ...) are made at the end of the step that leads to them,
+    so that between two steps the configuration is always settled (doc/semantics.md,
+    "Settling"). The views at the end of this interface are for the trace only: a run never
+    computes them.
+
     The configuration is ready for what later issues add: execution levels (normal, trap, user)
     with an interrupt queue, a motion queue, and several tasks. *)
 

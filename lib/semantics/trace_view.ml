@@ -404,7 +404,7 @@ let after t (b : before) cfg (rule, events) =
     | "raise-handle", _, _ -> (Some ("handled by the error handler of " ^ (M.current_routine cfg).name), [])
     | ("raise-unhandled" | "raise-in-handler" | "raise-again-unhandled" | "handler-end" | "retry-limit"), _, _ ->
         (Some "the system error handler", [])
-    | "raise-propagate", _, _ -> (Some ("propagated: " ^ b.b_routine.name ^ " is left"), [])
+    | "raise-propagate", _, _ -> (Some ("none: propagated to the caller of " ^ b.b_routine.name), [])
     | "raise-again", _, _ -> (Some ("propagated from " ^ b.b_routine.name), [])
     | ("undo-done" | "abandon"), _, _ -> (Some (b.b_routine.name ^ " is left"), [])
     | ("undo-done-entry" | "abandon-entry"), _, _ -> (Some "the task ends", [])
