@@ -756,11 +756,9 @@ let value_step cfg v =
       match bool_of v with
       | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; ("while-true", [])
       | _ -> cfg.stack <- rest; cfg.focus <- F_next; ("while-false", []))
-  | K_for_from f :: rest ->
-      cfg.stack <- K_for_to (f, v) :: rest; cfg.focus <- F_expr f.to_; ("for-from", [])
   | K_for_to (f, from) :: rest -> (
       match f.step with
-      | Some e -> cfg.stack <- K_for_step (f, from, v) :: rest; cfg.focus <- F_expr e; ("for-to", [])
+      | Some _ -> cfg.focus <- F_done (Stuck "a FOR bound left unsettled"); ("stuck", [])
       | None ->
           (* §4.18: the default step is 1, or -1 when the range decreases. *)
           let step = match from, v with V.Num a, V.Num b when a > b -> V.num (-1.) | _ -> V.num 1. in
@@ -972,6 +970,11 @@ let rec settle cfg =
       | K_binary_left (op, b, at) :: rest ->
           cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; settle cfg
       | K_args cs :: _ -> bind_value cs v; cfg.focus <- F_next; settle cfg
+      (* FROM, then TO, then STEP (§4.18): each value moves on to the next bound. *)
+      | K_for_from f :: rest -> cfg.stack <- K_for_to (f, v) :: rest; cfg.focus <- F_expr f.to_; settle cfg
+      | K_for_to (f, from) :: rest when f.step <> None ->
+          cfg.stack <- K_for_step (f, from, v) :: rest;
+          cfg.focus <- F_expr (Option.get f.step); settle cfg
       | _ -> ())
   | F_loc l -> (
       match cfg.stack with
@@ -1049,7 +1052,7 @@ let rule_names = [
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
   "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
   "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";
-  "while-again"; "for"; "for-from"; "for-to"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
+  "while-again"; "for"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
   "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
   "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
@@ -1098,7 +1101,7 @@ type frame_view =
   | Store of location * Ir.stmt option
   | Assign_target of Ir.stmt option
   | Condition of Ir.stmt option
-  | For_bound of Ir.for_loop * string
+  | For_bound of Ir.for_loop * V.t list
   | For_body of Ir.for_loop
   | While_body of Ir.expr
   | Test_value of V.t option
@@ -1139,9 +1142,9 @@ let frame_view cfg =
       | K_assign_store l -> Store (l, statement_below below)
       | K_assign_value _ -> Assign_target (statement_below below)
       | K_if _ | K_compact_if _ | K_while_test _ -> Condition (statement_below below)
-      | K_for_from f -> For_bound (f, "FROM")
-      | K_for_to (f, _) -> For_bound (f, "TO")
-      | K_for_step (f, _, _) -> For_bound (f, "STEP")
+      | K_for_from f -> For_bound (f, [])
+      | K_for_to (f, from) -> For_bound (f, [ from ])
+      | K_for_step (f, from, t) -> For_bound (f, [ from; t ])
       | K_for_body (f, _, _) -> For_body f
       | K_while_body (c, _) -> While_body c
       | K_test_subject _ -> Test_value None

@@ -109,7 +109,8 @@ type frame_view =
   | Store of location * Ir.stmt option     (** the target; the assignment (None: routine data) *)
   | Assign_target of Ir.stmt option        (** the target with indexes is being located *)
   | Condition of Ir.stmt option            (** of this IF, compact IF or WHILE *)
-  | For_bound of Ir.for_loop * string      (** "FROM", "TO" or "STEP" is in focus *)
+  | For_bound of Ir.for_loop * Value.t list
+      (** the bounds evaluated so far (FROM, then TO); the next one is in focus *)
   | For_body of Ir.for_loop                (** the body is running *)
   | While_body of Ir.expr                  (** the body is running; the condition *)
   | Test_value of Value.t option           (** the TEST expression's value once known *)

@@ -282,7 +282,9 @@ let before t cfg =
         (text, if all then Some (value (match kind with Record_value -> V.Record members | Array_value -> V.Array members)) else None)
     | Value v, Store (l, _) -> (location_text cfg l ^ " := " ^ value v, None)
     | Value v, Condition _ -> (value v, None)
-    | Value v, For_bound (_, which) -> (which ^ " " ^ value v, None)
+    | Value v, For_bound (_, bounds) ->
+        let words = [ "FROM"; "TO"; "STEP" ] in
+        (String.concat " " (List.mapi (fun i b -> List.nth words i ^ " " ^ value b) (bounds @ [ v ])), None)
     | Value v, Test_value None -> ("TEST " ^ value v, None)
     | Value v, Test_value (Some subject) -> (value subject ^ " = " ^ value v, None)
     | Value v, Return_value -> ("RETURN " ^ value v, None)
