@@ -117,10 +117,17 @@ let settled_steps () =
     (rules_of cfg ~skip:0 ~count:3);
   (* A component of a record parameter is read in one step; an element takes its index. *)
   let cfg = machine_of "MODULE t\n  VAR pos p := [1, 2, 3];\n  VAR num a{2} := [5, 6];\n  VAR num r;\n\
-                        \  PROC main()\n    r := p.y;\n    r := a{2};\n  ENDPROC\nENDMODULE\n" in
-  Alcotest.(check (list string)) "r := p.y; r := a{2};"
-    [ "assign"; "read"; "store"; "assign"; "read-place"; "place-element"; "element"; "store" ]
-    (rules_of cfg ~skip:0 ~count:8)
+                        \  VAR pos q{2};\n  PROC main()\n    r := p.y;\n    r := a{2};\n    q{r - 5}.z := 7;\n\
+                        \    TPWrite \"\" \\Num:=q{1}.z;\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check (list string)) "r := p.y; r := a{2}; q{r - 5}.z := 7;"
+    [ "assign"; "read"; "store"; "assign"; "read-place"; "element"; "store";
+      "assign"; "binary-operands"; "read"; "binary"; "element"; "store" ]
+    (rules_of cfg ~skip:0 ~count:13);
+  let out = ref [] in
+  while M.outcome cfg = Running do
+    List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+  done;
+  Alcotest.(check (list string)) "the component of the element written" [ "7" ] !out
 
 (* Values in RAPID's syntax, numbers with enough digits to read back to the same number. *)
 let value_text () =

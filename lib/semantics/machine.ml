@@ -844,16 +844,6 @@ let value_step cfg v =
 
 let loc_step cfg l =
   match cfg.stack with
-  | K_assign_value e :: rest ->
-      cfg.stack <- K_assign_store l :: rest; cfg.focus <- F_expr e; ("assign-target", [])
-  | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); ("read", [])
-  | K_component k :: rest -> (
-      cfg.stack <- rest;
-      match get l with
-      | V.Record comps -> cfg.focus <- F_loc { box = comps; idx = k }; ("component", [])
-      | _ -> cfg.focus <- F_done (Stuck "a component of a value that is not a record"); ("stuck", []))
-  | K_element_base (idx, at) :: rest ->
-      cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); ("element-base", [])
   | K_args cs :: rest -> bind_alias cfg cs rest l
   | K_connect_target trap :: rest -> (
       cfg.stack <- rest;
@@ -867,28 +857,15 @@ let loc_step cfg l =
           cfg.focus <- F_next; ("connect-allocate", []))
   | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
 
+(* A place in focus between steps is one settling could not locate (see [settle]). *)
 let place_step cfg (p : Ir.place) =
   match p with
-  | Whole (Global i) -> cfg.focus <- F_loc cfg.globals.(i); ("place", [])
-  | Whole (Local i) ->
+  | Whole (Local i) when i < Array.length cfg.act.present && not cfg.act.present.(i) ->
       (* §5.2: the value of an absent optional parameter cannot be used (ERR_NOTPRES). *)
-      if i < Array.length cfg.act.present && not cfg.act.present.(i) then begin
-        (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
-        raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
-      end
-      else (cfg.focus <- F_loc cfg.act.slots.(i); ("place", []))
-  | Component (q, k) -> (
-      let l = static_loc cfg p in
-      if l != no_loc then (cfg.focus <- F_loc l; ("place", []))
-      else (push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])))
-  | Element (q, idx) ->
-      let l = static_loc cfg q in
-      if l != no_loc then (push cfg (K_element_index (l, idx, 0, Source.no_region)); cfg.focus <- F_expr idx.(0))
-      else (push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q)
-      (* [else]: not reached by a checked program (a record component is never an array, §2.14);
-         kept so that the machine needs no such assumption. *);
-      ("place-element", [])
+      (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
+      raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
   | Unresolved _ -> raise_ cfg "ERR_REFUNKDAT"; ("place-unknown", [])
+  | _ -> cfg.focus <- F_done (Stuck "a place left unsettled"); ("stuck", [])
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
@@ -979,7 +956,32 @@ let rec settle cfg =
   | F_loc l -> (
       match cfg.stack with
       | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); settle cfg
+      | K_component k :: rest -> (
+          match get l with
+          | V.Record comps -> cfg.stack <- rest; cfg.focus <- F_loc { box = comps; idx = k }; settle cfg
+          | _ -> ())
+      | K_assign_value e :: rest -> cfg.stack <- K_assign_store l :: rest; cfg.focus <- F_expr e; settle cfg
+      | K_element_base (idx, at) :: rest ->
+          cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); settle cfg
       | _ -> ())
+  (* A place is located down to its first index expression, or to its location. *)
+  | F_place p -> (
+      match p with
+      | Whole _ | Component _ -> (
+          let l = static_loc cfg p in
+          if l != no_loc then (cfg.focus <- F_loc l; settle cfg)
+          else match p with
+            | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; settle cfg
+            | _ -> ()  (* an absent parameter: place-absent is a step *))
+      | Element (q, idx) ->
+          let l = static_loc cfg q in
+          if l != no_loc then push cfg (K_element_index (l, idx, 0, Source.no_region))
+          else push cfg (K_element_base (idx, Source.no_region));
+          (* [else]: not reached by a checked program (a record component is never an array,
+             §2.14); kept so that the machine needs no such assumption. *)
+          cfg.focus <- (if l != no_loc then F_expr idx.(0) else F_place q);
+          settle cfg
+      | Unresolved _ -> ())
   | F_next -> (
       match cfg.stack with
       | K_stmt (s, prev) :: rest ->
@@ -1045,7 +1047,7 @@ let stack_view cfg =
 
 let rule_names = [
   "label"; "execute-placeholder"; "assign";
-  "assign-target"; "store"; "call-arguments"; "argument-reference"; "argument-alias";
+  "store"; "call-arguments"; "argument-reference"; "argument-alias";
   "argument-alias-refused"; "call-enter";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
   "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-depth-exceeded"; "call-unknown";
@@ -1058,8 +1060,7 @@ let rule_names = [
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
   "abandon-entry"; "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
-  "read-place"; "read"; "read-signal"; "place"; "place-absent";
-  "place-component"; "place-unknown"; "place-element"; "component";
+  "read-place"; "read"; "read-signal"; "place-absent"; "place-unknown";
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
   "unary-operand"; "unary"; "binary-operands"; "binary";
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
@@ -1108,7 +1109,7 @@ type frame_view =
   | Return_value
   | Raise_value
   | Late_name
-  | Element_index of location * int * int
+  | Element_index of location * int * int * bool
   | Call_arguments of { callee : Ir.routine; call : Ir.call; arguments : argument_view array; next : int }
   | Routine_end
   | Local_init of (int * Ir.init) list
@@ -1152,7 +1153,8 @@ let frame_view cfg =
       | K_return_value -> Return_value
       | K_raise_value -> Raise_value
       | K_late_name _ -> Late_name
-      | K_element_index (l, idx, i, _) -> Element_index (l, i, Array.length idx)
+      | K_element_index (l, idx, i, _) ->
+          Element_index (l, i, Array.length idx, (match below with K_read :: _ -> true | _ -> false))
       | K_args cs ->
           let arguments = Array.mapi (fun i (a : Ir.argument) ->
               if i >= cs.next then Not_bound

@@ -117,8 +117,9 @@ type frame_view =
   | Return_value
   | Raise_value
   | Late_name                              (** the name of a late-bound call (§4.6) *)
-  | Element_index of location * int * int
-      (** the array (or the row so far), the index in focus (from 0), the number of indexes *)
+  | Element_index of location * int * int * bool
+      (** the array (or the row so far), the index in focus (from 0), the number of indexes,
+          and whether the element is then read *)
   | Call_arguments of { callee : Ir.routine; call : Ir.call; arguments : argument_view array;
                         next : int }
   | Routine_end

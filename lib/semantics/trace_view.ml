@@ -290,9 +290,9 @@ let before t cfg =
     | Value v, Return_value -> ("RETURN " ^ value v, None)
     | Value v, Raise_value -> ("RAISE " ^ value v, None)
     | Value v, Late_name -> ("% " ^ value v ^ " %", None)
-    | Value v, Element_index (l, i, n) ->
+    | Value v, Element_index (l, i, n, read) ->
         let element = match M.location_value l, v with
-          | (Array es, (Num k | Dnum k)) when i = n - 1 && Float.is_integer k && k >= 1. && k <= float_of_int (Array.length es) ->
+          | (Array es, (Num k | Dnum k)) when read && i = n - 1 && Float.is_integer k && k >= 1. && k <= float_of_int (Array.length es) ->
               Some (value es.(int_of_float k - 1))
           | _ -> None in
         (location_text cfg l ^ "{" ^ value v ^ "}", element)
