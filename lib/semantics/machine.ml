@@ -869,7 +869,7 @@ let place_step cfg (p : Ir.place) =
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
-  | Literal v -> cfg.focus <- F_value v; ("literal", [])  (* not reached: settled *)
+  | Literal _ -> cfg.focus <- F_done (Stuck "a literal left unsettled"); ("stuck", [])
   | Read p ->
       let l = static_loc cfg p in
       if l != no_loc then (cfg.focus <- F_value (get l); ("read", []))
@@ -933,12 +933,15 @@ let step_unguarded cfg =
 (* After every step, the administrative moves that neither inspect nor change anything a program
    can observe are made at once, so that the next step is a redex a programmer would name
    (doc/semantics.md, "Settling"): a literal is a value; the left operand's value moves on to
-   the right operand; an argument's value is bound and the call moves on to the next argument;
-   a located place under a read is read; a completed statement is popped (the mark returns to
-   the enclosing statement, and a statement completed after RETRY resets the RETRY count); the
-   next statement of a list is put in focus. Each move consumes a literal, a frame or an
-   argument, and a statement frame is never directly above another, so this is bounded by the
-   program's text, never by the run's stacks. *)
+   the right operand, a FOR bound's to the next bound; an argument's value is bound and the
+   call moves on to the next argument; a place is located down to its first index expression;
+   a located place under a read is read, under a component its component located, under an
+   assignment the value evaluated; a completed statement, and a finished statement list, are
+   popped (the mark returns to the enclosing statement, and a statement completed after RETRY
+   resets the RETRY count); routine data without initial value is initialised; the next
+   statement of a list is put in focus. Each move consumes a literal, a frame, a part of a
+   place, an argument or a routine datum, and the frames popped at once are those of statements
+   ending together, so this is bounded by the program's text, never by the run's stacks. *)
 let rec settle cfg =
   match cfg.focus with
   | F_expr { e = Literal v; _ } -> cfg.focus <- F_value v; settle cfg

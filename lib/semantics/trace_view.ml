@@ -375,7 +375,6 @@ let after t (b : before) cfg (rule, events) =
     | ("for-enter" | "for-step"), _, (For_bound (f, _) | For_body f) -> (None, write_slot (Local f.variable))
     | "for-empty", _, _ -> (Some "no iteration", [])
     | "for-done", _, _ -> (Some "the loop ends", [])
-    | "local-default", _, Local_init ((slot, _) :: _) -> (None, write_slot (Local slot))
     | "connect-allocate", Location l, _ -> (None, [ Write { place = location_text cfg l; value = value (M.location_value l) } ])
     | ("if-true" | "compact-if-true"), _, _ -> (Some "THEN", [])
     | "if-false", _, _ -> (Some "ELSE", [])
