@@ -292,7 +292,9 @@ let trace_cmd =
     (* The statement level: one line per statement, its changes after it. A change made after a
        nested statement printed (the store of [x := f(y)] after f's statements) continues its
        statement on a line of its own. *)
-    let line : (int * Rapid_semantics.Ir.routine * Rapid_semantics.Ir.stmt * int * TV.change list) option ref = ref None in
+    (* A line is a statement's, or, before a routine's first statement, its routine data's. *)
+    let module Ir = Rapid_semantics.Ir in
+    let line : (int * Ir.routine * Ir.stmt option * int * TV.change list) option ref = ref None in
     let flush () =
       match !line with
       | None -> ()
@@ -300,30 +302,35 @@ let trace_cmd =
           line := None;
           if first >= from_ && first <= to_ then begin
             let changes = List.rev changes in
+            let place, text, at = match s with
+              | Some s -> (TV.place_of_statement view routine s, TV.statement_text view s, s.sat)
+              | None ->
+                  (Printf.sprintf "%s:%d" routine.module_name (Source.start routine.at).line,
+                   "(routine data of " ^ routine.name ^ ")", routine.at) in
             match format with
             | `Human ->
-                let text = TV.statement_text view s in
                 let shown = List.filter_map change_text changes in
-                let place = TV.place_of_statement view routine s in
                 Printf.printf "%s%s%s%s%s\n" place (String.make (max 2 (20 - String.length place)) ' ')
                   (String.make (2 * min 10 (depth - 1)) ' ') text
                   (if shown = [] then "" else "   " ^ String.concat "; " shown)
             | `Jsonl ->
                 json (`Assoc [
-                    ("statement", `String (TV.place_of_statement view routine s));
+                    ("statement", `String place);
                     ("step", `Int first); ("depth", `Int depth); ("routine", `String routine.name);
-                    ("at", region_json s.sat); ("text", `String (TV.statement_text view s));
+                    ("at", region_json at); ("text", `String text);
                     ("writes", `List (List.filter_map write_json changes));
                     ("events", `List (List.filter_map change_json changes)) ])
           end
     in
     let statement_step (st : TV.step) =
       let owner = match st.statement with Some s -> Some s | None -> st.in_statement in
+      let printable = List.exists (fun c -> change_text c <> None) st.changes in
       (match st.statement, !line, owner with
-       | Some s, _, _ -> flush (); line := Some (st.number, st.routine, s, st.depth, [])
-       | None, Some (_, _, s, _, _), Some o when s == o -> ()
-       | None, _, Some o when List.exists (fun c -> change_text c <> None) st.changes ->
-           flush (); line := Some (st.number, st.routine, o, st.depth, [])
+       | Some s, _, _ -> flush (); line := Some (st.number, st.routine, Some s, st.depth, [])
+       | None, Some (_, _, Some s, _, _), Some o when s == o -> ()
+       | None, _, Some o when printable -> flush (); line := Some (st.number, st.routine, Some o, st.depth, [])
+       | None, Some (_, r, None, _, _), None when r == st.routine -> ()
+       | None, _, None when printable -> flush (); line := Some (st.number, st.routine, None, st.depth, [])
        | _ -> ());
       match !line with
       | Some (first, r, s, d, changes) ->
