@@ -532,6 +532,10 @@ let trace_cmd =
        | None, Some (_, _, Some s, _, _), Some o when s == o -> ()
        | None, _, Some o when printable -> flush (); line := Some (st.number, st.routine, Some o, st.depth, [])
        | None, Some (_, r, None, _, _), None when r == st.routine -> ()
+       (* An interrupt served between statements, a trap left: what the controller did goes
+          on the line printed last, in the order it happened. *)
+       | None, Some _, None when List.for_all (function
+           | TV.Controller_event _ | Routine_entered _ | Routine_left _ -> true | _ -> false) st.changes -> ()
        | None, _, None when printable -> flush (); line := Some (st.number, st.routine, None, st.depth, [])
        | _ -> ());
       match !line with

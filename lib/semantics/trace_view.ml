@@ -431,7 +431,13 @@ let after t (b : before) cfg (rule, events) =
   in
   let extra = match rule with "retry" -> [ Retried ] | "trynext" -> [ Next_tried ] | _ -> [] in
   let statement = match b.focus with Statement s -> Some s | _ -> None in
-  { number = M.steps cfg; rule; depth = b.b_depth; at = b.b_at; redex = b.b_redex; result;
+  (* An interrupt is served where the program pointer is (ch. 8): the step says which, and
+     which trap runs, rather than the frame it was served at. *)
+  let redex, result = match rule, List.find_map (function M.Trap_entered { number; trap; _ } -> Some (number, trap) | _ -> None) events with
+    | "interrupt-serve", Some (number, trap) ->
+        (Printf.sprintf "interrupt %d" number, Some ("the trap " ^ trap ^ " runs"))
+    | _ -> (b.b_redex, result) in
+  { number = M.steps cfg; rule; depth = b.b_depth; at = b.b_at; redex; result;
     changes = writes @ extra @ List.map event_change events; statement;
     in_statement = b.b_statement; routine = b.b_routine; state = statement_state t cfg }
 
