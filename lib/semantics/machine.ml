@@ -128,7 +128,6 @@ and call_state = {
   mutable args_memory : int;            (* bytes of the in arguments' copies *)
   primitive_args : Primitive.argument array;
   mutable next : int;
-  by_value : bool;                      (* waiting for a value (true) or a location (false) *)
 }
 
 type focus =
@@ -551,7 +550,7 @@ let begin_call cfg (call : Ir.call) =
       push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                          args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
                          args_module_data = Array.make n false; args_memory = 0;
-                         primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
+                         primitive_args = Array.make n Primitive.Missing; next = 0 });
       cfg.focus <- F_next;
       "call-arguments"
 
@@ -1357,7 +1356,11 @@ let step_unguarded cfg =
    resets the RETRY count); routine data without initial value is initialised; the next
    statement of a list is put in focus. Each move consumes a literal, a frame, a part of a
    place, an argument or a routine datum, and the frames popped at once are those of statements
-   ending together, so this is bounded by the program's text, never by the run's stacks. *)
+   ending together, so this is bounded by the program's text, never by the run's stacks.
+   Settling stops where a step has something to say: an argument or routine datum the memory
+   budget does not hold (memory-exhausted), a conditional argument duplicating an alternative
+   (ERR_ARGDUPCND), and the points of response of ch. 8 where the time limit is passed or an
+   interrupt is taken (time-limit, interrupt-serve). *)
 let interrupt_taken cfg =
   (not cfg.act.trap_level)
   && (match W.take cfg.world with Some i -> cfg.held <- Some i; true | None -> false)
