@@ -430,48 +430,75 @@ let run_cmd =
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
           $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save)
 
-(* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
-   characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)
-let source_cache = Hashtbl.create 8
-let region_text r =
-  match Source.file_of r with
-  | None -> ""
-  | Some f -> (
-      let name = Source.name f in
-      let lines, latin1 = match Hashtbl.find_opt source_cache name with
-        | Some l -> l
-        | None ->
-            let l =
-              if name = Parse.stdin_name then Array.of_list (String.split_on_char '\n' (Parse.source_text "-"))
-              else match Rapid_conformance.In_channel_compat.read_lines name with Ok l -> Array.of_list l | Error _ -> [||] in
-            let latin1 = not (Array.for_all Rapid_semantics.Utf8_text.is_utf8 l) in
-            (* A byte-order mark is not a character of the module. *)
-            if (not latin1) && Array.length l > 0 && String.length l.(0) >= 3 && String.sub l.(0) 0 3 = "\xEF\xBB\xBF" then
-              l.(0) <- String.sub l.(0) 3 (String.length l.(0) - 3);
-            Hashtbl.replace source_cache name (l, latin1); (l, latin1) in
-      let p = Source.start r and q = Source.stop r in
-      if p.line < 1 || p.line > Array.length lines then ""
-      else
-        let chars = Rapid_semantics.Utf8_text.characters ~latin1 lines.(p.line - 1) in
-        let n = Array.length chars in
-        let stop = if q.line = p.line then max 0 (min n (q.col - 1)) else n in
-        let start = max 0 (min n (p.col - 1)) in
-        let piece = Array.sub chars start (max 0 (stop - start)) in
-        let is_blank c = c = " " || c = "\t" || c = "\r" || c = "\n" || c = "\012" in
-        let first = ref 0 and last = ref (Array.length piece) in
-        while !first < !last && is_blank piece.(!first) do incr first done;
-        while !last > !first && is_blank piece.(!last - 1) do decr last done;
-        let piece = Array.sub piece !first (!last - !first) in
-        if Array.length piece > 60 then String.concat "" (Array.to_list (Array.sub piece 0 57)) ^ "..."
-        else String.concat "" (Array.to_list piece))
+module TV = Rapid_semantics.Trace_view
+
+let write_json (w : TV.change) =
+  match w with
+  | Write { place; value } -> Some (`Assoc [ ("place", `String place); ("value", `String value) ])
+  | _ -> None
+
+(* The changes other than writes, as the events of run --json, with two more kinds. *)
+let change_json (c : TV.change) : Yojson.Safe.t option =
+  let ev (e : M.event) = Some (event_json e) in
+  match c with
+  | Write _ -> None
+  | Output s -> ev (Output s)
+  | Erase -> ev Erase
+  | Log s -> ev (Log s)
+  | Raised { name; number; at } -> ev (Error_raised { name; number; at })
+  | Handled { name; routine } -> ev (Error_handled { name; routine })
+  | Undo_run r -> ev (Undo_run r)
+  | Routine_entered r -> ev (Routine_entered r)
+  | Routine_left r -> ev (Routine_left r)
+  | Task_ended -> ev Task_ended
+  | Retried -> Some (`Assoc [ ("event", `String "retry") ])
+  | Next_tried -> Some (`Assoc [ ("event", `String "trynext") ])
+  | Controller_event e -> ev e
+
+(* What the controller and the motion did, as the human trace writes it after "~ ". *)
+let controller_text (e : M.event) =
+  match e with
+  | Controller (Signal_changed { time; signal; value }) -> Some (Printf.sprintf "%.6f s: %s = %g" time signal value)
+  | Controller (Interrupt_occurred { time; number }) -> Some (Printf.sprintf "%.6f s: interrupt %d occurred" time number)
+  | Controller (Interrupt_discarded { time; number; reason }) ->
+      Some (Printf.sprintf "%.6f s: interrupt %d discarded (%s)" time number reason)
+  | Trap_entered { time; number; trap } -> Some (Printf.sprintf "%.6f s: trap %s serves interrupt %d" time trap number)
+  | Trap_left { time; trap } -> Some (Printf.sprintf "%.6f s: trap %s left" time trap)
+  | Motion m -> Some (Rapid_semantics.Motion_primitives.event_to_string m)
+  | _ -> None
+
+(* A change as the statement-level trace writes it after the statement. *)
+let change_text (c : TV.change) =
+  match c with
+  | Write { place; value } -> Some (place ^ " := " ^ value)
+  | Output s -> Some ("> " ^ s)
+  | Erase -> Some "(erased)"
+  | Log s -> Some ("log: " ^ s)
+  | Raised { name; number; at } -> Some (Printf.sprintf "%s (%d) raised at %s" name number (Source.to_string at))
+  | Handled { routine; _ } -> Some ("handled by " ^ routine)
+  | Retried | Next_tried -> None  (* the statement says it *)
+  | Undo_run r -> Some ("UNDO of " ^ r)
+  | Controller_event e -> Option.map (fun t -> "~ " ^ t) (controller_text e)
+  | Routine_entered _ | Routine_left _ | Task_ended -> None
+
+(* What a reduction line adds under it: output, errors and handlers, UNDO. *)
+let change_line (c : TV.change) =
+  match c with
+  | Output s -> Some ("> " ^ s)
+  | Erase -> Some "> (erased)"
+  | Log s -> Some ("log: " ^ s)
+  | Undo_run r -> Some ("! the UNDO handler of " ^ r ^ " runs")
+  | Controller_event e -> Option.map (fun t -> "~ " ^ t) (controller_text e)
+  | Raised _ | Handled _ (* the error's own step says it *) | Write _ | Retried | Next_tried | Routine_entered _ | Routine_left _ | Task_ended -> None
 
 let trace_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let format = Arg.(value & opt (enum [ ("human", `Human); ("jsonl", `Jsonl) ]) `Human & info [ "format" ] ~docv:"FORMAT" ~doc:"$(b,human) or $(b,jsonl) (doc/trace-format.md).") in
+  let level = Arg.(value & opt (enum [ ("reduction", `Reduction); ("statement", `Statement) ]) `Reduction & info [ "level" ] ~docv:"LEVEL" ~doc:"$(b,reduction): one line per reduction step (the default); $(b,statement): one line per statement executed, with the changes it made.") in
   let from_ = Arg.(value & opt (count ~what:"--from") 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt (count ~what:"--to") max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
-  let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format from_ to_ rules controller robot samples =
+  let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN (reduction level).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
@@ -480,46 +507,119 @@ let trace_cmd =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
       n = 0 || go 0 in
-    if format = `Jsonl then print_line (Yojson.Safe.to_string (`Assoc [ ("schema", `String schema); ("kind", `String "trace") ]));
+    let view = TV.create ~read:(fun name -> if name = Parse.stdin_name then Some (Parse.source_text "-") else None) () in
+    let json j = print_line (Yojson.Safe.to_string j) in
+    if format = `Jsonl then
+      json (`Assoc [ ("schema", `String schema); ("kind", `String "trace");
+                     ("level", `String (match level with `Reduction -> "reduction" | `Statement -> "statement")) ]);
+    (* Source text and values as JSON strings: valid UTF-8 whatever the file's encoding. *)
+    let text_json = text in
+    let writes (st : TV.step) = List.filter_map write_json st.changes in
+    let events (st : TV.step) = List.filter_map change_json st.changes in
+    (* The statement level: one line per statement, its changes after it. A change made after a
+       nested statement printed (the store of [x := f(y)] after f's statements) continues its
+       statement on a line of its own. *)
+    (* A line is a statement's, or, before a routine's first statement, its routine data's. *)
+    let module Ir = Rapid_semantics.Ir in
+    let line : (int * Ir.routine * Ir.stmt option * int * TV.change list) option ref = ref None in
+    let flush () =
+      match !line with
+      | None -> ()
+      | Some (first, routine, s, depth, changes) ->
+          line := None;
+          if first >= from_ && first <= to_ then begin
+            let changes = List.rev changes in
+            let place, text, at = match s with
+              | Some s -> (TV.place_of_statement view routine s, TV.statement_text view s, s.sat)
+              | None ->
+                  (Printf.sprintf "%s:%d" routine.module_name (Source.start routine.at).line,
+                   "(routine data of " ^ routine.name ^ ")", routine.at) in
+            match format with
+            | `Human ->
+                let shown = List.filter_map change_text changes in
+                print_line @@ Printf.sprintf "%s%s%s%s%s" place (String.make (max 2 (20 - String.length place)) ' ')
+                  (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_semantics.Format.display text)
+                  (if shown = [] then "" else "   " ^ Rapid_semantics.Format.display (String.concat "; " shown))
+            | `Jsonl ->
+                json (`Assoc [
+                    ("statement", `String place);
+                    ("step", `Int first); ("depth", `Int depth); ("routine", `String routine.name);
+                    ("at", region_json at); ("text", text_json text);
+                    ("writes", `List (List.filter_map write_json changes));
+                    ("events", `List (List.filter_map change_json changes)) ])
+          end
+    in
+    let statement_step (st : TV.step) =
+      let owner = match st.statement with Some s -> Some s | None -> st.in_statement in
+      let printable = List.exists (fun c -> change_text c <> None) st.changes in
+      (match st.statement, !line, owner with
+       | Some s, _, _ -> flush (); line := Some (st.number, st.routine, Some s, st.depth, [])
+       | None, Some (_, _, Some s, _, _), Some o when s == o -> ()
+       | None, _, Some o when printable -> flush (); line := Some (st.number, st.routine, Some o, st.depth, [])
+       | None, Some (_, r, None, _, _), None when r == st.routine -> ()
+       (* An interrupt served between statements, a trap left: what the controller did goes
+          on the line printed last, in the order it happened. *)
+       | None, Some _, None when List.for_all (function
+           | TV.Controller_event _ | Routine_entered _ | Routine_left _ -> true | _ -> false) st.changes -> ()
+       | None, _, None when printable -> flush (); line := Some (st.number, st.routine, None, st.depth, [])
+       | _ -> ());
+      match !line with
+      | Some (first, r, s, d, changes) ->
+          line := Some (first, r, s, d, List.rev_append st.changes changes)
+      | None -> ()
+    in
+    let last_state = ref None in
+    let reduction_step (st : TV.step) region kind stack samples =
+      if st.number >= from_ && st.number <= to_ && (match rules with None -> true | Some p -> contains st.rule p) then
+        match format with
+        | `Human ->
+            let shown_writes = List.filter_map (function
+                | TV.Write { place; value } ->
+                    let w = place ^ " := " ^ value in if w = st.redex then None else Some w
+                | _ -> None) st.changes in
+            let results = (match st.result with Some r -> [ r ] | None -> []) @ shown_writes in
+            let step = Printf.sprintf "%s%s%s" (String.make (2 * min 10 (st.depth - 1)) ' ') st.redex
+                (if results = [] then "" else " -> " ^ String.concat "; " results) in
+            (* The statement as it stands, when this step changed it. *)
+            let state = match st.state with
+              | Some s when Some s <> !last_state -> last_state := st.state; "   | " ^ s
+              | Some _ -> ""
+              | None -> last_state := None; "" in
+            let step = Rapid_semantics.Format.display step and state = Rapid_semantics.Format.display state in
+            if state = "" then print_line (Printf.sprintf "%6d %-22s %-24s %s" st.number st.rule (Source.to_string st.at) step)
+            else print_line (Printf.sprintf "%6d %-22s %-24s %-44s%s" st.number st.rule (Source.to_string st.at) step state);
+            List.iter (fun c -> match change_line c with
+                | Some l -> print_line ("       " ^ Rapid_semantics.Format.display l) | None -> ()) st.changes
+        | `Jsonl ->
+            json (`Assoc [
+                ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);
+                ("at", region_json st.at); ("redex", text_json st.redex);
+                ("result", (match st.result with Some r -> text_json r | None -> `Null));
+                ("writes", `List (writes st));
+                ("state", (match st.state with Some s -> text_json s | None -> `Null));
+                ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region);
+                                   ("text", text_json (TV.source_text view region)) ]);
+                ("stack", `List (List.map (fun s -> `String s) stack));
+                ("events", `List (events st @ samples ())) ])
+    in
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
-        let depth = M.depth cfg in
-        let rule, events = M.step cfg in
+        let before = TV.before view cfg in
+        let (_, events) as answer = M.step cfg in
         report_stubbed events;
-        let n = M.steps cfg in
-        if n >= from_ && n <= to_ && (match rules with None -> true | Some p -> contains rule p) then begin
-          match format with
-          | `Human ->
-              print_line (Printf.sprintf "%6d %-24s %s %-10s %s | %s" n rule (Source.to_string region) kind
-                (Rapid_semantics.Format.display (region_text region)) (String.concat " " stack));
-              List.iter (function
-                  | M.Output s -> print_line (Printf.sprintf "       > %s" s)
-                  | M.Controller (Signal_changed { time; signal; value }) ->
-                      print_line (Printf.sprintf "       ~ %.6f s: %s = %g" time signal value)
-                  | M.Controller (Interrupt_occurred { time; number }) ->
-                      print_line (Printf.sprintf "       ~ %.6f s: interrupt %d occurred" time number)
-                  | M.Controller (Interrupt_discarded { time; number; reason }) ->
-                      print_line (Printf.sprintf "       ~ %.6f s: interrupt %d discarded (%s)" time number reason)
-                  | M.Trap_entered { time; number; trap } ->
-                      print_line (Printf.sprintf "       ~ %.6f s: trap %s serves interrupt %d" time trap number)
-                  | M.Trap_left { time; trap } -> print_line (Printf.sprintf "       ~ %.6f s: trap %s left" time trap)
-                  | M.Motion m -> print_line (Printf.sprintf "       ~ %s" (Rapid_semantics.Motion_primitives.event_to_string m))
-                  | _ -> ()) events
-          | `Jsonl ->
-              print_line (Yojson.Safe.to_string (`Assoc [
-                  ("step", `Int n); ("rule", `String rule); ("depth", `Int depth);
-                  ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region); ("text", text (region_text region)) ]);
-                  ("stack", `List (List.map (fun s -> `String s) stack));
-                  ("events", `List (List.map event_json events
-                                    @ (match sampler with
-                                        | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
-                                        | None -> []))) ]))
-        end;
+        let st = TV.after view before cfg answer in
+        let samples () = match sampler with
+          | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
+          | None -> [] in
+        (match level with
+         | `Reduction -> reduction_step st region kind stack samples
+         | `Statement -> ignore (samples ()); statement_step st);
         loop ()
       end
     in
     loop ();
+    flush ();
     Option.iter (fun s -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) sampler;
     if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
@@ -527,14 +627,14 @@ let trace_cmd =
         | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);
     finish (M.outcome cfg) (M.steps cfg) ~max_steps
   in
-  let doc = "print the reductions of a run one by one" in
+  let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), the focus (its location, kind and source text) and the topmost continuation frames. $(b,--format jsonl) writes one JSON object per step in the schema of doc/trace-format.md.";
+    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became (errors raised and where they went included), and the statement as it stands after |; output and UNDO handlers follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ from_ $ to_ $ rules $ controller_args
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ level $ from_ $ to_ $ rules $ controller_args
           $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 let spec_cmd =

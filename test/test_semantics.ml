@@ -93,8 +93,77 @@ let long_routine () =
               done;
               Alcotest.(check (list string)) "output" [ "x=500000" ] !out))
 
+(* The machine of a one-module program, ready to run main. *)
+let machine_of text =
+  match Parse.parse_string ~name:"t.mod" text with
+  | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
+  | Ok m -> (
+      match Rapid_semantics.Session.load_modules [ m ] with
+      | Error _ -> Alcotest.fail "the program does not check"
+      | Ok loaded -> (
+          match M.start loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
+
+(* The rules of the steps from the [from]th on, up to [count] of them. *)
+let rules_of cfg ~skip ~count =
+  for _ = 1 to skip do ignore (M.step cfg) done;
+  List.init count (fun _ -> fst (M.step cfg))
+
+(* Settling (doc/semantics.md): the administrative moves are not steps; what is left is one step
+   per redex a programmer names. *)
+let settled_steps () =
+  let cfg = machine_of "MODULE t\n  VAR num x := 1;\n  PROC main()\n    x := x + 1;\n    x := 2;\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check (list string)) "x := x + 1; then x := 2;"
+    [ "assign"; "binary-operands"; "read"; "binary"; "store"; "assign"; "store"; "return-entry" ]
+    (rules_of cfg ~skip:0 ~count:8);
+  Alcotest.(check bool) "ended" true (M.outcome cfg = M.Ended);
+  (* Literal arguments and absent optional parameters are bound without steps of their own. *)
+  let cfg = machine_of "MODULE t\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check (list string)) "TPWrite \"a\";" [ "call-arguments"; "call-primitive"; "return-entry" ]
+    (rules_of cfg ~skip:0 ~count:3);
+  (* A component of a record parameter is read in one step; an element takes its index. *)
+  let cfg = machine_of "MODULE t\n  VAR pos p := [1, 2, 3];\n  VAR num a{2} := [5, 6];\n  VAR num r;\n\
+                        \  VAR pos q{2};\n  PROC main()\n    r := p.y;\n    r := a{2};\n    q{r - 5}.z := 7;\n\
+                        \    TPWrite \"\" \\Num:=q{1}.z;\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check (list string)) "r := p.y; r := a{2}; q{r - 5}.z := 7;"
+    [ "assign"; "read"; "store"; "assign"; "read-place"; "element"; "store";
+      "assign"; "binary-operands"; "read"; "binary"; "element"; "store" ]
+    (rules_of cfg ~skip:0 ~count:13);
+  let out = ref [] in
+  while M.outcome cfg = Running do
+    List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+  done;
+  Alcotest.(check (list string)) "the component of the element written" [ "7" ] !out
+
+(* Values in RAPID's syntax, numbers with enough digits to read back to the same number. *)
+let value_text () =
+  let module V = Rapid_semantics.Value in
+  let text = Rapid_semantics.Trace_view.value in
+  Alcotest.(check string) "integer" "16777216" (text (V.num 16777216.));
+  Alcotest.(check string) "0.1" "0.1" (text (V.num 0.1));
+  Alcotest.(check string) "largest single" "3.4028235E+38" (text (V.num 3.4028235e38));
+  Alcotest.(check string) "dnum 0.1" "0.1" (text (V.dnum 0.1));
+  Alcotest.(check string) "string" "\"say \"\"hi\"\"\"" (text (V.String "say \"hi\""));
+  Alcotest.(check string) "record" "[1,2.5,-3]" (text (V.pos 1. 2.5 (-3.)));
+  Alcotest.(check string) "array of records" "[[TRUE],[FALSE]]"
+    (text (V.Array [| V.Record [| V.Bool true |]; V.Record [| V.Bool false |] |]));
+  let rng = Random.State.make [| 42 |] in
+  for _ = 1 to 2000 do
+    let f = V.to_single (Int64.float_of_bits (Random.State.int64 rng Int64.max_int)
+                         *. (if Random.State.bool rng then 1. else -1.)) in
+    if Float.is_finite f then begin
+      let s = text (V.num f) in
+      if V.to_single (float_of_string s) <> f then Alcotest.failf "num %h written %s" f s;
+      let d = Int64.float_of_bits (Random.State.int64 rng Int64.max_int) in
+      if Float.is_finite d then
+        let s = text (V.dnum d) in
+        if float_of_string s <> d then Alcotest.failf "dnum %h written %s" d s
+    end
+  done
+
 let suite =
   ( "semantics",
-    [ Alcotest.test_case "a routine of 500,000 statements runs" `Quick long_routine;
+    [ Alcotest.test_case "settling: one step per redex" `Quick settled_steps;
+      Alcotest.test_case "trace values in RAPID's syntax" `Quick value_text;
+      Alcotest.test_case "a routine of 500,000 statements runs" `Quick long_routine;
       Alcotest.test_case "doc/semantics.md states every rule" `Quick documentation_matches;
       Alcotest.test_case "every rule appears in a spec/ trace" `Quick every_rule_in_a_trace ] )

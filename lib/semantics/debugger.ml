@@ -1,6 +1,6 @@
 (* The stepping session of doc/debugger.md. The machine reduces one redex per step; the session
    groups steps into statements: the program pointer is at a statement when the machine's focus
-   is one (Machine.current_statement). *)
+   is one (Machine.pointer_statement). *)
 
 open Rapid_syntax
 module M = Machine
@@ -90,7 +90,7 @@ let run_until s stop =
     match M.outcome s.cfg with
     | M.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
     | M.Running ->
-        if (not first) && M.current_statement s.cfg <> None && visible s && stop () then ()
+        if (not first) && M.pointer_statement s.cfg <> None && visible s && stop () then ()
         else begin
           let rule, events = M.step s.cfg in
           note_rule s rule;
@@ -104,7 +104,8 @@ let run_until s stop =
 let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> []) ~out cfg =
   let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
             rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data } in
-  run_until s (fun () -> true);
+  (* The machine starts settled, at the entry routine's first statement when it has one. *)
+  if not (M.pointer_statement cfg <> None && visible s) then run_until s (fun () -> true);
   show_pointer s;
   s
 
@@ -123,23 +124,25 @@ let at_breakpoint s =
 
 let lower = String.lowercase_ascii
 
+(* The names of the current routine's slots (parameters, routine data, FOR loop variables) are
+   the ones the lowering keeps for the trace (Ir.names). *)
 let find_data s name =
-  let r = M.current_routine s.cfg in
+  let cfg = s.cfg in
+  let r = M.current_routine cfg in
+  let program = M.program cfg in
   let n = lower name in
-  let rec param i =
-    if i >= Array.length r.parameters then None
-    else if lower r.parameters.(i).p_name = n then Some (Ir.Local i) else param (i + 1) in
-  (* Routine data takes the slots after the parameters, in declaration order (Lower). *)
-  let data () =
-    let names = s.routine_data r in
-    if List.length names <> List.length r.local_inits then None
-    else
-      List.fold_left2 (fun acc name (slot, _) ->
-          match acc with Some _ -> acc | None -> if lower name = n then Some (Ir.Local slot) else None)
-        None names r.local_inits in
-  match param 0 with
-  | Some slot -> Some slot
-  | None -> (match data () with Some slot -> Some slot | None -> M.global_slot s.cfg n)
+  let same (q : Ir.routine) = q.name = r.name && q.module_name = r.module_name in
+  let rec index i =
+    if i >= Array.length program.routines then None else if same program.routines.(i) then Some i else index (i + 1) in
+  let local =
+    match index 0 with
+    | Some i when i < Array.length program.names.local_names ->
+        let names = program.names.local_names.(i) in
+        let rec find j = if j >= Array.length names then None
+          else if lower names.(j) = n then Some (Ir.Local j) else find (j + 1) in
+        find 0
+    | _ -> None in
+  match local with Some slot -> Some slot | None -> M.global_slot cfg n
 
 let parse_reference text =
   let text = String.trim text in

@@ -178,4 +178,16 @@ type program = {
   intno : int;
   error_numbers : (string * int) list;       (* ERR_ names of the installed environment *)
   entry_points : (string * int) list;        (* procedures without parameters, by name *)
+  names : names;                             (* for the trace only: the machine never reads them *)
 }
+
+(* The names a trace writes places with: the lowering resolves names to slots and components to
+   indexes, so it keeps the names beside the program for rapid-sem trace. *)
+and names = {
+  local_names : string array array;          (* per routine: the name of each local slot *)
+  component_names : (name_key, string) Hashtbl.t;
+}
+
+(* A component of a data object: the routine whose activation holds it (-1 for module data),
+   the object's slot, and the path from it: component indexes, -1 for an array element. *)
+and name_key = int * slot * int list

@@ -23,7 +23,19 @@ type ctx = {
   mutable local_count : int;
   mutable labels : (Source.region, int * int) Hashtbl.t;
   mutable blocks : int;
+  (* For the trace (Ir.names): the routine being lowered (-1: module data), its slots' names,
+     the components' names. *)
+  mutable routine_now : int;
+  mutable slot_names : (int, string) Hashtbl.t;
+  component_names : (Ir.name_key, string) Hashtbl.t;
 }
+
+let rec name_path (p : Ir.place) =
+  match p with
+  | Whole s -> Some (s, [])
+  | Element (q, idx) -> Option.map (fun (s, path) -> (s, path @ List.init (Array.length idx) (fun _ -> -1))) (name_path q)
+  | Component (q, k) -> Option.map (fun (s, path) -> (s, path @ [ k ])) (name_path q)
+  | Unresolved _ -> None
 
 let slot_of ctx (d : Env.data_object) : Ir.slot option =
   match d.d_level with
@@ -56,7 +68,13 @@ let rec place ctx (r : A.data_reference) : Ir.place =
       Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
   | Component (inner, comp) -> (
       match Hashtbl.find_opt ctx.elab.components comp.at with
-      | Some k -> Component (place ctx inner, k)
+      | Some k ->
+          let p = Ir.Component (place ctx inner, k) in
+          (match name_path p with
+           | Some ((Global _ as s), path) -> Hashtbl.replace ctx.component_names (-1, s, path) comp.it
+           | Some (s, path) -> Hashtbl.replace ctx.component_names (ctx.routine_now, s, path) comp.it
+           | None -> ());
+          p
       | None -> Unresolved comp.it)
 
 and entire ctx (name : A.name) : Ir.place =
@@ -315,6 +333,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
       let variable = ctx.local_count in
       ctx.local_count <- ctx.local_count + 1;
       Hashtbl.replace ctx.locals f.loop_variable.at variable;
+      Hashtbl.replace ctx.slot_names variable (match f.loop_variable.it with Ident s -> s | ID_placeholder -> "<ID>");
       make (For { variable; from_ = expr ctx ~dnum:false f.from_; to_ = expr ctx ~dnum:false f.to_;
                   step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
   | While (c, body) -> make (While (expr ctx ~dnum:false c, block ctx body))
@@ -346,6 +365,8 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         ctx.labels <- Hashtbl.create 8;
         let params = parameters_of r in
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
+        ctx.slot_names <- Hashtbl.create 16;
+        List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.slot_names i p.p_name) params;
         ctx.local_count <- List.length params;
         let optionals = List.concat_map (function
             | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) r.r_slots in
@@ -371,6 +392,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
                     let slot = ctx.local_count in
                     ctx.local_count <- slot + 1;
                     Hashtbl.replace ctx.locals obj.d_region slot;
+                    Hashtbl.replace ctx.slot_names slot obj.d_name;
                     Some (slot, initial ctx obj)
                 | _ -> None)
             | Declaration_comment _ | DDN_placeholder -> None) body.declarations in
@@ -412,7 +434,8 @@ let module_name (m : A.module_declaration) =
 let program ~installed ~modules (elab : E.t) : Ir.program =
   let all = List.map (fun m -> (m, true)) installed @ List.map (fun m -> (m, false)) modules in
   let ctx = { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-              locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0 } in
+              locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+              routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64 } in
   (* Routine and global numbering first: bodies and initial values refer to any of them. *)
   let routine_decls = concat_long (list_long (fun ((m : A.module_declaration), inst) ->
       List.filter_map (fun (r : A.routine_declaration) ->
@@ -438,10 +461,16 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
       { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
         g_read_only = obj.d_kind = Read_only_variable; g_at = obj.d_region }) global_decls in
-  let routines = map_long (fun (m, inst, r, _) ->
+  let local_names = ref [] in
+  let routines = Array.mapi (fun i (m, inst, r, _) ->
+      ctx.routine_now <- i;
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
-      | Some r -> r
-      | None -> assert false) routine_decls in
+      | Some r ->
+          local_names := Array.init r.locals (fun s ->
+              Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
+          r
+      | None -> assert false) (Array.of_list routine_decls) in
+  let local_names = Array.of_list (List.rev !local_names) in
   let find_global name =
     let rec go i = if i >= Array.length globals then 0
       else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
@@ -459,4 +488,5 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let entry_points = List.filter_map (fun x -> x)
       (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
            if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, i) else None) routines)) in
-  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO"; error_numbers; entry_points }
+  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO"; error_numbers; entry_points;
+    names = { local_names; component_names = ctx.component_names } }

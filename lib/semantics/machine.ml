@@ -98,9 +98,9 @@ and frame =
   | K_fit of Value.shape                (* an aggregate argument takes its parameter's type *)
   | K_late_name of Ir.late_argument array * Source.region
   | K_read
-  | K_unary of Arith.unary * Source.region
-  | K_binary_left of Arith.binary * Ir.expr * Source.region
-  | K_binary_right of Arith.binary * V.t * Source.region
+  | K_unary of Arith.unary * Ir.expr               (* the whole expression, for the trace *)
+  | K_binary_left of Arith.binary * Ir.expr * Ir.expr   (* the right operand; the whole *)
+  | K_binary_right of Arith.binary * V.t * Ir.expr
   | K_and of Ir.expr
   | K_or of Ir.expr
   | K_aggregate of Ir.expr array * V.t array * int * Ir.aggregate_kind
@@ -130,7 +130,6 @@ and call_state = {
   mutable args_memory : int;            (* bytes of the in arguments' copies *)
   primitive_args : Primitive.argument array;
   mutable next : int;
-  by_value : bool;                      (* waiting for a value (true) or a location (false) *)
 }
 
 type focus =
@@ -166,11 +165,19 @@ type config = {
   motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
   mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
   mutable backward_depth : int;         (* the call depth of a BACKWARD handler running, or -1 (ch. 6) *)
+  (* Settling stops at a point of response (ch. 8) where something happens: the statement time
+     already charged there, the interrupt already taken from the queue, for the step to serve. *)
+  mutable charged : bool;
+  mutable held : (int * int) option;
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
 let get l = Array.unsafe_get l.box l.idx
 let set l v = Array.unsafe_set l.box l.idx (V.copy v)
+
+(* The answer of [static_loc] for a place it cannot locate, compared by identity: an option would
+   cost an allocation on every read. *)
+let no_loc = { box = [||]; idx = 0 }
 
 let error_number cfg name =
   match List.assoc_opt name cfg.program.error_numbers with Some n -> n | None -> 0
@@ -201,6 +208,22 @@ let raise_ ?about cfg name = cfg.focus <- F_raise (error ?about cfg name (region
 
 let push cfg f = cfg.stack <- f :: cfg.stack
 
+(* A place without an index expression (a data object, or a component of one) is located in one
+   step: its path is part of the program's text, so this costs nothing that grows with the run.
+   [no_loc] for an absent optional parameter (§5.2) and for a place with indexes, which take
+   steps of their own. *)
+let rec static_loc cfg (p : Ir.place) =
+  match p with
+  | Whole (Global i) -> cfg.globals.(i)
+  | Whole (Local i) ->
+      if i < Array.length cfg.act.present && not (Array.unsafe_get cfg.act.present i) then no_loc
+      else cfg.act.slots.(i)
+  | Component (q, k) -> (
+      let l = static_loc cfg q in
+      if l == no_loc then no_loc
+      else match get l with V.Record cs -> { box = cs; idx = k } | _ -> no_loc)
+  | Element _ | Unresolved _ -> no_loc
+
 (* ------------------------------------------------------------------ start *)
 
 (* Routines by lower-case name, built once: a late-bound call looks its name up in O(1). *)
@@ -211,6 +234,9 @@ let routines_by_name (program : Ir.program) =
     Hashtbl.replace t key (i :: Option.value (Hashtbl.find_opt t key) ~default:[])
   done;
   t
+
+(* [settle], defined with the step below: the first configuration is settled too. *)
+let settle_ref : (config -> unit) ref = ref (fun _ -> ())
 
 let routine_index_in by_name name =
   match Hashtbl.find_opt by_name (String.lowercase_ascii name) with Some (i :: _) -> Some i | _ -> None
@@ -312,12 +338,12 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
           stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
-          backward_depth = -1;
+          backward_depth = -1; charged = false; held = None;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
          | Some g -> cfg.focus <- F_done (memory_exhausted cfg ("the initial value of " ^ g.g_name) g.g_at)
-         | None -> ());
+         | None -> !settle_ref cfg);
         Ok cfg
       end
 
@@ -531,7 +557,7 @@ let begin_call cfg (call : Ir.call) =
       push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                          args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
                          args_module_data = Array.make n false; args_memory = 0;
-                         primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
+                         primitive_args = Array.make n Primitive.Missing; next = 0 });
       cfg.focus <- F_next;
       "call-arguments"
 
@@ -568,7 +594,93 @@ let duplicate_alternative cfg (cs : call_state) i =
         && (present j || around (j + step) step) in
       around (i - 1) (-1) || around (i + 1) 1)
 
-(* The next argument of a call in progress, or the call itself when all are there (§5.2). *)
+(* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
+   variable passed on to a PERS parameter, or bound to a persistent passed on to a VAR one. *)
+let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
+  match p.p_mode, k with
+  | Mode_var, Ref_persistent -> Error "ERR_ARGNOTVAR"
+  | Mode_pers, (Ref_variable | Ref_other) -> Error "ERR_ARGNOTPER"
+  | _ -> Ok ()
+
+(* The bytes the memory budget still holds for the arguments of a call in progress. *)
+let args_room cfg (cs : call_state) = cfg.limits.max_memory - cfg.memory - cs.args_memory
+
+(* §5.2: an in parameter is a copy of the argument's value; false when the budget does not hold
+   the copy (the step that meets it says so: memory-exhausted). *)
+let bind_value cfg (cs : call_state) v =
+  let bytes = V.bytes v in
+  if bytes > args_room cfg cs then false
+  else begin
+    let i = cs.next in
+    cs.args_memory <- cs.args_memory + bytes;
+    cs.args_slots.(i) <- fresh_loc (V.copy v);
+    cs.args_present.(i) <- true;
+    cs.primitive_args.(i) <- Primitive.Value v;
+    cs.next <- i + 1;
+    true
+  end
+
+(* The arguments that need no step of their own are bound as soon as the call reaches them
+   (§5.2): an absent optional parameter, a switch, a conditional argument [\p ? x] (§3.11), a
+   literal. Then the call waits for the expression of a value argument (in focus), a reference
+   argument, or, all bound, the call itself: each of these is a step. So does an argument that
+   cannot be bound quietly: one the memory budget does not hold, a conditional argument that
+   duplicates an alternative (ERR_ARGDUPCND). O(parameters), like the call state the call
+   allocates. *)
+let rec settle_arguments cfg (cs : call_state) =
+  let i = cs.next in
+  if i < Array.length cs.call.arguments then begin
+    let p = cs.callee.parameters.(i) in
+    let absent () =
+      (* An absent parameter still has storage of its type (it cannot be used, §5.2). *)
+      let bytes = V.shape_bytes p.p_default in
+      if bytes <= args_room cfg cs then begin
+        cs.next <- i + 1;
+        cs.args_memory <- cs.args_memory + bytes;
+        cs.args_slots.(i) <- fresh_loc (V.default_of p.p_default);
+        settle_arguments cfg cs
+      end
+    in
+    match cs.call.arguments.(i) with
+    | Absent -> absent ()
+    | Present_switch ->
+        cs.next <- i + 1;
+        cs.args_present.(i) <- true;
+        cs.primitive_args.(i) <- Primitive.Switch;
+        settle_arguments cfg cs
+    | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
+        if not (duplicate_alternative cfg cs i) then begin
+          cs.next <- i + 1;
+          cs.args_present.(i) <- true;
+          cs.args_slots.(i) <- cfg.act.slots.(j);
+          cs.args_kinds.(i) <- cfg.act.kinds.(j);
+          cs.args_module_data.(i) <- j < Array.length cfg.act.module_data && cfg.act.module_data.(j);
+          cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
+          settle_arguments cfg cs
+        end
+    | Pass_on _ -> absent ()
+    | By_value { e = Literal v; _ } ->
+        if bind_value cfg cs v then settle_arguments cfg cs else cfg.focus <- F_value v
+    | By_value e -> cfg.focus <- F_expr e
+    | By_reference _ -> ()
+  end
+
+(* §5.2: a VAR, PERS, INOUT or REF parameter is the argument's location. *)
+let bind_alias cfg (cs : call_state) rest l =
+  let i = cs.next in
+  let p = cs.callee.parameters.(i) in
+  match alias_allowed p cs.args_kinds.(i) with
+  | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
+  | Ok () ->
+      cs.args_slots.(i) <- l;
+      cs.args_present.(i) <- true;
+      cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
+      cs.next <- i + 1;
+      cfg.focus <- F_next;
+      ("argument-alias", [])
+
+(* A reference argument, an argument that cannot be bound quietly (see [settle_arguments]), or
+   the call itself when every argument is bound (§5.2). *)
 let next_argument cfg (cs : call_state) rest =
   let n = Array.length cs.call.arguments in
   if cs.next >= n then begin
@@ -577,64 +689,28 @@ let next_argument cfg (cs : call_state) rest =
     | Some name -> call_primitive cfg cs name
     | None -> enter_routine cfg cs
   end
-  else begin
+  else
     let i = cs.next in
     let p = cs.callee.parameters.(i) in
-    let absent rule =
-      (* An absent parameter still has storage of its type (it cannot be used, §5.2). *)
-      let bytes = V.shape_bytes p.p_default in
-      if bytes > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin
-        cfg.stack <- rest;
-        cfg.focus <- F_done (memory_exhausted cfg ("the absent parameter " ^ p.p_name) (region_of_focus_stmt cfg));
-        ("memory-exhausted", [])
-      end
-      else begin
-        cs.next <- i + 1;
-        cs.args_memory <- cs.args_memory + bytes;
-        cs.args_slots.(i) <- fresh_loc (V.default_of p.p_default);
-        (rule, [])
-      end
-    in
+    let unsettled () =
+      cfg.focus <- F_done (Stuck "an argument left unsettled"); ("stuck", []) in
     match cs.call.arguments.(i) with
-    | Absent -> absent "argument-absent"
-    | Present_switch ->
-        cs.next <- i + 1;
-        cs.args_present.(i) <- true;
-        cs.primitive_args.(i) <- Primitive.Switch;
-        ("argument-switch", [])
-    | By_value e ->
-        cfg.stack <- K_args { cs with by_value = true } :: rest;
-        cfg.focus <- F_expr e;
-        ("argument-value", [])
     | By_reference (place, k) ->
         cs.args_kinds.(i) <- reference_kind cfg place k;
         cs.args_module_data.(i) <- denotes_module_data cfg place;
-        cfg.stack <- K_args { cs with by_value = false } :: rest;
-        cfg.focus <- F_place place;
-        ("argument-reference", [])
+        let l = static_loc cfg place in
+        if l != no_loc then bind_alias cfg cs rest l
+        else (cfg.focus <- F_place place; ("argument-reference", []))
     | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
         if duplicate_alternative cfg cs i then begin
           cfg.stack <- rest; raise_ cfg "ERR_ARGDUPCND"; ("argument-pass-on-duplicate", [])
         end
-        else begin
-          cs.next <- i + 1;
-          cs.args_present.(i) <- true;
-          cs.args_slots.(i) <- cfg.act.slots.(j);
-          cs.args_kinds.(i) <- cfg.act.kinds.(j);
-          cs.args_module_data.(i) <- j < Array.length cfg.act.module_data && cfg.act.module_data.(j);
-          cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
-          ("argument-pass-on-present", [])
-        end
-    | Pass_on _ -> absent "argument-pass-on-absent"
-  end
-
-(* §5.2, the two execution-error cells of the access-mode table: an INOUT parameter bound to a
-   variable passed on to a PERS parameter, or bound to a persistent passed on to a VAR one. *)
-let alias_allowed (p : Ir.parameter) (k : Ir.reference_kind) =
-  match p.p_mode, k with
-  | Mode_var, Ref_persistent -> Error "ERR_ARGNOTVAR"
-  | Mode_pers, (Ref_variable | Ref_other) -> Error "ERR_ARGNOTPER"
-  | _ -> Ok ()
+        else unsettled ()
+    | Absent | Pass_on _ when V.shape_bytes p.p_default > args_room cfg cs ->
+        cfg.stack <- rest;
+        cfg.focus <- F_done (memory_exhausted cfg ("the absent parameter " ^ p.p_name) (region_of_focus_stmt cfg));
+        ("memory-exhausted", [])
+    | Absent | Pass_on _ | Present_switch | By_value _ -> unsettled ()
 
 (* ------------------------------------------------------------------ errors *)
 
@@ -726,8 +802,9 @@ let exec cfg (s : Ir.stmt) =
   | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
   | Assign (p, e) ->
       mark_here ();
-      push cfg (K_assign_value e);
-      cfg.focus <- F_place p;
+      let l = static_loc cfg p in
+      if l != no_loc then (push cfg (K_assign_store l); cfg.focus <- F_expr e)
+      else (push cfg (K_assign_value e); cfg.focus <- F_place p);
       ("assign", [])
   | Call_procedure c -> mark_here (); (begin_call cfg c, [])
   | Call_late (e, args) ->
@@ -842,18 +919,30 @@ let for_in_range v t step =
   | V.Num v, V.Num t, V.Num s -> if s >= 0. then v <= t else v >= t
   | _ -> false
 
+(* The activation of an abandoned routine is popped (§7.2): what made it abandoned goes on in
+   the caller. *)
+let leave_abandoned cfg after rule rule_entry =
+  let act = cfg.act in
+  match act.caller with
+  | None -> cfg.focus <- F_done Ended; (rule_entry, [ Task_ended ])
+  | Some caller ->
+      release cfg act;
+      cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+      (match after with
+       | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
+       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
+       | Go_on_long_jump (e, target) ->
+           if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
+           else cfg.focus <- F_abandon after);
+      (rule, Routine_left act.routine.name
+             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else []))
+
 (* A statement has completed: the frame on top continues. *)
 let next_frame cfg =
   match cfg.stack with
-  | K_stmt (s, prev) :: rest ->
-      cfg.stack <- rest; cfg.mark <- prev;
-      (match cfg.act.retried with
-       | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
-       | _ -> ());
-      ("statement-done", [])
-  | K_seq (b, i) :: rest ->
-      if i >= Array.length b.body then (cfg.stack <- rest; ("list-done", []))
-      else (cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt b.body.(i); ("list-next", []))
+  | (K_stmt _ | K_seq _) :: _ ->
+      cfg.focus <- F_done (Stuck "a configuration left unsettled (a completed statement or the next one of a list)");
+      ("stuck", [])
   | K_while_body (c, b) :: rest ->
       cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c; ("while-again", [])
   | K_for_body (f, t, step) :: rest ->
@@ -883,39 +972,20 @@ let next_frame cfg =
       match cfg.act.handling with
       | In_handler (e, _) -> stop cfg e "handler-end"
       | _ -> cfg.focus <- F_done (Stuck "end of a handler not in a handler"); ("stuck", []))
-  | K_undo_end after :: _ -> (
-      let act = cfg.act in
-      match act.caller with
-      | None -> cfg.focus <- F_done Ended; ("undo-done-entry", [ Task_ended ])
-      | Some caller ->
-          release cfg act;
-          cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
-          (match after with
-           | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
-           | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
-           | Go_on_long_jump (e, target) ->
-               if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
-               else cfg.focus <- F_abandon after);
-          ("undo-done", Routine_left act.routine.name
-                        :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else [])))
+  | K_undo_end after :: _ -> leave_abandoned cfg after "undo-done" "undo-done-entry"
   | K_local_init (act, inits) :: rest -> (
       match inits with
-      | [] -> cfg.stack <- rest; ("locals-initialised", [])
-      | (slot, Init_default shape) :: more ->
-          (* Routine data is counted in the memory budget while its routine is active. *)
-          if charge cfg act (V.shape_bytes shape) then begin
-            act.slots.(slot) <- fresh_loc (V.default_of shape);
-            cfg.stack <- K_local_init (act, more) :: rest; ("local-default", [])
-          end
-          else begin
-            cfg.focus <- F_done (memory_exhausted cfg ("the routine data of " ^ act.routine.name)
-                                   (match act.caller_mark with K_stmt (s, _) :: _ -> s.sat | _ -> act.routine.at));
-            ("memory-exhausted", [])
-          end
+      | (_, Init_default shape) :: _ when V.shape_bytes shape > cfg.limits.max_memory - cfg.memory ->
+          (* Settling initialises routine data the budget holds (see [settle]). *)
+          cfg.focus <- F_done (memory_exhausted cfg ("the routine data of " ^ act.routine.name)
+                                 (match act.caller_mark with K_stmt (s, _) :: _ -> s.sat | _ -> act.routine.at));
+          ("memory-exhausted", [])
       | (slot, Init_expr e) :: more ->
           act.slots.(slot) <- fresh_loc (V.Bool false);
           cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
-          cfg.focus <- F_expr e; ("local-initial-value", []))
+          cfg.focus <- F_expr e; ("local-initial-value", [])
+      | _ ->
+          cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
   | K_args cs :: rest -> next_argument cfg cs rest
   | K_backward_end :: rest -> cfg.stack <- rest; cfg.backward_depth <- -1; ("backward-end", [])
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
@@ -930,7 +1000,10 @@ let next_frame cfg =
 let serve_interrupt cfg =
   if cfg.act.trap_level then None
   else
-    match W.take cfg.world with
+    let taken = match cfg.held with
+      | Some _ as h -> cfg.held <- None; h   (* taken by settling, which stopped here *)
+      | None -> W.take cfg.world in
+    match taken with
     | None -> None
     | Some (number, trap) ->
         let r = cfg.program.routines.(trap) in
@@ -1013,8 +1086,9 @@ let next cfg =
     | (K_while_body _ | K_for_body _) :: _ -> true
     | _ -> false in
   if statement_point then begin
-    (* Each statement entered, and each new round of a loop, takes the statement time. *)
-    W.statement cfg.world;
+    (* Each statement entered, and each new round of a loop, takes the statement time; once:
+       settling may have charged it already and stopped here (see [settle]). *)
+    if cfg.charged then cfg.charged <- false else W.statement cfg.world;
     if W.now cfg.world > W.max_time cfg.world then time_exhausted cfg "time-limit"
     else match serve_interrupt cfg with Some r -> r | None -> next_frame cfg
   end
@@ -1064,8 +1138,6 @@ let value_step cfg v =
       match Arith.unary op v with
       | Ok r -> cfg.focus <- F_value r; ("unary", [])
       | Error name -> cfg.focus <- F_done (Stuck ("a unary operation failed: " ^ name)); ("stuck", []))
-  | K_binary_left (op, b, at) :: rest ->
-      cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; ("binary-left", [])
   | K_binary_right (op, a, _) :: rest -> (
       cfg.stack <- rest;
       match Arith.binary op a v with
@@ -1105,11 +1177,9 @@ let value_step cfg v =
       match bool_of v with
       | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; ("while-true", [])
       | _ -> cfg.stack <- rest; cfg.focus <- F_next; ("while-false", []))
-  | K_for_from f :: rest ->
-      cfg.stack <- K_for_to (f, v) :: rest; cfg.focus <- F_expr f.to_; ("for-from", [])
   | K_for_to (f, from) :: rest -> (
       match f.step with
-      | Some e -> cfg.stack <- K_for_step (f, from, v) :: rest; cfg.focus <- F_expr e; ("for-to", [])
+      | Some _ -> cfg.focus <- F_done (Stuck "a FOR bound left unsettled"); ("stuck", [])
       | None ->
           (* §4.18: the default step is 1, or -1 when the range decreases. *)
           let step = match from, v with V.Num a, V.Num b when a > b -> V.num (-1.) | _ -> V.num 1. in
@@ -1163,22 +1233,12 @@ let value_step cfg v =
       | Some v -> cfg.focus <- F_value v; ("argument-fit", [])
       | None -> (match rest with K_args _ :: r -> cfg.stack <- r | _ -> ());
           raise_ cfg "ERR_CALLPROC"; ("argument-fit-refused", []))
-  | K_args cs :: rest when cs.by_value && V.bytes v > cfg.limits.max_memory - cfg.memory - cs.args_memory ->
+  (* Settling binds a value argument the budget holds (see [settle]). *)
+  | K_args cs :: rest when V.bytes v > args_room cfg cs ->
       cfg.stack <- rest;
       cfg.focus <- F_done (memory_exhausted cfg ("the copy for the parameter " ^ cs.callee.parameters.(cs.next).p_name)
                              (region_of_focus_stmt cfg));
       ("memory-exhausted", [])
-  | K_args cs :: rest ->
-      let i = cs.next in
-      (* §5.2: an in parameter is a copy of the argument's value. *)
-      cs.args_memory <- cs.args_memory + V.bytes v;
-      cs.args_slots.(i) <- fresh_loc (V.copy v);
-      cs.args_present.(i) <- true;
-      cs.primitive_args.(i) <- Primitive.Value v;
-      cs.next <- i + 1;
-      cfg.stack <- K_args cs :: rest;
-      cfg.focus <- F_next;
-      ("argument-bound", [])
   | K_element_index (l, idx, i, at) :: rest -> (
       (* §3.6: an index is an integer within the array's dimension (ERR_OUTOFBND). *)
       match get l, num_of v with
@@ -1198,29 +1258,7 @@ let value_step cfg v =
 
 let loc_step cfg l =
   match cfg.stack with
-  | K_assign_value e :: rest ->
-      cfg.stack <- K_assign_store l :: rest; cfg.focus <- F_expr e; ("assign-target", [])
-  | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); ("read", [])
-  | K_component k :: rest -> (
-      cfg.stack <- rest;
-      match get l with
-      | V.Record comps -> cfg.focus <- F_loc { box = comps; idx = k }; ("component", [])
-      | _ -> cfg.focus <- F_done (Stuck "a component of a value that is not a record"); ("stuck", []))
-  | K_element_base (idx, at) :: rest ->
-      cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); ("element-base", [])
-  | K_args cs :: rest -> (
-      let i = cs.next in
-      let p = cs.callee.parameters.(i) in
-      match alias_allowed p cs.args_kinds.(i) with
-      | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
-      | Ok () ->
-          cs.args_slots.(i) <- l;
-          cs.args_present.(i) <- true;
-          cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
-          cs.next <- i + 1;
-          cfg.stack <- K_args cs :: rest;
-          cfg.focus <- F_next;
-          ("argument-alias", []))
+  | K_args cs :: rest -> bind_alias cfg cs rest l
   | K_connect_target (trap, target) :: rest -> (
       cfg.stack <- rest;
       (* §4.15: the target "must be (or denote) a module variable (not a routine variable)":
@@ -1245,27 +1283,26 @@ let loc_step cfg l =
       | _ -> raise_ cfg "ERR_NO_ALIASIO_DEF"; ("signal-not-connected", []))
   | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
 
+(* A place in focus between steps is one settling could not locate (see [settle]). *)
 let place_step cfg (p : Ir.place) =
   match p with
-  | Whole (Global i) -> cfg.focus <- F_loc cfg.globals.(i); ("place-global", [])
-  | Whole (Local i) ->
+  | Whole (Local i) when i < Array.length cfg.act.present && not cfg.act.present.(i) ->
       (* §5.2: the value of an absent optional parameter cannot be used (ERR_NOTPRES). *)
-      if i < Array.length cfg.act.present && not cfg.act.present.(i) then begin
-        (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
-        raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
-      end
-      else (cfg.focus <- F_loc cfg.act.slots.(i); ("place-local", []))
-  | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; ("place-component", [])
-  | Element (q, idx) -> push cfg (K_element_base (idx, Source.no_region)); cfg.focus <- F_place q; ("place-element", [])
+      (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
+      raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
   | Unresolved name -> raise_ ~about:name cfg "ERR_REFUNKDAT"; ("place-unknown", [])
+  | _ -> cfg.focus <- F_done (Stuck "a place left unsettled"); ("stuck", [])
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
-  | Literal v -> cfg.focus <- F_value v; ("literal", [])
-  | Read p -> push cfg K_read; cfg.focus <- F_place p; ("read-place", [])
+  | Literal _ -> cfg.focus <- F_done (Stuck "a literal left unsettled"); ("stuck", [])
+  | Read p ->
+      let l = static_loc cfg p in
+      if l != no_loc then (cfg.focus <- F_value (get l); ("read", []))
+      else (push cfg K_read; cfg.focus <- F_place p; ("read-place", []))
   | Read_signal p -> push cfg K_read_signal; cfg.focus <- F_place p; ("read-signal", [])
-  | Unary (op, a) -> push cfg (K_unary (op, e.at)); cfg.focus <- F_expr a; ("unary-operand", [])
-  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e.at)); cfg.focus <- F_expr a; ("binary-operands", [])
+  | Unary (op, a) -> push cfg (K_unary (op, e)); cfg.focus <- F_expr a; ("unary-operand", [])
+  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e)); cfg.focus <- F_expr a; ("binary-operands", [])
   | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
   | Or (a, b) -> push cfg (K_or b); cfg.focus <- F_expr a; ("or", [])
   | Aggregate (es, kind) ->
@@ -1281,6 +1318,8 @@ let expr_step cfg (e : Ir.expr) =
 (* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
    handler runs first (§7.2, §1.2). *)
 let abandon_step cfg after =
+  (* Without an UNDO handler to run, the routine is left in this step (settling: nothing runs
+     in between). *)
   let act = cfg.act in
   waits_left cfg;
   match act.routine.undo, act.handling with
@@ -1290,10 +1329,7 @@ let abandon_step cfg after =
       cfg.mark <- [];
       cfg.focus <- F_next;
       ("undo-run", [ Undo_run act.routine.name ])
-  | _ ->
-      cfg.stack <- [ K_undo_end after ];
-      cfg.focus <- F_next;
-      ("abandon", [])
+  | _ -> leave_abandoned cfg after "abandon" "abandon-entry"
 
 (* §7.2: the long jump looks for an error recovery point from the routine where the error
    arrives up the call chain; found, every routine in between is abandoned (UNDO first); not
@@ -1321,17 +1357,116 @@ let step_unguarded cfg =
   | F_abandon after -> abandon_step cfg after
   | F_done _ -> ("done", [])
 
+(* After every step, the administrative moves that neither inspect nor change anything a program
+   can observe are made at once, so that the next step is a redex a programmer would name
+   (doc/semantics.md, "Settling"): a literal is a value; the left operand's value moves on to
+   the right operand, a FOR bound's to the next bound; an argument's value is bound and the
+   call moves on to the next argument; a place is located down to its first index expression;
+   a located place under a read is read, under a component its component located, under an
+   assignment the value evaluated; a completed statement, and a finished statement list, are
+   popped (the mark returns to the enclosing statement, and a statement completed after RETRY
+   resets the RETRY count); routine data without initial value is initialised; the next
+   statement of a list is put in focus. Each move consumes a literal, a frame, a part of a
+   place, an argument or a routine datum, and the frames popped at once are those of statements
+   ending together, so this is bounded by the program's text, never by the run's stacks.
+   Settling stops where a step has something to say: an argument or routine datum the memory
+   budget does not hold (memory-exhausted), a conditional argument duplicating an alternative
+   (ERR_ARGDUPCND), and the points of response of ch. 8 where the time limit is passed or an
+   interrupt is taken (time-limit, interrupt-serve). *)
+let interrupt_taken cfg =
+  (not cfg.act.trap_level)
+  && (match W.take cfg.world with Some i -> cfg.held <- Some i; true | None -> false)
+
+let rec settle cfg =
+  match cfg.focus with
+  | F_expr { e = Literal v; _ } -> cfg.focus <- F_value v; settle cfg
+  | F_value v -> (
+      match cfg.stack with
+      | K_binary_left (op, b, at) :: rest ->
+          cfg.stack <- K_binary_right (op, v, at) :: rest; cfg.focus <- F_expr b; settle cfg
+      | K_args cs :: _ -> if bind_value cfg cs v then (cfg.focus <- F_next; settle cfg)
+      (* FROM, then TO, then STEP (§4.18): each value moves on to the next bound. *)
+      | K_for_from f :: rest -> cfg.stack <- K_for_to (f, v) :: rest; cfg.focus <- F_expr f.to_; settle cfg
+      | K_for_to (f, from) :: rest when f.step <> None ->
+          cfg.stack <- K_for_step (f, from, v) :: rest;
+          cfg.focus <- F_expr (Option.get f.step); settle cfg
+      | _ -> ())
+  | F_loc l -> (
+      match cfg.stack with
+      | K_read :: rest -> cfg.stack <- rest; cfg.focus <- F_value (get l); settle cfg
+      | K_component k :: rest -> (
+          match get l with
+          | V.Record comps -> cfg.stack <- rest; cfg.focus <- F_loc { box = comps; idx = k }; settle cfg
+          | _ -> ())
+      | K_assign_value e :: rest -> cfg.stack <- K_assign_store l :: rest; cfg.focus <- F_expr e; settle cfg
+      | K_element_base (idx, at) :: rest ->
+          cfg.stack <- K_element_index (l, idx, 0, at) :: rest; cfg.focus <- F_expr idx.(0); settle cfg
+      | _ -> ())
+  (* A place is located down to its first index expression, or to its location. *)
+  | F_place p -> (
+      match p with
+      | Whole _ | Component _ -> (
+          let l = static_loc cfg p in
+          if l != no_loc then (cfg.focus <- F_loc l; settle cfg)
+          else match p with
+            | Component (q, k) -> push cfg (K_component k); cfg.focus <- F_place q; settle cfg
+            | _ -> ()  (* an absent parameter: place-absent is a step *))
+      | Element (q, idx) ->
+          let l = static_loc cfg q in
+          if l != no_loc then push cfg (K_element_index (l, idx, 0, Source.no_region))
+          else push cfg (K_element_base (idx, Source.no_region));
+          (* [else]: not reached by a checked program (a record component is never an array,
+             §2.14); kept so that the machine needs no such assumption. *)
+          cfg.focus <- (if l != no_loc then F_expr idx.(0) else F_place q);
+          settle cfg
+      | Unresolved _ -> ())
+  | F_next -> (
+      match cfg.stack with
+      | K_stmt (s, prev) :: rest ->
+          cfg.stack <- rest; cfg.mark <- prev;
+          (match cfg.act.retried with
+           | Some r when r == s -> cfg.act.retries <- 0; cfg.act.retried <- None
+           | _ -> ());
+          settle cfg
+      (* ch. 8: entering a statement takes the statement time, and it and the end of a
+         statement list are points of response to interrupts. Settling passes through them
+         when nothing happens there; otherwise it stops, and the step [next] makes: the time
+         limit, or the interrupt served (taken here, held for it). *)
+      | K_seq (b, i) :: rest ->
+          if i < Array.length b.body then begin
+            W.statement cfg.world;
+            if W.now cfg.world > W.max_time cfg.world || interrupt_taken cfg then cfg.charged <- true
+            else (cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt (Array.unsafe_get b.body i))
+          end
+          else if not (interrupt_taken cfg) then (cfg.stack <- rest; settle cfg)
+      | K_args cs :: _ -> settle_arguments cfg cs  (* a literal argument is bound there *)
+      | K_local_init (act, inits) :: rest -> (
+          match inits with
+          | [] -> cfg.stack <- rest; settle cfg
+          | (slot, Init_default shape) :: more ->
+              (* Routine data is counted in the memory budget while its routine is active;
+                 beyond it, the step says so (memory-exhausted). *)
+              if charge cfg act (V.shape_bytes shape) then begin
+                act.slots.(slot) <- fresh_loc (V.default_of shape);
+                cfg.stack <- K_local_init (act, more) :: rest; settle cfg
+              end
+          | (_, Init_expr _) :: _ -> ())
+      | _ -> ())
+  | _ -> ()
+
+let () = settle_ref := settle
+
 (* A value of the wrong type for an operation is excluded by the static semantics: meeting one
    is a bug of rapid-sem, reported as a stuck configuration. *)
 let step cfg =
   cfg.count <- cfg.count + 1;
   let rule, events =
-    try step_unguarded cfg with
+    try let r = step_unguarded cfg in settle cfg; r with
     | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
     | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
   in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
-     while the clock moved on, at the start of the step. *)
+     while the clock moved on, at the start of the step, or as settling entered a statement. *)
   let events = match W.drain cfg.world with
     | [] -> events
     | seen -> List.map (fun o -> Controller o) seen @ events in
@@ -1357,7 +1492,11 @@ let focus_region cfg =
   | F_expr e -> e.at
   | F_stmt s -> s.sat
   | F_raise e | F_search (e, _) -> e.err_at
-  | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at)
+  | _ -> (
+      match cfg.stack with
+      | (K_binary_right (_, _, e) | K_unary (_, e)) :: _ -> e.at
+      | K_args cs :: _ -> cs.call.call_at
+      | _ -> (match cfg.mark with K_stmt (s, _) :: _ -> s.sat | _ -> cfg.act.routine.at))
 
 let focus_kind cfg =
   match cfg.focus with
@@ -1374,10 +1513,9 @@ let stack_view cfg =
   take 8 cfg.stack
 
 let rule_names = [
-  "list-next"; "list-done"; "statement-done"; "label"; "execute-placeholder"; "assign";
-  "assign-target"; "store"; "call-arguments"; "argument-absent"; "argument-switch";
-  "argument-value"; "argument-reference"; "argument-bound"; "argument-alias";
-  "argument-alias-refused"; "argument-pass-on-present"; "argument-pass-on-absent"; "call-enter";
+  "label"; "execute-placeholder"; "assign";
+  "store"; "call-arguments"; "argument-reference"; "argument-alias";
+  "argument-alias-refused"; "call-enter";
   "argument-pass-on-duplicate"; "argument-aggregate"; "argument-fit"; "argument-fit-refused";
   "elseif"; "connect-not-variable"; "memory-exhausted";
   "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
@@ -1385,25 +1523,219 @@ let rule_names = [
   "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
   "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
   "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";
-  "while-again"; "for"; "for-from"; "for-to"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
+  "while-again"; "for"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
   "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
   "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
   "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
-  "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
-  "literal"; "read-place"; "read"; "read-signal"; "place-global"; "place-local"; "place-absent";
-  "place-component"; "place-element"; "place-unknown"; "component"; "element-base";
+  "abandon-entry"; "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
+  "read-place"; "read"; "read-signal"; "place-absent"; "place-unknown";
   "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
-  "unary-operand"; "unary"; "binary-operands"; "binary-left"; "binary";
+  "unary-operand"; "unary"; "binary-operands"; "binary";
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
-  "aggregate-first"; "aggregate-next"; "aggregate"; "locals-initialised"; "local-default";
-  "local-initial-value";
+  "aggregate-first"; "aggregate-next"; "aggregate"; "local-initial-value";
   "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
   "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
   "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
 ]
+
+(* ------------------------------------------------------------------ views, for the trace *)
+
+(* Computed only when the trace asks: running never builds them. *)
+
+type location = loc
+
+type focus_view =
+  | Statement of Ir.stmt
+  | Expression of Ir.expr
+  | Place of Ir.place
+  | Location of location
+  | Value of V.t
+  | Next
+  | Error of { name : string; number : int; at : Source.region }
+  | Search of string option
+  | Abandon
+  | End
+
+type argument_view =
+  | Bound_value of V.t
+  | Bound_alias of location
+  | Absent_argument
+  | Switch_argument
+  | Not_bound
+
+type frame_view =
+  | Binary_right of Arith.binary * V.t
+  | Unary_operand of Arith.unary
+  | And_right
+  | Or_right
+  | Aggregate_member of Ir.aggregate_kind * V.t array * int
+  | Store of location * Ir.stmt option
+  | Assign_target of Ir.stmt option
+  | Condition of Ir.stmt option
+  | For_bound of Ir.for_loop * V.t list
+  | For_body of Ir.for_loop
+  | While_body of Ir.expr
+  | Test_value of V.t option
+  | Return_value
+  | Raise_value
+  | Late_name
+  | Element_index of location * int * int * bool
+  | Call_arguments of { callee : Ir.routine; call : Ir.call; arguments : argument_view array; next : int }
+  | Routine_end
+  | Local_init of (int * Ir.init) list
+  | Other_frame of string
+
+let focus_view cfg =
+  match cfg.focus with
+  | F_stmt s -> Statement s
+  | F_expr e -> Expression e
+  | F_place p -> Place p
+  | F_loc l -> Location l
+  | F_value v -> Value v
+  | F_next -> Next
+  | F_raise e -> Error { name = e.name; number = e.number; at = e.err_at }
+  | F_search (_, a) -> Search (Option.map (fun a -> a.routine.Ir.name) a)
+  | F_abandon _ -> Abandon
+  | F_done _ -> End
+
+let statement_below = function K_stmt (s, _) :: _ -> Some s | _ -> None
+
+let frame_view cfg =
+  match cfg.stack with
+  | [] -> Other_frame "empty"
+  | f :: below -> (
+      match f with
+      | K_binary_right (op, v, _) -> Binary_right (op, v)
+      | K_unary (op, _) -> Unary_operand op
+      | K_and _ -> And_right
+      | K_or _ -> Or_right
+      | K_aggregate (_, acc, i, kind) -> Aggregate_member (kind, acc, i)
+      | K_assign_store l -> Store (l, statement_below below)
+      | K_assign_value _ -> Assign_target (statement_below below)
+      | K_if _ | K_compact_if _ | K_while_test _ -> Condition (statement_below below)
+      | K_for_from f -> For_bound (f, [])
+      | K_for_to (f, from) -> For_bound (f, [ from ])
+      | K_for_step (f, from, t) -> For_bound (f, [ from; t ])
+      | K_for_body (f, _, _) -> For_body f
+      | K_while_body (c, _) -> While_body c
+      | K_test_subject _ -> Test_value None
+      | K_test_value (v, _, _, _, _) -> Test_value (Some v)
+      | K_return_value -> Return_value
+      | K_raise_value -> Raise_value
+      | K_late_name _ -> Late_name
+      | K_element_index (l, idx, i, _) ->
+          Element_index (l, i, Array.length idx, (match below with K_read :: _ -> true | _ -> false))
+      | K_args cs ->
+          let arguments = Array.mapi (fun i (a : Ir.argument) ->
+              if i >= cs.next then Not_bound
+              else match a with
+                | Absent -> Absent_argument
+                | Present_switch -> Switch_argument
+                | Pass_on _ when not cs.args_present.(i) -> Absent_argument
+                | By_value _ -> Bound_value (get cs.args_slots.(i))
+                | By_reference _ | Pass_on _ -> Bound_alias cs.args_slots.(i)) cs.call.arguments in
+          Call_arguments { callee = cs.callee; call = cs.call; arguments; next = cs.next }
+      | K_routine_end -> Routine_end
+      | K_local_init (_, inits) -> Local_init inits
+      | f -> Other_frame (frame_kind f))
+
+let location_value = get
+
+(* Where a location is: searched from the current activation's slots, then the module data, by
+   identity of the storage; the path runs from the data object to the location. *)
+type path_step = Index of int | Component_of of int
+
+let location_path cfg (l : location) =
+  let rec within v path =
+    match v with
+    | V.Record cs | V.Array cs ->
+        let step k = match v with V.Record _ -> Component_of k | _ -> Index (k + 1) in
+        if cs == l.box then Some (List.rev (step l.idx :: path))
+        else
+          let rec each k =
+            if k >= Array.length cs then None
+            else match within cs.(k) (step k :: path) with Some p -> Some p | None -> each (k + 1)
+          in
+          each 0
+    | _ -> None
+  in
+  let search roots slot =
+    let rec go i =
+      if i >= Array.length roots then None
+      else
+        let r = roots.(i) in
+        if r.box == l.box && r.idx = l.idx then Some (slot i, [])
+        else match within (get r) [] with
+          | Some path -> Some (slot i, path)
+          | None -> go (i + 1)
+    in
+    go 0
+  in
+  match search cfg.act.slots (fun i -> Ir.Local i) with
+  | Some p -> Some p
+  | None -> search cfg.globals (fun i -> Ir.Global i)
+
+let place_value cfg p =
+  let l = static_loc cfg p in
+  if l == no_loc then None else Some (get l)
+
+let slot_value cfg = function
+  | Ir.Local i -> if i < Array.length cfg.act.slots then Some (get cfg.act.slots.(i)) else None
+  | Global i -> Some (get cfg.globals.(i))
+
+let current_routine cfg = cfg.act.routine
+let current_statement cfg = statement_below cfg.mark
+let program cfg = cfg.program
+
+(* The values computed so far within the innermost statement in progress, each with the region
+   of the expression it is the value of: the statement as it stands, for the trace. The frames
+   from the top down to the statement's are walked: for the trace only. *)
+let computed_values cfg =
+  let stmt_expr pick = match cfg.mark with K_stmt (s, _) :: _ -> pick s.Ir.s | _ -> None in
+  (* The expression whose value the frame on top waits for: the focus's value is its. *)
+  let awaited = function
+    | K_binary_right (_, _, { e = Binary (_, _, b); _ }) -> Some b
+    | K_unary (_, { e = Unary (_, a); _ }) -> Some a
+    | K_assign_store _ -> stmt_expr (function Ir.Assign (_, e) -> Some e | _ -> None)
+    | K_if _ | K_compact_if _ | K_while_test _ ->
+        stmt_expr (function Ir.If (c, _, _) | Compact_if (c, _) | While (c, _) -> Some c | _ -> None)
+    | K_return_value -> stmt_expr (function Ir.Return (Some e) -> Some e | _ -> None)
+    | K_raise_value -> stmt_expr (function Ir.Raise (Some e) -> Some e | _ -> None)
+    | K_late_name _ -> stmt_expr (function Ir.Call_late (e, _) -> Some e | _ -> None)
+    | K_test_subject _ -> stmt_expr (function Ir.Test (e, _, _) -> Some e | _ -> None)
+    | K_test_value (_, cases, _, ci, vi) -> Some (fst cases.(ci)).(vi)
+    | K_aggregate (es, _, i, _) -> Some es.(i)
+    | K_element_index (_, idx, i, _) -> Some idx.(i)
+    | K_for_from f -> Some f.from_
+    | K_for_to (f, _) -> Some f.to_
+    | K_for_step (f, _, _) -> Option.map Fun.id f.step
+    | _ -> None
+  in
+  let held = function
+    | K_binary_right (_, v, { e = Binary (_, a, _); _ }) -> [ (a.at, v) ]
+    | K_aggregate (es, acc, i, _) -> List.init i (fun j -> (es.(j).at, acc.(j)))
+    | K_args cs ->
+        List.concat (List.init (min cs.next (Array.length cs.call.arguments)) (fun j ->
+            match cs.call.arguments.(j) with
+            | By_value e when cs.args_present.(j) -> [ (e.at, get cs.args_slots.(j)) ]
+            | _ -> []))
+    | K_test_value (v, _, _, _, _) -> (
+        match stmt_expr (function Ir.Test (e, _, _) -> Some e | _ -> None) with
+        | Some e -> [ (e.at, v) ] | None -> [])
+    | _ -> []
+  in
+  let rec walk acc = function
+    | [] | K_stmt _ :: _ -> acc
+    | f :: rest -> walk (held f @ acc) rest
+  in
+  let from_frames = walk [] cfg.stack in
+  match cfg.focus, cfg.stack with
+  | F_value v, f :: _ -> (
+      match awaited f with Some e -> (e.at, v) :: from_frames | None -> from_frames)
+  | _ -> from_frames
 
 (* --save (Persistent_save): the values of the task's module data at the end of a run. *)
 let module_data cfg =
@@ -1413,12 +1745,10 @@ let module_data cfg =
 
 (* The program pointer stands at the statements of statement lists: the simple statement of a
    compact IF is part of its IF (§4.17), and so not a place of its own. *)
-let current_statement cfg =
+let pointer_statement cfg =
   match cfg.focus, cfg.stack with
   | F_stmt s, K_seq (b, j) :: _ when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == s -> Some s
   | _ -> None
-
-let current_routine cfg = cfg.act.routine
 
 (* Each active routine and where it stands, innermost first: a caller stands at its call, the
    statement its callee's activation keeps as the caller's mark. *)
@@ -1458,13 +1788,13 @@ let statement_name (s : Ir.stmt) =
   | If _ | Elseif _ -> "IF" | Compact_if _ -> "a compact IF" | For _ -> "FOR" | While _ -> "WHILE"
   | Test _ -> "TEST" | Label -> "a label" | Placeholder_statement -> "<SMT>"
 
-let not_supported why = Error ("backward execution is not supported: " ^ why ^ "; no step taken (§6.1)")
+let not_supported why = Stdlib.Error ("backward execution is not supported: " ^ why ^ "; no step taken (§6.1)")
 
 (* One statement backward from the program pointer (§6.1-§6.3): the statement before it in its
    statement list, which must be simple. The program pointer is then at that statement. *)
 let backward cfg =
   match cfg.focus, cfg.stack with
-  | F_done _, _ -> Error "the task is not running"
+  | F_done _, _ -> Stdlib.Error "the task is not running"
   | F_stmt cur, K_seq (b, j) :: rest when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == cur ->
       if cfg.act.handling <> Body then
         (* §6.2: "the instructions of a BACKWARD handler or an error handler cannot be executed
@@ -1498,11 +1828,12 @@ let backward cfg =
                 push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                                    args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
                                    args_module_data = Array.make n false; args_memory = 0;
-                                   primitive_args = Array.make n Primitive.Missing; next = 0; by_value = true });
+                                   primitive_args = Array.make n Primitive.Missing; next = 0 });
+                settle cfg;
                 Ok "backward-call")
         | _ -> not_supported (statement_name prev ^ " cannot be executed backward")
       end
-  | _ -> Error "the program pointer is not at a statement"
+  | _ -> Stdlib.Error "the program pointer is not at a statement"
 
 let backward_running cfg = cfg.backward_depth >= 0
 

@@ -7,6 +7,15 @@
     or the depth of recursion: no rule walks the stack or rebuilds the path to the focus. Errors,
     long jumps and UNDO handlers unwind the stack one frame or one activation per step.
 
+    A step is a redex a programmer would name; the administrative moves between two of them
+    (a literal becoming a value, an argument bound, a completed statement popped, the next
+    statement of a list put in focus, ...) are made at the end of the step that leads to them,
+    so that between two steps the configuration is always settled (doc/semantics.md,
+    "Settling"). Settling passes through the points of response to interrupts (ch. 8) and
+    charges the statement time where a statement is entered; where something happens there (an
+    interrupt to serve, the time limit), it stops and that is the next step. The views at the
+    end of this interface are for the trace only: a run never computes them.
+
     The configuration holds the controller around the program (a {!Rapid_controller.World}: the
     virtual clock, the signals, the interrupt queue; doc/controller.md); traps run at trap level.
     It is ready for what later issues add: the user level, a motion queue, and several tasks. *)
@@ -101,6 +110,88 @@ val stack_view : config -> string list
 val depth : config -> int
 (** Call depth: the number of active routines. *)
 
+(** {2 The redex, for [rapid-sem trace]}
+
+    What is in focus and what the topmost frame waits for, in the machine's terms. These are
+    computed only when called: running never builds them. *)
+
+type location
+(** The storage of an entire data object, a component of a record or an element of an array. *)
+
+type focus_view =
+  | Statement of Ir.stmt                   (** a statement begins *)
+  | Expression of Ir.expr                  (** an expression to evaluate *)
+  | Place of Ir.place                      (** a reference being located *)
+  | Location of location                   (** a located reference *)
+  | Value of Value.t
+  | Next                                   (** a statement, an argument or a list has completed *)
+  | Error of { name : string; number : int; at : Rapid_syntax.Source.region }
+  | Search of string option                (** the long jump looks at this routine (§7.2) *)
+  | Abandon                                (** the current routine is left (UNDO first) *)
+  | End
+
+type argument_view =
+  | Bound_value of Value.t                 (** an [in] parameter's copy *)
+  | Bound_alias of location                (** a reference parameter's location *)
+  | Absent_argument
+  | Switch_argument
+  | Not_bound                              (** not yet reached *)
+
+type frame_view =
+  | Binary_right of Arith.binary * Value.t (** the left operand's value; the right one in focus *)
+  | Unary_operand of Arith.unary
+  | And_right                              (** the left operand of AND is in focus *)
+  | Or_right
+  | Aggregate_member of Ir.aggregate_kind * Value.t array * int
+      (** the members so far, and the index of the one in focus *)
+  | Store of location * Ir.stmt option     (** the target; the assignment (None: routine data) *)
+  | Assign_target of Ir.stmt option        (** the target with indexes is being located *)
+  | Condition of Ir.stmt option            (** of this IF, compact IF or WHILE *)
+  | For_bound of Ir.for_loop * Value.t list
+      (** the bounds evaluated so far (FROM, then TO); the next one is in focus *)
+  | For_body of Ir.for_loop                (** the body is running *)
+  | While_body of Ir.expr                  (** the body is running; the condition *)
+  | Test_value of Value.t option           (** the TEST expression's value once known *)
+  | Return_value
+  | Raise_value
+  | Late_name                              (** the name of a late-bound call (§4.6) *)
+  | Element_index of location * int * int * bool
+      (** the array (or the row so far), the index in focus (from 0), the number of indexes,
+          and whether the element is then read *)
+  | Call_arguments of { callee : Ir.routine; call : Ir.call; arguments : argument_view array;
+                        next : int }
+  | Routine_end
+  | Local_init of (int * Ir.init) list     (** routine data still to initialise *)
+  | Other_frame of string                  (** a frame's kind, as in {!stack_view} *)
+
+val focus_view : config -> focus_view
+val frame_view : config -> frame_view
+(** The topmost frame. *)
+
+val location_value : location -> Value.t
+
+type path_step = Index of int | Component_of of int
+(** [Index] from 1, [Component_of] from 0. *)
+
+val location_path : config -> location -> (Ir.slot * path_step list) option
+(** Where a location is: a slot of the current activation or of the module data, and the path
+    from that data object to it. Searches the store: for the trace only. *)
+
+val place_value : config -> Ir.place -> Value.t option
+(** The value of a place without index expressions ([None] for another place, or an absent
+    parameter). *)
+
+val slot_value : config -> Ir.slot -> Value.t option
+val current_routine : config -> Ir.routine
+val current_statement : config -> Ir.stmt option
+(** The innermost statement in progress. *)
+
+val program : config -> Ir.program
+
+val computed_values : config -> (Rapid_syntax.Source.region * Value.t) list
+(** The values computed so far within the innermost statement in progress, each with the
+    region of the expression it is the value of (the statement as it stands). *)
+
 val rule_names : string list
 (** Every rule of the machine, as doc/semantics.md lists them. *)
 
@@ -110,11 +201,10 @@ val module_data : config -> (string * string * Value.t) list
 
 (** {1 The debugger's views (doc/debugger.md)} *)
 
-val current_statement : config -> Ir.stmt option
+val pointer_statement : config -> Ir.stmt option
 (** The statement the program pointer is at, when the machine stands before a statement of a
     statement list (not the simple statement of a compact IF, which is part of its IF). *)
 
-val current_routine : config -> Ir.routine
 
 val call_chain_view : config -> (Ir.routine * Rapid_syntax.Source.region) list
 (** The active routines, innermost first, each with where it stands: the innermost at the

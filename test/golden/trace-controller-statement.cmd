@@ -1,0 +1,1 @@
+trace --level statement --io controller-cell.io controller-cell.mod

@@ -1,0 +1,1 @@
+trace --format jsonl --from 1 --to 13 trace-late.mod

@@ -1,0 +1,1 @@
+trace --format jsonl --to 12 trace-loop.mod

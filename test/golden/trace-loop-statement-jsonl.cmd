@@ -1,0 +1,1 @@
+trace --level statement --format jsonl trace-loop.mod

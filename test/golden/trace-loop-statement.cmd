@@ -1,0 +1,1 @@
+trace --level statement trace-loop.mod

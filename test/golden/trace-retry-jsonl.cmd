@@ -1,0 +1,1 @@
+trace --format jsonl trace-retry.mod
