@@ -1,6 +1,7 @@
 open Rapid_syntax
 
 type verdict = Passed | Failed | Skipped
+type engine = Machine | Closure
 type outcome = { case : Spec_case.t; verdict : verdict; detail : string }
 
 let pass case detail = { case; verdict = Passed; detail }
@@ -36,24 +37,36 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
-let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_typing.Check.result) =
+(* The run's output lines and outcome, by the chosen engine. *)
+let execute engine (run : Spec_case.run) program =
   let module M = Rapid_semantics.Machine in
-  let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
-  match M.start ~limits program ~entry:run.entry with
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let output = ref [] in
+  let collect = function M.Output s -> output := s :: !output | _ -> () in
+  match engine with
+  | Machine -> (
+      match M.start ~limits program ~entry:run.entry with
+      | Error m -> Error m
+      | Ok cfg ->
+          while M.outcome cfg = Running && M.steps cfg < max_steps do
+            List.iter collect (snd (M.step cfg))
+          done;
+          Ok (List.rev !output, M.outcome cfg))
+  | Closure -> (
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~on_event:collect program ~entry:run.entry with
+      | Error m -> Error m
+      | Ok r -> Ok (List.rev !output, r.outcome))
+
+let run_program engine case (run : Spec_case.run) ~installed ~modules (result : Rapid_typing.Check.result) =
+  let program = Rapid_semantics.Lower.program ~installed ~modules result.elaboration in
+  match execute engine run program with
   | Error m -> fail case ("cannot run: " ^ m)
-  | Ok cfg ->
-      let max_steps = Option.value run.max_steps ~default:10_000_000 in
-      let output = ref [] in
-      while M.outcome cfg = Running && M.steps cfg < max_steps do
-        let _, events = M.step cfg in
-        List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
-      done;
-      let output = List.rev !output in
+  | Ok (output, outcome) ->
       let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
       let status, error, error_file =
-        match M.outcome cfg with
+        match (outcome : Rapid_semantics.Machine.outcome) with
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
         | Running | Resource_exhausted _ -> (3, None, None)
@@ -81,7 +94,7 @@ let run_program case (run : Spec_case.run) ~installed ~modules (result : Rapid_t
       if problems = [] then pass case (Printf.sprintf "ran: %d lines, exit %d" (List.length output) status)
       else fail case (String.concat "; " problems)
 
-let run_case (case : Spec_case.t) =
+let run_case ?(engine = Machine) (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; verdict = Skipped;
       detail = Printf.sprintf "format %s (this runner reads formats %s)" case.format
@@ -104,7 +117,7 @@ let run_case (case : Spec_case.t) =
             match Rapid_typing.Check.errors result with
             | [] -> (
                 match case.run, expected with
-                | Some run, Spec_case.Accepted -> run_program case run ~installed ~modules result
+                | Some run, Spec_case.Accepted -> run_program engine case run ~installed ~modules result
                 | _ -> accepted case expected)
             | first :: _ -> (
                 (* The report must also name one of the sections the case tests. *)
@@ -133,8 +146,8 @@ let compare_sections a b =
       (String.split_on_char '.' s) in
   compare (key a, a) (key b, b)
 
-let run ?(verbose = false) out dir =
-  let outcomes = List.map (fun path -> run_case (Spec_case.read path)) (find_cases dir) in
+let run ?(verbose = false) ?engine out dir =
+  let outcomes = List.map (fun path -> run_case ?engine (Spec_case.read path)) (find_cases dir) in
   let by_section = Hashtbl.create 64 in
   List.iter (fun o ->
       let sections = if o.case.sections = [] then [ "(none)" ] else o.case.sections in

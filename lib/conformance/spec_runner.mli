@@ -2,14 +2,17 @@
     directives, with a summary per manual section and the line [N passed, N failed]. *)
 
 type verdict = Passed | Failed | Skipped   (** skipped: a format this runner does not read *)
+type engine = Machine | Closure
+(** Which engine runs the cases of format 3: the small-step machine or the closure engine. *)
+
 type outcome = { case : Spec_case.t; verdict : verdict; detail : string }
 
-val run_case : Spec_case.t -> outcome
+val run_case : ?engine:engine -> Spec_case.t -> outcome
 (** Parses the case's file (in strict mode when it says so) and compares with its expectation. *)
 
 val find_cases : string -> string list
 (** The [.mod] files below a folder, in a stable order. *)
 
-val run : ?verbose:bool -> Format.formatter -> string -> int * int
+val run : ?verbose:bool -> ?engine:engine -> Format.formatter -> string -> int * int
 (** [run out dir] runs every case below [dir], prints each failure, the summary per section and
     [N passed, N failed], and returns (passed, failed). *)
