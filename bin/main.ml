@@ -192,11 +192,30 @@ let start_machine files entry allow_unknown max_depth retry_limit k =
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
+(* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
+let run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event =
+  match Rapid_semantics.Session.load ~allow_unknown files with
+  | Error f -> report_load_failure f
+  | Ok loaded -> (
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+      let limits = { M.max_call_depth = max_depth; retry_limit } in
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~on_event:print_event loaded.program ~entry with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok { outcome; fuel_used } ->
+          if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
+          finish outcome fuel_used ~max_steps)
+
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json =
+  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel, doc/semantics.md).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json engine =
     guard @@ fun () ->
+    let print_event (e : M.event) =
+      if json then print_endline (Yojson.Safe.to_string (event_json e))
+      else match e with Output s -> print_endline s | _ -> () in
+    if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
     start_machine files entry allow_unknown max_depth retry_limit @@ fun cfg ->
     if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     let rec loop () =
@@ -220,7 +239,7 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth) was exhausted. 4: the program called an installed routine rapid-sem does not model yet.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ engine)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. *)
 let source_cache = Hashtbl.create 8
@@ -298,9 +317,10 @@ let trace_cmd =
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
   let verbose = Arg.(value & flag & info [ "verbose"; "v" ] ~doc:"List passing cases too.") in
-  let run dir verbose =
+  let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
+  let run dir verbose engine =
     guard @@ fun () ->
-    let _, failed = Rapid_conformance.Spec_runner.run ~verbose Format.std_formatter dir in
+    let _, failed = Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
   let doc = "run the conformance suite" in
@@ -312,7 +332,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ engine)
 
 let () =
   let doc = "the executable semantics of ABB's RAPID robot programming language" in

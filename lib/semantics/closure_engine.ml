@@ -85,6 +85,15 @@ let fail st ~at name =
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = e.chain }
 
+(* Value.to_single, here so that it is inlined into the operators below. *)
+let to_single x = Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
+
+let v_true = V.Bool true
+let v_false = V.Bool false
+
+(* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
+let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v
+
 let tick st =
   let f = st.fuel - 1 in
   st.fuel <- f;
@@ -180,9 +189,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
-  | Binary (op, x, y) ->
-      let x = expr st r ~at x and y = expr st r ~at y in
-      fun a -> let u = x a in let v = y a in check st ~at (Arith.binary op u v)
+  | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
       fun a -> if V.bool_value (x a) then y a else V.Bool false
@@ -200,6 +207,39 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       let f = call st r ~at ~function_call:true c in
       fun a -> match f a with Some v -> v | None -> V.type_mismatch "a function without value")
   | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
+
+(* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
+   programs) are computed here without building a result: the same rule as Arith's (one
+   operation in double precision rounded once to single, R-2.13-a; an infinite result is
+   ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO); every other operand goes to Arith.
+   The left operand is evaluated before the right (§3.1). *)
+and binary st ~at (op : Arith.binary) x y : act -> V.t =
+  let slow u v = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  match op with
+  | Num_add -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p +. q)) | _ -> slow u v)
+  | Num_sub -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p -. q)) | _ -> slow u v)
+  | Num_mul -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p *. q)) | _ -> slow u v)
+  | Num_div -> fun a -> let u = x a in let v = y a in
+      (match u, v with
+       | V.Num p, V.Num q when q <> 0. -> num (to_single (p /. q))
+       | _ -> slow u v)
+  | Num_lt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p < q then v_true else v_false | _ -> slow u v)
+  | Num_le -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p <= q then v_true else v_false | _ -> slow u v)
+  | Num_gt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p > q then v_true else v_false | _ -> slow u v)
+  | Num_ge -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p >= q then v_true else v_false | _ -> slow u v)
+  | Equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_true else v_false | _ -> slow u v)
+  | Not_equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
+  | _ -> fun a -> let u = x a in let v = y a in slow u v
 
 (* ------------------------------------------------------------------ calls *)
 
@@ -225,7 +265,7 @@ and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> re
 and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act -> act -> unit =
   let p = callee.parameters.(i) in
   let by_value f = fun a (c : act) ->
-    let v = V.copy (f a) in
+    let v = copy (f a) in
     c.store.(i) <- v;
     if is_alias p then begin c.boxes.(i) <- c.store; c.idx.(i) <- i; c.bound.(i) <- Ref_other end;
     if p.p_optional then c.present.(i) <- true
@@ -365,11 +405,13 @@ and activation_shape (r : routine) =
   let n = Array.length r.parameters in
   let aliases = Array.exists is_alias r.parameters in
   let optional = Array.exists (fun (p : parameter) -> p.p_optional) r.parameters in
-  (n, aliases, optional)
+  (n, aliases, optional, if r.locals < 1 then 1 else r.locals)
 
-and new_act (n, aliases, optional) (r : routine) =
+and new_act (n, aliases, optional, size) (r : routine) =
   { routine = r;
-    store = Array.make (max 1 r.locals) (V.Bool false);
+    store = (match size with
+        | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+        | _ -> Array.make size v_false);
     boxes = (if aliases then Array.make n [||] else [||]);
     idx = (if aliases then Array.make n 0 else [||]);
     present = (if optional then Array.make n true else [||]);
@@ -505,11 +547,11 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
       (* Rules assign, assign-target, store: the target is located before the value. *)
       let value = expr st r ~at e in
       match place with
-      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- V.copy (value a)
-      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- V.copy (value a)
+      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a)
+      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a)
       | _ ->
           let l = locate st r ~at place in
-          fun a -> let box, i = l a in let v = value a in box.(i) <- V.copy v)
+          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v)
   | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a)
   | Call_late (name, args) ->
       let name = expr st r ~at name in
