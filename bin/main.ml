@@ -200,7 +200,7 @@ let run_closure files entry max_steps allow_unknown max_depth retry_limit json p
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
       let limits = { M.max_call_depth = max_depth; retry_limit } in
-      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~on_event:print_event loaded.program ~entry with
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~all_events:json ~on_event:print_event loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok { outcome; fuel_used } ->
           if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));

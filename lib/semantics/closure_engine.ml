@@ -20,7 +20,7 @@ exception Leaving of error             (* RAISE; in a handler: the error leaves 
 exception Long_jump of int * error     (* to the error recovery point of this activation (§7.2) *)
 exception Break_loop                   (* §4.8 *)
 exception Continue_loop                (* §4.9 *)
-exception Return_signal of V.t option  (* §4.10 *)
+exception Return_signal                 (* §4.10: the value, if any, is in the activation *)
 exception Goto_label of int * int      (* §4.7: the label's statement list and index *)
 exception Exit_task                    (* §4.12 *)
 exception Retry_signal                 (* §4.13 *)
@@ -38,6 +38,7 @@ type act = {
   mutable retries : int;              (* RETRYs since the retried statement last completed *)
   mutable level : int;                (* its place in the call chain: 0 is the entry routine *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+  mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
 }
 
 type compiled = {
@@ -52,6 +53,7 @@ type state = {
   globals : V.t array;
   limits : M.limits;
   emit : M.event -> unit;
+  all_events : bool;                  (* false: only output, erase and log are wanted *)
   mutable fuel : int;
   fuel_limit : int;
   mutable depth : int;
@@ -75,7 +77,8 @@ let chain st =
   let rec go i acc = if i < 0 then List.rev acc else go (i - 1) (st.chain_acts.(i).routine.name :: acc) in
   go (st.depth - 1) []
 
-let emit_raised st e = st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
+let emit_raised st e =
+  if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
 
 (* An execution error where [at] is the statement in progress. *)
 let fail st ~at name =
@@ -88,16 +91,21 @@ let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain =
 (* Value.to_single, here so that it is inlined into the operators below. *)
 let to_single x = Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
 
+(* What a procedure gives back: no value. Recognised by identity. *)
+let no_value = V.String "(no value)"
+
 let v_true = V.Bool true
 let v_false = V.Bool false
 
 (* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
 let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v
 
+let fuel_out () = raise (Halt M.Running)
+
 let tick st =
   let f = st.fuel - 1 in
   st.fuel <- f;
-  if f < 0 then raise (Halt M.Running)
+  if f < 0 then fuel_out () [@@inline]
 
 let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
@@ -189,6 +197,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
+  | Binary (op, x, { e = Literal (V.Num q as v); _ }) -> binary_literal st ~at op (expr st r ~at x) v q
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -205,7 +214,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
         (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
   | Call c -> (
       let f = call st r ~at ~function_call:true c in
-      fun a -> match f a with Some v -> v | None -> V.type_mismatch "a function without value")
+      fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
   | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
 
 (* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
@@ -241,6 +250,59 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
       (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
+(* The same with a num literal on the right, which then costs no call. *)
+and binary_literal st ~at (op : Arith.binary) x v q : act -> V.t =
+  let slow u = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  match op with
+  | Num_add -> fun a -> (match x a with V.Num p -> num (to_single (p +. q)) | u -> slow u)
+  | Num_sub -> fun a -> (match x a with V.Num p -> num (to_single (p -. q)) | u -> slow u)
+  | Num_mul -> fun a -> (match x a with V.Num p -> num (to_single (p *. q)) | u -> slow u)
+  | _ -> binary st ~at op x (fun _ -> v)
+
+(* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
+   the comparisons of two nums, NOT, AND and OR. *)
+and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
+  let compare op x (y : Ir.expr) =
+    match op, y.e with
+    | (Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal), Literal (V.Num q as v) ->
+        (* A num literal on the right: compared without a call. *)
+        let x = expr st r ~at x in
+        let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op with
+            | Num_lt -> fun a -> (match x a with V.Num p -> p < q | u -> slow u)
+            | Num_le -> fun a -> (match x a with V.Num p -> p <= q | u -> slow u)
+            | Num_gt -> fun a -> (match x a with V.Num p -> p > q | u -> slow u)
+            | Num_ge -> fun a -> (match x a with V.Num p -> p >= q | u -> slow u)
+            | Equal -> fun a -> (match x a with V.Num p -> p = q | u -> slow u)
+            | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
+    | _ ->
+    let x = expr st r ~at x and y = expr st r ~at y in
+    let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
+    match op with
+    | Arith.Num_lt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
+    | Num_le -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
+    | Num_gt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
+    | Num_ge -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v)
+    | Equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p = q | _ -> slow u v)
+    | Not_equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> not (p = q) | _ -> slow u v)
+    | _ -> None
+  in
+  let general () = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
+  match e.e with
+  | Literal (V.Bool b) -> fun _ -> b
+  | Binary (op, x, y) -> (match compare op x y with Some f -> f | None -> general ())
+  | And (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a && y a
+  | Or (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a || y a
+  | Unary (Arith.Not, x) -> let x = condition st r ~at x in fun a -> not (x a)
+  | _ -> general ()
+
 (* ------------------------------------------------------------------ calls *)
 
 (* How the caller's slot [s] passes on to a conditional argument (§3.11): present or not. *)
@@ -264,11 +326,15 @@ and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> re
    argument-switch, argument-pass-on-present, argument-pass-on-absent). *)
 and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act -> act -> unit =
   let p = callee.parameters.(i) in
-  let by_value f = fun a (c : act) ->
-    let v = copy (f a) in
-    c.store.(i) <- v;
-    if is_alias p then begin c.boxes.(i) <- c.store; c.idx.(i) <- i; c.bound.(i) <- Ref_other end;
-    if p.p_optional then c.present.(i) <- true
+  let by_value f =
+    match is_alias p, p.p_optional with
+    | false, false -> fun a (c : act) -> c.store.(i) <- copy (f a)
+    | _ ->
+        fun a (c : act) ->
+          let v = copy (f a) in
+          c.store.(i) <- v;
+          if is_alias p then begin c.boxes.(i) <- c.store; c.idx.(i) <- i; c.bound.(i) <- Ref_other end;
+          if p.p_optional then c.present.(i) <- true
   in
   let by_reference place kind =
     if not (is_alias p) then by_value (read st caller ~at place)
@@ -333,14 +399,14 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
 (* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
    call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
    call-unknown-function). *)
-and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t option =
+and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
   match c.callee with
   | Unknown_routine _ ->
       let name = if function_call then "ERR_REFUNKFUN" else "ERR_REFUNKPRC" in
       fun _ -> fail st ~at name
   | Routine k -> call_routine st caller ~at k c.arguments
 
-and call_routine st (caller : routine) ~at k (arguments : argument array) : act -> V.t option =
+and call_routine st (caller : routine) ~at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
   | Some name ->
@@ -353,14 +419,23 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
       let n = Array.length binders in
       let shape = activation_shape callee in
       let is_function = callee.kind = Function in
-      let code = st.compiled.(k) in
-      fun a ->
-        let c = new_act shape callee in
-        for i = 0 to n - 1 do binders.(i) a c done;
-        enter st callee c ~code ~at ~is_function
+      let code = ref None in
+      let has_init = callee.local_inits <> [] in
+      let enter c = enter st callee c ~code ~r_index:k ~at ~is_function ~has_init in
+      (* The common numbers of arguments without a loop over the binders. *)
+      match binders with
+      | [||] -> fun _ -> enter (new_act shape callee)
+      | [| b0 |] -> fun a -> let c = new_act shape callee in b0 a c; enter c
+      | [| b0; b1 |] -> fun a -> let c = new_act shape callee in b0 a c; b1 a c; enter c
+      | _ ->
+          fun a ->
+            let c = new_act shape callee in
+            for i = 0 to n - 1 do binders.(i) a c done;
+            enter c
 
-and primitive_outcome st (caller : routine) ~at name : Primitive.outcome -> V.t option = function
-  | Returned v -> v
+and primitive_outcome st (caller : routine) ~at name : Primitive.outcome -> V.t = function
+  | Returned (Some v) -> v
+  | Returned None -> no_value
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
@@ -374,7 +449,7 @@ and top st = st.chain_acts.(st.depth - 1)
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
-and late_target st (caller : routine) ~at name (args : late_argument array) : act -> V.t option =
+and late_target st (caller : routine) ~at name (args : late_argument array) : act -> V.t =
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let routines = st.program.routines in
   let candidates =
@@ -416,7 +491,7 @@ and new_act (n, aliases, optional, size) (r : routine) =
     idx = (if aliases then Array.make n 0 else [||]);
     present = (if optional then Array.make n true else [||]);
     bound = (if aliases then Array.make n Ref_other else [||]);
-    retries = 0; level = 0; current = None }
+    retries = 0; level = 0; current = None; result = no_value }
 
 and push st a =
   if st.depth >= Array.length st.chain_acts then begin
@@ -432,21 +507,21 @@ and pop st = st.depth <- st.depth - 1
 
 (* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
    return-function, function-no-return, call-depth-exceeded). *)
-and enter st (r : routine) (c : act) ~code ~at ~is_function : V.t option =
+and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
   if st.depth >= st.limits.max_call_depth then
     raise (Halt (M.Resource_exhausted
                    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
   tick st;
-  let code = Lazy.force code in
+  let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
   push st c;
-  st.emit (M.Routine_entered r.name);
-  match code.c_init c; code.c_body c with
+  if st.all_events then st.emit (M.Routine_entered r.name);
+  match if has_init then code.c_init c; code.c_body c with
   | () ->
       pop st;
-      st.emit (M.Routine_left r.name);
+      if st.all_events then st.emit (M.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
-      if is_function then fail st ~at "ERR_FNCNORET" else None
-  | exception Return_signal v -> pop st; st.emit (M.Routine_left r.name); v
+      if is_function then fail st ~at "ERR_FNCNORET" else no_value
+  | exception Return_signal -> pop st; if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c e
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
@@ -458,12 +533,12 @@ and abandon st code (c : act) =
   (match code.c_undo with
    | None -> ()
    | Some undo -> (
-       st.emit (M.Undo_run c.routine.name);
+       if st.all_events then st.emit (M.Undo_run c.routine.name);
        match undo c with
-       | () | exception Return_signal _ -> ()
+       | () | exception Return_signal -> ()
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e))));
   pop st;
-  st.emit (M.Routine_left c.routine.name)
+  if st.all_events then st.emit (M.Routine_left c.routine.name)
 
 (* An error leaves routine [c] (R-7.1, R-7.2-a: rules longjump-search-start, longjump-search,
    longjump-found, raise-propagate): after the routine is abandoned, the call chain is searched
@@ -499,7 +574,7 @@ and recovers st (a : act) number =
    by reaching its end, which calls the system error handler (handler-end). An error inside it
    goes to the system error handler (raise-in-handler). *)
 and run_handler st handler (a : act) e : [ `Retry | `Trynext ] =
-  st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
+  if st.all_events then st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
   st.globals.(st.program.errno) <- V.num (float_of_int e.number);
   let previous = a.current in
   a.current <- Some e;
@@ -532,15 +607,14 @@ and guarded st handler (core : act -> unit) : act -> unit =
 (* [handler]: the routine's error handler when the statement is in the routine's body. *)
 and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
   let core = stmt_core st r ~handler ~gotos s in
-  let counted a = tick st; core a in
   match handler with
-  | Some h -> guarded st h counted
-  | None -> counted
+  | Some h -> guarded st h core
+  | None -> core
 
 and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
   let at = Option.value at ~default:s.sat in
   let block b = block st r ~handler ~gotos b in
-  let truth e = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
+  let truth e = condition st r ~at e in
   let number e = let f = expr st r ~at e in fun a -> V.num_value (f a) in
   match s.s with
   | Assign (place, e) -> (
@@ -562,11 +636,11 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
           | Some f -> f
           | None -> let f = late_target st r ~at n args in Hashtbl.replace cache n f; f in
         ignore (f a)
-  | Goto (b, i) -> fun _ -> raise (Goto_label (b, i))
-  | Break -> fun _ -> raise Break_loop
-  | Continue -> fun _ -> raise Continue_loop
-  | Return None -> fun _ -> raise (Return_signal None)
-  | Return (Some e) -> let f = expr st r ~at e in fun a -> raise (Return_signal (Some (f a)))
+  | Goto (b, i) -> fun _ -> raise_notrace (Goto_label (b, i))
+  | Break -> fun _ -> raise_notrace Break_loop
+  | Continue -> fun _ -> raise_notrace Continue_loop
+  | Return None -> fun _ -> raise_notrace Return_signal
+  | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; raise_notrace Return_signal
   | Raise None -> (
       (* raise-again: the error being handled leaves the routine. *)
       fun a -> match a.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
@@ -587,8 +661,8 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler. *)
       fun a ->
         if a.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
-        else begin a.retries <- a.retries + 1; raise Retry_signal end
-  | Trynext -> fun _ -> raise Trynext_signal
+        else begin a.retries <- a.retries + 1; raise_notrace Retry_signal end
+  | Trynext -> fun _ -> raise_notrace Trynext_signal
   | Connect (place, _) ->
       (* §4.15: the target gets a new interrupt number; one it already has is ERR_ALRDYCNT. *)
       let l = locate st r ~at place in
@@ -654,8 +728,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
 and block st (r : routine) ~handler ~gotos (b : Ir.block) : act -> unit =
   let body = Array.map (stmt st r ~handler ~gotos) b.body in
   let n = Array.length body in
-  let from a i = for k = i to n - 1 do body.(k) a done in
-  if n = 1 then body.(0)
+  (* One unit of fuel for each statement started. *)
+  let from a i = for k = i to n - 1 do tick st; body.(k) a done in
+  if n = 0 then fun _ -> ()
+  else if n = 1 && not (Hashtbl.mem gotos b.id) then (let s0 = body.(0) in fun a -> tick st; s0 a)
   else if Hashtbl.mem gotos b.id then
     let id = b.id in
     fun a ->
@@ -694,11 +770,11 @@ let compile_routine st k =
     | _ -> fun a -> List.iter (fun f -> f a) inits in
   { c_init; c_body; c_handler; c_undo }
 
-let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~emit (program : program) =
+let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~all_events ~emit (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
-    program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit;
+    program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     fuel; fuel_limit = fuel; depth = 0; chain_acts = [||]; booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
@@ -723,12 +799,12 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 
-let run ?limits ?fuel ?(on_event = ignore) (program : program) ~entry =
+let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : program) ~entry =
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
   | Some (_, k) ->
-      let st = initial_state ?limits ?fuel ~emit:on_event program in
+      let st = initial_state ?limits ?fuel ~all_events ~emit:on_event program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -744,18 +820,20 @@ let run ?limits ?fuel ?(on_event = ignore) (program : program) ~entry =
           push st a;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
           match code.c_init a; code.c_body a with
-          | () | exception Return_signal _ ->
-              on_event (M.Routine_left r.name); on_event M.Task_ended; M.Ended
+          | () | exception Return_signal ->
+              if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
+              M.Ended
           | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped e
           | exception Exit_task ->
               (match code.c_undo with
                | Some undo ->
-                   on_event (M.Undo_run r.name);
+                   if all_events then on_event (M.Undo_run r.name);
                    (match undo a with
-                    | () | exception Return_signal _ -> ()
+                    | () | exception Return_signal -> ()
                     | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e)))
                | None -> ());
-              on_event M.Task_ended; M.Ended
+              if all_events then on_event M.Task_ended;
+              M.Ended
         with e -> outcome_of_exception st e
       in
       Ok { outcome; fuel_used = st.fuel_limit - st.fuel }

@@ -26,10 +26,12 @@ type result = {
 }
 
 val run :
-  ?limits:Machine.limits -> ?fuel:int -> ?on_event:(Machine.event -> unit) ->
+  ?limits:Machine.limits -> ?fuel:int -> ?all_events:bool -> ?on_event:(Machine.event -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
-    [on_event] on each observable event as it happens. [Error] when there is no procedure
+    [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
+    [Erase] and [Log] (what [rapid-sem run] without [--json] shows), which spares building the
+    others. [Error] when there is no procedure
     [entry] without parameters (nothing runs).
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
