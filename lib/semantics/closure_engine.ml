@@ -39,6 +39,7 @@ type act = {
   mutable level : int;                (* its place in the call chain: 0 is the entry routine *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
+  mutable nest : int;                 (* its share of the native stack (see native_budget) *)
 }
 
 type compiled = {
@@ -46,6 +47,7 @@ type compiled = {
   c_body : act -> unit;
   c_handler : (act -> unit) option;
   c_undo : (act -> unit) option;
+  c_nest : int;                       (* the depth of its syntax tree, statements and expressions *)
 }
 
 type state = {
@@ -57,6 +59,8 @@ type state = {
   mutable fuel : int;
   fuel_limit : int;
   mutable depth : int;
+  mutable native : int;               (* the nests of the active routines *)
+  native_budget : int;
   mutable chain_acts : act array;     (* the call chain, 0 .. depth - 1 *)
   mutable booked : int list;          (* BookErrNo numbers (R-4.11-b) *)
   mutable next_booked : int;
@@ -491,7 +495,7 @@ and new_act (n, aliases, optional, size) (r : routine) =
     idx = (if aliases then Array.make n 0 else [||]);
     present = (if optional then Array.make n true else [||]);
     bound = (if aliases then Array.make n Ref_other else [||]);
-    retries = 0; level = 0; current = None; result = no_value }
+    retries = 0; level = 0; current = None; result = no_value; nest = 0 }
 
 and push st a =
   if st.depth >= Array.length st.chain_acts then begin
@@ -503,7 +507,7 @@ and push st a =
   st.chain_acts.(st.depth) <- a;
   st.depth <- st.depth + 1
 
-and pop st = st.depth <- st.depth - 1
+and pop st (c : act) = st.depth <- st.depth - 1; st.native <- st.native - c.nest
 
 (* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
    return-function, function-no-return, call-depth-exceeded). *)
@@ -513,15 +517,22 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
                    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
   tick st;
   let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
+  (* Each activation costs the native stack in proportion to the nesting of its routine: beyond
+     the budget the run ends as the call-depth limit ends it, before the stack overflows. *)
+  if st.native + code.c_nest > st.native_budget then
+    raise (Halt (M.Resource_exhausted
+                   (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" st.depth)));
+  c.nest <- code.c_nest;
+  st.native <- st.native + code.c_nest;
   push st c;
   if st.all_events then st.emit (M.Routine_entered r.name);
   match if has_init then code.c_init c; code.c_body c with
   | () ->
-      pop st;
+      pop st c;
       if st.all_events then st.emit (M.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
       if is_function then fail st ~at "ERR_FNCNORET" else no_value
-  | exception Return_signal -> pop st; if st.all_events then st.emit (M.Routine_left r.name); c.result
+  | exception Return_signal -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c e
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
@@ -537,7 +548,7 @@ and abandon st code (c : act) =
        match undo c with
        | () | exception Return_signal -> ()
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e))));
-  pop st;
+  pop st c;
   if st.all_events then st.emit (M.Routine_left c.routine.name)
 
 (* An error leaves routine [c] (R-7.1, R-7.2-a: rules longjump-search-start, longjump-search,
@@ -752,6 +763,56 @@ and goto_stmt acc (s : stmt) =
   | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
   | _ -> ()
 
+(* The depth of a routine's syntax tree: how deep its closures nest on the native stack. The
+   static semantics bounds it (R-1.4), so these recursions are bounded too. *)
+let rec expr_depth (e : Ir.expr) =
+  1 + match e.e with
+    | Literal _ | Placeholder -> 0
+    | Read p | Read_signal p -> place_depth p
+    | Unary (_, x) -> expr_depth x
+    | Binary (_, x, y) | And (x, y) | Or (x, y) -> Int.max (expr_depth x) (expr_depth y)
+    | Aggregate (es, _) -> exprs_depth es
+    | Call c -> arguments_depth c.arguments
+and exprs_depth es = Array.fold_left (fun m e -> Int.max m (expr_depth e)) 0 es
+and place_depth = function
+  | Whole _ | Unresolved _ -> 1
+  | Element (p, es) -> 1 + Int.max (place_depth p) (exprs_depth es)
+  | Component (p, _) -> 1 + place_depth p
+and arguments_depth args =
+  Array.fold_left (fun m -> function
+      | By_value e -> Int.max m (expr_depth e)
+      | By_reference (p, _) -> Int.max m (place_depth p)
+      | Absent | Present_switch | Pass_on _ -> m) 0 args
+and stmt_depth (s : stmt) =
+  2 + match s.s with
+    | Assign (p, e) -> Int.max (place_depth p) (expr_depth e)
+    | Call_procedure c -> arguments_depth c.arguments
+    | Call_late (e, args) ->
+        Array.fold_left (fun m (a : late_argument) -> match a.late_value with
+            | Late_expr e -> Int.max m (expr_depth e)
+            | Late_reference p -> Int.max m (place_depth p)
+            | Late_switch -> m) (expr_depth e) args
+    | Return (Some e) | Raise (Some e) -> expr_depth e
+    | Connect (p, _) -> place_depth p
+    | If (c, t, e) -> Int.max (expr_depth c) (Int.max (block_depth t) (block_depth e))
+    | Compact_if (c, s) -> Int.max (expr_depth c) (stmt_depth s)
+    | For f ->
+        Int.max (Int.max (expr_depth f.from_) (expr_depth f.to_))
+          (Int.max (match f.step with Some e -> expr_depth e | None -> 0) (block_depth f.loop_body))
+    | While (c, b) -> Int.max (expr_depth c) (block_depth b)
+    | Test (e, cases, d) ->
+        Array.fold_left (fun m (vs, b) -> Int.max m (Int.max (exprs_depth vs) (block_depth b)))
+          (Int.max (expr_depth e) (block_depth d)) cases
+    | Goto _ | Break | Continue | Return None | Raise None | Exit | Retry | Trynext | Label
+    | Placeholder_statement -> 0
+and block_depth (b : block) = 1 + Array.fold_left (fun m s -> Int.max m (stmt_depth s)) 0 b.body
+
+let routine_nest (r : routine) =
+  (* The handler runs on top of the statement that caused the error. *)
+  4 + block_depth r.body
+  + (match r.error with Some h -> block_depth h.handler | None -> 0)
+  + (match r.undo with Some b -> block_depth b | None -> 0)
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -768,14 +829,38 @@ let compile_routine st k =
   let c_init = match inits with
     | [] -> fun _ -> ()
     | _ -> fun a -> List.iter (fun f -> f a) inits in
-  { c_init; c_body; c_handler; c_undo }
+  { c_init; c_body; c_handler; c_undo; c_nest = routine_nest r }
+
+(* The soft limit of the native stack (Linux: /proc/self/limits), 8 MB when it cannot be read. *)
+let native_stack_bytes () =
+  let default = 8 * 1024 * 1024 in
+  match open_in "/proc/self/limits" with
+  | exception Sys_error _ -> default
+  | ic ->
+      let rec find () =
+        match input_line ic with
+        | exception End_of_file -> default
+        | line when String.length line > 14 && String.sub line 0 14 = "Max stack size" -> (
+            match List.filter (( <> ) "") (String.split_on_char ' ' (String.sub line 14 (String.length line - 14))) with
+            | "unlimited" :: _ -> 1024 * 1024 * 1024
+            | soft :: _ -> Option.value (int_of_string_opt soft) ~default
+            | [] -> default)
+        | _ -> find ()
+      in
+      let bytes = find () in
+      close_in_noerr ic; bytes
+
+(* Native stack bytes per unit of nesting: 11 to 13 measured where the stack overflows
+   (bench/README.md, "The closure engine"), doubled. *)
+let bytes_per_nest = 26
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~all_events ~emit (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
-    fuel; fuel_limit = fuel; depth = 0; chain_acts = [||]; booked = []; next_booked = 2001;
+    fuel; fuel_limit = fuel; depth = 0; native = 0;
+    native_budget = native_stack_bytes () / bytes_per_nest; chain_acts = [||]; booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0) } } in
@@ -817,6 +902,8 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
           let code = Lazy.force st.compiled.(k) in
           let a = new_act (activation_shape r) r in
           st.chain_acts <- Array.make 64 a;
+          a.nest <- code.c_nest;
+          st.native <- code.c_nest;
           push st a;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
           match code.c_init a; code.c_body a with
