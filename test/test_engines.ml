@@ -110,10 +110,288 @@ let spec_under_closure () =
           if o.verdict = Failed then Some (path ^ ": " ^ o.detail) else None)) folders in
   Alcotest.(check (list string)) "spec/ run cases failing under --engine closure" [] failures
 
+
+(* ------------------------------------------------------------------ programs beyond spec/ *)
+
+(* Programs that mix what the spec/ cases show one at a time: GOTO out of loops, RETRY and
+   TRYNEXT inside loops, long jumps over UNDO handlers, late binding with arguments, CallByVar,
+   conditional arguments, INOUT bindings, and the num operators on edge values (the closure
+   engine computes num operators on its own fast path; Arith computes them for the machine). *)
+let programs = [
+  ("control and RETRY in loops", {rapid|MODULE g1
+  VAR num count := 0;
+  VAR num arr{3} := [1, 2, 3];
+  PERS num pp := 5;
+  VAR num x;
+  PROC main()
+    VAR num i;
+    VAR num d := 0;
+    i := 0;
+  lbl:
+    i := i + 1;
+    FOR k FROM 3 TO 1 DO
+      IF k = 2 GOTO after;
+      TPWrite "k=" \Num:=k;
+    ENDFOR
+  after:
+    IF i < 3 GOTO lbl;
+    TPWrite "i=" \Num:=i;
+    FOR j FROM 0 TO 1 STEP 0.25 DO
+      count := count + 1;
+    ENDFOR
+    TPWrite "count=" \Num:=count;
+    WHILE TRUE DO
+      count := count + 1;
+      IF count > 10 BREAK;
+      IF count MOD 2 = 0 CONTINUE;
+      TPWrite "odd " \Num:=count;
+    ENDWHILE
+    TEST count
+    CASE 1, 2, 11:
+      TPWrite "eleven";
+    DEFAULT:
+      TPWrite "other";
+    ENDTEST
+    x := arr{d};
+    TPWrite "after error";
+    d := 1 / d;
+    TPWrite "after error 2";
+    arr{d + 3} := 1;
+    TPWrite "end";
+  ERROR
+    TPWrite "handler " \Num:=ERRNO;
+    IF ERRNO = ERR_OUTOFBND THEN
+      d := d + 1;
+      IF d < 4 RETRY;
+      TRYNEXT;
+    ENDIF
+    d := 1;
+    RETRY;
+  ENDPROC
+ENDMODULE
+|rapid});
+  ("long jumps, UNDO, late binding, conditional arguments", {rapid|MODULE g2
+  VAR num log := 0;
+  PROC main()
+    VAR num r;
+    r := outer(3);
+    TPWrite "r=" \Num:=r;
+    lvl1;
+    TPWrite "back";
+    CallByVar "cb", 2;
+    % "cb" + "1" % ;
+    % "late" % 7, \flag;
+    TPWrite "done";
+  ERROR (LONG_JMP_ALL_ERR)
+    TPWrite "main got " \Num:=ERRNO;
+    TRYNEXT;
+  ENDPROC
+  FUNC num outer(num n)
+    IF n = 0 RAISE 12;
+    RETURN outer(n - 1) + 1;
+  ERROR
+    IF ERRNO = 12 RETURN 100;
+  ENDFUNC
+  PROC lvl1()
+    lvl2;
+  UNDO
+    TPWrite "undo1";
+  ENDPROC
+  PROC lvl2()
+    VAR num z;
+    lvl3;
+  ERROR
+    TPWrite "lvl2 handler";
+    RAISE;
+  UNDO
+    TPWrite "undo2";
+  ENDPROC
+  PROC lvl3()
+    RAISE 33;
+  UNDO
+    TPWrite "undo3";
+  ENDPROC
+  PROC cb1()
+    TPWrite "cb1";
+  ENDPROC
+  PROC cb2()
+    TPWrite "cb2";
+  ENDPROC
+  PROC late(num a, \switch flag)
+    TPWrite "late " \Num:=a;
+    IF Present(flag) TPWrite "flag";
+    opt;
+    opt \v:=3;
+    sw \s;
+  ENDPROC
+  PROC opt(\num v)
+    IF Present(v) TPWrite "v=" \Num:=v;
+    inner \v?v;
+  ENDPROC
+  PROC inner(\num v)
+    TPWrite "inner present " \Bool:=Present(v);
+  ENDPROC
+  PROC sw(\switch s)
+    inner2 \s?s;
+  ENDPROC
+  PROC inner2(\switch s)
+    TPWrite "s " \Bool:=Present(s);
+  ENDPROC
+ENDMODULE
+|rapid});
+  ("INOUT bindings and ERR_FNCNORET", {rapid|MODULE g3
+  VAR num v := 1;
+  PERS num p := 2;
+  PROC main()
+    io v;
+    io p;
+    TPWrite "v=" \Num:=v;
+    f_no;
+  ERROR
+    TPWrite "main h " \Num:=ERRNO;
+    TRYNEXT;
+  ENDPROC
+  PROC io(INOUT num x)
+    x := x + 10;
+    TPWrite "isvar " \Bool:=IsVar(x);
+    TPWrite "ispers " \Bool:=IsPers(x);
+    tovar x;
+  ERROR
+    TPWrite "io h " \Num:=ERRNO;
+    IF ERRNO = ERR_ARGNOTVAR TRYNEXT;
+  ENDPROC
+  PROC tovar(VAR num y)
+    y := y + 1;
+  ENDPROC
+  PROC f_no()
+    VAR num q;
+    q := nf();
+  ENDPROC
+  FUNC num nf()
+    TPWrite "in nf";
+  ENDFUNC
+ENDMODULE
+|rapid});
+  ("num operators on edge values", {rapid|MODULE arith
+  CONST num vals{12} := [0, -0, 1, -1, 0.1, 3, 8388608, 16777217, 3.4e38, -3.4e38, 1e-45, 2.5];
+  VAR num r;
+  VAR bool b;
+  VAR string s;
+  PROC main()
+    FOR i FROM 1 TO 12 DO
+      FOR j FROM 1 TO 12 DO
+        s := "";
+        r := vals{i} + vals{j};
+        s := s + ValToStr(r) + " ";
+        r := vals{i} - vals{j};
+        s := s + ValToStr(r) + " ";
+        r := vals{i} * vals{j};
+        s := s + ValToStr(r) + " ";
+        r := vals{i} / vals{j};
+        s := s + ValToStr(r) + " ";
+        r := vals{i} - 1;
+        r := vals{i} + 0.5;
+        r := vals{i} * 3;
+        s := s + ValToStr(r) + " ";
+        b := vals{i} < vals{j};
+        s := s + ValToStr(b);
+        b := vals{i} <= vals{j};
+        s := s + ValToStr(b);
+        b := vals{i} > vals{j};
+        s := s + ValToStr(b);
+        b := vals{i} >= vals{j};
+        s := s + ValToStr(b);
+        b := vals{i} = vals{j};
+        s := s + ValToStr(b);
+        b := vals{i} <> vals{j};
+        s := s + ValToStr(b);
+        IF vals{i} < vals{j} AND vals{i} <> 0 OR (NOT (vals{i} >= 2.5)) s := s + "c";
+        WHILE vals{i} > 2.5 AND vals{i} <> 0 AND s <> "" DO
+          s := "";
+        ENDWHILE
+        TPWrite s;
+      ENDFOR
+    ENDFOR
+  ERROR
+    TPWrite "error " + ValToStr(ERRNO = ERR_DIVZERO) + ValToStr(ERRNO = ERR_OVERFLOW);
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+|rapid});
+]
+
+let load_text name text =
+  match Parse.parse_string ~name:(name ^ ".mod") text with
+  | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
+  | Ok m -> (
+      match Rapid_semantics.Session.load_modules [ m ] with
+      | Ok l -> l.program
+      | Error _ -> Alcotest.failf "%s does not check" name)
+
+let agree ?(limits = M.default_limits) ?(budget = 10_000_000) program =
+  let m_events, m_outcome = machine_run limits program ~entry:"main" ~max_steps:budget in
+  let c_events, c_outcome = closure_run limits program ~entry:"main" ~fuel:budget in
+  Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
+  (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d);
+  (c_events, c_outcome)
+
+let program_agrees (name, text) () =
+  let events, _ = agree (load_text "program" text) in
+  Alcotest.(check bool) (name ^ ": something was written") true
+    (List.exists (function M.Output _ -> true | _ -> false) events)
+
+(* §5.4, §1.4: recursion as deep as the default limit allows runs; one call more exhausts the
+   call depth, in both engines alike. *)
+let recursion depth =
+  Printf.sprintf "MODULE deep\n  FUNC num down(num n)\n    IF n = 0 RETURN 0;\n    RETURN down(n - 1) + 1;\n  ENDFUNC\n  PROC main()\n    TPWrite \"d=\" \\Num:=down(%d);\n  ENDPROC\nENDMODULE\n" depth
+
+let deep_recursion () =
+  (* main and 10,000 - 1 activations of down: the deepest chain the default limit allows. *)
+  let events, outcome = agree (load_text "deep" (recursion 9998)) in
+  Alcotest.(check string) "outcome" "ended" (outcome_text outcome);
+  Alcotest.(check bool) "d=9998" true (List.mem (M.Output "d=9998") events);
+  let _, outcome = agree (load_text "deeper" (recursion 9999)) in
+  Alcotest.(check string) "one call more" "exhausted" (outcome_text outcome)
+
+(* A call chain deeper than the native stack holds ends as resource exhaustion, cleanly. *)
+let native_stack () =
+  let program = load_text "unbounded" (recursion 100_000_000) in
+  let limits = { M.default_limits with max_call_depth = max_int } in
+  match C.run ~limits program ~entry:"main" with
+  | Error m -> Alcotest.fail m
+  | Ok { outcome = Resource_exhausted m; _ } ->
+      Alcotest.(check bool) ("the reason names the native stack: " ^ m) true
+        (Str.string_match (Str.regexp ".*native stack") m 0)
+  | Ok { outcome; _ } -> Alcotest.failf "expected exhaustion, got %s" (outcome_text outcome)
+
+(* Fuel: one unit per statement started, per loop iteration and per routine entered. *)
+let fuel () =
+  let program = load_text "fuel"
+      "MODULE fuel\n  PROC p()\n  ENDPROC\n  PROC main()\n    VAR num i;\n    WHILE i < 3 DO\n      i := i + 1;\n      p;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n" in
+  (match C.run program ~entry:"main" with
+   | Ok { outcome = Ended; fuel_used } ->
+       (* the WHILE statement, 4 tests of its condition, 3 x (2 statements and 1 routine) *)
+       Alcotest.(check int) "fuel used" 14 fuel_used
+   | _ -> Alcotest.fail "the program did not end");
+  match C.run ~fuel:13 program ~entry:"main" with
+  | Ok { outcome = Running; _ } -> ()
+  | _ -> Alcotest.fail "13 units of fuel do not suffice"
+
+let no_entry () =
+  let program = load_text "entry" "MODULE e\n  PROC p(num x)\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run program ~entry:"main"));
+  Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run program ~entry:"p"))
+
 let suite =
   ( "engines",
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
-    :: List.map (fun path ->
+    :: Alcotest.test_case "recursion 10,000 deep, and one call more" `Quick deep_recursion
+    :: Alcotest.test_case "the native stack ends a run cleanly" `Quick native_stack
+    :: Alcotest.test_case "fuel" `Quick fuel
+    :: Alcotest.test_case "entry routines" `Quick no_entry
+    :: List.map (fun (name, text) -> Alcotest.test_case ("machine = closure: " ^ name) `Quick
+                    (program_agrees (name, text))) programs
+    @ List.map (fun path ->
         let name = String.concat "/" (List.rev (List.filteri (fun i _ -> i < 2)
                                                   (List.rev (String.split_on_char '/' path)))) in
         Alcotest.test_case ("machine = closure: " ^ name) `Quick (compare_case path)) (run_cases ()) )
