@@ -20,7 +20,6 @@ exception Leaving of error             (* RAISE; in a handler: the error leaves 
 exception Long_jump of int * error     (* to the error recovery point of this activation (§7.2) *)
 exception Break_loop                   (* §4.8 *)
 exception Continue_loop                (* §4.9 *)
-exception Return_signal                 (* §4.10: the value, if any, is in the activation *)
 exception Goto_label of int * int      (* §4.7: the label's statement list and index *)
 exception Exit_task                    (* §4.12 *)
 exception Retry_signal                 (* §4.13 *)
@@ -44,9 +43,9 @@ type act = {
 
 type compiled = {
   c_init : act -> unit;
-  c_body : act -> unit;
-  c_handler : (act -> unit) option;
-  c_undo : (act -> unit) option;
+  c_body : act -> bool;
+  c_handler : (act -> bool) option;
+  c_undo : (act -> bool) option;
   c_nest : int;                       (* the depth of its syntax tree, statements and expressions *)
 }
 
@@ -527,12 +526,12 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   push st c;
   if st.all_events then st.emit (M.Routine_entered r.name);
   match if has_init then code.c_init c; code.c_body c with
-  | () ->
+  | true ->
       pop st c;
       if st.all_events then st.emit (M.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
       if is_function then fail st ~at "ERR_FNCNORET" else no_value
-  | exception Return_signal -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
+  | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c e
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
@@ -546,7 +545,7 @@ and abandon st code (c : act) =
    | Some undo -> (
        if st.all_events then st.emit (M.Undo_run c.routine.name);
        match undo c with
-       | () | exception Return_signal -> ()
+       | _ -> ()
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e))));
   pop st c;
   if st.all_events then st.emit (M.Routine_left c.routine.name)
@@ -584,13 +583,14 @@ and recovers st (a : act) number =
    ends by RETRY (retry), TRYNEXT (trynext), RETURN, RAISE (the error leaves the routine), or
    by reaching its end, which calls the system error handler (handler-end). An error inside it
    goes to the system error handler (raise-in-handler). *)
-and run_handler st handler (a : act) e : [ `Retry | `Trynext ] =
+and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
   if st.all_events then st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
   st.globals.(st.program.errno) <- V.num (float_of_int e.number);
   let previous = a.current in
   a.current <- Some e;
   match handler a with
-  | () -> raise (Halt (stopped e))
+  | true -> raise (Halt (stopped e))
+  | false -> `Return
   | exception Retry_signal -> a.current <- previous; `Retry
   | exception Trynext_signal -> a.current <- previous; `Trynext
   | exception Raised e' -> raise (Halt (stopped e'))
@@ -599,30 +599,33 @@ and run_handler st handler (a : act) e : [ `Retry | `Trynext ] =
 (* A statement of a routine with an error handler: an error in it, or in a routine it calls
    that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
    statement that caused the error"). RETRY runs it again; TRYNEXT goes on after it. *)
-and guarded st handler (core : act -> unit) : act -> unit =
+and guarded st handler (core : act -> bool) : act -> bool =
   fun a ->
     let rec attempt retried =
       match core a with
-      | () -> if retried then a.retries <- 0
+      | goes_on -> if retried then a.retries <- 0; goes_on
       | exception Raised e -> handle e
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
     and handle e =
       match run_handler st handler a e with
       | `Retry -> attempt true
-      | `Trynext -> ()
+      | `Trynext -> true
+      | `Return -> false
     in
     attempt false
 
 (* ------------------------------------------------------------------ statements *)
 
 (* [handler]: the routine's error handler when the statement is in the routine's body. *)
-and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
+(* A statement runs to its completion: [true] when execution goes on after it, [false] when it
+   executed RETURN (the value, if any, is in the activation) and the routine returns. *)
+and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   let core = stmt_core st r ~handler ~gotos s in
   match handler with
   | Some h -> guarded st h core
   | None -> core
 
-and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
+and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   let at = Option.value at ~default:s.sat in
   let block b = block st r ~handler ~gotos b in
   let truth e = condition st r ~at e in
@@ -632,12 +635,12 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
       (* Rules assign, assign-target, store: the target is located before the value. *)
       let value = expr st r ~at e in
       match place with
-      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a)
-      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a)
+      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a); true
       | _ ->
           let l = locate st r ~at place in
-          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v)
-  | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a)
+          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v; true)
+  | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a); true
   | Call_late (name, args) ->
       let name = expr st r ~at name in
       let cache = Hashtbl.create 1 in
@@ -646,12 +649,12 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
         let f = match Hashtbl.find_opt cache n with
           | Some f -> f
           | None -> let f = late_target st r ~at n args in Hashtbl.replace cache n f; f in
-        ignore (f a)
+        ignore (f a); true
   | Goto (b, i) -> fun _ -> raise_notrace (Goto_label (b, i))
   | Break -> fun _ -> raise_notrace Break_loop
   | Continue -> fun _ -> raise_notrace Continue_loop
-  | Return None -> fun _ -> raise_notrace Return_signal
-  | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; raise_notrace Return_signal
+  | Return None -> fun _ -> false
+  | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; false
   | Raise None -> (
       (* raise-again: the error being handled leaves the routine. *)
       fun a -> match a.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
@@ -683,24 +686,29 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
          | V.Num 0. -> ()
          | _ -> fail st ~at "ERR_ALRDYCNT");
         st.next_interrupt <- st.next_interrupt + 1;
-        box.(i) <- V.num (float_of_int st.next_interrupt)
+        box.(i) <- V.num (float_of_int st.next_interrupt);
+        true
   | If (c, t, e) ->
       let c = truth c and t = block t and e = block e in
       fun a -> if c a then t a else e a
   | Compact_if (c, s) ->
       (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
       let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
-      fun a -> if c a then s a
+      fun a -> if c a then s a else true
   | While (c, body) ->
       let c = truth c and body = block body in
       fun a ->
-        let continue = ref true in
+        let continue = ref true and goes_on = ref true in
         while !continue do
           tick st;
-          if c a then (match body a with () -> () | exception Continue_loop -> ()
-                                        | exception Break_loop -> continue := false)
+          if c a then (match body a with
+              | true -> ()
+              | false -> continue := false; goes_on := false
+              | exception Continue_loop -> ()
+              | exception Break_loop -> continue := false)
           else continue := false
-        done
+        done;
+        !goes_on
   | For { variable; from_; to_; step; loop_body } ->
       (* §4.18: FROM, TO and STEP once; the default step is 1, or -1 when FROM > TO. *)
       let from_ = number from_ and to_ = number to_ in
@@ -710,14 +718,18 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
-        let v = ref lo and continue = ref true in
+        let v = ref lo and continue = ref true and goes_on = ref true in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
           a.store.(variable) <- V.Num !v;
-          (match body a with () -> () | exception Continue_loop -> ()
-                           | exception Break_loop -> continue := false);
+          (match body a with
+           | true -> ()
+           | false -> continue := false; goes_on := false
+           | exception Continue_loop -> ()
+           | exception Break_loop -> continue := false);
           if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
-        done
+        done;
+        !goes_on
   | Test (subject, cases, default) ->
       let subject = expr st r ~at subject in
       let cases = Array.map (fun (values, b) -> (Array.map (expr st r ~at) values, block b)) cases in
@@ -732,21 +744,23 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> unit =
             if Array.exists (fun f -> V.equal v (f a)) values then b a else find (k + 1)
         in
         find 0
-  | Label -> fun _ -> ()
+  | Label -> fun _ -> true
   | Placeholder_statement -> fun _ -> fail st ~at "ERR_EXECPHR"
 
-(* A statement list; a list holding a GOTO's label continues there (rule goto). *)
-and block st (r : routine) ~handler ~gotos (b : Ir.block) : act -> unit =
+(* A statement list, one unit of fuel for each statement started; it stops at a RETURN. A list
+   holding a GOTO's label continues there (rule goto). *)
+and block st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
   let body = Array.map (stmt st r ~handler ~gotos) b.body in
   let n = Array.length body in
-  (* One unit of fuel for each statement started. *)
-  let from a i = for k = i to n - 1 do tick st; body.(k) a done in
-  if n = 0 then fun _ -> ()
+  let rec from a k = k >= n || (tick st; body.(k) a && from a (k + 1)) in
+  if n = 0 then fun _ -> true
   else if n = 1 && not (Hashtbl.mem gotos b.id) then (let s0 = body.(0) in fun a -> tick st; s0 a)
+  else if n = 2 && not (Hashtbl.mem gotos b.id) then
+    (let s0 = body.(0) and s1 = body.(1) in fun a -> tick st; s0 a && (tick st; s1 a))
   else if Hashtbl.mem gotos b.id then
     let id = b.id in
     fun a ->
-      let rec go i = match from a i with () -> () | exception Goto_label (l, j) when l = id -> go j in
+      let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
       go 0
   else fun a -> from a 0
 
@@ -907,7 +921,7 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
           push st a;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
           match code.c_init a; code.c_body a with
-          | () | exception Return_signal ->
+          | _ ->
               if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
               M.Ended
           | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped e
@@ -916,7 +930,7 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
                | Some undo ->
                    if all_events then on_event (M.Undo_run r.name);
                    (match undo a with
-                    | () | exception Return_signal -> ()
+                    | _ -> ()
                     | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e)))
                | None -> ());
               if all_events then on_event M.Task_ended;
