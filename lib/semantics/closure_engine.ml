@@ -91,8 +91,11 @@ let fail st ~at name =
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = e.chain }
 
-(* Value.to_single, here so that it is inlined into the operators below. *)
-let to_single x = Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
+(* Value.to_single, here so that it is inlined into the operators below. An integer of at most
+   24 bits is a single already: it is recognised without the conversion's two calls. *)
+let to_single x =
+  if Float.of_int (Float.to_int x) = x && x <= 16777216. && x >= -16777216. then x
+  else Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
 
 (* What a procedure gives back: no value. Recognised by identity. *)
 let no_value = V.String "(no value)"
@@ -200,7 +203,9 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
-  | Binary (op, x, { e = Literal (V.Num q as v); _ }) -> binary_literal st ~at op (expr st r ~at x) v q
+  | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
+      let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+      binary_literal ?own st ~at op (expr st r ~at x) v q
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -217,7 +222,10 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
         (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
   | Call c -> (
       let f = call st r ~at ~function_call:true c in
-      fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
+      match c.callee with
+      | Routine k when st.program.routines.(k).primitive = None
+                       && st.program.routines.(k).kind = Function -> f  (* a RAPID function gives a value *)
+      | _ -> fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
   | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
 
 (* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
@@ -254,9 +262,14 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
 (* The same with a num literal on the right, which then costs no call. *)
-and binary_literal st ~at (op : Arith.binary) x v q : act -> V.t =
+and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
   let slow u = check st ~at (Arith.binary op u v) in
   let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  match op, own with
+  (* An own slot on the left is read without a call. *)
+  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p +. q)) | u -> slow u)
+  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p -. q)) | u -> slow u)
+  | _ ->
   match op with
   | Num_add -> fun a -> (match x a with V.Num p -> num (to_single (p +. q)) | u -> slow u)
   | Num_sub -> fun a -> (match x a with V.Num p -> num (to_single (p -. q)) | u -> slow u)
@@ -270,9 +283,17 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
     match op, y.e with
     | (Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal), Literal (V.Num q as v) ->
         (* A num literal on the right: compared without a call. *)
-        let x = expr st r ~at x in
+        let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        let x = match own with
+          | Some i -> fun a -> a.store.(i)
+          | None -> expr st r ~at x in
         let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
-        Some (match op with
+        Some (match op, own with
+            | Num_lt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p < q | u -> slow u)
+            | Num_gt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p > q | u -> slow u)
+            | Equal, Some i -> fun a -> (match a.store.(i) with V.Num p -> p = q | u -> slow u)
+            | _ ->
+            match op with
             | Num_lt -> fun a -> (match x a with V.Num p -> p < q | u -> slow u)
             | Num_le -> fun a -> (match x a with V.Num p -> p <= q | u -> slow u)
             | Num_gt -> fun a -> (match x a with V.Num p -> p > q | u -> slow u)
@@ -424,17 +445,22 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
       let is_function = callee.kind = Function in
       let code = ref None in
       let has_init = callee.local_inits <> [] in
-      let enter c = enter st callee c ~code ~r_index:k ~at ~is_function ~has_init in
       (* The common numbers of arguments without a loop over the binders. *)
       match binders with
-      | [||] -> fun _ -> enter (new_act shape callee)
-      | [| b0 |] -> fun a -> let c = new_act shape callee in b0 a c; enter c
-      | [| b0; b1 |] -> fun a -> let c = new_act shape callee in b0 a c; b1 a c; enter c
+      | [||] -> fun _ -> enter st callee (new_act shape callee) ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0 |] -> fun a ->
+          let c = new_act shape callee in
+          b0 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1 |] -> fun a ->
+          let c = new_act shape callee in
+          b0 a c; b1 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
           fun a ->
             let c = new_act shape callee in
             for i = 0 to n - 1 do binders.(i) a c done;
-            enter c
+            enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
 
 and primitive_outcome st (caller : routine) ~at name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
