@@ -26,17 +26,26 @@ exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
 exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
 
-(* The activation of a routine: its slots, and for alias parameters where their locations are. *)
-type act = {
-  routine : routine;
-  store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
+(* What only some activations need: routines with alias or optional parameters, or with an error
+   handler. Other activations share one that nothing writes. *)
+type extension = {
   boxes : V.t array array;            (* an alias parameter's location: container ... *)
   idx : int array;                    (* ... and index *)
   present : bool array;               (* optional parameters present (§5.2) *)
   bound : reference_kind array;       (* what an alias parameter is bound to *)
   mutable retries : int;              (* RETRYs since the retried statement last completed *)
-  mutable level : int;                (* its place in the call chain: 0 is the entry routine *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+}
+
+let shared_extension =
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; retries = 0; current = None }
+
+(* The activation of a routine: its slots, and for alias parameters where their locations are. *)
+type act = {
+  routine : routine;
+  store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
+  ext : extension;
+  mutable level : int;                (* its place in the call chain: 0 is the entry routine *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
   mutable nest : int;                 (* its share of the native stack (see native_budget) *)
 }
@@ -153,10 +162,10 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Whole (Local i) -> (
       match local_access r i with
       | Own -> fun a -> a.store.(i)
-      | Alias -> fun a -> a.boxes.(i).(a.idx.(i))
-      | Optional_own -> fun a -> if a.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
+      | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
-          fun a -> if a.present.(i) then a.boxes.(i).(a.idx.(i)) else fail st ~at "ERR_NOTPRES")
+          fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
   | Element _ | Component _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
@@ -169,10 +178,10 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
   | Whole (Local i) -> (
       match local_access r i with
       | Own -> fun a -> (a.store, i)
-      | Alias -> fun a -> (a.boxes.(i), a.idx.(i))
-      | Optional_own -> fun a -> if a.present.(i) then (a.store, i) else fail st ~at "ERR_NOTPRES"
+      | Alias -> fun a -> (a.ext.boxes.(i), a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then (a.store, i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
-          fun a -> if a.present.(i) then (a.boxes.(i), a.idx.(i)) else fail st ~at "ERR_NOTPRES")
+          fun a -> if a.ext.present.(i) then (a.ext.boxes.(i), a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
   | Component (q, k) ->
       let l = locate st r ~at q in
       fun a -> let box, i = l a in (V.components box.(i), k)
@@ -335,14 +344,14 @@ and slot_present (r : routine) s : act -> bool =
   | Global _ -> fun _ -> true
   | Local i -> (
       match local_access r i with
-      | Optional_own | Optional_alias -> fun a -> a.present.(i)
+      | Optional_own | Optional_alias -> fun a -> a.ext.present.(i)
       | Own | Alias -> fun _ -> true)
 
 (* What the root of an alias argument is bound to: an alias parameter passes on its own
    binding; anything else is what the lowering says it denotes. *)
 and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> reference_kind =
   match root p with
-  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.bound.(i)
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.bound.(i)
   | _ -> fun _ -> kind
 
 (* One argument bound to one parameter of a RAPID routine (rules argument-value,
@@ -357,8 +366,8 @@ and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act
         fun a (c : act) ->
           let v = copy (f a) in
           c.store.(i) <- v;
-          if is_alias p then begin c.boxes.(i) <- c.store; c.idx.(i) <- i; c.bound.(i) <- Ref_other end;
-          if p.p_optional then c.present.(i) <- true
+          if is_alias p then begin c.ext.boxes.(i) <- c.store; c.ext.idx.(i) <- i; c.ext.bound.(i) <- Ref_other end;
+          if p.p_optional then c.ext.present.(i) <- true
   in
   let by_reference place kind =
     if not (is_alias p) then by_value (read st caller ~at place)
@@ -372,29 +381,29 @@ and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act
         | Some (Local s) when s < Array.length caller.parameters
                               && caller.parameters.(s).p_mode = Rapid_typing.Tables.Mode_inout -> (
             match p.p_mode with
-            | Mode_var -> fun (a : act) -> if a.bound.(s) = Ref_persistent then Some "ERR_ARGNOTVAR" else None
-            | Mode_pers -> fun a -> if a.bound.(s) = Ref_variable then Some "ERR_ARGNOTPER" else None
+            | Mode_var -> fun (a : act) -> if a.ext.bound.(s) = Ref_persistent then Some "ERR_ARGNOTVAR" else None
+            | Mode_pers -> fun a -> if a.ext.bound.(s) = Ref_variable then Some "ERR_ARGNOTPER" else None
             | _ -> fun _ -> None)
         | _ -> fun _ -> None
       in
       fun a (c : act) ->
         let box, j = l a in
         (match refused a with Some name -> fail st ~at name | None -> ());
-        c.boxes.(i) <- box; c.idx.(i) <- j; c.bound.(i) <- kind a;
-        if p.p_optional then c.present.(i) <- true
+        c.ext.boxes.(i) <- box; c.ext.idx.(i) <- j; c.ext.bound.(i) <- kind a;
+        if p.p_optional then c.ext.present.(i) <- true
   in
   match arg with
-  | Absent -> fun _ c -> c.present.(i) <- false; c.store.(i) <- p.p_default
-  | Present_switch -> fun _ c -> c.present.(i) <- true
+  | Absent -> fun _ c -> c.ext.present.(i) <- false; c.store.(i) <- p.p_default
+  | Present_switch -> fun _ c -> c.ext.present.(i) <- true
   | By_value e -> by_value (expr st caller ~at e)
   | By_reference (place, kind) -> by_reference place kind
   | Pass_on s ->
       let present = slot_present caller s in
       let pass =
-        if p.p_switch then fun _ c -> c.present.(i) <- true
+        if p.p_switch then fun _ c -> c.ext.present.(i) <- true
         else by_reference (Whole s) Ref_variable
       in
-      fun a c -> if present a then pass a c else begin c.present.(i) <- false; c.store.(i) <- p.p_default end
+      fun a c -> if present a then pass a c else begin c.ext.present.(i) <- false; c.store.(i) <- p.p_default end
 
 (* An argument of an installed routine with a body in OCaml (Primitive). *)
 and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
@@ -509,18 +518,22 @@ and activation_shape (r : routine) =
   let n = Array.length r.parameters in
   let aliases = Array.exists is_alias r.parameters in
   let optional = Array.exists (fun (p : parameter) -> p.p_optional) r.parameters in
-  (n, aliases, optional, if r.locals < 1 then 1 else r.locals)
+  (n, aliases, optional, (if r.locals < 1 then 1 else r.locals),
+   aliases || optional || r.error <> None)
 
-and new_act (n, aliases, optional, size) (r : routine) =
+and new_act (n, aliases, optional, size, own_extension) (r : routine) =
   { routine = r;
     store = (match size with
         | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
         | _ -> Array.make size v_false);
-    boxes = (if aliases then Array.make n [||] else [||]);
-    idx = (if aliases then Array.make n 0 else [||]);
-    present = (if optional then Array.make n true else [||]);
-    bound = (if aliases then Array.make n Ref_other else [||]);
-    retries = 0; level = 0; current = None; result = no_value; nest = 0 }
+    ext = (if own_extension then
+             { boxes = (if aliases then Array.make n [||] else [||]);
+               idx = (if aliases then Array.make n 0 else [||]);
+               present = (if optional then Array.make n true else [||]);
+               bound = (if aliases then Array.make n Ref_other else [||]);
+               retries = 0; current = None }
+           else shared_extension);
+    level = 0; result = no_value; nest = 0 }
 
 and push st a =
   if st.depth >= Array.length st.chain_acts then begin
@@ -612,13 +625,13 @@ and recovers st (a : act) number =
 and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
   if st.all_events then st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
   st.globals.(st.program.errno) <- V.num (float_of_int e.number);
-  let previous = a.current in
-  a.current <- Some e;
+  let previous = a.ext.current in
+  a.ext.current <- Some e;
   match handler a with
   | true -> raise (Halt (stopped e))
   | false -> `Return
-  | exception Retry_signal -> a.current <- previous; `Retry
-  | exception Trynext_signal -> a.current <- previous; `Trynext
+  | exception Retry_signal -> a.ext.current <- previous; `Retry
+  | exception Trynext_signal -> a.ext.current <- previous; `Trynext
   | exception Raised e' -> raise (Halt (stopped e'))
   | exception Long_jump (j, e') when j >= a.level -> raise (Halt (stopped e'))
 
@@ -629,7 +642,7 @@ and guarded st handler (core : act -> bool) : act -> bool =
   fun a ->
     let rec attempt retried =
       match core a with
-      | goes_on -> if retried then a.retries <- 0; goes_on
+      | goes_on -> if retried then a.ext.retries <- 0; goes_on
       | exception Raised e -> handle e
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
     and handle e =
@@ -683,7 +696,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; false
   | Raise None -> (
       (* raise-again: the error being handled leaves the routine. *)
-      fun a -> match a.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
+      fun a -> match a.ext.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
   | Raise (Some e) ->
       (* Rules raise-number, raise, raise-illegal (§4.11, R-4.11, R-4.11-b). *)
       let f = number e in
@@ -700,8 +713,8 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   | Retry ->
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler. *)
       fun a ->
-        if a.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
-        else begin a.retries <- a.retries + 1; raise_notrace Retry_signal end
+        if a.ext.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
+        else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext -> fun _ -> raise_notrace Trynext_signal
   | Connect (place, _) ->
       (* §4.15: the target gets a new interrupt number; one it already has is ERR_ALRDYCNT. *)
