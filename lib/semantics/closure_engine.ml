@@ -12,7 +12,11 @@ type result = { outcome : M.outcome; fuel_used : int }
 
 (* An error in flight (ch. 7): its name (ERR_... or the number of a user error), its number
    (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
-type error = { name : string; number : int; at : Rapid_syntax.Source.region; chain : string list }
+type error = {
+  name : string; number : int; at : Rapid_syntax.Source.region;
+  mutable chain : string list option;
+      (* filled in by the first activation that catches the error, the one it occurred in *)
+}
 
 (* What may happen to an activation while one of its statements runs. *)
 exception Raised of error              (* an error in this activation (§7.1) *)
@@ -45,7 +49,8 @@ type act = {
   routine : routine;
   store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
   ext : extension;
-  mutable level : int;                (* its place in the call chain: 0 is the entry routine *)
+  level : int;                        (* its place in the call chain: 0 is the entry routine *)
+  parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
   mutable nest : int;                 (* its share of the native stack (see native_budget) *)
 }
@@ -69,7 +74,6 @@ type state = {
   mutable depth : int;
   mutable native : int;               (* the nests of the active routines *)
   native_budget : int;
-  mutable chain_acts : act array;     (* the call chain, 0 .. depth - 1 *)
   mutable booked : int list;          (* BookErrNo numbers (R-4.11-b) *)
   mutable next_booked : int;
   mutable next_interrupt : int;
@@ -85,20 +89,26 @@ let number_of st name =
   | Some n -> n
   | None -> ( match int_of_string_opt name with Some n -> n | None -> 0)
 
-let chain st =
-  let rec go i acc = if i < 0 then List.rev acc else go (i - 1) (st.chain_acts.(i).routine.name :: acc) in
-  go (st.depth - 1) []
+(* The call chain from an activation up, innermost first. *)
+let chain_of (a : act) =
+  let rec go (b : act) acc = if b.level < 0 then List.rev acc else go b.parent (b.routine.name :: acc) in
+  go a []
+
+(* The error as it was caught in activation [a]: where it occurred, if nothing caught it before. *)
+let caught (a : act) e = (if e.chain = None then e.chain <- Some (chain_of a)); e
+
+let chain e = Option.value e.chain ~default:[]
 
 let emit_raised st e =
   if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
 
 (* An execution error where [at] is the statement in progress. *)
 let fail st ~at name =
-  let e = { name; number = number_of st name; at; chain = chain st } in
+  let e = { name; number = number_of st name; at; chain = None } in
   emit_raised st e;
   raise (Raised e)
 
-let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = e.chain }
+let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e }
 
 (* Value.to_single, here so that it is inlined into the operators below. An integer of at most
    24 bits is a single already: it is recognised without the conversion's two calls. *)
@@ -446,7 +456,7 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       fun a ->
         let values = Array.map (fun f -> f a) args in
-        primitive_outcome st caller ~at name (Primitive.call st.prim_ctx name values)
+        primitive_outcome st caller a ~at name (Primitive.call st.prim_ctx name values)
   | None ->
       let binders = Array.mapi (binder st caller ~at callee) arguments in
       let n = Array.length binders in
@@ -456,34 +466,33 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
       let has_init = callee.local_inits <> [] in
       (* The common numbers of arguments without a loop over the binders. *)
       match binders with
-      | [||] -> fun _ -> enter st callee (new_act shape callee) ~code ~r_index:k ~at ~is_function ~has_init
+      | [||] -> fun a -> enter st callee (new_act shape callee a) ~code ~r_index:k ~at ~is_function ~has_init
       | [| b0 |] -> fun a ->
-          let c = new_act shape callee in
+          let c = new_act shape callee a in
           b0 a c;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | [| b0; b1 |] -> fun a ->
-          let c = new_act shape callee in
+          let c = new_act shape callee a in
           b0 a c; b1 a c;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
           fun a ->
-            let c = new_act shape callee in
+            let c = new_act shape callee a in
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
 
-and primitive_outcome st (caller : routine) ~at name : Primitive.outcome -> V.t = function
+and primitive_outcome st (caller : routine) caller_act ~at name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> no_value
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       match late_target st caller ~at target [||] with
-      | f -> f (top st))
+      | f -> f caller_act)
   | Stop_requested -> raise (Halt M.Ended)
   | Not_modelled ->
       raise (Halt (M.Unsupported (Printf.sprintf "%s is an installed routine rapid-sem does not model yet" name)))
 
-and top st = st.chain_acts.(st.depth - 1)
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
@@ -521,7 +530,7 @@ and activation_shape (r : routine) =
   (n, aliases, optional, (if r.locals < 1 then 1 else r.locals),
    aliases || optional || r.error <> None)
 
-and new_act (n, aliases, optional, size, own_extension) (r : routine) =
+and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
     store = (match size with
         | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
@@ -533,24 +542,14 @@ and new_act (n, aliases, optional, size, own_extension) (r : routine) =
                bound = (if aliases then Array.make n Ref_other else [||]);
                retries = 0; current = None }
            else shared_extension);
-    level = 0; result = no_value; nest = 0 }
+    level = parent.level + 1; parent; result = no_value; nest = 0 }
 
-and push st a =
-  if st.depth >= Array.length st.chain_acts then begin
-    let bigger = Array.make (2 * Array.length st.chain_acts) a in
-    Array.blit st.chain_acts 0 bigger 0 st.depth;
-    st.chain_acts <- bigger
-  end;
-  a.level <- st.depth;
-  st.chain_acts.(st.depth) <- a;
-  st.depth <- st.depth + 1
-
-and pop st (c : act) = st.depth <- st.depth - 1; st.native <- st.native - c.nest
+and pop st (c : act) = st.depth <- c.level; st.native <- st.native - c.nest
 
 (* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
    return-function, function-no-return, call-depth-exceeded). *)
 and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
-  if st.depth >= st.limits.max_call_depth then
+  if c.level >= st.limits.max_call_depth then
     raise (Halt (M.Resource_exhausted
                    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
   tick st;
@@ -559,10 +558,10 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
      the budget the run ends as the call-depth limit ends it, before the stack overflows. *)
   if st.native + code.c_nest > st.native_budget then
     raise (Halt (M.Resource_exhausted
-                   (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" st.depth)));
+                   (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" c.level)));
   c.nest <- code.c_nest;
   st.native <- st.native + code.c_nest;
-  push st c;
+  st.depth <- c.level + 1;
   if st.all_events then st.emit (M.Routine_entered r.name);
   match if has_init then code.c_init c; code.c_body c with
   | true ->
@@ -571,7 +570,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
       if is_function then fail st ~at "ERR_FNCNORET" else no_value
   | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
-  | exception (Raised e | Leaving e) -> leave_with_error st code c e
+  | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
 
@@ -585,7 +584,7 @@ and abandon st code (c : act) =
        if st.all_events then st.emit (M.Undo_run c.routine.name);
        match undo c with
        | _ -> ()
-       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e))));
+       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught c e)))));
   pop st c;
   if st.all_events then st.emit (M.Routine_left c.routine.name)
 
@@ -595,12 +594,12 @@ and abandon st code (c : act) =
    not found, it is raised again at the call point. *)
 and leave_with_error st code (c : act) e =
   abandon st code c;
-  let rec search j =
-    if j < 0 then None
-    else if recovers st st.chain_acts.(j) e.number then Some j
-    else search (j - 1)
+  let rec search (b : act) =
+    if b.level < 0 then None
+    else if recovers st b e.number then Some b.level
+    else search b.parent
   in
-  match search (st.depth - 1) with
+  match search c.parent with
   | Some j -> raise (Long_jump (j, e))
   | None -> emit_raised st e; raise (Raised e)
 
@@ -632,8 +631,8 @@ and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
   | false -> `Return
   | exception Retry_signal -> a.ext.current <- previous; `Retry
   | exception Trynext_signal -> a.ext.current <- previous; `Trynext
-  | exception Raised e' -> raise (Halt (stopped e'))
-  | exception Long_jump (j, e') when j >= a.level -> raise (Halt (stopped e'))
+  | exception Raised e' -> raise (Halt (stopped (caught a e')))
+  | exception Long_jump (j, e') when j >= a.level -> raise (Halt (stopped (caught a e')))
 
 (* A statement of a routine with an error handler: an error in it, or in a routine it calls
    that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
@@ -643,7 +642,7 @@ and guarded st handler (core : act -> bool) : act -> bool =
     let rec attempt retried =
       match core a with
       | goes_on -> if retried then a.ext.retries <- 0; goes_on
-      | exception Raised e -> handle e
+      | exception Raised e -> handle (caught a e)
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
     and handle e =
       match run_handler st handler a e with
@@ -705,7 +704,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let booked = Float.is_integer x && List.mem (int_of_float x) st.booked in
         if Float.is_integer x && ((x >= 1. && x <= 90.) || booked) then
           let n = int_of_float x in
-          let e = { name = string_of_int n; number = n; at; chain = chain st } in
+          let e = { name = string_of_int n; number = n; at; chain = None } in
           emit_raised st e;
           raise (Raised e)
         else fail st ~at "ERR_ILLRAISE"
@@ -913,7 +912,7 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~all_event
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     fuel; fuel_limit = fuel; depth = 0; native = 0;
-    native_budget = native_stack_bytes () / bytes_per_nest; chain_acts = [||]; booked = []; next_booked = 2001;
+    native_budget = native_stack_bytes () / bytes_per_nest; booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0) } } in
@@ -947,30 +946,31 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
       let outcome =
         try
           (* §2.21: module data is initialised when its module is loaded. *)
-          let dummy = new_act (activation_shape r) r in
+          let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
+                               parent = sentinel; result = no_value; nest = 0 } in
+          let dummy = new_act (activation_shape r) r sentinel in
           Array.iteri (fun i (g : global) ->
               st.globals.(i) <- (match g.g_init with
                   | Init_default v -> V.copy v
                   | Init_expr e -> V.copy (expr st r ~at:e.at e dummy))) program.globals;
           let code = Lazy.force st.compiled.(k) in
-          let a = new_act (activation_shape r) r in
-          st.chain_acts <- Array.make 64 a;
+          let a = new_act (activation_shape r) r sentinel in
           a.nest <- code.c_nest;
           st.native <- code.c_nest;
-          push st a;
+          st.depth <- 1;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
           match code.c_init a; code.c_body a with
           | _ ->
               if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
               M.Ended
-          | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped e
+          | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
           | exception Exit_task ->
               (match code.c_undo with
                | Some undo ->
                    if all_events then on_event (M.Undo_run r.name);
                    (match undo a with
                     | _ -> ()
-                    | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped e)))
+                    | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
                | None -> ());
               if all_events then on_event M.Task_ended;
               M.Ended
