@@ -80,6 +80,14 @@ let compare_case path () =
       let m_events, m_outcome = machine_run limits program ~entry:run.entry ~max_steps:budget in
       let c_events, c_outcome = closure_run limits program ~entry:run.entry ~fuel:budget in
       Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
+      (* Making only the output events (as rapid-sem run does) changes nothing else. *)
+      (match C.events ~limits ~fuel:budget ~all_events:false program ~entry:run.entry with
+       | Ok (quiet, r) ->
+           let outputs = List.filter (function M.Output _ | M.Erase | M.Log _ -> true | _ -> false) in
+           Alcotest.(check (list string)) "output-only events" (List.map event_text (outputs c_events))
+             (List.map event_text quiet);
+           Alcotest.(check string) "output-only outcome" (outcome_text c_outcome) (outcome_text r.outcome)
+       | Error m -> Alcotest.fail m);
       let cut_short = (m_outcome = Running || c_outcome = Running) in
       if cut_short then begin
         (* Cut short at different points: one event list must begin the other. *)
@@ -269,6 +277,49 @@ ENDMODULE
   ENDPROC
   FUNC num nf()
     TPWrite "in nf";
+  ENDFUNC
+ENDMODULE
+|rapid});
+  ("handlers in loops, RETURN from a handler, RAISE; and UNDO errors", {rapid|MODULE h1
+  VAR num n := 0;
+  PROC main()
+    VAR num r;
+    FOR i FROM 1 TO 3 DO
+      r := f(i);
+      TPWrite "r=" \Num:=r;
+    ENDFOR
+    p1;
+    TPWrite "after p1";
+    RAISE ERR_DIVZERO;
+    TPWrite "after raise";
+    r := g();
+  ERROR
+    TPWrite "main errno " \Num:=ERRNO;
+    IF ERRNO = 20 THEN
+      TPWrite "twenty";
+    ENDIF
+    TRYNEXT;
+  ENDPROC
+  FUNC num f(num k)
+    WHILE TRUE DO
+      IF k = 2 RAISE 7;
+      RETURN k * 10;
+    ENDWHILE
+  ERROR
+    TPWrite "f handler";
+    RETURN -1;
+  ENDFUNC
+  PROC p1()
+    RAISE 20;
+  ERROR
+    TPWrite "p1 handler";
+    RAISE;
+  ENDPROC
+  FUNC num g()
+    EXIT;
+  UNDO
+    TPWrite "undo g";
+    n := 1 / n;
   ENDFUNC
 ENDMODULE
 |rapid});

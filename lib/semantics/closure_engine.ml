@@ -978,8 +978,8 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
       in
       Ok { outcome; fuel_used = st.fuel_limit - st.fuel }
 
-let events ?limits ?fuel program ~entry =
+let events ?limits ?fuel ?all_events program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match run ?limits ?fuel ?all_events ~on_event:(fun e -> acc := e :: !acc) program ~entry with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

@@ -41,6 +41,6 @@ val run :
     exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
 
 val events :
-  ?limits:Machine.limits -> ?fuel:int -> Ir.program -> entry:string ->
+  ?limits:Machine.limits -> ?fuel:int -> ?all_events:bool -> Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)
