@@ -433,8 +433,33 @@ let no_entry () =
   Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run program ~entry:"main"));
   Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run program ~entry:"p"))
 
+(* Random programs (gen_programs.ml): the engines agree on each. *)
+let random_programs () =
+  let agree_on text =
+    match Parse.parse_string ~name:"generated.mod" text with
+    | Error d -> QCheck.Test.fail_reportf "does not parse: %s" (Diagnostic.to_string d)
+    | Ok m -> (
+        match Rapid_semantics.Session.load_modules [ m ] with
+        | Error _ -> QCheck.Test.fail_reportf "does not check"
+        | Ok l ->
+            let budget = 1_000_000 and limits = M.default_limits in
+            let m_events, m_outcome = machine_run limits l.program ~entry:"main" ~max_steps:budget in
+            let c_events, c_outcome = closure_run limits l.program ~entry:"main" ~fuel:budget in
+            if outcome_text m_outcome <> outcome_text c_outcome then
+              QCheck.Test.fail_reportf "outcomes: machine %s, closure %s" (outcome_text m_outcome)
+                (outcome_text c_outcome)
+            else (
+              match difference m_events c_events with
+              | None -> true
+              | Some d -> QCheck.Test.fail_reportf "%s" d))
+  in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 20261123 |])
+    (QCheck.Test.make ~count:150 ~name:"machine = closure on random programs"
+       (QCheck.make ~print:(fun s -> s) Gen_programs.gen) agree_on)
+
 let suite =
   ( "engines",
+    Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
     :: Alcotest.test_case "recursion 10,000 deep, and one call more" `Quick deep_recursion
     :: Alcotest.test_case "the native stack ends a run cleanly" `Quick native_stack
