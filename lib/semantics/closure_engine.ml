@@ -1,6 +1,7 @@
-(* The second evaluator: routines compiled to closures, control by exceptions. Written from
-   doc/semantics.md and the manual; the machine is its differential partner, not its source.
-   Where this file says "rule", it names the rule of doc/semantics.md it implements. *)
+(* The second evaluator: routines compiled to closures; a statement completes by going on or by
+   RETURN, and every other transfer of control is an exception. Written from doc/semantics.md and
+   the manual; the machine is its differential partner, not its source. Where this file says
+   "rule", it names the rule of doc/semantics.md it implements. *)
 
 open Ir
 module V = Value

@@ -5,8 +5,9 @@
     values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}). Each routine is
     compiled once, when it is first called, to OCaml closures: an expression to a function from
     the activation to a value, a place to a function giving its location (a container and an
-    index), a statement to a function from the activation to [unit]. Control that leaves a
-    statement (GOTO, BREAK, CONTINUE, RETURN, EXIT, an error in flight, a long jump) is an OCaml
+    index), a statement to a function from the activation that says whether execution goes on
+    after it or the routine returns (RETURN). Any other control that leaves a statement (GOTO,
+    BREAK, CONTINUE, EXIT, an error in flight, a long jump, RETRY and TRYNEXT) is an OCaml
     exception caught where the manual sends it.
 
     It is the machine's first differential partner: on every program both must make the same
