@@ -323,6 +323,65 @@ ENDMODULE
   ENDFUNC
 ENDMODULE
 |rapid});
+  ("a long jump to a routine in its error handler", {rapid|MODULE lj2
+  PROC main()
+    RAISE 3;
+    TPWrite "after";
+  ERROR (5)
+    TPWrite "main handler " \Num:=ERRNO;
+    IF ERRNO = 3 q;
+    TRYNEXT;
+  ENDPROC
+  PROC q()
+    p;
+  UNDO
+    TPWrite "undo q";
+  ENDPROC
+  PROC p()
+    RAISE 5;
+  UNDO
+    TPWrite "undo p";
+  ENDPROC
+ENDMODULE
+|rapid});
+  ("RETRY after a long jump, EXIT through UNDO handlers, an error in UNDO", {rapid|MODULE e1
+  VAR num z := 0;
+  VAR num tries := 0;
+  PROC main()
+    p;
+    TPWrite "back " \Num:=tries;
+    q;
+  ERROR (7)
+    tries := tries + 1;
+    TPWrite "main recovery " \Num:=ERRNO;
+    IF tries < 3 RETRY;
+    TRYNEXT;
+  UNDO
+    TPWrite "undo main";
+  ENDPROC
+  PROC p()
+    r;
+  ERROR
+    TPWrite "p handler (skipped by the long jump)";
+  UNDO
+    TPWrite "undo p";
+  ENDPROC
+  PROC r()
+    RAISE 7;
+  ENDPROC
+  PROC q()
+    s;
+  UNDO
+    TPWrite "undo q";
+    z := 1 / z;
+  ENDPROC
+  PROC s()
+    EXIT;
+  UNDO
+    TPWrite "undo s";
+  ENDPROC
+ENDMODULE
+|rapid});
   ("num operators on edge values", {rapid|MODULE arith
   CONST num vals{12} := [0, -0, 1, -1, 0.1, 3, 8388608, 16777217, 3.4e38, -3.4e38, 1e-45, 2.5];
   VAR num r;

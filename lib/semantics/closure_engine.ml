@@ -633,7 +633,11 @@ and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
   | exception Retry_signal -> a.ext.current <- previous; `Retry
   | exception Trynext_signal -> a.ext.current <- previous; `Trynext
   | exception Raised e' -> raise (Halt (stopped (caught a e')))
-  | exception Long_jump (j, e') when j >= a.level -> raise (Halt (stopped (caught a e')))
+  | exception Long_jump (j, e') when j >= a.level ->
+      (* A long jump to this activation while it runs its handler arrives there, and is an
+         error in the handler. *)
+      emit_raised st e';
+      raise (Halt (stopped (caught a e')))
 
 (* A statement of a routine with an error handler: an error in it, or in a routine it calls
    that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
