@@ -492,7 +492,7 @@ and primitive_outcome st (caller : routine) caller_act ~at name : Primitive.outc
       | f -> f caller_act)
   | Stop_requested -> raise (Halt M.Ended)
   | Not_modelled ->
-      raise (Halt (M.Unsupported (Printf.sprintf "%s is an installed routine rapid-sem does not model yet" name)))
+      raise (Halt (M.Unsupported (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name)))
 
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
