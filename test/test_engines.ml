@@ -382,6 +382,13 @@ ENDMODULE
   ENDPROC
 ENDMODULE
 |rapid});
+  ("an installed routine not modelled (exit 4)", {rapid|MODULE un
+  PROC main()
+    TPWrite "a";
+    WaitTime 1;
+  ENDPROC
+ENDMODULE
+|rapid});
   ("num operators on edge values", {rapid|MODULE arith
   CONST num vals{12} := [0, -0, 1, -1, 0.1, 3, 8388608, 16777217, 3.4e38, -3.4e38, 1e-45, 2.5];
   VAR num r;
