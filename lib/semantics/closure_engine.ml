@@ -465,7 +465,20 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
       let is_function = callee.kind = Function in
       let code = ref None in
       let has_init = callee.local_inits <> [] in
+      (* A plain in parameter (not optional): the argument's value is stored in its slot
+         without a binder of its own. *)
+      let plain i = match arguments.(i) with
+        | By_value e when not (is_alias callee.parameters.(i)) && not callee.parameters.(i).p_optional ->
+            Some (expr st caller ~at e)
+        | _ -> None in
       (* The common numbers of arguments without a loop over the binders. *)
+      match binders, (if n = 1 then plain 0 else None) with
+      | [| _ |], Some f -> fun a ->
+          let v = copy (f a) in
+          let c = new_act shape callee a in
+          c.store.(0) <- v;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | _ ->
       match binders with
       | [||] -> fun a -> enter st callee (new_act shape callee a) ~code ~r_index:k ~at ~is_function ~has_init
       | [| b0 |] -> fun a ->
@@ -734,6 +747,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   | If (c, t, e) ->
       let c = truth c and t = block t and e = block e in
       fun a -> if c a then t a else e a
+  | Compact_if (c, { s = Return (Some e); _ }) ->
+      (* IF c RETURN e; in one closure. *)
+      let c = truth c and f = expr st r ~at e in
+      fun a -> if c a then begin a.result <- f a; false end else true
   | Compact_if (c, s) ->
       (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
       let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
