@@ -437,11 +437,11 @@ ENDMODULE
 |rapid});
 ]
 
-let load_text name text =
+let load_text ?(allow_unknown = false) name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_semantics.Session.load_modules ~allow_unknown [ m ] with
       | Ok l -> l.program
       | Error _ -> Alcotest.failf "%s does not check" name)
 
@@ -494,6 +494,27 @@ let fuel () =
   | Ok { outcome = Running; _ } -> ()
   | _ -> Alcotest.fail "13 units of fuel do not suffice"
 
+(* Names neither declared nor installed (--allow-unknown) are execution errors when reached. *)
+let unknown_names () =
+  let events, _ = agree (load_text ~allow_unknown:true "unknown" {rapid|MODULE unk
+  VAR num x;
+  PROC main()
+    TPWrite "a";
+    NoSuchProc 1;
+    TPWrite "b";
+    x := nosuchfun(2);
+    TPWrite "c";
+    x := nosuchdata + 1;
+    TPWrite "d";
+  ERROR
+    TPWrite "h " \Num:=ERRNO;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+|rapid}) in
+  let raised = List.filter_map (function M.Error_raised { name; _ } -> Some name | _ -> None) events in
+  Alcotest.(check (list string)) "errors" [ "ERR_REFUNKPRC"; "ERR_REFUNKFUN"; "ERR_REFUNKDAT" ] raised
+
 let no_entry () =
   let program = load_text "entry" "MODULE e\n  PROC p(num x)\n  ENDPROC\nENDMODULE\n" in
   Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run program ~entry:"main"));
@@ -531,6 +552,7 @@ let suite =
     :: Alcotest.test_case "the native stack ends a run cleanly" `Quick native_stack
     :: Alcotest.test_case "fuel" `Quick fuel
     :: Alcotest.test_case "entry routines" `Quick no_entry
+    :: Alcotest.test_case "machine = closure: unknown names reached" `Quick unknown_names
     :: List.map (fun (name, text) -> Alcotest.test_case ("machine = closure: " ^ name) `Quick
                     (program_agrees (name, text))) programs
     @ List.map (fun path ->
