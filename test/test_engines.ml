@@ -389,6 +389,16 @@ ENDMODULE
   ENDPROC
 ENDMODULE
 |rapid});
+  ("the value of an I/O signal (exit 4)", {rapid|MODULE sig
+  VAR signaldi di1;
+  PROC main()
+    VAR num x;
+    TPWrite "a";
+    x := di1;
+    TPWrite "b";
+  ENDPROC
+ENDMODULE
+|rapid});
   ("num operators on edge values", {rapid|MODULE arith
   CONST num vals{12} := [0, -0, 1, -1, 0.1, 3, 8388608, 16777217, 3.4e38, -3.4e38, 1e-45, 2.5];
   VAR num r;

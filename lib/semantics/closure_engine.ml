@@ -219,7 +219,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Literal v -> fun _ -> v
   | Read p -> read st r ~at p
   | Read_signal _ ->
-      fun _ -> raise (Halt (M.Unsupported "the value of an I/O signal (§2.16): I/O is not modelled yet"))
+      fun _ -> raise (Halt (M.Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet"))
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
