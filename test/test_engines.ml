@@ -399,6 +399,27 @@ ENDMODULE
   ENDPROC
 ENDMODULE
 |rapid});
+  ("the RETRY count of a WHILE retried from its condition", {rapid|MODULE rc
+  VAR num i := 0;
+  PROC main()
+    WHILE check() DO
+      i := i + 1;
+    ENDWHILE
+    TPWrite "i=" \Num:=i;
+  ERROR
+    TPWrite "retry";
+    RETRY;
+  ENDPROC
+  FUNC bool check()
+    IF i >= 20 RETURN FALSE;
+    IF i MOD 2 = 0 THEN
+      i := i + 1;
+      RAISE 5;
+    ENDIF
+    RETURN TRUE;
+  ENDFUNC
+ENDMODULE
+|rapid});
   ("num operators on edge values", {rapid|MODULE arith
   CONST num vals{12} := [0, -0, 1, -1, 0.1, 3, 8388608, 16777217, 3.4e38, -3.4e38, 1e-45, 2.5];
   VAR num r;
