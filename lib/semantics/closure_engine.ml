@@ -925,7 +925,7 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
               M.Ended
         with e -> outcome_of_exception st e
       in
-      Ok { outcome; fuel_used = st.fuel_limit - st.fuel }
+      Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
 let events ?limits ?fuel ?all_events program ~entry =
   let acc = ref [] in
