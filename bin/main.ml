@@ -365,11 +365,30 @@ let start_machine ?robot files entry (allow_unknown, stub_unmodelled) max_depth 
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
+(* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
+let run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event =
+  match Rapid_semantics.Session.load ~allow_unknown files with
+  | Error f -> report_load_failure f
+  | Ok loaded -> (
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+      let limits = { M.max_call_depth = max_depth; retry_limit } in
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~all_events:json ~on_event:print_event loaded.program ~entry with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok { outcome; fuel_used } ->
+          if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
+          finish outcome fuel_used ~max_steps)
+
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples =
+  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples engine =
     guard @@ fun () ->
+    let print_event (e : M.event) =
+      if json then print_line (Yojson.Safe.to_string (event_json e))
+      else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
+    if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
@@ -403,7 +422,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
-          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ engine)
 
 (* The text of a region, for the trace: its first line, cut at 60 characters. Columns count
    characters (§2.1, R-2.1-b): of UTF-8 in a UTF-8 file, bytes in a Latin-1 one. *)
@@ -515,9 +534,10 @@ let trace_cmd =
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in
   let verbose = Arg.(value & flag & info [ "verbose"; "v" ] ~doc:"List passing cases too.") in
-  let run dir verbose =
+  let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
+  let run dir verbose engine =
     guard @@ fun () ->
-    let _, failed = Rapid_conformance.Spec_runner.run ~verbose Format.std_formatter dir in
+    let _, failed = Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
   let doc = "run the conformance suite" in
@@ -529,7 +549,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ engine)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)

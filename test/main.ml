@@ -19,4 +19,5 @@ let () =
       Test_check_output.suite;
       Test_robustness.suite;
       Test_motion_run.suite;
+      Test_engines.suite;
     ]
