@@ -366,18 +366,28 @@ let start_machine ?robot files entry (allow_unknown, stub_unmodelled) max_depth 
       | Ok cfg -> k cfg)
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
-let run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event =
+let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json print_event =
   match Rapid_semantics.Session.load ~allow_unknown files with
   | Error f -> report_load_failure f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
-      let limits = { M.max_call_depth = max_depth; retry_limit } in
-      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~all_events:json ~on_event:print_event loaded.program ~entry with
+      Option.iter prerr_endline loaded.unknown_summary;
+      let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
+      let stubbed = ref [] in
+      let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
+              ~on_event loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok { outcome; fuel_used } ->
+          report_stubbed (List.rev !stubbed);
           if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
-          finish outcome fuel_used ~max_steps)
+          match outcome with
+          | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
+              (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
+              Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
+              exit_unsupported
+          | _ -> finish outcome fuel_used ~max_steps)
 
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in

@@ -56,7 +56,8 @@ let execute engine case (run : Spec_case.run) ~io program =
           done;
           Ok (List.rev !output, M.outcome cfg))
   | Closure -> (
-      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~on_event:collect program ~entry:run.entry with
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
+              ~on_event:collect program ~entry:run.entry with
       | Error m -> Error m
       | Ok r -> Ok (List.rev !output, r.outcome))
 

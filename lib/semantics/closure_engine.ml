@@ -15,6 +15,7 @@ type result = { outcome : M.outcome; fuel_used : int }
    (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
 type error = {
   name : string; number : int; at : Rapid_syntax.Source.region;
+  about : string option;              (* the unknown name, the procedure, the function (§7.1) *)
   mutable chain : string list option;
       (* filled in by the first activation that catches the error, the one it occurred in *)
 }
@@ -29,6 +30,7 @@ exception Goto_label of int * int      (* §4.7: the label's statement list and 
 exception Exit_task                    (* §4.12 *)
 exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
+exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
 exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
 
 (* What only some activations need: routines with alias or optional parameters, or with an error
@@ -38,12 +40,13 @@ type extension = {
   idx : int array;                    (* ... and index *)
   present : bool array;               (* optional parameters present (§5.2) *)
   bound : reference_kind array;       (* what an alias parameter is bound to *)
+  module_data : bool array;           (* whether it denotes module data (CONNECT, §4.15) *)
   mutable retries : int;              (* RETRYs since the retried statement last completed *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
 }
 
 let shared_extension =
-  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; retries = 0; current = None }
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None }
 
 (* The activation of a routine: its slots, and for alias parameters where their locations are. *)
 type act = {
@@ -54,6 +57,9 @@ type act = {
   parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
   mutable nest : int;                 (* its share of the native stack (see native_budget) *)
+  mutable memory : int;               (* bytes of RAPID data it holds: in arguments, routine
+                                         data, itself (the memory budget) *)
+  mutable call_at : Rapid_syntax.Source.region;  (* the statement that called it *)
 }
 
 type compiled = {
@@ -81,6 +87,10 @@ type state = {
   numbers : (string, int) Hashtbl.t;  (* ERR_ names, upper case *)
   mutable compiled : compiled Lazy.t array;
   mutable prim_ctx : Primitive.context;
+  mutable memory : int;               (* bytes of RAPID data: module data and activations *)
+  stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
+  stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
+  world : Rapid_controller.World.t;   (* interrupt numbers only: no clock, signals or traps *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -104,12 +114,48 @@ let emit_raised st e =
   if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
 
 (* An execution error where [at] is the statement in progress. *)
-let fail st ~at name =
-  let e = { name; number = number_of st name; at; chain = None } in
+let fail ?about st ~at name =
+  let e = { name; number = number_of st name; at; about; chain = None } in
   emit_raised st e;
   raise (Raised e)
 
-let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e }
+let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
+
+(* What this engine leaves to the machine: the controller (signals, waits, interrupts, clocks)
+   and motion (doc/semantics.md, "The second engine"). *)
+let machine_only_reason = "runs on the machine only: use --engine machine"
+
+let leave_to_machine ~at name what =
+  raise (Halt (M.Unsupported { name; at; reason = Printf.sprintf "%s %s" what machine_only_reason }))
+
+let machine_only (o : M.outcome) =
+  match o with
+  | Unsupported { reason; _ } ->
+      let n = String.length machine_only_reason and m = String.length reason in
+      m >= n && String.sub reason (m - n) n = machine_only_reason
+  | _ -> false
+
+(* ------------------------------------------------------------------ the memory budget *)
+
+(* The budget of RAPID data (§1.4, doc/user-guide.md "Resources"), by the model of Value.bytes:
+   beyond it the run ends as a resource exhausted at the place, before anything is built. *)
+let memory_exhausted st what at =
+  raise (Halt (M.Resource_exhausted
+                 (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
+                    (Rapid_syntax.Source.to_string at) what st.limits.max_memory)))
+
+(* An activation itself counts, so that a deep recursion stays within the budget too. *)
+let activation_bytes (r : routine) = 256 + 16 * r.locals
+
+(* While its arguments are bound the callee's bytes are pending, not yet in [st.memory]. *)
+let charge_pending st (c : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st what at
+  else c.memory <- c.memory + bytes
+
+(* Routine data of an active routine. *)
+let charge_active st (a : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory then memory_exhausted st what at
+  else begin a.memory <- a.memory + bytes; st.memory <- st.memory + bytes end
 
 (* Value.to_single, here so that it is inlined into the operators below. An integer of at most
    24 bits is a single already: it is recognised without the conversion's two calls. *)
@@ -209,7 +255,7 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
           if k = n - 1 then (elements, j) else down elements.(j) (k + 1)
         in
         down box.(i) 0
-  | Unresolved _ -> fun _ -> fail st ~at "ERR_REFUNKDAT"
+  | Unresolved name -> fun _ -> fail ~about:name st ~at "ERR_REFUNKDAT"
 
 (* ------------------------------------------------------------------ expressions *)
 
@@ -218,8 +264,9 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   match e.e with
   | Literal v -> fun _ -> v
   | Read p -> read st r ~at p
-  | Read_signal _ ->
-      fun _ -> raise (Halt (M.Unsupported "the value of an I/O signal (a semi-value object, §2.16): rapid-sem does not model I/O yet"))
+  | Read_signal p ->
+      let name = match root p with Some (Global g) -> st.program.globals.(g).g_name | _ -> "signal" in
+      fun _ -> leave_to_machine ~at name "the value of an I/O signal (§2.16, the controller)"
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
@@ -247,6 +294,11 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
                        && st.program.routines.(k).kind = Function -> f  (* a RAPID function gives a value *)
       | _ -> fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
   | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
+  | Fitted (x, shape) ->
+      (* §3.10: an aggregate argument of a late-bound call takes its parameter's type when its
+         members fit it; otherwise the arguments do not fit the procedure. *)
+      let x = expr st r ~at x in
+      fun a -> match V.conform shape (x a) with Some v -> v | None -> fail st ~at "ERR_CALLPROC"
 
 (* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
    programs) are computed here without building a result: the same rule as Arith's (one
@@ -352,11 +404,20 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
 (* How the caller's slot [s] passes on to a conditional argument (§3.11): present or not. *)
 and slot_present (r : routine) s : act -> bool =
   match s with
-  | Global _ -> fun _ -> true
+  | Global _ -> fun _ -> false
+  | Local i when i >= Array.length r.parameters -> fun _ -> false
   | Local i -> (
       match local_access r i with
       | Optional_own | Optional_alias -> fun a -> a.ext.present.(i)
       | Own | Alias -> fun _ -> true)
+
+(* Whether an alias argument denotes module data, seen through the parameters it goes through
+   (§4.15: CONNECT's target). *)
+and denotes_module_data (r : routine) (p : place) : act -> bool =
+  match root p with
+  | Some (Global _) -> fun _ -> true
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.module_data.(i)
+  | _ -> fun _ -> false
 
 (* What the root of an alias argument is bound to: an alias parameter passes on its own
    binding; anything else is what the lowering says it denotes. *)
@@ -368,23 +429,36 @@ and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> re
 (* One argument bound to one parameter of a RAPID routine (rules argument-value,
    argument-bound, argument-reference, argument-alias, argument-alias-refused, argument-absent,
    argument-switch, argument-pass-on-present, argument-pass-on-absent). *)
-and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act -> act -> unit =
+and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : argument) : act -> act -> unit =
   let p = callee.parameters.(i) in
+  (* §5.2: an in parameter is a copy of its argument, counted in the memory budget. *)
+  let what = "the copy for the parameter " ^ p.p_name in
   let by_value f =
     match is_alias p, p.p_optional with
-    | false, false -> fun a (c : act) -> c.store.(i) <- copy (f a)
+    | false, false -> fun a (c : act) ->
+        let v = f a in charge_pending st c (V.bytes v) what at; c.store.(i) <- copy v
     | _ ->
         fun a (c : act) ->
-          let v = copy (f a) in
+          let v = f a in
+          charge_pending st c (V.bytes v) what at;
+          let v = copy v in
           c.store.(i) <- v;
-          if is_alias p then begin c.ext.boxes.(i) <- c.store; c.ext.idx.(i) <- i; c.ext.bound.(i) <- Ref_other end;
+          if is_alias p then begin
+            c.ext.boxes.(i) <- c.store; c.ext.idx.(i) <- i; c.ext.bound.(i) <- Ref_other;
+            c.ext.module_data.(i) <- false end;
           if p.p_optional then c.ext.present.(i) <- true
+  in
+  (* An absent parameter still has storage of its type (§5.2). *)
+  let absent (c : act) =
+    charge_pending st c (V.shape_bytes p.p_default) ("the absent parameter " ^ p.p_name) at;
+    c.ext.present.(i) <- false; c.store.(i) <- V.default_of p.p_default
   in
   let by_reference place kind =
     if not (is_alias p) then by_value (read st caller ~at place)
     else
       let l = locate st caller ~at place in
       let kind = effective_kind caller place kind in
+      let module_data = denotes_module_data caller place in
       (* §5.2, the execution-error cells of the access table: an INOUT parameter passes on
          what it is bound to, which must suit the callee's mode. *)
       let refused =
@@ -401,10 +475,11 @@ and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act
         let box, j = l a in
         (match refused a with Some name -> fail st ~at name | None -> ());
         c.ext.boxes.(i) <- box; c.ext.idx.(i) <- j; c.ext.bound.(i) <- kind a;
+        c.ext.module_data.(i) <- module_data a;
         if p.p_optional then c.ext.present.(i) <- true
   in
   match arg with
-  | Absent -> fun _ c -> c.ext.present.(i) <- false; c.store.(i) <- p.p_default
+  | Absent -> fun _ c -> absent c
   | Present_switch -> fun _ c -> c.ext.present.(i) <- true
   | By_value e -> by_value (expr st caller ~at e)
   | By_reference (place, kind) -> by_reference place kind
@@ -414,7 +489,22 @@ and binder st (caller : routine) ~at (callee : routine) i (arg : argument) : act
         if p.p_switch then fun _ c -> c.ext.present.(i) <- true
         else by_reference (Whole s) Ref_variable
       in
-      fun a c -> if present a then pass a c else begin c.ext.present.(i) <- false; c.store.(i) <- p.p_default end
+      (* §3.11, §5.2: of the alternatives of one optional parameter at most one is present;
+         a second made present by a conditional argument is ERR_ARGDUPCND (ch. 12). *)
+      let others = ref [] in
+      Array.iteri (fun j (q : parameter) ->
+          if j <> i && p.p_group >= 0 && q.p_group = p.p_group && j < Array.length c_arguments then
+            others := (match c_arguments.(j) with
+                | Present_switch | By_value _ | By_reference _ -> fun _ -> true
+                | Pass_on s' -> slot_present caller s'
+                | Absent -> fun _ -> false) :: !others) callee.parameters;
+      let others = !others in
+      fun a c ->
+        if present a then begin
+          if List.exists (fun f -> f a) others then fail st ~at "ERR_ARGDUPCND";
+          pass a c
+        end
+        else absent c
 
 (* An argument of an installed routine with a body in OCaml (Primitive). *)
 and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
@@ -445,21 +535,24 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
    call-unknown-function). *)
 and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
   match c.callee with
-  | Unknown_routine _ ->
+  | Unknown_routine about ->
       let name = if function_call then "ERR_REFUNKFUN" else "ERR_REFUNKPRC" in
-      fun _ -> fail st ~at name
-  | Routine k -> call_routine st caller ~at k c.arguments
+      fun _ -> fail ~about st ~at name
+  | Routine k -> call_routine st caller ~at ~call_at:c.call_at k c.arguments
 
-and call_routine st (caller : routine) ~at k (arguments : argument array) : act -> V.t =
+and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
+  | Some name when Io_primitives.modelled name || Motion_primitives.modelled name ->
+      (* Waits, signals, interrupts, clocks and motion need the controller. *)
+      fun _ -> leave_to_machine ~at:call_at callee.name (callee.name ^ " (the controller, doc/controller.md)")
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       fun a ->
         let values = Array.map (fun f -> f a) args in
-        primitive_outcome st caller a ~at name (Primitive.call st.prim_ctx name values)
+        primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
   | None ->
-      let binders = Array.mapi (binder st caller ~at callee) arguments in
+      let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in
       let shape = activation_shape callee in
       let is_function = callee.kind = Function in
@@ -495,22 +588,35 @@ and call_routine st (caller : routine) ~at k (arguments : argument array) : act 
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
 
-and primitive_outcome st (caller : routine) caller_act ~at name : Primitive.outcome -> V.t = function
+and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> no_value
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
-      match late_target st caller ~at target [||] with
-      | f -> f caller_act)
+      late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> raise (Halt M.Ended)
+  | Not_modelled when st.stub_unmodelled ->
+      (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
+         initial value of its type (§2.22). *)
+      let key = String.lowercase_ascii name in
+      if not (Hashtbl.mem st.stubbed key) then begin
+        Hashtbl.replace st.stubbed key ();
+        if st.all_events then st.emit (M.Stubbed { routine = callee.name; at = call_at })
+      end;
+      (match callee.kind with
+       | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
+       | Procedure | Trap -> no_value)
   | Not_modelled ->
-      raise (Halt (M.Unsupported (Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name)))
+      raise (Halt (M.Unsupported
+                     { name = callee.name; at = call_at;
+                       reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" callee.name }))
+  | Wait _ | Retry_requested -> leave_to_machine ~at:call_at callee.name callee.name
 
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
-and late_target st (caller : routine) ~at name (args : late_argument array) : act -> V.t =
+and late_target st (caller : routine) ~at ~call_at name (args : late_argument array) : act -> V.t =
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let routines = st.program.routines in
   let candidates =
@@ -523,18 +629,37 @@ and late_target st (caller : routine) ~at name (args : late_argument array) : ac
         let all = List.filter (fun k -> same routines.(k).name name) (List.init (Array.length routines) Fun.id) in
         let own = List.filter (fun k -> same routines.(k).module_name caller.module_name) all in
         let visible = List.filter (fun k -> not routines.(k).local) all in
-        let user = List.filter (fun k -> routines.(k).primitive = None) visible in
-        own @ user @ visible
+        own @ visible
   in
+  let about = name in
   match candidates with
-  | [] -> fun _ -> fail st ~at "ERR_REFUNKPRC"
+  | [] -> fun _ -> fail ~about st ~at "ERR_REFUNKPRC"
   | k :: _ ->
       let r = routines.(k) in
-      if r.kind <> Procedure then fun _ -> fail st ~at "ERR_CALLPROC"
-      else (
-        match Late_binding.bind r args with
-        | None -> fun _ -> fail st ~at "ERR_CALLPROC"
-        | Some arguments -> call_routine st caller ~at k arguments)
+      if r.kind <> Procedure then fun _ -> fail ~about st ~at "ERR_CALLPROC"
+      else
+        (* The arguments are checked as a direct call's (§4.6). A data reference through an alias
+           parameter of the caller denotes what the parameter is bound to (§5.2), known only
+           when the call runs: such a call is bound at each call, any other once. *)
+        let through_alias (la : late_argument) =
+          match la.late_value with
+          | Late_expr { e = Read p | Read_signal p; _ } -> (
+              match root p with
+              | Some (Local i) -> i < Array.length caller.parameters && is_alias caller.parameters.(i)
+              | _ -> false)
+          | _ -> false in
+        let bound kind =
+          match Late_binding.bind r ~kind args with
+          | Error error -> fun _ -> fail ~about st ~at error
+          | Ok arguments -> call_routine st caller ~at ~call_at k arguments in
+        if Array.exists through_alias args then
+          fun a ->
+            let kind p k =
+              match root p with
+              | Some (Local i) when i < Array.length caller.parameters && is_alias caller.parameters.(i) -> a.ext.bound.(i)
+              | _ -> k in
+            bound kind a
+        else bound (fun _ k -> k)
 
 (* A new activation: fresh routine data (§2.21). *)
 and activation_shape (r : routine) =
@@ -554,11 +679,14 @@ and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : 
                idx = (if aliases then Array.make n 0 else [||]);
                present = (if optional then Array.make n true else [||]);
                bound = (if aliases then Array.make n Ref_other else [||]);
+               module_data = (if aliases then Array.make n false else [||]);
                retries = 0; current = None }
            else shared_extension);
-    level = parent.level + 1; parent; result = no_value; nest = 0 }
+    level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0; call_at = r.at }
 
-and pop st (c : act) = st.depth <- c.level; st.native <- st.native - c.nest
+and pop st (c : act) =
+  st.depth <- c.level; st.native <- st.native - c.nest;
+  st.memory <- st.memory - c.memory; c.memory <- 0
 
 (* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
    return-function, function-no-return, call-depth-exceeded). *)
@@ -566,6 +694,8 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   if c.level >= st.limits.max_call_depth then
     raise (Halt (M.Resource_exhausted
                    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
+  let bytes = activation_bytes r in
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st ("the call of " ^ r.name) at;
   tick st;
   let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
   (* Each activation costs the native stack in proportion to the nesting of its routine: beyond
@@ -575,6 +705,9 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
                    (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" c.level)));
   c.nest <- code.c_nest;
   st.native <- st.native + code.c_nest;
+  c.memory <- c.memory + bytes;
+  st.memory <- st.memory + c.memory;
+  c.call_at <- at;
   st.depth <- c.level + 1;
   if st.all_events then st.emit (M.Routine_entered r.name);
   match if has_init then code.c_init c; code.c_body c with
@@ -582,7 +715,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       pop st c;
       if st.all_events then st.emit (M.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
-      if is_function then fail st ~at "ERR_FNCNORET" else no_value
+      if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
   | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
@@ -677,9 +810,10 @@ and guarded st handler (core : act -> bool) : act -> bool =
    executed RETURN (the value, if any, is in the activation) and the routine returns. *)
 and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   let core = stmt_core st r ~handler ~gotos s in
-  match handler with
-  | Some h -> guarded st h core
-  | None -> core
+  match handler, s.s with
+  | Some _, Elseif _ -> core  (* §4.16, R-4.16: the IF it belongs to is the statement in progress *)
+  | Some h, _ -> guarded st h core
+  | None, _ -> core
 
 and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   let at = Option.value at ~default:s.sat in
@@ -704,7 +838,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let n = V.string_value (name a) in
         let f = match Hashtbl.find_opt cache n with
           | Some f -> f
-          | None -> let f = late_target st r ~at n args in Hashtbl.replace cache n f; f in
+          | None -> let f = late_target st r ~at ~call_at:at n args in Hashtbl.replace cache n f; f in
         ignore (f a); true
   | Goto (b, i) -> fun _ -> raise_notrace (Goto_label (b, i))
   | Break -> fun _ -> raise_notrace Break_loop
@@ -722,7 +856,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let booked = Float.is_integer x && List.mem (int_of_float x) st.booked in
         if Float.is_integer x && ((x >= 1. && x <= 90.) || booked) then
           let n = int_of_float x in
-          let e = { name = string_of_int n; number = n; at; chain = None } in
+          let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
           emit_raised st e;
           raise (Raised e)
         else fail st ~at "ERR_ILLRAISE"
@@ -733,18 +867,25 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         if a.ext.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext -> fun _ -> raise_notrace Trynext_signal
-  | Connect (place, _) ->
-      (* §4.15: the target gets a new interrupt number; one it already has is ERR_ALRDYCNT. *)
+  | Connect (place, trap) ->
+      (* §4.15: the target "must be (or denote) a module variable (not a routine variable)",
+         through parameters too (ERR_CNTNOTVAR); it gets a new interrupt number; one still
+         connected is ERR_ALRDYCNT (R-8-f); beyond the controller's numbers, ERR_INOMAX. The
+         interrupts themselves are the machine's (the trap never runs here). *)
       let l = locate st r ~at place in
+      let kind = effective_kind r place Ref_variable and module_data = denotes_module_data r place in
       fun a ->
         let box, i = l a in
+        if kind a = Ref_persistent || not (module_data a) then fail st ~at "ERR_CNTNOTVAR";
         (match box.(i) with
-         | V.Num 0. -> ()
-         | _ -> fail st ~at "ERR_ALRDYCNT");
-        st.next_interrupt <- st.next_interrupt + 1;
-        box.(i) <- V.num (float_of_int st.next_interrupt);
+         | V.Num n when n <> 0. && Float.is_integer n && Rapid_controller.World.connected st.world (int_of_float n) ->
+             fail st ~at "ERR_ALRDYCNT"
+         | _ -> ());
+        (match Rapid_controller.World.connect st.world ~trap with
+         | Ok n -> box.(i) <- V.num (float_of_int n)
+         | Error name -> fail st ~at name);
         true
-  | If (c, t, e) ->
+  | If (c, t, e) | Elseif (c, t, e) ->
       let c = truth c and t = block t and e = block e in
       fun a -> if c a then t a else e a
   | Compact_if (c, { s = Return (Some e); _ }) ->
@@ -830,7 +971,7 @@ let rec goto_targets acc (b : block) = Array.iter (goto_stmt acc) b.body
 and goto_stmt acc (s : stmt) =
   match s.s with
   | Goto (b, _) -> Hashtbl.replace acc b ()
-  | If (_, t, e) -> goto_targets acc t; goto_targets acc e
+  | If (_, t, e) | Elseif (_, t, e) -> goto_targets acc t; goto_targets acc e
   | Compact_if (_, s) -> goto_stmt acc s
   | For f -> goto_targets acc f.loop_body
   | While (_, b) -> goto_targets acc b
@@ -848,14 +989,21 @@ let compile_routine st k =
   let c_undo = Option.map (block st r ~handler:None ~gotos) r.undo in
   let inits = List.map (fun (slot, init) ->
       match init with
-      | Init_default v -> fun (a : act) -> a.store.(slot) <- V.copy v
+      | Init_default shape ->
+          (* Routine data counts in the memory budget while its routine is active: refused by
+             the budget, it is never built. *)
+          let bytes = V.shape_bytes shape in
+          fun (a : act) ->
+            charge_active st a bytes ("the routine data of " ^ r.name) a.call_at;
+            a.store.(slot) <- V.default_of shape
       | Init_expr e -> let f = expr st r ~at:e.at e in fun a -> a.store.(slot) <- V.copy (f a)) r.local_inits in
   let c_init = match inits with
     | [] -> fun _ -> ()
     | _ -> fun a -> List.iter (fun f -> f a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
 
-let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~all_events ~emit (program : program) =
+let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ~all_events ~emit
+    (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
@@ -863,17 +1011,21 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ~all_event
     fuel; fuel_limit = fuel; depth = 0; native = 0;
     native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
+    memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
+    world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
-                 error_number = (fun _ -> 0) } } in
+                 error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
+                 parameters = [||]; argument_label = (fun _ -> None) } } in
   st.compiled <- Array.init (Array.length program.routines) (fun k -> lazy (compile_routine st k));
   st.prim_ctx <- {
-    output = (fun s -> emit (M.Output s));
+    (* The pendant shows a control character as its character code (Format.display). *)
+    output = (fun s -> emit (M.Output (Format.display s)));
     erase = (fun () -> emit M.Erase);
     log = (fun s -> emit (M.Log s));
     book_error = (fun () ->
         let n = st.next_booked in
         st.next_booked <- n + 1; st.booked <- n :: st.booked; n);
-    error_number = number_of st };
+    error_number = number_of st; world = st.world; parameters = [||]; argument_label = (fun _ -> None) };
   st
 
 let outcome_of_exception st = function
@@ -885,23 +1037,42 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 
-let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : program) ~entry =
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?(on_event = ignore) (program : program) ~entry =
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event program ~entry
+  with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
+
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : program) ~entry =
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
   | Some (_, k) ->
-      let st = initial_state ?limits ?fuel ~all_events ~emit:on_event program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ~all_events ~emit:on_event program in
       let r = program.routines.(k) in
       let outcome =
         try
           (* §2.21: module data is initialised when its module is loaded. *)
           let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
-                               parent = sentinel; result = no_value; nest = 0 } in
+                               parent = sentinel; result = no_value; nest = 0; memory = 0; call_at = r.at } in
           let dummy = new_act (activation_shape r) r sentinel in
+          (* Module data first takes its type's initial value, within the memory budget; then
+             the initial values the static semantics left as expressions (a placeholder, an
+             unknown name) are evaluated, and fail as they would at run time. *)
           Array.iteri (fun i (g : global) ->
-              st.globals.(i) <- (match g.g_init with
-                  | Init_default v -> V.copy v
-                  | Init_expr e -> V.copy (expr st r ~at:e.at e dummy))) program.globals;
+              match g.g_init with
+              | Init_default shape ->
+                  let bytes = V.shape_bytes shape in
+                  if bytes > st.limits.max_memory - st.memory then
+                    memory_exhausted st ("the initial value of " ^ g.g_name) g.g_at;
+                  st.memory <- st.memory + bytes;
+                  st.globals.(i) <- V.default_of shape
+              | Init_expr _ -> ()) program.globals;
+          Array.iteri (fun i (g : global) ->
+              match g.g_init with
+              | Init_expr e -> (
+                  match expr st r ~at:e.at e dummy with
+                  | v -> st.memory <- st.memory + V.bytes v; st.globals.(i) <- V.copy v
+                  | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
+              | Init_default _ -> ()) program.globals;
           let code = Lazy.force st.compiled.(k) in
           let a = new_act (activation_shape r) r sentinel in
           a.nest <- code.c_nest;
@@ -923,12 +1094,14 @@ let run ?limits ?fuel ?(all_events = true) ?(on_event = ignore) (program : progr
                | None -> ());
               if all_events then on_event M.Task_ended;
               M.Ended
-        with e -> outcome_of_exception st e
+        with
+        | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
+        | e -> outcome_of_exception st e
       in
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
-let events ?limits ?fuel ?all_events program ~entry =
+let events ?limits ?fuel ?stub_unmodelled ?all_events program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ?all_events ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ~on_event:(fun e -> acc := e :: !acc) program ~entry with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

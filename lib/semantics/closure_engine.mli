@@ -27,7 +27,8 @@ type result = {
 }
 
 val run :
-  ?limits:Machine.limits -> ?fuel:int -> ?all_events:bool -> ?on_event:(Machine.event -> unit) ->
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool ->
+  ?on_event:(Machine.event -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -41,7 +42,13 @@ val run :
     depth of 10,000 needs far less than the usual 8 MB stack; bench/README.md). No OCaml
     exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
 
+val machine_only : Machine.outcome -> bool
+(** The outcome of a run that reached what this engine leaves to the machine: a signal's value,
+    a wait, an interrupt routine, a clock or the date, motion (the controller, doc/controller.md;
+    doc/semantics.md, "The second engine"). It is [Unsupported] at the call or the statement,
+    with a reason that ends "runs on the machine only: use --engine machine". *)
+
 val events :
-  ?limits:Machine.limits -> ?fuel:int -> ?all_events:bool -> Ir.program -> entry:string ->
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)

@@ -13,6 +13,7 @@ let rec expr_depth (e : Ir.expr) =
     | Binary (_, x, y) | And (x, y) | Or (x, y) -> Int.max (expr_depth x) (expr_depth y)
     | Aggregate (es, _) -> exprs_depth es
     | Call c -> arguments_depth c.arguments
+    | Fitted (x, _) -> expr_depth x
 and exprs_depth es = Array.fold_left (fun m e -> Int.max m (expr_depth e)) 0 es
 and place_depth = function
   | Whole _ | Unresolved _ -> 1
@@ -30,11 +31,10 @@ and stmt_depth (s : stmt) =
     | Call_late (e, args) ->
         Array.fold_left (fun m (a : late_argument) -> match a.late_value with
             | Late_expr e -> Int.max m (expr_depth e)
-            | Late_reference p -> Int.max m (place_depth p)
-            | Late_switch -> m) (expr_depth e) args
+            | Late_switch | Late_conditional _ -> m) (expr_depth e) args
     | Return (Some e) | Raise (Some e) -> expr_depth e
     | Connect (p, _) -> place_depth p
-    | If (c, t, e) -> Int.max (expr_depth c) (Int.max (block_depth t) (block_depth e))
+    | If (c, t, e) | Elseif (c, t, e) -> Int.max (expr_depth c) (Int.max (block_depth t) (block_depth e))
     | Compact_if (c, s) -> Int.max (expr_depth c) (stmt_depth s)
     | For f ->
         Int.max (Int.max (expr_depth f.from_) (expr_depth f.to_))
