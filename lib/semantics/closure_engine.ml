@@ -548,8 +548,28 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
       fun _ -> leave_to_machine ~at:call_at callee.name (callee.name ^ " (the controller, doc/controller.md)")
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
+      (* The memory budget counts an installed routine's in arguments and absent parameters as
+         a RAPID routine's, while its arguments are bound. *)
+      let cost = Array.mapi (fun i arg ->
+          let p = callee.parameters.(i) in
+          let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
+          match arg with
+          | By_value _ -> fun (v : Primitive.argument) ->
+              (match v with Primitive.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
+          | Absent -> fun _ -> absent
+          | Pass_on _ -> (function Primitive.Missing -> absent | _ -> ("", 0))
+          | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
+      let n = Array.length args in
       fun a ->
-        let values = Array.map (fun f -> f a) args in
+        let pending = ref 0 in
+        let values = Array.make n Primitive.Missing in
+        for i = 0 to n - 1 do
+          let v = args.(i) a in
+          let what, bytes = cost.(i) v in
+          if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st what at;
+          pending := !pending + bytes;
+          values.(i) <- v
+        done;
         primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
   | None ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
