@@ -586,10 +586,13 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
         | _ -> None in
       (* The common numbers of arguments without a loop over the binders. *)
       match binders, (if n = 1 then plain 0 else None) with
-      | [| _ |], Some f -> fun a ->
-          let v = copy (f a) in
+      | [| _ |], Some f ->
+          let what = "the copy for the parameter " ^ callee.parameters.(0).p_name in
+          fun a ->
+          let v = f a in
           let c = new_act shape callee a in
-          c.store.(0) <- v;
+          charge_pending st c (V.bytes v) what at;
+          c.store.(0) <- copy v;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
       match binders with
