@@ -59,11 +59,10 @@ type act = {
   mutable nest : int;                 (* its share of the native stack (see native_budget) *)
   mutable memory : int;               (* bytes of RAPID data it holds: in arguments, routine
                                          data, itself (the memory budget) *)
-  mutable call_at : Rapid_syntax.Source.region;  (* the statement that called it *)
 }
 
 type compiled = {
-  c_init : act -> unit;
+  c_init : Rapid_syntax.Source.region -> act -> unit;  (* the call's statement, for the budget *)
   c_body : act -> bool;
   c_handler : (act -> bool) option;
   c_undo : (act -> bool) option;
@@ -143,6 +142,9 @@ let memory_exhausted st what at =
   raise (Halt (M.Resource_exhausted
                  (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
                     (Rapid_syntax.Source.to_string at) what st.limits.max_memory)))
+
+(* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
+let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
 
 (* An activation itself counts, so that a deep recursion stays within the budget too. *)
 let activation_bytes (r : routine) = 256 + 16 * r.locals
@@ -436,11 +438,11 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
   let by_value f =
     match is_alias p, p.p_optional with
     | false, false -> fun a (c : act) ->
-        let v = f a in charge_pending st c (V.bytes v) what at; c.store.(i) <- copy v
+        let v = f a in charge_pending st c (value_bytes v) what at; c.store.(i) <- copy v
     | _ ->
         fun a (c : act) ->
           let v = f a in
-          charge_pending st c (V.bytes v) what at;
+          charge_pending st c (value_bytes v) what at;
           let v = copy v in
           c.store.(i) <- v;
           if is_alias p then begin
@@ -591,7 +593,7 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           fun a ->
           let v = f a in
           let c = new_act shape callee a in
-          charge_pending st c (V.bytes v) what at;
+          charge_pending st c (value_bytes v) what at;
           c.store.(0) <- copy v;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
@@ -705,7 +707,7 @@ and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : 
                module_data = (if aliases then Array.make n false else [||]);
                retries = 0; current = None }
            else shared_extension);
-    level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0; call_at = r.at }
+    level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
 
 and pop st (c : act) =
   st.depth <- c.level; st.native <- st.native - c.nest;
@@ -730,10 +732,9 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   st.native <- st.native + code.c_nest;
   c.memory <- c.memory + bytes;
   st.memory <- st.memory + c.memory;
-  c.call_at <- at;
   st.depth <- c.level + 1;
   if st.all_events then st.emit (M.Routine_entered r.name);
-  match if has_init then code.c_init c; code.c_body c with
+  match if has_init then code.c_init at c; code.c_body c with
   | true ->
       pop st c;
       if st.all_events then st.emit (M.Routine_left r.name);
@@ -1016,13 +1017,13 @@ let compile_routine st k =
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)
           let bytes = V.shape_bytes shape in
-          fun (a : act) ->
-            charge_active st a bytes ("the routine data of " ^ r.name) a.call_at;
+          fun at (a : act) ->
+            charge_active st a bytes ("the routine data of " ^ r.name) at;
             a.store.(slot) <- V.default_of shape
-      | Init_expr e -> let f = expr st r ~at:e.at e in fun a -> a.store.(slot) <- V.copy (f a)) r.local_inits in
+      | Init_expr e -> let f = expr st r ~at:e.at e in fun _ a -> a.store.(slot) <- V.copy (f a)) r.local_inits in
   let c_init = match inits with
-    | [] -> fun _ -> ()
-    | _ -> fun a -> List.iter (fun f -> f a) inits in
+    | [] -> fun _ _ -> ()
+    | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ~all_events ~emit
@@ -1075,7 +1076,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
         try
           (* §2.21: module data is initialised when its module is loaded. *)
           let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
-                               parent = sentinel; result = no_value; nest = 0; memory = 0; call_at = r.at } in
+                               parent = sentinel; result = no_value; nest = 0; memory = 0 } in
           let dummy = new_act (activation_shape r) r sentinel in
           (* Module data first takes its type's initial value, within the memory budget; then
              the initial values the static semantics left as expressions (a placeholder, an
@@ -1102,7 +1103,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
           st.native <- code.c_nest;
           st.depth <- 1;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
-          match code.c_init a; code.c_body a with
+          match code.c_init r.at a; code.c_body a with
           | _ ->
               if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
               M.Ended
