@@ -53,7 +53,8 @@ let cmd =
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
     let options = { Rapid_fuzz.Program_gen.default_options with mismatching } in
-    let s = C.run ~options ?external_check ?progress ~seed ~count ~shard () in
+    (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
+    let s = C.run ~options ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ?external_check ?progress ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
     List.iter (fun (f : C.failure_found) ->
         let path = C.save ~dir:out f in

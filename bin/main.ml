@@ -378,6 +378,30 @@ let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
+(* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
+let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json print_event =
+  match Rapid_semantics.Session.load ~allow_unknown files with
+  | Error f -> report_load_failure f
+  | Ok loaded -> (
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+      Option.iter prerr_endline loaded.unknown_summary;
+      let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
+      let stubbed = ref [] in
+      let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
+              ~on_event loaded.program ~entry with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok { outcome; fuel_used } ->
+          report_stubbed (List.rev !stubbed);
+          if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
+          match outcome with
+          | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
+              (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
+              Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
+              exit_unsupported
+          | _ -> finish outcome fuel_used ~max_steps)
+
 let run_cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
@@ -385,8 +409,14 @@ let run_cmd =
                     ~doc:"At the end of the run, write each module to DIR (made if missing) with every PERS \
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples save =
+  
+  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
+  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
+    let print_event (e : M.event) =
+      if json then print_line (Yojson.Safe.to_string (event_json e))
+      else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
+    if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
@@ -428,7 +458,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
-          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save)
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine)
 
 module TV = Rapid_semantics.Trace_view
 
@@ -646,10 +676,11 @@ let spec_cmd =
                           case's options, $(b,{files}) its files.") in
   let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
   let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
-  let run dir verbose impl junit report =
+  let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
+  let run dir verbose impl junit report engine =
     guard @@ fun () ->
     let _, failed = match impl with
-      | None -> Rapid_conformance.Spec_runner.run ~verbose Format.std_formatter dir
+      | None -> Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir
       | Some template ->
           Unix.putenv "RAPID_SEM" Sys.executable_name;
           Rapid_conformance.Impl_runner.run ~verbose ?junit ?json:report ~template Format.std_formatter dir in
@@ -664,7 +695,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)

@@ -22,4 +22,5 @@ let () =
       Test_impl_runner.suite;
       Test_services.suite;
       Test_debugger.suite;
+      Test_engines.suite;
     ]

@@ -13,7 +13,9 @@ let read_file path =
 let documented_backward_rules () =
   let text = read_file "../doc/semantics.md" in
   let start = Str.search_forward (Str.regexp_string "## Backward execution") text 0 in
-  let section = String.sub text start (String.length text - start) in
+  (* The section runs to the next heading of its level. *)
+  let stop = try Str.search_forward (Str.regexp "^## ") text (start + 1) with Not_found -> String.length text in
+  let section = String.sub text start (stop - start) in
   let rec collect pos acc =
     match Str.search_forward (Str.regexp "\\*\\*\\([a-z-]+\\)\\*\\*") section pos with
     | p -> collect (p + 1) (Str.matched_group 1 section :: acc)

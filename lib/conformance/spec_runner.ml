@@ -1,6 +1,7 @@
 open Rapid_syntax
 
 type verdict = Passed | Failed | Skipped
+type engine = Machine | Closure
 type outcome = { case : Spec_case.t; verdict : verdict; detail : string }
 
 let pass case detail = { case; verdict = Passed; detail }
@@ -36,31 +37,47 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
-let run_program case (run : Spec_case.run) ~io program =
+(* The run's output lines and outcome, by the chosen engine. *)
+let execute engine case (run : Spec_case.run) ~io program =
   let module M = Rapid_semantics.Machine in
   let limits = { M.default_limits with
                  retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
-  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
-  let sandbox = Rapid_controller.File_sandbox.temporary () in
-  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-  let services = Rapid_controller.Services.create ~sandbox () in
-  Rapid_controller.World.set_services world services;
-  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
-  match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
-  | Error m -> release (); fail case ("cannot run: " ^ m)
-  | Ok cfg ->
-      let max_steps = Option.value run.max_steps ~default:10_000_000 in
-      let output = ref [] in
-      while M.outcome cfg = Running && M.steps cfg < max_steps do
-        let _, events = M.step cfg in
-        List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
-      done;
-      release ();
-      let output = List.rev !output in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let output = ref [] in
+  let collect = function M.Output s -> output := s :: !output | _ -> () in
+  match engine with
+  | Machine -> (
+      let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+      (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
+      let sandbox = Rapid_controller.File_sandbox.temporary () in
+      Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+      let services = Rapid_controller.Services.create ~sandbox () in
+      Rapid_controller.World.set_services world services;
+      let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+      match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
+      | Error m -> release (); Error m
+      | Ok cfg ->
+          while M.outcome cfg = Running && M.steps cfg < max_steps do
+            List.iter collect (snd (M.step cfg))
+          done;
+          release ();
+          Ok (List.rev !output, M.outcome cfg))
+  | Closure -> (
+      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
+              ~on_event:collect program ~entry:run.entry with
+      | Error m -> Error m
+      | Ok r -> Ok (List.rev !output, r.outcome))
+
+let run_program engine case (run : Spec_case.run) ~io program =
+  match execute engine case run ~io program with
+  | Error m -> fail case ("cannot run: " ^ m)
+  | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
+      (* The case needs the controller, which the closure engine leaves to the machine. *)
+      { case; verdict = Skipped; detail = "needs the controller: " ^ reason }
+  | Ok (output, outcome) ->
       let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
       let status, error, error_file =
-        match M.outcome cfg with
+        match (outcome : Rapid_semantics.Machine.outcome) with
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
         | Running | Resource_exhausted _ | Deadlock _ -> (3, None, None)
@@ -88,7 +105,7 @@ let run_program case (run : Spec_case.run) ~io program =
       if problems = [] then pass case (Printf.sprintf "ran: %d lines, exit %d" (List.length output) status)
       else fail case (String.concat "; " problems)
 
-let run_case (case : Spec_case.t) =
+let run_case ?(engine = Machine) (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; verdict = Skipped;
       detail = Printf.sprintf "format %s (this runner reads formats %s)" case.format
@@ -116,7 +133,7 @@ let run_case (case : Spec_case.t) =
         | Error (Front_end []) -> fail case "refused without a diagnostic"
         | Ok loaded -> (
             match case.run, expected with
-            | Some run, Spec_case.Accepted -> run_program case run ~io loaded.program
+            | Some run, Spec_case.Accepted -> run_program engine case run ~io loaded.program
             | _ -> accepted case expected)
         | Error (Static reports) -> (
             match List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports with
@@ -183,9 +200,9 @@ let compare_sections a b =
       (String.split_on_char '.' s) in
   compare (key a, a) (key b, b)
 
-let run ?(verbose = false) out dir =
+let run ?(verbose = false) ?engine out dir =
   let paths, errors = collect dir in
-  let outcomes = List.map (fun path -> run_case (Spec_case.read path)) paths in
+  let outcomes = List.map (fun path -> run_case ?engine (Spec_case.read path)) paths in
   (* What could not be looked at fails the run: a suite that is not all there has not passed. *)
   List.iter (fun (path, m) -> Format.fprintf out "ERROR %s: %s@." path m) errors;
   let by_section = Hashtbl.create 64 in

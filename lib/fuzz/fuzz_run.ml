@@ -79,6 +79,23 @@ let machine =
   in
   { engine_name = "machine"; run }
 
+(* The second engine (doc/semantics.md, "The second engine"). A run that exhausts its fuel or a
+   resource, or reaches what the closure engine leaves to the machine (the controller, motion),
+   is not finished: it is not compared. *)
+let closure =
+  let run program ~max_steps =
+    let events = ref [] in
+    match Rapid_semantics.Closure_engine.run ~fuel:max_steps ~on_event:(fun e -> events := event_text e :: !events)
+            program ~entry:"main" with
+    | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
+    | Ok r ->
+        let finished = match r.outcome with
+          | Running | Resource_exhausted _ | Deadlock _ -> false
+          | o -> not (Rapid_semantics.Closure_engine.machine_only o) in
+        { events = List.rev !events; outcome = outcome_text r.outcome; finished }
+  in
+  { engine_name = "closure"; run }
+
 let first_difference a b =
   let rec go i a b =
     match a, b with

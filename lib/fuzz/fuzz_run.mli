@@ -24,6 +24,11 @@ type engine = {
 val machine : engine
 (** The small-step machine, the definition. *)
 
+val closure : engine
+(** The closure engine ({!Rapid_semantics.Closure_engine}), fuel [max_steps]. A run that
+    exhausts its fuel or a resource, or reaches the controller or motion (which it leaves to the
+    machine), is not finished and so not compared. *)
+
 val check_program : ?engines:engine list -> ?max_steps:int -> string -> (observed, failure) result
 (** Parses, checks and runs the source with the machine twice and with every other engine;
     [Ok] with the machine's observation when every property holds. *)

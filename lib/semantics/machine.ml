@@ -781,7 +781,14 @@ let bool_of = function V.Bool b -> Some b | _ -> None
 
 let num_of = function V.Num f | V.Dnum f -> Some f | _ -> None
 
-let to_int f = if Float.is_integer f && Float.abs f < 1e15 then Some (int_of_float f) else None
+(* A whole number of any size is an integer (R-3.6: 1E20 as an index is out of bounds, not "not
+   an integer"); beyond OCaml's ints it is clamped, which keeps it outside every dimension and
+   every range of RAISE. *)
+let to_int f =
+  if not (Float.is_integer f) then None
+  else if f >= 4e18 then Some max_int
+  else if f <= -4e18 then Some min_int
+  else Some (int_of_float f)
 
 (* "The statement that caused the error" (§4.13, §4.14): an error in an ELSEIF condition is the
    IF statement's, which the ELSEIF's mark leads to (one mark per ELSEIF of the statement). *)

@@ -1,0 +1,1132 @@
+(* The second evaluator: routines compiled to closures; a statement completes by going on or by
+   RETURN, and every other transfer of control is an exception. Written from doc/semantics.md and
+   the manual; the machine is its differential partner, not its source. Where this file says
+   "rule", it names the rule of doc/semantics.md it implements. *)
+
+open Ir
+module V = Value
+module M = Machine
+
+let default_fuel = 100_000_000
+
+type result = { outcome : M.outcome; fuel_used : int }
+
+(* An error in flight (ch. 7): its name (ERR_... or the number of a user error), its number
+   (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
+type error = {
+  name : string; number : int; at : Rapid_syntax.Source.region;
+  about : string option;              (* the unknown name, the procedure, the function (§7.1) *)
+  mutable chain : string list option;
+      (* filled in by the first activation that catches the error, the one it occurred in *)
+}
+
+(* What may happen to an activation while one of its statements runs. *)
+exception Raised of error              (* an error in this activation (§7.1) *)
+exception Leaving of error             (* RAISE; in a handler: the error leaves the routine (§4.11) *)
+exception Long_jump of int * error     (* to the error recovery point of this activation (§7.2) *)
+exception Break_loop                   (* §4.8 *)
+exception Continue_loop                (* §4.9 *)
+exception Goto_label of int * int      (* §4.7: the label's statement list and index *)
+exception Exit_task                    (* §4.12 *)
+exception Retry_signal                 (* §4.13 *)
+exception Trynext_signal               (* §4.14 *)
+exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
+exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
+
+(* What only some activations need: routines with alias or optional parameters, or with an error
+   handler. Other activations share one that nothing writes. *)
+type extension = {
+  boxes : V.t array array;            (* an alias parameter's location: container ... *)
+  idx : int array;                    (* ... and index *)
+  present : bool array;               (* optional parameters present (§5.2) *)
+  bound : reference_kind array;       (* what an alias parameter is bound to *)
+  module_data : bool array;           (* whether it denotes module data (CONNECT, §4.15) *)
+  mutable retries : int;              (* RETRYs since the retried statement last completed *)
+  mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+}
+
+let shared_extension =
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None }
+
+(* The activation of a routine: its slots, and for alias parameters where their locations are. *)
+type act = {
+  routine : routine;
+  store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
+  ext : extension;
+  level : int;                        (* its place in the call chain: 0 is the entry routine *)
+  parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
+  mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
+  mutable nest : int;                 (* its share of the native stack (see native_budget) *)
+  mutable memory : int;               (* bytes of RAPID data it holds: in arguments, routine
+                                         data, itself (the memory budget) *)
+}
+
+type compiled = {
+  c_init : Rapid_syntax.Source.region -> act -> unit;  (* the call's statement, for the budget *)
+  c_body : act -> bool;
+  c_handler : (act -> bool) option;
+  c_undo : (act -> bool) option;
+  c_nest : int;                       (* the depth of its syntax tree, statements and expressions *)
+}
+
+type state = {
+  program : program;
+  globals : V.t array;
+  limits : M.limits;
+  emit : M.event -> unit;
+  all_events : bool;                  (* false: only output, erase and log are wanted *)
+  mutable fuel : int;
+  fuel_limit : int;
+  mutable depth : int;
+  mutable native : int;               (* the nests of the active routines *)
+  native_budget : int;
+  mutable booked : int list;          (* BookErrNo numbers (R-4.11-b) *)
+  mutable next_booked : int;
+  mutable next_interrupt : int;
+  numbers : (string, int) Hashtbl.t;  (* ERR_ names, upper case *)
+  mutable compiled : compiled Lazy.t array;
+  mutable prim_ctx : Primitive.context;
+  mutable memory : int;               (* bytes of RAPID data: module data and activations *)
+  stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
+  stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
+  world : Rapid_controller.World.t;   (* interrupt numbers only: no clock, signals or traps *)
+}
+
+(* ------------------------------------------------------------------ errors *)
+
+let number_of st name =
+  match Hashtbl.find_opt st.numbers (String.uppercase_ascii name) with
+  | Some n -> n
+  | None -> ( match int_of_string_opt name with Some n -> n | None -> 0)
+
+(* The call chain from an activation up, innermost first. *)
+let chain_of (a : act) =
+  let rec go (b : act) acc = if b.level < 0 then List.rev acc else go b.parent (b.routine.name :: acc) in
+  go a []
+
+(* The error as it was caught in activation [a]: where it occurred, if nothing caught it before. *)
+let caught (a : act) e = (if e.chain = None then e.chain <- Some (chain_of a)); e
+
+let chain e = Option.value e.chain ~default:[]
+
+let emit_raised st e =
+  if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
+
+(* An execution error where [at] is the statement in progress. *)
+let fail ?about st ~at name =
+  let e = { name; number = number_of st name; at; about; chain = None } in
+  emit_raised st e;
+  raise (Raised e)
+
+let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
+
+(* What this engine leaves to the machine: the controller (signals, waits, interrupts, clocks)
+   and motion (doc/semantics.md, "The second engine"). *)
+let machine_only_reason = "runs on the machine only: use --engine machine"
+
+let leave_to_machine ~at name what =
+  raise (Halt (M.Unsupported { name; at; reason = Printf.sprintf "%s %s" what machine_only_reason }))
+
+let machine_only (o : M.outcome) =
+  match o with
+  | Unsupported { reason; _ } ->
+      let n = String.length machine_only_reason and m = String.length reason in
+      m >= n && String.sub reason (m - n) n = machine_only_reason
+  | _ -> false
+
+(* ------------------------------------------------------------------ the memory budget *)
+
+(* The budget of RAPID data (§1.4, doc/user-guide.md "Resources"), by the model of Value.bytes:
+   beyond it the run ends as a resource exhausted at the place, before anything is built. *)
+let memory_exhausted st what at =
+  raise (Halt (M.Resource_exhausted
+                 (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
+                    (Rapid_syntax.Source.to_string at) what st.limits.max_memory)))
+
+(* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
+let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
+
+(* An activation itself counts, so that a deep recursion stays within the budget too. *)
+let activation_bytes (r : routine) = 256 + 16 * r.locals
+
+(* While its arguments are bound the callee's bytes are pending, not yet in [st.memory]. *)
+let charge_pending st (c : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st what at
+  else c.memory <- c.memory + bytes
+
+(* Routine data of an active routine. *)
+let charge_active st (a : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory then memory_exhausted st what at
+  else begin a.memory <- a.memory + bytes; st.memory <- st.memory + bytes end
+
+(* Value.to_single, here so that it is inlined into the operators below. An integer of at most
+   24 bits is a single already: it is recognised without the conversion's two calls. *)
+let to_single x =
+  if Float.of_int (Float.to_int x) = x && x <= 16777216. && x >= -16777216. then x
+  else Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
+
+(* What a procedure gives back: no value. Recognised by identity. *)
+let no_value = V.String "(no value)"
+
+let v_true = V.Bool true
+let v_false = V.Bool false
+
+(* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
+let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v
+
+let fuel_out () = raise (Halt M.Running)
+
+let tick st =
+  let f = st.fuel - 1 in
+  st.fuel <- f;
+  if f < 0 then fuel_out () [@@inline]
+
+let check st ~at = function Ok v -> v | Error name -> fail st ~at name
+
+(* ------------------------------------------------------------------ slots and places *)
+
+let is_alias (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
+
+(* How a local slot is reached, known when the routine is compiled. *)
+type slot_access = Own | Alias | Optional_own | Optional_alias
+
+let local_access (r : routine) i =
+  if i < Array.length r.parameters then
+    let p = r.parameters.(i) in
+    match p.p_optional, is_alias p with
+    | false, false -> Own
+    | false, true -> Alias
+    | true, false -> Optional_own
+    | true, true -> Optional_alias
+  else Own
+
+(* §3.6: an index is an integer value within the declared dimension. *)
+let index st ~at (v : V.t) n =
+  match v with
+  | V.Num x | V.Dnum x ->
+      if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
+      else if x < 1. || x > float_of_int n then fail st ~at "ERR_OUTOFBND"
+      else int_of_float x - 1
+  | _ -> V.type_mismatch "index"
+
+(* The root slot of a place, for the binding of alias arguments. *)
+let rec root = function
+  | Whole s -> Some s
+  | Element (p, _) | Component (p, _) -> root p
+  | Unresolved _ -> None
+
+let rec read st (r : routine) ~at (p : place) : act -> V.t =
+  match p with
+  | Whole (Global i) -> let g = st.globals in fun _ -> g.(i)
+  | Whole (Local i) -> (
+      match local_access r i with
+      | Own -> fun a -> a.store.(i)
+      | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
+      | Optional_alias ->
+          fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Element _ | Component _ | Unresolved _ ->
+      let l = locate st r ~at p in
+      fun a -> let box, i = l a in box.(i)
+
+(* A place's location (rules place-global, place-local, place-absent, place-component,
+   place-element, index-out-of-bounds, index-not-integer, place-unknown). *)
+and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
+  match p with
+  | Whole (Global i) -> let g = st.globals in fun _ -> (g, i)
+  | Whole (Local i) -> (
+      match local_access r i with
+      | Own -> fun a -> (a.store, i)
+      | Alias -> fun a -> (a.ext.boxes.(i), a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then (a.store, i) else fail st ~at "ERR_NOTPRES"
+      | Optional_alias ->
+          fun a -> if a.ext.present.(i) then (a.ext.boxes.(i), a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Component (q, k) ->
+      let l = locate st r ~at q in
+      fun a -> let box, i = l a in (V.components box.(i), k)
+  | Element (q, indexes) ->
+      let l = locate st r ~at q in
+      let indexes = Array.map (expr st r ~at) indexes in
+      fun a ->
+        let box, i = l a in
+        let values = Array.map (fun e -> e a) indexes in
+        let n = Array.length values in
+        let rec down (container : V.t) k =
+          let elements = V.components container in
+          let j = index st ~at values.(k) (Array.length elements) in
+          if k = n - 1 then (elements, j) else down elements.(j) (k + 1)
+        in
+        down box.(i) 0
+  | Unresolved name -> fun _ -> fail ~about:name st ~at "ERR_REFUNKDAT"
+
+(* ------------------------------------------------------------------ expressions *)
+
+(* [at] is the statement evaluating the expression: where its errors occur (spec/README.md). *)
+and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
+  match e.e with
+  | Literal v -> fun _ -> v
+  | Read p -> read st r ~at p
+  | Read_signal p ->
+      let name = match root p with Some (Global g) -> st.program.globals.(g).g_name | _ -> "signal" in
+      fun _ -> leave_to_machine ~at name "the value of an I/O signal (§2.16, the controller)"
+  | Unary (op, x) ->
+      let x = expr st r ~at x in
+      fun a -> check st ~at (Arith.unary op (x a))
+  | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
+      let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+      binary_literal ?own st ~at op (expr st r ~at x) v q
+  | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
+  | And (x, y) ->
+      let x = expr st r ~at x and y = expr st r ~at y in
+      fun a -> if V.bool_value (x a) then y a else V.Bool false
+  | Or (x, y) ->
+      let x = expr st r ~at x and y = expr st r ~at y in
+      fun a -> if V.bool_value (x a) then V.Bool true else y a
+  | Aggregate (members, kind) ->
+      let members = Array.map (expr st r ~at) members in
+      let n = Array.length members in
+      fun a ->
+        let vs = Array.make n (V.Bool false) in
+        for k = 0 to n - 1 do vs.(k) <- members.(k) a done;
+        (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
+  | Call c -> (
+      let f = call st r ~at ~function_call:true c in
+      match c.callee with
+      | Routine k when st.program.routines.(k).primitive = None
+                       && st.program.routines.(k).kind = Function -> f  (* a RAPID function gives a value *)
+      | _ -> fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
+  | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
+  | Fitted (x, shape) ->
+      (* §3.10: an aggregate argument of a late-bound call takes its parameter's type when its
+         members fit it; otherwise the arguments do not fit the procedure. *)
+      let x = expr st r ~at x in
+      fun a -> match V.conform shape (x a) with Some v -> v | None -> fail st ~at "ERR_CALLPROC"
+
+(* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
+   programs) are computed here without building a result: the same rule as Arith's (one
+   operation in double precision rounded once to single, R-2.13-a; an infinite result is
+   ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO); every other operand goes to Arith.
+   The left operand is evaluated before the right (§3.1). *)
+and binary st ~at (op : Arith.binary) x y : act -> V.t =
+  let slow u v = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  match op with
+  | Num_add -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p +. q)) | _ -> slow u v)
+  | Num_sub -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p -. q)) | _ -> slow u v)
+  | Num_mul -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> num (to_single (p *. q)) | _ -> slow u v)
+  | Num_div -> fun a -> let u = x a in let v = y a in
+      (match u, v with
+       | V.Num p, V.Num q when q <> 0. -> num (to_single (p /. q))
+       | _ -> slow u v)
+  | Num_lt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p < q then v_true else v_false | _ -> slow u v)
+  | Num_le -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p <= q then v_true else v_false | _ -> slow u v)
+  | Num_gt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p > q then v_true else v_false | _ -> slow u v)
+  | Num_ge -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p >= q then v_true else v_false | _ -> slow u v)
+  | Equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_true else v_false | _ -> slow u v)
+  | Not_equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
+  | _ -> fun a -> let u = x a in let v = y a in slow u v
+
+(* The same with a num literal on the right, which then costs no call. *)
+and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
+  let slow u = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  match op, own with
+  (* An own slot on the left is read without a call. *)
+  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p +. q)) | u -> slow u)
+  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p -. q)) | u -> slow u)
+  | _ ->
+  match op with
+  | Num_add -> fun a -> (match x a with V.Num p -> num (to_single (p +. q)) | u -> slow u)
+  | Num_sub -> fun a -> (match x a with V.Num p -> num (to_single (p -. q)) | u -> slow u)
+  | Num_mul -> fun a -> (match x a with V.Num p -> num (to_single (p *. q)) | u -> slow u)
+  | _ -> binary st ~at op x (fun _ -> v)
+
+(* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
+   the comparisons of two nums, NOT, AND and OR. *)
+and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
+  let compare op x (y : Ir.expr) =
+    match op, y.e with
+    | (Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal), Literal (V.Num q as v) ->
+        (* A num literal on the right: compared without a call. *)
+        let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        let x = match own with
+          | Some i -> fun a -> a.store.(i)
+          | None -> expr st r ~at x in
+        let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op, own with
+            | Num_lt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p < q | u -> slow u)
+            | Num_gt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p > q | u -> slow u)
+            | Equal, Some i -> fun a -> (match a.store.(i) with V.Num p -> p = q | u -> slow u)
+            | _ ->
+            match op with
+            | Num_lt -> fun a -> (match x a with V.Num p -> p < q | u -> slow u)
+            | Num_le -> fun a -> (match x a with V.Num p -> p <= q | u -> slow u)
+            | Num_gt -> fun a -> (match x a with V.Num p -> p > q | u -> slow u)
+            | Num_ge -> fun a -> (match x a with V.Num p -> p >= q | u -> slow u)
+            | Equal -> fun a -> (match x a with V.Num p -> p = q | u -> slow u)
+            | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
+    | _ ->
+    let x = expr st r ~at x and y = expr st r ~at y in
+    let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
+    match op with
+    | Arith.Num_lt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
+    | Num_le -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
+    | Num_gt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
+    | Num_ge -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v)
+    | Equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p = q | _ -> slow u v)
+    | Not_equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> not (p = q) | _ -> slow u v)
+    | _ -> None
+  in
+  let general () = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
+  match e.e with
+  | Literal (V.Bool b) -> fun _ -> b
+  | Binary (op, x, y) -> (match compare op x y with Some f -> f | None -> general ())
+  | And (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a && y a
+  | Or (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a || y a
+  | Unary (Arith.Not, x) -> let x = condition st r ~at x in fun a -> not (x a)
+  | _ -> general ()
+
+(* ------------------------------------------------------------------ calls *)
+
+(* How the caller's slot [s] passes on to a conditional argument (§3.11): present or not. *)
+and slot_present (r : routine) s : act -> bool =
+  match s with
+  | Global _ -> fun _ -> false
+  | Local i when i >= Array.length r.parameters -> fun _ -> false
+  | Local i -> (
+      match local_access r i with
+      | Optional_own | Optional_alias -> fun a -> a.ext.present.(i)
+      | Own | Alias -> fun _ -> true)
+
+(* Whether an alias argument denotes module data, seen through the parameters it goes through
+   (§4.15: CONNECT's target). *)
+and denotes_module_data (r : routine) (p : place) : act -> bool =
+  match root p with
+  | Some (Global _) -> fun _ -> true
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.module_data.(i)
+  | _ -> fun _ -> false
+
+(* What the root of an alias argument is bound to: an alias parameter passes on its own
+   binding; anything else is what the lowering says it denotes. *)
+and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> reference_kind =
+  match root p with
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.bound.(i)
+  | _ -> fun _ -> kind
+
+(* One argument bound to one parameter of a RAPID routine (rules argument-value,
+   argument-bound, argument-reference, argument-alias, argument-alias-refused, argument-absent,
+   argument-switch, argument-pass-on-present, argument-pass-on-absent). *)
+and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : argument) : act -> act -> unit =
+  let p = callee.parameters.(i) in
+  (* §5.2: an in parameter is a copy of its argument, counted in the memory budget. *)
+  let what = "the copy for the parameter " ^ p.p_name in
+  let by_value f =
+    match is_alias p, p.p_optional with
+    | false, false -> fun a (c : act) ->
+        let v = f a in charge_pending st c (value_bytes v) what at; c.store.(i) <- copy v
+    | _ ->
+        fun a (c : act) ->
+          let v = f a in
+          charge_pending st c (value_bytes v) what at;
+          let v = copy v in
+          c.store.(i) <- v;
+          if is_alias p then begin
+            c.ext.boxes.(i) <- c.store; c.ext.idx.(i) <- i; c.ext.bound.(i) <- Ref_other;
+            c.ext.module_data.(i) <- false end;
+          if p.p_optional then c.ext.present.(i) <- true
+  in
+  (* An absent parameter still has storage of its type (§5.2). *)
+  let absent (c : act) =
+    charge_pending st c (V.shape_bytes p.p_default) ("the absent parameter " ^ p.p_name) at;
+    c.ext.present.(i) <- false; c.store.(i) <- V.default_of p.p_default
+  in
+  let by_reference place kind =
+    if not (is_alias p) then by_value (read st caller ~at place)
+    else
+      let l = locate st caller ~at place in
+      let kind = effective_kind caller place kind in
+      let module_data = denotes_module_data caller place in
+      (* §5.2, the execution-error cells of the access table: an INOUT parameter passes on
+         what it is bound to, which must suit the callee's mode. *)
+      let refused =
+        match root place with
+        | Some (Local s) when s < Array.length caller.parameters
+                              && caller.parameters.(s).p_mode = Rapid_typing.Tables.Mode_inout -> (
+            match p.p_mode with
+            | Mode_var -> fun (a : act) -> if a.ext.bound.(s) = Ref_persistent then Some "ERR_ARGNOTVAR" else None
+            | Mode_pers -> fun a -> if a.ext.bound.(s) = Ref_variable then Some "ERR_ARGNOTPER" else None
+            | _ -> fun _ -> None)
+        | _ -> fun _ -> None
+      in
+      fun a (c : act) ->
+        let box, j = l a in
+        (match refused a with Some name -> fail st ~at name | None -> ());
+        c.ext.boxes.(i) <- box; c.ext.idx.(i) <- j; c.ext.bound.(i) <- kind a;
+        c.ext.module_data.(i) <- module_data a;
+        if p.p_optional then c.ext.present.(i) <- true
+  in
+  match arg with
+  | Absent -> fun _ c -> absent c
+  | Present_switch -> fun _ c -> c.ext.present.(i) <- true
+  | By_value e -> by_value (expr st caller ~at e)
+  | By_reference (place, kind) -> by_reference place kind
+  | Pass_on s ->
+      let present = slot_present caller s in
+      let pass =
+        if p.p_switch then fun _ c -> c.ext.present.(i) <- true
+        else by_reference (Whole s) Ref_variable
+      in
+      (* §3.11, §5.2: of the alternatives of one optional parameter at most one is present;
+         a second made present by a conditional argument is ERR_ARGDUPCND (ch. 12). *)
+      let others = ref [] in
+      Array.iteri (fun j (q : parameter) ->
+          if j <> i && p.p_group >= 0 && q.p_group = p.p_group && j < Array.length c_arguments then
+            others := (match c_arguments.(j) with
+                | Present_switch | By_value _ | By_reference _ -> fun _ -> true
+                | Pass_on s' -> slot_present caller s'
+                | Absent -> fun _ -> false) :: !others) callee.parameters;
+      let others = !others in
+      fun a c ->
+        if present a then begin
+          if List.exists (fun f -> f a) others then fail st ~at "ERR_ARGDUPCND";
+          pass a c
+        end
+        else absent c
+
+(* An argument of an installed routine with a body in OCaml (Primitive). *)
+and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
+  : act -> Primitive.argument =
+  let p = callee.parameters.(i) in
+  let location place kind =
+    let l = locate st caller ~at place and kind = effective_kind caller place kind in
+    fun a -> let box, j = l a in Primitive.Location (box, j, kind a)
+  in
+  match arg with
+  | Absent -> fun _ -> Primitive.Missing
+  | Present_switch -> fun _ -> Primitive.Switch
+  | By_value e -> let f = expr st caller ~at e in fun a -> Primitive.Value (f a)
+  | By_reference (place, kind) ->
+      if is_alias p then location place kind
+      else let f = read st caller ~at place in fun a -> Primitive.Value (f a)
+  | Pass_on s ->
+      let present = slot_present caller s in
+      let pass =
+        if p.p_switch then fun _ -> Primitive.Switch
+        else if is_alias p then location (Whole s) Ref_variable
+        else let f = read st caller ~at (Whole s) in fun a -> Primitive.Value (f a)
+      in
+      fun a -> if present a then pass a else Primitive.Missing
+
+(* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
+   call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
+   call-unknown-function). *)
+and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
+  match c.callee with
+  | Unknown_routine about ->
+      let name = if function_call then "ERR_REFUNKFUN" else "ERR_REFUNKPRC" in
+      fun _ -> fail ~about st ~at name
+  | Routine k -> call_routine st caller ~at ~call_at:c.call_at k c.arguments
+
+and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
+  let callee = st.program.routines.(k) in
+  match callee.primitive with
+  | Some name when Io_primitives.modelled name || Motion_primitives.modelled name ->
+      (* Waits, signals, interrupts, clocks and motion need the controller. *)
+      fun _ -> leave_to_machine ~at:call_at callee.name (callee.name ^ " (the controller, doc/controller.md)")
+  | Some name ->
+      let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
+      (* The memory budget counts an installed routine's in arguments and absent parameters as
+         a RAPID routine's, while its arguments are bound. *)
+      let cost = Array.mapi (fun i arg ->
+          let p = callee.parameters.(i) in
+          let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
+          match arg with
+          | By_value _ -> fun (v : Primitive.argument) ->
+              (match v with Primitive.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
+          | Absent -> fun _ -> absent
+          | Pass_on _ -> (function Primitive.Missing -> absent | _ -> ("", 0))
+          | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
+      let n = Array.length args in
+      fun a ->
+        let pending = ref 0 in
+        let values = Array.make n Primitive.Missing in
+        for i = 0 to n - 1 do
+          let v = args.(i) a in
+          let what, bytes = cost.(i) v in
+          if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st what at;
+          pending := !pending + bytes;
+          values.(i) <- v
+        done;
+        primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
+  | None ->
+      let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
+      let n = Array.length binders in
+      let shape = activation_shape callee in
+      let is_function = callee.kind = Function in
+      let code = ref None in
+      let has_init = callee.local_inits <> [] in
+      (* A plain in parameter (not optional): the argument's value is stored in its slot
+         without a binder of its own. *)
+      let plain i = match arguments.(i) with
+        | By_value e when not (is_alias callee.parameters.(i)) && not callee.parameters.(i).p_optional ->
+            Some (expr st caller ~at e)
+        | _ -> None in
+      (* The common numbers of arguments without a loop over the binders. *)
+      match binders, (if n = 1 then plain 0 else None) with
+      | [| _ |], Some f ->
+          let what = "the copy for the parameter " ^ callee.parameters.(0).p_name in
+          fun a ->
+          let v = f a in
+          let c = new_act shape callee a in
+          charge_pending st c (value_bytes v) what at;
+          c.store.(0) <- copy v;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | _ ->
+      match binders with
+      | [||] -> fun a -> enter st callee (new_act shape callee a) ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | _ ->
+          fun a ->
+            let c = new_act shape callee a in
+            for i = 0 to n - 1 do binders.(i) a c done;
+            enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+
+and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : routine) name : Primitive.outcome -> V.t = function
+  | Returned (Some v) -> v
+  | Returned None -> no_value
+  | Failed error -> fail st ~at error
+  | Call_by_name target -> (
+      (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
+      late_target st caller ~at ~call_at target [||] caller_act)
+  | Stop_requested -> raise (Halt M.Ended)
+  | Not_modelled when st.stub_unmodelled ->
+      (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
+         initial value of its type (§2.22). *)
+      let key = String.lowercase_ascii name in
+      if not (Hashtbl.mem st.stubbed key) then begin
+        Hashtbl.replace st.stubbed key ();
+        if st.all_events then st.emit (M.Stubbed { routine = callee.name; at = call_at })
+      end;
+      (match callee.kind with
+       | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
+       | Procedure | Trap -> no_value)
+  | Not_modelled ->
+      raise (Halt (M.Unsupported
+                     { name = callee.name; at = call_at;
+                       reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" callee.name }))
+  | Wait _ | Retry_requested -> leave_to_machine ~at:call_at callee.name callee.name
+
+
+(* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
+   arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
+and late_target st (caller : routine) ~at ~call_at name (args : late_argument array) : act -> V.t =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let routines = st.program.routines in
+  let candidates =
+    match String.index_opt name ':' with
+    | Some i ->
+        let m = String.sub name 0 i and n = String.sub name (i + 1) (String.length name - i - 1) in
+        List.filter (fun k -> same routines.(k).module_name m && same routines.(k).name n)
+          (List.init (Array.length routines) Fun.id)
+    | None ->
+        let all = List.filter (fun k -> same routines.(k).name name) (List.init (Array.length routines) Fun.id) in
+        let own = List.filter (fun k -> same routines.(k).module_name caller.module_name) all in
+        let visible = List.filter (fun k -> not routines.(k).local) all in
+        own @ visible
+  in
+  let about = name in
+  match candidates with
+  | [] -> fun _ -> fail ~about st ~at "ERR_REFUNKPRC"
+  | k :: _ ->
+      let r = routines.(k) in
+      if r.kind <> Procedure then fun _ -> fail ~about st ~at "ERR_CALLPROC"
+      else
+        (* The arguments are checked as a direct call's (§4.6). A data reference through an alias
+           parameter of the caller denotes what the parameter is bound to (§5.2), known only
+           when the call runs: such a call is bound at each call, any other once. *)
+        let through_alias (la : late_argument) =
+          match la.late_value with
+          | Late_expr { e = Read p | Read_signal p; _ } -> (
+              match root p with
+              | Some (Local i) -> i < Array.length caller.parameters && is_alias caller.parameters.(i)
+              | _ -> false)
+          | _ -> false in
+        let bound kind =
+          match Late_binding.bind r ~kind args with
+          | Error error -> fun _ -> fail ~about st ~at error
+          | Ok arguments -> call_routine st caller ~at ~call_at k arguments in
+        if Array.exists through_alias args then
+          fun a ->
+            let kind p k =
+              match root p with
+              | Some (Local i) when i < Array.length caller.parameters && is_alias caller.parameters.(i) -> a.ext.bound.(i)
+              | _ -> k in
+            bound kind a
+        else bound (fun _ k -> k)
+
+(* A new activation: fresh routine data (§2.21). *)
+and activation_shape (r : routine) =
+  let n = Array.length r.parameters in
+  let aliases = Array.exists is_alias r.parameters in
+  let optional = Array.exists (fun (p : parameter) -> p.p_optional) r.parameters in
+  (n, aliases, optional, (if r.locals < 1 then 1 else r.locals),
+   aliases || optional || r.error <> None)
+
+and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
+  { routine = r;
+    store = (match size with
+        | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+        | _ -> Array.make size v_false);
+    ext = (if own_extension then
+             { boxes = (if aliases then Array.make n [||] else [||]);
+               idx = (if aliases then Array.make n 0 else [||]);
+               present = (if optional then Array.make n true else [||]);
+               bound = (if aliases then Array.make n Ref_other else [||]);
+               module_data = (if aliases then Array.make n false else [||]);
+               retries = 0; current = None }
+           else shared_extension);
+    level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
+
+and pop st (c : act) =
+  st.depth <- c.level; st.native <- st.native - c.nest;
+  st.memory <- st.memory - c.memory; c.memory <- 0
+
+(* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
+   return-function, function-no-return, call-depth-exceeded). *)
+and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
+  if c.level >= st.limits.max_call_depth then
+    raise (Halt (M.Resource_exhausted
+                   (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
+  let bytes = activation_bytes r in
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st ("the call of " ^ r.name) at;
+  tick st;
+  let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
+  (* Each activation costs the native stack in proportion to the nesting of its routine: beyond
+     the budget the run ends as the call-depth limit ends it, before the stack overflows. *)
+  if st.native + code.c_nest > st.native_budget then
+    raise (Halt (M.Resource_exhausted
+                   (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" c.level)));
+  c.nest <- code.c_nest;
+  st.native <- st.native + code.c_nest;
+  c.memory <- c.memory + bytes;
+  st.memory <- st.memory + c.memory;
+  st.depth <- c.level + 1;
+  if st.all_events then st.emit (M.Routine_entered r.name);
+  match if has_init then code.c_init at c; code.c_body c with
+  | true ->
+      pop st c;
+      if st.all_events then st.emit (M.Routine_left r.name);
+      (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
+      if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
+  | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
+  | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
+  | exception (Long_jump _ as jump) -> abandon st code c; raise jump
+  | exception Exit_task -> abandon st code c; raise Exit_task
+
+(* A routine left by a propagated error, a long jump or EXIT runs its UNDO handler, then its
+   activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
+   to the system error handler (raise-in-handler). *)
+and abandon st code (c : act) =
+  (match code.c_undo with
+   | None -> ()
+   | Some undo -> (
+       if st.all_events then st.emit (M.Undo_run c.routine.name);
+       match undo c with
+       | _ -> ()
+       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught c e)))));
+  pop st c;
+  if st.all_events then st.emit (M.Routine_left c.routine.name)
+
+(* An error leaves routine [c] (R-7.1, R-7.2-a: rules longjump-search-start, longjump-search,
+   longjump-found, raise-propagate): after the routine is abandoned, the call chain is searched
+   from the caller up for an error recovery point naming the error; found, the error jumps there;
+   not found, it is raised again at the call point. *)
+and leave_with_error st code (c : act) e =
+  abandon st code c;
+  let rec search (b : act) =
+    if b.level < 0 then None
+    else if recovers st b e.number then Some b.level
+    else search b.parent
+  in
+  match search c.parent with
+  | Some j -> raise (Long_jump (j, e))
+  | None -> emit_raised st e; raise (Raised e)
+
+(* §7.2: an error recovery point, ERROR (n, ...), names the error or LONG_JMP_ALL_ERR. *)
+and recovers st (a : act) number =
+  match a.routine.error with
+  | Some { recovery = Some numbers; all_errors; _ } ->
+      all_errors
+      || List.exists (function
+          | Number n -> n = number
+          | Object (Global g) -> ( match st.globals.(g) with V.Num x -> x = float_of_int number | _ -> false)
+          | Object (Local s) -> (
+              match a.store.(s) with V.Num x -> x = float_of_int number | _ -> false)) numbers
+  | _ -> false
+
+(* ------------------------------------------------------------------ the error handler *)
+
+(* The error handler takes an error (rule raise-handle): ERRNO is set and the handler runs. It
+   ends by RETRY (retry), TRYNEXT (trynext), RETURN, RAISE (the error leaves the routine), or
+   by reaching its end, which calls the system error handler (handler-end). An error inside it
+   goes to the system error handler (raise-in-handler). *)
+and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
+  if st.all_events then st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
+  st.globals.(st.program.errno) <- V.num (float_of_int e.number);
+  let previous = a.ext.current in
+  a.ext.current <- Some e;
+  match handler a with
+  | true -> raise (Halt (stopped e))
+  | false -> `Return
+  | exception Retry_signal -> a.ext.current <- previous; `Retry
+  | exception Trynext_signal -> a.ext.current <- previous; `Trynext
+  | exception Raised e' -> raise (Halt (stopped (caught a e')))
+  | exception Long_jump (j, e') when j >= a.level ->
+      (* A long jump to this activation while it runs its handler arrives there, and is an
+         error in the handler. *)
+      emit_raised st e';
+      raise (Halt (stopped (caught a e')))
+
+(* A statement of a routine with an error handler: an error in it, or in a routine it calls
+   that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
+   statement that caused the error"). RETRY runs it again; TRYNEXT goes on after it. *)
+and guarded st handler (core : act -> bool) : act -> bool =
+  fun a ->
+    let rec attempt retried =
+      match core a with
+      | goes_on -> if retried then a.ext.retries <- 0; goes_on
+      | exception Raised e -> handle (caught a e)
+      | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
+    and handle e =
+      match run_handler st handler a e with
+      | `Retry -> attempt true
+      | `Trynext -> true
+      | `Return -> false
+    in
+    attempt false
+
+(* ------------------------------------------------------------------ statements *)
+
+(* [handler]: the routine's error handler when the statement is in the routine's body. *)
+(* A statement runs to its completion: [true] when execution goes on after it, [false] when it
+   executed RETURN (the value, if any, is in the activation) and the routine returns. *)
+and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
+  let core = stmt_core st r ~handler ~gotos s in
+  match handler, s.s with
+  | Some _, Elseif _ -> core  (* §4.16, R-4.16: the IF it belongs to is the statement in progress *)
+  | Some h, _ -> guarded st h core
+  | None, _ -> core
+
+and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
+  let at = Option.value at ~default:s.sat in
+  let block b = block st r ~handler ~gotos b in
+  let truth e = condition st r ~at e in
+  let number e = let f = expr st r ~at e in fun a -> V.num_value (f a) in
+  match s.s with
+  | Assign (place, e) -> (
+      (* Rules assign, assign-target, store: the target is located before the value. *)
+      let value = expr st r ~at e in
+      match place with
+      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a); true
+      | _ ->
+          let l = locate st r ~at place in
+          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v; true)
+  | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a); true
+  | Call_late (name, args) ->
+      let name = expr st r ~at name in
+      let cache = Hashtbl.create 1 in
+      fun a ->
+        let n = V.string_value (name a) in
+        let f = match Hashtbl.find_opt cache n with
+          | Some f -> f
+          | None -> let f = late_target st r ~at ~call_at:at n args in Hashtbl.replace cache n f; f in
+        ignore (f a); true
+  | Goto (b, i) -> fun _ -> raise_notrace (Goto_label (b, i))
+  | Break -> fun _ -> raise_notrace Break_loop
+  | Continue -> fun _ -> raise_notrace Continue_loop
+  | Return None -> fun _ -> false
+  | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; false
+  | Raise None -> (
+      (* raise-again: the error being handled leaves the routine. *)
+      fun a -> match a.ext.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
+  | Raise (Some e) ->
+      (* Rules raise-number, raise, raise-illegal (§4.11, R-4.11, R-4.11-b). *)
+      let f = number e in
+      fun a ->
+        let x = f a in
+        let booked = Float.is_integer x && List.mem (int_of_float x) st.booked in
+        if Float.is_integer x && ((x >= 1. && x <= 90.) || booked) then
+          let n = int_of_float x in
+          let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
+          emit_raised st e;
+          raise (Raised e)
+        else fail st ~at "ERR_ILLRAISE"
+  | Exit -> fun _ -> raise Exit_task
+  | Retry ->
+      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler. *)
+      fun a ->
+        if a.ext.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
+        else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
+  | Trynext -> fun _ -> raise_notrace Trynext_signal
+  | Connect (place, trap) ->
+      (* §4.15: the target "must be (or denote) a module variable (not a routine variable)",
+         through parameters too (ERR_CNTNOTVAR); it gets a new interrupt number; one still
+         connected is ERR_ALRDYCNT (R-8-f); beyond the controller's numbers, ERR_INOMAX. The
+         interrupts themselves are the machine's (the trap never runs here). *)
+      let l = locate st r ~at place in
+      let kind = effective_kind r place Ref_variable and module_data = denotes_module_data r place in
+      fun a ->
+        let box, i = l a in
+        if kind a = Ref_persistent || not (module_data a) then fail st ~at "ERR_CNTNOTVAR";
+        (match box.(i) with
+         | V.Num n when n <> 0. && Float.is_integer n && Rapid_controller.World.connected st.world (int_of_float n) ->
+             fail st ~at "ERR_ALRDYCNT"
+         | _ -> ());
+        (match Rapid_controller.World.connect st.world ~trap with
+         | Ok n -> box.(i) <- V.num (float_of_int n)
+         | Error name -> fail st ~at name);
+        true
+  | If (c, t, e) | Elseif (c, t, e) ->
+      let c = truth c and t = block t and e = block e in
+      fun a -> if c a then t a else e a
+  | Compact_if (c, { s = Return (Some e); _ }) ->
+      (* IF c RETURN e; in one closure. *)
+      let c = truth c and f = expr st r ~at e in
+      fun a -> if c a then begin a.result <- f a; false end else true
+  | Compact_if (c, s) ->
+      (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
+      let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
+      fun a -> if c a then s a else true
+  | While (c, body) ->
+      let c = truth c and body = block body in
+      fun a ->
+        let continue = ref true and goes_on = ref true in
+        while !continue do
+          tick st;
+          if c a then (match body a with
+              | true -> ()
+              | false -> continue := false; goes_on := false
+              | exception Continue_loop -> ()
+              | exception Break_loop -> continue := false)
+          else continue := false
+        done;
+        !goes_on
+  | For { variable; from_; to_; step; loop_body } ->
+      (* §4.18: FROM, TO and STEP once; the default step is 1, or -1 when FROM > TO. *)
+      let from_ = number from_ and to_ = number to_ in
+      let step = Option.map number step in
+      let body = block loop_body in
+      fun a ->
+        let lo = from_ a in
+        let hi = to_ a in
+        let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
+        let v = ref lo and continue = ref true and goes_on = ref true in
+        while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
+          tick st;
+          a.store.(variable) <- V.Num !v;
+          (match body a with
+           | true -> ()
+           | false -> continue := false; goes_on := false
+           | exception Continue_loop -> ()
+           | exception Break_loop -> continue := false);
+          if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
+        done;
+        !goes_on
+  | Test (subject, cases, default) ->
+      let subject = expr st r ~at subject in
+      let cases = Array.map (fun (values, b) -> (Array.map (expr st r ~at) values, block b)) cases in
+      let default = block default in
+      let n = Array.length cases in
+      fun a ->
+        let v = subject a in
+        let rec find k =
+          if k = n then default a
+          else
+            let values, b = cases.(k) in
+            if Array.exists (fun f -> V.equal v (f a)) values then b a else find (k + 1)
+        in
+        find 0
+  | Label -> fun _ -> true
+  | Placeholder_statement -> fun _ -> fail st ~at "ERR_EXECPHR"
+
+(* A statement list, one unit of fuel for each statement started; it stops at a RETURN. A list
+   holding a GOTO's label continues there (rule goto). *)
+and block st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
+  let body = Array.map (stmt st r ~handler ~gotos) b.body in
+  let n = Array.length body in
+  let rec from a k = k >= n || (tick st; body.(k) a && from a (k + 1)) in
+  if n = 0 then fun _ -> true
+  else if n = 1 && not (Hashtbl.mem gotos b.id) then (let s0 = body.(0) in fun a -> tick st; s0 a)
+  else if n = 2 && not (Hashtbl.mem gotos b.id) then
+    (let s0 = body.(0) and s1 = body.(1) in fun a -> tick st; s0 a && (tick st; s1 a))
+  else if Hashtbl.mem gotos b.id then
+    let id = b.id in
+    fun a ->
+      let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
+      go 0
+  else fun a -> from a 0
+
+(* ------------------------------------------------------------------ routines *)
+
+let rec goto_targets acc (b : block) = Array.iter (goto_stmt acc) b.body
+and goto_stmt acc (s : stmt) =
+  match s.s with
+  | Goto (b, _) -> Hashtbl.replace acc b ()
+  | If (_, t, e) | Elseif (_, t, e) -> goto_targets acc t; goto_targets acc e
+  | Compact_if (_, s) -> goto_stmt acc s
+  | For f -> goto_targets acc f.loop_body
+  | While (_, b) -> goto_targets acc b
+  | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
+  | _ -> ()
+
+let compile_routine st k =
+  let r = st.program.routines.(k) in
+  let gotos = Hashtbl.create 4 in
+  goto_targets gotos r.body;
+  Option.iter (fun (h : error_handler) -> goto_targets gotos h.handler) r.error;
+  Option.iter (goto_targets gotos) r.undo;
+  let c_handler = Option.map (fun (h : error_handler) -> block st r ~handler:None ~gotos h.handler) r.error in
+  let c_body = block st r ~handler:c_handler ~gotos r.body in
+  let c_undo = Option.map (block st r ~handler:None ~gotos) r.undo in
+  let inits = List.map (fun (slot, init) ->
+      match init with
+      | Init_default shape ->
+          (* Routine data counts in the memory budget while its routine is active: refused by
+             the budget, it is never built. *)
+          let bytes = V.shape_bytes shape in
+          fun at (a : act) ->
+            charge_active st a bytes ("the routine data of " ^ r.name) at;
+            a.store.(slot) <- V.default_of shape
+      | Init_expr e -> let f = expr st r ~at:e.at e in fun _ a -> a.store.(slot) <- V.copy (f a)) r.local_inits in
+  let c_init = match inits with
+    | [] -> fun _ _ -> ()
+    | _ -> fun at a -> List.iter (fun f -> f at a) inits in
+  { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
+
+let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ~all_events ~emit
+    (program : program) =
+  let numbers = Hashtbl.create 128 in
+  List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
+  let st = {
+    program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
+    fuel; fuel_limit = fuel; depth = 0; native = 0;
+    native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
+    next_interrupt = 0; numbers; compiled = [||];
+    memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
+    world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
+    prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
+                 error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
+                 parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
+  st.compiled <- Array.init (Array.length program.routines) (fun k -> lazy (compile_routine st k));
+  st.prim_ctx <- {
+    (* The pendant shows a control character as its character code (Format.display). *)
+    output = (fun s -> emit (M.Output (Format.display s)));
+    erase = (fun () -> emit M.Erase);
+    log = (fun s -> emit (M.Log s));
+    book_error = (fun () ->
+        let n = st.next_booked in
+        st.next_booked <- n + 1; st.booked <- n :: st.booked; n);
+    error_number = number_of st; world = st.world; parameters = [||]; argument_label = (fun _ -> None);
+    event_log = (fun e -> if st.all_events then emit (M.Event_log e)) };
+  st
+
+let outcome_of_exception st = function
+  | Halt o -> o
+  | Stack_overflow ->
+      M.Resource_exhausted
+        (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth)
+  | Out_of_memory -> M.Resource_exhausted "out of memory (resource exhaustion, §1.4)"
+  | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
+  | e -> M.Stuck (Printexc.to_string e)
+
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?(on_event = ignore) (program : program) ~entry =
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event program ~entry
+  with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
+
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : program) ~entry =
+  let lower = String.lowercase_ascii entry in
+  match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
+  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | Some (_, k) ->
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ~all_events ~emit:on_event program in
+      let r = program.routines.(k) in
+      let outcome =
+        try
+          (* §2.21: module data is initialised when its module is loaded. *)
+          let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
+                               parent = sentinel; result = no_value; nest = 0; memory = 0 } in
+          let dummy = new_act (activation_shape r) r sentinel in
+          (* Module data first takes its type's initial value, within the memory budget; then
+             the initial values the static semantics left as expressions (a placeholder, an
+             unknown name) are evaluated, and fail as they would at run time. *)
+          Array.iteri (fun i (g : global) ->
+              match g.g_init with
+              | Init_default shape ->
+                  let bytes = V.shape_bytes shape in
+                  if bytes > st.limits.max_memory - st.memory then
+                    memory_exhausted st ("the initial value of " ^ g.g_name) g.g_at;
+                  st.memory <- st.memory + bytes;
+                  st.globals.(i) <- V.default_of shape
+              | Init_expr _ -> ()) program.globals;
+          Array.iteri (fun i (g : global) ->
+              match g.g_init with
+              | Init_expr e -> (
+                  match expr st r ~at:e.at e dummy with
+                  | v -> st.memory <- st.memory + V.bytes v; st.globals.(i) <- V.copy v
+                  | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
+              | Init_default _ -> ()) program.globals;
+          let code = Lazy.force st.compiled.(k) in
+          let a = new_act (activation_shape r) r sentinel in
+          a.nest <- code.c_nest;
+          st.native <- code.c_nest;
+          st.depth <- 1;
+          (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
+          match code.c_init r.at a; code.c_body a with
+          | _ ->
+              if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
+              M.Ended
+          | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
+          | exception Exit_task ->
+              (match code.c_undo with
+               | Some undo ->
+                   if all_events then on_event (M.Undo_run r.name);
+                   (match undo a with
+                    | _ -> ()
+                    | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
+               | None -> ());
+              if all_events then on_event M.Task_ended;
+              M.Ended
+        with
+        | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
+        | e -> outcome_of_exception st e
+      in
+      Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
+
+let events ?limits ?fuel ?stub_unmodelled ?all_events program ~entry =
+  let acc = ref [] in
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  | Error m -> Error m
+  | Ok r -> Ok (List.rev !acc, r)

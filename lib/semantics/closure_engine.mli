@@ -1,0 +1,54 @@
+(** The second evaluator of RAPID's dynamic semantics: a definitional interpreter written from
+    doc/semantics.md and the manual, independent of the small-step {!Machine}.
+
+    It shares with the machine only the checked, lowered program ({!Ir}) and the primitives on
+    values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}). Each routine is
+    compiled once, when it is first called, to OCaml closures: an expression to a function from
+    the activation to a value, a place to a function giving its location (a container and an
+    index), a statement to a function from the activation that says whether execution goes on
+    after it or the routine returns (RETURN). Any other control that leaves a statement (GOTO,
+    BREAK, CONTINUE, EXIT, an error in flight, a long jump, RETRY and TRYNEXT) is an OCaml
+    exception caught where the manual sends it.
+
+    It is the machine's first differential partner: on every program both must make the same
+    observable {!Machine.event}s in the same order and end with the same {!Machine.outcome}
+    (doc/semantics.md, "The second engine"). It is also the fast path of
+    [rapid-sem run --engine closure]. *)
+
+val default_fuel : int
+(** 100,000,000, the default of [--max-steps]. *)
+
+type result = {
+  outcome : Machine.outcome;
+      (** as the machine's; [Running] when the fuel ran out (the machine's "step limit") *)
+  fuel_used : int;
+      (** units of fuel spent: one per statement started, per loop iteration (each test of a
+          WHILE condition, each FOR iteration) and per routine entered *)
+}
+
+val run :
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool ->
+  ?on_event:(Machine.event -> unit) ->
+  Ir.program -> entry:string -> (result, string) Stdlib.result
+(** Initialises the module data (§2.21), then runs the entry routine to its end, calling
+    [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
+    [Erase] and [Log] (what [rapid-sem run] without [--json] shows), which spares building the
+    others. [Error] when there is no procedure
+    [entry] without parameters (nothing runs).
+
+    Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
+    [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the
+    native stack of the running thread can hold also ends as [Resource_exhausted] (the default
+    depth of 10,000 needs far less than the usual 8 MB stack; bench/README.md). No OCaml
+    exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
+
+val machine_only : Machine.outcome -> bool
+(** The outcome of a run that reached what this engine leaves to the machine: a signal's value,
+    a wait, an interrupt routine, a clock or the date, motion (the controller, doc/controller.md;
+    doc/semantics.md, "The second engine"). It is [Unsupported] at the call or the statement,
+    with a reason that ends "runs on the machine only: use --engine machine". *)
+
+val events :
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> Ir.program -> entry:string ->
+  (Machine.event list * result, string) Stdlib.result
+(** [run], collecting the events in order. *)
