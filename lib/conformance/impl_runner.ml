@@ -18,15 +18,7 @@ let options (case : Spec_case.t) =
     (match run with Some { max_time = Some t; _ } -> [ "--max-time"; Printf.sprintf "%g" t ] | _ -> []);
   ]
 
-let replace_all ~sub ~by s =
-  let n = String.length sub in
-  let b = Buffer.create (String.length s) in
-  let rec go i =
-    if i > String.length s - n then Buffer.add_string b (String.sub s i (String.length s - i))
-    else if String.sub s i n = sub then (Buffer.add_string b by; go (i + n))
-    else (Buffer.add_char b s.[i]; go (i + 1))
-  in
-  go 0; Buffer.contents b
+let replace_all = Rapid_oracle.Implementation.replace_all
 
 let command ~template (case : Spec_case.t) =
   let with_mode = replace_all ~sub:"{mode}" ~by:(mode case)

@@ -6,6 +6,9 @@ type result = {
   status : [ `Exited of int | `Signaled of int | `Timed_out ];
 }
 
+val replace_all : sub:string -> by:string -> string -> string
+(** Every occurrence of [sub] replaced, left to right, without looking again at what was put in. *)
+
 val command_line : template:string -> files:string list -> string
 (** The shell command for [files]: [{file}] in the template stands for the program's file
     (the first one), [{files}] for all of them, each quoted for the shell; a template with

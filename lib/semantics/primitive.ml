@@ -44,6 +44,16 @@ let rec shape_of_value : V.t -> V.shape = function
   | V.Array es -> S_array (Array.length es, if Array.length es = 0 then S_num else shape_of_value es.(0))
   | V.Handle _ -> S_handle "handle"
 
+(* The argument of the parameter of this name (letter case aside, §2.3): installed routines
+   whose behaviour lives outside this module find their arguments by name. *)
+let named_argument (ctx : context) args name =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let rec find i =
+    if i >= Array.length ctx.parameters || i >= Array.length args then Missing
+    else if same ctx.parameters.(i) name then args.(i)
+    else find (i + 1) in
+  find 0
+
 let value_of = function
   | Value v -> Some v
   | Location (box, i, _) -> Some box.(i)

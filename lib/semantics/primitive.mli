@@ -48,3 +48,7 @@ val call : context -> string -> argument array -> outcome
 
 val modelled : string -> bool
 (** Whether rapid-sem gives this installed routine a body. *)
+
+val named_argument : context -> argument array -> string -> argument
+(** The argument of the callee's parameter of this name ([context.parameters]), letter case
+    aside (§2.3); [Missing] when there is none. *)

@@ -6,12 +6,7 @@ open Primitive
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
-let arg (ctx : context) args name =
-  let rec find i =
-    if i >= Array.length ctx.parameters || i >= Array.length args then Missing
-    else if same ctx.parameters.(i) name then args.(i)
-    else find (i + 1) in
-  find 0
+let arg = named_argument
 
 let present ctx args name = arg ctx args name <> Missing
 
