@@ -7,16 +7,11 @@ let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
 let arg = named_argument
 
-let present ctx args name = arg ctx args name <> Missing
+let present = named_present
 
-let num ctx args name =
-  match arg ctx args name with
-  | Value (V.Num f | V.Dnum f) -> Some f
-  | Location (box, i, _) -> (match box.(i) with V.Num f | V.Dnum f -> Some f | _ -> None)
-  | _ -> None
+let num = named_num
 
-let store ctx args name v =
-  match arg ctx args name with Location (box, i, _) -> box.(i) <- v | _ -> ()
+let store = named_store
 
 (* A signal argument: the identity of the configured signal its object denotes. A signal
    variable of the program that is connected to no signal of the configuration denotes none:

@@ -95,10 +95,10 @@ let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
 let arg = named_argument
 
-let present ctx args name = arg ctx args name <> Missing
+let present = named_present
 let value ctx args name = match arg ctx args name with
   | Value v -> Some v | Location (box, i, _) -> Some box.(i) | Switch -> Some (V.Bool true) | Missing -> None
-let num ctx args name = match value ctx args name with Some (V.Num f | V.Dnum f) -> Some f | _ -> None
+let num = named_num
 let label ctx name = match ctx.argument_label name with Some l -> l | None -> "*"
 
 (* ------------------------------------------------------------------ values and floats *)

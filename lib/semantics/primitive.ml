@@ -54,6 +54,19 @@ let named_argument (ctx : context) args name =
     else find (i + 1) in
   find 0
 
+let named_present ctx args name = named_argument ctx args name <> Missing
+
+(* The number an argument holds, given by value or by reference. *)
+let named_num ctx args name =
+  match named_argument ctx args name with
+  | Value (V.Num f | V.Dnum f) -> Some f
+  | Location (box, i, _) -> (match box.(i) with V.Num f | V.Dnum f -> Some f | _ -> None)
+  | _ -> None
+
+(* A VAR, INOUT or PERS argument written: nothing for an argument not passed by reference. *)
+let named_store ctx args name v =
+  match named_argument ctx args name with Location (box, i, _) -> box.(i) <- v | _ -> ()
+
 let value_of = function
   | Value v -> Some v
   | Location (box, i, _) -> Some box.(i)

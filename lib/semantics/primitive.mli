@@ -52,3 +52,10 @@ val modelled : string -> bool
 val named_argument : context -> argument array -> string -> argument
 (** The argument of the callee's parameter of this name ([context.parameters]), letter case
     aside (§2.3); [Missing] when there is none. *)
+
+val named_present : context -> argument array -> string -> bool
+val named_num : context -> argument array -> string -> float option
+(** The num or dnum an argument holds, by value or by reference. *)
+
+val named_store : context -> argument array -> string -> Value.t -> unit
+(** Writes a reference argument; does nothing to one passed by value or absent. *)

@@ -8,15 +8,15 @@ let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
 let arg = named_argument
 
-let present ctx args name = arg ctx args name <> Missing
+let present = named_present
 
 let value ctx args name = match arg ctx args name with
   | Value v -> Some v | Location (box, i, _) -> Some box.(i) | Switch | Missing -> None
 
-let num ctx args name = match value ctx args name with Some (V.Num f | V.Dnum f) -> Some f | _ -> None
+let num = named_num
 let str ctx args name = match value ctx args name with Some (V.String s) -> Some s | _ -> None
 
-let store ctx args name v = match arg ctx args name with Location (box, i, _) -> box.(i) <- v | _ -> ()
+let store = named_store
 
 let ( let* ) r f = match r with Ok v -> f v | Error name -> Failed name
 let done_ = Returned None

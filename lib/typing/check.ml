@@ -75,24 +75,28 @@ let type_string = function
 
 (* ------------------------------------------------------------------ names *)
 
+(* The sections an unknown name's report cites, by what the name was to be. *)
+let unknown_name_section = function
+  | "data type" -> "2.11,2.12,13"
+  | "function" -> "3.11,5.3,13"
+  | "procedure" -> "4.6,5.3,13"
+  | "trap" -> "4.15,5.3,13"
+  | _ -> "2.20,13"
+
 (* --allow-unknown: every use of an unknown name counted, one warning per name (its first use)
-   when the task is checked. *)
-let unknown_use ctx ?hint region what name =
-  let section = match what with
-    | "data type" -> "2.11,2.12,13"
-    | "function" -> "3.11,5.3,13"
-    | "procedure" -> "4.6,5.3,13"
-    | "trap" -> "4.15,5.3,13"
-    | _ -> "2.20,13" in
+   when the task is checked. The hint ("did you mean") is computed only for a use that becomes
+   the first one: it searches every name in scope. *)
+let unknown_use ctx ~hint region what name =
   let k = (what, key name) in
   let earlier a b =
     let file r = match Source.file_of r with Some f -> Source.name f | None -> "" in
     compare (file a, Source.start_offset a) (file b, Source.start_offset b) < 0 in
+  let section = unknown_name_section what in
   match Hashtbl.find_opt ctx.unknown_uses k with
   | Some (u, _, first_hint) ->
-      let u, hint = if earlier region u.first then ({ u with first = region; name }, hint) else (u, first_hint) in
+      let u, hint = if earlier region u.first then ({ u with first = region; name }, hint ()) else (u, first_hint) in
       Hashtbl.replace ctx.unknown_uses k ({ u with uses = u.uses + 1 }, section, hint)
-  | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section, hint)
+  | None -> Hashtbl.replace ctx.unknown_uses k ({ what; name; first = region; uses = 1 }, section, hint ())
 
 (* The names in scope at [place] of the kind [what] names, innermost first, spelt as declared:
    the candidates of "did you mean" (Suggest). *)
@@ -128,15 +132,10 @@ let unknown_name ctx place region what name =
                                       string_of_int (Source.start_offset r.r_region); what; key name ])
     | None -> None in
   if ctx.options.allow_unknown then
-    unknown_use ctx ?hint:(Suggest.hint name (names_in_scope place what)) region what name
+    unknown_use ctx ~hint:(fun () -> Suggest.hint name (names_in_scope place what)) region what name
   else if not (match k with Some k -> Hashtbl.mem ctx.unknown_reported k | None -> false) then begin
     Option.iter (fun k -> Hashtbl.add ctx.unknown_reported k ()) k;
-    let section = match what with
-      | "data type" -> "2.11,2.12,13"
-      | "function" -> "3.11,5.3,13"
-      | "procedure" -> "4.6,5.3,13"
-      | "trap" -> "4.15,5.3,13"
-      | _ -> "2.20,13" in
+    let section = unknown_name_section what in
     let hint = Suggest.hint name (names_in_scope place what) in
     Report.error ctx.report ?hint ~rule:"unknown-name" ~section region
       (Printf.sprintf "unknown %s %s: it is neither declared nor installed" what name)
