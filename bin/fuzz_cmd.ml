@@ -42,13 +42,13 @@ let cmd =
   let run count seed shard out impl mismatching coverage =
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
-    let external_check = Option.map (fun template source ->
+    let external_check = Option.map (fun template ->
+        let reference = Rapid_oracle.Oracle.self_reference () in
+        fun source ->
         let file = Filename.temp_file "rapid-fuzz" ".mod" in
         Fun.protect ~finally:(fun () -> try Sys.remove file with Sys_error _ -> ()) (fun () ->
             let oc = open_out_bin file in
             output_string oc source; close_out oc;
-            Unix.putenv "RAPID_SEM" Sys.executable_name;
-            let reference = Filename.quote Sys.executable_name ^ " run --json {files}" in
             match Rapid_oracle.Oracle.check ~reference ~impl:template { name = file; files = [ file ] } with
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in

@@ -682,7 +682,7 @@ let spec_cmd =
     let _, failed = match impl with
       | None -> Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir
       | Some template ->
-          Unix.putenv "RAPID_SEM" Sys.executable_name;
+          ignore (Rapid_oracle.Oracle.self_reference ());
           Rapid_conformance.Impl_runner.run ~verbose ?junit ?json:report ~template Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in

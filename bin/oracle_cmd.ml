@@ -31,8 +31,7 @@ let cmd =
     | Ok programs ->
         (* An implementation that wraps rapid-sem (as the tests' deliberately wrong one does)
            finds it here. *)
-        Unix.putenv "RAPID_SEM" Sys.executable_name;
-        let reference = Filename.quote Sys.executable_name ^ " run --json {files}" in
+        let reference = Rapid_oracle.Oracle.self_reference () in
         let agree = ref 0 and differ = ref 0 in
         List.iter (fun p ->
             let v = Rapid_oracle.Oracle.check ~ignore ~timeout ~reference ~impl p in

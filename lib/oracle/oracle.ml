@@ -70,3 +70,7 @@ let verdict_report program = function
   | Agree n -> Printf.sprintf "%s: agree (%d events)\n" program.name n
   | Diverge d -> Event_diff.report ~file:program.name d
   | Broken m -> Printf.sprintf "%s: %s\n" program.name m
+
+let self_reference () =
+  Unix.putenv "RAPID_SEM" Sys.executable_name;
+  Filename.quote Sys.executable_name ^ " run --json {files}"

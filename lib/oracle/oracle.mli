@@ -20,3 +20,7 @@ val check :
     reference is rapid-sem's own [run --json]. *)
 
 val verdict_report : program -> verdict -> string
+
+val self_reference : unit -> string
+(** The reference template of the running rapid-sem ([run --json {files}]); it also sets the
+    environment variable [RAPID_SEM] to this executable, for implementations that wrap it. *)
