@@ -402,8 +402,89 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
               exit_unsupported
           | _ -> finish outcome fuel_used ~max_steps)
 
+(* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
+   (Task_set); each event of --json names its task. *)
+let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot =
+  machine_gc ();
+  let parse_task s =
+    match String.index_opt s '=' with
+    | Some i when i > 0 && i < String.length s - 1 ->
+        Ok (String.sub s 0 i, List.filter (( <> ) "") (String.split_on_char ',' (String.sub s (i + 1) (String.length s - i - 1))))
+    | _ -> Error (Printf.sprintf "rapid-sem: --task %s: expected NAME=FILE[,FILE...]" s) in
+  let parse_entry s =
+    match String.index_opt s '=' with
+    | Some i when i > 0 && i < String.length s - 1 -> Ok (String.sub s 0 i, String.sub s (i + 1) (String.length s - i - 1))
+    | _ -> Error (Printf.sprintf "rapid-sem: --entry %s: with --task, expected NAME=ROUTINE" s) in
+  let all f l = List.fold_right (fun x acc -> match f x, acc with Ok v, Ok vs -> Ok (v :: vs) | Error m, _ | _, Error m -> Error m) l (Ok []) in
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  match all parse_task tasks, all parse_entry entries, read_io controller.io, Motion_cmd.load_robot robot with
+  | Error m, _, _, _ | _, Error m, _, _ | _, _, Error m, _ | _, _, _, Error m -> prerr_endline m; exit_static_error
+  | Ok tasks, Ok entries, Ok io, Ok robot ->
+  let names = List.map fst tasks in
+  let duplicate = List.find_opt (fun n -> List.length (List.filter (same n) names) > 1) names in
+  let unknown_entry = List.find_opt (fun (n, _) -> not (List.exists (same n) names)) entries in
+  match duplicate, unknown_entry with
+  | Some n, _ -> Printf.eprintf "rapid-sem: --task %s is given twice: task names are unique\n" n; exit_static_error
+  | _, Some (n, _) -> Printf.eprintf "rapid-sem: --entry %s=...: there is no task %s\n" n n; exit_static_error
+  | None, None ->
+  let specs = List.map (fun (name, files) ->
+      let entry = match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
+      { Rapid_semantics.Task_set.name; files; entry }) tasks in
+  let world = Rapid_controller.World.create ~statement_time:controller.statement_time
+      ~max_time:controller.max_time ~epoch:controller.epoch io in
+  let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+  match Services_args.install controller.services world with
+  | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+  | Ok () ->
+  let module TS = Rapid_semantics.Task_set in
+  match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
+          ?seed ?motion_task ~world ~motion specs with
+  | Error (Load (name, f)) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
+  | Error (Refused m) -> prerr_endline m; exit_static_error
+  | Ok (ts, warnings) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+      if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
+                                                                 ("tasks", `List (List.map (fun n -> `String n) names)) ]));
+      let with_task name = function
+        | `Assoc fields -> `Assoc (List.hd fields :: ("task", `String name) :: List.tl fields)
+        | j -> j in
+      let rec loop () =
+        if TS.steps ts < max_steps then
+          match TS.step ts with
+          | None -> ()
+          | Some (name, _, events) ->
+              report_stubbed events;
+              List.iter (fun (e : M.event) ->
+                  if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
+                  else match e with Output s -> print_line s | _ -> ()) events;
+              loop ()
+      in
+      loop ();
+      let outcome = TS.outcome ts in
+      if json then begin
+        List.iter (fun (name, cfg) ->
+            print_line (Yojson.Safe.to_string
+                          (match outcome_json (M.outcome cfg) (M.steps cfg) with
+                           | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
+                           | j -> j))) (TS.tasks ts);
+        print_line (Yojson.Safe.to_string (outcome_json outcome (TS.steps ts)))
+      end;
+      flush_output ();
+      finish outcome (TS.steps ts) ~max_steps
+
 let run_cmd =
-  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  let _files, _entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  (* run's own FILE and --entry: with --task, the tasks name their files and entry routines. *)
+  let files = Arg.(value & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer (without --task).") in
+  let entry = Arg.(value & opt_all string [] & info [ "entry" ] ~docv:"[TASK=]ROUTINE"
+                     ~doc:"The entry routine (default main); with --task, TASK=ROUTINE for each task whose entry is not main.") in
+  let tasks = Arg.(value & opt_all string [] & info [ "task" ] ~docv:"NAME=FILE[,FILE...]"
+                     ~doc:"A task of its own (ch. 14): its name and the module files of its task buffer. Repeat for several tasks, all on one virtual clock (doc/user-guide.md, \"Several tasks\"); the first is the motion task unless --motion-task names another.") in
+  let schedule = Arg.(value & opt (some (count ~what:"--schedule")) None & info [ "schedule" ] ~docv:"SEED"
+                        ~doc:"With --task: turns in a pseudo-random order that depends on SEED only (SplitMix64), instead of round robin.") in
+  let motion_task = Arg.(value & opt (some string) None & info [ "motion-task" ] ~docv:"NAME"
+                           ~doc:"With --task: the task that has the robot (default the first task).") in
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
   let save = Arg.(value & opt (some string) None & info [ "save" ] ~docv:"DIR"
                     ~doc:"At the end of the run, write each module to DIR (made if missing) with every PERS \
@@ -411,8 +492,20 @@ let run_cmd =
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
   let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
-  let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
+  let run files entries max_steps allow_unknown max_depth retry_limit json controller robot samples save engine tasks schedule motion_task =
     guard @@ fun () ->
+    if tasks <> [] then begin
+      if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
+      else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)
+      else if save <> None || samples <> None then (prerr_endline "rapid-sem: --save and --samples run one task: not with --task"; exit_static_error)
+      else run_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
+    end
+    else if files = [] then (prerr_endline "rapid-sem: run: required argument FILE is missing (or give --task NAME=FILE)"; exit_static_error)
+    else if schedule <> None || motion_task <> None then (prerr_endline "rapid-sem: --schedule and --motion-task go with --task"; exit_static_error)
+    else match List.find_opt (fun e -> String.contains e '=') entries with
+    | Some e -> Printf.eprintf "rapid-sem: --entry %s: TASK=ROUTINE goes with --task\n" e; exit_static_error
+    | None ->
+    let entry = match List.rev entries with e :: _ -> e | [] -> "main" in
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
@@ -458,7 +551,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
-          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine)
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine $ tasks $ schedule $ motion_task)
 
 module TV = Rapid_semantics.Trace_view
 

@@ -37,11 +37,6 @@ type interrupt = {
   mutable sleeping : bool;
 }
 
-type action =
-  | Set_signal of int * float
-  | Timer_due of int * int            (* number, generation *)
-  | Wake                              (* nothing happens: a wait looks again (wake_at) *)
-
 type clock = { mutable since : int option; mutable total : int }
 
 type wait = {
@@ -52,14 +47,30 @@ type wait = {
   poll : float option;
 }
 
-type t = {
+(* ch. 14: the tasks of a run share the clock, the timed events, the signals and the services;
+   each task has its own interrupts, queue, clocks and observations. [c] is the shared part. *)
+type action =
+  | Set_signal of int * float
+  | Timer_due of t * int * int        (* the task's world, number, generation *)
+  | Wake                              (* nothing happens: a wait looks again (wake_at) *)
+
+and shared = {
   mutable now : int;
+  mutable events : (int * int * action) list;  (* time, sequence, action: sorted *)
+  mutable sequence : int;
+  mutable members : t list;                    (* the tasks, in order of their numbers *)
+  syncs : (string, int) Hashtbl.t;             (* WaitSyncTask: (sync point, task) -> arrivals *)
+}
+
+and t = {
+  c : shared;
+  mutable task_name : string;
+  task_number : int;
+  mutable motion_task : bool;
   statement_time : int;
   max_time : float;
   epoch : float;
   signals : signal array;             (* identity i is signals.(i - 1) *)
-  mutable events : (int * int * action) list;  (* time, sequence, action: sorted *)
-  mutable sequence : int;
   interrupts : (int, interrupt) Hashtbl.t;
   mutable watching : bool;             (* some IPers was ordered: look at persistents *)
   queue : (int * error_datum option) Queue.t;
@@ -73,13 +84,13 @@ type t = {
 }
 
 let schedule w time action =
-  w.sequence <- w.sequence + 1;
-  let entry = (time, w.sequence, action) in
+  w.c.sequence <- w.c.sequence + 1;
+  let entry = (time, w.c.sequence, action) in
   let rec insert = function
     | [] -> [ entry ]
-    | ((t, s, _) as e) :: rest -> if (t, s) > (time, w.sequence) then entry :: e :: rest else e :: insert rest
+    | ((t, s, _) as e) :: rest -> if (t, s) > (time, w.c.sequence) then entry :: e :: rest else e :: insert rest
   in
-  w.events <- insert w.events
+  w.c.events <- insert w.c.events
 
 let observe w o = w.observations <- o :: w.observations
 
@@ -87,20 +98,22 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
     ?(epoch = default_epoch) (config : Io_config.t) =
   let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
-  let w = { now = 0; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
-            events = []; sequence = 0; interrupts = Hashtbl.create 8; watching = false;
+  let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4 } in
+  let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
+            interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
             collisions = config.collisions; services = None } in
+  c.members <- [ w ];
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in
   Array.iteri (fun i s -> Hashtbl.replace ids (String.lowercase_ascii s.s_name) (i + 1)) signals;
-  w.events <- List.filter_map (fun (st : Io_config.stimulus) ->
+  c.events <- List.filter_map (fun (st : Io_config.stimulus) ->
       match Hashtbl.find_opt ids (String.lowercase_ascii st.signal) with
-      | Some id -> w.sequence <- w.sequence + 1; Some (seconds st.time, w.sequence, Set_signal (id, st.value))
+      | Some id -> c.sequence <- c.sequence + 1; Some (seconds st.time, c.sequence, Set_signal (id, st.value))
       | None -> None) config.stimuli;
   w
 
-let now w = to_seconds w.now
+let now w = to_seconds w.c.now
 let collisions w = w.collisions
 
 let set_services w s = w.services <- Some s
@@ -125,7 +138,7 @@ let occur ?datum w number =
         observe w (Interrupt_discarded { time; number; reason = "the interrupt queue is full" })
       else (Queue.add (number, datum) w.queue; observe w (Interrupt_occurred { time; number }))
 
-let signal_changed w id old value =
+let signal_changed_in w id old value =
   Hashtbl.fold (fun n i acc -> (n, i) :: acc) w.interrupts []
   |> List.sort (fun (a, _) (b, _) -> compare a b)
   |> List.iter (fun (n, i) ->
@@ -134,6 +147,9 @@ let signal_changed w id old value =
           if single then i.source <- No_source;
           occur w n
       | _ -> ())
+
+(* A signal is the system's: every task's interrupts on it see the change (ch. 14). *)
+let signal_changed w id old value = List.iter (fun m -> signal_changed_in m id old value) w.c.members
 
 (* ---------------------------------------------------------------- signals *)
 
@@ -158,47 +174,47 @@ let write w id value =
       signal_changed w id old value
   | _ -> ()
 
-let write_later w id value ~delay = schedule w (w.now + max 0 (seconds delay)) (Set_signal (id, value))
+let write_later w id value ~delay = schedule w (w.c.now + max 0 (seconds delay)) (Set_signal (id, value))
 
 (* ---------------------------------------------------------------- time *)
 
 let perform w = function
   | Set_signal (id, v) -> write w id v
-  | Timer_due (n, generation) -> (
+  | Timer_due (w, n, generation) -> (
       match Hashtbl.find_opt w.interrupts n with
       | Some ({ source = Timer { period; single }; _ } as i) when i.generation = generation ->
           if single then i.source <- No_source
-          else schedule w (w.now + period) (Timer_due (n, generation));
+          else schedule w (w.c.now + period) (Timer_due (w, n, generation));
           occur w n
       | _ -> ())
   | Wake -> ()
 
 let advance_us w target =
   let rec go () =
-    match w.events with
+    match w.c.events with
     | (t, _, a) :: rest when t <= target ->
-        w.events <- rest;
-        if t > w.now then w.now <- t;
+        w.c.events <- rest;
+        if t > w.c.now then w.c.now <- t;
         perform w a; go ()
     | _ -> ()
   in
   go ();
-  if target > w.now then w.now <- target
+  if target > w.c.now then w.c.now <- target
 
 let advance_to w time = advance_us w (seconds time)
-let statement w = advance_us w (w.now + w.statement_time)
-let next_event w = match w.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
+let statement w = advance_us w (w.c.now + w.statement_time)
+let next_event w = match w.c.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
 
 (* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
    clock stop there. *)
 let wake_at w time =
-  if Float.is_finite time && time < 1e12 && seconds time > w.now then schedule w (seconds time) Wake
+  if Float.is_finite time && time < 1e12 && seconds time > w.c.now then schedule w (seconds time) Wake
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 
 (* Generations are unique in the run, so that a timer event of a deleted interrupt never matches
    a later interrupt that got the same number. *)
-let fresh_generation w = w.sequence <- w.sequence + 1; w.sequence
+let fresh_generation w = w.c.sequence <- w.c.sequence + 1; w.c.sequence
 
 let connect w ~trap =
   if Hashtbl.length w.interrupts >= max_interrupts then Error "ERR_INOMAX"
@@ -221,7 +237,7 @@ let order_timer w n ~period ~single =
       let p = max 1 (seconds period) in
       i.generation <- fresh_generation w;
       i.source <- Timer { period = p; single };
-      schedule w (w.now + p) (Timer_due (n, i.generation));
+      schedule w (w.c.now + p) (Timer_due (w, n, i.generation));
       Ok ())
 
 let order_signal w n ~signal ~trigger ~single =
@@ -306,12 +322,12 @@ let clock w id =
   | Some c -> c
   | None -> let c = { since = None; total = 0 } in Hashtbl.replace w.clocks id c; c
 
-let elapsed w c = c.total + (match c.since with Some s -> w.now - s | None -> 0)
+let elapsed w c = c.total + (match c.since with Some s -> w.c.now - s | None -> 0)
 
 (* ClkReset stops the clock and sets it to 0 (ABB's ClkReset: "if a clock is running it will be
    stopped and then reset"). *)
 let clock_reset w id = let c = clock w id in c.total <- 0; c.since <- None
-let clock_start w id = let c = clock w id in if c.since = None then c.since <- Some w.now
+let clock_start w id = let c = clock w id in if c.since = None then c.since <- Some w.c.now
 let clock_stop w id = let c = clock w id in c.total <- elapsed w c; c.since <- None
 let clock_read w id = to_seconds (elapsed w (clock w id))
 
@@ -319,3 +335,29 @@ let drain w =
   match w.observations with
   | [] -> []
   | l -> w.observations <- []; List.rev l
+
+(* ---------------------------------------------------------------- tasks (ch. 14) *)
+
+let task_name w = w.task_name
+let task_number w = w.task_number
+let motion_task w = w.motion_task
+let task_names w = List.map (fun m -> m.task_name) w.c.members
+
+let add_task w ~name ~motion =
+  let t = { w with task_name = name; task_number = List.length w.c.members + 1; motion_task = motion;
+                   interrupts = Hashtbl.create 8; watching = false; queue = Queue.create (); disabled = false;
+                   served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
+                   services = Some (services w) } in
+  w.c.members <- w.c.members @ [ t ];
+  t
+
+let name_task w ~name ~motion = w.task_name <- name; w.motion_task <- motion
+
+let sync_key point task = String.lowercase_ascii point ^ "\x00" ^ String.lowercase_ascii task
+
+let sync_arrive w point =
+  let k = sync_key point w.task_name in
+  let n = 1 + Option.value (Hashtbl.find_opt w.c.syncs k) ~default:0 in
+  Hashtbl.replace w.c.syncs k n; n
+
+let sync_arrivals w point ~task = Option.value (Hashtbl.find_opt w.c.syncs (sync_key point task)) ~default:0

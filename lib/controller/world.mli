@@ -174,3 +174,29 @@ val clock_read : t -> int -> float
 
 val drain : t -> observation list
 (** What happened since the last call, in order. *)
+
+(** {1 Tasks (ch. 14)}
+
+    The worlds of the tasks of one run share the virtual clock, the timed events, the signals
+    and the services; each task has its own interrupt numbers and queue, IDisable, clocks and
+    observations. {!create} makes the world of one task, T_ROB1, number 1, the motion task. *)
+
+val task_name : t -> string
+val task_number : t -> int
+(** From 1, in the order the tasks were made. *)
+
+val motion_task : t -> bool
+val task_names : t -> string list
+(** Every task of the run, in order of their numbers. *)
+
+val name_task : t -> name:string -> motion:bool -> unit
+
+val add_task : t -> name:string -> motion:bool -> t
+(** The world of a new task of the same run: the next number, on the same clock. *)
+
+val sync_arrive : t -> string -> int
+(** WaitSyncTask: this task reaches the synchronisation point of this name once more; how many
+    times it has now. *)
+
+val sync_arrivals : t -> string -> task:string -> int
+(** How many times the task of that name has reached the synchronisation point. *)

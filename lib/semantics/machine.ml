@@ -169,6 +169,10 @@ type config = {
      already charged there, the interrupt already taken from the queue, for the step to serve. *)
   mutable charged : bool;
   mutable held : (int * int) option;
+  (* ch. 14: one of several tasks on one clock: a wait with nothing to do yields to the other
+     tasks (the scheduler moves the clock) instead of moving the clock itself. *)
+  cooperative : bool;
+  mutable wake : float option;          (* the time the last wait-yield gave, if any *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
@@ -266,7 +270,8 @@ let charge cfg (act : activation) bytes =
 
 let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
 
-let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(cooperative = false)
+    (program : Ir.program) ~entry =
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
   let program = Motion_primitives.robot_data motion program in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
@@ -338,7 +343,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
           stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
-          backward_depth = -1; charged = false; held = None;
+          backward_depth = -1; charged = false; held = None; cooperative; wake = None;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -473,7 +478,9 @@ let call_primitive cfg (cs : call_state) name =
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
   let ctx = { ctx with argument_label = argument_label cfg cs } in
-  let result = match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
+  let result = match Task_primitives.call ctx name cs.primitive_args with
+    | Some r -> r
+    | None -> match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
     | Some r -> r
     | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
@@ -1079,6 +1086,10 @@ let wait_step cfg ws rest =
           let candidates = List.filter_map Fun.id
               [ ws.wait.deadline; W.next_event w; (if ws.cond = None then None else Some ws.next_poll) ] in
           match List.sort compare candidates with
+          | l when cfg.cooperative ->
+              (* ch. 14: another task may end the wait; the scheduler moves the clock when every
+                 task waits (doc/semantics.md, "Several tasks"). *)
+              cfg.wake <- (match l with t :: _ -> Some t | [] -> None); ("wait-yield", [])
           | [] ->
               cfg.focus <- F_done (Deadlock
                                      (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
@@ -1542,7 +1553,7 @@ let rule_names = [
   "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
   "aggregate-first"; "aggregate-next"; "aggregate"; "local-initial-value";
   "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
-  "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
+  "wait-advance"; "wait-yield"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
   "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
   "done"; "stuck";
@@ -1852,3 +1863,11 @@ let global_slot cfg name =
   Array.iteri (fun i (g : Ir.global) ->
       if !found = None && String.lowercase_ascii g.g_name = n then found := Some (Ir.Global i)) cfg.program.globals;
   !found
+
+(* ------------------------------------------------------------------ several tasks (ch. 14) *)
+
+let wake_time cfg = cfg.wake
+
+let share_global cfg i ~with_:(other, j) =
+  if i >= 0 && i < Array.length cfg.globals && j >= 0 && j < Array.length other.globals then
+    cfg.globals.(i) <- other.globals.(j)

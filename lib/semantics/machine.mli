@@ -74,12 +74,15 @@ val default_limits : limits
 
 val start :
   ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> ?motion:Motion_primitives.state ->
-  Ir.program -> entry:string -> (config, string) result
+  ?cooperative:bool -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure.
     [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
     no-op (a function gives its type's initial value) instead of ending the run as
-    [Unsupported]. *)
+    [Unsupported].
+    [~cooperative] (default false): the task is one of several on one clock (ch. 14); a waiting
+    instruction with nothing to do now steps by "wait-yield" ({!wake_time}) and leaves moving the
+    clock to the scheduler ({!Task_set}). *)
 
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while
@@ -234,3 +237,13 @@ val backward_rule_names : string list
 
 val global_slot : config -> string -> Ir.slot option
 (** The module data object (or installed data object) of that name, case-insensitively (§2.2). *)
+
+(** {1 Several tasks (ch. 14)} *)
+
+val wake_time : config -> float option
+(** After a "wait-yield" step: the earliest time at which the wait can end by itself (a timed
+    event, its deadline, its next poll); [None]: only another task can end it. *)
+
+val share_global : config -> int -> with_:config * int -> unit
+(** Before the run: the module data object of global slot [i] becomes the one of slot [j] of the
+    other task: a system-global persistent shared by both (ch. 14). *)

@@ -1,0 +1,10 @@
+(** The installed routines of several tasks (ch. 14; doc/semantics.md, "Several tasks"):
+    GetTaskName, WaitSyncTask, and ERR_NOT_MOVETASK for a motion instruction in a task that is
+    not the motion task (doc/rulings.md R-14-d to R-14-f). *)
+
+val call : Primitive.context -> string -> Primitive.argument array -> Primitive.outcome option
+(** [None]: not one of these routines (and not refused here). *)
+
+val modelled : string -> bool
+
+val motion_instructions : string list

@@ -1,0 +1,226 @@
+(* Several tasks on one clock (ch. 14; doc/semantics.md, "Several tasks"). Each task is a
+   machine of its own, cooperative: a wait with nothing to do yields. The scheduler gives turns
+   of one statement: a turn runs a task's steps until the next statement is in focus, the task
+   yields or ends. When every running task waits, the clock jumps to the earliest time one of
+   them gave; with none, nothing can ever end the waits: a deadlock. *)
+
+open Rapid_syntax
+module M = Machine
+module W = Rapid_controller.World
+
+type spec = { name : string; files : string list; entry : string }
+
+type task = { t_name : string; cfg : M.config; mutable idle : bool }
+
+type order = Round_robin | Seeded of int64 ref   (* SplitMix64's state *)
+
+type t = {
+  tasks : task array;
+  order : order;
+  mutable cursor : int;                 (* round robin: the next task to look at *)
+  mutable current : task option;        (* the task whose turn it is *)
+  mutable turn_steps : int;
+  mutable ended : M.outcome option;     (* a deadlock or the time limit of the whole run *)
+  world : W.t;                          (* the first task's: the clock is everyone's *)
+}
+
+type failure =
+  | Load of string * Session.failure    (** the task's name and why its buffer was refused *)
+  | Refused of string                   (** FILE:LINE:COL: class: message, or a plain message *)
+
+(* SplitMix64 (Steele, Lea, Flood 2014): a small generator of our own, so that the order of a
+   seed never depends on the version of OCaml's Random. *)
+let splitmix state =
+  state := Int64.add !state 0x9E3779B97F4A7C15L;
+  let z = !state in
+  let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 30)) 0xBF58476D1CE4E5B9L in
+  let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 27)) 0x94D049BB133111EBL in
+  Int64.logxor z (Int64.shift_right_logical z 31)
+
+(* A turn that never brings a statement into focus (an empty loop) still ends. *)
+let max_turn_steps = 1000
+
+let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+(* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
+   nor LOCAL: module, name, type (its name and dimensions), whether it has an initial value. *)
+let system_global_pers (modules : Ast.module_declaration list) =
+  List.concat_map (fun (m : Ast.module_declaration) ->
+      let module_name = match m.module_name.it with Ident s -> s | ID_placeholder -> "" in
+      List.filter_map (fun (d : Ast.data_declaration) ->
+          match d.it with
+          | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ }; dims; initial_value } ->
+              let type_name = match data_type.it with Ident s -> s | ID_placeholder -> "" in
+              let type_text = if dims = [] then type_name
+                else type_name ^ "{" ^ String.concat ", " (List.map Printer.expression dims) ^ "}" in
+              Some (module_name, name, type_text, initial_value <> None, d.at)
+          | _ -> None) m.data_declarations) modules
+
+let global_index (program : Ir.program) ~module_name ~name =
+  let found = ref None in
+  Array.iteri (fun i (g : Ir.global) ->
+      if !found = None && same g.g_module module_name && same g.g_name name then found := Some i)
+    program.globals;
+  !found
+
+type shared_pers = { owner : M.config; slot : int; type_text : string; mutable has_init : bool; task_name : string }
+
+(* ch. 14: one value for every task declaring the persistent with the same name and type; the
+   initial value of the first declaration (in the order of the tasks) that has one, else the
+   type's initial value (R-14-b). A different type is refused (R-14-c). *)
+let share_persistents (tasks : (string * M.config * Ast.module_declaration list) list) =
+  let table = Hashtbl.create 16 in
+  let rec go = function
+    | [] -> Ok ()
+    | (task_name, cfg, modules) :: rest ->
+        let program = M.program cfg in
+        let rec each = function
+          | [] -> go rest
+          | (module_name, name, type_text, has_init, at) :: more -> (
+              match global_index program ~module_name ~name with
+              | None -> each more
+              | Some j -> (
+                  let key = String.lowercase_ascii name in
+                  match Hashtbl.find_opt table key with
+                  | None ->
+                      Hashtbl.replace table key { owner = cfg; slot = j; type_text; has_init; task_name };
+                      each more
+                  | Some p when not (same p.type_text type_text) ->
+                      Error (Refused (Printf.sprintf
+                                        "%s: semantic error: the persistent %s is %s in task %s but %s in task %s: a system-global persistent has one type in every task (ch. 14)"
+                                        (Source.to_string at) name p.type_text p.task_name type_text task_name))
+                  | Some p ->
+                      if has_init && not p.has_init then begin
+                        (match M.read_data cfg (Ir.Global j) with
+                         | Some v -> ignore (M.write_data p.owner (Ir.Global p.slot) v)
+                         | None -> ());
+                        p.has_init <- true
+                      end;
+                      M.share_global cfg j ~with_:(p.owner, p.slot);
+                      each more))
+        in
+        each (system_global_pers modules)
+  in
+  go tasks
+
+let parse_all files =
+  let parsed = List.map (Parse.parse_file ~options:Parse.default_options) files in
+  match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
+  | [] -> Ok (List.filter_map Result.to_option parsed)
+  | errors -> Error (Session.Front_end errors)
+
+let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?io ?seed ?motion_task ~world
+    ~motion (specs : spec list) =
+  let motion_name = match motion_task, specs with
+    | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
+  let rec load acc = function
+    | [] -> Ok (List.rev acc)
+    | (s : spec) :: rest -> (
+        match parse_all s.files with
+        | Error f -> Error (Load (s.name, f))
+        | Ok modules -> (
+            match Session.load_modules ~allow_unknown ?io modules with
+            | Error f -> Error (Load (s.name, f))
+            | Ok loaded -> load ((s, modules, loaded) :: acc) rest))
+  in
+  if specs = [] then Error (Refused "no task to run")
+  else if not (List.exists (fun (s : spec) -> same s.name motion_name) specs) then
+    Error (Refused (Printf.sprintf "the motion task %s is not one of the tasks" motion_name))
+  else
+  match load [] specs with
+  | Error f -> Error f
+  | Ok loaded ->
+      let rec start_all acc first = function
+        | [] -> Ok (List.rev acc)
+        | ((s : spec), modules, (l : Session.loaded)) :: rest -> (
+            let is_motion = same s.name motion_name in
+            let w = if first then (W.name_task world ~name:s.name ~motion:is_motion; world)
+              else W.add_task world ~name:s.name ~motion:is_motion in
+            let motion = if is_motion then motion else Motion_primitives.create () in
+            match M.start ?limits ~world:w ~stub_unmodelled ~motion ~cooperative:true l.program ~entry:s.entry with
+            | Error m -> Error (Refused (Printf.sprintf "task %s: %s" s.name m))
+            | Ok cfg -> start_all ((s.name, cfg, modules, l) :: acc) false rest)
+      in
+      match start_all [] true loaded with
+      | Error f -> Error f
+      | Ok started -> (
+          match share_persistents (List.map (fun (n, c, m, _) -> (n, c, m)) started) with
+          | Error f -> Error f
+          | Ok () ->
+              let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
+              let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
+              let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
+              Ok ({ tasks; order; cursor = 0; current = None; turn_steps = 0; ended = None; world }, warnings))
+
+let running task = M.outcome task.cfg = M.Running
+
+(* The next task to take a turn, among the running tasks that do not wait in vain. *)
+let choose s =
+  let candidates = List.filter (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
+      (List.init (Array.length s.tasks) Fun.id) in
+  match candidates, s.order with
+  | [], _ -> None
+  | _, Round_robin ->
+      let n = Array.length s.tasks in
+      let rec look i = if List.mem (i mod n) candidates then i mod n else look (i + 1) in
+      let k = look s.cursor in
+      s.cursor <- (k + 1) mod n; Some s.tasks.(k)
+  | _, Seeded state ->
+      let r = Int64.unsigned_rem (splitmix state) (Int64.of_int (List.length candidates)) in
+      Some s.tasks.(List.nth candidates (Int64.to_int r))
+
+let waiting_tasks s =
+  Array.to_list s.tasks |> List.filter running |> List.map (fun t -> t.t_name)
+
+(* Every running task waits: the clock moves on to the earliest time one gave (ch. 14, one
+   clock); with none, a deadlock. *)
+let all_wait s =
+  let times = Array.to_list s.tasks |> List.filter running |> List.filter_map (fun t -> M.wake_time t.cfg) in
+  match List.sort compare times with
+  | [] ->
+      s.ended <- Some (M.Deadlock (Printf.sprintf
+                                     "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
+                                     (W.now s.world) (String.concat ", " (waiting_tasks s))))
+  | t :: _ when t > W.max_time s.world ->
+      s.ended <- Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time s.world)))
+  | t :: _ ->
+      W.advance_to s.world t;
+      Array.iter (fun t -> t.idle <- false) s.tasks
+
+let rec step s =
+  if s.ended <> None then None
+  else
+    match s.current with
+    | Some task ->
+        let rule, events = M.step task.cfg in
+        s.turn_steps <- s.turn_steps + 1;
+        if rule = "wait-yield" then (task.idle <- true; s.current <- None)
+        else begin
+          Array.iter (fun t -> t.idle <- false) s.tasks;
+          if not (running task) || M.pointer_statement task.cfg <> None || s.turn_steps >= max_turn_steps then
+            s.current <- None
+        end;
+        Some (task.t_name, rule, events)
+    | None ->
+        if not (Array.exists running s.tasks) then None
+        else (
+          match choose s with
+          | Some task -> s.current <- Some task; s.turn_steps <- 0; step s
+          | None -> all_wait s; step s)
+
+let tasks s = Array.to_list (Array.map (fun t -> (t.t_name, t.cfg)) s.tasks)
+
+let steps s = Array.fold_left (fun n t -> n + M.steps t.cfg) 0 s.tasks
+
+(* The run's outcome: the scheduler's (a deadlock, the time limit), else the first task's, in
+   the order of the tasks, that did not end normally, else Ended. *)
+let outcome s =
+  match s.ended with
+  | Some o -> o
+  | None -> (
+      match Array.to_list s.tasks |> List.map (fun t -> M.outcome t.cfg)
+            |> List.find_opt (fun o -> o <> M.Ended) with
+      | Some o -> o
+      | None -> M.Ended)
+
+let world s = s.world

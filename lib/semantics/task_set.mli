@@ -1,0 +1,45 @@
+(** Several tasks on one virtual clock (ch. 14; doc/semantics.md, "Several tasks").
+
+    Each task is its own task buffer and machine ({!Machine.start} [~cooperative:true]), with its
+    own entry routine, data, error handling, interrupts and waits; their worlds share the clock,
+    the signals and the services ({!Rapid_controller.World.add_task}). System-global persistents
+    (PERS declared neither TASK nor LOCAL) with the same name are one data object for every
+    task that declares them.
+
+    Turns are deterministic, of one statement each: round robin in the order of the tasks, or,
+    with a seed, a pseudo-random order of SplitMix64 that depends on the seed only. *)
+
+type spec = { name : string; files : string list; entry : string }
+
+type t
+
+type failure =
+  | Load of string * Session.failure    (** the task's name and why its buffer was refused *)
+  | Refused of string
+      (** [FILE:LINE:COL: semantic error: ...] (a persistent of two types), or a plain message
+          (no such entry routine, no such motion task) *)
+
+val start :
+  ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  world:Rapid_controller.World.t -> motion:Motion_primitives.state -> spec list ->
+  (t * Rapid_typing.Report.t list, failure) result
+(** The tasks in order, ready to run, and the warnings of their checks. [world] becomes the
+    first task's world; [motion] the motion task's robot ([motion_task], default the first
+    task). *)
+
+val step : t -> (string * string * Machine.event list) option
+(** One reduction step of the task whose turn it is: its name, the rule, the events. [None]
+    when the run is over (every task ended, or {!outcome} says why not). *)
+
+val outcome : t -> Machine.outcome
+(** [Running] while a task runs; then a deadlock or the time limit of the whole run, else the
+    outcome of the first task (in order) that did not end normally, else [Ended]. *)
+
+val tasks : t -> (string * Machine.config) list
+val steps : t -> int
+val world : t -> Rapid_controller.World.t
+(** The clock of the run (the first task's world). *)
+
+val splitmix : int64 ref -> int64
+(** SplitMix64: the next number of the state (the state moves on). *)
