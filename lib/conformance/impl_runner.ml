@@ -91,6 +91,9 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
 let run_case ?(timeout = 60.) ~template (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; passed = false; skipped = true; detail = "format " ^ case.format }
+  else if (match case.run with Some { tasks = _ :: _; _ } -> true | _ -> false) then
+    (* The protocol of doc/oracle.md names the files of one task: several tasks it cannot say. *)
+    { case; passed = false; skipped = true; detail = "several tasks (format 4)" }
   else if case.problems <> [] then
     { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
   else

@@ -28,13 +28,17 @@ and run = {
   statement_time : float option;
   max_time : float option;
   home : string option;
+  tasks : (string * string list) list;
+  schedule : int option;
+  motion_task : string option;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
-               max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None }
+               max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
+               tasks = []; schedule = None; motion_task = None }
 
-let known_formats = [ "1"; "2"; "3" ]
-let checks_semantics case = case.format = "2" || case.format = "3"
+let known_formats = [ "1"; "2"; "3"; "4" ]
+let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
 
 let error_classes = [ "lexical-error"; "syntax-error"; "fatal-error"; "semantic-error" ]
 
@@ -119,6 +123,8 @@ let read path =
         if String.length rest > 0 && rest.[0] = ' ' then String.sub rest 1 (String.length rest - 1) else rest
   in
   let add_problem case m = { case with problems = case.problems @ [ m ] } in
+  (* Format 4: [! @task NAME] in a file of a .task folder: the task whose buffer it belongs to. *)
+  let task_of = ref [] in
   let case = List.fold_left (fun case file ->
       match Result.bind (Result.map_error (fun m -> file ^ ": " ^ m) (readable_file file))
               (fun () -> In_channel_compat.read_lines file) with
@@ -143,6 +149,14 @@ let read path =
                     case (String.split_on_char ' ' v |> List.filter (( <> ) ""))
               | Some ("description", v) -> { case with description = Some v }
               | Some ("format", v) -> { case with format = v }
+              | Some ("task", v) when v <> "" && not (String.contains v ' ') ->
+                  if List.mem_assoc file !task_of then add_problem case (file ^ ": more than one @task")
+                  else (task_of := (file, v) :: !task_of; case)
+              | Some ("schedule", v) -> (
+                  match int_of_string_opt v with
+                  | Some n when n >= 0 -> with_run case (fun r -> { r with schedule = Some n })
+                  | _ -> add_problem case ("bad @schedule " ^ v))
+              | Some ("motion-task", v) when v <> "" -> with_run case (fun r -> { r with motion_task = Some v })
               | Some ("output", _) -> with_run case (fun r -> { r with outputs = r.outputs @ [ output_text line ] })
               | Some ("entry", v) -> with_run case (fun r -> { r with entry = v })
               | Some ("exit", v) -> (
@@ -185,6 +199,20 @@ let read path =
             case lines) empty files
   in
   let case = match !listing_problem with Some m -> add_problem case m | None -> case in
+  (* The tasks in the order their first file comes, each with its files in name order. *)
+  let case =
+    if !task_of = [] then case
+    else if List.exists (fun f -> not (List.mem_assoc f !task_of)) files then
+      add_problem case "in a case of several tasks, every file names its task (@task)"
+    else if case.format <> "4" then add_problem case "@task is format 4"
+    else
+      let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+      let tasks = List.fold_left (fun acc f ->
+          let t = List.assoc f !task_of in
+          if List.exists (fun (n, _) -> same n t) acc then
+            List.map (fun (n, fs) -> if same n t then (n, fs @ [ f ]) else (n, fs)) acc
+          else acc @ [ (t, [ f ]) ]) [] files in
+      with_run case (fun r -> { r with tasks }) in
   let case = if files = [] && !listing_problem = None then add_problem case "a .task folder without modules" else case in
   let case = if case.format = "3" && case.run = None then { case with run = Some no_run } else case in
   let case = if case.expectation = None then add_problem case "no @expect directive" else case in

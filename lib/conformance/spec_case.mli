@@ -38,6 +38,11 @@ and run = {
   statement_time : float option;  (** [! @statement-time SECONDS] *)
   max_time : float option;        (** [! @max-time SECONDS] *)
   home : string option;           (** [! @home FOLDER]: what HOME: holds at the start *)
+  tasks : (string * string list) list;
+      (** format 4: [! @task NAME] in each file of a [.task] folder: the tasks, in the order of
+          their first file, each with its files; empty: one task of every file *)
+  schedule : int option;          (** format 4, [! @schedule SEED]: rapid-sem run --schedule *)
+  motion_task : string option;    (** format 4, [! @motion-task NAME] *)
 }
 
 val read : string -> t
@@ -49,8 +54,8 @@ val readable_file : string -> (unit, string) result
     that cannot be looked at. *)
 
 val known_formats : string list
-(** The formats this runner reads: ["1"] (the front end), ["2"] (the static semantics too) and
-    ["3"] (running the program too). *)
+(** The formats this runner reads: ["1"] (the front end), ["2"] (the static semantics too),
+    ["3"] (running the program too) and ["4"] (several tasks, [@task]). *)
 
 val checks_semantics : t -> bool
 (** Formats 2 and 3: the case is also checked by the static semantics. *)

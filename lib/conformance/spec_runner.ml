@@ -68,13 +68,16 @@ let execute engine case (run : Spec_case.run) ~io program =
       | Error m -> Error m
       | Ok r -> Ok (List.rev !output, r.outcome))
 
-let run_program engine case (run : Spec_case.run) ~io program =
+let rec run_program engine case (run : Spec_case.run) ~io program =
   match execute engine case run ~io program with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
       (* The case needs the controller, which the closure engine leaves to the machine. *)
       { case; verdict = Skipped; detail = "needs the controller: " ^ reason }
-  | Ok (output, outcome) ->
+  | Ok r -> judge case run r
+
+(* The output, exit status and error of a run against those the case expects. *)
+and judge case (run : Spec_case.run) (output, outcome) =
       let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
       let status, error, error_file =
         match (outcome : Rapid_semantics.Machine.outcome) with
@@ -105,6 +108,60 @@ let run_program engine case (run : Spec_case.run) ~io program =
       if problems = [] then pass case (Printf.sprintf "ran: %d lines, exit %d" (List.length output) status)
       else fail case (String.concat "; " problems)
 
+(* The first error of a refused task buffer against the case's expectation; the report must also
+   name one of the sections the case tests. *)
+let compare_static case expected reports =
+  match List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports with
+  | [] -> fail case "refused without an error"
+  | first :: _ -> (
+      match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with
+      | { verdict = Passed; _ } as o
+        when not (List.exists (fun s -> List.mem s case.Spec_case.sections) first.sections) ->
+          { o with verdict = Failed;
+                   detail = Printf.sprintf "right place, but the report cites §%s, and the case tests §%s: %s"
+                       (String.concat ", §" first.sections) (String.concat ", §" case.sections) o.detail }
+      | o -> o)
+
+(* Format 4: several tasks (@task), run as rapid-sem run --task does, by the machine only. *)
+let run_tasks engine case expected (run : Spec_case.run) =
+  let module M = Rapid_semantics.Machine in
+  let module TS = Rapid_semantics.Task_set in
+  if engine = Closure then { case; verdict = Skipped; detail = "several tasks: the machine runs them" }
+  else
+  let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
+  match io with
+  | Error m -> fail case m
+  | Ok io ->
+  let limits = { M.default_limits with retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+  let services = Rapid_controller.Services.create ~sandbox () in
+  Rapid_controller.World.set_services world services;
+  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+  let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
+  let result = TS.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~allow_unknown:case.allow_unknown ~io
+      ?seed:run.schedule ?motion_task:run.motion_task ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs in
+  let verdict = match result with
+    | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
+    | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
+    | Error (Load (_, Static reports)) -> compare_static case expected reports
+    | Error (Load (_, Internal m)) | Error (Refused m) -> fail case m
+    | Ok _ when expected <> Spec_case.Accepted -> accepted case expected
+    | Ok (ts, _) ->
+        let output = ref [] in
+        let rec loop () =
+          if TS.steps ts < max_steps then
+            match TS.step ts with
+            | None -> ()
+            | Some (_, _, events) -> List.iter (function M.Output s -> output := s :: !output | _ -> ()) events; loop ()
+        in
+        loop ();
+        judge case run (List.rev !output, TS.outcome ts)
+  in
+  release (); verdict
+
 let run_case ?(engine = Machine) (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; verdict = Skipped;
@@ -114,6 +171,9 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
   else
     let options = { Parse.default_options with strict = case.strict } in
     let expected = Option.get case.expectation in
+    match case.run with
+    | Some ({ tasks = _ :: _; _ } as run) -> run_tasks engine case expected run
+    | _ ->
     let results = List.map (Parse.parse_file ~options) case.files in
     match List.find_map (function Error d -> Some d | Ok _ -> None) results with
     | Some d -> compare_refusal case expected d
@@ -135,18 +195,7 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
             match case.run, expected with
             | Some run, Spec_case.Accepted -> run_program engine case run ~io loaded.program
             | _ -> accepted case expected)
-        | Error (Static reports) -> (
-            match List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports with
-            | [] -> fail case "refused without an error"
-            | first :: _ -> (
-                (* The report must also name one of the sections the case tests. *)
-                match compare_refusal case expected (Rapid_typing.Report.to_diagnostic first) with
-                | { verdict = Passed; _ } as o
-                  when not (List.exists (fun s -> List.mem s case.sections) first.sections) ->
-                    { o with verdict = Failed;
-                             detail = Printf.sprintf "right place, but the report cites §%s, and the case tests §%s: %s"
-                                 (String.concat ", §" first.sections) (String.concat ", §" case.sections) o.detail }
-                | o -> o)))
+        | Error (Static reports) -> compare_static case expected reports)
 
 (* The cases below [dir], and what could not be looked at (path, reason). Folders are walked
    once each, by their identity, so that a symbolic link that leads back up is reported instead of

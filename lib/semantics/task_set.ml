@@ -86,9 +86,9 @@ let share_persistents (tasks : (string * M.config * Ast.module_declaration list)
                       Hashtbl.replace table key { owner = cfg; slot = j; type_text; has_init; task_name };
                       each more
                   | Some p when not (same p.type_text type_text) ->
-                      Error (Refused (Printf.sprintf
-                                        "%s: semantic error: the persistent %s is %s in task %s but %s in task %s: a system-global persistent has one type in every task (ch. 14)"
-                                        (Source.to_string at) name p.type_text p.task_name type_text task_name))
+                      Error (Load (task_name, Session.Front_end [ Diagnostic.make Semantic_error at (Printf.sprintf
+                                        "the persistent %s is %s in task %s but %s here: a system-global persistent has one type in every task (ch. 14)"
+                                        name p.type_text p.task_name type_text) ]))
                   | Some p ->
                       if has_init && not p.has_init then begin
                         (match M.read_data cfg (Ir.Global j) with

@@ -14,10 +14,10 @@ type spec = { name : string; files : string list; entry : string }
 type t
 
 type failure =
-  | Load of string * Session.failure    (** the task's name and why its buffer was refused *)
-  | Refused of string
-      (** [FILE:LINE:COL: semantic error: ...] (a persistent of two types), or a plain message
-          (no such entry routine, no such motion task) *)
+  | Load of string * Session.failure
+      (** the task's name and why its buffer was refused; a system-global persistent declared
+          with another type than in an earlier task is a semantic error at its declaration *)
+  | Refused of string   (** no such entry routine, no such motion task *)
 
 val start :
   ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
