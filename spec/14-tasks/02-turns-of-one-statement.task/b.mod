@@ -1,0 +1,7 @@
+MODULE turns_b
+! @task T_B
+  PROC main()
+    TPWrite "b1";
+    TPWrite "b2";
+  ENDPROC
+ENDMODULE
