@@ -1,0 +1,158 @@
+(* Several tasks (ch. 14) through the command line: a hand-shake through a system-global
+   persistent, reproducible event streams, the pseudo-random order of --schedule, a deadlock
+   and a persistent declared with two types. *)
+
+let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe"
+
+let temp_dir () =
+  let d = Filename.temp_file "rapid-sem-tasks" "" in
+  Sys.remove d; Unix.mkdir d 0o755; d
+
+let write dir name text =
+  let path = Filename.concat dir name in
+  let oc = open_out_bin path in
+  output_string oc text; close_out oc; path
+
+(* The standard output and exit status of rapid-sem with these arguments. *)
+let run args =
+  let out = Filename.temp_file "rapid-sem-tasks" ".out" in
+  let fd = Unix.openfile out [ O_WRONLY; O_TRUNC ] 0o600 in
+  let devnull = Unix.openfile "/dev/null" [ O_RDWR ] 0 in
+  let pid = Unix.create_process binary (Array.of_list (binary :: args)) devnull fd devnull in
+  let _, status = Unix.waitpid [] pid in
+  Unix.close fd; Unix.close devnull;
+  let ic = open_in_bin out in
+  let text = really_input_string ic (in_channel_length ic) in
+  close_in ic; Sys.remove out;
+  (text, match status with Unix.WEXITED n -> n | _ -> -1)
+
+let lines s = List.filter (( <> ) "") (String.split_on_char '\n' s)
+
+let hand_shake_a = {|MODULE shake_a
+  PERS num state := 0;
+  PROC main()
+    TPWrite "A sets 1";
+    state := 1;
+    WaitUntil state = 2;
+    TPWrite "A saw 2";
+    state := 3;
+  ENDPROC
+ENDMODULE
+|}
+
+let hand_shake_b = {|MODULE shake_b
+  PERS num state;
+  PROC main()
+    WaitUntil state = 1;
+    TPWrite "B saw 1";
+    state := 2;
+    WaitUntil state = 3;
+    TPWrite "B saw 3";
+  ENDPROC
+ENDMODULE
+|}
+
+let shake_args dir =
+  let a = write dir "a.mod" hand_shake_a and b = write dir "b.mod" hand_shake_b in
+  [ "--task"; "T_ROB1=" ^ a; "--task"; "T_B=" ^ b ]
+
+let test_hand_shake () =
+  let dir = temp_dir () in
+  let out, status = run ("run" :: shake_args dir) in
+  Alcotest.(check int) "exit status" 0 status;
+  Alcotest.(check (list string)) "the hand-shake, in order" [ "A sets 1"; "B saw 1"; "A saw 2"; "B saw 3" ] (lines out);
+  (* Whatever the order of turns, the hand-shake orders the output. *)
+  List.iter (fun seed ->
+      let out, status = run ("run" :: "--schedule" :: string_of_int seed :: shake_args dir) in
+      Alcotest.(check int) "exit status, seeded" 0 status;
+      Alcotest.(check (list string)) (Printf.sprintf "the hand-shake, seed %d" seed)
+        [ "A sets 1"; "B saw 1"; "A saw 2"; "B saw 3" ] (lines out)) [ 1; 2; 3; 99 ]
+
+let test_json_reproducible () =
+  let dir = temp_dir () in
+  let once extra = run ("run" :: "--json" :: extra @ shake_args dir) in
+  let first, s1 = once [] and second, s2 = once [] in
+  Alcotest.(check int) "exit status" 0 s1;
+  Alcotest.(check int) "exit status again" 0 s2;
+  Alcotest.(check bool) "byte-identical run --json" true (first = second);
+  let seeded, _ = once [ "--schedule"; "7" ] and seeded', _ = once [ "--schedule"; "7" ] in
+  Alcotest.(check bool) "byte-identical run --json --schedule 7" true (seeded = seeded');
+  (* Every event of a run of several tasks names its task (doc/trace-format.md). *)
+  List.iter (fun l ->
+      let j = Yojson.Safe.from_string l in
+      match j with
+      | `Assoc fields ->
+          let event = match List.assoc_opt "event" fields with Some (`String e) -> e | _ -> "" in
+          if event <> "start" && event <> "end" then
+            Alcotest.(check bool) ("a task in " ^ l) true
+              (match List.assoc_opt "task" fields with Some (`String ("T_ROB1" | "T_B")) -> true | _ -> false)
+      | _ -> Alcotest.fail l) (lines first)
+
+let turns_a = {|MODULE turns_a
+  PROC main()
+    TPWrite "a1";
+    TPWrite "a2";
+    TPWrite "a3";
+  ENDPROC
+ENDMODULE
+|}
+
+let turns_b = {|MODULE turns_b
+  PROC main()
+    TPWrite "b1";
+    TPWrite "b2";
+    TPWrite "b3";
+  ENDPROC
+ENDMODULE
+|}
+
+let test_schedule () =
+  let dir = temp_dir () in
+  let a = write dir "a.mod" turns_a and b = write dir "b.mod" turns_b in
+  let order extra = lines (fst (run ("run" :: "--task" :: ("A=" ^ a) :: "--task" :: ("B=" ^ b) :: extra))) in
+  Alcotest.(check (list string)) "round robin" [ "a1"; "b1"; "a2"; "b2"; "a3"; "b3" ] (order []);
+  let orders = List.map (fun seed -> order [ "--schedule"; string_of_int seed ]) [ 1; 2; 3; 4; 5; 6; 7; 8 ] in
+  List.iter (fun o ->
+      (* Each task's statements keep their order, whatever the interleaving. *)
+      Alcotest.(check (list string)) "A in order" [ "a1"; "a2"; "a3" ] (List.filter (fun s -> s.[0] = 'a') o);
+      Alcotest.(check (list string)) "B in order" [ "b1"; "b2"; "b3" ] (List.filter (fun s -> s.[0] = 'b') o)) orders;
+  Alcotest.(check bool) "seeds give more than one order" true
+    (List.length (List.sort_uniq compare orders) > 1);
+  Alcotest.(check (list string)) "a seed gives its order again" (List.nth orders 2) (order [ "--schedule"; "3" ])
+
+(* SplitMix64's reference output from state 0. *)
+let test_splitmix () =
+  let s = ref 0L in
+  let a = Rapid_semantics.Task_set.splitmix s in
+  let b = Rapid_semantics.Task_set.splitmix s in
+  Alcotest.(check string) "first" "e220a8397b1dcdaf" (Printf.sprintf "%Lx" a);
+  Alcotest.(check string) "second" "6e789e6aa1b965f4" (Printf.sprintf "%Lx" b)
+
+let test_refusals () =
+  let dir = temp_dir () in
+  let a = write dir "a.mod" "MODULE ma\n  PERS num shared := 1;\n  PROC main()\n  ENDPROC\nENDMODULE\n" in
+  let b = write dir "b.mod" "MODULE mb\n  PERS string shared;\n  PROC main()\n  ENDPROC\nENDMODULE\n" in
+  let _, status = run [ "run"; "--task"; "A=" ^ a; "--task"; "B=" ^ b ] in
+  Alcotest.(check int) "a persistent of two types: exit 2" 2 status;
+  let w = write dir "w.mod" "MODULE mw\n  PERS bool lock := TRUE;\n  PROC main()\n    WaitTestAndSet lock;\n  ENDPROC\nENDMODULE\n" in
+  let v = write dir "v.mod" "MODULE mv\n  PERS bool lock;\n  PROC main()\n    WaitTestAndSet lock;\n  ENDPROC\nENDMODULE\n" in
+  let out, status = run [ "run"; "--json"; "--task"; "A=" ^ w; "--task"; "B=" ^ v ] in
+  Alcotest.(check int) "both wait for ever: exit 3" 3 status;
+  Alcotest.(check bool) "the end says deadlock" true
+    (List.exists (fun l -> try ignore (Str.search_forward (Str.regexp_string "\"outcome\":\"deadlock\"") l 0); true
+                   with Not_found -> false) (lines out));
+  let _, status = run [ "run"; "--task"; "A=" ^ a; "--task"; "A=" ^ a ] in
+  Alcotest.(check int) "a task twice: exit 2" 2 status;
+  let _, status = run [ "run"; "--task"; "A=" ^ a; "--entry"; "B=main" ] in
+  Alcotest.(check int) "an entry for no task: exit 2" 2 status;
+  let out, status = run [ "run"; "--task"; "A=" ^ a; "--task"; "B=" ^ write dir "e.mod" "MODULE me\n  PERS num shared;\n  PROC go()\n    TPWrite \"go \" \\Num := shared;\n  ENDPROC\nENDMODULE\n"; "--entry"; "B=go" ] in
+  Alcotest.(check int) "--entry NAME=ROUTINE: exit 0" 0 status;
+  Alcotest.(check (list string)) "the entry routine ran" [ "go 1" ] (lines out)
+
+let suite =
+  ( "tasks",
+    [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
+      Alcotest.test_case "run --json twice is byte-identical" `Quick test_json_reproducible;
+      Alcotest.test_case "round robin and --schedule" `Quick test_schedule;
+      Alcotest.test_case "SplitMix64" `Quick test_splitmix;
+      Alcotest.test_case "refusals and deadlock" `Quick test_refusals ] )
