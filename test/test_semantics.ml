@@ -62,6 +62,19 @@ let rules_in_spec () =
                   Hashtbl.replace used rule path
                 done
             | Error _ -> ())
+      | Some ({ tasks = _ :: _; _ } as run) -> (
+          (* Several tasks (format 4): the rules of every task's steps. *)
+          let module TS = Rapid_semantics.Task_set in
+          let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time
+              Rapid_controller.Io_config.empty in
+          let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
+          match TS.start ?seed:run.schedule ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs with
+          | Error _ -> ()
+          | Ok (ts, _) ->
+              let rec loop n = if n > 0 then match TS.step ts with
+                  | Some (_, rule, _) -> Hashtbl.replace used rule path; loop (n - 1)
+                  | None -> () in
+              loop 1_000_000)
       | _ -> ()) (Rapid_conformance.Spec_runner.find_cases "../spec");
   used
 
