@@ -404,8 +404,8 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
    (Task_set); each event of --json names its task. *)
-let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
-    (retry_limit, max_memory) controller robot =
+let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot k =
   machine_gc ();
   let parse_task s =
     match String.index_opt s '=' with
@@ -444,11 +444,26 @@ let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown
   | Error (Refused m) -> prerr_endline m; exit_static_error
   | Ok (ts, warnings) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+      k ts names
+
+(* The event object of a run of several tasks: its task's name second. *)
+let with_task name = function
+  | `Assoc fields -> `Assoc (List.hd fields :: ("task", `String name) :: List.tl fields)
+  | j -> j
+
+(* One task-end object per task (as the end object of one task), before the run's end. *)
+let task_ends ts =
+  List.iter (fun (name, cfg) ->
+      print_line (Yojson.Safe.to_string
+                    (match outcome_json (M.outcome cfg) (M.steps cfg) with
+                     | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
+                     | j -> j))) (Rapid_semantics.Task_set.tasks ts)
+
+let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
+  let module TS = Rapid_semantics.Task_set in
+  start_tasks ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth retry_limit controller robot @@ fun ts names ->
       if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
-      let with_task name = function
-        | `Assoc fields -> `Assoc (List.hd fields :: ("task", `String name) :: List.tl fields)
-        | j -> j in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
@@ -463,19 +478,14 @@ let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown
       loop ();
       let outcome = TS.outcome ts in
       if json then begin
-        List.iter (fun (name, cfg) ->
-            print_line (Yojson.Safe.to_string
-                          (match outcome_json (M.outcome cfg) (M.steps cfg) with
-                           | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
-                           | j -> j))) (TS.tasks ts);
+        task_ends ts;
         print_line (Yojson.Safe.to_string (outcome_json outcome (TS.steps ts)))
       end;
       flush_output ();
       finish outcome (TS.steps ts) ~max_steps
 
-let run_cmd =
-  let _files, _entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
-  (* run's own FILE and --entry: with --task, the tasks name their files and entry routines. *)
+(* --task, --schedule, --motion-task, and FILE and --entry as they are with them (run, trace). *)
+let tasks_args =
   let files = Arg.(value & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer (without --task).") in
   let entry = Arg.(value & opt_all string [] & info [ "entry" ] ~docv:"[TASK=]ROUTINE"
                      ~doc:"The entry routine (default main); with --task, TASK=ROUTINE for each task whose entry is not main.") in
@@ -485,6 +495,20 @@ let run_cmd =
                         ~doc:"With --task: turns in a pseudo-random order that depends on SEED only (SplitMix64), instead of round robin.") in
   let motion_task = Arg.(value & opt (some string) None & info [ "motion-task" ] ~docv:"NAME"
                            ~doc:"With --task: the task that has the robot (default the first task).") in
+  Term.(const (fun files entries tasks schedule motion_task -> (files, entries, tasks, schedule, motion_task))
+        $ files $ entry $ tasks $ schedule $ motion_task)
+
+(* Without --task: the files are required, and --entry names a routine. *)
+let single_task files entries schedule motion_task k =
+  if files = [] then (prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; exit_static_error)
+  else if schedule <> None || motion_task <> None then (prerr_endline "rapid-sem: --schedule and --motion-task go with --task"; exit_static_error)
+  else match List.find_opt (fun e -> String.contains e '=') entries with
+    | Some e -> Printf.eprintf "rapid-sem: --entry %s: TASK=ROUTINE goes with --task\n" e; exit_static_error
+    | None -> k (match List.rev entries with e :: _ -> e | [] -> "main")
+
+let run_cmd =
+  let _files, _entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+
   let json = Arg.(value & flag & info [ "json" ] ~doc:"Write one JSON object per observable event (doc/trace-format.md) instead of the program's output.") in
   let save = Arg.(value & opt (some string) None & info [ "save" ] ~docv:"DIR"
                     ~doc:"At the end of the run, write each module to DIR (made if missing) with every PERS \
@@ -492,7 +516,7 @@ let run_cmd =
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
   let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
-  let run files entries max_steps allow_unknown max_depth retry_limit json controller robot samples save engine tasks schedule motion_task =
+  let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
@@ -500,12 +524,7 @@ let run_cmd =
       else if save <> None || samples <> None then (prerr_endline "rapid-sem: --save and --samples run one task: not with --task"; exit_static_error)
       else run_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
-    else if files = [] then (prerr_endline "rapid-sem: run: required argument FILE is missing (or give --task NAME=FILE)"; exit_static_error)
-    else if schedule <> None || motion_task <> None then (prerr_endline "rapid-sem: --schedule and --motion-task go with --task"; exit_static_error)
-    else match List.find_opt (fun e -> String.contains e '=') entries with
-    | Some e -> Printf.eprintf "rapid-sem: --entry %s: TASK=ROUTINE goes with --task\n" e; exit_static_error
-    | None ->
-    let entry = match List.rev entries with e :: _ -> e | [] -> "main" in
+    else single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
@@ -550,8 +569,8 @@ let run_cmd =
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
-          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine $ tasks $ schedule $ motion_task)
+    Term.(const run $ tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
+          $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine)
 
 module TV = Rapid_semantics.Trace_view
 
@@ -615,22 +634,31 @@ let change_line (c : TV.change) =
   | Raised _ | Handled _ (* the error's own step says it *) | Write _ | Retried | Next_tried | Routine_entered _ | Routine_left _ | Task_ended -> None
 
 let trace_cmd =
-  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+  let _files, _entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
   let format = Arg.(value & opt (enum [ ("human", `Human); ("jsonl", `Jsonl) ]) `Human & info [ "format" ] ~docv:"FORMAT" ~doc:"$(b,human) or $(b,jsonl) (doc/trace-format.md).") in
   let level = Arg.(value & opt (enum [ ("reduction", `Reduction); ("statement", `Statement) ]) `Reduction & info [ "level" ] ~docv:"LEVEL" ~doc:"$(b,reduction): one line per reduction step (the default); $(b,statement): one line per statement executed, with the changes it made.") in
   let from_ = Arg.(value & opt (count ~what:"--from") 1 & info [ "from" ] ~docv:"N" ~doc:"First step printed.") in
   let to_ = Arg.(value & opt (count ~what:"--to") max_int & info [ "to" ] ~docv:"N" ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN" ~doc:"Print only the steps whose rule name contains PATTERN (reduction level).") in
-  let run files entry max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
+  let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
-    let sampler = match samples with Some hz when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
+    (* One task ([single]), or several (--task): [next] the task about to step (its name with
+       several), [do_step] its step. *)
+    let body ~next ~do_step ~outcome ~steps ~single =
+    let sampler = match samples, single with Some hz, Some _ when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
       let n = String.length p and m = String.length s in
       let rec go i = i + n <= m && (String.sub s i n = p || go (i + 1)) in
       n = 0 || go 0 in
-    let view = TV.create ~read:(fun name -> if name = Parse.stdin_name then Some (Parse.source_text "-") else None) () in
+    let views = Hashtbl.create 4 in
+    let view_of task =
+      match Hashtbl.find_opt views task with
+      | Some v -> v
+      | None ->
+          let v = TV.create ~read:(fun name -> if name = Parse.stdin_name then Some (Parse.source_text "-") else None) () in
+          Hashtbl.replace views task v; v in
+    let view = view_of None in
     let json j = print_line (Yojson.Safe.to_string j) in
     if format = `Jsonl then
       json (`Assoc [ ("schema", `String schema); ("kind", `String "trace");
@@ -692,7 +720,7 @@ let trace_cmd =
       | None -> ()
     in
     let last_state = ref None in
-    let reduction_step (st : TV.step) region kind stack samples =
+    let reduction_step task (st : TV.step) region kind stack samples =
       if st.number >= from_ && st.number <= to_ && (match rules with None -> true | Some p -> contains st.rule p) then
         match format with
         | `Human ->
@@ -709,12 +737,13 @@ let trace_cmd =
               | Some _ -> ""
               | None -> last_state := None; "" in
             let step = Rapid_semantics.Format.display step and state = Rapid_semantics.Format.display state in
-            if state = "" then print_line (Printf.sprintf "%6d %-22s %-24s %s" st.number st.rule (Source.to_string st.at) step)
-            else print_line (Printf.sprintf "%6d %-22s %-24s %-44s%s" st.number st.rule (Source.to_string st.at) step state);
+            let number = match task with Some t -> Printf.sprintf "%s %d" t st.number | None -> Printf.sprintf "%6d" st.number in
+            if state = "" then print_line (Printf.sprintf "%s %-22s %-24s %s" number st.rule (Source.to_string st.at) step)
+            else print_line (Printf.sprintf "%s %-22s %-24s %-44s%s" number st.rule (Source.to_string st.at) step state);
             List.iter (fun c -> match change_line c with
                 | Some l -> print_line ("       " ^ Rapid_semantics.Format.display l) | None -> ()) st.changes
         | `Jsonl ->
-            json (`Assoc [
+            json (`Assoc ((match task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                 ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);
                 ("at", region_json st.at); ("redex", text_json st.redex);
                 ("result", (match st.result with Some r -> text_json r | None -> `Null));
@@ -723,32 +752,52 @@ let trace_cmd =
                 ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region);
                                    ("text", text_json (TV.source_text view region)) ]);
                 ("stack", `List (List.map (fun s -> `String s) stack));
-                ("events", `List (events st @ samples ())) ])
+                ("events", `List (events st @ samples ())) ]))
     in
     let rec loop () =
-      if M.outcome cfg = Running && M.steps cfg < max_steps then begin
+      match next () with
+      | None -> ()
+      | Some (task, cfg) ->
+        let view = view_of task in
         let region = M.focus_region cfg and kind = M.focus_kind cfg and stack = M.stack_view cfg in
         let before = TV.before view cfg in
-        let (_, events) as answer = M.step cfg in
+        let (_, events) as answer = do_step () in
         report_stubbed events;
         let st = TV.after view before cfg answer in
         let samples () = match sampler with
           | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
           | None -> [] in
         (match level with
-         | `Reduction -> reduction_step st region kind stack samples
+         | `Reduction -> reduction_step task st region kind stack samples
          | `Statement -> ignore (samples ()); statement_step st);
         loop ()
-      end
     in
     loop ();
     flush ();
-    Option.iter (fun s -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) sampler;
-    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
-    else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
+    Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
+    let outcome = outcome () and steps = steps () in
+    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json outcome steps))
+    else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);
-    finish (M.outcome cfg) (M.steps cfg) ~max_steps
+        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") steps;
+    finish outcome steps ~max_steps
+    in
+    if tasks <> [] then begin
+      if level = `Statement || samples <> None then
+        (prerr_endline "rapid-sem: trace --task: the reduction level only, without --samples"; exit_static_error)
+      else
+        let module TS = Rapid_semantics.Task_set in
+        start_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json:false allow_unknown max_depth retry_limit controller robot
+        @@ fun ts _ ->
+        body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
+          ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
+          ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:None
+    end
+    else
+      single_task files entries schedule motion_task @@ fun entry ->
+      start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+      body ~next:(fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None)
+        ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg) ~single:(Some cfg)
   in
   let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
@@ -757,7 +806,7 @@ let trace_cmd =
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ level $ from_ $ to_ $ rules $ controller_args
+    Term.(const run $ tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ level $ from_ $ to_ $ rules $ controller_args
           $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg)
 
 let spec_cmd =

@@ -88,6 +88,23 @@ let test_json_reproducible () =
               (match List.assoc_opt "task" fields with Some (`String ("T_ROB1" | "T_B")) -> true | _ -> false)
       | _ -> Alcotest.fail l) (lines first)
 
+(* trace --task: each reduction names its task; the statement level is refused with a message. *)
+let test_trace () =
+  let dir = temp_dir () in
+  let out, status = run ("trace" :: "--format" :: "jsonl" :: shake_args dir) in
+  Alcotest.(check int) "exit status" 0 status;
+  let steps = List.filter_map (fun l ->
+      match Yojson.Safe.from_string l with
+      | `Assoc fields when List.mem_assoc "rule" fields -> Some (List.assoc_opt "task" fields)
+      | _ -> None) (lines out) in
+  Alcotest.(check bool) "reductions" true (steps <> []);
+  Alcotest.(check bool) "every reduction names its task" true
+    (List.for_all (function Some (`String ("T_ROB1" | "T_B")) -> true | _ -> false) steps);
+  Alcotest.(check bool) "both tasks step" true
+    (List.mem (Some (`String "T_B")) steps && List.mem (Some (`String "T_ROB1")) steps);
+  let _, status = run ("trace" :: "--level" :: "statement" :: shake_args dir) in
+  Alcotest.(check int) "statement level with --task: exit 2" 2 status
+
 let turns_a = {|MODULE turns_a
   PROC main()
     TPWrite "a1";
@@ -155,4 +172,5 @@ let suite =
       Alcotest.test_case "run --json twice is byte-identical" `Quick test_json_reproducible;
       Alcotest.test_case "round robin and --schedule" `Quick test_schedule;
       Alcotest.test_case "SplitMix64" `Quick test_splitmix;
+      Alcotest.test_case "trace --task" `Quick test_trace;
       Alcotest.test_case "refusals and deadlock" `Quick test_refusals ] )

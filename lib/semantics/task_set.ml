@@ -187,10 +187,25 @@ let all_wait s =
       W.advance_to s.world t;
       Array.iter (fun t -> t.idle <- false) s.tasks
 
-let rec step s =
+(* The task whose turn it is, chosen now if none is: the clock moves on when every task waits. *)
+let rec next s =
   if s.ended <> None then None
   else
     match s.current with
+    | Some task -> Some (task.t_name, task.cfg)
+    | None ->
+        if not (Array.exists running s.tasks) then None
+        else (
+          match choose s with
+          | Some task -> s.current <- Some task; s.turn_steps <- 0; Some (task.t_name, task.cfg)
+          | None -> all_wait s; next s)
+
+let step s =
+  match next s with
+  | None -> None
+  | Some _ ->
+    match s.current with
+    | None -> None
     | Some task ->
         let rule, events = M.step task.cfg in
         s.turn_steps <- s.turn_steps + 1;
@@ -201,12 +216,6 @@ let rec step s =
             s.current <- None
         end;
         Some (task.t_name, rule, events)
-    | None ->
-        if not (Array.exists running s.tasks) then None
-        else (
-          match choose s with
-          | Some task -> s.current <- Some task; s.turn_steps <- 0; step s
-          | None -> all_wait s; step s)
 
 let tasks s = Array.to_list (Array.map (fun t -> (t.t_name, t.cfg)) s.tasks)
 
