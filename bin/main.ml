@@ -441,7 +441,7 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ?seed ?motion_task ~world ~motion specs with
   | Error (Load (name, f)) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
-  | Error (Refused m) -> prerr_endline m; exit_static_error
+  | Error (Refused m) -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
   | Ok (ts, warnings) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
       k ts names
