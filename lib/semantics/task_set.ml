@@ -103,6 +103,24 @@ let share_persistents (tasks : (string * M.config * Ast.module_declaration list)
   in
   go tasks
 
+(* ch. 14: an installed data object is one for every task ("所有其他数据对象与其他任务共享值"), except
+   ERRNO and INTNO, whose values are each task's (R-14-g). Installed: a global of a module that
+   is not one of the task's own. *)
+let share_installed (tasks : (string * M.config * Ast.module_declaration list) list) =
+  match tasks with
+  | [] -> ()
+  | (_, first, _) :: rest ->
+      let first_program = M.program first in
+      List.iter (fun (_, cfg, modules) ->
+          let own = List.filter_map (fun (m : Ast.module_declaration) ->
+              match m.module_name.it with Ident s -> Some (String.lowercase_ascii s) | ID_placeholder -> None) modules in
+          let program = M.program cfg in
+          Array.iteri (fun i (g : Ir.global) ->
+              if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then
+                match global_index first_program ~module_name:g.g_module ~name:g.g_name with
+                | Some j when j <> first_program.errno && j <> first_program.intno -> M.share_global cfg i ~with_:(first, j)
+                | _ -> ()) program.globals) rest
+
 let parse_all files =
   let parsed = List.map (Parse.parse_file ~options:Parse.default_options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
@@ -144,7 +162,9 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?io ?seed 
       match start_all [] true loaded with
       | Error f -> Error f
       | Ok started -> (
-          match share_persistents (List.map (fun (n, c, m, _) -> (n, c, m)) started) with
+          let triples = List.map (fun (n, c, m, _) -> (n, c, m)) started in
+          share_installed triples;
+          match share_persistents triples with
           | Error f -> Error f
           | Ok () ->
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
