@@ -31,11 +31,12 @@ and run = {
   tasks : (string * string list) list;
   schedule : int option;
   motion_task : string option;
+  task_entries : (string * string) list;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
                max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
-               tasks = []; schedule = None; motion_task = None }
+               tasks = []; schedule = None; motion_task = None; task_entries = [] }
 
 let known_formats = [ "1"; "2"; "3"; "4" ]
 let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
@@ -158,7 +159,13 @@ let read path =
                   | _ -> add_problem case ("bad @schedule " ^ v))
               | Some ("motion-task", v) when v <> "" -> with_run case (fun r -> { r with motion_task = Some v })
               | Some ("output", _) -> with_run case (fun r -> { r with outputs = r.outputs @ [ output_text line ] })
-              | Some ("entry", v) -> with_run case (fun r -> { r with entry = v })
+              | Some ("entry", v) -> (
+                  (* Format 4: [@entry TASK=ROUTINE], the entry routine of one task. *)
+                  match String.index_opt v '=' with
+                  | Some i when i > 0 && i < String.length v - 1 ->
+                      with_run case (fun r -> { r with task_entries = r.task_entries @ [ (String.sub v 0 i, String.sub v (i + 1) (String.length v - i - 1)) ] })
+                  | Some _ -> add_problem case ("bad @entry " ^ v)
+                  | None -> with_run case (fun r -> { r with entry = v }))
               | Some ("exit", v) -> (
                   match int_of_string_opt v with
                   | Some n -> with_run case (fun r -> { r with exit_status = n })
@@ -213,6 +220,10 @@ let read path =
             List.map (fun (n, fs) -> if same n t then (n, fs @ [ f ]) else (n, fs)) acc
           else acc @ [ (t, [ f ]) ]) [] files in
       with_run case (fun r -> { r with tasks }) in
+  let case = match case.run with
+    | Some { task_entries = (t, _) :: _; tasks; _ } when not (List.exists (fun (n, _) -> String.lowercase_ascii n = String.lowercase_ascii t) tasks) ->
+        add_problem case (Printf.sprintf "@entry %s=...: no file names the task %s (@task)" t t)
+    | _ -> case in
   let case = if files = [] && !listing_problem = None then add_problem case "a .task folder without modules" else case in
   let case = if case.format = "3" && case.run = None then { case with run = Some no_run } else case in
   let case = if case.expectation = None then add_problem case "no @expect directive" else case in

@@ -43,6 +43,8 @@ and run = {
           their first file, each with its files; empty: one task of every file *)
   schedule : int option;          (** format 4, [! @schedule SEED]: rapid-sem run --schedule *)
   motion_task : string option;    (** format 4, [! @motion-task NAME] *)
+  task_entries : (string * string) list;
+      (** format 4, [! @entry TASK=ROUTINE]: that task's entry routine (the others: [entry]) *)
 }
 
 val read : string -> t

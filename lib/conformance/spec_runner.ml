@@ -140,7 +140,10 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let services = Rapid_controller.Services.create ~sandbox () in
   Rapid_controller.World.set_services world services;
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
-  let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
+    | Some (_, r) -> r | None -> run.entry in
+  let specs = List.map (fun (name, files) -> { TS.name; files; entry = entry_of name }) run.tasks in
   let result = TS.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~allow_unknown:case.allow_unknown ~io
       ?seed:run.schedule ?motion_task:run.motion_task ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs in
   let verdict = match result with
