@@ -166,11 +166,37 @@ let test_refusals () =
   Alcotest.(check int) "--entry NAME=ROUTINE: exit 0" 0 status;
   Alcotest.(check (list string)) "the entry routine ran" [ "go 1" ] (lines out)
 
+(* The worlds of two tasks: one clock and the signals shared, interrupts each task's. *)
+let test_worlds () =
+  let module W = Rapid_controller.World in
+  let io = match Rapid_controller.Io_config.parse ~file:"t.io" "signal do1 DO\n" with
+    | Ok io -> io | Error m -> Alcotest.fail m in
+  let a = W.create ~statement_time:0. io in
+  let b = W.add_task a ~name:"T_B" ~motion:false in
+  Alcotest.(check (list string)) "tasks" [ "T_ROB1"; "T_B" ] (W.task_names a);
+  Alcotest.(check int) "numbers" 2 (W.task_number b);
+  Alcotest.(check bool) "motion" true (W.motion_task a && not (W.motion_task b));
+  let n = match W.connect b ~trap:7 with Ok n -> n | Error e -> Alcotest.fail e in
+  (match W.order_timer b n ~period:1. ~single:true with Ok () -> () | Error e -> Alcotest.fail e);
+  Alcotest.(check bool) "A's number is free in A" false (W.connected a n);
+  W.advance_to a 1.5;
+  Alcotest.(check (float 1e-9)) "one clock" 1.5 (W.now b);
+  Alcotest.(check bool) "A takes nothing" true (W.take a = None);
+  Alcotest.(check (option (pair int int))) "B's timer" (Some (n, 7)) (W.take b);
+  let id = match W.find_signal a "do1" with Some i -> i | None -> Alcotest.fail "do1" in
+  W.write a id 1.;
+  Alcotest.(check (float 0.)) "one signal" 1. (W.read b id);
+  Alcotest.(check int) "A arrives" 1 (W.sync_arrive a "meet");
+  Alcotest.(check int) "B has not" 0 (W.sync_arrivals a "MEET" ~task:"t_b");
+  ignore (W.sync_arrive b "Meet");
+  Alcotest.(check int) "B has" 1 (W.sync_arrivals a "meet" ~task:"T_B")
+
 let suite =
   ( "tasks",
     [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
       Alcotest.test_case "run --json twice is byte-identical" `Quick test_json_reproducible;
       Alcotest.test_case "round robin and --schedule" `Quick test_schedule;
       Alcotest.test_case "SplitMix64" `Quick test_splitmix;
+      Alcotest.test_case "the worlds of two tasks" `Quick test_worlds;
       Alcotest.test_case "trace --task" `Quick test_trace;
       Alcotest.test_case "refusals and deadlock" `Quick test_refusals ] )
