@@ -674,6 +674,8 @@ let trace_cmd =
     (* A line is a statement's, or, before a routine's first statement, its routine data's. *)
     let module Ir = Rapid_semantics.Ir in
     let line : (int * Ir.routine * Ir.stmt option * int * TV.change list) option ref = ref None in
+    (* With several tasks: the task of the line being built; a step of another task ends it. *)
+    let line_task : string option ref = ref None in
     let flush () =
       match !line with
       | None -> ()
@@ -689,16 +691,17 @@ let trace_cmd =
             match format with
             | `Human ->
                 let shown = List.filter_map change_text changes in
+                let place = match !line_task with Some t -> t ^ " " ^ place | None -> place in
                 print_line @@ Printf.sprintf "%s%s%s%s%s" place (String.make (max 2 (20 - String.length place)) ' ')
                   (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_semantics.Format.display text)
                   (if shown = [] then "" else "   " ^ Rapid_semantics.Format.display (String.concat "; " shown))
             | `Jsonl ->
-                json (`Assoc [
+                json (`Assoc ((match !line_task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                     ("statement", `String place);
                     ("step", `Int first); ("depth", `Int depth); ("routine", `String routine.name);
                     ("at", region_json at); ("text", text_json text);
                     ("writes", `List (List.filter_map write_json changes));
-                    ("events", `List (List.filter_map change_json changes)) ])
+                    ("events", `List (List.filter_map change_json changes)) ]))
           end
     in
     let statement_step (st : TV.step) =
@@ -770,7 +773,10 @@ let trace_cmd =
           | None -> [] in
         (match level with
          | `Reduction -> reduction_step task st region kind stack samples
-         | `Statement -> ignore (samples ()); statement_step st);
+         | `Statement ->
+             ignore (samples ());
+             if task <> !line_task then (flush (); line_task := task);
+             statement_step st);
         loop ()
     in
     loop ();
@@ -784,8 +790,8 @@ let trace_cmd =
     finish outcome steps ~max_steps
     in
     if tasks <> [] then begin
-      if level = `Statement || samples <> None then
-        (prerr_endline "rapid-sem: trace --task: the reduction level only, without --samples"; exit_static_error)
+      if samples <> None then
+        (prerr_endline "rapid-sem: trace --task: not with --samples (one task's robot)"; exit_static_error)
       else
         let module TS = Rapid_semantics.Task_set in
         start_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json:false allow_unknown max_depth retry_limit controller robot

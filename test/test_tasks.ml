@@ -88,7 +88,7 @@ let test_json_reproducible () =
               (match List.assoc_opt "task" fields with Some (`String ("T_ROB1" | "T_B")) -> true | _ -> false)
       | _ -> Alcotest.fail l) (lines first)
 
-(* trace --task: each reduction names its task; the statement level is refused with a message. *)
+(* trace --task: each reduction and each statement line names its task. *)
 let test_trace () =
   let dir = temp_dir () in
   let out, status = run ("trace" :: "--format" :: "jsonl" :: shake_args dir) in
@@ -102,8 +102,15 @@ let test_trace () =
     (List.for_all (function Some (`String ("T_ROB1" | "T_B")) -> true | _ -> false) steps);
   Alcotest.(check bool) "both tasks step" true
     (List.mem (Some (`String "T_B")) steps && List.mem (Some (`String "T_ROB1")) steps);
-  let _, status = run ("trace" :: "--level" :: "statement" :: shake_args dir) in
-  Alcotest.(check int) "statement level with --task: exit 2" 2 status
+  let out, status = run ("trace" :: "--level" :: "statement" :: shake_args dir) in
+  Alcotest.(check int) "statement level: exit 0" 0 status;
+  (* One line per statement, its task first; WaitUntil's line before the other task's write. *)
+  let tasks_of_lines = List.filter_map (fun l ->
+      match String.index_opt l ' ' with Some i when l.[0] = 'T' -> Some (String.sub l 0 i) | _ -> None) (lines out) in
+  Alcotest.(check (list string)) "the tasks of the statement lines"
+    [ "T_ROB1"; "T_B"; "T_ROB1"; "T_ROB1"; "T_B"; "T_B"; "T_B"; "T_ROB1"; "T_ROB1"; "T_B" ] tasks_of_lines;
+  let _, status = run ("trace" :: "--samples" :: "10" :: shake_args dir) in
+  Alcotest.(check int) "--samples with --task: exit 2" 2 status
 
 let turns_a = {|MODULE turns_a
   PROC main()
