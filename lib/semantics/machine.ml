@@ -478,7 +478,8 @@ let call_primitive cfg (cs : call_state) name =
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
   let ctx = { ctx with argument_label = argument_label cfg cs } in
-  let result = match Task_primitives.call ctx name cs.primitive_args with
+  let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner cfg.motion) in
+  let result = match Task_primitives.call ~standstill ctx name cs.primitive_args with
     | Some r -> r
     | None -> match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
     | Some r -> r

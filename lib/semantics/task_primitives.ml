@@ -28,7 +28,7 @@ let task_list = function
       | _ -> None)
   | _ -> None
 
-let call ctx name args =
+let call ?(standstill = fun () -> neg_infinity) ctx name args =
   let w = ctx.world in
   (* Every primitive call passes here: in the motion task, only the two routines of this module
      (11 and 12 characters long) need a look. *)
@@ -59,8 +59,17 @@ let call ctx name args =
         let installed = W.task_names w in
         if List.exists (fun t -> not (List.exists (same t) installed)) tasks then Some (Failed "ERR_TASKNAME")
         else begin
-          let round = W.sync_arrive w point in
-          let satisfied () = List.for_all (fun t -> W.sync_arrivals w point ~task:t >= round) tasks in
+          (* \InPos in the motion task: the robot stands still before the task arrives (R-14-f). *)
+          let in_pos = named_present ctx args "InPos" && W.motion_task w in
+          let reached t = W.seconds (W.now w) >= W.seconds t in
+          let round = ref 0 in
+          let arrive () =
+            if !round > 0 then true
+            else
+              let t = standstill () in
+              if (not in_pos) || t = neg_infinity || reached t then (round := W.sync_arrive w point; true)
+              else (W.wake_at w t; false) in
+          let satisfied () = arrive () && List.for_all (fun t -> W.sync_arrivals w point ~task:t >= !round) tasks in
           let deadline = Option.map (fun t -> W.now w +. t) (named_num ctx args "TimeOut") in
           match named_num ctx args "TimeOut" with
           | Some t when t < 0. || not (Float.is_finite t) -> Some (Failed "ERR_ARGVALERR")
