@@ -165,6 +165,9 @@ let test_refusals () =
   Alcotest.(check bool) "the end says deadlock" true
     (List.exists (fun l -> try ignore (Str.search_forward (Str.regexp_string "\"outcome\":\"deadlock\"") l 0); true
                    with Not_found -> false) (lines out));
+  Alcotest.(check bool) "the reason names each task and its wait" true
+    (List.exists (fun l -> try ignore (Str.search_forward (Str.regexp_string "(A for a semaphore set by nobody else; B for a semaphore") l 0); true
+                   with Not_found -> false) (lines out));
   let _, status = run [ "run"; "--task"; "A=" ^ a; "--task"; "A=" ^ a ] in
   Alcotest.(check int) "a task twice: exit 2" 2 status;
   let _, status = run [ "run"; "--task"; "A=" ^ a; "--entry"; "B=main" ] in

@@ -1869,6 +1869,8 @@ let global_slot cfg name =
 
 let wake_time cfg = cfg.wake
 
+let waiting_for cfg = match cfg.stack with K_wait ws :: _ | K_poll ws :: _ -> Some ws.wait.what | _ -> None
+
 let share_global cfg i ~with_:(other, j) =
   if i >= 0 && i < Array.length cfg.globals && j >= 0 && j < Array.length other.globals then
     cfg.globals.(i) <- other.globals.(j)

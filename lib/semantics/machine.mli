@@ -244,6 +244,10 @@ val wake_time : config -> float option
 (** After a "wait-yield" step: the earliest time at which the wait can end by itself (a timed
     event, its deadline, its next poll); [None]: only another task can end it. *)
 
+val waiting_for : config -> string option
+(** What the task waits for, when a waiting instruction is in progress (for a deadlock's
+    message). *)
+
 val share_global : config -> int -> with_:config * int -> unit
 (** Before the run: the module data object of global slot [i] becomes the one of slot [j] of the
     other task: a system-global persistent shared by both (ch. 14). *)

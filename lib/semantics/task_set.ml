@@ -190,7 +190,10 @@ let choose s =
       Some s.tasks.(List.nth candidates (Int64.to_int r))
 
 let waiting_tasks s =
-  Array.to_list s.tasks |> List.filter running |> List.map (fun t -> t.t_name)
+  Array.to_list s.tasks |> List.filter running
+  |> List.map (fun t -> match M.waiting_for t.cfg with
+      | Some what -> t.t_name ^ " for " ^ what
+      | None -> t.t_name)
 
 (* Every running task waits: the clock moves on to the earliest time one gave (ch. 14, one
    clock); with none, a deadlock. *)
@@ -200,7 +203,7 @@ let all_wait s =
   | [] ->
       s.ended <- Some (M.Deadlock (Printf.sprintf
                                      "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
-                                     (W.now s.world) (String.concat ", " (waiting_tasks s))))
+                                     (W.now s.world) (String.concat "; " (waiting_tasks s))))
   | t :: _ when t > W.max_time s.world ->
       s.ended <- Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time s.world)))
   | t :: _ ->
