@@ -51,9 +51,7 @@ let system_global_pers (modules : Ast.module_declaration list) =
           match d.it with
           | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ }; dims; initial_value } ->
               let type_name = match data_type.it with Ident s -> s | ID_placeholder -> "" in
-              let type_text = if dims = [] then type_name
-                else type_name ^ "{" ^ String.concat ", " (List.map Printer.expression dims) ^ "}" in
-              Some (module_name, name, type_text, initial_value <> None, d.at)
+              Some (module_name, name, type_name, List.length dims, initial_value <> None, d.at)
           | _ -> None) m.data_declarations) modules
 
 let global_index (program : Ir.program) ~module_name ~name =
@@ -76,10 +74,20 @@ let share_persistents (tasks : (string * M.config * Ast.module_declaration list)
         let program = M.program cfg in
         let rec each = function
           | [] -> go rest
-          | (module_name, name, type_text, has_init, at) :: more -> (
+          | (module_name, name, type_name, ndims, has_init, at) :: more -> (
               match global_index program ~module_name ~name with
               | None -> each more
               | Some j -> (
+                  (* The type: its name and, for an array, the sizes its value has (a dimension
+                     may be written as a constant in one task and a literal in another). *)
+                  let rec sizes v n = match v, n with
+                    | Value.Array es, n when n > 0 ->
+                        Array.length es :: (if Array.length es > 0 then sizes es.(0) (n - 1) else [])
+                    | _ -> [] in
+                  let type_text = match M.read_data cfg (Ir.Global j) with
+                    | Some v when ndims > 0 ->
+                        type_name ^ "{" ^ String.concat ", " (List.map string_of_int (sizes v ndims)) ^ "}"
+                    | _ -> type_name in
                   let key = String.lowercase_ascii name in
                   match Hashtbl.find_opt table key with
                   | None ->
