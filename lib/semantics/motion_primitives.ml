@@ -62,6 +62,7 @@ type state = {
   mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
   mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
   mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
+  mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
 }
 
 let dummy = V.Bool false
@@ -70,7 +71,8 @@ let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
-    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [] }
+    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [];
+    async_raised = false }
 
 let planner st = st.planner
 
@@ -214,7 +216,7 @@ let until ?move ctx ~what time =
     match move with
     | Some (st, (id, key)) when async_here () ->
         let a = Option.get st.async in
-        st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
+        st.async <- None; st.interrupted <- Some (id, key); st.async_raised <- true; Some a.a_name
     | _ -> None in
   let self = ref None in
   let finish ~timed_out =
@@ -289,7 +291,7 @@ let move ctx st name args =
       | None, _, _ -> Failed "ERR_ARGVALERR"
       | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
           (* §7.4: the error waits for the next move instruction, and is raised there. *)
-          st.async <- None; Failed a.a_name
+          st.async <- None; st.async_raised <- true; Failed a.a_name
       | Some _, _, Some (id, _) ->
           (* RETRY of the move the asynchronous error was raised at: its path is still there
              (StartMove goes on with it); the move is not planned twice. *)
@@ -492,8 +494,12 @@ let take_org_error st =
   match st.async with
   | Some { a_mode = Sync_org; a_name; a_move } ->
       (* Raised at the move instruction the program pointer waits in: its RETRY waits again. *)
-      st.async <- None; st.interrupted <- st.waiting; st.waiting <- None; Some (a_name, a_move)
+      (* The program pointer is kept (R-7.4-m): a move instruction it waits in goes on waiting
+         after RETRY or TRYNEXT. *)
+      st.async <- None; Some (a_name, a_move)
   | _ -> None
+
+let take_async_raised st = let r = st.async_raised in st.async_raised <- false; r
 
 let take_new_move st = let l = st.new_move in st.new_move <- None; l
 

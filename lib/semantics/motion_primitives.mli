@@ -55,6 +55,10 @@ val drain : state -> Rapid_controller.World.t -> event list
 val finish : state -> event list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
+val take_async_raised : state -> bool
+(** Whether the failure a move instruction just gave is a \SyncLastMoveInst error (§7.4), once:
+    its handler's TRYNEXT executes as RETRY. *)
+
 val take_new_move : state -> int option
 (** The move the last primitive planned, once: the machine records which routine activation
     executed it, to raise its asynchronous errors there (§7.4, §7.6). *)
