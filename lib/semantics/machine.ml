@@ -1625,6 +1625,8 @@ let rule_names = [
   "wait-advance"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
   "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
+  "async-error-unhandled"; "async-retry-resume"; "async-trynext-resume"; "async-exit"; "async-handler-leave";
+  "async-error-at-move";
   "done"; "stuck";
 ]
 
