@@ -412,9 +412,14 @@ let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
    level: \HighLevel, \LowLevel) SearchPoint takes the robot's position; with \Stop, \PStop or
    \SStop the robot stands there and the rest of the path is dropped, otherwise it goes on to
    ToPoint. No hit by the end of the move: ERR_WHLSEARCH. *)
-let search ctx st args =
+let search ctx st name args =
   let w = ctx.world in
   let get n = value ctx args n in
+  (* SearchJ: a joint move; SearchC: a circular one through CirPoint (ABB, RAPID Instructions). *)
+  let path target = match String.lowercase_ascii name with
+    | "searchj" -> Some (P.Joint (robtarget_of target))
+    | "searchc" -> Option.map (fun c -> P.Circular (robtarget_of c, robtarget_of target)) (get "CirPoint")
+    | _ -> Some (P.Linear (robtarget_of target)) in
   let signal = match arg ctx args "Signal" with
     | Location (box, i, _) -> (
         match box.(i) with
@@ -423,7 +428,7 @@ let search ctx st args =
     | _ -> None in
   match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
   | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
-  | Some id, Some target, Some speed, Some tool, Location (box, i, _) -> (
+  | Some id, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
       let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
       let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
       let hit ~old ~now =
@@ -437,16 +442,16 @@ let search ctx st args =
       let target_label = label ctx "ToPoint" in
       let fine = Option.get (D.find D.zonedata "fine") in
       let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
-          ~label:target_label (speed_of speed) fine (P.Linear (robtarget_of target)) in
+          ~label:target_label (speed_of speed) fine (Option.get (path target)) in
       let now = W.now w in
       match P.plan st.planner ~now m with
-      | Error e -> fail ctx "SearchL" e
+      | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
-          emit st (Segment_planned { time = now; id = move; instruction = "SearchL"; label = target_label;
+          emit st (Segment_planned { time = now; id = move; instruction = name; label = target_label;
                                      zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
                                      joints; ready_time; start_time; end_time });
           st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
@@ -462,7 +467,7 @@ let search ctx st args =
                  | Error _ -> ())
              | Error _ -> ());
             if stops then (P.clear st.planner ~at:t; st.dirty <- true;
-                           emit st (Path_command { time = t; command = "SearchL stop" })) in
+                           emit st (Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
             let v = W.read w id in
@@ -476,7 +481,7 @@ let search ctx st args =
             end in
           let finish ~timed_out:_ = if !found then None else Some "ERR_WHLSEARCH" in
           if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
-          else Wait { W.what = "the robot (SearchL " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
+          else Wait { W.what = "the robot (" ^ name ^ " " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
   | _ -> Failed "ERR_ARGVALERR"
 
 (* ------------------------------------------------------------------ the routines *)
@@ -484,7 +489,7 @@ let search ctx st args =
 let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
 ]
 
@@ -525,7 +530,7 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
-  | "searchl" -> Some (search ctx st args)
+  | "searchl" | "searchj" | "searchc" -> Some (search ctx st name args)
   | "waittime" when present ctx args "InPos" -> (
       match num ctx args "Time" with
       | Some t when t >= 0. && Float.is_finite t ->
