@@ -63,6 +63,7 @@ type state = {
   mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
   mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
+  mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
 }
 
 let dummy = V.Bool false
@@ -72,7 +73,7 @@ let create ?(robot = MM.Robot.irb120) () =
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [];
-    async_raised = false }
+    async_raised = false; conc_run = 0 }
 
 let planner st = st.planner
 
@@ -267,6 +268,8 @@ let check st ~now =
 
 let active_tool st = if st.tool == dummy then None else Some st.tool
 
+let max_conc = 5
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
@@ -287,8 +290,14 @@ let move ctx st name args =
         | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) st.tracks -> st.interrupted <- None; None
         | Some (_, k) as i when k = key -> st.interrupted <- None; i
         | _ -> None in
+      (* At most five \Conc moves in a row (ABB, MoveL \Conc; installed-facts.md section 5): a
+         run ends at a move without \Conc, or when the robot has done all it was given
+         (R-4.1-m). The sixth is refused before it is planned. *)
+      let conc = present ctx args "Conc" in
+      if (not conc) || reached w (P.finished_by st.planner) then st.conc_run <- 0;
       match motion, st.async, interrupted with
       | None, _, _ -> Failed "ERR_ARGVALERR"
+      | Some _, None, None when conc && st.conc_run >= max_conc -> Failed "ERR_CONC_MAX"
       | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
           (* §7.4: the error waits for the next move instruction, and is raised there. *)
           st.async <- None; st.async_raised <- true; Failed a.a_name
@@ -335,6 +344,7 @@ let move ctx st name args =
                    | _ -> ())
                | _ -> ());
               st.last_planned <- Some id; st.new_move <- Some id;
+              if conc then st.conc_run <- st.conc_run + 1;
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
@@ -447,6 +457,7 @@ let search ctx st name args =
       match P.plan st.planner ~now m with
       | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
+          st.conc_run <- 0;
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
           let joints = P.target_joints st.planner move in
