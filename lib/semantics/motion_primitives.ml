@@ -270,19 +270,39 @@ let active_tool st = if st.tool == dummy then None else Some st.tool
 
 let max_conc = 5
 
+(* MoveExtJ moves the external axes only; a robot description has none (R-4.1-n). 9E9 is a num,
+   single precision: 8999999488. *)
+let unused_axis = Int32.float_of_bits (Int32.bits_of_float 9e9)
+
+let programs_external_axes jointtarget =
+  Array.exists (fun f -> not (f >= unused_axis)) (nums (V.components jointtarget).(1))
+
+(* Where the arm will stand when it has done all it was given: the point of the last move
+   still queued, or where it stands. *)
+let arm_end_joints st now =
+  match st.last_planned with
+  | Some id when P.segment_span st.planner id <> None -> P.target_joints st.planner id
+  | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> P.target_joints st.planner 0)
+
+let tool0_value () =
+  V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+              V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |]
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
   let get n = value ctx args n in
-  match get "Speed", get "Zone", get "Tool" with
+  let ext = same name "MoveExtJ" in
+  match get "Speed", get "Zone", (if ext then Some (tool0_value ()) else get "Tool") with
   | Some speed, Some zone, Some tool -> (
       let motion = match String.lowercase_ascii name with
+        | "moveextj" -> Some (P.Abs_joint (arm_end_joints st now))
         | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
         | "movec" -> (match get "CirPoint", get "ToPoint" with
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
-      let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
+      let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
       (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
          the error handler (StorePath ... RestoPath), while its path is there. *)
@@ -317,8 +337,11 @@ let move ctx st name args =
           match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
-              st.tool <- V.copy tool;
-              st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+              (* MoveExtJ has no tool: the active tool and work object stay. *)
+              if not ext then begin
+                st.tool <- V.copy tool;
+                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy)
+              end;
               let joints = P.target_joints st.planner id in
               let tframe = (tool_of tool).tframe in
               let target = G.pmult (MM.Kinematics.forward st.kin joints) tframe in
@@ -498,7 +521,7 @@ let search ctx st name args =
 (* ------------------------------------------------------------------ the routines *)
 
 let names = [
-  "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
+  "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
   "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
@@ -541,6 +564,10 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
+  | "moveextj" -> (
+      match get "ToJointPos" with
+      | Some j when programs_external_axes j -> Some Not_modelled
+      | _ -> Some (move ctx st name args))
   | "searchl" | "searchj" | "searchc" -> Some (search ctx st name args)
   | "waittime" when present ctx args "InPos" -> (
       match num ctx args "Time" with
@@ -604,8 +631,7 @@ let call_unguarded (ctx : context) st name args =
   | "cspeedoverride" -> Some (Returned (Some (V.num 100.)))
   | "ctool" -> Some (Returned (Some (match active_tool st with
       | Some t -> V.copy t
-      | None -> V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                            V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |])))
+      | None -> tool0_value ())))
   | "cwobj" -> Some (Returned (Some (if st.wobj == dummy then
                                        V.Record [| V.Bool false; V.Bool true; V.String "";
                                                    V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
