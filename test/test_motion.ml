@@ -189,6 +189,28 @@ let test_frames () =
   | Error Motion_error.Robhold_conflict -> ()
   | _ -> Alcotest.fail "both held by the robot"
 
+(* F-stationary (R-4.1-o): a stationary tool and a work object the robot carries. The TCP moves
+   on a straight line in the work object at v_tcp when the orientation does not change. *)
+let test_stationary_tool () =
+  let fixed_tool = { gripper with tool_robhold = false; tframe = { gripper.tframe with trans = { x = 450.; y = 0.; z = 250. } } }
+  and held = { table with wobj_robhold = true; uframe = { trans = { x = 0.; y = 0.; z = 60. }; rot = unit_orient };
+                          oframe = { trans = { x = 20.; y = 0.; z = 0. }; rot = unit_orient } } in
+  let qa = [| 10.; 20.; 10.; 30.; 40.; 50. |] in
+  let a = ok "CalcRobT stationary" (Frames.calc_rob_t kin qa fixed_tool held) in
+  let b = { a with Frames.pose = offs a.pose 30. (-40.) 0. } in
+  let p = planner () in
+  let r0 = plan p (Planner.move ~tool:fixed_tool ~wobj:held (speed "v1000") (zone "fine") (Joint a)) in
+  let now = r0.ready_time in
+  let at t = ok "CRobT" (Frames.c_rob_t kin ~joints:(ok "CJointT" (Planner.joints_at p t)) fixed_tool held) in
+  close_pos "at the first target" (at now).pose.trans a.pose.trans;
+  let r = plan p ~now (Planner.move ~tool:fixed_tool ~wobj:held (speed "v100") (zone "fine") (Linear b)) in
+  close "50 mm at v100" (r.ready_time -. now) 0.5;
+  close_pos "halfway on the line in the work object" (at (now +. 0.25)).pose.trans (offs a.pose 15. (-20.) 0.).trans;
+  close_pos "at the second target" (at r.ready_time).pose.trans b.pose.trans;
+  let flange = Kinematics.forward kin (ok "CJointT" (Planner.joints_at p r.ready_time)) in
+  let tcp_in_object = pmult (pinv (pmult flange (Frames.object_frame held))) fixed_tool.tframe in
+  close_pos "the fixed TCP is at the target in the carried work object" tcp_in_object.trans b.pose.trans
+
 let test_position_functions () =
   let p = { trans = { x = 100.; y = 200.; z = 300. }; rot = of_axis_angle { x = 0.; y = 0.; z = 1. } (rad 90.) } in
   let o = offs p 10. 20. 30. in
@@ -365,8 +387,10 @@ let test_move_errors () =
   Alcotest.(check bool) "SingArea \\Wrist passes" true (r.ready_time > 0.);
   (* An error leaves the queue as it was. *)
   Alcotest.(check int) "one move planned" 1 (List.length (Planner.segments p));
-  expect "stationary tool" Motion_error.Stationary_tool
-    (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing))
+  expect "neither held: a stationary tool and a fixed work object" Motion_error.Robhold_conflict
+    (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing));
+  expect "both held" Motion_error.Robhold_conflict
+    (Planner.move ~wobj:{ Motion_data.wobj0 with wobj_robhold = true } (speed "v100") (zone "fine") (Linear sing))
 
 (* S-level: StorePath keeps level 1 stopped while level 2 moves; RestoPath brings it back. *)
 let test_path_level () =
@@ -538,6 +562,7 @@ let suite =
       Alcotest.test_case "the robot description and its errors" `Quick test_description;
       Alcotest.test_case "predefined motion data" `Quick test_data;
       Alcotest.test_case "F-frames: CalcRobT, CalcJointT, CPos" `Quick test_frames;
+      Alcotest.test_case "F-stationary: a stationary tool" `Quick test_stationary_tool;
       Alcotest.test_case "Offs, RelTool, MirPos" `Quick test_position_functions;
       Alcotest.test_case "T-cartesian: 500 mm MoveL at v100 fine = 5 s" `Quick test_movel_5s;
       Alcotest.test_case "T-args: \\V, \\T, VelSet, MaxRobSpeed" `Quick test_speed_arguments;

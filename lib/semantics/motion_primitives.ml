@@ -183,13 +183,10 @@ let with_pose v (p : G.pose) =
 let error_name = function
   | MM.Motion_error.Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity -> "ERR_ROBLIMIT"
   | Circle_uncertain | Invalid_speed _ | Robhold_conflict | Path_level _ -> "ERR_ARGVALERR"
-  | Stationary_tool -> "ERR_ARGVALERR"
 
 let fail ctx what e =
   ctx.log (Printf.sprintf "%s: %s" what (MM.Motion_error.name e));
-  match e with
-  | MM.Motion_error.Stationary_tool -> Not_modelled
-  | e -> Failed (error_name e)
+  Failed (error_name e)
 
 (* ------------------------------------------------------------------ waits *)
 
@@ -343,7 +340,9 @@ let move ctx st name args =
                 st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy)
               end;
               let joints = P.target_joints st.planner id in
-              let tframe = (tool_of tool).tframe in
+              (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
+              let tframe = match MM.Frames.as_robot_held (tool_of tool) (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
+                | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
               let target = G.pmult (MM.Kinematics.forward st.kin joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
