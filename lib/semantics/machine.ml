@@ -1091,7 +1091,7 @@ let serve_async_error cfg =
   else
     match Motion_primitives.take_org_error cfg.motion with
     | None -> None
-    | Some (name, move) ->
+    | Some (name, move, handled) ->
         let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true; asynchronous = true } in
         let raised = Error_raised { name = e.name; number = e.number; at = e.err_at } in
         let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
@@ -1106,7 +1106,7 @@ let serve_async_error cfg =
           | _ -> [] in
         let takes (a : activation) =
           a.routine.error <> None && (match a.handling with Body -> true | In_handler _ | In_undo -> false) in
-        match List.find_opt takes (from_motion @ up [] (Some cfg.act)) with
+        match (if handled then List.find_opt takes (from_motion @ up [] (Some cfg.act)) else None) with
         | None ->
             let rule, events = stop cfg e "async-error-unhandled" in
             Some (rule, raised :: events)

@@ -41,7 +41,8 @@ type track = { t_id : int; t_label : string; mutable started : bool; mutable end
    (\SyncOrgMoveInst, a collision), which the machine finds. *)
 type async_mode = Sync_last | Sync_org
 
-type async = { a_name : string; a_move : int option; a_mode : async_mode }
+type async = { a_name : string; a_move : int option; a_mode : async_mode;
+               a_handled : bool  (* false: a collision with motion error handling off (§7.6) *) }
 
 type state = {
   robot : MM.Robot.t;
@@ -64,6 +65,7 @@ type state = {
   mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
+  mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
 }
 
 let dummy = V.Bool false
@@ -73,7 +75,7 @@ let create ?(robot = MM.Robot.irb120) () =
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [];
-    async_raised = false; conc_run = 0 }
+    async_raised = false; conc_run = 0; collision_handling = true }
 
 let planner st = st.planner
 
@@ -405,7 +407,8 @@ let collide st w =
         P.stop st.planner ~at:t;
         st.dirty <- true;
         emit st (Path_command { time = t; command = "collision" });
-        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org }
+        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org;
+                           a_handled = st.collision_handling }
       end
       else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
     due
@@ -524,17 +527,17 @@ let names = [
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
   "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
+  "WriteCfgData";
 ]
 
 let modelled name = List.exists (same name) names
 
 let take_org_error st =
   match st.async with
-  | Some { a_mode = Sync_org; a_name; a_move } ->
-      (* Raised at the move instruction the program pointer waits in: its RETRY waits again. *)
+  | Some { a_mode = Sync_org; a_name; a_move; a_handled } ->
       (* The program pointer is kept (R-7.4-m): a move instruction it waits in goes on waiting
          after RETRY or TRYNEXT. *)
-      st.async <- None; Some (a_name, a_move)
+      st.async <- None; Some (a_name, a_move, a_handled)
   | _ -> None
 
 let take_async_raised st = let r = st.async_raised in st.async_raised <- false; r
@@ -612,8 +615,18 @@ let call_unguarded (ctx : context) st name args =
       emit st (Path_command { time = now; command = "ProcerrRecovery" });
       st.dirty <- true;
       let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
-      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode };
+      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode; a_handled = true };
       Some (Returned None)
+  | "writecfgdata" -> (
+      (* §7.6 example 4: the system parameter Collision Error Handling, switched by the program;
+         any other parameter is not modelled. *)
+      match get "InstancePath", get "Attribute", num ctx args "CfgData" with
+      | Some (V.String path), Some (V.String attr), Some v
+        when String.lowercase_ascii path = "/sys/sys_misc/collisionerrorhandling"
+             && String.lowercase_ascii attr = "value" ->
+          if v = 0. || v = 1. then (st.collision_handling <- v = 1.; Some (Returned None))
+          else Some (Failed "ERR_ARGVALERR")
+      | _ -> None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
   | "velset" -> (
       match num ctx args "Override", num ctx args "Max" with
