@@ -1048,7 +1048,9 @@ let next_frame cfg =
       | _ ->
           cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
   | K_args cs :: rest -> next_argument cfg cs rest
-  | K_backward_end :: rest -> cfg.stack <- rest; cfg.backward_depth <- -1; ("backward-end", [])
+  | K_backward_end :: rest ->
+      cfg.stack <- rest; cfg.backward_depth <- -1; Motion_primitives.set_backward cfg.motion false;
+      ("backward-end", [])
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
   | f :: _ ->
       cfg.focus <- F_done (Stuck ("a statement completed over the frame " ^ frame_kind f));
@@ -1911,6 +1913,7 @@ let backward cfg =
                 push cfg (K_stmt (prev, cfg.mark)); cfg.mark <- cfg.stack;
                 push cfg K_backward_end;
                 cfg.backward_depth <- cfg.act.call_depth + 1;
+                Motion_primitives.set_backward cfg.motion true;
                 cfg.focus <- F_next;
                 let callee = { r with body = handler } in
                 let n = Array.length callee.parameters in

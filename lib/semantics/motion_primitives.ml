@@ -66,6 +66,8 @@ type state = {
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
   mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
+  mutable history : (P.motion * float array) list;  (* forward moves and their start axes, newest first *)
+  mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
 }
 
 let dummy = V.Bool false
@@ -75,7 +77,9 @@ let create ?(robot = MM.Robot.irb120) () =
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [];
-    async_raised = false; conc_run = 0; collision_handling = true }
+    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false }
+
+let set_backward st b = st.backward <- b
 
 let planner st = st.planner
 
@@ -294,7 +298,20 @@ let move ctx st name args =
   let ext = same name "MoveExtJ" in
   match get "Speed", get "Zone", (if ext then Some (tool0_value ()) else get "Tool") with
   | Some speed, Some zone, Some tool -> (
-      let motion = match String.lowercase_ascii name with
+      let start = arm_end_joints st now in
+      (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
+         mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
+      let retraced = match st.history with
+        | (forward, from) :: older when st.backward && not ext ->
+            st.history <- older;
+            let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
+            let back () = MM.Frames.calc_rob_t st.kin from (tool_of tool) wobj_d in
+            (match forward with
+             | P.Linear _ -> Result.to_option (Result.map (fun r -> P.Linear r) (back ()))
+             | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
+             | P.Joint _ | P.Abs_joint _ -> Some (P.Abs_joint from))
+        | _ -> None in
+      let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
         | "moveextj" -> Some (P.Abs_joint (arm_end_joints st now))
         | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
@@ -369,6 +386,8 @@ let move ctx st name args =
                | _ -> ());
               st.last_planned <- Some id; st.new_move <- Some id;
               if conc then st.conc_run <- st.conc_run + 1;
+              if not (st.backward || ext) then
+                st.history <- (motion, start) :: List.filteri (fun i _ -> i < 255) st.history;
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"

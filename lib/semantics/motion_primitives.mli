@@ -55,6 +55,10 @@ val drain : state -> Rapid_controller.World.t -> event list
 val finish : state -> event list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
+val set_backward : state -> bool -> unit
+(** A BACKWARD handler begins (true) or ends (false) its run (ch. 6): its move instructions
+    retrace the forward moves, the newest first (§6.3). *)
+
 val take_async_raised : state -> bool
 (** Whether the failure a move instruction just gave is a \SyncLastMoveInst error (§7.4), once:
     its handler's TRYNEXT executes as RETRY. *)
