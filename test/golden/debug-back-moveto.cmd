@@ -1,1 +1,1 @@
-debug --script debug-back-moveto.dbg --statement-time 0 ../../spec/06-backward/04-backward-moveto.mod
+debug --statement-time 0 --script debug-back-moveto.dbg ../../spec/06-backward/04-backward-moveto.mod
