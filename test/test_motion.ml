@@ -478,7 +478,7 @@ let show_program l =
 
 (* Plans a program at once (each move as soon as the program may go on); [k] picks MoveL, MoveC
    (through a point beside the chord) or MoveJ. *)
-let plan_program l =
+let plan_program ?(speed_of = speed) l =
   let p = planner () in
   (Planner.settings p).conf_l <- false;
   let now = ref 0. and from = ref { x = 302.; y = 0.; z = 558. } in
@@ -492,11 +492,26 @@ let plan_program l =
           let side = if norm side < 1e-6 then { x = 0.3 *. norm d; y = 0.; z = 0. } else scale (norm d) side in
           Planner.Circular (target (m.x +. side.x) (m.y +. side.y) m.z, tg)
         else Planner.Linear tg in
-      match Planner.plan p ~now:!now (Planner.move (speed v) (zone zn) motion) with
+      match Planner.plan p ~now:!now (Planner.move (speed_of v) (zone zn) motion) with
       | Ok r -> now := Float.max !now r.ready_time; from := tg.pose.trans
       | Error _ -> ())
     l;
   p
+
+(* T-scale through the planner: a program of linear and circular moves to stop points, every
+   speed component times k (below the caps), ends k times sooner. *)
+let test_scaling_planned () =
+  run_property ~seed:13 ~count:300 ~name:"planned programs scale inversely with speed"
+    (QCheck.make ~print:(fun (l, v, k) -> Printf.sprintf "v %g k %g: %s" v k (show_program l))
+       QCheck.Gen.(triple program_gen (float_range 5. 500.) (float_range 1. 5.)))
+    (fun (l, v, k) ->
+      let l = List.filter_map (fun ((pt, kind), _) -> if kind = 3 then None else Some ((pt, kind), ("fine", ""))) l in
+      let finished f =
+        let sd = { Motion_data.v_tcp = f *. v; v_ori = f *. 100.; v_leax = 0.; v_reax = 0. } in
+        Planner.finished_by (plan_program ~speed_of:(fun _ -> sd) l) in
+      let t1 = finished 1. and tk = finished k in
+      QCheck.assume (t1 > 0.);
+      Float.abs (t1 -. k *. tk) <= 1e-9 *. t1)
 
 (* L-sum: the length of the path of stop points is the sum of its segments' lengths. *)
 let test_length_sum () =
@@ -563,6 +578,7 @@ let suite =
       Alcotest.test_case "predefined motion data" `Quick test_data;
       Alcotest.test_case "F-frames: CalcRobT, CalcJointT, CPos" `Quick test_frames;
       Alcotest.test_case "F-stationary: a stationary tool" `Quick test_stationary_tool;
+      Alcotest.test_case "T-scale: planned programs, random" `Quick test_scaling_planned;
       Alcotest.test_case "Offs, RelTool, MirPos" `Quick test_position_functions;
       Alcotest.test_case "T-cartesian: 500 mm MoveL at v100 fine = 5 s" `Quick test_movel_5s;
       Alcotest.test_case "T-args: \\V, \\T, VelSet, MaxRobSpeed" `Quick test_speed_arguments;
