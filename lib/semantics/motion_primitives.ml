@@ -61,7 +61,6 @@ type state = {
   mutable last_planned : int option;           (* the last move planned *)
   mutable new_move : int option;               (* for the machine: the move just planned *)
   mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
-  mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
   mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
@@ -76,7 +75,7 @@ let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
-    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [];
+    last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false }
 
 let set_backward st b = st.backward <- b
@@ -226,7 +225,6 @@ let until ?move ctx ~what time =
   let finish ~timed_out =
     (match move with
      | Some (st, _) ->
-         st.waiting <- None;
          (match !self with Some me -> st.move_waits <- List.filter (fun w -> w != me) st.move_waits | None -> ())
      | None -> ());
     finish ~timed_out in
@@ -234,7 +232,7 @@ let until ?move ctx ~what time =
   else begin
     let wait = { W.what; satisfied; deadline = None; finish; poll = None } in
     (match move with
-     | Some (st, m) -> st.waiting <- Some m; self := Some wait; st.move_waits <- wait :: st.move_waits
+     | Some (st, _) -> self := Some wait; st.move_waits <- wait :: st.move_waits
      | None -> ());
     Wait wait
   end
@@ -451,7 +449,6 @@ let finish st =
 let wait_abandoned st w ~now =
   if List.exists (fun m -> m == w) st.move_waits then begin
     st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
-    st.waiting <- None;
     P.clear st.planner ~at:now;
     st.dirty <- true;
     emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
