@@ -838,7 +838,7 @@ and kept_exit cfg (s : Ir.stmt) =
         | _ when k.pp_act == k.handler ->
             (* The program pointer's own routine: its statement in progress is left as by any
                error (a move instruction's path with it, §7.6 example 3). *)
-            restore (); None
+            restore (); waits_left cfg; None
         | _ ->
             restore ();
             cfg.focus <- F_abandon (Go_on_in_handler (s, k.handler));
