@@ -189,6 +189,28 @@ let test_frames () =
   | Error Motion_error.Robhold_conflict -> ()
   | _ -> Alcotest.fail "both held by the robot"
 
+(* F-stationary (R-4.1-o): a stationary tool and a work object the robot carries. The TCP moves
+   on a straight line in the work object at v_tcp when the orientation does not change. *)
+let test_stationary_tool () =
+  let fixed_tool = { gripper with tool_robhold = false; tframe = { gripper.tframe with trans = { x = 450.; y = 0.; z = 250. } } }
+  and held = { table with wobj_robhold = true; uframe = { trans = { x = 0.; y = 0.; z = 60. }; rot = unit_orient };
+                          oframe = { trans = { x = 20.; y = 0.; z = 0. }; rot = unit_orient } } in
+  let qa = [| 10.; 20.; 10.; 30.; 40.; 50. |] in
+  let a = ok "CalcRobT stationary" (Frames.calc_rob_t kin qa fixed_tool held) in
+  let b = { a with Frames.pose = offs a.pose 30. (-40.) 0. } in
+  let p = planner () in
+  let r0 = plan p (Planner.move ~tool:fixed_tool ~wobj:held (speed "v1000") (zone "fine") (Joint a)) in
+  let now = r0.ready_time in
+  let at t = ok "CRobT" (Frames.c_rob_t kin ~joints:(ok "CJointT" (Planner.joints_at p t)) fixed_tool held) in
+  close_pos "at the first target" (at now).pose.trans a.pose.trans;
+  let r = plan p ~now (Planner.move ~tool:fixed_tool ~wobj:held (speed "v100") (zone "fine") (Linear b)) in
+  close "50 mm at v100" (r.ready_time -. now) 0.5;
+  close_pos "halfway on the line in the work object" (at (now +. 0.25)).pose.trans (offs a.pose 15. (-20.) 0.).trans;
+  close_pos "at the second target" (at r.ready_time).pose.trans b.pose.trans;
+  let flange = Kinematics.forward kin (ok "CJointT" (Planner.joints_at p r.ready_time)) in
+  let tcp_in_object = pmult (pinv (pmult flange (Frames.object_frame held))) fixed_tool.tframe in
+  close_pos "the fixed TCP is at the target in the carried work object" tcp_in_object.trans b.pose.trans
+
 let test_position_functions () =
   let p = { trans = { x = 100.; y = 200.; z = 300. }; rot = of_axis_angle { x = 0.; y = 0.; z = 1. } (rad 90.) } in
   let o = offs p 10. 20. 30. in
@@ -365,8 +387,10 @@ let test_move_errors () =
   Alcotest.(check bool) "SingArea \\Wrist passes" true (r.ready_time > 0.);
   (* An error leaves the queue as it was. *)
   Alcotest.(check int) "one move planned" 1 (List.length (Planner.segments p));
-  expect "stationary tool" Motion_error.Stationary_tool
-    (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing))
+  expect "neither held: a stationary tool and a fixed work object" Motion_error.Robhold_conflict
+    (Planner.move ~tool:{ Motion_data.tool0 with tool_robhold = false } (speed "v100") (zone "fine") (Linear sing));
+  expect "both held" Motion_error.Robhold_conflict
+    (Planner.move ~wobj:{ Motion_data.wobj0 with wobj_robhold = true } (speed "v100") (zone "fine") (Linear sing))
 
 (* S-level: StorePath keeps level 1 stopped while level 2 moves; RestoPath brings it back. *)
 let test_path_level () =
@@ -454,7 +478,7 @@ let show_program l =
 
 (* Plans a program at once (each move as soon as the program may go on); [k] picks MoveL, MoveC
    (through a point beside the chord) or MoveJ. *)
-let plan_program l =
+let plan_program ?(speed_of = speed) l =
   let p = planner () in
   (Planner.settings p).conf_l <- false;
   let now = ref 0. and from = ref { x = 302.; y = 0.; z = 558. } in
@@ -468,11 +492,26 @@ let plan_program l =
           let side = if norm side < 1e-6 then { x = 0.3 *. norm d; y = 0.; z = 0. } else scale (norm d) side in
           Planner.Circular (target (m.x +. side.x) (m.y +. side.y) m.z, tg)
         else Planner.Linear tg in
-      match Planner.plan p ~now:!now (Planner.move (speed v) (zone zn) motion) with
+      match Planner.plan p ~now:!now (Planner.move (speed_of v) (zone zn) motion) with
       | Ok r -> now := Float.max !now r.ready_time; from := tg.pose.trans
       | Error _ -> ())
     l;
   p
+
+(* T-scale through the planner: a program of linear and circular moves to stop points, every
+   speed component times k (below the caps), ends k times sooner. *)
+let test_scaling_planned () =
+  run_property ~seed:13 ~count:300 ~name:"planned programs scale inversely with speed"
+    (QCheck.make ~print:(fun (l, v, k) -> Printf.sprintf "v %g k %g: %s" v k (show_program l))
+       QCheck.Gen.(triple program_gen (float_range 5. 500.) (float_range 1. 5.)))
+    (fun (l, v, k) ->
+      let l = List.filter_map (fun ((pt, kind), _) -> if kind = 3 then None else Some ((pt, kind), ("fine", ""))) l in
+      let finished f =
+        let sd = { Motion_data.v_tcp = f *. v; v_ori = f *. 100.; v_leax = 0.; v_reax = 0. } in
+        Planner.finished_by (plan_program ~speed_of:(fun _ -> sd) l) in
+      let t1 = finished 1. and tk = finished k in
+      QCheck.assume (t1 > 0.);
+      Float.abs (t1 -. k *. tk) <= 1e-9 *. t1)
 
 (* L-sum: the length of the path of stop points is the sum of its segments' lengths. *)
 let test_length_sum () =
@@ -538,6 +577,8 @@ let suite =
       Alcotest.test_case "the robot description and its errors" `Quick test_description;
       Alcotest.test_case "predefined motion data" `Quick test_data;
       Alcotest.test_case "F-frames: CalcRobT, CalcJointT, CPos" `Quick test_frames;
+      Alcotest.test_case "F-stationary: a stationary tool" `Quick test_stationary_tool;
+      Alcotest.test_case "T-scale: planned programs, random" `Quick test_scaling_planned;
       Alcotest.test_case "Offs, RelTool, MirPos" `Quick test_position_functions;
       Alcotest.test_case "T-cartesian: 500 mm MoveL at v100 fine = 5 s" `Quick test_movel_5s;
       Alcotest.test_case "T-args: \\V, \\T, VelSet, MaxRobSpeed" `Quick test_speed_arguments;

@@ -17,6 +17,16 @@ let target_of_flange tool wobj flange =
   | false, true -> Ok (pinv (pmult (pmult (pinv tool.tframe) flange) (object_frame wobj)))
   | _ -> Error Motion_error.Robhold_conflict
 
+(* R-4.1-o: with a stationary tool the robot carries the work object, whose frame is then the
+   TCP of a robot-held tool: the flange is at tframe · (W · target)⁻¹ = (tframe · target⁻¹) · W⁻¹,
+   a robot-held tool W reaching tframe · target⁻¹ in the world. *)
+let as_robot_held tool wobj =
+  match tool.tool_robhold, wobj.wobj_robhold with
+  | false, true ->
+      Some ({ tool with tool_robhold = true; tframe = object_frame wobj }, Motion_data.wobj0,
+            fun target -> pmult tool.tframe (pinv target))
+  | _ -> None
+
 let calc_rob_t k joints tool wobj =
   Result.map (fun pose -> { pose; conf = Kinematics.conf_of k joints })
     (target_of_flange tool wobj (Kinematics.forward k joints))

@@ -18,6 +18,14 @@ val target_of_flange :
   Motion_data.tooldata -> Motion_data.wobjdata -> Geom.pose -> (Geom.pose, Motion_error.t) result
 (** The inverse of [flange_of_target]. *)
 
+val as_robot_held :
+  Motion_data.tooldata -> Motion_data.wobjdata ->
+  (Motion_data.tooldata * Motion_data.wobjdata * (Geom.pose -> Geom.pose)) option
+(** A stationary tool (robhold FALSE) and a robot-held work object as the same flange poses
+    with a robot-held tool and a fixed work object: the work object's frame (uframe · oframe,
+    from the flange) as the tool, wobj0, and a target's pose T as tframe · T⁻¹ in the world.
+    [None] for any other pair. *)
+
 val calc_rob_t :
   Kinematics.t -> float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
   (robtarget, Motion_error.t) result

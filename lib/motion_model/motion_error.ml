@@ -5,7 +5,6 @@ type t =
   | Close_to_singularity
   | Circle_uncertain
   | Invalid_speed of string
-  | Stationary_tool
   | Robhold_conflict
   | Path_level of string
 
@@ -17,7 +16,6 @@ let name = function
   | Circle_uncertain -> "circle uncertain: the circle point is too close to the start or end \
                          point, or on their line"
   | Invalid_speed m -> "invalid speed: " ^ m
-  | Stationary_tool -> "a stationary tool (robhold FALSE) in a move is not modelled"
   | Path_level m -> m
   | Robhold_conflict -> "the tool and the work object cannot both be held (or both not be held) \
                          by the robot"

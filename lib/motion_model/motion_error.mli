@@ -9,7 +9,6 @@ type t =
   | Close_to_singularity  (** a linear or circular move to a wrist singularity, SingArea \Off *)
   | Circle_uncertain  (** MoveC: CirPoint too close to the start or end point, or on their line *)
   | Invalid_speed of string  (** a speed or \T that cannot give the move a duration *)
-  | Stationary_tool  (** a move with a stationary tool (robhold FALSE): not modelled yet *)
   | Robhold_conflict  (** tool and work object both held, or both not held, by the robot *)
   | Path_level of string  (** StorePath on level 2, RestoPath on level 1 *)
 

@@ -231,10 +231,25 @@ let corner_fractions (a : segment) (b : segment) =
     (side_fraction ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
      side_fraction ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
 
+(* A stationary tool: the robot carries the work object along the same flange poses
+   (Frames.as_robot_held, R-4.1-o). *)
+let robot_held m =
+  match Frames.as_robot_held m.tool m.wobj with
+  | None -> m
+  | Some (tool, wobj, f) ->
+      let rt (r : Frames.robtarget) = { r with pose = f r.pose } in
+      let motion = match m.motion with
+        | Linear r -> Linear (rt r)
+        | Circular (c, r) -> Circular (rt c, rt r)
+        | Joint r -> Joint (rt r)
+        | Abs_joint _ as a -> a in
+      { m with tool; wobj; motion }
+
 let build t ~now_p m id =
   let k = t.kin and st = t.settings in
   let robot = Kinematics.robot k in
-  if not m.tool.tool_robhold then Error Motion_error.Stationary_tool
+  let m = robot_held m in
+  if not m.tool.tool_robhold then Error Motion_error.Robhold_conflict
   else if m.wobj.wobj_robhold then Error Motion_error.Robhold_conflict
   else
     let tframe = m.tool.tframe in

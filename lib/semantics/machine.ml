@@ -15,7 +15,8 @@ type loc = { box : V.t array; idx : int }
    so that raising an error costs O(1) at any call depth. [about] is the name the error is
    about (the unknown data object or routine, the function without RETURN). *)
 type err = { name : string; number : int; err_at : Source.region; searched : bool;
-             chain : string list Lazy.t; about : string option }
+             chain : string list Lazy.t; about : string option;
+             asynchronous : bool  (* §7.4: TRYNEXT executes as RETRY *) }
 
 type event =
   | Output of string
@@ -76,6 +77,9 @@ and after_abandon =
   | Go_on_exit                          (* EXIT: abandon every routine (§4.12, §7.2) *)
   | Go_on_propagate of err              (* raise the error again at the call point (§7.1) *)
   | Go_on_long_jump of err * activation (* unwind down to the error recovery point (§7.2) *)
+  | Go_on_in_handler of Ir.stmt * activation
+      (* §7.4: a handler that took an asynchronous error ends with RAISE or RETURN: the
+         program pointer's routines above it are abandoned, then the statement runs there *)
 
 and frame =
   | K_seq of Ir.block * int             (* the rest of a statement list *)
@@ -132,6 +136,11 @@ and call_state = {
   mutable next : int;
 }
 
+(* §7.4: an asynchronous error handled while the program pointer is elsewhere keeps the program
+   pointer where it was: [handler] runs its error handler, and RETRY or TRYNEXT there resume
+   [pp_act] with its stack as they were. *)
+type kept = { handler : activation; pp_act : activation; pp_stack : frame list; pp_mark : frame list }
+
 type focus =
   | F_expr of Ir.expr
   | F_value of V.t
@@ -164,6 +173,7 @@ type config = {
   stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
   motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
   mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
+  mutable kept : kept list;             (* asynchronous errors in their handlers (§7.4) *)
   mutable backward_depth : int;         (* the call depth of a BACKWARD handler running, or -1 (ch. 6) *)
   (* Settling stops at a point of response (ch. 8) where something happens: the statement time
      already charged there, the interrupt already taken from the queue, for the step to serve. *)
@@ -192,7 +202,8 @@ let call_chain act =
 
 let error ?about cfg name at =
   let act = cfg.act in
-  { name; number = error_number cfg name; err_at = at; searched = false; chain = lazy (call_chain act); about }
+  { name; number = error_number cfg name; err_at = at; searched = false; chain = lazy (call_chain act); about;
+    asynchronous = false }
 
 (* The name the system error handler reports: an ERR_ constant's name, or a user error's
    number. *)
@@ -203,7 +214,8 @@ let error_of_number cfg n at =
     | None -> string_of_int n
   in
   let act = cfg.act in
-  { name; number = n; err_at = at; searched = false; chain = lazy (call_chain act); about = None }
+  { name; number = n; err_at = at; searched = false; chain = lazy (call_chain act); about = None;
+    asynchronous = false }
 
 let region_of_focus_stmt cfg =
   match cfg.mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> cfg.act.routine.at
@@ -342,7 +354,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
-          stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
+          stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = []; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
@@ -517,6 +529,10 @@ let call_primitive cfg (cs : call_state) name =
        | Function, None -> raise_ cfg "ERR_FNCNORET"
        | _ -> cfg.focus <- F_next);
       ("call-primitive", List.rev !events)
+  | Primitive.Failed name when Motion_primitives.take_async_raised cfg.motion ->
+      (* §7.4: a \SyncLastMoveInst error, raised at the move instruction. *)
+      cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
+      ("async-error-at-move", List.rev !events)
   | Primitive.Failed name -> raise_ cfg name; ("call-primitive-error", List.rev !events)
   | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
   | Primitive.Call_by_name target -> (
@@ -805,7 +821,39 @@ let rec statement_point = function
   | point -> point
 
 (* The statements of a statement list, one by one. *)
-let exec cfg (s : Ir.stmt) =
+let rec exec cfg (s : Ir.stmt) =
+  match kept_exit cfg s with Some r -> r | None -> exec_statement cfg s
+
+(* §7.4: the handler of an asynchronous error taken while the program pointer was elsewhere
+   (a kept program pointer): RETRY and TRYNEXT go on from where the program pointer was; RAISE,
+   RETURN and EXIT first abandon the routines the program pointer is in above the handler's
+   (their UNDO handlers run), then act as in any handler. *)
+and kept_exit cfg (s : Ir.stmt) =
+  if cfg.kept = [] then None
+  else
+    match List.find_opt (fun k -> k.handler == cfg.act) cfg.kept, s.s with
+    | None, _ -> None
+    | Some k, (Retry | Trynext | Raise _ | Return _ | Exit) -> (
+        cfg.kept <- List.filter (fun k' -> k' != k) cfg.kept;
+        let restore () = cfg.act <- k.pp_act; cfg.stack <- k.pp_stack; cfg.mark <- k.pp_mark in
+        match s.s with
+        | Retry | Trynext ->
+            k.handler.handling <- Body;
+            restore ();
+            cfg.focus <- F_next;
+            Some ((if s.s = Retry then "async-retry-resume" else "async-trynext-resume"), [])
+        | Exit -> restore (); cfg.focus <- F_abandon Go_on_exit; Some ("async-exit", [])
+        | _ when k.pp_act == k.handler ->
+            (* The program pointer's own routine: its statement in progress is left as by any
+               error (a move instruction's path with it, §7.6 example 3). *)
+            restore (); waits_left cfg; None
+        | _ ->
+            restore ();
+            cfg.focus <- F_abandon (Go_on_in_handler (s, k.handler));
+            Some ("async-handler-leave", []))
+    | Some _, _ -> None
+
+and exec_statement cfg (s : Ir.stmt) =
   (* The simple statement of a compact IF is part of the IF: the IF is the statement that RETRY
      and TRYNEXT refer to (§4.17, §7.1). *)
   let part_of_compact_if = cfg.unmarked in
@@ -892,6 +940,10 @@ let exec cfg (s : Ir.stmt) =
       | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
   | Trynext -> (
       match cfg.act.handling with
+      | In_handler ({ asynchronous = true; _ }, _) ->
+          (* §7.4: "in this case TRYNEXT executes as RETRY", for the system can restart from
+             where the error occurred (R-7.4-m). *)
+          exec cfg { s with s = Retry }
       | In_handler (_, point) ->
           cfg.act.handling <- Body;
           (match statement_point point with
@@ -948,7 +1000,9 @@ let leave_abandoned cfg after rule rule_entry =
        | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
        | Go_on_long_jump (e, target) ->
            if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
-           else cfg.focus <- F_abandon after);
+           else cfg.focus <- F_abandon after
+       | Go_on_in_handler (s, target) ->
+           if cfg.act == target then cfg.focus <- F_stmt s else cfg.focus <- F_abandon after);
       (rule, Routine_left act.routine.name
              :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else []))
 
@@ -1002,7 +1056,9 @@ let next_frame cfg =
       | _ ->
           cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
   | K_args cs :: rest -> next_argument cfg cs rest
-  | K_backward_end :: rest -> cfg.stack <- rest; cfg.backward_depth <- -1; ("backward-end", [])
+  | K_backward_end :: rest ->
+      cfg.stack <- rest; cfg.backward_depth <- -1; Motion_primitives.set_backward cfg.motion false;
+      ("backward-end", [])
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
   | f :: _ ->
       cfg.focus <- F_done (Stuck ("a statement completed over the frame " ^ frame_kind f));
@@ -1033,25 +1089,47 @@ let serve_interrupt cfg =
         Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = W.now cfg.world };
                                    Routine_entered r.name ])
 
-(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised in the routine
-   whose move instruction made the robot's path, when it is in the call chain, and handled from
-   there up the chain; otherwise where the program pointer is (§7.6, steps 1-4). It is raised
-   when the program pointer waits (a move instruction, a waiting instruction), whose statement
-   it is raised at; not at trap level: after the trap (R-7.4-a). *)
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised when the program
+   pointer waits (a move instruction, a waiting instruction), at that statement; not at trap
+   level: after the trap (R-7.4-a). Its handler is looked for in the order of §7.6: the routine
+   whose move instruction made the robot's path and up the call chain from it (steps 1-2; when
+   that call was abandoned, a \SyncOrgMoveInst error goes one step up, to its caller, §7.4),
+   then the program pointer's routine and up (steps 3-4); none: the system error handler
+   (step 5). The handler runs with the program pointer kept where it was (R-7.4-m). *)
 let serve_async_error cfg =
   if cfg.act.trap_level then None
   else
     match Motion_primitives.take_org_error cfg.motion with
     | None -> None
-    | Some (name, move) ->
-        (match cfg.stack with K_wait _ :: rest -> cfg.stack <- rest | _ -> ());
-        let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true } in
+    | Some (name, move, handled) ->
+        let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true; asynchronous = true } in
+        let raised = Error_raised { name = e.name; number = e.number; at = e.err_at } in
         let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
         let rec in_chain a = function None -> false | Some b -> b == a || in_chain a b.caller in
-        (match owner with
-         | Some a when a != cfg.act && in_chain a (Some cfg.act) -> cfg.focus <- F_abandon (Go_on_long_jump (e, a))
-         | _ -> cfg.focus <- F_raise e);
-        Some ("async-error", [])
+        let rec up acc = function None -> List.rev acc | Some b -> up (b :: acc) b.caller in
+        let rec live = function
+          | None -> []
+          | Some b -> if in_chain b (Some cfg.act) then up [] (Some b) else live b.caller in
+        let from_motion = match owner with
+          | Some a when in_chain a (Some cfg.act) -> up [] (Some a)
+          | Some a when name <> "ERR_COLL_STOP" -> live a.caller
+          | _ -> [] in
+        let takes (a : activation) =
+          a.routine.error <> None && (match a.handling with Body -> true | In_handler _ | In_undo -> false) in
+        match (if handled then List.find_opt takes (from_motion @ up [] (Some cfg.act)) else None) with
+        | None ->
+            let rule, events = stop cfg e "async-error-unhandled" in
+            Some (rule, raised :: events)
+        | Some h ->
+            cfg.kept <- { handler = h; pp_act = cfg.act; pp_stack = cfg.stack; pp_mark = cfg.mark } :: cfg.kept;
+            let hd = Option.get h.routine.error in
+            h.handling <- In_handler (e, []);
+            set_errno cfg e.number;
+            cfg.act <- h;
+            cfg.stack <- [ K_seq (hd.handler, 0); K_handler_end ];
+            cfg.mark <- [];
+            cfg.focus <- F_next;
+            Some ("async-error", [ raised; Error_handled { name = e.name; routine = h.routine.name } ])
 
 let time_exhausted cfg rule =
   cfg.focus <- F_done (Resource_exhausted
@@ -1076,6 +1154,10 @@ let wait_step cfg ws rest =
         cfg.stack <- rest;
         match ws.wait.finish ~timed_out with
         | None -> cfg.focus <- F_next; (rule, [])
+        | Some name when Motion_primitives.take_async_raised cfg.motion ->
+            (* §7.4: a \SyncLastMoveInst error at the move instruction the program pointer waits in. *)
+            cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
+            (rule, [])
         | Some name -> raise_ cfg name; (rule, [])
       in
       match ws.cond with
@@ -1557,6 +1639,8 @@ let rule_names = [
   "wait-advance"; "wait-yield"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
   "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
   "raise-in-trap"; "connect-not-variable";
+  "async-error-unhandled"; "async-retry-resume"; "async-trynext-resume"; "async-exit"; "async-handler-leave";
+  "async-error-at-move";
   "done"; "stuck";
 ]
 
@@ -1841,6 +1925,7 @@ let backward cfg =
                 push cfg (K_stmt (prev, cfg.mark)); cfg.mark <- cfg.stack;
                 push cfg K_backward_end;
                 cfg.backward_depth <- cfg.act.call_depth + 1;
+                Motion_primitives.set_backward cfg.motion true;
                 cfg.focus <- F_next;
                 let callee = { r with body = handler } in
                 let n = Array.length callee.parameters in

@@ -41,7 +41,8 @@ type track = { t_id : int; t_label : string; mutable started : bool; mutable end
    (\SyncOrgMoveInst, a collision), which the machine finds. *)
 type async_mode = Sync_last | Sync_org
 
-type async = { a_name : string; a_move : int option; a_mode : async_mode }
+type async = { a_name : string; a_move : int option; a_mode : async_mode;
+               a_handled : bool  (* false: a collision with motion error handling off (§7.6) *) }
 
 type state = {
   robot : MM.Robot.t;
@@ -60,8 +61,12 @@ type state = {
   mutable last_planned : int option;           (* the last move planned *)
   mutable new_move : int option;               (* for the machine: the move just planned *)
   mutable collisions : float list option;      (* the stimulus's collisions to come, once read *)
-  mutable waiting : (int * string) option;     (* the move instruction the program pointer waits in *)
   mutable move_waits : W.wait list;            (* the waits of move instructions in progress *)
+  mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
+  mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
+  mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
+  mutable history : (P.motion * float array) list;  (* forward moves and their start axes, newest first *)
+  mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
 }
 
 let dummy = V.Bool false
@@ -70,7 +75,10 @@ let create ?(robot = MM.Robot.irb120) () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
-    last_planned = None; new_move = None; collisions = None; waiting = None; move_waits = [] }
+    last_planned = None; new_move = None; collisions = None; move_waits = [];
+    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false }
+
+let set_backward st b = st.backward <- b
 
 let planner st = st.planner
 
@@ -180,13 +188,10 @@ let with_pose v (p : G.pose) =
 let error_name = function
   | MM.Motion_error.Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity -> "ERR_ROBLIMIT"
   | Circle_uncertain | Invalid_speed _ | Robhold_conflict | Path_level _ -> "ERR_ARGVALERR"
-  | Stationary_tool -> "ERR_ARGVALERR"
 
 let fail ctx what e =
   ctx.log (Printf.sprintf "%s: %s" what (MM.Motion_error.name e));
-  match e with
-  | MM.Motion_error.Stationary_tool -> Not_modelled
-  | e -> Failed (error_name e)
+  Failed (error_name e)
 
 (* ------------------------------------------------------------------ waits *)
 
@@ -214,13 +219,12 @@ let until ?move ctx ~what time =
     match move with
     | Some (st, (id, key)) when async_here () ->
         let a = Option.get st.async in
-        st.async <- None; st.interrupted <- Some (id, key); Some a.a_name
+        st.async <- None; st.interrupted <- Some (id, key); st.async_raised <- true; Some a.a_name
     | _ -> None in
   let self = ref None in
   let finish ~timed_out =
     (match move with
      | Some (st, _) ->
-         st.waiting <- None;
          (match !self with Some me -> st.move_waits <- List.filter (fun w -> w != me) st.move_waits | None -> ())
      | None -> ());
     finish ~timed_out in
@@ -228,7 +232,7 @@ let until ?move ctx ~what time =
   else begin
     let wait = { W.what; satisfied; deadline = None; finish; poll = None } in
     (match move with
-     | Some (st, m) -> st.waiting <- Some m; self := Some wait; st.move_waits <- wait :: st.move_waits
+     | Some (st, _) -> self := Some wait; st.move_waits <- wait :: st.move_waits
      | None -> ());
     Wait wait
   end
@@ -265,19 +269,54 @@ let check st ~now =
 
 let active_tool st = if st.tool == dummy then None else Some st.tool
 
+let max_conc = 5
+
+(* MoveExtJ moves the external axes only; a robot description has none (R-4.1-n). 9E9 is a num,
+   single precision: 8999999488. *)
+let unused_axis = Int32.float_of_bits (Int32.bits_of_float 9e9)
+
+let programs_external_axes jointtarget =
+  Array.exists (fun f -> not (f >= unused_axis)) (nums (V.components jointtarget).(1))
+
+(* Where the arm will stand when it has done all it was given: the point of the last move
+   still queued, or where it stands. *)
+let arm_end_joints st now =
+  match st.last_planned with
+  | Some id when P.segment_span st.planner id <> None -> P.target_joints st.planner id
+  | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> P.target_joints st.planner 0)
+
+let tool0_value () =
+  V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+              V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |]
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
   let get n = value ctx args n in
-  match get "Speed", get "Zone", get "Tool" with
+  let ext = same name "MoveExtJ" in
+  match get "Speed", get "Zone", (if ext then Some (tool0_value ()) else get "Tool") with
   | Some speed, Some zone, Some tool -> (
-      let motion = match String.lowercase_ascii name with
+      let start = arm_end_joints st now in
+      (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
+         mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
+      let retraced = match st.history with
+        | (forward, from) :: older when st.backward && not ext ->
+            st.history <- older;
+            let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
+            let back () = MM.Frames.calc_rob_t st.kin from (tool_of tool) wobj_d in
+            (match forward with
+             | P.Linear _ -> Result.to_option (Result.map (fun r -> P.Linear r) (back ()))
+             | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
+             | P.Joint _ | P.Abs_joint _ -> Some (P.Abs_joint from))
+        | _ -> None in
+      let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
+        | "moveextj" -> Some (P.Abs_joint (arm_end_joints st now))
         | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
         | "movec" -> (match get "CirPoint", get "ToPoint" with
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
-      let target_label = label ctx (if same name "MoveAbsJ" then "ToJointPos" else "ToPoint") in
+      let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
       (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
          the error handler (StorePath ... RestoPath), while its path is there. *)
@@ -285,11 +324,17 @@ let move ctx st name args =
         | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) st.tracks -> st.interrupted <- None; None
         | Some (_, k) as i when k = key -> st.interrupted <- None; i
         | _ -> None in
+      (* At most five \Conc moves in a row (ABB, MoveL \Conc; installed-facts.md section 5): a
+         run ends at a move without \Conc, or when the robot has done all it was given
+         (R-4.1-m). The sixth is refused before it is planned. *)
+      let conc = present ctx args "Conc" in
+      if (not conc) || reached w (P.finished_by st.planner) then st.conc_run <- 0;
       match motion, st.async, interrupted with
       | None, _, _ -> Failed "ERR_ARGVALERR"
+      | Some _, None, None when conc && st.conc_run >= max_conc -> Failed "ERR_CONC_MAX"
       | Some _, Some ({ a_mode = Sync_last; _ } as a), _ ->
           (* §7.4: the error waits for the next move instruction, and is raised there. *)
-          st.async <- None; Failed a.a_name
+          st.async <- None; st.async_raised <- true; Failed a.a_name
       | Some _, _, Some (id, _) ->
           (* RETRY of the move the asynchronous error was raised at: its path is still there
              (StartMove goes on with it); the move is not planned twice. *)
@@ -306,10 +351,15 @@ let move ctx st name args =
           match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
-              st.tool <- V.copy tool;
-              st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+              (* MoveExtJ has no tool: the active tool and work object stay. *)
+              if not ext then begin
+                st.tool <- V.copy tool;
+                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy)
+              end;
               let joints = P.target_joints st.planner id in
-              let tframe = (tool_of tool).tframe in
+              (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
+              let tframe = match MM.Frames.as_robot_held (tool_of tool) (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
+                | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
               let target = G.pmult (MM.Kinematics.forward st.kin joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
@@ -333,6 +383,9 @@ let move ctx st name args =
                    | _ -> ())
                | _ -> ());
               st.last_planned <- Some id; st.new_move <- Some id;
+              if conc then st.conc_run <- st.conc_run + 1;
+              if not (st.backward || ext) then
+                st.history <- (motion, start) :: List.filteri (fun i _ -> i < 255) st.history;
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
@@ -371,7 +424,8 @@ let collide st w =
         P.stop st.planner ~at:t;
         st.dirty <- true;
         emit st (Path_command { time = t; command = "collision" });
-        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org }
+        st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org;
+                           a_handled = st.collision_handling }
       end
       else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
     due
@@ -395,7 +449,6 @@ let finish st =
 let wait_abandoned st w ~now =
   if List.exists (fun m -> m == w) st.move_waits then begin
     st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
-    st.waiting <- None;
     P.clear st.planner ~at:now;
     st.dirty <- true;
     emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
@@ -410,9 +463,14 @@ let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
    level: \HighLevel, \LowLevel) SearchPoint takes the robot's position; with \Stop, \PStop or
    \SStop the robot stands there and the rest of the path is dropped, otherwise it goes on to
    ToPoint. No hit by the end of the move: ERR_WHLSEARCH. *)
-let search ctx st args =
+let search ctx st name args =
   let w = ctx.world in
   let get n = value ctx args n in
+  (* SearchJ: a joint move; SearchC: a circular one through CirPoint (ABB, RAPID Instructions). *)
+  let path target = match String.lowercase_ascii name with
+    | "searchj" -> Some (P.Joint (robtarget_of target))
+    | "searchc" -> Option.map (fun c -> P.Circular (robtarget_of c, robtarget_of target)) (get "CirPoint")
+    | _ -> Some (P.Linear (robtarget_of target)) in
   let signal = match arg ctx args "Signal" with
     | Location (box, i, _) -> (
         match box.(i) with
@@ -421,7 +479,7 @@ let search ctx st args =
     | _ -> None in
   match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
   | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
-  | Some id, Some target, Some speed, Some tool, Location (box, i, _) -> (
+  | Some id, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
       let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
       let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
       let hit ~old ~now =
@@ -435,16 +493,17 @@ let search ctx st args =
       let target_label = label ctx "ToPoint" in
       let fine = Option.get (D.find D.zonedata "fine") in
       let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
-          ~label:target_label (speed_of speed) fine (P.Linear (robtarget_of target)) in
+          ~label:target_label (speed_of speed) fine (Option.get (path target)) in
       let now = W.now w in
       match P.plan st.planner ~now m with
-      | Error e -> fail ctx "SearchL" e
+      | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
+          st.conc_run <- 0;
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
-          emit st (Segment_planned { time = now; id = move; instruction = "SearchL"; label = target_label;
+          emit st (Segment_planned { time = now; id = move; instruction = name; label = target_label;
                                      zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
                                      joints; ready_time; start_time; end_time });
           st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
@@ -460,7 +519,7 @@ let search ctx st args =
                  | Error _ -> ())
              | Error _ -> ());
             if stops then (P.clear st.planner ~at:t; st.dirty <- true;
-                           emit st (Path_command { time = t; command = "SearchL stop" })) in
+                           emit st (Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
             let v = W.read w id in
@@ -474,26 +533,30 @@ let search ctx st args =
             end in
           let finish ~timed_out:_ = if !found then None else Some "ERR_WHLSEARCH" in
           if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
-          else Wait { W.what = "the robot (SearchL " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
+          else Wait { W.what = "the robot (" ^ name ^ " " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
   | _ -> Failed "ERR_ARGVALERR"
 
 (* ------------------------------------------------------------------ the routines *)
 
 let names = [
-  "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
+  "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
+  "WriteCfgData";
 ]
 
 let modelled name = List.exists (same name) names
 
 let take_org_error st =
   match st.async with
-  | Some { a_mode = Sync_org; a_name; a_move } ->
-      (* Raised at the move instruction the program pointer waits in: its RETRY waits again. *)
-      st.async <- None; st.interrupted <- st.waiting; st.waiting <- None; Some (a_name, a_move)
+  | Some { a_mode = Sync_org; a_name; a_move; a_handled } ->
+      (* The program pointer is kept (R-7.4-m): a move instruction it waits in goes on waiting
+         after RETRY or TRYNEXT. *)
+      st.async <- None; Some (a_name, a_move, a_handled)
   | _ -> None
+
+let take_async_raised st = let r = st.async_raised in st.async_raised <- false; r
 
 let take_new_move st = let l = st.new_move in st.new_move <- None; l
 
@@ -519,7 +582,11 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
-  | "searchl" -> Some (search ctx st args)
+  | "moveextj" -> (
+      match get "ToJointPos" with
+      | Some j when programs_external_axes j -> Some Not_modelled
+      | _ -> Some (move ctx st name args))
+  | "searchl" | "searchj" | "searchc" -> Some (search ctx st name args)
   | "waittime" when present ctx args "InPos" -> (
       match num ctx args "Time" with
       | Some t when t >= 0. && Float.is_finite t ->
@@ -564,8 +631,18 @@ let call_unguarded (ctx : context) st name args =
       emit st (Path_command { time = now; command = "ProcerrRecovery" });
       st.dirty <- true;
       let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
-      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode };
+      st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode; a_handled = true };
       Some (Returned None)
+  | "writecfgdata" -> (
+      (* §7.6 example 4: the system parameter Collision Error Handling, switched by the program;
+         any other parameter is not modelled. *)
+      match get "InstancePath", get "Attribute", num ctx args "CfgData" with
+      | Some (V.String path), Some (V.String attr), Some v
+        when String.lowercase_ascii path = "/sys/sys_misc/collisionerrorhandling"
+             && String.lowercase_ascii attr = "value" ->
+          if v = 0. || v = 1. then (st.collision_handling <- v = 1.; Some (Returned None))
+          else Some (Failed "ERR_ARGVALERR")
+      | _ -> None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
   | "velset" -> (
       match num ctx args "Override", num ctx args "Max" with
@@ -582,8 +659,7 @@ let call_unguarded (ctx : context) st name args =
   | "cspeedoverride" -> Some (Returned (Some (V.num 100.)))
   | "ctool" -> Some (Returned (Some (match active_tool st with
       | Some t -> V.copy t
-      | None -> V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                            V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |])))
+      | None -> tool0_value ())))
   | "cwobj" -> Some (Returned (Some (if st.wobj == dummy then
                                        V.Record [| V.Bool false; V.Bool true; V.String "";
                                                    V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);

@@ -55,14 +55,24 @@ val drain : state -> Rapid_controller.World.t -> event list
 val finish : state -> event list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
+val set_backward : state -> bool -> unit
+(** A BACKWARD handler begins (true) or ends (false) its run (ch. 6): its move instructions
+    retrace the forward moves, the newest first (§6.3). *)
+
+val take_async_raised : state -> bool
+(** Whether the failure a move instruction just gave is a \SyncLastMoveInst error (§7.4), once:
+    its handler's TRYNEXT executes as RETRY. *)
+
 val take_new_move : state -> int option
 (** The move the last primitive planned, once: the machine records which routine activation
     executed it, to raise its asynchronous errors there (§7.4, §7.6). *)
 
-val take_org_error : state -> (string * int option) option
+val take_org_error : state -> (string * int option * bool) option
 (** An asynchronous error to raise now in the routine of a move (ProcerrRecovery
-    \SyncOrgMoveInst, a collision): its ERR_ name and the move the robot executed, once. Errors
-    of \SyncLastMoveInst are raised by the move instructions themselves. *)
+    \SyncOrgMoveInst, a collision): its ERR_ name, the move the robot executed, and whether an
+    error handler may take it (false: a collision while the program has switched Collision Error
+    Handling off, §7.6), once. Errors of \SyncLastMoveInst are raised by the move instructions
+    themselves. *)
 
 val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
 (** A wait an error or a long jump leaves (§7.2): if it is a move instruction's, the move is

@@ -2,7 +2,7 @@ MODULE backward_moves
 ! @format 3
 ! @section 6.3
 ! @expect ok
-! @description Move instructions in a BACKWARD handler run as moves, in the mirrored order of the forward ones (section 6.3); forward, only the body's moves run; backward, the handler's moves take the robot back to p1. The backward run is pinned by test/golden/debug-back-moves.cmd.
+! @description Move instructions in a BACKWARD handler run as moves, in the mirrored order of the forward ones (section 6.3); forward, only the body's moves run; backward, the handler's moves retrace the forward ones, newest first (R-6.3-m): MoveL p2 takes the robot from p2 back to p1, MoveJ p1 from p1 back to where it stood before the forward MoveJ, the IRB 120's home (all axes 0, the flange at y 0). The backward run is pinned by test/golden/debug-back-moves.cmd.
 ! @exit 0
 ! @output at y 250
   CONST robtarget p1 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];

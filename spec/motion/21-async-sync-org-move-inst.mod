@@ -4,12 +4,10 @@ MODULE user_module
 ! @expect ok
 ! @statement-time 0
 ! @io io/procerr.io
-! @description The example of section 7.4 with ProcerrRecovery \\SyncOrgMoveInst: the error belongs to the first MoveL, whose path the robot was on, and is raised in my_process at once (4.85 s) while the program pointer waits in write_log: write_log is abandoned (its UNDO runs, not its error handler, R-7.4-b), my_process handles the error; its RETRY runs the call of write_log again (R-7.4-b), then the second MoveL, at 5.35 s: the robot, restarted at once, had to begin the corner at p2 before that, so p2 became a stop point (Z-failure, reached at 5 s) and the second move runs from 5.35 s to 6.35 s.
+! @description The example of section 7.4 with ProcerrRecovery \SyncOrgMoveInst: the error belongs to the first MoveL, whose path the robot was on, and is raised in my_process at once (4.85 s) while the program pointer waits in write_log; write_log is not abandoned (its UNDO does not run, nor its error handler): my_process handles the error, restarts the path (StartMove, 4.85 s, no pause) and its RETRY goes on from where the program pointer is, in write_log's WaitTime (R-7.4-m); the first MoveL is not executed again. write_log ends at 5.3 s and the second MoveL is planned then: the robot had to begin the corner at p2 at 4.9 s, so p2 became a stop point (Z-failure, reached at 5 s) and the 100 mm at v100 run from 5.3 s to 6.3 s.
 ! @output write_log at 4800
-! @output write_log abandoned
 ! @output ERR_PATH_STOP in my_process at 4850
-! @output write_log at 4850
-! @output done at 6350
+! @output done at 6300
   CONST robtarget p1 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   CONST robtarget p2 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   VAR intnum proc_sup_int;

@@ -4,9 +4,7 @@ MODULE collision_in_chain
 ! @expect ok
 ! @statement-time 0
 ! @io io/collision-3s.io
-! @description Example 1 of section 7.6: the motion pointer is in proc1 (its \Conc MoveJ to p20 at v10), the program pointer in proc3 (WaitTime, called through proc2) when the robot collides at 3 s: the error handler of proc1 runs first (step 1); proc3 and proc2 are abandoned, their UNDO handlers run (R-7.6-a). proc1 handles the error: StartMove and TRYNEXT go on after the call of proc2, and the robot reaches p20.
-! @output proc3 undo
-! @output proc2 undo
+! @description Example 1 of section 7.6: the motion pointer is in proc1 (its \Conc MoveJ to p20 at v10), the program pointer in proc3 (WaitTime 100, called through proc2) when the robot collides at 3 s: the error handler of proc1 runs first (step 1), with the program pointer kept in proc3 (R-7.4-m): proc3 and proc2 are not abandoned. proc1's handler restarts the path and its TRYNEXT executes as RETRY (section 7.4): the program pointer goes on in proc3's WaitTime; proc3 and proc2 return, WaitRob \InPos waits for the robot, which reaches p20.
 ! @output proc1 TRUE
 ! @output at p20 TRUE
   CONST robtarget p10 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];

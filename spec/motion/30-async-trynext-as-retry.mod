@@ -1,0 +1,61 @@
+MODULE user_module
+! @format 3
+! @section 7.4
+! @expect ok
+! @statement-time 0
+! @io io/procerr.io
+! @description Section 7.4, note: "in this case TRYNEXT executes as RETRY, for the system can restart from where the error occurred": the example of section 7.4 with \SyncLastMoveInst whose handler ends with TRYNEXT; the error is raised at the second MoveL of my_process (5.3 s, after write_log), and TRYNEXT executes that MoveL (it is not skipped, R-7.4-m): the robot, restarted, goes on to p2 (0.45 s late: 5.45 s) and then 100 mm up: 6.45 s, at z 400.
+! @output write_log at 4800
+! @output ERR_PATH_STOP in my_process at 5300
+! @output done at 6450
+! @output at z 400
+  CONST robtarget p1 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p2 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  VAR intnum proc_sup_int;
+  VAR clock clk;
+  PROC main()
+    VAR pos here;
+    MoveJ p1, v1000, fine, tool0;
+    ClkStart clk;
+    my_process;
+    TPWrite "done at " \Num:=Round(1000 * ClkRead(clk));
+    here := CPos(\Tool:=tool0);
+    TPWrite "at z " \Num:=Round(here.z);
+  ENDPROC
+  PROC my_process()
+    my_proc_on;
+    MoveL p2, v100, z10, tool0;
+    write_log;
+    MoveL Offs(p2, 0, 0, 100), v100, fine, tool0;
+    my_proc_off;
+  ERROR
+    IF ERRNO = ERR_PATH_STOP THEN
+      TPWrite "ERR_PATH_STOP in my_process at " \Num:=Round(1000 * ClkRead(clk));
+      my_proc_on;
+      StartMove;
+      TRYNEXT;
+    ENDIF
+  ENDPROC
+  PROC write_log()
+    TPWrite "write_log at " \Num:=Round(1000 * ClkRead(clk));
+    WaitTime 0.5;
+  ERROR
+    TPWrite "not this handler";
+  UNDO
+    TPWrite "write_log abandoned";
+  ENDPROC
+  TRAP iprocfail
+    my_proc_off;
+    ProcerrRecovery \SyncLastMoveInst;
+    RETURN;
+  ENDTRAP
+  PROC my_proc_on()
+    SetDO do_myproc, 1;
+    CONNECT proc_sup_int WITH iprocfail;
+    ISignalDI di_proc_sup, 1, proc_sup_int;
+  ENDPROC
+  PROC my_proc_off()
+    SetDO do_myproc, 0;
+    IDelete proc_sup_int;
+  ENDPROC
+ENDMODULE
