@@ -334,7 +334,11 @@ let number lx text start stop =
    the current lexeme (an error is reported at it). *)
 let name lx text start stop chars =
   let reserved = Reserved.find text start stop in
-  if reserved >= 0 then Reserved.tokens.(reserved)
+  if reserved >= 0 && lx.installed && Reserved.tokens.(reserved) = CONTINUE then
+    (* The installed RaiseToUser declares ABB's switch Continue (doc/rulings.md R-7.3-m): the
+       installed environment has no CONTINUE statement. *)
+    IDENT (Names.find_or_add lx.names text start stop)
+  else if reserved >= 0 then Reserved.tokens.(reserved)
   else begin
     if chars > max_identifier_length then
       error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
