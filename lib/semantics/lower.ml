@@ -466,8 +466,9 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       ctx.routine_now <- i;
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r ->
-          (* §9.4: the routines of a NOSTEPIN module are below the user level (§7.3). *)
-          let r = { r with nostepin = List.exists (fun (a : A.module_attribute) -> a.it = A.NOSTEPIN)
+          (* §9.4: the routines of a NOSTEPIN module (and of a NOVIEW one, R-9.4-a) are below the
+             user level (§7.3). *)
+          let r = { r with nostepin = (not inst) && List.exists (fun (a : A.module_attribute) -> a.it = A.NOSTEPIN || a.it = A.NOVIEW)
                                          m.A.attributes } in
           local_names := Array.init r.locals (fun s ->
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;

@@ -49,7 +49,7 @@ type place = {
   module_name : string;
   routine : Env.routine option;          (* None: module-level declarations *)
   in_error_handler : bool;
-  in_nostepin : bool;                    (* a routine of a NOSTEPIN module (§7.3, §9.4) *)
+  in_nostepin : bool;                    (* a routine of a NOSTEPIN or NOVIEW module (§7.3, §9.4) *)
   in_loop : bool;
   labels : (string, unit) Hashtbl.t option list;
       (* labels of the enclosing statement lists (by key), innermost first; None: a list without
@@ -1416,7 +1416,7 @@ let scope_of ctx info : Env.scope =
 
 let module_place ctx info =
   { scope = scope_of ctx info; module_name = info.m_name; routine = None; in_error_handler = false;
-    in_nostepin = List.exists (fun (a : module_attribute) -> a.it = NOSTEPIN) info.m.attributes;
+    in_nostepin = List.exists (fun (a : module_attribute) -> a.it = NOSTEPIN || a.it = NOVIEW) info.m.attributes;
     in_loop = false; labels = [] }
 
 (* §2.14, §2.15: type definitions. Records are created first, so that components may name
