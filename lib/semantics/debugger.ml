@@ -94,6 +94,10 @@ let run_until s stop =
         else begin
           let rule, events = M.step s.cfg in
           note_rule s rule;
+          (* What happens to errors inside NOSTEPIN code is not shown (§9.4): the user sees them
+             when they reach the user level, at the call (§7.3, R-7.3-o). What it writes is. *)
+          let events = if visible s then events
+            else List.filter (function M.Error_raised _ | M.Error_handled _ -> false | _ -> true) events in
           show_events s events;
           go false
         end
