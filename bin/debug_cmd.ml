@@ -40,7 +40,9 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
         if List.exists (fun (a : Rapid_syntax.Ast.module_attribute) ->
             match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
         then [ ident m.module_name ] else []) parsed in
-    let session = D.create ~max_steps ~routine_data ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
+    let type_of = Rapid_semantics.Debug_types.type_of parsed in
+    let session = D.create ~max_steps ~routine_data ~type_of
+        ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
     let rec loop () =
       match input_line ic with
       | exception End_of_file -> ()
