@@ -202,7 +202,7 @@ let assign env (target : Ast.data_reference) (e : Ast.expression) =
     | VAR_placeholder -> Error "ERR_EXECPHR: a placeholder is no place (§2.9)" in
   let* root, steps = path target in
   let* datum = env root in
-  let* write = match datum.write with Some w -> Ok w | None -> Error (root ^ " is read-only: a constant, a loop variable or a system variable (§2.20)") in
+  let* write = match datum.write with Some w -> Ok w | None -> Error (root ^ " is read-only: a constant, a loop variable or a system variable (§4.5)") in
   let* whole = match datum.value with Some w -> Ok w | None -> Error (root ^ " is an absent optional parameter (ERR_NOTPRES, §5.2)") in
   match steps with
   | [] -> let* v = fit whole v in if write v then Ok v else Error (root ^ " cannot be written")

@@ -160,7 +160,13 @@ let env s name =
   | None -> Error (Printf.sprintf "no data object %s in the scope of %s" name (M.current_routine s.cfg).name)
   | Some slot ->
       let known = s.type_of (M.current_routine s.cfg) name in
-      let writable = match known with Some (_, w) -> w | None -> true in
+      (* ERRNO and INTNO are the system's (ch. 12), known as such to the program itself. *)
+      let system = match slot with
+        | Ir.Global i ->
+            let p = M.program s.cfg in
+            i = p.errno || i = p.intno || p.globals.(i).g_read_only
+        | Ir.Local _ -> false in
+      let writable = (not system) && (match known with Some (_, w) -> w | None -> true) in
       Ok { Debug_expr.value = M.read_data s.cfg slot; typ = Option.map fst known;
            write = (if writable then Some (fun v -> M.write_data s.cfg slot v) else None) }
 
