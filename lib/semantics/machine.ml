@@ -990,9 +990,11 @@ let leave_abandoned cfg after rule rule_entry =
       release cfg act;
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
       (* An error leaving NOSTEPIN routines for the user level is the call's there (R-7.3-o). *)
+      let leaves_nostepin = act.routine.nostepin && not caller.routine.nostepin && act.routine.kind <> Trap in
+      let relocate (e : err) = { e with err_at = region_of_focus_stmt cfg; chain = lazy (call_chain caller) } in
       let after = match after with
-        | Go_on_propagate e when act.routine.nostepin && not caller.routine.nostepin && act.routine.kind <> Trap ->
-            Go_on_propagate { e with err_at = region_of_focus_stmt cfg; chain = lazy (call_chain caller) }
+        | Go_on_propagate e when leaves_nostepin -> Go_on_propagate (relocate e)
+        | Go_on_long_jump (e, target) when leaves_nostepin -> Go_on_long_jump (relocate e, target)
         | other -> other in
       (match after with
        | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
