@@ -621,7 +621,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : ro
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> raise (Halt M.Ended)
-  | Not_modelled when String.lowercase_ascii name = "raisetouser" ->
+  | Not_modelled when String.length name = 11 && String.lowercase_ascii name = "raisetouser" ->
       (* RaiseToUser (§7.3) is the machine's, with the user level. *)
       leave_to_machine ~at:call_at callee.name callee.name
   | Not_modelled when st.stub_unmodelled ->

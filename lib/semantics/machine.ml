@@ -487,7 +487,7 @@ let late_routine cfg name =
 let raise_to_user_ref : (config -> call_state -> string * event list) ref = ref (fun _ _ -> ("", []))
 
 let call_primitive cfg (cs : call_state) name =
-  if String.lowercase_ascii name = "raisetouser" then !raise_to_user_ref cfg cs else
+  if String.length name = 11 && String.lowercase_ascii name = "raisetouser" then !raise_to_user_ref cfg cs else
   let events = ref [] in
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
