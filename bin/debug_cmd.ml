@@ -40,7 +40,9 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
         if List.exists (fun (a : Rapid_syntax.Ast.module_attribute) ->
             match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
         then [ ident m.module_name ] else []) parsed in
-    let session = D.create ~max_steps ~routine_data ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
+    let type_of = Rapid_semantics.Debug_types.type_of parsed in
+    let session = D.create ~max_steps ~routine_data ~type_of
+        ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
     let rec loop () =
       match input_line ic with
       | exception End_of_file -> ()
@@ -59,7 +61,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
   let doc = "step through a task as on the FlexPendant: forward, backward (ch. 6), by statement" in
   let man = [
     `S Manpage.s_description;
-    `P "Checks and loads the FILEs as $(b,rapid-sem run) does, stops at the first statement of the entry routine, then runs the commands of doc/debugger.md (step [N], next, finish, back, continue, break FILE:LINE, delete [N], print REF, set REF := LITERAL, where, quit), one a line, from standard input or --script FILE. After each command that moves the program pointer it prints MODULE:LINE and the statement's line.";
+    `P "Checks and loads the FILEs as $(b,rapid-sem run) does, stops at the first statement of the entry routine, then runs the commands of doc/debugger.md (step [N], next, finish, back, continue, break FILE:LINE, delete [N], print EXPR, set REF := EXPR, where, quit), one a line, from standard input or --script FILE. After each command that moves the program pointer it prints MODULE:LINE and the statement's line.";
     `S Manpage.s_exit_status;
     `P "0 when the session ends (quit, or the end of the commands) with the task still running or ended; otherwise that of $(b,rapid-sem run) for how the task ended.";
   ] in

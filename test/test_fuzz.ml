@@ -437,6 +437,9 @@ let token_names =
 let comment_in_record =
   "a comment may not stand on a line of its own inside RECORD ... ENDRECORD, except on the \
    last line (§2.10)"
+let continue_as_argument =
+  "CONTINUE is a reserved word (§2.4): it cannot name an optional argument; the manual's switch \
+   is \\Resume (§7.3)"
 let empty_record =
   "expected a record component: a record definition has at least one (§2.14); found ENDRECORD"
 
@@ -458,8 +461,15 @@ let expected_refusal ?(strict = false) (s : sentence) =
     else if not (List.mem `Component items) then Some empty_record
     else None
   in
+  (* \Continue as an argument's name is the dialect's (doc/dialect.md, R-7.3-m): refused under
+     --strict only. Records precede routines, so a record's refusal comes first. *)
+  let rec continue_argument i =
+    if i + 1 >= n then None
+    else if t.(i) = "BACKSLASH" && t.(i + 1) = "CONTINUE" then Some continue_as_argument
+    else continue_argument (i + 1) in
   let rec find i =
-    if i >= n then None else if t.(i) = "RECORD" then record (i + 2) [] else find (i + 1)
+    if i >= n then (if strict then continue_argument 0 else None)
+    else if t.(i) = "RECORD" then record (i + 2) [] else find (i + 1)
   and record i items =
     if i >= n then None
     else match t.(i) with

@@ -621,6 +621,9 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : ro
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> raise (Halt M.Ended)
+  | Not_modelled when String.length name = 11 && String.lowercase_ascii name = "raisetouser" ->
+      (* RaiseToUser (§7.3) is the machine's, with the user level. *)
+      leave_to_machine ~at:call_at callee.name callee.name
   | Not_modelled when st.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22). *)
@@ -1070,6 +1073,14 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | Some (_, k) when Array.exists (fun (x : routine) -> x.nostepin) program.routines ->
+      (* The user level of NOSTEPIN routines (§7.3: RaiseToUser, errors reported at the user's
+         call) is the machine's alone. *)
+      let x = List.find (fun (x : routine) -> x.nostepin) (Array.to_list program.routines) in
+      ignore k;
+      Ok { outcome = M.Unsupported { name = x.module_name; at = x.at;
+                                     reason = "the user level of NOSTEPIN modules (§7.3) " ^ machine_only_reason };
+           fuel_used = 0 }
   | Some (_, k) ->
       let st = initial_state ?limits ?fuel ?stub_unmodelled ~all_events ~emit:on_event program in
       let r = program.routines.(k) in

@@ -16,6 +16,8 @@ type t = {
   mutable rules_order : string list;
   hidden : string -> bool;                            (* NOSTEPIN and NOVIEW modules, by name *)
   routine_data : Ir.routine -> string list;            (* names of its routine data, in order *)
+  type_of : Ir.routine -> string -> (Rapid_typing.Types.object_type * bool) option;
+      (* a name's declared type in a routine's scope, and whether it may be written *)
 }
 
 let config s = s.cfg
@@ -94,6 +96,10 @@ let run_until s stop =
         else begin
           let rule, events = M.step s.cfg in
           note_rule s rule;
+          (* What happens to errors inside NOSTEPIN code is not shown (§9.4): the user sees them
+             when they reach the user level, at the call (§7.3, R-7.3-o). What it writes is. *)
+          let events = if visible s then events
+            else List.filter (function M.Error_raised _ | M.Error_handled _ -> false | _ -> true) events in
           show_events s events;
           go false
         end
@@ -101,9 +107,10 @@ let run_until s stop =
   in
   go true
 
-let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> []) ~out cfg =
+let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> [])
+    ?(type_of = fun _ _ -> None) ~out cfg =
   let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
-            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data } in
+            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data; type_of } in
   (* The machine starts settled, at the entry routine's first statement when it has one. *)
   if not (M.pointer_statement cfg <> None && visible s) then run_until s (fun () -> true);
   show_pointer s;
@@ -120,7 +127,7 @@ let at_breakpoint s =
   List.exists (fun (_, f, l) ->
       l = line && (f = file || Filename.basename f = Filename.basename file)) s.breakpoints
 
-(* --- data references: NAME, NAME{i,j}, NAME.component is not modelled (doc/debugger.md) *)
+(* --- data: the names an expression of print and set reads (doc/debugger.md) *)
 
 let lower = String.lowercase_ascii
 
@@ -144,104 +151,43 @@ let find_data s name =
     | _ -> None in
   match local with Some slot -> Some slot | None -> M.global_slot cfg n
 
-let parse_reference text =
-  let text = String.trim text in
-  match String.index_opt text '{' with
-  | None -> Ok (text, [])
-  | Some i ->
-      let name = String.trim (String.sub text 0 i) in
-      let rest = String.sub text (i + 1) (String.length text - i - 1) in
-      if String.length rest = 0 || rest.[String.length rest - 1] <> '}' then Error "an index list ends with }"
-      else
-        let inner = String.sub rest 0 (String.length rest - 1) in
-        let idx = List.map (fun x -> int_of_string_opt (String.trim x)) (String.split_on_char ',' inner) in
-        if List.mem None idx then Error "indexes are whole numbers"
-        else Ok (name, List.map Option.get idx)
-
-let rec element v = function
-  | [] -> Ok v
-  | i :: more -> (
-      match v with
-      | Value.Array es when i >= 1 && i <= Array.length es -> element es.(i - 1) more
-      | Value.Array _ -> Error (Printf.sprintf "index %d out of bounds (ERR_OUTOFBND)" i)
-      | _ -> Error "not an array")
-
-let resolve s text =
-  match parse_reference text with
-  | Error m -> Error m
-  | Ok (name, idx) -> (
-      match find_data s name with
-      | None -> Error (Printf.sprintf "no data object %s in the scope of %s" name (M.current_routine s.cfg).name)
-      | Some slot -> (
-          match M.read_data s.cfg slot with
-          | None -> Error (Printf.sprintf "%s is an absent optional parameter" name)
-          | Some v -> Ok (slot, idx, v)))
-
 let value_text v = try Format.value_text v with Value.Type_mismatch _ -> "<object>"
 
+(* The data objects an expression names (Debug_expr): found as [find_data] finds them, typed by
+   the session's [type_of] for their components. *)
+let env s name =
+  match find_data s name with
+  | None -> Error (Printf.sprintf "no data object %s in the scope of %s" name (M.current_routine s.cfg).name)
+  | Some slot ->
+      let known = s.type_of (M.current_routine s.cfg) name in
+      (* ERRNO and INTNO are the system's (ch. 12), known as such to the program itself. *)
+      let system = match slot with
+        | Ir.Global i ->
+            let p = M.program s.cfg in
+            i = p.errno || i = p.intno || p.globals.(i).g_read_only
+        | Ir.Local _ -> false in
+      let writable = (not system) && (match known with Some (_, w) -> w | None -> true) in
+      Ok { Debug_expr.value = M.read_data s.cfg slot; typ = Option.map fst known;
+           write = (if writable then Some (fun v -> M.write_data s.cfg slot v) else None) }
+
 let print_ s text =
-  match resolve s text with
+  match Debug_expr.parse_expression text with
   | Error m -> s.out ("print: " ^ m)
-  | Ok (_, idx, v) -> (
-      match element v idx with
-      | Ok e -> s.out (Printf.sprintf "%s = %s" (String.trim text) (value_text e))
+  | Ok e -> (
+      match Debug_expr.eval (env s) e with
+      | Ok v -> s.out (Printf.sprintf "%s = %s" (String.trim text) (value_text v))
       | Error m -> s.out ("print: " ^ m))
 
-(* A literal of the old value's type (§2.5-§2.8). *)
-let literal old text =
-  let text = String.trim text in
-  match old with
-  | Value.Num _ | Value.Dnum _ -> (
-      let negative = String.length text > 0 && text.[0] = '-' in
-      let digits = if negative then String.trim (String.sub text 1 (String.length text - 1)) else text in
-      let parsed = try Num_literal.of_text digits with Invalid_argument m | Failure m -> Error m in
-      match parsed with
-      | Ok l ->
-          let v = Value.of_literal l (match old with Value.Dnum _ -> `Dnum | _ -> `Num) in
-          if not (Float.is_finite (Value.num_value v)) then Error "the number is beyond the range of its type (§2.13)"
-          else Ok (if not negative then v else match v with
-            | Value.Num f -> Value.Num (-. f) | Value.Dnum f -> Value.Dnum (-. f) | v -> v)
-      | Error _ -> Error "a num literal is expected")
-  | Bool _ -> (
-      match String.uppercase_ascii text with
-      | "TRUE" -> Ok (Value.Bool true) | "FALSE" -> Ok (Value.Bool false)
-      | _ -> Error "TRUE or FALSE is expected")
-  | String _ ->
-      let n = String.length text in
-      if n >= 2 && text.[0] = '"' && text.[n - 1] = '"' && not (String.contains (String.sub text 1 (n - 2)) '"') then
-        if n - 2 > 80 then Error "a string has at most 80 characters (§2.13)"
-        else Ok (Value.String (String.sub text 1 (n - 2)))
-      else Error "a string literal is expected"
-  | _ -> Error "only num, dnum, bool and string data can be set"
-
 let set_ s text =
-  let assignment =
-    match Str.search_forward (Str.regexp_string ":=") text 0 with
-    | i -> Some (String.sub text 0 i, String.sub text (i + 2) (String.length text - i - 2))
-    | exception Not_found -> None in
-  match assignment with
-  | None -> s.out "set: VAR := LITERAL"
-  | Some (target, value) -> (
-      match resolve s target with
-      | Error m -> s.out ("set: " ^ m)
-      | Ok (slot, idx, whole) -> (
-          let store =
-            match List.rev idx with
-            | [] -> (match literal whole value with
-                | Ok v -> if M.write_data s.cfg slot v then Ok v else Error "cannot be written"
-                | Error m -> Error m)
-            | last :: rev_parent -> (
-                match element whole (List.rev rev_parent) with
-                | Ok (Value.Array es) when last >= 1 && last <= Array.length es -> (
-                    match literal es.(last - 1) value with
-                    | Ok v -> es.(last - 1) <- v; Ok v
-                    | Error m -> Error m)
-                | Ok _ -> Error (Printf.sprintf "index %d out of bounds (ERR_OUTOFBND)" last)
-                | Error m -> Error m)
-          in
-          match store with
-          | Ok v -> s.out (Printf.sprintf "%s = %s" (String.trim target) (value_text v))
-          | Error m -> s.out ("set: " ^ m)))
+  match Debug_expr.parse_assignment text with
+  | Error _ when not (String.contains text ':') -> s.out "set: VAR := EXPR"
+  | Error m -> s.out ("set: " ^ m)
+  | Ok (target, e) -> (
+      match Debug_expr.assign (env s) target e with
+      | Ok v ->
+          let t = match String.index_opt text ':' with Some i -> String.sub text 0 i | None -> text in
+          s.out (Printf.sprintf "%s = %s" (String.trim t) (value_text v))
+      | Error m -> s.out ("set: " ^ m))
 
 let where s =
   List.iteri (fun i ((r : Ir.routine), region) ->

@@ -157,6 +157,8 @@ type routine = {
                                                 --stub-unmodelled returns (§2.22) *)
   local : bool;                              (* LOCAL: visible in its module only (§5.3) *)
   at : region;
+  nostepin : bool;                           (* of a NOSTEPIN (or NOVIEW) module: below the user
+                                                level (§7.3, §9.4, R-9.4-a) *)
 }
 
 (* The initial value of a data object: a constant expression, or the type's initial value

@@ -419,7 +419,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
                local_inits = inits; body = main; backward; error; undo;
                primitive = (if installed && is_empty then Some r.r_name else None); at = name.at;
                stub_result = (match r.r_kind with Function t -> Some (shape_default t) | _ -> None);
-               local = r.r_local }
+               local = r.r_local; nostepin = false }
     | _ -> None
   in
   match decl.it with
@@ -466,6 +466,10 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       ctx.routine_now <- i;
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r ->
+          (* §9.4: the routines of a NOSTEPIN module (and of a NOVIEW one, R-9.4-a) are below the
+             user level (§7.3). *)
+          let r = { r with nostepin = (not inst) && List.exists (fun (a : A.module_attribute) -> a.it = A.NOSTEPIN || a.it = A.NOVIEW)
+                                         m.A.attributes } in
           local_names := Array.init r.locals (fun s ->
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
           r

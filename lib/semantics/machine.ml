@@ -65,6 +65,9 @@ type activation = {
   mutable retries : int;
   mutable retried : Ir.stmt option;
   trap_level : bool;                    (* a trap, or a routine a trap called (§7.2, ch. 8) *)
+  mutable resume : activation option;
+      (* RaiseToUser \Continue (§7.3): the NOSTEPIN routine whose error this routine's handler
+         handles at user level; RETRY and TRYNEXT there go on in it *)
 }
 
 and handling =
@@ -267,7 +270,7 @@ let activation ~routine ~slots ~present ~kinds ~module_data ~caller ~return_to ~
         | Some c when has_recovery_point c -> Some c
         | Some c -> c.recovery_up
         | None -> None);
-    memory = 0; handling = Body; retries = 0; retried = None;
+    memory = 0; handling = Body; retries = 0; retried = None; resume = None;
     trap_level = (match caller with None -> false | Some c -> c.trap_level) }
 
 let memory_exhausted cfg what at =
@@ -280,7 +283,20 @@ let charge cfg (act : activation) bytes =
   if bytes > cfg.limits.max_memory - cfg.memory then false
   else (cfg.memory <- cfg.memory + bytes; act.memory <- act.memory + bytes; true)
 
-let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
+(* The NOSTEPIN routines an error handler at user level could have gone on in (§7.3) are
+   abandoned with it when it ends otherwise (doc/rulings.md R-7.3-p). *)
+let rec release cfg (act : activation) =
+  cfg.memory <- cfg.memory - act.memory; act.memory <- 0;
+  match act.resume with
+  | None -> ()
+  | Some inner ->
+      act.resume <- None;
+      let rec up (a : activation) =
+        if a != act then begin
+          release cfg a;
+          match a.caller with Some c -> up c | None -> ()
+        end in
+      up inner
 
 let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(cooperative = false)
     (program : Ir.program) ~entry =
@@ -485,7 +501,10 @@ let late_routine cfg name =
       | Some i -> Some i
       | None -> find (fun (r : Ir.routine) -> not r.local))
 
+let raise_to_user_ref : (config -> call_state -> string * event list) ref = ref (fun _ _ -> ("", []))
+
 let call_primitive cfg (cs : call_state) name =
+  if String.length name = 11 && String.lowercase_ascii name = "raisetouser" then !raise_to_user_ref cfg cs else
   let events = ref [] in
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
@@ -761,7 +780,27 @@ let handle cfg (e : err) =
       cfg.focus <- F_next;
       ("raise-handle", [ Error_handled { name = e.name; routine = act.routine.name } ])
 
+(* §7.3: the user level of a routine of a NOSTEPIN module: the first routine above it in the
+   call chain that is not one (a trap's caller is no call: none across it), with the mark of its
+   call that led into the NOSTEPIN routines. *)
+let user_call (act : activation) =
+  let rec go (a : activation) =
+    match a.caller with
+    | Some c when a.routine.kind <> Trap -> if c.routine.nostepin then go c else Some (c, a.caller_mark)
+    | _ -> None in
+  if act.routine.nostepin then go act else None
+
+let region_of_mark (a : activation) = function K_stmt (s, _) :: _ -> s.Ir.sat | _ -> a.routine.at
+
+(* An error is reported at the user level (§7.3, R-7.3-o): the call in user code, and the call
+   chain from there. *)
+let at_user_level (act : activation) (e : err) =
+  match user_call act with
+  | Some (user, mark) -> { e with err_at = region_of_mark user mark; chain = lazy (call_chain user) }
+  | None -> e
+
 let stop cfg (e : err) rule =
+  let e = at_user_level cfg.act e in
   cfg.focus <- F_done (Stopped { name = e.name; number = e.number; at = e.err_at; chain = Lazy.force e.chain;
                                  about = e.about });
   (rule, [])
@@ -819,6 +858,15 @@ let to_int f =
 let rec statement_point = function
   | K_stmt ({ s = Elseif _; _ }, prev) :: _ -> statement_point prev
   | point -> point
+
+(* RETRY and TRYNEXT in an error handler at user level that RaiseToUser \Continue entered go on
+   in the NOSTEPIN routine whose error it was, as that routine's own would (§7.3). *)
+let resume_nostepin cfg =
+  match cfg.act.handling, cfg.act.resume with
+  | In_handler _, Some inner ->
+      let user = cfg.act in
+      user.resume <- None; user.handling <- Body; cfg.act <- inner; true
+  | _ -> false
 
 (* The statements of a statement list, one by one. *)
 let rec exec cfg (s : Ir.stmt) =
@@ -915,6 +963,9 @@ and exec_statement cfg (s : Ir.stmt) =
   | Raise (Some e) -> mark_here (); push cfg K_raise_value; cfg.focus <- F_expr e; ("raise-number", [])
   | Exit -> cfg.focus <- F_abandon Go_on_exit; ("exit", [])
   | Retry -> (
+      let resumed = resume_nostepin cfg in
+      let named (rule, events) = ((if resumed && rule = "retry" then "resume-retry" else rule), events) in
+      named @@
       match cfg.act.handling with
       | In_handler (e, point) ->
           let act = cfg.act in
@@ -939,6 +990,9 @@ and exec_statement cfg (s : Ir.stmt) =
           end
       | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
   | Trynext -> (
+      let resumed = resume_nostepin cfg in
+      let named (rule, events) = ((if resumed && rule = "trynext" then "resume-trynext" else rule), events) in
+      named @@
       match cfg.act.handling with
       | In_handler ({ asynchronous = true; _ }, _) ->
           (* §7.4: "in this case TRYNEXT executes as RETRY", for the system can restart from
@@ -995,6 +1049,13 @@ let leave_abandoned cfg after rule rule_entry =
   | Some caller ->
       release cfg act;
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
+      (* An error leaving NOSTEPIN routines for the user level is the call's there (R-7.3-o). *)
+      let leaves_nostepin = act.routine.nostepin && not caller.routine.nostepin && act.routine.kind <> Trap in
+      let relocate (e : err) = { e with err_at = region_of_focus_stmt cfg; chain = lazy (call_chain caller) } in
+      let after = match after with
+        | Go_on_propagate e when leaves_nostepin -> Go_on_propagate (relocate e)
+        | Go_on_long_jump (e, target) when leaves_nostepin -> Go_on_long_jump (relocate e, target)
+        | other -> other in
       (match after with
        | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
        | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
@@ -1443,6 +1504,69 @@ let search_step cfg (e : err) candidate =
   | None when cfg.act.routine.kind = Trap -> stop cfg e "raise-in-trap"
   | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); ("raise-propagate", [])
 
+(* ------------------------------------------------------------------ the user level *)
+
+(* RaiseToUser (§7.3; ABB's RaiseToUser), in the error handler of a routine of a NOSTEPIN
+   module: the error in hand, or \ErrorNumber's, goes to the error handler of the user level.
+   \BreakOff abandons the NOSTEPIN routines up to it (their UNDO handlers run, but not this
+   routine's: R-7.3-q) and the error is the user routine's, raised at its call; \Continue
+   (\Resume) keeps them: the user's handler runs, and its RETRY or TRYNEXT goes on in this
+   routine as its own would (R-7.3-p). No user level, or one without an error handler (or in a
+   handler already): the system error handler. *)
+let raise_to_user cfg (cs : call_state) =
+  let act = cfg.act in
+  let arg name =
+    let found = ref Primitive.Missing in
+    Array.iteri (fun i (p : Ir.parameter) ->
+        if String.lowercase_ascii p.p_name = name && i < Array.length cs.primitive_args then
+          found := cs.primitive_args.(i)) cs.callee.parameters;
+    !found in
+  let present name = arg name <> Primitive.Missing in
+  match act.handling with
+  | In_handler (e, _) when act.routine.nostepin && act.routine.kind <> Trap -> (
+      let number = match arg "errornumber" with
+        | Primitive.Missing -> Some e.number
+        | Value v -> (
+            match Option.bind (num_of v) to_int with
+            | Some n when (n >= 1 && n <= 90) || (n > 2000 && n <= 2000 + cfg.booked)
+                          || List.exists (fun (_, m) -> m = n) cfg.program.error_numbers -> Some n
+            | _ -> None)
+        | _ -> None in
+      match number with
+      | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-to-user-illegal", [])
+      | Some n -> (
+          let e' = { (error_of_number cfg n e.err_at) with searched = true } in
+          match user_call act with
+          | None -> stop cfg e' "raise-to-user-no-user-level"
+          | Some (user, mark) -> (
+              let e' = { e' with err_at = region_of_mark user mark; chain = lazy (call_chain user) } in
+              match user.routine.error, user.handling with
+              | Some h, Body when present "breakoff" ->
+                  (* This routine is left without its UNDO handler; those above it run theirs. *)
+                  let rule, events = leave_abandoned cfg (Go_on_long_jump (e', user)) "raise-to-user-break-off" "raise-to-user-break-off" in
+                  ignore h;
+                  (rule, events)
+              | Some h, Body ->
+                  user.resume <- Some act;
+                  user.handling <- In_handler (e', mark);
+                  set_errno cfg n;
+                  cfg.act <- user;
+                  cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
+                  cfg.mark <- [];
+                  cfg.focus <- F_next;
+                  ("raise-to-user-continue",
+                   [ Error_raised { name = e'.name; number = n; at = e'.err_at };
+                     Error_handled { name = e'.name; routine = user.routine.name } ])
+              | _ -> stop cfg e' "raise-to-user-unhandled")))
+  | _ ->
+      (* A call the checker cannot see (late binding): there is no error of a NOSTEPIN routine
+         to hand on (R-7.3-n). *)
+      cfg.focus <- F_done (Stopped { name = "ERR_ILLRAISE"; number = error_number cfg "ERR_ILLRAISE";
+                                     at = cs.call.call_at; chain = call_chain act; about = Some "RaiseToUser" });
+      ("raise-to-user-misplaced", [])
+
+let () = raise_to_user_ref := raise_to_user
+
 let step_unguarded cfg =
   match cfg.focus with
   | F_next -> next cfg
@@ -1641,6 +1765,9 @@ let rule_names = [
   "raise-in-trap"; "connect-not-variable";
   "async-error-unhandled"; "async-retry-resume"; "async-trynext-resume"; "async-exit"; "async-handler-leave";
   "async-error-at-move";
+  "raise-to-user-continue"; "raise-to-user-break-off"; "raise-to-user-no-user-level";
+  "raise-to-user-unhandled"; "raise-to-user-illegal"; "raise-to-user-misplaced";
+  "resume-retry"; "resume-trynext";
   "done"; "stuck";
 ]
 

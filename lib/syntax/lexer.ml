@@ -150,13 +150,14 @@ type t = {
   mutable token_start : int;            (* start of a token read by a sub-lexer, else -1 *)
   mutable last_stop : Lexing.position;  (* where the previous token stopped *)
   installed : bool;                     (* reading the installed environment: REF is a word *)
+  mutable after_switch : bool;          (* the previous token is the name "switch" *)
 }
 
 let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
 
 let create ?(installed = false) file (decoded : Decode.t) =
   { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1;
-    last_stop = position (-1); installed }
+    last_stop = position (-1); installed; after_switch = false }
 
 (* The current lexeme, as UTF-8, without its first [skip] bytes. *)
 let text_of ?(skip = 0) lx =
@@ -334,7 +335,11 @@ let number lx text start stop =
    the current lexeme (an error is reported at it). *)
 let name lx text start stop chars =
   let reserved = Reserved.find text start stop in
-  if reserved >= 0 then Reserved.tokens.(reserved)
+  if reserved >= 0 && lx.installed && lx.after_switch && Reserved.tokens.(reserved) = CONTINUE then
+    (* The installed RaiseToUser declares ABB's switch Continue (doc/rulings.md R-7.3-m): in the
+       installed environment, right after "switch", the word is the parameter's name. *)
+    IDENT (Names.find_or_add lx.names text start stop)
+  else if reserved >= 0 then Reserved.tokens.(reserved)
   else begin
     if chars > max_identifier_length then
       error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
@@ -571,4 +576,5 @@ let next lx =
   let startp = if start = lx.last_stop.pos_cnum then lx.last_stop else position start in
   let stopp = position stop in
   lx.last_stop <- stopp;
+  lx.after_switch <- lx.installed && (match t with IDENT w -> String.lowercase_ascii w = "switch" | _ -> false);
   (t, startp, stopp)

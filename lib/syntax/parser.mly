@@ -549,6 +549,15 @@ required_procedure_argument:
 optional_procedure_argument:
   | BACKSLASH n = identifier v = preceded(ASSIGN, expression)?
     { at $startpos $endpos (Optional_argument (n, v)) }
+  | BACKSLASH CONTINUE v = preceded(ASSIGN, expression)?
+    { (* ABB's RaiseToUser \Continue: CONTINUE is reserved (§2.4), so the word is read as the
+         name of an optional argument here only, and not under --strict (doc/dialect.md,
+         doc/rulings.md R-7.3-m). *)
+      let n = at $startpos($2) $endpos($2) (Parse_context.ident "Continue") in
+      if !Parse_context.strict then
+        raise (Parse_context.Refused (n.at, "CONTINUE is a reserved word (§2.4): it cannot name an \
+                                             optional argument; the manual's switch is \\Resume (§7.3)"));
+      at $startpos $endpos (Optional_argument (n, v)) }
 
 (* §4.6 <conditional procedure argument> ::= '\' <identifier> '?' ( <parameter> | <VAR> ) *)
 conditional_procedure_argument:

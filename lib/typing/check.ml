@@ -49,6 +49,7 @@ type place = {
   module_name : string;
   routine : Env.routine option;          (* None: module-level declarations *)
   in_error_handler : bool;
+  in_nostepin : bool;                    (* a routine of a NOSTEPIN or NOVIEW module (§7.3, §9.4) *)
   in_loop : bool;
   labels : (string, unit) Hashtbl.t option list;
       (* labels of the enclosing statement lists (by key), innermost first; None: a list without
@@ -947,6 +948,8 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Procedure; _ } as r) as o) ->
           Hashtbl.replace ctx.elab.names id.at o;
+          User_level_check.raise_to_user ~report:ctx.report ~in_error_handler:place.in_error_handler
+            ~in_nostepin:place.in_nostepin ~installed:(r.r_level = Env.Installed_level) ~at:s.at name args;
           arguments ctx place s.at r args
       | Some (Routine { r_kind = Function _; _ }) ->
           error ctx ~rule:"procedure-call" ~section:"4.6" id.at
@@ -1413,6 +1416,7 @@ let scope_of ctx info : Env.scope =
 
 let module_place ctx info =
   { scope = scope_of ctx info; module_name = info.m_name; routine = None; in_error_handler = false;
+    in_nostepin = List.exists (fun (a : module_attribute) -> a.it = NOSTEPIN || a.it = NOVIEW) info.m.attributes;
     in_loop = false; labels = [] }
 
 (* §2.14, §2.15: type definitions. Records are created first, so that components may name

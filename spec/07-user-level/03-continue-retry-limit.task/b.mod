@@ -1,0 +1,7 @@
+MODULE tools (NOSTEPIN)
+  PROC tool()
+    RAISE 6;
+  ERROR
+    RaiseToUser \Continue;
+  ENDPROC
+ENDMODULE

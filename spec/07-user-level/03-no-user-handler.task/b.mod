@@ -1,0 +1,7 @@
+MODULE tools (NOSTEPIN)
+  PROC tool()
+    RAISE 7;
+  ERROR
+    RaiseToUser \BreakOff;
+  ENDPROC
+ENDMODULE

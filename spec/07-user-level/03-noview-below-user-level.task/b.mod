@@ -1,0 +1,7 @@
+MODULE hidden_tools (NOVIEW)
+  PROC hidden()
+    RAISE 3;
+  ERROR
+    RaiseToUser \BreakOff;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+debug --script debug-expressions.dbg debug-expressions.mod
