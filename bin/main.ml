@@ -280,14 +280,28 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Stubbed { routine; at } ->
       `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
   | Motion m -> Motion_json.event m
+  | Observed o -> Observed_json.event ~text o
 
 let schema = Verdict.schema
 
-let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
-  let base kind extra = `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
+(* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
+   place both engines know; R-4.5-n); an end no source place explains has [null]. *)
+let entry_region (program : Rapid_semantics.Ir.program) entry =
+  let lower = String.lowercase_ascii entry in
+  Array.fold_left (fun found (r : Rapid_semantics.Ir.routine) ->
+      match found with
+      | Some _ -> found
+      | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
+    None program.routines
+
+let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
+  let nowhere = ("at", `Null) in
+  let base kind extra =
+    let extra = if List.mem_assoc "at" extra then extra else extra @ [ nowhere ] in
+    `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
   match o with
   | Running -> base "running" []
-  | Ended -> base "ended" []
+  | Ended -> base "ended" (match entry_at with Some r -> [ ("at", region_json r) ] | None -> [])
   | Stopped { name; number; at; chain; about } ->
       base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
                         ("chain", `List (List.map text chain)) ]
@@ -353,7 +367,7 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
-let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
@@ -374,14 +388,14 @@ let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok () ->
       match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
-              loaded.program ~entry with
+              ~observe loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
 let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json print_event =
   match Rapid_semantics.Session.load ~allow_unknown files with
-  | Error f -> report_load_failure f
+  | Error f -> report_load_failure ~json f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
@@ -390,11 +404,12 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
       let stubbed = ref [] in
       let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
       match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-              ~on_event loaded.program ~entry with
+              ~observe:json ~on_event loaded.program ~entry with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok { outcome; fuel_used } ->
           report_stubbed (List.rev !stubbed);
-          if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
+          if json then print_endline (Yojson.Safe.to_string
+                                        (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
           match outcome with
           | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
               (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
@@ -418,7 +433,7 @@ let run_cmd =
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
     if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ~json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -437,7 +452,8 @@ let run_cmd =
     in
     loop ();
     Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
-    if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
+    if json then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
+                                                      (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     let saved = match save with
       | None -> Ok []
@@ -508,6 +524,8 @@ let change_text (c : TV.change) =
   | Handled { routine; _ } -> Some ("handled by " ^ routine)
   | Retried | Next_tried -> None  (* the statement says it *)
   | Undo_run r -> Some ("UNDO of " ^ r)
+  | Controller_event (Observed (Propagated { name; number; routine; _ })) ->
+      Some (Printf.sprintf "%s (%d) propagated from %s" name number routine)
   | Controller_event e -> Option.map (fun t -> "~ " ^ t) (controller_text e)
   | Routine_entered _ | Routine_left _ | Task_ended -> None
 
@@ -651,7 +669,8 @@ let trace_cmd =
     loop ();
     flush ();
     Option.iter (fun s -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) sampler;
-    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)))
+    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
+                                                                 (M.outcome cfg) (M.steps cfg)))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match M.outcome cfg with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") (M.steps cfg);

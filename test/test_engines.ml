@@ -31,6 +31,7 @@ let event_text (e : M.event) =
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
   | Event_log Skip_warning -> "skipwarn"
+  | Observed o -> Rapid_semantics.Observation.to_string o
 
 (* The outcome as the two engines must agree on it. A run cut short by the machine's step limit
    and one cut short by the closure engine's fuel are both "exhausted": what a step and a unit
@@ -58,7 +59,8 @@ let load (case : Rapid_conformance.Spec_case.t) =
   | Error _ -> None
 
 let machine_run ?stub_unmodelled limits program ~entry ~max_steps =
-  match M.start ?stub_unmodelled ~limits program ~entry with
+  (* Observed: the store writes, arguments and returned values of schema rapid-sem/2 too. *)
+  match M.start ?stub_unmodelled ~observe:true ~limits program ~entry with
   | Error m -> Alcotest.failf "machine: %s" m
   | Ok cfg ->
       let events = ref [] in
@@ -68,7 +70,7 @@ let machine_run ?stub_unmodelled limits program ~entry ~max_steps =
       (List.rev !events, M.outcome cfg)
 
 let closure_run ?stub_unmodelled limits program ~entry ~fuel =
-  match C.events ?stub_unmodelled ~limits ~fuel program ~entry with
+  match C.events ?stub_unmodelled ~observe:true ~limits ~fuel program ~entry with
   | Error m -> Alcotest.failf "closure engine: %s" m
   | Ok (events, r) -> (events, r.outcome)
 

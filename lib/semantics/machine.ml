@@ -33,6 +33,7 @@ type event =
   | Trap_left of { trap : string; time : float }
   | Stubbed of { routine : string; at : Source.region }
   | Motion of Motion_primitives.event
+  | Observed of Observation.t
 
 type outcome =
   | Running
@@ -169,10 +170,24 @@ type config = {
      already charged there, the interrupt already taken from the queue, for the step to serve. *)
   mutable charged : bool;
   mutable held : (int * int) option;
+  observe : bool;                       (* the run observes store writes, arguments, values (schema rapid-sem/2) *)
+  mutable entered : bool;               (* the entry routine's routine-entered has been said *)
+  mutable propagated : bool;            (* the error in focus arrives by propagation (§7.1) *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
 let get l = Array.unsafe_get l.box l.idx
+
+(* Schema rapid-sem/2: a store write as RAPID names it, in the current routine; built only when
+   the run observes (doc/observable.md). The roots are searched as the closure engine searches
+   its own: the local slots, then the module data. *)
+let observed_store cfg (l : loc) v =
+  if not cfg.observe then []
+  else
+    let roots = List.mapi (fun i (r : loc) -> (Ir.Local i, (r.box, r.idx))) (Array.to_list cfg.act.slots)
+                @ List.mapi (fun i (r : loc) -> (Ir.Global i, (r.box, r.idx))) (Array.to_list cfg.globals) in
+    [ Observed (Stored { place = Observation.place_of cfg.program cfg.act.routine (l.box, l.idx) roots;
+                         value = Observation.value v }) ]
 let set l v = Array.unsafe_set l.box l.idx (V.copy v)
 
 (* The answer of [static_loc] for a place it cannot locate, compared by identity: an option would
@@ -266,7 +281,7 @@ let charge cfg (act : activation) bytes =
 
 let release cfg (act : activation) = cfg.memory <- cfg.memory - act.memory; act.memory <- 0
 
-let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (program : Ir.program) ~entry =
+let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(observe = false) (program : Ir.program) ~entry =
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
   let program = Motion_primitives.robot_data motion program in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
@@ -339,6 +354,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion (
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
           stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = [];
           backward_depth = -1; charged = false; held = None;
+          observe; entered = false; propagated = false;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -380,7 +396,15 @@ let enter_routine cfg (cs : call_state) =
     cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
     cfg.mark <- [];
     cfg.focus <- F_next;
-    ("call-enter", [ Routine_entered r.name ])
+    ("call-enter", Routine_entered r.name
+                   :: (if cfg.observe && Array.length r.parameters > 0 then
+                         [ Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
+                             (List.mapi (fun i (p : Ir.parameter) ->
+                                  if i < Array.length cs.args_present && not cs.args_present.(i) then None
+                                  else if p.p_switch then Some (p.p_name, None)
+                                  else Some (p.p_name, Some (Observation.value (get slots.(i)))))
+                                (Array.to_list r.parameters)) }) ]
+                       else []))
   end
 
 let return_from cfg value =
@@ -403,7 +427,11 @@ let return_from cfg value =
        | Function, Some v -> cfg.focus <- F_value v
        | _ -> cfg.focus <- F_next);
       ((match act.routine.kind with Function -> "return-function" | _ -> "return-procedure"),
-       [ Routine_left act.routine.name ])
+       (match value with
+        | Some v when cfg.observe && act.routine.kind = Function ->
+            [ Observed (Returned { routine = act.routine.name; value = Observation.value v }) ]
+        | _ -> [])
+       @ [ Routine_left act.routine.name ])
 
 (* The binding an alias argument has: a parameter passes on its own binding (§5.2). *)
 let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
@@ -510,7 +538,7 @@ let call_primitive cfg (cs : call_state) name =
        | _ -> cfg.focus <- F_next);
       ("call-primitive", List.rev !events)
   | Primitive.Failed name -> raise_ cfg name; ("call-primitive-error", List.rev !events)
-  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
+  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events @ [ Task_ended ])
   | Primitive.Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
@@ -879,7 +907,7 @@ let exec cfg (s : Ir.stmt) =
                  act.retried <- Some st;
                  cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_stmt st
              | _ -> cfg.focus <- F_done (Stuck "RETRY without a statement to retry"));
-            ("retry", [])
+            ("retry", [ Observed (Retried cfg.act.routine.name) ])
           end
       | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
   | Trynext -> (
@@ -889,7 +917,7 @@ let exec cfg (s : Ir.stmt) =
           (match statement_point point with
            | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
-          ("trynext", [])
+          ("trynext", [ Observed (Tried_next cfg.act.routine.name) ])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
   | Connect (p, trap) -> mark_here (); push cfg (K_connect_target (trap, p)); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
@@ -937,12 +965,16 @@ let leave_abandoned cfg after rule rule_entry =
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
       (match after with
        | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
-       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
+       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }; cfg.propagated <- true
        | Go_on_long_jump (e, target) ->
            if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
            else cfg.focus <- F_abandon after);
       (rule, Routine_left act.routine.name
-             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else []))
+             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else [])
+             @ (match after with
+                 | Go_on_propagate e -> [ Observed (Propagated { name = e.name; number = e.number;
+                                                                 routine = act.routine.name; caller = caller.routine.name }) ]
+                 | _ -> []))
 
 (* A statement has completed: the frame on top continues. *)
 let next_frame cfg =
@@ -958,7 +990,7 @@ let next_frame cfg =
       let v = match get slot, step with
         | V.Num cur, V.Num d -> V.num (cur +. d) | other, _ -> other in
       set slot v;
-      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", []))
+      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", observed_store cfg slot v))
       else (cfg.stack <- rest; ("for-done", []))
   | K_routine_end :: _ -> (
       match cfg.act.routine.kind with
@@ -1110,7 +1142,8 @@ let start_loop cfg (f : Ir.for_loop) from t step rest =
   set cfg.act.slots.(f.variable) from;
   cfg.focus <- F_next;
   if for_in_range from t step then begin
-    cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest; ("for-enter", [])
+    cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest;
+    ("for-enter", observed_store cfg cfg.act.slots.(f.variable) from)
   end
   else (cfg.stack <- rest; ("for-empty", []))
 
@@ -1127,7 +1160,7 @@ let value_step cfg v =
           | Some (DO | DI), V.Num f when f <> 0. && f <> 1. -> raise_ cfg "ERR_ARGVALERR"; ("store-signal", [])
           | Some _, V.Num f -> W.write cfg.world id f; cfg.focus <- F_next; ("store-signal", [])
           | _ -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", []))
-      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", []))
+      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", observed_store cfg l v))
   | K_poll ws :: K_wait _ :: rest -> (
       match bool_of v with
       | Some true ->
@@ -1279,7 +1312,7 @@ let loc_step cfg l =
           raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
       | _ -> (
           match W.connect cfg.world ~trap with
-          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", [])
+          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", observed_store cfg l (get l))
           | Error name -> raise_ cfg name; ("connect-inomax", [])))
   | K_read_signal :: rest -> (
       cfg.stack <- rest;
@@ -1358,8 +1391,12 @@ let step_unguarded cfg =
   | F_place p -> place_step cfg p
   | F_loc l -> loc_step cfg l
   | F_raise e ->
+      (* §7.1: an error raised again at the call point after propagation was said by the
+         propagation (schema rapid-sem/2: one error-raised, then error-propagated per level). *)
+      let again = cfg.propagated in
+      cfg.propagated <- false;
       let rule, events = raise_step cfg e in
-      (rule, Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
+      (rule, if again then events else Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
   | F_search (e, c) -> search_step cfg e c
   | F_abandon after -> abandon_step cfg after
   | F_done _ -> ("done", [])
@@ -1467,11 +1504,14 @@ let () = settle_ref := settle
    is a bug of rapid-sem, reported as a stuck configuration. *)
 let step cfg =
   cfg.count <- cfg.count + 1;
+  (* The entry routine is entered with the first step (schema rapid-sem/2). *)
+  let entry = if cfg.entered then [] else (cfg.entered <- true; [ Routine_entered cfg.act.routine.name ]) in
   let rule, events =
     try let r = step_unguarded cfg in settle cfg; r with
     | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
     | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
   in
+  let events = match entry with [] -> events | _ -> entry @ events in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
      while the clock moved on, at the start of the step, or as settling entered a statement. *)
   let events = match W.drain cfg.world with
