@@ -696,13 +696,18 @@ let spec_cmd =
   let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
   let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
   let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
-  let run dir verbose impl junit report engine =
+  let ignore_kinds = Arg.(value & opt_all string [] & info [ "ignore" ] ~docv:"KIND"
+                            ~doc:"With --impl: leave the events of this kind out of the comparison of the events (repeatable).") in
+  let run dir verbose impl junit report engine ignore_kinds =
     guard @@ fun () ->
     let _, failed = match impl with
       | None -> Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir
       | Some template ->
           ignore (Rapid_oracle.Oracle.self_reference ());
-          Rapid_conformance.Impl_runner.run ~verbose ?junit ?json:report ~template Format.std_formatter dir in
+          (* Run cases compare the events with rapid-sem's own too. *)
+          let reference = Filename.quote Sys.executable_name ^ " run --json {options} {files}" in
+          Rapid_conformance.Impl_runner.run ~verbose ~reference ~ignore:ignore_kinds ?junit ?json:report ~template
+            Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
   let doc = "run the conformance suite" in
@@ -714,7 +719,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)
