@@ -588,7 +588,14 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           pending := !pending + bytes;
           values.(i) <- v
         done;
-        primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
+        if st.observe then begin
+          (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+          let before = Observation.references values in
+          let outcome = Primitive.call st.prim_ctx name values in
+          List.iter (observe_store st a) (Observation.changed before);
+          primitive_outcome st caller a ~at ~call_at callee name outcome
+        end
+        else primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
   | None ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in

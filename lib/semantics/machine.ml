@@ -501,6 +501,7 @@ let call_primitive cfg (cs : call_state) name =
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
   let ctx = { ctx with argument_label = argument_label cfg cs } in
+  let before = if cfg.observe then Observation.references cs.primitive_args else [] in
   let result = match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
     | Some r -> r
     | None -> match Io_primitives.call ctx name cs.primitive_args with
@@ -508,6 +509,9 @@ let call_primitive cfg (cs : call_state) name =
     | None -> match Service_primitives.call ctx name cs.primitive_args with
       | Some r -> r
       | None -> Primitive.call ctx name cs.primitive_args in
+  (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+  List.iter (fun (box, idx) ->
+      events := List.rev_append (observed_store cfg { box; idx } box.(idx)) !events) (Observation.changed before);
   (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
   (match Motion_primitives.take_new_move cfg.motion with
    | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners

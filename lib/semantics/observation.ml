@@ -112,3 +112,12 @@ let to_string = function
       Printf.sprintf "error-propagated %s %d from %s to %s" name number routine caller
   | Retried r -> "retry " ^ r
   | Tried_next r -> "trynext " ^ r
+
+let references (args : Primitive.argument array) =
+  Array.fold_right (fun (a : Primitive.argument) acc ->
+      match a with
+      | Location (box, j, _) when j < Array.length box -> (box, j, V.copy box.(j)) :: acc
+      | _ -> acc) args []
+
+let changed before =
+  List.filter_map (fun (box, j, old) -> if V.equal old box.(j) then None else Some (box, j)) before

@@ -40,6 +40,7 @@ MODULE observable_v2
     a{2} := 123456789;
     ps{2}.y := half(5);
     bump a{1}, \twice;
+    Incr ps{1}.x;
     FOR i FROM 1 TO 2 DO
       n := n + i;
     ENDFOR
