@@ -285,7 +285,7 @@ let event_json (e : M.event) : Yojson.Safe.t =
 let schema = Verdict.schema
 
 (* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
-   place both engines know; R-4.5-n); an end no source place explains has [null]. *)
+   place both engines know; R-4.12-m); an end no source place explains has [null]. *)
 let entry_region (program : Rapid_semantics.Ir.program) entry =
   let lower = String.lowercase_ascii entry in
   Array.fold_left (fun found (r : Rapid_semantics.Ir.routine) ->

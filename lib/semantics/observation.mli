@@ -7,17 +7,19 @@
 type t =
   | Stored of { place : string; value : string }
       (** a data object, or a part of it, written: the place as RAPID writes it ([a{2}.x]) and
-          the value written (§4.2; FOR's variable, §4.18; routine data's initial value, §2.21) *)
+          the value written: an assignment (§4.5), FOR's variable (§4.18), routine data's initial
+          value (§2.21), CONNECT (§4.15), an installed routine's write through a reference
+          parameter that changes the value (§5.2) *)
   | Called of { routine : string; arguments : (string * string option) list }
       (** after [Routine_entered]: each present argument by its parameter's name, with the
-          value the parameter has on entry ([None] for a switch, §5.2) *)
+          value the parameter has on entry ([None] for a switch, §5.2; R-4.6-m) *)
   | Returned of { routine : string; value : string }
-      (** before [Routine_left]: the value a function returns (§4.13) *)
+      (** before [Routine_left]: the value a function returns (§4.10) *)
   | Propagated of { name : string; number : int; routine : string; caller : string }
       (** the error left [routine] without being handled and is raised again at the call point
           in [caller] (§7.1) *)
-  | Retried of string                     (** RETRY in this routine's error handler (§4.14) *)
-  | Tried_next of string                  (** TRYNEXT in this routine's error handler (§4.15) *)
+  | Retried of string                     (** RETRY in this routine's error handler (§4.13) *)
+  | Tried_next of string                  (** TRYNEXT in this routine's error handler (§4.14) *)
 
 val value : Value.t -> string
 (** A value in RAPID's literal syntax, one text per value: a num with the fewest significant
