@@ -23,4 +23,5 @@ let () =
       Test_services.suite;
       Test_debugger.suite;
       Test_engines.suite;
+      Test_observation.suite;
     ]

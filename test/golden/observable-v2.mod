@@ -10,6 +10,7 @@ MODULE observable_v2
   VAR num huge;
   VAR dnum dthird;
   VAR num a{3};
+  VAR num m{2,3};
   VAR pair ps{2};
   VAR num divisor;
   VAR num n;
@@ -38,6 +39,7 @@ MODULE observable_v2
     huge := 3.4E+38;
     dthird := 1 / 3;
     a{2} := 123456789;
+    m{2,3} := 6;
     ps{2}.y := half(5);
     bump a{1}, \twice;
     Incr ps{1}.x;
