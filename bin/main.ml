@@ -284,6 +284,15 @@ let event_json (e : M.event) : Yojson.Safe.t =
 
 let schema = Verdict.schema
 
+(* R-9.1-m: a task buffer without the entry procedure is refused before it runs; under --json
+   the stream says so as for any static error, the same from both engines. It has no place of
+   its own: the first file's beginning, as for a file error. *)
+let refused_entry_json files entry : Yojson.Safe.t =
+  let file = match files with f :: _ -> f | [] -> "" in
+  `Assoc [ ("event", `String "end"); ("outcome", `String "refused"); ("class", `String "semantic-error");
+           ("at", `Assoc [ ("file", text file); ("line", `Int 1); ("col", `Int 1); ("end_line", `Int 1); ("end_col", `Int 1) ]);
+           ("message", text (Printf.sprintf "there is no procedure %s without parameters to run: the task's entry routine (§9.1)" entry)) ]
+
 (* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
    place both engines know; R-4.12-m); an end no source place explains has [null]. *)
 let entry_region (program : Rapid_semantics.Ir.program) entry =
@@ -389,7 +398,10 @@ let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, st
       | Ok () ->
       match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
               ~observe loaded.program ~entry with
-      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Error m ->
+          if json = Some true then
+            List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
+          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
@@ -405,7 +417,9 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
       let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
       match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
               ~observe:json ~on_event loaded.program ~entry with
-      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Error m ->
+          if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
+          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok { outcome; fuel_used } ->
           report_stubbed (List.rev !stubbed);
           if json then print_endline (Yojson.Safe.to_string
