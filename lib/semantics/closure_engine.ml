@@ -120,13 +120,15 @@ let is_alias_param (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
 
 let observe_store st (a : act) (box, i) =
   let r = a.routine in
-  let locals = List.init r.locals (fun k ->
-      if k < Array.length r.parameters && is_alias_param r.parameters.(k) then
-        (Local k, ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
-                   (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0)))
-      else (Local k, (a.store, k))) in
-  let globals = List.init (Array.length st.globals) (fun g -> (Global g, (st.globals, g))) in
-  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) (locals @ globals);
+  let local k =
+    if k < Array.length r.parameters && is_alias_param r.parameters.(k) then
+      ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
+       (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
+    else (a.store, k) in
+  let globals = st.globals in
+  let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
+                global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
+  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
                                 value = Observation.value box.(i) }))
 
 let fail ?about st ~at name =

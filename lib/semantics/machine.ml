@@ -184,8 +184,10 @@ let get l = Array.unsafe_get l.box l.idx
 let observed_store cfg (l : loc) v =
   if not cfg.observe then []
   else
-    let roots = List.mapi (fun i (r : loc) -> (Ir.Local i, (r.box, r.idx))) (Array.to_list cfg.act.slots)
-                @ List.mapi (fun i (r : loc) -> (Ir.Global i, (r.box, r.idx))) (Array.to_list cfg.globals) in
+    let slots = cfg.act.slots and globals = cfg.globals in
+    let roots = { Observation.n_locals = Array.length slots; local = (fun i -> (slots.(i).box, slots.(i).idx));
+                  n_globals = Array.length globals; global_box = (fun g -> globals.(g).box);
+                  global_idx = (fun g -> globals.(g).idx) } in
     [ Observed (Stored { place = Observation.place_of cfg.program cfg.act.routine (l.box, l.idx) roots;
                          value = Observation.value v }) ]
 let set l v = Array.unsafe_set l.box l.idx (V.copy v)

@@ -36,6 +36,18 @@ let rec value (v : V.t) =
 
 type step = Index of int | Component_of of int
 
+type roots = {
+  n_locals : int;
+  local : int -> V.t array * int;
+  n_globals : int;
+  global_box : int -> V.t array;
+  global_idx : int -> int;
+}
+
+(* Two passes: a data object that is the location itself (a reference parameter is one before
+   the data it denotes: the routine names it so), then one that holds it in a record or an
+   array. No two module data objects share storage, so the second pass may take them in any
+   order: the last declared first, the program's own before the installed ones. *)
 let find ((box, idx) : V.t array * int) roots =
   let rec within v path =
     match v with
@@ -50,10 +62,37 @@ let find ((box, idx) : V.t array * int) roots =
           each 0
     | _ -> None
   in
-  List.find_map (fun (slot, (rbox, ridx)) ->
-      if rbox == box && ridx = idx then Some (slot, [])
-      else if ridx < Array.length rbox then Option.map (fun p -> (slot, p)) (within rbox.(ridx) [])
-      else None) roots
+  let rec same_local i =
+    if i >= roots.n_locals then None
+    else let rbox, ridx = roots.local i in
+      if rbox == box && ridx = idx then Some (Ir.Local i, []) else same_local (i + 1) in
+  let rec same_global g =
+    if g >= roots.n_globals then None
+    else if roots.global_box g == box && roots.global_idx g = idx then Some (Ir.Global g, [])
+    else same_global (g + 1) in
+  let rec in_local i =
+    if i >= roots.n_locals then None
+    else
+      let rbox, ridx = roots.local i in
+      match if ridx < Array.length rbox then within rbox.(ridx) [] else None with
+      | Some p -> Some (Ir.Local i, p)
+      | None -> in_local (i + 1) in
+  let rec in_global g =
+    if g < 0 then None
+    else
+      let rbox = roots.global_box g and ridx = roots.global_idx g in
+      match if ridx < Array.length rbox then within rbox.(ridx) [] else None with
+      | Some p -> Some (Ir.Global g, p)
+      | None -> in_global (g - 1) in
+  match same_local 0 with
+  | Some _ as found -> found
+  | None -> (
+      match same_global 0 with
+      | Some _ as found -> found
+      | None -> (
+          match in_local 0 with
+          | Some _ as found -> found
+          | None -> in_global (roots.n_globals - 1)))
 
 let routine_index (program : Ir.program) (r : Ir.routine) =
   let rec go i =
@@ -95,7 +134,7 @@ let place program routine (slot, steps) =
   go [] false steps;
   Buffer.contents buf
 
-let place_of program routine target roots =
+let place_of program routine target (roots : roots) =
   match find target roots with
   | Some p -> place program routine p
   | None -> "<a value no data object holds>"

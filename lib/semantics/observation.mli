@@ -32,18 +32,27 @@ val value : Value.t -> string
 type step = Index of int | Component_of of int
 (** [Index] from 1, [Component_of] from 0. *)
 
-val find : Value.t array * int -> (Ir.slot * (Value.t array * int)) list -> (Ir.slot * step list) option
-(** Where a location is: the first root (a data object's location, in the order given: the
-    routine's local slots, then the module data) that is it, or holds it in a record or an array
-    (searched in order). Both engines give their roots in the same order, so they name a place
-    the same way. *)
+type roots = {
+  n_locals : int;
+  local : int -> Value.t array * int;       (** the location of local slot [i] *)
+  n_globals : int;
+  global_box : int -> Value.t array;        (** the location of module data [g]: its container *)
+  global_idx : int -> int;                  (** and its index there *)
+}
+(** The data objects a place can be named by: the routine's local slots (a reference parameter's
+    being the location it denotes) and the module data, as an engine stores them. *)
+
+val find : Value.t array * int -> roots -> (Ir.slot * step list) option
+(** Where a location is: first a data object that is the location itself, local slots before
+    module data (a reference parameter before the data it denotes: the routine that writes it
+    names it so); else one that holds it in a record or an array, local slots first. Both
+    engines give their roots alike, so they name a place the same way. *)
 
 val place : Ir.program -> Ir.routine -> Ir.slot * step list -> string
 (** The place as RAPID writes it, in [routine]: [total], [a{2}], [m{2,3}], [path{1}.x]; a place a
     reference parameter denotes by the parameter's name. *)
 
-val place_of : Ir.program -> Ir.routine -> Value.t array * int ->
-  (Ir.slot * (Value.t array * int)) list -> string
+val place_of : Ir.program -> Ir.routine -> Value.t array * int -> roots -> string
 (** [find], then [place]; a location no root holds is written [<a value no data object holds>]. *)
 
 val to_string : t -> string

@@ -23,6 +23,11 @@ MODULE observable_v2
     k := k + 1;
   ENDPROC
 
+  PROC both(INOUT num arr{*}, INOUT num k)
+    k := 5;
+    arr{1} := 6;
+  ENDPROC
+
   PROC divide(INOUT num k)
     k := k / divisor;
   ENDPROC
@@ -43,6 +48,7 @@ MODULE observable_v2
     ps{2}.y := half(5);
     bump a{1}, \twice;
     Incr ps{1}.x;
+    both a, a{2};
     FOR i FROM 1 TO 2 DO
       n := n + i;
     ENDFOR
