@@ -16,7 +16,8 @@ MODULE observable_v2
   VAR num n;
 
   FUNC num half(num v)
-    RETURN v / 2;
+    VAR num w := 2;
+    RETURN v / w;
   ENDFUNC
 
   PROC bump(INOUT num k, \switch twice, \num by)
