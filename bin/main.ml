@@ -246,6 +246,11 @@ let region_json r =
 (* A virtual time: seconds to the microsecond, written as such (not as the nearest double). *)
 let time_json t = `Intlit (Printf.sprintf "%.6f" t)
 
+(* The number of the error in flight: the one last raised or propagated, which is the one an
+   error handler takes (an error in an UNDO handler stops the task). error-handled says it: the
+   value ERRNO takes (schema rapid-sem/2). *)
+let error_in_flight = ref 0
+
 let event_json (e : M.event) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
@@ -258,10 +263,12 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
   | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
   | Error_raised { name; number; at } ->
+      error_in_flight := number;
       `Assoc [ ("event", `String "error-raised"); ("name", text name); ("number", `Int number);
                ("at", region_json at) ]
   | Error_handled { name; routine } ->
-      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("routine", text routine) ]
+      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("number", `Int !error_in_flight);
+               ("routine", text routine) ]
   | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", text r) ]
   | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
   | Controller (Signal_changed { time; signal; value }) ->
@@ -280,6 +287,7 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Stubbed { routine; at } ->
       `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
   | Motion m -> Motion_json.event m
+  | Observed (Propagated { number; _ } as o) -> error_in_flight := number; Observed_json.event ~text o
   | Observed o -> Observed_json.event ~text o
 
 let schema = Verdict.schema

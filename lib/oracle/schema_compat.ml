@@ -23,6 +23,7 @@ let to_v1 events =
                                 @ (match raised with Some at -> [ ("at", at) ] | None -> [])) in
             go raised (Event_stream.canonical again :: acc) rest
         | "end" -> go raised (without "at" e :: acc) rest
+        | "error-handled" -> go raised (without "number" e :: acc) rest
         | _ -> go raised (e :: acc) rest)
   in
   go None [] events

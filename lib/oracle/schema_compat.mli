@@ -12,7 +12,7 @@ val to_v1 : Event_stream.event list -> Event_stream.event list
     [returned], [retry], [trynext]), each [error-propagated] written as the [error-raised] again
     that /1 wrote at the call point (with the place the error was first raised), the entry
     routine's [routine-entered] (the first event) left out, [task-ended] left out (/1 left it
-    out after Stop), and the end object without [at]. *)
+    out after Stop), [error-handled] without [number], and the end object without [at]. *)
 
 val v1_actual : Event_stream.event list -> Event_stream.event list
 (** A /1 implementation's stream prepared for the comparison: [task-ended] left out. *)
