@@ -251,6 +251,11 @@ let time_json t = `Intlit (Printf.sprintf "%.6f" t)
    value ERRNO takes (schema rapid-sem/2). *)
 let error_in_flight = ref 0
 
+let note_error (e : M.event) =
+  match e with
+  | Error_raised { number; _ } | Observed (Propagated { number; _ }) -> error_in_flight := number
+  | _ -> ()
+
 let event_json (e : M.event) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
@@ -678,6 +683,8 @@ let trace_cmd =
         let before = TV.before view cfg in
         let (_, events) as answer = M.step cfg in
         report_stubbed events;
+        (* The error in flight, for error-handled, also from the steps --from and --to leave out. *)
+        List.iter note_error events;
         let st = TV.after view before cfg answer in
         let samples () = match sampler with
           | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
