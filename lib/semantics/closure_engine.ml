@@ -114,23 +114,6 @@ let emit_raised st e =
   if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
 
 (* An execution error where [at] is the statement in progress. *)
-(* Schema rapid-sem/2 (Observation): the texts are built only when the run observes them. The
-   roots are searched as the machine searches its own: local slots, then module data. *)
-let is_alias_param (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
-
-let observe_store st (a : act) (box, i) =
-  let r = a.routine in
-  let local k =
-    if k < Array.length r.parameters && is_alias_param r.parameters.(k) then
-      ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
-       (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
-    else (a.store, k) in
-  let globals = st.globals in
-  let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
-                global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
-  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
-                                value = Observation.value box.(i) }))
-
 let fail ?about st ~at name =
   let e = { name; number = number_of st name; at; about; chain = None } in
   emit_raised st e;
@@ -204,6 +187,21 @@ let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 (* ------------------------------------------------------------------ slots and places *)
 
 let is_alias (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
+
+(* Schema rapid-sem/2 (Observation): the texts are built only when the run observes them. The
+   roots are given as the machine gives its own, so that Observation.find names a place alike. *)
+let observe_store st (a : act) (box, i) =
+  let r = a.routine in
+  let local k =
+    if k < Array.length r.parameters && is_alias r.parameters.(k) then
+      ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
+       (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
+    else (a.store, k) in
+  let globals = st.globals in
+  let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
+                global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
+  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
+                                value = Observation.value box.(i) }))
 
 (* How a local slot is reached, known when the routine is compiled. *)
 type slot_access = Own | Alias | Optional_own | Optional_alias

@@ -179,8 +179,8 @@ let fresh_loc v = { box = [| v |]; idx = 0 }
 let get l = Array.unsafe_get l.box l.idx
 
 (* Schema rapid-sem/2: a store write as RAPID names it, in the current routine; built only when
-   the run observes (doc/observable.md). The roots are searched as the closure engine searches
-   its own: the local slots, then the module data. *)
+   the run observes (doc/observable.md). The roots are given as the closure engine gives its own,
+   so that Observation.find names a place alike. *)
 let observed_store cfg (l : loc) v =
   if not cfg.observe then []
   else
