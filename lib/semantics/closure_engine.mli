@@ -28,7 +28,8 @@ type result = {
 
 val run :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool ->
-  ?on_event:(Machine.event -> unit) ->
+  ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
+  ?motion:Motion_primitives.state ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -49,6 +50,7 @@ val machine_only : Machine.outcome -> bool
     with a reason that ends "runs on the machine only: use --engine machine". *)
 
 val events :
-  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> Ir.program -> entry:string ->
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool ->
+  ?world:Rapid_controller.World.t -> ?motion:Motion_primitives.state -> Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)
