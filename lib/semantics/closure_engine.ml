@@ -606,7 +606,9 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
       (* The controller's, the motion's and the services' routines find their arguments by
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
       let motion = Motion_primitives.modelled name in
-      let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name in
+      (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
+      let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name
+                       || String.lowercase_ascii name = "errwrite" in
       let ctx =
         if not controller then st.prim_ctx
         else { st.prim_ctx with
@@ -743,9 +745,10 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
               asynchronous := true;
               let e = { name; number = number_of st name; at; about = None; chain = None } in
               let owner = match move with Some id -> List.assoc_opt id st.move_owners | None -> None in
-              let rec in_chain (b : act) = b.level >= 0 && (b == a || in_chain b.parent) in
+              (* Is the move's routine still in the call chain, above this one? *)
+              let rec in_chain o (b : act) = b.level >= 0 && (b == o || in_chain o b.parent) in
               match owner with
-              | Some o when o != a && in_chain o -> raise (Long_jump (o.level, caught a e))
+              | Some o when o != a && in_chain o a -> raise (Long_jump (o.level, caught a e))
               | _ -> emit_raised st e; raise (Raised e))
   in
   match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
@@ -860,6 +863,10 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
   | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
+  | exception Long_jump (j, e) when j = c.level ->
+      (* An asynchronous error carried to the routine of its move, which has no error handler
+         (§7.6): it is raised there, and propagated to the call point without a new search. *)
+      emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
 
