@@ -194,10 +194,14 @@ let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
 (* What the world and the motion did since last asked, as the machine reports it after each
    step: signal changes, interrupts, moves. *)
-let observe st =
-  (match W.drain st.world with
-   | [] -> ()
-   | seen -> if st.all_events then List.iter (fun o -> st.emit (M.Controller o)) seen);
+let rec observe st = observe_world st; observe_motion st
+
+and observe_world st =
+  match W.drain st.world with
+  | [] -> ()
+  | seen -> if st.all_events then List.iter (fun o -> st.emit (M.Controller o)) seen
+
+and observe_motion st =
   if st.moving then
     match Motion_primitives.drain st.motion st.world with
     | [] -> ()
@@ -214,7 +218,7 @@ let rec at_statement st a =
     observe st;
     if st.interrupts && not st.in_trap then
       match W.take st.world with
-      | Some (number, trap) -> st.serve_trap a number trap; at_statement st a
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; at_statement st a
       | None -> ()
   end
 
@@ -609,11 +613,19 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
       let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name
                        || String.lowercase_ascii name = "errwrite" in
+      (* What the world observes during the call is reported before what the routine itself
+         writes, as the machine reports a step's events (its output waits meanwhile). *)
+      let held = ref [] in
+      let hold e = held := e :: !held in
       let ctx =
         if not controller then st.prim_ctx
         else { st.prim_ctx with
                parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
-               argument_label = CC.argument_label st.program callee arguments } in
+               argument_label = CC.argument_label st.program callee arguments;
+               output = (fun line -> hold (M.Output (Format.display line)));
+               erase = (fun () -> hold M.Erase);
+               log = (fun line -> hold (M.Log line));
+               event_log = (fun entry -> if st.all_events then hold (M.Event_log entry)) } in
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
       let condition =
         let found = ref None in
@@ -652,7 +664,14 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           (match Motion_primitives.take_new_move st.motion with
            | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < 63) st.move_owners
            | None -> ());
-          observe st
+          (* The machine's order within a step: the world, the routine's own events, the motion. *)
+          observe_world st;
+          if !held <> [] then begin
+            let written = List.rev !held in
+            held := [];
+            List.iter st.emit written
+          end;
+          observe_motion st
         end;
         primitive_outcome st caller a ~at ~call_at ~condition callee name result
   | None ->
