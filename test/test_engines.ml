@@ -29,7 +29,10 @@ let event_text (e : M.event) =
   | Task_ended -> "task ended"
   | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (region at)
   (* The controller's and motion's events: the machine's alone (doc/semantics.md). *)
-  | Controller _ -> "controller"
+  | Controller (Signal_changed { time; signal; value }) -> Printf.sprintf "%.6f signal %s = %g" time signal value
+  | Controller (Interrupt_occurred { time; number }) -> Printf.sprintf "%.6f interrupt %d" time number
+  | Controller (Interrupt_discarded { time; number; reason }) ->
+      Printf.sprintf "%.6f interrupt %d discarded: %s" time number reason
   | Trap_entered { trap; _ } -> "trap entered " ^ trap
   | Trap_left { trap; _ } -> "trap left " ^ trap
   | Motion m -> "motion " ^ Rapid_semantics.Motion_primitives.event_to_string m
@@ -51,10 +54,11 @@ let outcome_text (o : M.outcome) =
   | Deadlock _ -> "deadlock"
   | Stuck m -> "stuck " ^ m
 
-(* The closure engine leaves the controller and motion to the machine: a run that reaches them
-   ends there as Unsupported, "runs on the machine only" (doc/semantics.md). Such a case needs
-   the controller: its events are compared up to that point, its outcome is not. *)
-let machine_only = C.machine_only
+(* The closure engine runs the controller, motion and services too: nothing is left to the
+   machine any more (doc/semantics.md, "The second engine"). *)
+let machine_only o =
+  if C.machine_only o then Alcotest.failf "left to the machine: %s" (outcome_text o);
+  false
 
 let io_of (case : Rapid_conformance.Spec_case.t) =
   match case.run with
@@ -95,19 +99,30 @@ let closure_run ?stub_unmodelled ?world limits program ~entry ~fuel =
   | Error m -> Alcotest.failf "closure engine: %s" m
   | Ok (events, r) -> (events, r.outcome)
 
-let rec is_prefix a b = match a, b with [], _ -> true | x :: a, y :: b -> x = y && is_prefix a b | _ :: _, [] -> false
+(* Events come in two streams, each compared in its order: the program's (output, calls,
+   errors, traps) and the world's (signal changes, interrupts, moves), which carry their virtual
+   times. Between the two the engines may differ: the machine reports what the world did during
+   a step before the step's own events, and a step may run on into the next statement's entry. *)
+let world_event (e : M.event) = match e with Controller _ | Motion _ -> true | _ -> false
+let streams events = List.partition (fun e -> not (world_event e)) events
+
+let is_prefix a b =
+  let rec prefix a b = match a, b with [], _ -> true | x :: a, y :: b -> x = y && prefix a b | _ :: _, [] -> false in
+  let ap, aw = streams a and bp, bw = streams b in
+  prefix ap bp && prefix aw bw
 
 (* The first difference, with a little context. *)
 let difference machine closure =
-  let rec go i m c =
+  let rec go what i m c =
     match m, c with
     | [], [] -> None
-    | x :: m, y :: c when x = y -> go (i + 1) m c
+    | x :: m, y :: c when x = y -> go what (i + 1) m c
     | _ ->
         let show = function [] -> "(nothing)" | e :: _ -> event_text e in
-        Some (Printf.sprintf "event %d: machine %s, closure %s" i (show m) (show c))
+        Some (Printf.sprintf "%s %d: machine %s, closure %s" what i (show m) (show c))
   in
-  go 0 machine closure
+  let mp, mw = streams machine and cp, cw = streams closure in
+  match go "event" 0 mp cp with Some d -> Some d | None -> go "world event" 0 mw cw
 
 let compare_case path () =
   let case = Rapid_conformance.Spec_case.read path in
@@ -437,14 +452,14 @@ ENDMODULE
   ENDPROC
 ENDMODULE
 |rapid});
-  ("a wait: the machine's only (exit 4 under the closure engine)", {rapid|MODULE un
+  ("a wait", {rapid|MODULE un
   PROC main()
     TPWrite "a";
     WaitTime 1;
   ENDPROC
 ENDMODULE
 |rapid});
-  ("the value of an I/O signal: the machine's only (exit 4 under the closure engine)", {rapid|MODULE sig
+  ("the value of an I/O signal not connected", {rapid|MODULE sig
   VAR signaldi di1;
   PROC main()
     VAR num x;
@@ -523,11 +538,11 @@ ENDMODULE
 |rapid});
 ]
 
-let load_text ?(allow_unknown = false) name text =
+let load_text ?(allow_unknown = false) ?io name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules ~allow_unknown [ m ] with
+      match Rapid_semantics.Session.load_modules ~allow_unknown ?io [ m ] with
       | Ok l -> l.program
       | Error _ -> Alcotest.failf "%s does not check" name)
 
@@ -548,29 +563,37 @@ let program_agrees (name, text) () =
   Alcotest.(check bool) (name ^ ": something was written") true
     (List.exists (function M.Output _ -> true | _ -> false) events)
 
-(* What the closure engine leaves to the machine (doc/semantics.md): a wait, a signal's value, an
-   interrupt routine, a clock, a move end the run as Unsupported at the call or statement, after
-   what came before, never with an exception. *)
-let controller_left () =
-  let ends_at text line col name =
-    match C.events (load_text "ctl" text) ~entry:"main" with
-    | Error m -> Alcotest.fail m
-    | Ok (events, r) ->
-        Alcotest.(check bool) (name ^ ": machine only") true (machine_only r.outcome);
-        (match r.outcome with
-         | Unsupported { name = n; at; _ } ->
-             let p = Source.start at in
-             Alcotest.(check (triple string int int)) name (name, line, col) (n, p.line, p.col)
-         | _ -> ());
-        Alcotest.(check bool) (name ^ ": output before") true (List.mem (M.Output "a") events)
+(* The controller under both engines (doc/controller.md): waits, signals with a stimulus,
+   interrupts and their traps, clocks, motion, a long jump from a trap between statements
+   (R-7.2-m): the same events, with their virtual times, and the same outcome. *)
+let controller_runs () =
+  let io = match Rapid_controller.Io_config.parse ~file:"ctl.io"
+                   "signal di1 di\nsignal do1 do\nsignal ai1 ai\nat 0.35 di1 1\nat 0.6 ai1 4.5\n" with
+    | Ok io -> io | Error m -> Alcotest.fail m in
+  let both text =
+    let program = load_text ~io "ctl" text in
+    let run f = let w = Rapid_controller.World.create ~statement_time:0.01 io in f w in
+    let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits program ~entry:"main" ~max_steps:1_000_000) in
+    let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits program ~entry:"main" ~fuel:1_000_000) in
+    Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
+    (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d);
+    Alcotest.(check bool) "the controller was seen" true
+      (List.exists (function M.Controller _ | M.Trap_entered _ | M.Motion _ -> true | _ -> false) c_events);
+    c_events
   in
-  let program body = "MODULE ctl\n  VAR signaldi di1;\n  VAR intnum i1;\n  VAR clock c1;\n  PROC main()\n    VAR num x;\n    TPWrite \"a\";\n    " ^ body ^ "\n    TPWrite \"b\";\n  ENDPROC\n  TRAP t1\n  ENDTRAP\nENDMODULE\n" in
-  ends_at (program "WaitTime 1;") 8 5 "WaitTime";
-  ends_at (program "x := di1;") 8 5 "di1";
-  ends_at (program "ISignalDI di1, 1, i1;") 8 5 "ISignalDI";
-  ends_at (program "ClkStart c1;") 8 5 "ClkStart";
-  ends_at (program "x := 1 + ClkRead(c1);") 8 14 "ClkRead";
-  ends_at (program "MoveJ [[500,0,500],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;") 8 5 "MoveJ"
+  let program body = "MODULE ctl\n  VAR intnum i1;\n  VAR intnum i2;\n  VAR clock c1;\n  VAR num n := 0;\n  PROC main()\n    VAR num x;\n    TPWrite \"a\";\n" ^ body ^ "\n    TPWrite \"b\" \\Num:=n;\n  ERROR (40)\n    TPWrite \"recovered\";\n    TRYNEXT;\n  ENDPROC\n  TRAP t1\n    n := n + 1;\n    SetDO do1, 1 - do1;\n  ENDTRAP\n  TRAP t2\n    RAISE 40;\n  ENDTRAP\nENDMODULE\n" in
+  let outputs events = List.filter_map (function M.Output s -> Some s | _ -> None) events in
+  ignore (both (program "    WaitDI di1, 1;\n    x := di1;\n    TPWrite \"di1 \" \\Num:=x;"));
+  ignore (both (program "    CONNECT i1 WITH t1;\n    ISignalDI di1, 1, i1;\n    WaitTime 1;\n    n := n + do1;"));
+  ignore (both (program "    CONNECT i1 WITH t1;\n    ITimer 0.1, i1;\n    ClkStart c1;\n    WaitUntil ai1 > 4 \\PollRate:=0.05;\n    x := ClkRead(c1);\n    TPWrite \"t \" \\Num:=x;\n    IDelete i1;"));
+  ignore (both (program "    do1 := 1;\n    PulseDO \\PLength:=0.2, do1;\n    WaitDO do1, 0;\n    x := do1;"));
+  ignore (both (program "    MoveJ [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, z50, tool0;\n    MoveL [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;"));
+  let events = both (program "    CONNECT i2 WITH t2;\n    ITimer \\Single, 0.015, i2;\n    TPWrite \"one\";\n    TPWrite \"two\";") in
+  Alcotest.(check (list string)) "a long jump between statements (R-7.2-m)"
+    [ "a"; "one"; "recovered"; "two"; "b0" ] (outputs events);
+  (* A deadlock, and the virtual time limit, end both alike. *)
+  ignore (both (program "    WaitDO do1, 1;"));
+  ignore (both (program "    CONNECT i1 WITH t1;\n    ITimer 0.1, i1;\n    WHILE TRUE DO\n      WaitTime 100;\n    ENDWHILE"))
 
 (* §1.4, the memory budget (doc/user-guide.md, "Resources"): both engines count the same bytes
    by the model of Value.bytes (module data, each activation, in arguments, absent optional
@@ -739,7 +762,7 @@ let suite =
   ( "engines",
     Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
-    :: Alcotest.test_case "the controller's routines end a closure run cleanly (exit 4)" `Quick controller_left
+    :: Alcotest.test_case "machine = closure: the controller, signals, traps, motion" `Quick controller_runs
     :: Alcotest.test_case "the memory budget: the same bytes, the same call" `Quick memory_budget
     :: Alcotest.test_case "an integer index far beyond the dimension (R-3.6)" `Quick huge_integer_index
     :: Alcotest.test_case "recursion 10,000 deep, and one call more" `Quick deep_recursion
