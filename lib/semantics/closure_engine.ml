@@ -96,6 +96,8 @@ type state = {
   mutable in_trap : bool;             (* a trap runs, or a routine it called: no interrupt is served *)
   mutable interrupts : bool;          (* some CONNECT ran: interrupts may occur *)
   mutable observing : bool;           (* the world may have something to report *)
+  mutable quiet : int;                (* statements that may still pass uncharged (see [sync]) *)
+  mutable quiet_base : int;           (* [quiet] when the world's clock was last charged *)
   mutable moving : bool;              (* the motion may have something to report *)
   max_time : float;
   mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
@@ -211,24 +213,43 @@ and observe_motion st =
    is a point of response: an interrupt queued is served there (not at trap level), then the
    point is taken again, as the machine's settling enters the statement again after the trap.
    Past --max-time the run ends (time-limit). *)
-let rec at_statement st a =
-  W.statement st.world;
-  if W.now st.world > st.max_time then raise (Halt (CC.time_limit st.world));
+(* While the world has nothing scheduled and the program has not yet touched it (no stimulus,
+   no signal, no controller routine), nothing but the time limit can happen at a statement:
+   the statements are then counted here and charged to the world's clock at once, before
+   anything looks at it ([sync]). *)
+let sync st =
+  let uncharged = st.quiet_base - st.quiet in
+  if uncharged > 0 then begin W.statements st.world uncharged; st.quiet_base <- st.quiet end
+
+let watch st =
+  if not st.observing then begin sync st; st.observing <- true; st.quiet <- 0; st.quiet_base <- 0 end
+
+let rec at_point st a =
+  sync st;
+  if not (W.statement_within st.world) then raise (Halt (CC.time_limit st.world));
   if st.observing then begin
     observe st;
     if st.interrupts && not st.in_trap then
       match W.take st.world with
-      | Some (number, trap) -> observe st; st.serve_trap a number trap; at_statement st a
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; at_point st a
       | None -> ()
   end
+  else begin
+    let left = W.statements_left st.world in
+    st.quiet <- left; st.quiet_base <- left
+  end
+
+(* [quiet] is 0 whenever the world is observed. *)
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
 
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
-let rec at_end st a =
-  if st.interrupts && not st.in_trap then
-    match W.take st.world with
-    | Some (number, trap) -> observe st; st.serve_trap a number trap; at_end st a
-    | None -> ()
+let rec serve_at_end st a =
+  match W.take st.world with
+  | Some (number, trap) -> observe st; st.serve_trap a number trap; if not st.in_trap then serve_at_end st a
+  | None -> ()
+
+let at_end st a = if st.interrupts && not st.in_trap then serve_at_end st a [@@inline]
 
 (* ------------------------------------------------------------------ slots and places *)
 
@@ -316,7 +337,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Read_signal p ->
       (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
       let f = read st r ~at p in
-      fun a -> st.observing <- true; check st ~at (CC.read_signal st.world (f a))
+      fun a -> let v = f a in watch st; check st ~at (CC.read_signal st.world v)
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
@@ -638,7 +659,7 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
       let invoke values =
         if not controller then Primitive.call ctx name values
         else begin
-          st.observing <- true;
+          watch st;
           if motion then st.moving <- true;
           match Motion_primitives.call ctx st.motion name values with
           | Some r -> r
@@ -1037,10 +1058,13 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let signal_shape = function V.S_handle k -> CC.is_signal (V.default_of (V.S_handle k)) | _ -> false in
       let own_signal i =
         if i < Array.length r.parameters then signal_shape r.parameters.(i).p_default
-        else match List.assoc_opt i r.local_inits with Some (Init_default sh) -> signal_shape sh | _ -> true in
+        else match List.assoc_opt i r.local_inits with
+          | Some (Init_default sh) -> signal_shape sh
+          | _ -> false (* an initial value, a FOR variable: never a signal's *) in
       let store_signal box i v =
+        watch st;
         match CC.write_signal st.world box.(i) v with
-        | Ok () -> st.observing <- true
+        | Ok () -> ()
         | Error "" -> raise (Halt (M.Stuck "a signal assigned a value that is not a num"))
         | Error name -> fail st ~at name in
       match place with
@@ -1107,7 +1131,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              fail st ~at "ERR_ALRDYCNT"
          | _ -> ());
         (match W.connect st.world ~trap with
-         | Ok n -> box.(i) <- V.num (float_of_int n); st.interrupts <- true; st.observing <- true
+         | Ok n -> box.(i) <- V.num (float_of_int n); watch st; st.interrupts <- true
          | Error name -> fail st ~at name);
         true
   | If (c, t, e) | Elseif (c, t, e) ->
@@ -1272,6 +1296,7 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     world; motion; in_trap = false; interrupts = false;
     (* A stimulus, or collisions, make the world report without the program asking. *)
     observing = W.next_event world <> None || W.collisions world <> [];
+    quiet = 0; quiet_base = 0;
     moving = W.collisions world <> [];
     max_time = W.max_time world; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
@@ -1369,6 +1394,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event ~world ~motio
       (* What the world and the motion did last; at the end of the task, what the robot still
          does (as the machine's last step). *)
       (try
+         sync st;
          observe st;
          if outcome = M.Ended && all_events then
            List.iter (fun m -> on_event (M.Motion m)) (Motion_primitives.finish st.motion)
