@@ -591,6 +591,19 @@ let controller_runs () =
   let events = both (program "    CONNECT i2 WITH t2;\n    ITimer \\Single, 0.015, i2;\n    TPWrite \"one\";\n    TPWrite \"two\";") in
   Alcotest.(check (list string)) "a long jump between statements (R-7.2-m)"
     [ "a"; "one"; "recovered"; "two"; "b0" ] (outputs events);
+  (* --max-time ends a program that never touches the controller at the same statement in both
+     (the closure engine counts such statements itself and charges the clock later). *)
+  let looping = load_text "loop" "MODULE l\n  PROC main()\n    VAR num i;\n    WHILE TRUE DO\n      i := i + 1;\n      IF i MOD 7 = 0 TPWrite \"i \" \\Num:=i;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n" in
+  List.iter (fun (statement_time, max_time) ->
+      let run f = f (Rapid_controller.World.create ~statement_time ~max_time Rapid_controller.Io_config.empty) in
+      let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits looping ~entry:"main" ~max_steps:10_000_000) in
+      let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits looping ~entry:"main" ~fuel:10_000_000) in
+      (match m_outcome, c_outcome with
+       | Resource_exhausted m, Resource_exhausted c -> Alcotest.(check string) "the time limit" m c
+       | _ -> Alcotest.failf "time limit: %s / %s" (outcome_text m_outcome) (outcome_text c_outcome));
+      (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "time limit %g: %s" max_time d);
+      Alcotest.(check bool) "some output" true (List.exists (function M.Output _ -> true | _ -> false) c_events))
+    [ (0.01, 5.); (0.003, 1.); (0.0001, 0.05); (0.25, 10.) ];
   (* A deadlock, and the virtual time limit, end both alike. *)
   ignore (both (program "    WaitDO do1, 1;"));
   ignore (both (program "    CONNECT i1 WITH t1;\n    ITimer 0.1, i1;\n    WHILE TRUE DO\n      WaitTime 100;\n    ENDWHILE"))
