@@ -424,7 +424,7 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
+  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the controller, motion and services as the machine's; not with --save or --samples, doc/semantics.md).") in
   let run files entry max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     let print_event (e : M.event) =
