@@ -196,6 +196,86 @@ let spec_under_closure () =
    conditional arguments, INOUT bindings, and the num operators on edge values (the closure
    engine computes num operators on its own fast path; Arith computes them for the machine). *)
 let programs = [
+  ("traps: in an error handler, in UNDO, with EXIT, with their own handlers, during a poll", {rapid|MODULE tr
+  VAR intnum t1;
+  VAR intnum t2;
+  VAR intnum t3;
+  VAR num hits := 0;
+  VAR num polls := 0;
+  TRAP counting
+    hits := hits + 1;
+    TPWrite "trap " \Num:=INTNO;
+  ENDTRAP
+  TRAP failing
+    TPWrite "failing";
+    RAISE 41;
+  ERROR
+    TPWrite "trap handler " \Num:=ERRNO;
+    IF hits < 3 RETRY;
+    RETURN;
+  ENDTRAP
+  FUNC bool ready()
+    polls := polls + 1;
+    RETURN polls > 3;
+  ENDFUNC
+  PROC inner()
+    WHILE hits < 5 DO
+      WaitTime 0.01;
+    ENDWHILE
+    RAISE 42;
+  UNDO
+    TPWrite "undo inner";
+    WaitTime 0.02;
+  ENDPROC
+  PROC main()
+    CONNECT t1 WITH counting;
+    ITimer 0.013, t1;
+    CONNECT t2 WITH failing;
+    ITimer \Single, 0.03, t2;
+    inner;
+    TPWrite "not reached";
+  ERROR
+    TPWrite "main handler " \Num:=ERRNO;
+    WaitUntil ready() \PollRate:=0.01;
+    ISleep t1;
+    WaitTime 0.05;
+    IWatch t1;
+    IDelete t1;
+    CONNECT t3 WITH counting;
+    ITimer \Single, 0.001, t3;
+    WaitTime 0.01;
+    TPWrite "hits " \Num:=hits;
+    EXIT;
+  ENDPROC
+ENDMODULE
+|rapid});
+  ("a long jump from a trap into a loop, and a trap whose error stops the task", {rapid|MODULE tr2
+  VAR intnum t1;
+  VAR num n := 0;
+  TRAP failing
+    RAISE 43;
+  ENDTRAP
+  PROC work()
+    FOR i FROM 1 TO 100 DO
+      n := n + 1;
+    ENDFOR
+  ENDPROC
+  PROC main()
+    CONNECT t1 WITH failing;
+    ITimer \Single, 0.0015, t1;
+    WHILE n < 1000 DO
+      work;
+    ENDWHILE
+    TPWrite "n " \Num:=n;
+    ITimer \Single, 0.001, t1;
+    WaitTime 1;
+  ERROR (43)
+    TPWrite "recovered at " \Num:=n;
+    IF n < 500 RETRY;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+|rapid});
   ("control and RETRY in loops", {rapid|MODULE g1
   VAR num count := 0;
   VAR num arr{3} := [1, 2, 3];

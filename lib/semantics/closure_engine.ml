@@ -1111,9 +1111,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         else fail st ~at "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->
-      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler. *)
+      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
+         itself (in a compact IF too, where other errors are the IF's). *)
       fun a ->
-        if a.ext.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
+        if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext -> fun _ -> raise_notrace Trynext_signal
   | Connect (place, trap) ->
