@@ -33,8 +33,8 @@ let event_text (e : M.event) =
   | Controller (Interrupt_occurred { time; number }) -> Printf.sprintf "%.6f interrupt %d" time number
   | Controller (Interrupt_discarded { time; number; reason }) ->
       Printf.sprintf "%.6f interrupt %d discarded: %s" time number reason
-  | Trap_entered { trap; _ } -> "trap entered " ^ trap
-  | Trap_left { trap; _ } -> "trap left " ^ trap
+  | Trap_entered { trap; number; time } -> Printf.sprintf "%.6f trap entered %s %d" time trap number
+  | Trap_left { trap; time } -> Printf.sprintf "%.6f trap left %s" time trap
   | Motion m -> "motion " ^ Rapid_semantics.Motion_primitives.event_to_string m
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
@@ -851,9 +851,95 @@ let random_programs () =
     (QCheck.Test.make ~count:150 ~name:"machine = closure on random programs"
        (QCheck.make ~print:(fun s -> s) Gen_programs.gen) agree_on)
 
+(* Random programs of the controller: timers, traps that count, raise, call a routine that raises
+   or EXIT, waits, IDisable/IEnable, ISleep/IWatch, loops and calls with UNDO, handlers that RETRY,
+   TRYNEXT, RETURN or RAISE, error recovery points; random statement times. Both engines must
+   make the same events and end alike. *)
+let controller_programs () =
+  let open QCheck.Gen in
+  let pick l = oneofl l in
+  let gen =
+    let* statement_time = pick [ 0.001; 0.004; 0.01; 0.03 ] in
+    let* period = pick [ "0.005"; "0.012"; "0.02"; "0.05" ] in
+    let* single = bool in
+    let* second = pick [ "0.007"; "0.025"; "0.04" ] in
+    let* trap1 = pick [ "hits := hits + 1;"; "hits := hits + 1;\n    TPWrite \"tick \" \\Num:=INTNO;";
+                        "hits := hits + 1;\n    IF hits = 3 RAISE 41;"; "hits := hits + 1;\n    WaitTime 0.003;" ] in
+    let* trap2 = pick [ "RAISE 42;"; "deep;"; "hits := hits + 10;"; "IF hits > 2 EXIT;"; "RAISE 43;" ] in
+    let* recovery = pick [ ""; " (41)"; " (42, 43)"; " (LONG_JMP_ALL_ERR)" ] in
+    let* ending = pick [ "RETRY;"; "TRYNEXT;"; "RETURN;"; "RAISE;"; "IF tries < 3 RETRY;\n    TRYNEXT;" ] in
+    let statement = pick [
+        "TPWrite \"s \" \\Num:=hits;"; "WaitTime 0.01;"; "WaitTime 0.03;";
+        "FOR i FROM 1 TO 5 DO\n      n := n + 1;\n    ENDFOR"; "work;";
+        "IDisable;\n    WaitTime 0.02;\n    IEnable;"; "ISleep t1;\n    WaitTime 0.02;\n    IWatch t1;";
+        "WaitUntil hits > 2 \\MaxTime:=0.2;"; "n := n + 1;"; "IF n > 3 THEN\n      work;\n    ENDIF";
+        (* IEnable last in a list: the interrupts queued meanwhile are served at its end *)
+        "IF n >= 0 THEN\n      IDisable;\n      WaitTime 0.02;\n      IEnable;\n    ENDIF" ] in
+    let* body = list_size (int_range 2 7) statement in
+    let* work_body = list_size (int_range 1 3) statement in
+    let work_body = List.filter (fun s -> s <> "work;" && s <> "IF n > 3 THEN\n      work;\n    ENDIF") work_body in
+    return (statement_time, Printf.sprintf {|MODULE rc
+  VAR intnum t1;
+  VAR intnum t2;
+  VAR num hits := 0;
+  VAR num n := 0;
+  VAR num tries := 0;
+  TRAP first
+    %s
+  ENDTRAP
+  TRAP second
+    %s
+  ENDTRAP
+  PROC deep()
+    RAISE 42;
+  UNDO
+    TPWrite "undo deep";
+  ENDPROC
+  PROC work()
+    n := n + 1;
+    %s
+  UNDO
+    TPWrite "undo work";
+  ENDPROC
+  PROC main()
+    CONNECT t1 WITH first;
+    ITimer %s%s, t1;
+    CONNECT t2 WITH second;
+    ITimer \Single, %s, t2;
+    %s
+    TPWrite "end " \Num:=hits;
+  ERROR%s
+    tries := tries + 1;
+    TPWrite "handler " \Num:=ERRNO;
+    %s
+  ENDPROC
+ENDMODULE
+|} trap1 trap2 (String.concat "\n    " work_body)
+                   (if single then "\\Single, " else "") period second (String.concat "\n    " body) recovery ending)
+  in
+  let agree_on (statement_time, text) =
+    let program = load_text "rc" text in
+    let run f = f (Rapid_controller.World.create ~statement_time ~max_time:20. Rapid_controller.Io_config.empty) in
+    let budget = 200_000 in
+    let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits program ~entry:"main" ~max_steps:budget) in
+    let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits program ~entry:"main" ~fuel:budget) in
+    match m_outcome, c_outcome with
+    | Running, _ | _, Running -> is_prefix m_events c_events || is_prefix c_events m_events
+    | _ ->
+        if outcome_text m_outcome <> outcome_text c_outcome then
+          QCheck.Test.fail_reportf "outcomes: machine %s, closure %s" (outcome_text m_outcome) (outcome_text c_outcome)
+        else match difference m_events c_events with
+          | None -> true
+          | Some d -> QCheck.Test.fail_reportf "%s" d
+  in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 20261127 |])
+    (QCheck.Test.make ~count:300 ~name:"machine = closure on random controller programs"
+       (QCheck.make ~print:(fun (t, s) -> Printf.sprintf "statement time %g\n%s" t s) gen) agree_on)
+
 let suite =
   ( "engines",
     Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
+    Alcotest.test_case "machine = closure on 300 random controller programs" `Quick controller_programs ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
     :: Alcotest.test_case "machine = closure: the controller, signals, traps, motion" `Quick controller_runs
     :: Alcotest.test_case "the memory budget: the same bytes, the same call" `Quick memory_budget
