@@ -132,8 +132,8 @@ let fail ?about st ~at name =
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
 
-(* What this engine leaves to the machine: the controller (signals, waits, interrupts, clocks)
-   and motion (doc/semantics.md, "The second engine"). *)
+(* The reason an engine gives for what it leaves to the machine. This one now leaves nothing
+   (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
 let machine_only_reason = "runs on the machine only: use --engine machine"
 
 let machine_only (o : M.outcome) =
@@ -209,10 +209,6 @@ and observe_motion st =
     | [] -> ()
     | moved -> if st.all_events then List.iter (fun m -> st.emit (M.Motion m)) moved
 
-(* ch. 8: the entry of a statement, and each new round of a loop, takes the statement time and
-   is a point of response: an interrupt queued is served there (not at trap level), then the
-   point is taken again, as the machine's settling enters the statement again after the trap.
-   Past --max-time the run ends (time-limit). *)
 (* While the world has nothing scheduled and the program has not yet touched it (no stimulus,
    no signal, no controller routine), nothing but the time limit can happen at a statement:
    the statements are then counted here and charged to the world's clock at once, before
@@ -224,6 +220,10 @@ let sync st =
 let watch st =
   if not st.observing then begin sync st; st.observing <- true; st.quiet <- 0; st.quiet_base <- 0 end
 
+(* ch. 8: the entry of a statement, and each new round of a loop, takes the statement time and
+   is a point of response: an interrupt queued is served there (not at trap level), then the
+   point is taken again, as the machine's settling enters the statement again after the trap.
+   Past --max-time the run ends (time-limit). *)
 let rec at_point st a =
   sync st;
   if not (W.statement_within st.world) then raise (Halt (CC.time_limit st.world));
