@@ -1299,7 +1299,8 @@ and between st h (a : act) point =
   | exception Long_jump (j, e) when j = a.level -> (
       emit_raised st e;
       match run_handler st h a e with
-      | `Retry | `Trynext -> between st h a point
+      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); between st h a point
+      | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); between st h a point
       | `Return -> false)
 
 (* ------------------------------------------------------------------ routines *)
