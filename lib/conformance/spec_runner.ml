@@ -54,7 +54,13 @@ let execute engine case (run : Spec_case.run) ~io program =
       let services = Rapid_controller.Services.create ~sandbox () in
       Rapid_controller.World.set_services world services;
       let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
-      match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
+      let robot = match run.robot with
+        | None -> Ok None
+        | Some file -> Result.map Option.some (Result.map_error Rapid_motion_model.Robot.error_to_string
+                                                 (Rapid_motion_model.Robot.load file)) in
+      match Result.bind robot (fun robot ->
+          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+          M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled ~motion program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok cfg ->
           while M.outcome cfg = Running && M.steps cfg < max_steps do
@@ -69,6 +75,9 @@ let execute engine case (run : Spec_case.run) ~io program =
       | Ok r -> Ok (List.rev !output, r.outcome))
 
 let rec run_program engine case (run : Spec_case.run) ~io program =
+  if engine = Closure && run.robot <> None then
+    { case; verdict = Skipped; detail = "a robot description: the machine runs it" }
+  else
   match execute engine case run ~io program with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
