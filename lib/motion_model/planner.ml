@@ -43,6 +43,8 @@ type segment = {
 (* All floats: one flat block, not six boxes (the queue holds one per move). *)
 and figures = {
   length : float; angle : float; duration : float; t_start : float; zone_tcp : float; zone_ori : float;
+  lin_delta : float; rot_delta : float;  (* the largest linear (mm) and rotating (deg) external axis travel *)
+  zone_leax : float; zone_reax : float;
 }
 
 (* The planner's axis vectors are twelve long: the arm's six axes, then extjoint's eax_a … eax_f
@@ -240,18 +242,25 @@ let circle s c e =
 
 (* The share of a segment's length a zone of [zr] mm (or [zo] degrees when the TCP does not
    move) may take, at most half the segment (law Z-clip). *)
-let side_fraction ~length ~angle zr zo =
+(* When neither the TCP moves nor its orientation changes (MoveExtJ), the external axes' zones
+   (zone_leax, zone_reax) against their travel (law X-zone). *)
+let side_fraction ?(ext = (0., 0., 0., 0.)) ~length ~angle zr zo =
+  let lin, rot, zl, zx = ext in
   if length > 0. then Float.min 0.5 (zr /. length)
   else if angle > 0. then Float.min 0.5 (zo /. angle)
+  else if lin > 0. || rot > 0. then
+    Float.min 0.5 (Float.min (if lin > 0. then zl /. lin else infinity) (if rot > 0. then zx /. rot else infinity))
   else 0.
+
+let ext_of (g : figures) (z : figures) = (g.lin_delta, g.rot_delta, z.zone_leax, z.zone_reax)
 
 let corner_fractions (a : segment) (b : segment) =
   if a.f.length > 0. && b.f.length > 0. then
     let r = Float.min a.f.zone_tcp (Float.min (a.f.length /. 2.) (b.f.length /. 2.)) in
     (r /. a.f.length, r /. b.f.length)
   else
-    (side_fraction ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
-     side_fraction ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
+    (side_fraction ~ext:(ext_of a.f a.f) ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
+     side_fraction ~ext:(ext_of b.f a.f) ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
 
 (* A stationary tool: the robot carries the work object along the same flange poses
    (Frames.as_robot_held, R-4.1-o). *)
@@ -332,6 +341,8 @@ let build t ~now_p m id =
       | Arc a -> a.radius *. a.sweep
       | Joints _ -> distance start.trans end_tcp in
     let angle = deg (angle_between start.rot rot1) in
+    (* MoveExtJ programs no TCP: what the track does to it is not its length (law X-zone). *)
+    let length, angle = if m.motion = External_only then (0., 0.) else (length, angle) in
     let* duration =
       match geometry with
       | Joints _ when m.motion = External_only ->
@@ -352,9 +363,15 @@ let build t ~now_p m id =
       if Float.is_finite duration && Float.is_finite length then Ok ()
       else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in
     let fine = m.zone.finep || m.inpos <> None in
+    let travel kind = List.fold_left (fun acc (x : Ext_axes.axis) ->
+        if x.kind = kind then Float.max acc (Float.abs (e_end.(x.index) -. q_start.(6 + x.index))) else acc)
+        0. robot.externals in
     let f = { length; angle; duration; t_start = now_p;
               zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
-              zone_ori = (if fine then 0. else m.zone.zone_ori) } in
+              zone_ori = (if fine then 0. else m.zone.zone_ori);
+              lin_delta = travel Ext_axes.Linear; rot_delta = travel Ext_axes.Rotating;
+              zone_leax = (if fine then 0. else m.zone.zone_leax);
+              zone_reax = (if fine then 0. else m.zone.zone_reax) } in
     Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; f; fine;
           end_tcp }, f_end)
 
@@ -418,7 +435,7 @@ let plan t ~now m =
     if m.conc then Float.max now_p motion_from
     else if sg.fine then arrive_ready
     else
-      let fmax = side_fraction ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
+      let fmax = side_fraction ~ext:(ext_of sg.f sg.f) ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
       Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
   in
   t.cur.end_joints <- sg.q_end;
