@@ -65,7 +65,8 @@ type state = {
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
   mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
-  mutable history : (P.motion * float array) list;  (* forward moves and their start axes, newest first *)
+  mutable history : (P.motion * float array * float array) list;
+      (* forward moves and their start axes (the arm's, the external ones), newest first *)
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
 }
 
@@ -289,6 +290,11 @@ let tool0_value () =
   V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
               V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |]
 
+let current_external_at st now =
+  match P.external_at st.planner now with
+  | Ok e -> e
+  | Error _ -> MM.Ext_axes.initial st.robot.externals
+
 (* The flange of a planned move's point, in the world (law X-track). *)
 let world_flange st id joints =
   let f = MM.Kinematics.forward st.kin joints in
@@ -302,13 +308,18 @@ let move ctx st name args =
   match get "Speed", get "Zone", (if ext then Some (tool0_value ()) else get "Tool") with
   | Some speed, Some zone, Some tool -> (
       let start = arm_end_joints st now in
+      let start_ext = match st.last_planned with
+        | Some id when P.segment_span st.planner id <> None -> P.target_external st.planner id
+        | _ -> current_external_at st now in
+      let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
          mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
       let retraced = match st.history with
-        | (forward, from) :: older when st.backward && not ext ->
+        | (forward, from, from_ext) :: older when st.backward && not ext ->
             st.history <- older;
+            back_eax := Some from_ext;
             let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
-            let back () = MM.Frames.calc_rob_t st.kin from (tool_of tool) wobj_d in
+            let back () = MM.Frames.calc_rob_t ?base:(P.base st.planner from_ext) st.kin from (tool_of tool) wobj_d in
             (match forward with
              | P.Linear _ -> Result.to_option (Result.map (fun r -> P.Linear r) (back ()))
              | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
@@ -322,8 +333,9 @@ let move ctx st name args =
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
       let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
-      (* The external axes the move goes to (law X-target); a retraced move keeps them. *)
-      let eax = if retraced <> None then None
+      (* The external axes the move goes to (law X-target); a retraced move goes back to
+         where they were at the start of the forward move (R-6.3-m). *)
+      let eax = if retraced <> None then !back_eax
         else if same name "MoveAbsJ" || ext then Option.map eax_of_jointtarget (get "ToJointPos")
         else Option.map eax_of_robtarget (get "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
@@ -394,7 +406,7 @@ let move ctx st name args =
               st.last_planned <- Some id; st.new_move <- Some id;
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
-                st.history <- (motion, start) :: List.filteri (fun i _ -> i < 255) st.history;
+                st.history <- (motion, start, start_ext) :: List.filteri (fun i _ -> i < 255) st.history;
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
@@ -576,10 +588,7 @@ let result_pose ctx what = function
 let current_joints ctx st =
   P.joints_at st.planner (W.now ctx.world)
 
-let current_external ctx st =
-  match P.external_at st.planner (W.now ctx.world) with
-  | Ok e -> e
-  | Error _ -> MM.Ext_axes.initial st.robot.externals
+let current_external ctx st = current_external_at st (W.now ctx.world)
 
 (* The base a position function computes with, for programmed extjoint components: 9E9 keeps an
    axis where it is now (law X-target). *)
