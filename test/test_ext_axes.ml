@@ -192,6 +192,22 @@ let test_corner () =
   let e = ok "end" (Planner.external_at p (Planner.finished_by p)) in
   close "eax_a at the end" e.(0) 100.; close "eax_b at the end" e.(1) 30.
 
+(* The CSV has a column per external axis, by name; the default robot's has none. *)
+let test_csv () =
+  let p = Planner.create ~joints:rest kin in
+  let _ = ok "plan" (Planner.plan p ~now:0. (Planner.move ~eax:(eax ~a:100. ~b:(-45.) ()) (speed "v100") (zone "fine") External_only)) in
+  let lines = String.split_on_char '\n' (String.trim (Path_output.csv ~step:0.25 p)) in
+  Alcotest.(check string) "header" "t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6,eax_a,eax_b" (List.hd lines);
+  (* eax_b's 45 degrees at 90 deg/s: 0.5 s; at 0.25 s both axes are halfway. *)
+  let row = String.split_on_char ',' (List.nth lines 2) in
+  close "t" (float_of_string (List.nth row 0)) 0.25;
+  close ~eps:1e-4 "eax_a halfway" (float_of_string (List.nth row 14)) 50.;
+  close ~eps:1e-4 "eax_b halfway" (float_of_string (List.nth row 15)) (-22.5);
+  close ~eps:1e-4 "the base moved the TCP" (float_of_string (List.nth row 1)) 352.;
+  let p0 = Planner.create ~joints:rest (Kinematics.create Robot.irb120) in
+  Alcotest.(check string) "no column without external axes" "t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6"
+    (List.hd (String.split_on_char '\n' (Path_output.csv p0)))
+
 let suite =
   ( "external axes",
     [ Alcotest.test_case "X-desc: external axes in the description, and their errors" `Quick test_description;
@@ -200,4 +216,5 @@ let suite =
       Alcotest.test_case "X-time: durations scale inversely with v_leax and v_reax, random" `Quick test_time_scales;
       Alcotest.test_case "X-track: the base moves with the track" `Quick test_track;
       Alcotest.test_case "X-track: CalcRobT then CalcJointT on a moved base, random" `Quick test_track_frames;
-      Alcotest.test_case "X-interp: external axes through a corner" `Quick test_corner ] )
+      Alcotest.test_case "X-interp: external axes through a corner" `Quick test_corner;
+      Alcotest.test_case "the CSV's external axis columns" `Quick test_csv ] )
