@@ -192,6 +192,21 @@ let test_corner () =
   let e = ok "end" (Planner.external_at p (Planner.finished_by p)) in
   close "eax_a at the end" e.(0) 100.; close "eax_b at the end" e.(1) 30.
 
+(* Bad external axis values are errors, never exceptions: any floats, any length, any move. *)
+let test_bad_values () =
+  let value = QCheck.Gen.(oneof [ float; oneofl [ nan; infinity; neg_infinity; 9e9; 8999999488.; -0.; 1e300 ];
+                                  float_range (-300.) 2300. ]) in
+  let gen = QCheck.Gen.(pair (array_size (int_range 0 8) value) (int_range 0 3)) in
+  run_property ~seed:49 ~count:2000 ~name:"X-bad" (QCheck.make gen) (fun (e, kind) ->
+      let p = Planner.create ~joints:rest kin in
+      let motion = match kind with
+        | 0 -> Planner.External_only | 1 -> Planner.Abs_joint rest
+        | 2 -> Planner.Linear (target 502. 0. 558.) | _ -> Planner.Joint (target 502. 0. 558.) in
+      (match Planner.plan p ~now:0. (Planner.move ~eax:e (speed "v100") (zone "z10") motion) with
+       | Ok _ -> ignore (Planner.pose_at p 0.5); ignore (Planner.external_at p 0.5); ignore (Planner.joints_at p 0.5)
+       | Error _ -> ());
+      true)
+
 (* The CSV has a column per external axis, by name; the default robot's has none. *)
 let test_csv () =
   let p = Planner.create ~joints:rest kin in
@@ -217,4 +232,5 @@ let suite =
       Alcotest.test_case "X-track: the base moves with the track" `Quick test_track;
       Alcotest.test_case "X-track: CalcRobT then CalcJointT on a moved base, random" `Quick test_track_frames;
       Alcotest.test_case "X-interp: external axes through a corner" `Quick test_corner;
-      Alcotest.test_case "the CSV's external axis columns" `Quick test_csv ] )
+      Alcotest.test_case "the CSV's external axis columns" `Quick test_csv;
+      Alcotest.test_case "bad external axis values never raise, random" `Quick test_bad_values ] )
