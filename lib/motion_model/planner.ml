@@ -50,7 +50,8 @@ and figures = {
 (* The planner's axis vectors are twelve long: the arm's six axes, then extjoint's eax_a … eax_f
    (9E9 for an axis the robot does not have, constant, so interpolation keeps it exact). *)
 let arm q = Array.sub q 0 6
-let ext q = Array.sub q 6 6
+(* An unused component stays exactly 9E9 through interpolation's rounding. *)
+let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
 let join q e = Array.append (Array.sub q 0 6) e
 
 (* The flange in the world: the robot's base moves with a track (law X-track). *)
@@ -485,7 +486,23 @@ let axes_at t real =
       | _ -> piece_joints t.kin pc u
 
 let joints_at t real = Result.map arm (axes_at t real)
-let external_at t real = Result.map ext (axes_at t real)
+
+(* The external axes need no inverse kinematics: they follow the path's parameter (law
+   X-interp), also where the arm cannot follow a straight path. *)
+let external_at t real =
+  let tp = path_time t.cur real in
+  match find t tp with
+  | -1 -> Ok (ext t.cur.start_joints)
+  | i ->
+      let pc = Vec.get t.cur.pieces i in
+      let u = param pc tp in
+      Ok (ext (match pc.shape with
+          | Part sg when u >= 1. -> sg.q_end
+          | Part sg -> lerp_q sg.q_start sg.q_end u
+          | Blend b ->
+              let qa = lerp_q b.a.q_start b.a.q_end (1. -. b.fa) and qb = lerp_q b.b.q_start b.b.q_end b.fb in
+              bezier_q qa b.a.q_end qb u
+          | Joint_blend b -> bezier_q b.j0 b.j1 b.j2 u))
 
 let finished_by t = real_time t.cur t.cur.end_time
 
