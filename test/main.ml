@@ -14,6 +14,7 @@ let () =
       Test_campaign.suite;
       Test_memory.suite;
       Test_motion.suite;
+      Test_ext_axes.suite;
       Test_controller.suite;
       Test_installed.suite;
       Test_check_output.suite;

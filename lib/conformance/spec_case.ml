@@ -32,11 +32,13 @@ and run = {
   schedule : int option;
   motion_task : string option;
   task_entries : (string * string) list;
+  robot : string option;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
                max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
-               tasks = []; schedule = None; motion_task = None; task_entries = [] }
+               tasks = []; schedule = None; motion_task = None; task_entries = [];
+               robot = None }
 
 let known_formats = [ "1"; "2"; "3"; "4" ]
 let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
@@ -192,6 +194,10 @@ let read path =
                   (* The stimulus file is named relative to the case's folder. *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
                   with_run case (fun r -> { r with io = Some (Filename.concat dir v) })
+              | Some ("robot", v) when v <> "" ->
+                  (* The robot description of the run (doc/motion.md), beside the case. *)
+                  let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
+                  with_run case (fun r -> { r with robot = Some (Filename.concat dir v) })
               | Some ("home", v) when v <> "" ->
                   (* The files HOME: holds at the start, a folder beside the case (doc/services.md). *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in

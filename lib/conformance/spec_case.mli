@@ -45,6 +45,7 @@ and run = {
   motion_task : string option;    (** format 4, [! @motion-task NAME] *)
   task_entries : (string * string) list;
       (** format 4, [! @entry TASK=ROUTINE]: that task's entry routine (the others: [entry]) *)
+  robot : string option;          (** [! @robot FILE]: the robot description (rapid-sem run --robot), beside the case *)
 }
 
 val read : string -> t

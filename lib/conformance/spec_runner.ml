@@ -37,6 +37,13 @@ let accepted case expected =
                    (Spec_case.expectation_to_string expected))
 
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
+(* The robot description of [! @robot FILE], or the default robot. *)
+let robot_of (run : Spec_case.run) =
+  match run.robot with
+  | None -> Ok None
+  | Some file -> Result.map Option.some (Result.map_error Rapid_motion_model.Robot.error_to_string
+                                           (Rapid_motion_model.Robot.load file))
+
 (* The run's output lines and outcome, by the chosen engine. *)
 let execute engine case (run : Spec_case.run) ~io program =
   let module M = Rapid_semantics.Machine in
@@ -54,7 +61,9 @@ let execute engine case (run : Spec_case.run) ~io program =
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
   match engine with
   | Machine -> (
-      match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
+      match Result.bind (robot_of run) (fun robot ->
+          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+          M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled ~motion program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok cfg ->
           while M.outcome cfg = Running && M.steps cfg < max_steps do
@@ -63,8 +72,10 @@ let execute engine case (run : Spec_case.run) ~io program =
           release ();
           Ok (List.rev !output, M.outcome cfg))
   | Closure -> (
-      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
-              ~all_events:false ~world ~on_event:collect program ~entry:run.entry with
+      match Result.bind (robot_of run) (fun robot ->
+          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+          Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
+            ~all_events:false ~world ~motion ~on_event:collect program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok r -> release (); Ok (List.rev !output, r.outcome))
 
@@ -129,9 +140,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
   if engine = Closure then { case; verdict = Skipped; detail = "several tasks: the machine runs them" }
   else
   let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
-  match io with
-  | Error m -> fail case m
-  | Ok io ->
+  match io, robot_of run with
+  | Error m, _ | _, Error m -> fail case m
+  | Ok io, Ok robot ->
   let limits = { M.default_limits with retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
@@ -145,7 +156,7 @@ let run_tasks engine case expected (run : Spec_case.run) =
     | Some (_, r) -> r | None -> run.entry in
   let specs = List.map (fun (name, files) -> { TS.name; files; entry = entry_of name }) run.tasks in
   let result = TS.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~allow_unknown:case.allow_unknown ~io
-      ?seed:run.schedule ?motion_task:run.motion_task ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs in
+      ?seed:run.schedule ?motion_task:run.motion_task ~world ~motion:(Rapid_semantics.Motion_primitives.create ?robot ()) specs in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"

@@ -27,13 +27,17 @@ let as_robot_held tool wobj =
             fun target -> pmult tool.tframe (pinv target))
   | _ -> None
 
-let calc_rob_t k joints tool wobj =
+(* Law X-track: on a track the base is not the world frame; robtargets stay in the world. *)
+let on_base base f = match base with None -> f | Some b -> pmult b f
+let off_base base f = match base with None -> f | Some b -> pmult (pinv b) f
+
+let calc_rob_t ?base k joints tool wobj =
   Result.map (fun pose -> { pose; conf = Kinematics.conf_of k joints })
-    (target_of_flange tool wobj (Kinematics.forward k joints))
+    (target_of_flange tool wobj (on_base base (Kinematics.forward k joints)))
 
-let calc_joint_t k (t : robtarget) tool wobj =
+let calc_joint_t ?base k (t : robtarget) tool wobj =
   Result.bind (flange_of_target tool wobj t.pose) (fun f ->
-      Kinematics.inverse k f (Kinematics.With_conf t.conf))
+      Kinematics.inverse k (off_base base f) (Kinematics.With_conf t.conf))
 
-let c_rob_t k ~joints tool wobj = calc_rob_t k joints tool wobj
-let c_pos k ~joints tool wobj = Result.map (fun r -> r.pose.trans) (c_rob_t k ~joints tool wobj)
+let c_rob_t ?base k ~joints tool wobj = calc_rob_t ?base k joints tool wobj
+let c_pos ?base k ~joints tool wobj = Result.map (fun r -> r.pose.trans) (c_rob_t ?base k ~joints tool wobj)

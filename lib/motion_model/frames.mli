@@ -27,22 +27,25 @@ val as_robot_held :
     [None] for any other pair. *)
 
 val calc_rob_t :
-  Kinematics.t -> float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  ?base:Geom.pose -> Kinematics.t -> float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
   (robtarget, Motion_error.t) result
 (** CalcRobT(Joint_target, Tool [\WObj]): the robtarget of axis angles, with their confdata. *)
 
 val calc_joint_t :
-  Kinematics.t -> robtarget -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  ?base:Geom.pose -> Kinematics.t -> robtarget -> Motion_data.tooldata -> Motion_data.wobjdata ->
   (float array, Motion_error.t) result
 (** CalcJointT(Rob_target, Tool [\WObj]): the axis angles with the robtarget's confdata; an
     error carries ERR_ROBLIMIT for \ErrorNumber ({!Motion_error.errnum}). *)
 
 val c_rob_t :
-  Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  ?base:Geom.pose -> Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
   (robtarget, Motion_error.t) result
 (** CRobT([\Tool] [\WObj]) given the current axis angles (CJointT, from the planner). *)
 
 val c_pos :
-  Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
+  ?base:Geom.pose -> Kinematics.t -> joints:float array -> Motion_data.tooldata -> Motion_data.wobjdata ->
   (Geom.pos, Motion_error.t) result
-(** CPos([\Tool] [\WObj]): the translation of CRobT. *)
+(** CPos([\Tool] [\WObj]): the translation of CRobT.
+
+    [?base] (all four): the robot's base in the world when a track carries it (law X-track);
+    the world frame by default. *)

@@ -7,6 +7,7 @@ type t =
   | Invalid_speed of string
   | Robhold_conflict
   | Path_level of string
+  | External_out_of_range of string
 
 let name = function
   | Out_of_reach -> "position outside reach"
@@ -17,9 +18,11 @@ let name = function
                          point, or on their line"
   | Invalid_speed m -> "invalid speed: " ^ m
   | Path_level m -> m
+  | External_out_of_range n -> Printf.sprintf "external axis %s out of range" n
   | Robhold_conflict -> "the tool and the work object cannot both be held (or both not be held) \
                          by the robot"
 
 let errnum = function
-  | Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity -> Some "ERR_ROBLIMIT"
+  | Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity
+  | External_out_of_range _ -> Some "ERR_ROBLIMIT"
   | _ -> None

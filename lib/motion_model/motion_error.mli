@@ -11,6 +11,9 @@ type t =
   | Invalid_speed of string  (** a speed or \T that cannot give the move a duration *)
   | Robhold_conflict  (** tool and work object both held, or both not held, by the robot *)
   | Path_level of string  (** StorePath on level 2, RestoPath on level 1 *)
+  | External_out_of_range of string
+      (** "external axis eax_a out of range": a move's or CalcRobT's external axis beyond the
+          range of the robot description (law X-target) *)
 
 val name : t -> string
 (** A one-line message, e.g. ["joint 4 out of range"]. *)

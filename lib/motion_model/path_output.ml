@@ -10,7 +10,11 @@ let end_time p =
 
 let csv ?(step = 0.01) p =
   let b = Buffer.create 4096 in
-  Buffer.add_string b "t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6\n";
+  (* A robot with external axes: a column for each, named as extjoint names it (law X-desc). *)
+  let ext = (Kinematics.robot (Planner.kinematics p)).externals in
+  Buffer.add_string b "t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6";
+  List.iter (fun (a : Ext_axes.axis) -> Buffer.add_string b ("," ^ a.name)) ext;
+  Buffer.add_char b '\n';
   let last = end_time p in
   let row t =
     let q = Planner.pose_at p t in
@@ -19,6 +23,9 @@ let csv ?(step = 0.01) p =
     (match Planner.joints_at p t with
      | Ok j -> Array.iter (fun a -> buf_printf b ",%.4f" a) j
      | Error _ -> Buffer.add_string b ",,,,,,");
+    (match Planner.external_at p t with
+     | Ok e -> List.iter (fun (a : Ext_axes.axis) -> buf_printf b ",%.4f" e.(a.index)) ext
+     | Error _ -> List.iter (fun _ -> Buffer.add_char b ',') ext);
     Buffer.add_char b '\n' in
   let n = int_of_float (Float.floor (last /. step)) in
   for i = 0 to n do row (float_of_int i *. step) done;

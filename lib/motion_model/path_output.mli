@@ -5,11 +5,12 @@
 
 val csv : ?step:float -> Planner.t -> string
 (** One line per [step] seconds (default 0.01) from 0 to the end of the path, and one at the
-    end: [t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6] (s, mm, quaternion, degrees). Axis angles that
-    cannot be computed are left empty. *)
+    end: [t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6] (s, mm, quaternion, degrees), then a column per
+    external axis of the robot, named eax_a … eax_f (mm or degrees; none for a robot without).
+    Axis angles that cannot be computed are left empty. *)
 
 val path_svg : ?title:string -> Planner.t -> string
-(** The TCP path in the base frame, two views. *)
+(** The TCP path in the world frame (the base frame unless a track moves it), two views. *)
 
 (** What the program did, for the timeline: the program pointer waiting (a move, WaitTime, ...),
     traps, signal changes (a mark at [m_from]). *)

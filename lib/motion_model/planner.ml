@@ -5,16 +5,17 @@ type motion =
   | Circular of Frames.robtarget * Frames.robtarget
   | Joint of Frames.robtarget
   | Abs_joint of float array
+  | External_only
 
 type move = {
   motion : motion; timing : Profile.timing; zone : Motion_data.zonedata; z : float option;
   inpos : Motion_data.stoppointdata option; conc : bool; tool : Motion_data.tooldata;
-  wobj : Motion_data.wobjdata; label : string;
+  wobj : Motion_data.wobjdata; label : string; eax : float array;
 }
 
 let move ?v ?t ?z ?inpos ?(conc = false) ?(tool = Motion_data.tool0) ?(wobj = Motion_data.wobj0)
-    ?(label = "") speed zone motion =
-  { motion; timing = { Profile.speed; v; t }; zone; z; inpos; conc; tool; wobj; label }
+    ?(label = "") ?(eax = Array.make 6 Ext_axes.unused) speed zone motion =
+  { motion; timing = { Profile.speed; v; t }; zone; z; inpos; conc; tool; wobj; label; eax }
 
 type settings = {
   mutable velset : Profile.velset; mutable conf_l : bool; mutable conf_j : bool;
@@ -42,7 +43,28 @@ type segment = {
 (* All floats: one flat block, not six boxes (the queue holds one per move). *)
 and figures = {
   length : float; angle : float; duration : float; t_start : float; zone_tcp : float; zone_ori : float;
+  lin_delta : float; rot_delta : float;  (* the largest linear (mm) and rotating (deg) external axis travel *)
+  zone_leax : float; zone_reax : float;
 }
+
+(* The planner's axis vectors are twelve long: the arm's six axes, then extjoint's eax_a … eax_f
+   (9E9 for an axis the robot does not have, constant, so interpolation keeps it exact). *)
+let arm q = Array.sub q 0 6
+(* An unused component stays exactly 9E9 through interpolation's rounding. *)
+let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
+let join q e = Array.append (Array.sub q 0 6) e
+
+(* The flange in the world: the robot's base moves with a track (law X-track). *)
+let world_flange k q =
+  let f = Kinematics.forward k (arm q) in
+  match Ext_axes.base (Kinematics.robot k).externals (ext q) with
+  | None -> f
+  | Some b -> pmult b f
+
+let base_inverse k e flange =
+  match Ext_axes.base (Kinematics.robot k).externals e with
+  | None -> flange
+  | Some b -> pmult (pinv b) flange
 
 let lerp_q a b s = Array.init (Array.length a) (fun i -> a.(i) +. s *. (b.(i) -. a.(i)))
 
@@ -54,17 +76,19 @@ let seg_pos k sg s =
   | Arc a ->
       let th = s *. a.sweep in
       add a.centre (add (scale (a.radius *. cos th) a.e1) (scale (a.radius *. sin th) a.e2))
-  | Joints (q0, q1) -> (tcp_of_flange (Kinematics.forward k (lerp_q q0 q1 s)) sg.tframe).trans
+  | Joints (q0, q1) -> (tcp_of_flange (world_flange k (lerp_q q0 q1 s)) sg.tframe).trans
 
 let seg_pose k sg s =
   match sg.geometry with
-  | Joints (q0, q1) -> tcp_of_flange (Kinematics.forward k (lerp_q q0 q1 s)) sg.tframe
+  | Joints (q0, q1) -> tcp_of_flange (world_flange k (lerp_q q0 q1 s)) sg.tframe
   | _ -> { trans = seg_pos k sg s; rot = slerp sg.rot0 sg.rot1 s }
 
 (* Axis angles on a Cartesian path: the solution nearest the straight joint-space line between
    the segment's ends, which keeps the arm in one configuration along a segment. *)
 let joints_of_tcp k tcp tframe reference =
-  Kinematics.inverse k (pmult tcp (pinv tframe)) (Kinematics.Nearest reference)
+  let e = ext reference in
+  Result.map (fun q -> join q e)
+    (Kinematics.inverse k (base_inverse k e (pmult tcp (pinv tframe))) (Kinematics.Nearest (arm reference)))
 
 let seg_joints k sg s =
   match sg.geometry with
@@ -105,7 +129,7 @@ let piece_pose k pc u =
       let ua = 1. -. b.fa in
       { trans = bezier (seg_pos k b.a ua) b.a.end_tcp (seg_pos k b.b b.fb) u;
         rot = slerp (slerp b.a.rot0 b.a.rot1 ua) (slerp b.b.rot0 b.b.rot1 b.fb) u }
-  | Joint_blend b -> tcp_of_flange (Kinematics.forward k (bezier_q b.j0 b.j1 b.j2 u)) (blend_tframe b.a b.b u)
+  | Joint_blend b -> tcp_of_flange (world_flange k (bezier_q b.j0 b.j1 b.j2 u)) (blend_tframe b.a b.b u)
 
 let piece_joints k pc u =
   match pc.shape with
@@ -159,10 +183,11 @@ type t = {
 
 let new_level kin joints ~from =
   { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
-    end_flange = Kinematics.forward kin joints; end_time = from; open_seg = None; pauses = [];
+    end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = [];
     stopped_at = None }
 
 let create ?(joints = Array.make 6 0.) kin =
+  let joints = join joints (Ext_axes.initial (Kinematics.robot kin).externals) in
   let cur = new_level kin joints ~from:0. in
   { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
                       sing_area_wrist = false; look_ahead = 0.1 };
@@ -218,18 +243,25 @@ let circle s c e =
 
 (* The share of a segment's length a zone of [zr] mm (or [zo] degrees when the TCP does not
    move) may take, at most half the segment (law Z-clip). *)
-let side_fraction ~length ~angle zr zo =
+(* When neither the TCP moves nor its orientation changes (MoveExtJ), the external axes' zones
+   (zone_leax, zone_reax) against their travel (law X-zone). *)
+let side_fraction ?(ext = (0., 0., 0., 0.)) ~length ~angle zr zo =
+  let lin, rot, zl, zx = ext in
   if length > 0. then Float.min 0.5 (zr /. length)
   else if angle > 0. then Float.min 0.5 (zo /. angle)
+  else if lin > 0. || rot > 0. then
+    Float.min 0.5 (Float.min (if lin > 0. then zl /. lin else infinity) (if rot > 0. then zx /. rot else infinity))
   else 0.
+
+let ext_of (g : figures) (z : figures) = (g.lin_delta, g.rot_delta, z.zone_leax, z.zone_reax)
 
 let corner_fractions (a : segment) (b : segment) =
   if a.f.length > 0. && b.f.length > 0. then
     let r = Float.min a.f.zone_tcp (Float.min (a.f.length /. 2.) (b.f.length /. 2.)) in
     (r /. a.f.length, r /. b.f.length)
   else
-    (side_fraction ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
-     side_fraction ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
+    (side_fraction ~ext:(ext_of a.f a.f) ~length:a.f.length ~angle:a.f.angle a.f.zone_tcp a.f.zone_ori,
+     side_fraction ~ext:(ext_of b.f a.f) ~length:b.f.length ~angle:b.f.angle a.f.zone_tcp a.f.zone_ori)
 
 (* A stationary tool: the robot carries the work object along the same flange poses
    (Frames.as_robot_held, R-4.1-o). *)
@@ -242,7 +274,7 @@ let robot_held m =
         | Linear r -> Linear (rt r)
         | Circular (c, r) -> Circular (rt c, rt r)
         | Joint r -> Joint (rt r)
-        | Abs_joint _ as a -> a in
+        | (Abs_joint _ | External_only) as a -> a in
       { m with tool; wobj; motion }
 
 let build t ~now_p m id =
@@ -257,10 +289,13 @@ let build t ~now_p m id =
     let start = tcp_of_flange t.cur.end_flange tframe in
     let w = Frames.object_frame m.wobj in
     let world (rt : Frames.robtarget) = pmult w { rt.pose with rot = normalize rt.pose.rot } in
+    (* Where the external axes end (law X-target): MoveC's CirPoint gives none of its own. *)
+    let* e_end = Ext_axes.resolve robot.externals ~from:(ext q_start) m.eax in
     let goal_joints rt choice =
       let* f = Frames.flange_of_target m.tool m.wobj { rt.Frames.pose with rot = normalize rt.Frames.pose.rot } in
-      let* q = Kinematics.inverse k f choice in
-      Ok (q, f) in
+      let choice = match choice with Kinematics.Nearest r -> Kinematics.Nearest (arm r) | c -> c in
+      let* q = Kinematics.inverse k (base_inverse k e_end f) choice in
+      Ok (join q e_end, f) in
     (* Linear and circular moves: ConfL and SingArea at the programmed point. *)
     let cartesian_end (rt : Frames.robtarget) =
       let* q, f = goal_joints rt (Kinematics.Nearest q_start) in
@@ -293,8 +328,13 @@ let build t ~now_p m id =
             Error (Motion_error.Joint_out_of_range 1)
           else
             let* () = check_range robot q in
-            let f = Kinematics.forward k q in
-            Ok ("MoveAbsJ", Joints (q_start, Array.copy q), (tcp_of_flange f tframe).rot, Array.copy q, f)
+            let q = join q e_end in
+            let f = world_flange k q in
+            Ok ("MoveAbsJ", Joints (q_start, q), (tcp_of_flange f tframe).rot, Array.copy q, f)
+      | External_only ->
+          let q = join q_start e_end in
+          let f = world_flange k q in
+          Ok ("MoveExtJ", Joints (q_start, q), (tcp_of_flange f tframe).rot, Array.copy q, f)
     in
     let end_tcp = (tcp_of_flange f_end tframe).trans in
     let length = match geometry with
@@ -302,18 +342,37 @@ let build t ~now_p m id =
       | Arc a -> a.radius *. a.sweep
       | Joints _ -> distance start.trans end_tcp in
     let angle = deg (angle_between start.rot rot1) in
+    (* MoveExtJ programs no TCP: what the track does to it is not its length (law X-zone). *)
+    let length, angle = if m.motion = External_only then (0., 0.) else (length, angle) in
     let* duration =
       match geometry with
+      | Joints _ when m.motion = External_only ->
+          (* MoveExtJ: the external axes' law alone (below), or \T. *)
+          Profile.joint robot st.velset m.timing ~deltas:(Array.make 6 0.) ~length:0. ~angle:0.
       | Joints (q0, q1) ->
-          Profile.joint robot st.velset m.timing ~deltas:(Array.mapi (fun i a -> a -. q0.(i)) q1) ~length ~angle
+          Profile.joint robot st.velset m.timing ~deltas:(Array.init 6 (fun i -> q1.(i) -. q0.(i))) ~length ~angle
       | _ -> Profile.cartesian robot st.velset m.timing ~length ~angle in
+    (* Law X-time: the external axes move in the same time; \T gives the whole time. *)
+    let* duration =
+      if m.timing.t <> None then Ok duration
+      else
+        let sp = m.timing.speed in
+        let* te = Ext_axes.time robot.externals ~override:st.velset.override ~v_leax:sp.v_leax
+            ~v_reax:sp.v_reax ~from:(ext q_start) e_end in
+        Ok (Float.max duration te) in
     let* () =
       if Float.is_finite duration && Float.is_finite length then Ok ()
       else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in
     let fine = m.zone.finep || m.inpos <> None in
+    let travel kind = List.fold_left (fun acc (x : Ext_axes.axis) ->
+        if x.kind = kind then Float.max acc (Float.abs (e_end.(x.index) -. q_start.(6 + x.index))) else acc)
+        0. robot.externals in
     let f = { length; angle; duration; t_start = now_p;
               zone_tcp = (if fine then 0. else Option.value m.z ~default:m.zone.pzone_tcp);
-              zone_ori = (if fine then 0. else m.zone.zone_ori) } in
+              zone_ori = (if fine then 0. else m.zone.zone_ori);
+              lin_delta = travel Ext_axes.Linear; rot_delta = travel Ext_axes.Rotating;
+              zone_leax = (if fine then 0. else m.zone.zone_leax);
+              zone_reax = (if fine then 0. else m.zone.zone_reax) } in
     Ok ({ id; label = m.label; kind; geometry; rot0 = start.rot; rot1; q_start; q_end; tframe; f; fine;
           end_tcp }, f_end)
 
@@ -377,7 +436,7 @@ let plan t ~now m =
     if m.conc then Float.max now_p motion_from
     else if sg.fine then arrive_ready
     else
-      let fmax = side_fraction ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
+      let fmax = side_fraction ~ext:(ext_of sg.f sg.f) ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
       Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
   in
   t.cur.end_joints <- sg.q_end;
@@ -411,10 +470,10 @@ let find t tp =
 let pose_at t real =
   let tp = path_time t.cur real in
   match find t tp with
-  | -1 -> tcp_of_flange (Kinematics.forward t.kin t.cur.start_joints) Motion_data.tool0.tframe
+  | -1 -> tcp_of_flange (world_flange t.kin t.cur.start_joints) Motion_data.tool0.tframe
   | i -> let pc = Vec.get t.cur.pieces i in piece_pose t.kin pc (param pc tp)
 
-let joints_at t real =
+let axes_at t real =
   let tp = path_time t.cur real in
   match find t tp with
   | -1 -> Ok (Array.copy t.cur.start_joints)
@@ -425,6 +484,25 @@ let joints_at t real =
       match pc.shape with
       | Part sg when u >= 1. -> Ok (Array.copy sg.q_end)
       | _ -> piece_joints t.kin pc u
+
+let joints_at t real = Result.map arm (axes_at t real)
+
+(* The external axes need no inverse kinematics: they follow the path's parameter (law
+   X-interp), also where the arm cannot follow a straight path. *)
+let external_at t real =
+  let tp = path_time t.cur real in
+  match find t tp with
+  | -1 -> Ok (ext t.cur.start_joints)
+  | i ->
+      let pc = Vec.get t.cur.pieces i in
+      let u = param pc tp in
+      Ok (ext (match pc.shape with
+          | Part sg when u >= 1. -> sg.q_end
+          | Part sg -> lerp_q sg.q_start sg.q_end u
+          | Blend b ->
+              let qa = lerp_q b.a.q_start b.a.q_end (1. -. b.fa) and qb = lerp_q b.b.q_start b.b.q_end b.fb in
+              bezier_q qa b.a.q_end qb u
+          | Joint_blend b -> bezier_q b.j0 b.j1 b.j2 u))
 
 let finished_by t = real_time t.cur t.cur.end_time
 
@@ -437,7 +515,7 @@ let start t ~at =
 
 let clear t ~at =
   let tp = path_time t.cur at in
-  let q = match joints_at t at with Ok q -> q | Error _ -> t.cur.end_joints in
+  let q = match axes_at t at with Ok q -> q | Error _ -> t.cur.end_joints in
   let i = find t tp in
   Vec.truncate t.cur.pieces (i + 1);
   if i >= 0 then begin
@@ -446,7 +524,7 @@ let clear t ~at =
   end;
   if tp < t.cur.end_time then begin
     t.cur.end_joints <- q;
-    t.cur.end_flange <- Kinematics.forward t.kin q;
+    t.cur.end_flange <- world_flange t.kin q;
     t.cur.end_time <- tp
   end;
   t.cur.open_seg <- None
@@ -487,7 +565,7 @@ let store_path t ~at =
   | Some _ -> Error (Motion_error.Path_level "StorePath: a path is stored already (path level 2)")
   | None ->
       let l1 = t.cur in
-      let q = match joints_at t at with Ok q -> q | Error _ -> l1.end_joints in
+      let q = match axes_at t at with Ok q -> q | Error _ -> l1.end_joints in
       stop t ~at;
       t.stored <- Some l1;
       t.cur <- new_level t.kin q ~from:at;
@@ -500,7 +578,13 @@ let resto_path t ~at:_ =
 
 let target_joints t id =
   if id < 0 || id >= t.segs.len then invalid_arg "Planner.target_joints: unknown move"
-  else Array.copy (Vec.get t.segs id).q_end
+  else arm (Vec.get t.segs id).q_end
+
+let target_external t id =
+  if id < 0 || id >= t.segs.len then invalid_arg "Planner.target_external: unknown move"
+  else ext (Vec.get t.segs id).q_end
+
+let base t e = Ext_axes.base (Kinematics.robot t.kin).externals e
 
 (* Pieces are in time order and segment ids grow with time: the pieces of a recent move are
    found from the end of the queue. *)

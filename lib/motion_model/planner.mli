@@ -11,6 +11,7 @@ type motion =
   | Circular of Frames.robtarget * Frames.robtarget  (** MoveC CirPoint ToPoint *)
   | Joint of Frames.robtarget  (** MoveJ ToPoint *)
   | Abs_joint of float array  (** MoveAbsJ ToJointPos: axis angles, degrees *)
+  | External_only  (** MoveExtJ: the external axes move, the arm's axes stay (law X-extj) *)
 
 type move = {
   motion : motion;
@@ -22,13 +23,16 @@ type move = {
   tool : Motion_data.tooldata;
   wobj : Motion_data.wobjdata;  (** \WObj, wobj0 when absent *)
   label : string;  (** the target's name, for output *)
+  eax : float array;
+      (** the target's extjoint, eax_a … eax_f (9E9: not used; law X-target); MoveC: ToPoint's *)
 }
 
 val move :
   ?v:float -> ?t:float -> ?z:float -> ?inpos:Motion_data.stoppointdata -> ?conc:bool ->
-  ?tool:Motion_data.tooldata -> ?wobj:Motion_data.wobjdata -> ?label:string ->
+  ?tool:Motion_data.tooldata -> ?wobj:Motion_data.wobjdata -> ?label:string -> ?eax:float array ->
   Motion_data.speeddata -> Motion_data.zonedata -> motion -> move
-(** A move with tool0, wobj0 and no optional argument unless given. *)
+(** A move with tool0, wobj0, no external axis used (all 9E9) and no optional argument unless
+    given. *)
 
 type settings = {
   mutable velset : Profile.velset;  (** VelSet *)
@@ -65,10 +69,19 @@ val ready_time : t -> int -> float
     [plan] did not give. *)
 
 val pose_at : t -> float -> Geom.pose
-(** The TCP pose (base frame, tool of the move under way) at a time. *)
+(** The TCP pose (world frame, tool of the move under way) at a time. *)
 
 val joints_at : t -> float -> (float array, Motion_error.t) result
-(** The axis angles at a time (CJointT); an error where a linear path leaves the workspace. *)
+(** The arm's six axis angles at a time (CJointT); an error where a linear path leaves the
+    workspace. *)
+
+val external_at : t -> float -> (float array, Motion_error.t) result
+(** The six extjoint components at a time (CJointT, CRobT): where the described external axes
+    are, 9E9 for the others. *)
+
+val base : t -> float array -> Geom.pose option
+(** The robot's base in the world at these extjoint components, when a track carries it
+    ({!Ext_axes.base}). *)
 
 val finished_by : t -> float
 (** When the robot will stand still at the end of all it has been given ([infinity] while
@@ -118,7 +131,10 @@ val segments : t -> segment_info list
 (** {1 For the machine's events} *)
 
 val target_joints : t -> int -> float array
-(** The axis angles at the programmed point of the move with this id. *)
+(** The arm's axis angles at the programmed point of the move with this id. *)
+
+val target_external : t -> int -> float array
+(** The extjoint components at the programmed point of the move with this id. *)
 
 val segment_span : t -> int -> (float * float) option
 (** When the move's motion begins (its incoming corner, or its own part) and ends (where its

@@ -3,7 +3,7 @@ type axis = {
   min : float; max : float; speed : float;
 }
 
-type t = { name : string; axes : axis array; max_tcp_speed : float }
+type t = { name : string; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list }
 
 type error = { file : string; line : int; col : int; message : string }
 
@@ -51,6 +51,49 @@ let number line (col, w) what =
   | Some f when Float.is_finite f && w <> "" && (w.[0] = '-' || w.[0] = '+' || w.[0] = '.' || (w.[0] >= '0' && w.[0] <= '9')) -> f
   | _ -> raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what w))
 
+(* external NAME linear|rotating MIN MAX SPEED [track DX DY DZ] (doc/motion.md, law X-desc). *)
+let external_axis ln known rest =
+  let fields = [ "min"; "max"; "speed" ] in
+  match rest with
+  | [] -> raise (Bad (ln, 1, "external: expected NAME linear|rotating MIN MAX SPEED [track DX DY DZ]"))
+  | (nc, n) :: rest ->
+      let index = match Array.to_list Ext_axes.names |> List.mapi (fun i x -> (i, x)) |> List.find_opt (fun (_, x) -> x = n) with
+        | Some (i, _) -> i
+        | None -> raise (Bad (ln, nc, Printf.sprintf "external axis name must be eax_a to eax_f, found %S" n)) in
+      if List.exists (fun (a : Ext_axes.axis) -> a.index = index) known then
+        raise (Bad (ln, nc, Printf.sprintf "external axis %s given twice" n));
+      let kind, rest = match rest with
+        | (_, "linear") :: r -> (Ext_axes.Linear, r)
+        | (_, "rotating") :: r -> (Ext_axes.Rotating, r)
+        | (c, w) :: _ -> raise (Bad (ln, c, Printf.sprintf "%s: expected linear or rotating, found %S" n w))
+        | [] -> raise (Bad (ln, nc, Printf.sprintf "%s: expected linear or rotating" n)) in
+      let nums, track = match rest with
+        | a :: b :: c :: (tc, "track") :: dir -> ([ a; b; c ], Some (tc, dir))
+        | _ -> (rest, None) in
+      if List.length nums <> 3 then
+        raise (Bad (ln, (match List.rev rest with (c, _) :: _ -> c | [] -> nc),
+                    Printf.sprintf "%s: expected 3 numbers (min max speed), found %d" n (List.length nums)));
+      let v = List.map2 (fun f w -> number ln w (Printf.sprintf "%s %s" n f)) fields nums in
+      let min = List.nth v 0 and max = List.nth v 1 and speed = List.nth v 2 in
+      if min >= max then
+        raise (Bad (ln, fst (List.nth nums 0), Printf.sprintf "%s: range min %g is not below max %g" n min max));
+      if speed <= 0. then raise (Bad (ln, fst (List.nth nums 2), Printf.sprintf "%s: speed must be positive" n));
+      let track = match track with
+        | None -> None
+        | Some (tc, _) when kind = Ext_axes.Rotating ->
+            raise (Bad (ln, tc, Printf.sprintf "%s: only a linear axis can be a track" n))
+        | Some (tc, dir) ->
+            if List.length dir <> 3 then
+              raise (Bad (ln, tc, Printf.sprintf "%s: track: expected 3 numbers (a direction DX DY DZ), found %d" n (List.length dir)));
+            let d = List.map (fun w -> number ln w (n ^ " track")) dir in
+            let p = { Geom.x = List.nth d 0; y = List.nth d 1; z = List.nth d 2 } in
+            let l = Geom.norm p in
+            if not (l > 0.) then raise (Bad (ln, tc, Printf.sprintf "%s: track: the direction is zero" n));
+            if List.exists (fun (a : Ext_axes.axis) -> a.track <> None) known then
+              raise (Bad (ln, tc, Printf.sprintf "%s: a second track: the robot stands on one" n));
+            Some (Geom.scale (1. /. l) p) in
+      { Ext_axes.name = n; index; kind; min; max; speed; track }
+
 let structure_problem r =
   let ax i = r.axes.(i - 1) in
   let expect = [| -90.; 0.; -90.; 90.; -90.; 0. |] in
@@ -70,6 +113,7 @@ let structure_error r = Option.map snd (structure_problem r)
 let parse ~file text =
   let name = ref None and tcp = ref None in
   let axes = Array.make 6 None and axis_line = Array.make 6 1 in
+  let externals = ref [] in
   let fail line col message = Error { file; line; col; message } in
   try
     let lines = String.split_on_char '\n' text in
@@ -107,8 +151,9 @@ let parse ~file text =
               raise (Bad (ln, fst (List.nth rest 6), Printf.sprintf "axis %d: speed must be positive" k));
             axes.(k - 1) <- Some ax;
             axis_line.(k - 1) <- ln
+        | (_, "external") :: rest -> externals := !externals @ [ external_axis ln !externals rest ]
         | (c, w) :: _ ->
-            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis or max_tcp_speed)" w)))
+            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)" w)))
       lines;
     let last = List.length lines in
     let missing = ref None in
@@ -118,7 +163,7 @@ let parse ~file text =
     | None, None -> fail last 1 "max_tcp_speed is missing"
     | None, Some max_tcp_speed ->
         let r = { name = Option.value !name ~default:file;
-                  axes = Array.map Option.get axes; max_tcp_speed } in
+                  axes = Array.map Option.get axes; max_tcp_speed; externals = !externals } in
         (match structure_problem r with
          | Some (k, m) -> fail axis_line.(k - 1) 1 m
          | None -> Ok r)

@@ -17,6 +17,7 @@ type t = {
   name : string;
   axes : axis array;  (** six axes, axis 1 first *)
   max_tcp_speed : float;  (** mm/s: vmax's v_tcp and MaxRobSpeed() *)
+  externals : Ext_axes.axis list;  (** external axes, in the order of the description; none by default *)
 }
 
 val irb120 : t

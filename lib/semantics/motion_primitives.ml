@@ -65,7 +65,8 @@ type state = {
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
   mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
-  mutable history : (P.motion * float array) list;  (* forward moves and their start axes, newest first *)
+  mutable history : (P.motion * float array * float array) list;
+      (* forward moves and their start axes (the arm's, the external ones), newest first *)
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
 }
 
@@ -135,6 +136,10 @@ let robtarget_of v =
 
 let joints_of_jointtarget v = nums (V.components v).(0)
 
+(* extjoint: eax_a … eax_f, the robtarget's fourth component and the jointtarget's second. *)
+let eax_of_robtarget v = nums (V.components v).(3)
+let eax_of_jointtarget v = nums (V.components v).(1)
+
 let speed_of v = let c = nums v in { D.v_tcp = c.(0); v_ori = c.(1); v_leax = c.(2); v_reax = c.(3) }
 
 let zone_of v =
@@ -172,8 +177,10 @@ let robtarget_value ?extax (r : MM.Frames.robtarget) =
   V.Record [| pos_value r.pose.trans; orient_value r.pose.rot; conf_value r.conf;
               (match extax with Some e -> V.copy e | None -> no_extax ()) |]
 
-let jointtarget_value q =
-  V.Record [| V.Record (Array.map V.num q); no_extax () |]
+let eax_value e = V.Record (Array.map V.num e)
+
+let jointtarget_value ?ext q =
+  V.Record [| V.Record (Array.map V.num q); (match ext with Some e -> eax_value e | None -> no_extax ()) |]
 
 (* A robtarget changed in its pose only: its confdata and external axes are kept. *)
 let with_pose v (p : G.pose) =
@@ -186,7 +193,8 @@ let with_pose v (p : G.pose) =
    errnum ABB gives CalcJointT for a position outside the robot's reach); bad data raises
    ERR_ARGVALERR. The model's message goes to the event log. *)
 let error_name = function
-  | MM.Motion_error.Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity -> "ERR_ROBLIMIT"
+  | MM.Motion_error.Out_of_reach | Joint_out_of_range _ | Configuration_error | Close_to_singularity
+  | External_out_of_range _ -> "ERR_ROBLIMIT"
   | Circle_uncertain | Invalid_speed _ | Robhold_conflict | Path_level _ -> "ERR_ARGVALERR"
 
 let fail ctx what e =
@@ -271,13 +279,6 @@ let active_tool st = if st.tool == dummy then None else Some st.tool
 
 let max_conc = 5
 
-(* MoveExtJ moves the external axes only; a robot description has none (R-4.1-n). 9E9 is a num,
-   single precision: 8999999488. *)
-let unused_axis = Int32.float_of_bits (Int32.bits_of_float 9e9)
-
-let programs_external_axes jointtarget =
-  Array.exists (fun f -> not (f >= unused_axis)) (nums (V.components jointtarget).(1))
-
 (* Where the arm will stand when it has done all it was given: the point of the last move
    still queued, or where it stands. *)
 let arm_end_joints st now =
@@ -289,6 +290,16 @@ let tool0_value () =
   V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
               V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |]
 
+let current_external_at st now =
+  match P.external_at st.planner now with
+  | Ok e -> e
+  | Error _ -> MM.Ext_axes.initial st.robot.externals
+
+(* The flange of a planned move's point, in the world (law X-track). *)
+let world_flange st id joints =
+  let f = MM.Kinematics.forward st.kin joints in
+  match P.base st.planner (P.target_external st.planner id) with Some b -> G.pmult b f | None -> f
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
@@ -297,26 +308,36 @@ let move ctx st name args =
   match get "Speed", get "Zone", (if ext then Some (tool0_value ()) else get "Tool") with
   | Some speed, Some zone, Some tool -> (
       let start = arm_end_joints st now in
+      let start_ext = match st.last_planned with
+        | Some id when P.segment_span st.planner id <> None -> P.target_external st.planner id
+        | _ -> current_external_at st now in
+      let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
          mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
       let retraced = match st.history with
-        | (forward, from) :: older when st.backward && not ext ->
+        | (forward, from, from_ext) :: older when st.backward && not ext ->
             st.history <- older;
+            back_eax := Some from_ext;
             let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
-            let back () = MM.Frames.calc_rob_t st.kin from (tool_of tool) wobj_d in
+            let back () = MM.Frames.calc_rob_t ?base:(P.base st.planner from_ext) st.kin from (tool_of tool) wobj_d in
             (match forward with
              | P.Linear _ -> Result.to_option (Result.map (fun r -> P.Linear r) (back ()))
              | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
-             | P.Joint _ | P.Abs_joint _ -> Some (P.Abs_joint from))
+             | P.Joint _ | P.Abs_joint _ | P.External_only -> Some (P.Abs_joint from))
         | _ -> None in
       let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
-        | "moveextj" -> Some (P.Abs_joint (arm_end_joints st now))
+        | "moveextj" -> Some P.External_only
         | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
         | "movec" -> (match get "CirPoint", get "ToPoint" with
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
       let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
+      (* The external axes the move goes to (law X-target); a retraced move goes back to
+         where they were at the start of the forward move (R-6.3-m). *)
+      let eax = if retraced <> None then !back_eax
+        else if same name "MoveAbsJ" || ext then Option.map eax_of_jointtarget (get "ToJointPos")
+        else Option.map eax_of_robtarget (get "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
       (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
          the error handler (StorePath ... RestoPath), while its path is there. *)
@@ -344,7 +365,7 @@ let move ctx st name args =
           let wobj = get "WObj" in
           let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ?z:(num ctx args "Z")
               ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc:(present ctx args "Conc")
-              ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label
+              ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label ?eax
               (speed_of speed) (zone_of zone) motion in
           (* What the robot did before this move is observed before it is planned. *)
           if st.tracks <> [] then st.fresh <- List.rev_append (check st ~now) st.fresh;
@@ -360,7 +381,7 @@ let move ctx st name args =
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
               let tframe = match MM.Frames.as_robot_held (tool_of tool) (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
                 | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
-              let target = G.pmult (MM.Kinematics.forward st.kin joints) tframe in
+              let target = G.pmult (world_flange st id joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
               let zone_name = if (zone_of zone).finep then "fine" else label ctx "Zone" in
@@ -385,7 +406,7 @@ let move ctx st name args =
               st.last_planned <- Some id; st.new_move <- Some id;
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
-                st.history <- (motion, start) :: List.filteri (fun i _ -> i < 255) st.history;
+                st.history <- (motion, start, start_ext) :: List.filteri (fun i _ -> i < 255) st.history;
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
@@ -493,7 +514,7 @@ let search ctx st name args =
       let target_label = label ctx "ToPoint" in
       let fine = Option.get (D.find D.zonedata "fine") in
       let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
-          ~label:target_label (speed_of speed) fine (Option.get (path target)) in
+          ~label:target_label ~eax:(eax_of_robtarget target) (speed_of speed) fine (Option.get (path target)) in
       let now = W.now w in
       match P.plan st.planner ~now m with
       | Error e -> fail ctx name e
@@ -504,7 +525,7 @@ let search ctx st name args =
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
           emit st (Segment_planned { time = now; id = move; instruction = name; label = target_label;
-                                     zone = "fine"; target = G.pmult (MM.Kinematics.forward st.kin joints) tool_d.tframe;
+                                     zone = "fine"; target = G.pmult (world_flange st move joints) tool_d.tframe;
                                      joints; ready_time; start_time; end_time });
           st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
           st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
@@ -512,12 +533,12 @@ let search ctx st name args =
           let record () =
             found := true;
             let t = W.now w in
-            (match P.joints_at st.planner t with
-             | Ok joints -> (
-                 match MM.Frames.c_rob_t st.kin ~joints tool_d wobj_d with
-                 | Ok r -> box.(i) <- robtarget_value r
+            (match P.joints_at st.planner t, P.external_at st.planner t with
+             | Ok joints, Ok e -> (
+                 match MM.Frames.c_rob_t ?base:(P.base st.planner e) st.kin ~joints tool_d wobj_d with
+                 | Ok r -> box.(i) <- robtarget_value ~extax:(eax_value e) r
                  | Error _ -> ())
-             | Error _ -> ());
+             | _ -> ());
             if stops then (P.clear st.planner ~at:t; st.dirty <- true;
                            emit st (Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
@@ -567,6 +588,13 @@ let result_pose ctx what = function
 let current_joints ctx st =
   P.joints_at st.planner (W.now ctx.world)
 
+let current_external ctx st = current_external_at st (W.now ctx.world)
+
+(* The base a position function computes with, for programmed extjoint components: 9E9 keeps an
+   axis where it is now (law X-target). *)
+let base_for ctx st eax =
+  Result.map (P.base st.planner) (MM.Ext_axes.resolve st.robot.externals ~from:(current_external ctx st) eax)
+
 let path_command ctx st command f =
   let now = W.now ctx.world in
   match f now with
@@ -582,10 +610,7 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
-  | "moveextj" -> (
-      match get "ToJointPos" with
-      | Some j when programs_external_axes j -> Some Not_modelled
-      | _ -> Some (move ctx st name args))
+  | "moveextj" -> Some (move ctx st name args)
   | "searchl" | "searchj" | "searchc" -> Some (search ctx st name args)
   | "waittime" when present ctx args "InPos" -> (
       match num ctx args "Time" with
@@ -686,7 +711,7 @@ let call_unguarded (ctx : context) st name args =
           Some (Returned (Some (with_pose p r)))
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | "cjointt" -> Some (match current_joints ctx st with
-      | Ok q -> Returned (Some (jointtarget_value q))
+      | Ok q -> Returned (Some (jointtarget_value ~ext:(current_external ctx st) q))
       | Error e -> fail ctx name e)
   | "crobt" | "cpos" -> (
       (* Without \Tool and \WObj: the active ones, those of the last move. *)
@@ -697,19 +722,27 @@ let call_unguarded (ctx : context) st name args =
       Some (match current_joints ctx st with
           | Error e -> fail ctx name e
           | Ok joints ->
-              if lname = "crobt" then result_pose ctx name (Result.map robtarget_value (MM.Frames.c_rob_t st.kin ~joints tool wobj))
-              else result_pose ctx name (Result.map pos_value (MM.Frames.c_pos st.kin ~joints tool wobj))))
+              let e = current_external ctx st in
+              let base = P.base st.planner e in
+              if lname = "crobt" then
+                result_pose ctx name (Result.map (robtarget_value ~extax:(eax_value e)) (MM.Frames.c_rob_t ?base st.kin ~joints tool wobj))
+              else result_pose ctx name (Result.map pos_value (MM.Frames.c_pos ?base st.kin ~joints tool wobj))))
   | "calcrobt" -> (
       match get "Joint_target", get "Tool" with
       | Some j, Some tool ->
-          Some (result_pose ctx name (Result.map robtarget_value
-                                        (MM.Frames.calc_rob_t st.kin (joints_of_jointtarget j) (tool_of tool) (wobj_data (get "WObj")))))
+          (* The robtarget's external axes are the jointtarget's (law X-position). *)
+          let e = eax_of_jointtarget j in
+          Some (result_pose ctx name (Result.bind (base_for ctx st e) (fun base ->
+              Result.map (robtarget_value ~extax:(eax_value e))
+                (MM.Frames.calc_rob_t ?base st.kin (joints_of_jointtarget j) (tool_of tool) (wobj_data (get "WObj"))))))
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | "calcjointt" -> (
       match get "Rob_target", get "Tool" with
       | Some p, Some tool -> (
-          match MM.Frames.calc_joint_t st.kin (robtarget_of p) (tool_of tool) (wobj_data (get "WObj")) with
-          | Ok q -> Some (Returned (Some (jointtarget_value q)))
+          let e = eax_of_robtarget p in
+          match Result.bind (base_for ctx st e) (fun base ->
+              MM.Frames.calc_joint_t ?base st.kin (robtarget_of p) (tool_of tool) (wobj_data (get "WObj"))) with
+          | Ok q -> Some (Returned (Some (jointtarget_value ~ext:e q)))
           | Error e -> (
               match arg ctx args "ErrorNumber", MM.Motion_error.errnum e with
               | Location (box, i, _), Some errname ->

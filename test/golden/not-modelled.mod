@@ -1,9 +1,9 @@
 MODULE not_modelled
-  ! MoveExtJ moves external axes only, which the motion model leaves out (doc/motion.md).
-  CONST jointtarget j1 := [[9E9,9E9,9E9,9E9,9E9,9E9],[90,9E9,9E9,9E9,9E9,9E9]];
+  ! EGMGetId (Externally Guided Motion) is installed, and rapid-sem does not model EGM.
+  VAR egmident egm1;
   PROC main()
     TPWrite "before";
-    MoveExtJ j1, vrot50, fine;
+    EGMGetId egm1;
     TPWrite "after";
   ENDPROC
 ENDMODULE
