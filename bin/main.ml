@@ -148,7 +148,9 @@ let parse_cmd =
   Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict)
 
 let check_cmd =
-  let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
+  let files = Arg.(value & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer (without --task).") in
+  let tasks = Arg.(value & opt_all string [] & info [ "task" ] ~docv:"NAME=FILE[,FILE...]"
+                     ~doc:"A task buffer of its own (ch. 14): its name and its module files. Repeat for several tasks, checked each on its own and then together: a system-global persistent has one type in every task (doc/user-guide.md, \"Several tasks\").") in
   let allow_unknown =
     Arg.(value & flag & info [ "allow-unknown" ]
            ~doc:"Report a name that is neither declared nor installed as a warning, and go on: \
@@ -165,14 +167,28 @@ let check_cmd =
                    both on standard output: every diagnostic with its file, region, class, \
                    sections, message and hint (doc/user-guide.md).")
   in
-  let run files allow_unknown strict format io robot =
+  let run files tasks allow_unknown strict format io robot =
     guard @@ fun () ->
-    match read_io io, Motion_cmd.load_robot robot with
-    | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
-    | Ok io, Ok _ ->
+    (* One buffer, or one per --task (its name and files). *)
+    let buffers =
+      if tasks = [] then Ok [ ("", files) ]
+      else if files <> [] then Error "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."
+      else
+        List.fold_left (fun acc t -> Result.bind acc (fun l ->
+            match String.index_opt t '=' with
+            | Some i when i > 0 && i < String.length t - 1 ->
+                let name = String.sub t 0 i in
+                if List.exists (fun (n, _) -> String.lowercase_ascii n = String.lowercase_ascii name) l then
+                  Error (Printf.sprintf "rapid-sem: --task %s is given twice: task names are unique" name)
+                else Ok (l @ [ (name, String.split_on_char ',' (String.sub t (i + 1) (String.length t - i - 1))) ])
+            | _ -> Error (Printf.sprintf "rapid-sem: --task %s: expected NAME=FILE[,FILE...]" t))) (Ok []) tasks in
+    match buffers, read_io io, Motion_cmd.load_robot robot with
+    | Error m, _, _ | _, Error m, _ | _, _, Error m -> prerr_endline m; exit_static_error
+    | Ok [ (_, []) ], _, _ -> prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; exit_static_error
+    | Ok buffers, Ok io, Ok _ ->
     let options = { Parse.default_options with strict } in
-    let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
-    let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
+    let parsed = List.map (fun (name, files) -> (name, List.map (fun f -> Parse.parse_file ~options f) files)) buffers in
+    let syntax_errors = List.concat_map (fun (_, p) -> List.filter_map (function Error d -> Some d | Ok _ -> None) p) parsed in
     let print = Check_output.print ~version format in
     if syntax_errors <> [] then begin
       print (List.map Check_output.of_diagnostic syntax_errors);
@@ -187,18 +203,31 @@ let check_cmd =
       | Ok installed -> (
           (* The whole static semantics, the initial values known before the run included
              (Session: check, lower, evaluate them). *)
-          let modules = List.filter_map Result.to_option parsed in
-          let result =
-            Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          let reports =
-            if Rapid_typing.Check.errors result <> [] then result.reports
-            else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
-              | Ok _ -> result.reports
-              | Error initial_value_errors -> result.reports @ initial_value_errors in
+          let checked = List.map (fun (name, p) ->
+              let modules = List.filter_map Result.to_option p in
+              let result =
+                Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
+              let reports =
+                if Rapid_typing.Check.errors result <> [] then result.reports
+                else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+                  | Ok _ -> result.reports
+                  | Error initial_value_errors -> result.reports @ initial_value_errors in
+              (name, modules, result, reports)) parsed in
+          let is_error (r : Rapid_typing.Report.t) = r.severity = Error in
+          (* ch. 14: the buffers together, once each is sound on its own. *)
+          let across =
+            if tasks = [] || List.exists (fun (_, _, _, reports) -> List.exists is_error reports) checked then []
+            else Rapid_semantics.Task_check.shared_persistents
+                (List.map (fun (name, modules, (result : Rapid_typing.Check.result), _) ->
+                     { Rapid_semantics.Task_check.name; modules; elaboration = result.elaboration }) checked) in
+          let reports = List.concat_map (fun (_, _, _, reports) -> reports) checked @ across in
           print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
-          if format = Check_output.Text then Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
-          if List.exists (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports then exit_static_error
+          if format = Check_output.Text then
+            List.iter (fun (name, _, result, _) ->
+                Option.iter (fun s -> prerr_endline (if name = "" then s else "task " ^ name ^ ": " ^ s))
+                  (Rapid_typing.Check.unknown_summary result)) checked;
+          if List.exists is_error reports then exit_static_error
           else exit_ok)
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -211,10 +240,14 @@ let check_cmd =
         on an indented next line where one helps; independent errors are all reported in one \
         run. $(b,--format json) and $(b,--format sarif) write them all to standard output \
         instead. A FILE $(b,-) is standard input.";
+    `P "With $(b,--task NAME=FILE,...) (repeated), checks several task buffers instead, as \
+        $(b,rapid-sem run --task) loads them: each on its own, then, when none has an error, \
+        together: a system-global persistent declared with another type than in an earlier \
+        task is an error at the later declaration (chapter 14).";
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format $ io_arg $ Motion_cmd.robot_arg)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ tasks $ allow_unknown $ strict $ format $ io_arg $ Motion_cmd.robot_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 

@@ -201,6 +201,38 @@ let test_worlds () =
   ignore (W.sync_arrive b "Meet");
   Alcotest.(check int) "B has" 1 (W.sync_arrivals a "meet" ~task:"T_B")
 
+(* check --task judges the buffers as run --task loads them: every case of spec/14-tasks that
+   expects a semantic error is refused by check --task, and no other case is (R-14-c). *)
+let test_check_agrees () =
+  let dir = "../spec/14-tasks" in
+  let cases = Sys.readdir dir |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".task")
+              |> List.sort compare in
+  Alcotest.(check bool) "cases found" true (List.length cases > 10);
+  List.iter (fun case ->
+      let folder = Filename.concat dir case in
+      let files = Sys.readdir folder |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".mod")
+                  |> List.sort compare in
+      let directive file key =
+        let ic = open_in_bin (Filename.concat folder file) in
+        let text = really_input_string ic (in_channel_length ic) in
+        close_in ic;
+        let prefix = "! @" ^ key ^ " " in
+        List.find_map (fun l ->
+            let l = String.trim l in
+            if String.length l > String.length prefix && String.sub l 0 (String.length prefix) = prefix then
+              Some (String.sub l (String.length prefix) (String.length l - String.length prefix))
+            else None) (String.split_on_char '\n' text) in
+      let tasks = List.fold_left (fun acc f ->
+          let t = Option.get (directive f "task") in
+          if List.mem_assoc t acc then List.map (fun (n, fs) -> if n = t then (n, fs @ [ f ]) else (n, fs)) acc
+          else acc @ [ (t, [ f ]) ]) [] files in
+      let refused = List.exists (fun f -> match directive f "expect" with
+          | Some e -> String.length e > 14 && String.sub e 0 14 = "semantic-error" | None -> false) files in
+      let args = List.concat_map (fun (n, fs) ->
+          [ "--task"; n ^ "=" ^ String.concat "," (List.map (Filename.concat folder) fs) ]) tasks in
+      let _, status = run ("check" :: args) in
+      Alcotest.(check int) (case ^ ": check --task") (if refused then 2 else 0) status) cases
+
 let suite =
   ( "tasks",
     [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
@@ -209,4 +241,5 @@ let suite =
       Alcotest.test_case "SplitMix64" `Quick test_splitmix;
       Alcotest.test_case "the worlds of two tasks" `Quick test_worlds;
       Alcotest.test_case "trace --task" `Quick test_trace;
-      Alcotest.test_case "refusals and deadlock" `Quick test_refusals ] )
+      Alcotest.test_case "refusals and deadlock" `Quick test_refusals;
+      Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees ] )
