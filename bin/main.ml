@@ -488,7 +488,7 @@ let with_task name = function
 let task_ends ts =
   List.iter (fun (name, cfg) ->
       print_line (Yojson.Safe.to_string
-                    (match outcome_json (M.outcome cfg) (M.steps cfg) with
+                    (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
 

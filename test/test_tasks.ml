@@ -201,6 +201,33 @@ let test_worlds () =
   ignore (W.sync_arrive b "Meet");
   Alcotest.(check int) "B has" 1 (W.sync_arrivals a "meet" ~task:"T_B")
 
+(* The task-end object of each task (doc/trace-format.md): a task the run's deadlock caught says
+   "deadlock" and what it waits for; one cut by the time limit of the run, "exhausted"; one that
+   ended, "ended". *)
+let test_task_ends () =
+  let dir = temp_dir () in
+  let outcome_of out task =
+    List.find_map (fun l ->
+        match Yojson.Safe.from_string l with
+        | `Assoc f when List.assoc_opt "event" f = Some (`String "task-end") && List.assoc_opt "task" f = Some (`String task) ->
+            Some ((match List.assoc_opt "outcome" f with Some (`String o) -> o | _ -> ""),
+                  (match List.assoc_opt "reason" f with Some (`String r) -> r | _ -> ""))
+        | _ -> None) (lines out) in
+  let contains s sub = try ignore (Str.search_forward (Str.regexp_string sub) s 0); true with Not_found -> false in
+  let w = write dir "w.mod" "MODULE mw\n  PERS bool lock := TRUE;\n  PROC main()\n    WaitTestAndSet lock;\n  ENDPROC\nENDMODULE\n" in
+  let e = write dir "e.mod" "MODULE me\n  PROC main()\n  ENDPROC\nENDMODULE\n" in
+  let out, status = run [ "run"; "--json"; "--task"; "A=" ^ w; "--task"; "B=" ^ e ] in
+  Alcotest.(check int) "a deadlock: exit 3" 3 status;
+  (match outcome_of out "A" with
+   | Some ("deadlock", r) -> Alcotest.(check bool) "A says what it waits for" true (contains r "the task waits for a semaphore")
+   | _ -> Alcotest.fail "A's task-end is not a deadlock");
+  Alcotest.(check (option string)) "B ended" (Some "ended") (Option.map fst (outcome_of out "B"));
+  let p = write dir "p.mod" "MODULE mp\n  PERS bool go := FALSE;\n  PROC main()\n    WaitUntil go;\n  ENDPROC\nENDMODULE\n" in
+  let out, status = run [ "run"; "--json"; "--max-time"; "2"; "--task"; "A=" ^ p; "--task"; "B=" ^ e ] in
+  Alcotest.(check int) "the time limit: exit 3" 3 status;
+  Alcotest.(check (option string)) "A cut by the time limit" (Some "exhausted") (Option.map fst (outcome_of out "A"));
+  Alcotest.(check (option string)) "B ended before" (Some "ended") (Option.map fst (outcome_of out "B"))
+
 (* check --task judges the buffers as run --task loads them: every case of spec/14-tasks that
    expects a semantic error is refused by check --task, and no other case is (R-14-c). *)
 let test_check_agrees () =
@@ -242,4 +269,5 @@ let suite =
       Alcotest.test_case "the worlds of two tasks" `Quick test_worlds;
       Alcotest.test_case "trace --task" `Quick test_trace;
       Alcotest.test_case "refusals and deadlock" `Quick test_refusals;
-      Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees ] )
+      Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
+      Alcotest.test_case "task-end outcomes" `Quick test_task_ends ] )
