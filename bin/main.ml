@@ -492,23 +492,32 @@ let task_ends ts =
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
 
-let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
+let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
   start_tasks ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth retry_limit controller robot @@ fun ts names ->
       if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
+      (* --samples: the motion task's robot, as the one clock passes the samples; each
+         tcp-sample names the motion task. *)
+      let robot_task = List.find_opt (fun (_, cfg) -> Rapid_controller.World.motion_task (M.world cfg)) (TS.tasks ts) in
+      let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
+      let print_samples l =
+        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Yojson.Safe.to_string (with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
           | None -> ()
           | Some (name, _, events) ->
               report_stubbed events;
+              Option.iter (fun s -> Option.iter (fun (_, cfg) ->
+                  print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
               List.iter (fun (e : M.event) ->
                   if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
       loop ();
+      Option.iter (fun s -> Option.iter (fun (_, cfg) -> print_samples (Motion_cmd.final_samples s cfg)) robot_task) sampler;
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
@@ -554,8 +563,9 @@ let run_cmd =
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
       else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)
-      else if save <> None || samples <> None then (prerr_endline "rapid-sem: --save and --samples run one task: not with --task"; exit_static_error)
-      else run_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
+      else if save <> None then (prerr_endline "rapid-sem: --save runs one task: not with --task"; exit_static_error)
+      else match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+      run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
     else single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
