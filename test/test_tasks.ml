@@ -228,6 +228,85 @@ let test_task_ends () =
   Alcotest.(check (option string)) "A cut by the time limit" (Some "exhausted") (Option.map fst (outcome_of out "A"));
   Alcotest.(check (option string)) "B ended before" (Some "ended") (Option.map fst (outcome_of out "B"))
 
+(* R-14-n: while a task waits on a socket for a peer on the host, its traps run and the other
+   task goes on, and the virtual clock follows the host's. The client sends after 0.6 s. *)
+let socket_server port = Printf.sprintf {|MODULE sock_a
+  VAR socketdev server;
+  VAR socketdev peer;
+  VAR string text;
+  VAR intnum tick;
+  VAR num ticks := 0;
+  VAR clock c;
+  PROC main()
+    SocketCreate server;
+    SocketBind server, "127.0.0.1", %d;
+    SocketListen server;
+    SocketAccept server, peer \Time := 10;
+    CONNECT tick WITH on_tick;
+    ITimer 0.1, tick;
+    ClkStart c;
+    SocketReceive peer \Str := text \Time := 10;
+    IDelete tick;
+    TPWrite "received " + text;
+    TPWrite "ticks " \Num := ticks;
+    TPWrite "waited " \Num := ClkRead(c);
+    SocketClose peer;
+    SocketClose server;
+  ENDPROC
+  TRAP on_tick
+    ticks := ticks + 1;
+  ENDTRAP
+ENDMODULE
+|} port
+
+let other_task = {|MODULE sock_b
+  PROC main()
+    FOR i FROM 1 TO 3 DO
+      WaitTime 0.1;
+      TPWrite "B tick";
+    ENDFOR
+  ENDPROC
+ENDMODULE
+|}
+
+let test_socket_wait () =
+  let dir = temp_dir () in
+  let s0 = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+  Unix.bind s0 (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
+  let port = match Unix.getsockname s0 with Unix.ADDR_INET (_, p) -> p | _ -> 0 in
+  Unix.close s0;
+  let a = write dir "a.mod" (socket_server port) and b = write dir "b.mod" other_task in
+  let out = Filename.concat dir "out.txt" in
+  let fd = Unix.openfile out [ O_WRONLY; O_CREAT; O_TRUNC ] 0o600 in
+  let devnull = Unix.openfile "/dev/null" [ O_RDWR ] 0 in
+  let pid = Unix.create_process binary [| binary; "run"; "--task"; "T_ROB1=" ^ a; "--task"; "T_B=" ^ b |] devnull fd devnull in
+  Unix.close fd; Unix.close devnull;
+  let deadline = Unix.gettimeofday () +. 10. in
+  let rec connect () =
+    let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+    match Unix.connect s (Unix.ADDR_INET (Unix.inet_addr_loopback, port)) with
+    | () -> s
+    | exception Unix.Unix_error (Unix.ECONNREFUSED, _, _) when Unix.gettimeofday () < deadline ->
+        Unix.close s; Unix.sleepf 0.05; connect () in
+  let s = connect () in
+  Unix.sleepf 0.6;
+  ignore (Unix.write_substring s "hi" 0 2);
+  let _, status = Unix.waitpid [] pid in
+  Unix.close s;
+  Alcotest.(check bool) "exit 0" true (status = Unix.WEXITED 0);
+  let ic = open_in_bin out in
+  let o = lines (really_input_string ic (in_channel_length ic)) in
+  close_in ic;
+  Alcotest.(check (list string)) "B ran while A waited" [ "B tick"; "B tick"; "B tick" ]
+    (List.filteri (fun i _ -> i < 3) o);
+  Alcotest.(check string) "the data" "received hi" (List.nth o 3);
+  let number prefix line =
+    float_of_string (String.sub line (String.length prefix) (String.length line - String.length prefix)) in
+  let ticks = number "ticks " (List.nth o 4) and waited = number "waited " (List.nth o 5) in
+  Alcotest.(check bool) (Printf.sprintf "traps during the wait (%g)" ticks) true (ticks >= 3.);
+  Alcotest.(check bool) (Printf.sprintf "the virtual clock followed the host (%g s)" waited) true
+    (waited >= 0.3 && waited < 5.)
+
 (* check --task judges the buffers as run --task loads them: every case of spec/14-tasks that
    expects a semantic error is refused by check --task, and no other case is (R-14-c). *)
 let test_check_agrees () =
@@ -270,4 +349,5 @@ let suite =
       Alcotest.test_case "trace --task" `Quick test_trace;
       Alcotest.test_case "refusals and deadlock" `Quick test_refusals;
       Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
-      Alcotest.test_case "task-end outcomes" `Quick test_task_ends ] )
+      Alcotest.test_case "task-end outcomes" `Quick test_task_ends;
+      Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait ] )

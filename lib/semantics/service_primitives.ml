@@ -271,7 +271,9 @@ let blocking ctx ~what id ~timeout (call : timeout:float -> outcome) =
   else begin
     let start = W.now w and host_start = Unix.gettimeofday () in
     let deadline = start +. timeout in
-    W.wake_at w (Float.min deadline (start +. socket_slice));
+    (* One Wake at a time: with several tasks the socket is looked at every turn. *)
+    let next_look = ref (Float.min deadline (start +. socket_slice)) in
+    W.wake_at w !next_look;
     Wait { W.what = what; deadline = Some deadline; poll = None;
            satisfied = (fun () ->
                let host () = Unix.gettimeofday () -. host_start in
@@ -281,7 +283,10 @@ let blocking ctx ~what id ~timeout (call : timeout:float -> outcome) =
                  let ahead = Float.min (start +. host ()) deadline in
                  if ahead > now then W.advance_to w ahead
                end
-               else if now < deadline then W.wake_at w (Float.min deadline (now +. socket_slice));
+               else if now < deadline && now >= !next_look then begin
+                 next_look := Float.min deadline (now +. socket_slice);
+                 W.wake_at w !next_look
+               end;
                ready);
            finish = (fun ~timed_out ->
                if timed_out then Some "ERR_SOCK_TIMEOUT"
