@@ -279,6 +279,16 @@ let region_json r =
 (* A virtual time: seconds to the microsecond, written as such (not as the nearest double). *)
 let time_json t = `Intlit (Printf.sprintf "%.6f" t)
 
+(* The number of the error in flight: the one last raised or propagated, which is the one an
+   error handler takes (an error in an UNDO handler stops the task). error-handled says it: the
+   value ERRNO takes (schema rapid-sem/2). *)
+let error_in_flight = ref 0
+
+let note_error (e : M.event) =
+  match e with
+  | Error_raised { number; _ } | Observed (Propagated { number; _ }) -> error_in_flight := number
+  | _ -> ()
+
 let event_json (e : M.event) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
@@ -291,10 +301,12 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
   | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
   | Error_raised { name; number; at } ->
+      error_in_flight := number;
       `Assoc [ ("event", `String "error-raised"); ("name", text name); ("number", `Int number);
                ("at", region_json at) ]
   | Error_handled { name; routine } ->
-      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("routine", text routine) ]
+      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("number", `Int !error_in_flight);
+               ("routine", text routine) ]
   | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", text r) ]
   | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
   | Controller (Signal_changed { time; signal; value }) ->
@@ -313,14 +325,38 @@ let event_json (e : M.event) : Yojson.Safe.t =
   | Stubbed { routine; at } ->
       `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
   | Motion m -> Motion_json.event m
+  | Observed (Propagated { number; _ } as o) -> error_in_flight := number; Observed_json.event ~text o
+  | Observed o -> Observed_json.event ~text o
 
 let schema = Verdict.schema
 
-let outcome_json (o : M.outcome) steps : Yojson.Safe.t =
-  let base kind extra = `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
+(* R-9.1-m: a task buffer without the entry procedure is refused before it runs; under --json
+   the stream says so as for any static error, the same from both engines. It has no place of
+   its own: the first file's beginning, as for a file error. *)
+let refused_entry_json files entry : Yojson.Safe.t =
+  let file = match files with f :: _ -> f | [] -> "" in
+  `Assoc [ ("event", `String "end"); ("outcome", `String "refused"); ("class", `String "semantic-error");
+           ("at", `Assoc [ ("file", text file); ("line", `Int 1); ("col", `Int 1); ("end_line", `Int 1); ("end_col", `Int 1) ]);
+           ("message", text (Printf.sprintf "there is no procedure %s without parameters to run: the task's entry routine (§9.1)" entry)) ]
+
+(* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
+   place both engines know; R-4.12-m); an end no source place explains has [null]. *)
+let entry_region (program : Rapid_semantics.Ir.program) entry =
+  let lower = String.lowercase_ascii entry in
+  Array.fold_left (fun found (r : Rapid_semantics.Ir.routine) ->
+      match found with
+      | Some _ -> found
+      | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
+    None program.routines
+
+let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
+  let nowhere = ("at", `Null) in
+  let base kind extra =
+    let extra = if List.mem_assoc "at" extra then extra else extra @ [ nowhere ] in
+    `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
   match o with
   | Running -> base "running" []
-  | Ended -> base "ended" []
+  | Ended -> base "ended" (match entry_at with Some r -> [ ("at", region_json r) ] | None -> [])
   | Stopped { name; number; at; chain; about } ->
       base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
                         ("chain", `List (List.map text chain)) ]
@@ -386,7 +422,7 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
-let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
@@ -407,14 +443,17 @@ let start_machine ?json ?robot files entry (allow_unknown, stub_unmodelled) max_
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok () ->
       match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
-              loaded.program ~entry with
-      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+              ~observe loaded.program ~entry with
+      | Error m ->
+          if json = Some true then
+            List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
+          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
 let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json print_event =
   match Rapid_semantics.Session.load ~allow_unknown files with
-  | Error f -> report_load_failure f
+  | Error f -> report_load_failure ~json f
   | Ok loaded -> (
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
@@ -423,11 +462,14 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
       let stubbed = ref [] in
       let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
       match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-              ~on_event loaded.program ~entry with
-      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+              ~observe:json ~on_event loaded.program ~entry with
+      | Error m ->
+          if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
+          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok { outcome; fuel_used } ->
           report_stubbed (List.rev !stubbed);
-          if json then print_endline (Yojson.Safe.to_string (outcome_json outcome fuel_used));
+          if json then print_endline (Yojson.Safe.to_string
+                                        (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
           match outcome with
           | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
               (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
@@ -472,7 +514,7 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   | Ok () ->
   let module TS = Rapid_semantics.Task_set in
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
-          ?seed ?motion_task ~world ~motion specs with
+          ~observe:json ?seed ?motion_task ~world ~motion specs with
   | Error (Load (name, f)) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
   | Error (Refused m) -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
   | Ok (ts, warnings) ->
@@ -573,7 +615,7 @@ let run_cmd =
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
     if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ~json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -592,7 +634,8 @@ let run_cmd =
     in
     loop ();
     Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
-    if json then print_line (Yojson.Safe.to_string (outcome_json (M.outcome cfg) (M.steps cfg)));
+    if json then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
+                                                      (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     let saved = match save with
       | None -> Ok []
@@ -664,6 +707,8 @@ let change_text (c : TV.change) =
   | Handled { routine; _ } -> Some ("handled by " ^ routine)
   | Retried | Next_tried -> None  (* the statement says it *)
   | Undo_run r -> Some ("UNDO of " ^ r)
+  | Controller_event (Observed (Propagated { name; number; routine; _ })) ->
+      Some (Printf.sprintf "%s (%d) propagated from %s" name number routine)
   | Controller_event e -> Option.map (fun t -> "~ " ^ t) (controller_text e)
   | Routine_entered _ | Routine_left _ | Task_ended -> None
 
@@ -689,7 +734,7 @@ let trace_cmd =
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     (* One task ([single]), or several (--task): [next] the task about to step (its name with
        several), [do_step] its step. *)
-    let body ~next ~do_step ~outcome ~steps ~single =
+    let body ~next ~do_step ~outcome ~steps ~single ~entry_at =
     let sampler = match samples, single with Some hz, Some _ when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
       let n = String.length p and m = String.length s in
@@ -810,6 +855,8 @@ let trace_cmd =
         let before = TV.before view cfg in
         let (_, events) as answer = do_step () in
         report_stubbed events;
+        (* The error in flight, for error-handled, also from the steps --from and --to leave out. *)
+        List.iter note_error events;
         let st = TV.after view before cfg answer in
         let samples () = match sampler with
           | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
@@ -826,7 +873,7 @@ let trace_cmd =
     flush ();
     Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
     let outcome = outcome () and steps = steps () in
-    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json outcome steps))
+    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") steps;
@@ -842,12 +889,14 @@ let trace_cmd =
         body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
           ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
           ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:None
+          ~entry_at:(fun () -> None)
     end
     else
       single_task files entries schedule motion_task @@ fun entry ->
       start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
       body ~next:(fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None)
         ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg) ~single:(Some cfg)
+        ~entry_at:(fun () -> entry_region (M.program cfg) entry)
   in
   let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
@@ -869,13 +918,18 @@ let spec_cmd =
   let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
   let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
   let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
-  let run dir verbose impl junit report engine =
+  let ignore_kinds = Arg.(value & opt_all string [] & info [ "ignore" ] ~docv:"KIND"
+                            ~doc:"With --impl: leave the events of this kind out of the comparison of the events (repeatable).") in
+  let run dir verbose impl junit report engine ignore_kinds =
     guard @@ fun () ->
     let _, failed = match impl with
       | None -> Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir
       | Some template ->
           ignore (Rapid_oracle.Oracle.self_reference ());
-          Rapid_conformance.Impl_runner.run ~verbose ?junit ?json:report ~template Format.std_formatter dir in
+          (* Run cases compare the events with rapid-sem's own too. *)
+          let reference = Filename.quote Sys.executable_name ^ " run --json {options} {files}" in
+          Rapid_conformance.Impl_runner.run ~verbose ~reference ~ignore:ignore_kinds ?junit ?json:report ~template
+            Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
   let doc = "run the conformance suite" in
@@ -887,7 +941,7 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine)
+  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)

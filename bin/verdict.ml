@@ -4,7 +4,7 @@
 
 open Rapid_syntax
 
-let schema = "rapid-sem/1"
+let schema = "rapid-sem/2"
 
 let start_line : Yojson.Safe.t = `Assoc [ ("event", `String "start"); ("schema", `String schema) ]
 

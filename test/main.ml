@@ -24,4 +24,5 @@ let () =
       Test_debugger.suite;
       Test_engines.suite;
       Test_tasks.suite;
+      Test_observation.suite;
     ]

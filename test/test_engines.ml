@@ -31,6 +31,7 @@ let event_text (e : M.event) =
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
   | Event_log Skip_warning -> "skipwarn"
+  | Observed o -> Rapid_semantics.Observation.to_string o
 
 (* The outcome as the two engines must agree on it. A run cut short by the machine's step limit
    and one cut short by the closure engine's fuel are both "exhausted": what a step and a unit
@@ -58,7 +59,8 @@ let load (case : Rapid_conformance.Spec_case.t) =
   | Error _ -> None
 
 let machine_run ?stub_unmodelled limits program ~entry ~max_steps =
-  match M.start ?stub_unmodelled ~limits program ~entry with
+  (* Observed: the store writes, arguments and returned values of schema rapid-sem/2 too. *)
+  match M.start ?stub_unmodelled ~observe:true ~limits program ~entry with
   | Error m -> Alcotest.failf "machine: %s" m
   | Ok cfg ->
       let events = ref [] in
@@ -68,7 +70,7 @@ let machine_run ?stub_unmodelled limits program ~entry ~max_steps =
       (List.rev !events, M.outcome cfg)
 
 let closure_run ?stub_unmodelled limits program ~entry ~fuel =
-  match C.events ?stub_unmodelled ~limits ~fuel program ~entry with
+  match C.events ?stub_unmodelled ~observe:true ~limits ~fuel program ~entry with
   | Error m -> Alcotest.failf "closure engine: %s" m
   | Ok (events, r) -> (events, r.outcome)
 
@@ -707,9 +709,45 @@ let random_programs () =
     (QCheck.Test.make ~count:150 ~name:"machine = closure on random programs"
        (QCheck.make ~print:(fun s -> s) Gen_programs.gen) agree_on)
 
+(* Schema rapid-sem/2's events, observed, from the fuzzer's generator too: late binding,
+   long jumps, UNDO, RETRY and TRYNEXT, every parameter mode (lib/fuzz/program_gen.ml). *)
+let fuzz_programs_observed () =
+  let rand = Random.State.make [| 20261127 |] in
+  let compared = ref 0 in
+  for i = 1 to 300 do
+    let source = Rapid_fuzz.Program_gen.to_source (Rapid_fuzz.Program_gen.generate rand) in
+    match Parse.parse_string ~name:"generated.mod" source with
+    | Error _ -> ()
+    | Ok m -> (
+        match Rapid_semantics.Session.load_modules [ m ] with
+        | Error _ -> ()
+        | Ok l ->
+            incr compared;
+            let budget = 200_000 and limits = M.default_limits in
+            let m_events, m_outcome = machine_run limits l.program ~entry:"main" ~max_steps:budget in
+            let c_events, c_outcome = closure_run limits l.program ~entry:"main" ~fuel:budget in
+            let cut_short = m_outcome = Running || c_outcome = Running
+                            || (match m_outcome, c_outcome with Resource_exhausted _, _ | _, Resource_exhausted _ -> true | _ -> false) in
+            if cut_short then begin
+              if not (is_prefix m_events c_events || is_prefix c_events m_events) then
+                Alcotest.failf "program %d: %s\n%s" i (Option.value (difference m_events c_events) ~default:"") source
+            end
+            else begin
+              if outcome_text m_outcome <> outcome_text c_outcome then
+                Alcotest.failf "program %d: outcomes: machine %s, closure %s\n%s" i (outcome_text m_outcome)
+                  (outcome_text c_outcome) source;
+              match difference m_events c_events with
+              | None -> ()
+              | Some d -> Alcotest.failf "program %d: %s\n%s" i d source
+            end)
+  done;
+  (* The generator builds checked programs: nearly all of them are compared. *)
+  Alcotest.(check bool) "programs compared" true (!compared >= 290)
+
 let suite =
   ( "engines",
     Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
+    Alcotest.test_case "machine = closure, observed, on 300 fuzz programs" `Quick fuzz_programs_observed ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
     :: Alcotest.test_case "the controller's routines end a closure run cleanly (exit 4)" `Quick controller_left
     :: Alcotest.test_case "the memory budget: the same bytes, the same call" `Quick memory_budget

@@ -88,7 +88,23 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
           if problems = [] then Ok () else Error (String.concat "; " problems)
       | None, _ -> Error "the case has no expectation")
 
-let run_case ?(timeout = 60.) ~template (case : Spec_case.t) =
+(* With a reference (rapid-sem's own run --json), a run case passes only when the events agree
+   too: the first divergence is named by its index, as rapid-sem oracle names it. *)
+let same_events ?ignore ?timeout ~reference (case : Spec_case.t) (actual : Stream.t) =
+  match Rapid_oracle.Implementation.run ?timeout ~template:(command ~template:reference case) [] with
+  | exception (Unix.Unix_error (e, _, _)) -> Error ("rapid-sem could not be run: " ^ Unix.error_message e)
+  | r -> (
+      match Stream.parse r.stdout with
+      | Error m -> Error ("rapid-sem's own events: " ^ m)
+      | Ok expected -> (
+          match Rapid_oracle.Oracle.compare_streams ?ignore ~expected ~actual () with
+          | Agree _ -> Ok ()
+          | Broken m -> Error m
+          | Diverge d ->
+              let show = function Some e -> Stream.to_string e | None -> "(no more events)" in
+              Error (Printf.sprintf "event %d: expected %s, got %s" d.index (show d.expected) (show d.actual))))
+
+let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; passed = false; skipped = true; detail = "format " ^ case.format }
   else if (match case.run with Some { tasks = _ :: _; _ } -> true | _ -> false) then
@@ -109,7 +125,13 @@ let run_case ?(timeout = 60.) ~template (case : Spec_case.t) =
             | Error m -> { case; passed = false; skipped = false; detail = "not an event stream: " ^ m }
             | Ok s -> (
                 match judge case s.events with
-                | Ok () -> { case; passed = true; skipped = false; detail = "" }
+                | Ok () -> (
+                    match reference, case.run with
+                    | Some reference, Some _ -> (
+                        match same_events ?ignore ~timeout ~reference case s with
+                        | Ok () -> { case; passed = true; skipped = false; detail = "" }
+                        | Error m -> { case; passed = false; skipped = false; detail = m })
+                    | _ -> { case; passed = true; skipped = false; detail = "" })
                 | Error m -> { case; passed = false; skipped = false; detail = m })))
 
 let xml_escape s =
@@ -164,10 +186,10 @@ let json_report results : Yojson.Safe.t =
                   ("verdict", `String (if r.passed then "passed" else if r.skipped then "skipped" else "failed"));
                   ("detail", `String r.detail) ]) results)) ]
 
-let run ?(verbose = false) ?timeout ?junit ?json ~template out dir =
+let run ?(verbose = false) ?timeout ?reference ?ignore ?junit ?json ~template out dir =
   let paths, errors = Spec_runner.collect dir in
   List.iter (fun (path, m) -> Format.fprintf out "ERROR %s: %s@." path m) errors;
-  let results = List.map (fun p -> run_case ?timeout ~template (Spec_case.read p)) paths in
+  let results = List.map (fun p -> run_case ?timeout ?reference ?ignore ~template (Spec_case.read p)) paths in
   List.iter (fun r ->
       if verbose || not r.passed then
         Format.fprintf out "%s %s%s@." (if r.passed then "PASS" else if r.skipped then "SKIP" else "FAIL")

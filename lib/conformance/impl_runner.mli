@@ -16,11 +16,16 @@ val command : template:string -> Spec_case.t -> string
     [--allow-unknown], [--io FILE], [--entry NAME], [--retry-limit N], [--statement-time S],
     [--max-time S], [--stub-unmodelled]). *)
 
-val run_case : ?timeout:float -> template:string -> Spec_case.t -> result
+val run_case :
+  ?timeout:float -> ?reference:string -> ?ignore:string list -> template:string -> Spec_case.t -> result
+(** [reference] (a template as [template], for rapid-sem's own [run --json]): a run case passes
+    only when the implementation's events also agree with rapid-sem's, compared as
+    [rapid-sem oracle] compares them ([ignore]: the kinds left out); the detail of a failure names
+    the first divergence's index. *)
 
 val run :
-  ?verbose:bool -> ?timeout:float -> ?junit:string -> ?json:string -> template:string ->
-  Format.formatter -> string -> int * int
+  ?verbose:bool -> ?timeout:float -> ?reference:string -> ?ignore:string list -> ?junit:string ->
+  ?json:string -> template:string -> Format.formatter -> string -> int * int
 (** Every case below the folder: failures printed, a summary per section, [N passed, N failed];
     [junit] and [json] name files to write the results to (JUnit XML, which CI systems read, and
     JSON). Returns (passed, failed). *)

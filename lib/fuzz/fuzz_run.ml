@@ -45,6 +45,7 @@ let event_text (e : M.event) =
   | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
   | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (place at)
   | Motion m -> Rapid_semantics.Motion_primitives.event_to_string m
+  | Observed o -> Rapid_semantics.Observation.to_string o
 
 let outcome_text (o : M.outcome) =
   match o with

@@ -17,3 +17,6 @@ val kind : event -> string
 
 val to_string : event -> string
 (** One line of JSON, fields in a stable order (sorted by name, recursively). *)
+
+val canonical : event -> event
+(** Fields sorted by name, recursively: how [parse] gives each event. *)

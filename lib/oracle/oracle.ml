@@ -50,21 +50,29 @@ let run_stream who ?timeout ~template files =
   | exception (Unix.Unix_error (e, _, _)) -> Error (Printf.sprintf "%s could not be run: %s" who (Unix.error_message e))
   | exception (Sys_error m) -> Error (Printf.sprintf "%s could not be run: %s" who m)
 
+let compare_streams ?ignore ~(expected : Event_stream.t) ~(actual : Event_stream.t) () =
+  (* An implementation of schema rapid-sem/1 is compared on what /1 says (Schema_compat); one
+     of /2 on everything. *)
+  let v1 = actual.schema = Some "rapid-sem/1" && expected.schema = Some Schema_compat.current in
+  if actual.schema <> expected.schema && not v1 then
+    Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s"
+              (Option.value actual.schema ~default:"(none)")
+              (String.concat " or " Schema_compat.accepted))
+  else
+    let expected_events, actual_events =
+      if v1 then (Schema_compat.to_v1 expected.events, Schema_compat.v1_actual actual.events)
+      else (expected.events, actual.events) in
+    match Event_diff.compare ?ignore ~expected:expected_events ~actual:actual_events () with
+    | None -> Agree (List.length expected_events)
+    | Some d -> Diverge d
+
 let check ?ignore ?timeout ~reference ~impl program =
   match run_stream "rapid-sem" ?timeout ~template:reference program.files with
   | Error m -> Broken m
   | Ok expected -> (
       match run_stream "the implementation" ?timeout ~template:impl program.files with
       | Error m -> Broken m
-      | Ok actual ->
-          if actual.schema <> expected.schema then
-            Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s"
-                      (Option.value actual.schema ~default:"(none)")
-                      (Option.value expected.schema ~default:"(none)"))
-          else
-            match Event_diff.compare ?ignore ~expected:expected.events ~actual:actual.events () with
-            | None -> Agree (List.length expected.events)
-            | Some d -> Diverge d)
+      | Ok actual -> compare_streams ?ignore ~expected ~actual ())
 
 let verdict_report program = function
   | Agree n -> Printf.sprintf "%s: agree (%d events)\n" program.name n

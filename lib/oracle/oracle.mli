@@ -19,6 +19,12 @@ val check :
 (** [reference] and [impl] are command templates ({!Implementation.command_line}); the
     reference is rapid-sem's own [run --json]. *)
 
+val compare_streams :
+  ?ignore:string list -> expected:Event_stream.t -> actual:Event_stream.t -> unit -> verdict
+(** rapid-sem's stream against an implementation's: of the same schema, compared whole; an
+    implementation of [rapid-sem/1] against rapid-sem's [rapid-sem/2] on what /1 says
+    ({!Schema_compat}); another schema is [Broken]. *)
+
 val verdict_report : program -> verdict -> string
 
 val self_reference : unit -> string

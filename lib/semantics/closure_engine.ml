@@ -75,6 +75,7 @@ type state = {
   limits : M.limits;
   emit : M.event -> unit;
   all_events : bool;                  (* false: only output, erase and log are wanted *)
+  observe : bool;                     (* schema rapid-sem/2: stores, arguments, returned values *)
   mutable fuel : int;
   fuel_limit : int;
   mutable depth : int;
@@ -186,6 +187,21 @@ let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 (* ------------------------------------------------------------------ slots and places *)
 
 let is_alias (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
+
+(* Schema rapid-sem/2 (Observation): the texts are built only when the run observes them. The
+   roots are given as the machine gives its own, so that Observation.find names a place alike. *)
+let observe_store st (a : act) (box, i) =
+  let r = a.routine in
+  let local k =
+    if k < Array.length r.parameters && is_alias r.parameters.(k) then
+      ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
+       (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
+    else (a.store, k) in
+  let globals = st.globals in
+  let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
+                global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
+  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
+                                value = Observation.value box.(i) }))
 
 (* How a local slot is reached, known when the routine is compiled. *)
 type slot_access = Own | Alias | Optional_own | Optional_alias
@@ -572,7 +588,14 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           pending := !pending + bytes;
           values.(i) <- v
         done;
-        primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
+        if st.observe then begin
+          (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+          let before = Observation.references values in
+          let outcome = Primitive.call st.prim_ctx name values in
+          List.iter (observe_store st a) (Observation.changed before);
+          primitive_outcome st caller a ~at ~call_at callee name outcome
+        end
+        else primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
   | None ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in
@@ -620,7 +643,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : ro
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
-  | Stop_requested -> raise (Halt M.Ended)
+  | Stop_requested -> if st.all_events then st.emit M.Task_ended; raise (Halt M.Ended)
   | Not_modelled when String.length name = 11 && String.lowercase_ascii name = "raisetouser" ->
       (* RaiseToUser (§7.3) is the machine's, with the user level. *)
       leave_to_machine ~at:call_at callee.name callee.name
@@ -737,13 +760,25 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   st.memory <- st.memory + c.memory;
   st.depth <- c.level + 1;
   if st.all_events then st.emit (M.Routine_entered r.name);
+  if st.observe && Array.length r.parameters > 0 then
+    st.emit (M.Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
+        (List.mapi (fun i (p : parameter) ->
+             if p.p_optional && i < Array.length c.ext.present && not c.ext.present.(i) then None
+             else if p.p_switch then Some (p.p_name, None)
+             else Some (p.p_name, Some (Observation.value
+                                          (if is_alias p then c.ext.boxes.(i).(c.ext.idx.(i)) else c.store.(i)))))
+           (Array.to_list r.parameters)) }));
   match if has_init then code.c_init at c; code.c_body c with
   | true ->
       pop st c;
       if st.all_events then st.emit (M.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
       if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
-  | false -> pop st c; if st.all_events then st.emit (M.Routine_left r.name); c.result
+  | false ->
+      pop st c;
+      if st.observe && is_function then
+        st.emit (M.Observed (Returned { routine = r.name; value = Observation.value c.result }));
+      if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
@@ -775,7 +810,12 @@ and leave_with_error st code (c : act) e =
   in
   match search c.parent with
   | Some j -> raise (Long_jump (j, e))
-  | None -> emit_raised st e; raise (Raised e)
+  | None ->
+      (* Schema rapid-sem/2: raised again at the call point, said as a propagation (§7.1). *)
+      if st.all_events then
+        st.emit (M.Observed (Propagated { name = e.name; number = e.number; routine = c.routine.name;
+                                          caller = c.parent.routine.name }));
+      raise (Raised e)
 
 (* §7.2: an error recovery point, ERROR (n, ...), names the error or LONG_JMP_ALL_ERR. *)
 and recovers st (a : act) number =
@@ -824,8 +864,8 @@ and guarded st handler (core : act -> bool) : act -> bool =
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
     and handle e =
       match run_handler st handler a e with
-      | `Retry -> attempt true
-      | `Trynext -> true
+      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); attempt true
+      | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); true
       | `Return -> false
     in
     attempt false
@@ -852,6 +892,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       (* Rules assign, assign-target, store: the target is located before the value. *)
       let value = expr st r ~at e in
       match place with
+      | _ when st.observe ->
+          let l = locate st r ~at place in
+          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v; observe_store st a (box, i); true
       | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a); true
       | _ ->
@@ -909,7 +952,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              fail st ~at "ERR_ALRDYCNT"
          | _ -> ());
         (match Rapid_controller.World.connect st.world ~trap with
-         | Ok n -> box.(i) <- V.num (float_of_int n)
+         | Ok n -> box.(i) <- V.num (float_of_int n); if st.observe then observe_store st a (box, i)
          | Error name -> fail st ~at name);
         true
   | If (c, t, e) | Elseif (c, t, e) ->
@@ -950,6 +993,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
           a.store.(variable) <- V.Num !v;
+          if st.observe then observe_store st a (a.store, variable);
           (match body a with
            | true -> ()
            | false -> continue := false; goes_on := false
@@ -1023,18 +1067,21 @@ let compile_routine st k =
           fun at (a : act) ->
             charge_active st a bytes ("the routine data of " ^ r.name) at;
             a.store.(slot) <- V.default_of shape
-      | Init_expr e -> let f = expr st r ~at:e.at e in fun _ a -> a.store.(slot) <- V.copy (f a)) r.local_inits in
+      | Init_expr e ->
+          let f = expr st r ~at:e.at e in
+          fun _ a -> a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
   let c_init = match inits with
     | [] -> fun _ _ -> ()
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
 
-let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ~all_events ~emit
+let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false) ~all_events ~emit
     (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
+    observe = observe && all_events;
     fuel; fuel_limit = fuel; depth = 0; native = 0;
     native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
@@ -1065,11 +1112,11 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 
-let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?(on_event = ignore) (program : program) ~entry =
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event program ~entry
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) (program : program) ~entry =
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event (program : program) ~entry =
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
@@ -1082,7 +1129,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
                                      reason = "the user level of NOSTEPIN modules (§7.3) " ^ machine_only_reason };
            fuel_used = 0 }
   | Some (_, k) ->
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ~all_events ~emit:on_event program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -1115,6 +1162,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
           st.native <- code.c_nest;
           st.depth <- 1;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
+          if all_events then on_event (M.Routine_entered r.name);
           match code.c_init r.at a; code.c_body a with
           | _ ->
               if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
@@ -1136,8 +1184,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ~on_event (program : pr
       in
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
-let events ?limits ?fuel ?stub_unmodelled ?all_events program ~entry =
+let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ?stub_unmodelled ?all_events ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~on_event:(fun e -> acc := e :: !acc) program ~entry with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

@@ -27,13 +27,15 @@ type result = {
 }
 
 val run :
-  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool ->
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
   ?on_event:(Machine.event -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
     [Erase] and [Log] (what [rapid-sem run] without [--json] shows), which spares building the
-    others. [Error] when there is no procedure
+    others. [~observe] (default false, with [all_events]): also the store writes, the arguments
+    of calls and the values functions return, as [Machine.start ~observe] (schema rapid-sem/2;
+    their texts are built only then). [Error] when there is no procedure
     [entry] without parameters (nothing runs).
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
@@ -49,6 +51,7 @@ val machine_only : Machine.outcome -> bool
     with a reason that ends "runs on the machine only: use --engine machine". *)
 
 val events :
-  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> Ir.program -> entry:string ->
+  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
+  Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)

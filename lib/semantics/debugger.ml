@@ -77,6 +77,8 @@ let show_events s events =
       | Error_raised { name; number; at } ->
           s.out (Printf.sprintf "error> %s (%d) at %s" name number (Source.to_string at))
       | Error_handled { name; routine } -> s.out (Printf.sprintf "error> %s handled by %s" name routine)
+      | Observed (Propagated { name; number; routine; caller }) ->
+          s.out (Printf.sprintf "error> %s (%d) propagated from %s to %s" name number routine caller)
       | Trap_entered { trap; number; _ } -> s.out (Printf.sprintf "trap> %s (interrupt %d)" trap number)
       | _ -> ()) events
 

@@ -34,6 +34,7 @@ type event =
   | Trap_left of { trap : string; time : float }
   | Stubbed of { routine : string; at : Source.region }
   | Motion of Motion_primitives.event
+  | Observed of Observation.t
 
 type outcome =
   | Running
@@ -186,10 +187,26 @@ type config = {
      tasks (the scheduler moves the clock) instead of moving the clock itself. *)
   cooperative : bool;
   mutable wake : float option;          (* the time the last wait-yield gave, if any *)
+  observe : bool;                       (* the run observes store writes, arguments, values (schema rapid-sem/2) *)
+  mutable entered : bool;               (* the entry routine's routine-entered has been said *)
+  mutable propagated : bool;            (* the error in focus arrives by propagation (§7.1) *)
 }
 
 let fresh_loc v = { box = [| v |]; idx = 0 }
 let get l = Array.unsafe_get l.box l.idx
+
+(* Schema rapid-sem/2: a store write as RAPID names it, in the current routine; built only when
+   the run observes (doc/observable.md). The roots are given as the closure engine gives its own,
+   so that Observation.find names a place alike. *)
+let observed_store cfg (l : loc) v =
+  if not cfg.observe then []
+  else
+    let slots = cfg.act.slots and globals = cfg.globals in
+    let roots = { Observation.n_locals = Array.length slots; local = (fun i -> (slots.(i).box, slots.(i).idx));
+                  n_globals = Array.length globals; global_box = (fun g -> globals.(g).box);
+                  global_idx = (fun g -> globals.(g).idx) } in
+    [ Observed (Stored { place = Observation.place_of cfg.program cfg.act.routine (l.box, l.idx) roots;
+                         value = Observation.value v }) ]
 let set l v = Array.unsafe_set l.box l.idx (V.copy v)
 
 (* The answer of [static_loc] for a place it cannot locate, compared by identity: an option would
@@ -299,7 +316,7 @@ let rec release cfg (act : activation) =
       up inner
 
 let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(cooperative = false)
-    (program : Ir.program) ~entry =
+    ?(observe = false) (program : Ir.program) ~entry =
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
   let program = Motion_primitives.robot_data motion program in
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
@@ -372,6 +389,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
           count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
           stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = []; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
+          observe; entered = false; propagated = false;
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -413,7 +431,15 @@ let enter_routine cfg (cs : call_state) =
     cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
     cfg.mark <- [];
     cfg.focus <- F_next;
-    ("call-enter", [ Routine_entered r.name ])
+    ("call-enter", Routine_entered r.name
+                   :: (if cfg.observe && Array.length r.parameters > 0 then
+                         [ Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
+                             (List.mapi (fun i (p : Ir.parameter) ->
+                                  if i < Array.length cs.args_present && not cs.args_present.(i) then None
+                                  else if p.p_switch then Some (p.p_name, None)
+                                  else Some (p.p_name, Some (Observation.value (get slots.(i)))))
+                                (Array.to_list r.parameters)) }) ]
+                       else []))
   end
 
 let return_from cfg value =
@@ -436,7 +462,11 @@ let return_from cfg value =
        | Function, Some v -> cfg.focus <- F_value v
        | _ -> cfg.focus <- F_next);
       ((match act.routine.kind with Function -> "return-function" | _ -> "return-procedure"),
-       [ Routine_left act.routine.name ])
+       (match value with
+        | Some v when cfg.observe && act.routine.kind = Function ->
+            [ Observed (Returned { routine = act.routine.name; value = Observation.value v }) ]
+        | _ -> [])
+       @ [ Routine_left act.routine.name ])
 
 (* The binding an alias argument has: a parameter passes on its own binding (§5.2). *)
 let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
@@ -509,6 +539,7 @@ let call_primitive cfg (cs : call_state) name =
   let ctx = { (primitive_context cfg events) with
               parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
   let ctx = { ctx with argument_label = argument_label cfg cs } in
+  let before = if cfg.observe then Observation.references cs.primitive_args else [] in
   let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner cfg.motion) in
   let result = match Task_primitives.call ~standstill ctx name cs.primitive_args with
     | Some r -> r
@@ -519,6 +550,9 @@ let call_primitive cfg (cs : call_state) name =
     | None -> match Service_primitives.call ctx name cs.primitive_args with
       | Some r -> r
       | None -> Primitive.call ctx name cs.primitive_args in
+  (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+  List.iter (fun (box, idx) ->
+      events := List.rev_append (observed_store cfg { box; idx } box.(idx)) !events) (Observation.changed before);
   (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
   (match Motion_primitives.take_new_move cfg.motion with
    | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
@@ -553,7 +587,7 @@ let call_primitive cfg (cs : call_state) name =
       cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
       ("async-error-at-move", List.rev !events)
   | Primitive.Failed name -> raise_ cfg name; ("call-primitive-error", List.rev !events)
-  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events)
+  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events @ [ Task_ended ])
   | Primitive.Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
@@ -986,7 +1020,7 @@ and exec_statement cfg (s : Ir.stmt) =
                  act.retried <- Some st;
                  cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_stmt st
              | _ -> cfg.focus <- F_done (Stuck "RETRY without a statement to retry"));
-            ("retry", [])
+            ("retry", [ Observed (Retried cfg.act.routine.name) ])
           end
       | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
   | Trynext -> (
@@ -1003,7 +1037,7 @@ and exec_statement cfg (s : Ir.stmt) =
           (match statement_point point with
            | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
-          ("trynext", [])
+          ("trynext", [ Observed (Tried_next cfg.act.routine.name) ])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
   | Connect (p, trap) -> mark_here (); push cfg (K_connect_target (trap, p)); cfg.focus <- F_place p; ("connect", [])
   | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
@@ -1058,14 +1092,18 @@ let leave_abandoned cfg after rule rule_entry =
         | other -> other in
       (match after with
        | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
-       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }
+       | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }; cfg.propagated <- true
        | Go_on_long_jump (e, target) ->
            if cfg.act == target then cfg.focus <- F_raise { e with searched = true }
            else cfg.focus <- F_abandon after
        | Go_on_in_handler (s, target) ->
            if cfg.act == target then cfg.focus <- F_stmt s else cfg.focus <- F_abandon after);
       (rule, Routine_left act.routine.name
-             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else []))
+             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else [])
+             @ (match after with
+                 | Go_on_propagate e -> [ Observed (Propagated { name = e.name; number = e.number;
+                                                                 routine = act.routine.name; caller = caller.routine.name }) ]
+                 | _ -> []))
 
 (* A statement has completed: the frame on top continues. *)
 let next_frame cfg =
@@ -1081,7 +1119,7 @@ let next_frame cfg =
       let v = match get slot, step with
         | V.Num cur, V.Num d -> V.num (cur +. d) | other, _ -> other in
       set slot v;
-      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", []))
+      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", observed_store cfg slot v))
       else (cfg.stack <- rest; ("for-done", []))
   | K_routine_end :: _ -> (
       match cfg.act.routine.kind with
@@ -1265,7 +1303,8 @@ let start_loop cfg (f : Ir.for_loop) from t step rest =
   set cfg.act.slots.(f.variable) from;
   cfg.focus <- F_next;
   if for_in_range from t step then begin
-    cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest; ("for-enter", [])
+    cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest;
+    ("for-enter", observed_store cfg cfg.act.slots.(f.variable) from)
   end
   else (cfg.stack <- rest; ("for-empty", []))
 
@@ -1282,7 +1321,7 @@ let value_step cfg v =
           | Some (DO | DI), V.Num f when f <> 0. && f <> 1. -> raise_ cfg "ERR_ARGVALERR"; ("store-signal", [])
           | Some _, V.Num f -> W.write cfg.world id f; cfg.focus <- F_next; ("store-signal", [])
           | _ -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", []))
-      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", []))
+      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", observed_store cfg l v))
   | K_poll ws :: K_wait _ :: rest -> (
       match bool_of v with
       | Some true ->
@@ -1434,7 +1473,7 @@ let loc_step cfg l =
           raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
       | _ -> (
           match W.connect cfg.world ~trap with
-          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", [])
+          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", observed_store cfg l (get l))
           | Error name -> raise_ cfg name; ("connect-inomax", [])))
   | K_read_signal :: rest -> (
       cfg.stack <- rest;
@@ -1576,8 +1615,12 @@ let step_unguarded cfg =
   | F_place p -> place_step cfg p
   | F_loc l -> loc_step cfg l
   | F_raise e ->
+      (* §7.1: an error raised again at the call point after propagation was said by the
+         propagation (schema rapid-sem/2: one error-raised, then error-propagated per level). *)
+      let again = cfg.propagated in
+      cfg.propagated <- false;
       let rule, events = raise_step cfg e in
-      (rule, Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
+      (rule, if again then events else Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
   | F_search (e, c) -> search_step cfg e c
   | F_abandon after -> abandon_step cfg after
   | F_done _ -> ("done", [])
@@ -1685,11 +1728,14 @@ let () = settle_ref := settle
    is a bug of rapid-sem, reported as a stuck configuration. *)
 let step cfg =
   cfg.count <- cfg.count + 1;
+  (* The entry routine is entered with the first step (schema rapid-sem/2). *)
+  let entry = if cfg.entered then [] else (cfg.entered <- true; [ Routine_entered cfg.act.routine.name ]) in
   let rule, events =
     try let r = step_unguarded cfg in settle cfg; r with
     | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
     | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
   in
+  let events = match entry with [] -> events | _ -> entry @ events in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
      while the clock moved on, at the start of the step, or as settling entered a statement. *)
   let events = match W.drain cfg.world with

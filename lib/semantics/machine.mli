@@ -43,6 +43,9 @@ type event =
           at its first call *)
   | Motion of Motion_primitives.event
       (** a move planned, begun, ended; a path command (doc/motion.md, doc/trace-format.md) *)
+  | Observed of Observation.t
+      (** what schema rapid-sem/2 adds (doc/observable.md): errors propagated, RETRY, TRYNEXT,
+          and with [~observe] store writes, arguments and returned values *)
 
 (** How a run ends (doc/semantics.md). *)
 type outcome =
@@ -74,7 +77,7 @@ val default_limits : limits
 
 val start :
   ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> ?motion:Motion_primitives.state ->
-  ?cooperative:bool -> Ir.program -> entry:string -> (config, string) result
+  ?cooperative:bool -> ?observe:bool -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure.
     [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
@@ -82,7 +85,10 @@ val start :
     [Unsupported].
     [~cooperative] (default false): the task is one of several on one clock (ch. 14); a waiting
     instruction with nothing to do now steps by "wait-yield" ({!wake_time}) and leaves moving the
-    clock to the scheduler ({!Task_set}). *)
+    clock to the scheduler ({!Task_set}).
+    [~observe] (default false): the steps also say the store writes, the
+    arguments of calls and the values functions return ({!Observation.t}: texts built only then,
+    schema rapid-sem/2). *)
 
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while

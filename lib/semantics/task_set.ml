@@ -135,7 +135,7 @@ let parse_all files =
   | [] -> Ok (List.filter_map Result.to_option parsed)
   | errors -> Error (Session.Front_end errors)
 
-let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?io ?seed ?motion_task ~world
+let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe = false) ?io ?seed ?motion_task ~world
     ~motion (specs : spec list) =
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
@@ -163,7 +163,7 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?io ?seed 
             let w = if first then (W.name_task world ~name:s.name ~motion:is_motion; world)
               else W.add_task world ~name:s.name ~motion:is_motion in
             let motion = if is_motion then motion else Motion_primitives.create () in
-            match M.start ?limits ~world:w ~stub_unmodelled ~motion ~cooperative:true l.program ~entry:s.entry with
+            match M.start ?limits ~world:w ~stub_unmodelled ~motion ~cooperative:true ~observe l.program ~entry:s.entry with
             | Error m -> Error (Refused (Printf.sprintf "task %s: %s" s.name m))
             | Ok cfg -> start_all ((s.name, cfg, modules, l) :: acc) false rest)
       in

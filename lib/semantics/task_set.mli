@@ -20,13 +20,13 @@ type failure =
   | Refused of string   (** no such entry routine, no such motion task *)
 
 val start :
-  ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
   world:Rapid_controller.World.t -> motion:Motion_primitives.state -> spec list ->
   (t * Rapid_typing.Report.t list, failure) result
 (** The tasks in order, ready to run, and the warnings of their checks. [world] becomes the
     first task's world; [motion] the motion task's robot ([motion_task], default the first
-    task). *)
+    task). [observe] as {!Machine.start}'s, for every task. *)
 
 val next : t -> (string * Machine.config) option
 (** The task whose turn it is (its name and machine), which {!step} steps next; [None] when the

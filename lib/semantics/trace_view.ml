@@ -8,27 +8,8 @@ module V = Value
 
 (* ------------------------------------------------------------------ values *)
 
-(* The fewest significant digits that read back to the same number: num is single precision
-   (§2.13), so 9 digits always suffice, and dnum 17. *)
-let shortest ~max_digits ~same f =
-  if Float.is_nan f then "nan"
-  else if Float.is_integer f && Float.abs f < 1e15 then Printf.sprintf "%.0f" f
-  else if Float.abs f = Float.infinity then (if f > 0. then "inf" else "-inf")
-  else
-    let rec go p =
-      let s = Printf.sprintf "%.*g" p f in
-      if p >= max_digits || same (float_of_string s) then s else go (p + 1)
-    in
-    String.uppercase_ascii (go 1)
-
-let rec value (v : V.t) =
-  match v with
-  | Num f -> shortest ~max_digits:9 ~same:(fun g -> V.to_single g = f) f
-  | Dnum f -> shortest ~max_digits:17 ~same:(fun g -> g = f) f
-  | Bool b -> if b then "TRUE" else "FALSE"
-  | String s -> Format.string_literal s
-  | Record cs | Array cs -> "[" ^ String.concat "," (Array.to_list (Array.map value cs)) ^ "]"
-  | Handle h -> Printf.sprintf "<%s #%d>" (V.handle_kind h) (V.handle_id h)
+(* One text per value, the one run --json writes (R-4.5-m). *)
+let value = Observation.value
 
 (* ------------------------------------------------------------------ source text *)
 
@@ -361,7 +342,8 @@ let event_change (e : M.event) =
   | Error_handled { name; routine } -> Handled { name; routine }
   | Undo_run r -> Undo_run r
   | Task_ended -> Task_ended
-  | (Controller _ | Trap_entered _ | Trap_left _ | Stubbed _ | Motion _ | Event_log _) as e -> Controller_event e
+  | Observed (Stored { place; value }) -> Write { place; value }
+  | (Controller _ | Trap_entered _ | Trap_left _ | Stubbed _ | Motion _ | Event_log _ | Observed _) as e -> Controller_event e
 
 let after t (b : before) cfg (rule, events) =
   ignore t;
@@ -429,7 +411,8 @@ let after t (b : before) cfg (rule, events) =
     | "call-late", _, _ -> (None, [])
     | _ -> (None, [])
   in
-  let extra = match rule with "retry" -> [ Retried ] | "trynext" -> [ Next_tried ] | _ -> [] in
+  (* RETRY and TRYNEXT are the machine's events (Observation.Retried, Tried_next). *)
+  let extra = [] in
   let statement = match b.focus with Statement s -> Some s | _ -> None in
   (* An interrupt is served where the program pointer is (ch. 8): the step says which, and
      which trap runs, rather than the frame it was served at. *)

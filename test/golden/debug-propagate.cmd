@@ -1,0 +1,1 @@
+debug --script debug-propagate.dbg observable-v2.mod

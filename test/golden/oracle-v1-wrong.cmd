@@ -1,0 +1,1 @@
+oracle --impl 'sh oracle-v1-wrong-impl.sh {file}' observable-v2.mod

@@ -1,0 +1,1 @@
+oracle --impl 'sh oracle-store-impl.sh {file}' observable-v2.mod

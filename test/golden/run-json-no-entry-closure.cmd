@@ -1,0 +1,1 @@
+run --json --engine closure --entry nosuch oracle-program.mod

@@ -1,0 +1,1 @@
+run --json --entry nosuch oracle-program.mod

@@ -1,0 +1,1 @@
+run --json --engine closure observable-v2.mod

@@ -1,0 +1,1 @@
+run --json observable-v2.mod

@@ -1,0 +1,1 @@
+trace --format jsonl --level statement observable-v2.mod

@@ -1,0 +1,1 @@
+trace --level statement observable-v2.mod
