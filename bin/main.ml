@@ -732,8 +732,9 @@ let trace_cmd =
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    (* One task ([single]), or several (--task): [next] the task about to step (its name with
-       several), [do_step] its step. *)
+    (* One task, or several (--task): [next] the task about to step (its name with
+       several), [do_step] its step, [single] the task whose robot --samples samples (the one
+       task, or the motion task). *)
     let body ~next ~do_step ~outcome ~steps ~single ~entry_at =
     let sampler = match samples, single with Some hz, Some _ when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
@@ -858,9 +859,10 @@ let trace_cmd =
         (* The error in flight, for error-handled, also from the steps --from and --to leave out. *)
         List.iter note_error events;
         let st = TV.after view before cfg answer in
-        let samples () = match sampler with
-          | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
-          | None -> [] in
+        (* The robot sampled is [single]'s: the one task's, or with several the motion task's. *)
+        let samples () = match sampler, single with
+          | Some s, Some robot -> Motion_cmd.samples s (M.motion robot) ~until:(Rapid_controller.World.now (M.world robot))
+          | _ -> [] in
         (match level with
          | `Reduction -> reduction_step task st region kind stack samples
          | `Statement ->
@@ -880,15 +882,15 @@ let trace_cmd =
     finish outcome steps ~max_steps
     in
     if tasks <> [] then begin
-      if samples <> None then
-        (prerr_endline "rapid-sem: trace --task: not with --samples (one task's robot)"; exit_static_error)
-      else
         let module TS = Rapid_semantics.Task_set in
         start_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json:false allow_unknown max_depth retry_limit controller robot
         @@ fun ts _ ->
+        (* --samples: the motion task's robot. *)
+        let robot_task = List.find_map (fun (_, cfg) -> if Rapid_controller.World.motion_task (M.world cfg) then Some cfg else None)
+            (TS.tasks ts) in
         body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
           ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
-          ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:None
+          ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:robot_task
           ~entry_at:(fun () -> None)
     end
     else
