@@ -5,7 +5,6 @@ MODULE syncmove_b
   PERS tasks all_tasks{2};
   PROC main()
     TPWrite "B before " \Bool := IsSyncMoveOn();
-    WaitTime 2;
     SyncMoveOn sync_on, all_tasks;
     TPWrite "B on " \Bool := IsSyncMoveOn();
     SyncMoveOff sync_off;
