@@ -4,12 +4,13 @@ MODULE syncmove_err_a
 ! @section 14
 ! @section 7
 ! @expect ok
-! @description The errors of synchronized movement (R-14-m): SyncMoveOn \TimeOut whose tasks do not all arrive in time raises ERR_SYNCMOVEON; a task list naming a task that is not a task of the run, ERR_TASKNAME; SyncMoveOff in independent movement, ERR_SYNCMOVEOFF; SyncMoveOn in synchronized movement, ERR_SYNCMOVEON; SyncMoveOff \TimeOut whose tasks do not arrive in time, ERR_SYNCMOVEOFF, and the task stays in synchronized movement. Every one is handled.
+! @description The errors of synchronized movement (R-14-m): SyncMoveOn \TimeOut whose tasks do not all arrive in time raises ERR_SYNCMOVEON; a task list naming a task that is not a task of the run, ERR_TASKNAME; SyncMoveOff in independent movement, ERR_SYNCMOVEOFF; SyncMoveOn in synchronized movement, ERR_SYNCMOVEON; SyncMoveOff \TimeOut whose tasks do not arrive in time, ERR_SYNCMOVEOFF, and the task stays in synchronized movement; a negative \TimeOut, ERR_ARGVALERR. Every one is handled.
 ! @output on timed out FALSE
 ! @output ERR_TASKNAME
 ! @output off without on
 ! @output on twice TRUE
 ! @output off timed out TRUE
+! @output negative time-out
   VAR syncident s1;
   VAR syncident s2;
   VAR syncident s3;
@@ -22,6 +23,7 @@ MODULE syncmove_err_a
     off_without_on;
     on_twice;
     off_timeout;
+    negative_timeout;
   ENDPROC
   PROC on_timeout()
     SyncMoveOn s1, both \TimeOut := 1;
@@ -57,6 +59,14 @@ MODULE syncmove_err_a
     TPWrite "not reached";
   ERROR
     IF ERRNO = ERR_SYNCMOVEOFF TPWrite "off timed out " \Bool := IsSyncMoveOn();
+    RETURN;
+  ENDPROC
+  PROC negative_timeout()
+    SyncMoveUndo;
+    SyncMoveOn s1, both \TimeOut := -1;
+    TPWrite "not reached";
+  ERROR
+    IF ERRNO = ERR_ARGVALERR TPWrite "negative time-out";
     RETURN;
   ENDPROC
 ENDMODULE
