@@ -4,12 +4,13 @@ MODULE syncmove_undo_a
 ! @section 14
 ! @section 7
 ! @expect ok
-! @description SyncMoveUndo ends synchronized movement at once, without a synchronisation point (R-14-m), as in an UNDO handler: an error leaves work, whose UNDO handler runs SyncMoveUndo, and main's handler finds the task in independent movement. SyncMoveUndo in independent movement does nothing. B leaves synchronized movement with SyncMoveUndo as well, meeting no one. A's first turn is the call of work, so B reaches SyncMoveOn first and waits; A, arriving last, goes on first.
+! @description SyncMoveUndo ends synchronized movement at once, without a synchronisation point (R-14-m), as in an UNDO handler: an error leaves work, whose UNDO handler runs SyncMoveUndo, and main's handler finds the task in independent movement. SyncMoveUndo in independent movement does nothing. B, which has no robot, cannot move in synchronized movement either (ERR_NOT_MOVETASK, handled, \ID or not), and leaves synchronized movement with SyncMoveUndo as well, meeting no one. A's first turn is the call of work, so B reaches SyncMoveOn first and waits; A, arriving last, goes on first.
 ! @output A on TRUE
 ! @output B on TRUE
-! @output B undone FALSE
 ! @output A undone FALSE
+! @output B cannot move TRUE
 ! @output again FALSE
+! @output B undone FALSE
   VAR syncident sync_on;
   PERS tasks all_tasks{2} := [["T_ROB1"], ["T_B"]];
   VAR num zero := 0;
