@@ -450,11 +450,25 @@ let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, st
           Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok cfg -> k cfg)
 
-(* rapid-sem run --engine closure: the same events and outcome by the closure engine. *)
-let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json print_event =
-  match Rapid_semantics.Session.load ~allow_unknown files with
+(* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
+   controller (signals, stimulus, clock, services, robot) as the machine's. *)
+let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
+    controller print_event =
+  match read_io controller.io, Motion_cmd.load_robot robot with
+  | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
+  | Ok io, Ok robot ->
+  if controller.statement_time < 0. || controller.max_time < 0. then
+    (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
+  else
+  match Rapid_semantics.Session.load ~allow_unknown ~io files with
   | Error f -> report_load_failure ~json f
   | Ok loaded -> (
+      let world = Rapid_controller.World.create ~statement_time:controller.statement_time
+          ~max_time:controller.max_time ~epoch:controller.epoch io in
+      let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+      match Services_args.install controller.services world with
+      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+      | Ok () ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
       Option.iter prerr_endline loaded.unknown_summary;
@@ -462,7 +476,7 @@ let run_closure files entry max_steps (allow_unknown, stub_unmodelled) max_depth
       let stubbed = ref [] in
       let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
       match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-              ~observe:json ~on_event loaded.program ~entry with
+              ~observe:json ~on_event ~world ~motion loaded.program ~entry with
       | Error m ->
           if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
           Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -599,7 +613,7 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the programs of chapters 4, 5, 7 and 13 that need no controller, doc/semantics.md).") in
+  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the controller, motion and services as the machine's; not with --save or --samples, doc/semantics.md).") in
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     if tasks <> [] then begin
@@ -613,7 +627,12 @@ let run_cmd =
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
-    if engine = `Closure then run_closure files entry max_steps allow_unknown max_depth retry_limit json print_event else
+    if engine = `Closure && save <> None then
+      (prerr_endline "rapid-sem: --save runs on the machine only: use --engine machine"; exit_static_error)
+    else if engine = `Closure && samples <> None then
+      (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
+    else if engine = `Closure then
+      run_closure ?robot files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));

@@ -67,10 +67,24 @@ let stubbed_record_result () =
           Alcotest.(check (list string)) "stubbed" [ "OpMode" ] !stubbed;
           Alcotest.(check (list string)) "output" [ "m=0" ] !out)
 
+(* Source ids are reused after 1023 files; the installed modules, parsed once per process, keep
+   theirs (Source.keep): a file parsed later never has regions equal to theirs, which key the
+   tables of every check (a literal's kind: btnNone := -1 once read as a dnum). *)
+let installed_ids_kept () =
+  let open Rapid_syntax in
+  let installed = installed () in
+  let names () = List.map (fun (m : Ast.module_declaration) ->
+      match Source.file_of m.module_region with Some f -> Source.name f | None -> "") installed in
+  let before = names () in
+  for i = 1 to 2100 do ignore (Source.register ~name:(Printf.sprintf "other%d.mod" i) ~line_starts:[| 0 |]) done;
+  Alcotest.(check (list string)) "the installed modules' files" before (names ());
+  Alcotest.(check bool) "they have names" true (List.for_all (fun n -> n <> "") before)
+
 let suite =
   ( "installed",
     [ Alcotest.test_case "--allow-unknown: one report per name, first use in source order" `Quick
         first_use_in_source_order;
       Alcotest.test_case "without --allow-unknown: an error per use" `Quick errors_stay_per_use;
       Alcotest.test_case "--stub-unmodelled: a record result is its initial value" `Quick
-        stubbed_record_result ] )
+        stubbed_record_result;
+      Alcotest.test_case "the installed modules keep their source ids" `Quick installed_ids_kept ] )

@@ -45,15 +45,15 @@ let execute engine case (run : Spec_case.run) ~io program =
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let output = ref [] in
   let collect = function M.Output s -> output := s :: !output | _ -> () in
+  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+  let services = Rapid_controller.Services.create ~sandbox () in
+  Rapid_controller.World.set_services world services;
+  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
   match engine with
   | Machine -> (
-      let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-      (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
-      let sandbox = Rapid_controller.File_sandbox.temporary () in
-      Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-      let services = Rapid_controller.Services.create ~sandbox () in
-      Rapid_controller.World.set_services world services;
-      let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
       match M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled program ~entry:run.entry with
       | Error m -> release (); Error m
       | Ok cfg ->
@@ -64,9 +64,9 @@ let execute engine case (run : Spec_case.run) ~io program =
           Ok (List.rev !output, M.outcome cfg))
   | Closure -> (
       match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
-              ~on_event:collect program ~entry:run.entry with
-      | Error m -> Error m
-      | Ok r -> Ok (List.rev !output, r.outcome))
+              ~all_events:false ~world ~on_event:collect program ~entry:run.entry with
+      | Error m -> release (); Error m
+      | Ok r -> release (); Ok (List.rev !output, r.outcome))
 
 let rec run_program engine case (run : Spec_case.run) ~io program =
   match execute engine case run ~io program with

@@ -205,6 +205,29 @@ let advance_us w target =
 
 let advance_to w time = advance_us w (seconds time)
 let statement w = advance_us w (w.c.now + w.statement_time)
+
+let statement_within w =
+  let target = w.c.now + w.statement_time in
+  (match w.c.events with
+   | (t, _, _) :: _ when t <= target -> advance_us w target
+   | _ -> w.c.now <- target);
+  not (to_seconds w.c.now > w.max_time)
+
+let statements w k = if k > 0 then advance_us w (w.c.now + k * w.statement_time)
+
+let statements_left w =
+  let d = w.statement_time in
+  let within k = not (to_seconds (w.c.now + k * d) > w.max_time) in
+  if d = 0 then (if within 0 then max_int else 0)
+  else
+    let guess = (w.max_time *. 1e6 -. float_of_int w.c.now) /. float_of_int d in
+    if not (guess < 1e15) then 1 lsl 48
+    else begin
+      let k = ref (max 0 (int_of_float guess)) in
+      while within (!k + 1) do incr k done;
+      while !k > 0 && not (within !k) do decr k done;
+      if within !k then !k else 0
+    end
 let next_event w = match w.c.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
 
 (* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the

@@ -64,6 +64,18 @@ val collisions : t -> float list
 val statement : t -> unit
 (** The time of one statement passes (the events due meanwhile happen). *)
 
+val statement_within : t -> bool
+(** {!statement}, then whether the clock is still within {!max_time}: the same as
+    [statement w; not (now w > max_time w)], without allocating (an engine's hot path). *)
+
+val statements : t -> int -> unit
+(** The time of this many statements passes at once (the events due meanwhile happen). *)
+
+val statements_left : t -> int
+(** How many more statements' time can pass with the clock still within {!max_time}; with
+    nothing scheduled, an engine may count them itself and charge them later with
+    {!statements}. *)
+
 val next_event : t -> float option
 (** When the next timed event (a stimulus, a delayed output, a timer) is due, if any. *)
 

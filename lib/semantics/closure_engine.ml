@@ -6,6 +6,8 @@
 open Ir
 module V = Value
 module M = Machine
+module W = Rapid_controller.World
+module CC = Closure_controller
 
 let default_fuel = 100_000_000
 
@@ -90,7 +92,17 @@ type state = {
   mutable memory : int;               (* bytes of RAPID data: module data and activations *)
   stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
-  world : Rapid_controller.World.t;   (* interrupt numbers only: no clock, signals or traps *)
+  world : W.t;                        (* the controller around the run (doc/controller.md) *)
+  motion : Motion_primitives.state;   (* the robot and its planner (doc/motion.md) *)
+  mutable in_trap : bool;             (* a trap runs, or a routine it called: no interrupt is served *)
+  mutable interrupts : bool;          (* some CONNECT ran: interrupts may occur *)
+  mutable observing : bool;           (* the world may have something to report *)
+  mutable quiet : int;                (* statements that may still pass uncharged (see [sync]) *)
+  mutable quiet_base : int;           (* [quiet] when the world's clock was last charged *)
+  mutable moving : bool;              (* the motion may have something to report *)
+  max_time : float;
+  mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
+  mutable serve_trap : act -> int -> int -> unit;  (* [serve_trap], tied below *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -121,10 +133,11 @@ let fail ?about st ~at name =
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
 
-(* What this engine leaves to the machine: the controller (signals, waits, interrupts, clocks)
-   and motion (doc/semantics.md, "The second engine"). *)
+(* The reason an engine gives for what it leaves to the machine. This one now leaves nothing
+   (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
 let machine_only_reason = "runs on the machine only: use --engine machine"
 
+(* The user level of NOSTEPIN routines (§7.3, RaiseToUser) is the machine's alone. *)
 let leave_to_machine ~at name what =
   raise (Halt (M.Unsupported { name; at; reason = Printf.sprintf "%s %s" what machine_only_reason }))
 
@@ -183,6 +196,65 @@ let tick st =
   if f < 0 then fuel_out () [@@inline]
 
 let check st ~at = function Ok v -> v | Error name -> fail st ~at name
+
+(* ------------------------------------------------------------------ the controller *)
+
+(* What the world and the motion did since last asked, as the machine reports it after each
+   step: signal changes, interrupts, moves. *)
+let rec observe st = observe_world st; observe_motion st
+
+and observe_world st =
+  match W.drain st.world with
+  | [] -> ()
+  | seen -> if st.all_events then List.iter (fun o -> st.emit (M.Controller o)) seen
+
+and observe_motion st =
+  if st.moving then
+    match Motion_primitives.drain st.motion st.world with
+    | [] -> ()
+    | moved -> if st.all_events then List.iter (fun m -> st.emit (M.Motion m)) moved
+
+(* While the world has nothing scheduled and the program has not yet touched it (no stimulus,
+   no signal, no controller routine), nothing but the time limit can happen at a statement:
+   the statements are then counted here and charged to the world's clock at once, before
+   anything looks at it ([sync]). *)
+let sync st =
+  let uncharged = st.quiet_base - st.quiet in
+  if uncharged > 0 then begin W.statements st.world uncharged; st.quiet_base <- st.quiet end
+
+let watch st =
+  if not st.observing then begin sync st; st.observing <- true; st.quiet <- 0; st.quiet_base <- 0 end
+
+(* ch. 8: the entry of a statement, and each new round of a loop, takes the statement time and
+   is a point of response: an interrupt queued is served there (not at trap level), then the
+   point is taken again, as the machine's settling enters the statement again after the trap.
+   Past --max-time the run ends (time-limit). *)
+let rec at_point st a =
+  sync st;
+  if not (W.statement_within st.world) then raise (Halt (CC.time_limit st.world));
+  if st.observing then begin
+    observe st;
+    if st.interrupts && not st.in_trap then
+      match W.take st.world with
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; at_point st a
+      | None -> ()
+  end
+  else begin
+    let left = W.statements_left st.world in
+    st.quiet <- left; st.quiet_base <- left
+  end
+
+(* [quiet] is 0 whenever the world is observed. *)
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
+
+(* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
+   time. *)
+let rec serve_at_end st a =
+  match W.take st.world with
+  | Some (number, trap) -> observe st; st.serve_trap a number trap; if not st.in_trap then serve_at_end st a
+  | None -> ()
+
+let at_end st a = if st.interrupts && not st.in_trap then serve_at_end st a [@@inline]
 
 (* ------------------------------------------------------------------ slots and places *)
 
@@ -283,8 +355,9 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Literal v -> fun _ -> v
   | Read p -> read st r ~at p
   | Read_signal p ->
-      let name = match root p with Some (Global g) -> st.program.globals.(g).g_name | _ -> "signal" in
-      fun _ -> leave_to_machine ~at name "the value of an I/O signal (§2.16, the controller)"
+      (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
+      let f = read st r ~at p in
+      fun a -> let v = f a in watch st; check st ~at (CC.read_signal st.world v)
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
@@ -561,9 +634,6 @@ and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
 and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
-  | Some name when Io_primitives.modelled name || Motion_primitives.modelled name ->
-      (* Waits, signals, interrupts, clocks and motion need the controller. *)
-      fun _ -> leave_to_machine ~at:call_at callee.name (callee.name ^ " (the controller, doc/controller.md)")
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
@@ -578,6 +648,47 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           | Pass_on _ -> (function Primitive.Missing -> absent | _ -> ("", 0))
           | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
       let n = Array.length args in
+      (* The controller's, the motion's and the services' routines find their arguments by
+         parameter name, and the motion names its targets (as the machine's call-primitive). *)
+      let motion = Motion_primitives.modelled name in
+      (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
+      let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name
+                       || String.lowercase_ascii name = "errwrite" in
+      (* What the world observes during the call is reported before what the routine itself
+         writes, as the machine reports a step's events (its output waits meanwhile). *)
+      let held = ref [] in
+      let hold e = held := e :: !held in
+      let ctx =
+        if not controller then st.prim_ctx
+        else { st.prim_ctx with
+               parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
+               argument_label = CC.argument_label st.program callee arguments;
+               output = (fun line -> hold (M.Output (Format.display line)));
+               erase = (fun () -> hold M.Erase);
+               log = (fun line -> hold (M.Log line));
+               event_log = (fun entry -> if st.all_events then hold (M.Event_log entry)) } in
+      (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
+      let condition =
+        let found = ref None in
+        Array.iteri (fun i (p : parameter) ->
+            if controller && String.lowercase_ascii p.p_name = "cond" && i < Array.length arguments then
+              match arguments.(i) with
+              | By_value e -> let f = expr st caller ~at e in found := Some (fun a -> match f a with V.Bool b -> b | _ -> false)
+              | _ -> ()) callee.parameters;
+        !found in
+      let invoke values =
+        if not controller then Primitive.call ctx name values
+        else begin
+          watch st;
+          if motion then st.moving <- true;
+          match Motion_primitives.call ctx st.motion name values with
+          | Some r -> r
+          | None -> match Io_primitives.call ctx name values with
+            | Some r -> r
+            | None -> match Service_primitives.call ctx name values with
+              | Some r -> r
+              | None -> Primitive.call ctx name values
+        end in
       fun a ->
         let pending = ref 0 in
         let values = Array.make n Primitive.Missing in
@@ -588,14 +699,27 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
           pending := !pending + bytes;
           values.(i) <- v
         done;
-        if st.observe then begin
-          (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
-          let before = Observation.references values in
-          let outcome = Primitive.call st.prim_ctx name values in
-          List.iter (observe_store st a) (Observation.changed before);
-          primitive_outcome st caller a ~at ~call_at callee name outcome
+        let before = if st.observe then Observation.references values else [] in
+        let result = invoke values in
+        (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+        let stores () = if st.observe then List.iter (observe_store st a) (Observation.changed before) in
+        if controller then begin
+          (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4). *)
+          (match Motion_primitives.take_new_move st.motion with
+           | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < 63) st.move_owners
+           | None -> ());
+          (* The machine's order within a step: the world, the routine's own events, the motion. *)
+          observe_world st;
+          if !held <> [] then begin
+            let written = List.rev !held in
+            held := [];
+            List.iter st.emit written
+          end;
+          stores ();
+          observe_motion st
         end
-        else primitive_outcome st caller a ~at ~call_at callee name (Primitive.call st.prim_ctx name values)
+        else stores ();
+        primitive_outcome st caller a ~at ~call_at ~condition callee name result
   | None ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in
@@ -636,9 +760,11 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
 
-and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : routine) name : Primitive.outcome -> V.t = function
+and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
-  | Returned None -> no_value
+  | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
+  | Failed error when Motion_primitives.take_async_raised st.motion ->
+      leave_to_machine ~at:call_at error ("the asynchronous error " ^ error ^ " (§7.4, \\SyncLastMoveInst)")
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
@@ -662,7 +788,43 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at (callee : ro
       raise (Halt (M.Unsupported
                      { name = callee.name; at = call_at;
                        reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" callee.name }))
-  | Wait _ | Retry_requested -> leave_to_machine ~at:call_at callee.name callee.name
+  | Wait wt -> wait st caller_act ~at wt ~condition; no_value
+  | Retry_requested ->
+      (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
+         StartMove alone (R-7.6-b). *)
+      if caller_act.ext.current = None then no_value
+      else if caller_act.ext.retries >= st.limits.retry_limit then fail st ~at:call_at "ERR_EXCRTYMAX"
+      else begin caller_act.ext.retries <- caller_act.ext.retries + 1; raise_notrace Retry_signal end
+
+(* A waiting instruction (doc/controller.md): interrupts are served while it waits, and an
+   asynchronous error of the motion is raised at it (§7.4, §7.6). A wait that an error or a long
+   jump leaves is abandoned: a move instruction's move is cancelled (M-abandon). *)
+and wait st (a : act) ~at (wt : W.wait) ~condition =
+  let first_poll = Motion_primitives.take_first_poll st.motion in
+  let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
+  let asynchronous = ref false in
+  let serve () =
+    if st.in_trap then false
+    else
+      match (if st.interrupts then W.take st.world else None) with
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; true
+      | None -> (
+          match Motion_primitives.take_org_error st.motion with
+          | None -> false
+          | Some (name, _, _) ->
+              (* §7.4: the handler of an asynchronous error runs with the program pointer kept
+                 where it waits (RETRY and TRYNEXT resume there); that is the machine's alone
+                 for now (doc/semantics.md, "The second engine"). *)
+              asynchronous := true;
+              leave_to_machine ~at name ("the asynchronous error " ^ name ^ " (§7.4, the kept program pointer)"))
+  in
+  match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
+  | Finished None -> ()
+  | Finished (Some name) -> fail st ~at name
+  | Halted o -> raise (Halt o)
+  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task) as left) ->
+      if not !asynchronous then Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
+      raise left
 
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
@@ -780,6 +942,10 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
         st.emit (M.Observed (Returned { routine = r.name; value = Observation.value c.result }));
       if st.all_events then st.emit (M.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
+  | exception Long_jump (j, e) when j = c.level ->
+      (* An asynchronous error carried to the routine of its move, which has no error handler
+         (§7.6): it is raised there, and propagated to the call point without a new search. *)
+      emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
 
@@ -795,7 +961,47 @@ and abandon st code (c : act) =
        | _ -> ()
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught c e)))));
   pop st c;
-  if st.all_events then st.emit (M.Routine_left c.routine.name)
+  if st.all_events then begin
+    st.emit (M.Routine_left c.routine.name);
+    if c.routine.kind = Trap then st.emit (M.Trap_left { trap = c.routine.name; time = W.now st.world })
+  end
+
+(* ch. 8 (interrupt-serve, trap-end): the trap of an interrupt runs as a routine called from the
+   point of interruption, with INTNO set to the interrupt's number; at its end execution goes on
+   there. No interrupt is served while it runs. An error that leaves it is carried by a long
+   jump to an error recovery point of the routines it interrupted (§7.2), or, there being none,
+   goes to the system error handler: there is no call point to raise it at (R-8-e). *)
+and serve_trap st (a : act) number k =
+  let r = st.program.routines.(k) in
+  st.globals.(st.program.intno) <- V.num (float_of_int number);
+  if st.all_events then begin
+    st.emit (M.Trap_entered { number; trap = r.name; time = W.now st.world });
+    st.emit (M.Routine_entered r.name)
+  end;
+  let code = Lazy.force st.compiled.(k) in
+  let c = new_act (activation_shape r) r a in
+  c.nest <- code.c_nest;
+  st.native <- st.native + code.c_nest;
+  st.depth <- c.level + 1;
+  st.in_trap <- true;
+  let resume () = st.in_trap <- false; st.depth <- a.level + 1 in
+  match code.c_init r.at c; code.c_body c with
+  | _ ->
+      pop st c;
+      resume ();
+      if st.all_events then begin
+        st.emit (M.Routine_left r.name);
+        st.emit (M.Trap_left { trap = r.name; time = W.now st.world })
+      end
+  | exception (Raised e | Leaving e) -> (
+      let e = caught c e in
+      match recovery_search st c.parent e with
+      | None -> raise (Halt (stopped e))
+      | Some j -> abandon st code c; resume (); raise (Long_jump (j, e)))
+  | exception ((Long_jump _ | Exit_task) as left) -> abandon st code c; resume (); raise left
+
+and recovery_search st (b : act) e =
+  if b.level < 0 then None else if recovers st b e.number then Some b.level else recovery_search st b.parent e
 
 (* An error leaves routine [c] (R-7.1, R-7.2-a: rules longjump-search-start, longjump-search,
    longjump-found, raise-propagate): after the routine is abandoned, the call chain is searched
@@ -890,16 +1096,41 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
   match s.s with
   | Assign (place, e) -> (
       (* Rules assign, assign-target, store: the target is located before the value. *)
+      (* §2.16: assigning to an output signal sets it (store-signal). Module data and routine
+         data whose declared type is not a signal's are stored without looking. *)
       let value = expr st r ~at e in
+      let signal_shape = function V.S_handle k -> CC.is_signal (V.default_of (V.S_handle k)) | _ -> false in
+      let own_signal i =
+        if i < Array.length r.parameters then signal_shape r.parameters.(i).p_default
+        else match List.assoc_opt i r.local_inits with
+          | Some (Init_default sh) -> signal_shape sh
+          | _ -> false (* an initial value, a FOR variable: never a signal's *) in
+      let store_signal box i v =
+        watch st;
+        match CC.write_signal st.world box.(i) v with
+        | Ok () -> ()
+        | Error "" -> raise (Halt (M.Stuck "a signal assigned a value that is not a num"))
+        | Error name -> fail st ~at name in
       match place with
       | _ when st.observe ->
           let l = locate st r ~at place in
-          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v; observe_store st a (box, i); true
-      | Whole (Global i) -> let g = st.globals in fun a -> g.(i) <- copy (value a); true
-      | Whole (Local i) when local_access r i = Own -> fun a -> a.store.(i) <- copy (value a); true
+          fun a ->
+            let box, i = l a in
+            let v = value a in
+            if CC.is_signal box.(i) then store_signal box i v
+            else (box.(i) <- copy v; observe_store st a (box, i));
+            true
+      | Whole (Global i) when not (CC.is_signal st.globals.(i)) ->
+          let g = st.globals in fun a -> g.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
+          fun a -> a.store.(i) <- copy (value a); true
       | _ ->
           let l = locate st r ~at place in
-          fun a -> let box, i = l a in let v = value a in box.(i) <- copy v; true)
+          fun a ->
+            let box, i = l a in
+            let v = value a in
+            if CC.is_signal box.(i) then store_signal box i v else box.(i) <- copy v;
+            true)
   | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a); true
   | Call_late (name, args) ->
       let name = expr st r ~at name in
@@ -932,9 +1163,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         else fail st ~at "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->
-      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler. *)
+      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
+         itself (in a compact IF too, where other errors are the IF's). *)
       fun a ->
-        if a.ext.retries >= st.limits.retry_limit then fail st ~at "ERR_EXCRTYMAX"
+        if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext -> fun _ -> raise_notrace Trynext_signal
   | Connect (place, trap) ->
@@ -951,8 +1183,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
          | V.Num n when n <> 0. && Float.is_integer n && Rapid_controller.World.connected st.world (int_of_float n) ->
              fail st ~at "ERR_ALRDYCNT"
          | _ -> ());
-        (match Rapid_controller.World.connect st.world ~trap with
-         | Ok n -> box.(i) <- V.num (float_of_int n); if st.observe then observe_store st a (box, i)
+        (match W.connect st.world ~trap with
+         | Ok n ->
+             box.(i) <- V.num (float_of_int n); watch st; st.interrupts <- true;
+             if st.observe then observe_store st a (box, i)
          | Error name -> fail st ~at name);
         true
   | If (c, t, e) | Elseif (c, t, e) ->
@@ -973,7 +1207,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         while !continue do
           tick st;
           if c a then (match body a with
-              | true -> ()
+              | true -> at_statement st a  (* a new round (while-again) *)
               | false -> continue := false; goes_on := false
               | exception Continue_loop -> ()
               | exception Break_loop -> continue := false)
@@ -995,9 +1229,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
           (match body a with
-           | true -> ()
+           | true -> at_statement st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false
-           | exception Continue_loop -> ()
+           | exception Continue_loop -> at_statement st a
            | exception Break_loop -> continue := false);
           if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
         done;
@@ -1021,20 +1255,53 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
 
 (* A statement list, one unit of fuel for each statement started; it stops at a RETURN. A list
    holding a GOTO's label continues there (rule goto). *)
-and block st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
+and block ?top st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
   let body = Array.map (stmt st r ~handler ~gotos) b.body in
   let n = Array.length body in
-  let rec from a k = k >= n || (tick st; body.(k) a && from a (k + 1)) in
-  if n = 0 then fun _ -> true
-  else if n = 1 && not (Hashtbl.mem gotos b.id) then (let s0 = body.(0) in fun a -> tick st; s0 a)
-  else if n = 2 && not (Hashtbl.mem gotos b.id) then
-    (let s0 = body.(0) and s1 = body.(1) in fun a -> tick st; s0 a && (tick st; s1 a))
-  else if Hashtbl.mem gotos b.id then
-    let id = b.id in
-    fun a ->
-      let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
-      go 0
-  else fun a -> from a 0
+  let jumps = Hashtbl.mem gotos b.id in
+  let id = b.id in
+  match top with
+  | None ->
+      (* Each statement entered and the end of the list are points of response (ch. 8). *)
+      let rec from a k =
+        if k >= n then (at_end st a; true)
+        else (tick st; at_statement st a; body.(k) a && from a (k + 1)) in
+      if n = 0 then fun a -> at_end st a; true
+      else if n = 1 && not jumps then
+        (let s0 = body.(0) in fun a -> tick st; at_statement st a; s0 a && (at_end st a; true))
+      else if n = 2 && not jumps then
+        (let s0 = body.(0) and s1 = body.(1) in
+         fun a -> tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a) && (at_end st a; true))
+      else if jumps then
+        fun a ->
+          let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
+          go 0
+      else fun a -> from a 0
+  | Some h ->
+      (* The body of a routine with an error handler: a long jump that arrives between two of
+         its statements (from a trap served there) is handled there (doc/rulings.md R-7.2-m). *)
+      let rec from a k =
+        if k >= n then between st h a at_end
+        else (tick st; between st h a at_statement && body.(k) a && from a (k + 1)) in
+      if jumps then
+        fun a ->
+          let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
+          go 0
+      else fun a -> from a 0
+
+(* R-7.2-m: an error that a long jump brings to a routine between two statements of its body,
+   no statement of it being in progress, is handled by its error handler; RETRY and TRYNEXT
+   both go on from where the program pointer was (the point of response is taken again), RETURN
+   returns. *)
+and between st h (a : act) point =
+  match point st a with
+  | () -> true
+  | exception Long_jump (j, e) when j = a.level -> (
+      emit_raised st e;
+      match run_handler st h a e with
+      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); between st h a point
+      | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); between st h a point
+      | `Return -> false)
 
 (* ------------------------------------------------------------------ routines *)
 
@@ -1056,7 +1323,7 @@ let compile_routine st k =
   Option.iter (fun (h : error_handler) -> goto_targets gotos h.handler) r.error;
   Option.iter (goto_targets gotos) r.undo;
   let c_handler = Option.map (fun (h : error_handler) -> block st r ~handler:None ~gotos h.handler) r.error in
-  let c_body = block st r ~handler:c_handler ~gotos r.body in
+  let c_body = block ?top:c_handler st r ~handler:c_handler ~gotos r.body in
   let c_undo = Option.map (block st r ~handler:None ~gotos) r.undo in
   let inits = List.map (fun (slot, init) ->
       match init with
@@ -1075,8 +1342,8 @@ let compile_routine st k =
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
 
-let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false) ~all_events ~emit
-    (program : program) =
+let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
+    ~all_events ~emit ~world ~motion (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
@@ -1086,11 +1353,18 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
-    world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
+    world; motion; in_trap = false; interrupts = false;
+    (* A stimulus, or collisions, make the world report without the program asking. *)
+    observing = W.next_event world <> None || W.collisions world <> [];
+    quiet = 0; quiet_base = 0;
+    moving = W.collisions world <> [];
+    max_time = W.max_time world; move_owners = [];
+    serve_trap = (fun _ _ _ -> ());
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
   st.compiled <- Array.init (Array.length program.routines) (fun k -> lazy (compile_routine st k));
+  st.serve_trap <- serve_trap st;
   st.prim_ctx <- {
     (* The pendant shows a control character as its character code (Format.display). *)
     output = (fun s -> emit (M.Output (Format.display s)));
@@ -1099,7 +1373,7 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     book_error = (fun () ->
         let n = st.next_booked in
         st.next_booked <- n + 1; st.booked <- n :: st.booked; n);
-    error_number = number_of st; world = st.world; parameters = [||]; argument_label = (fun _ -> None);
+    error_number = number_of st; world; parameters = [||]; argument_label = (fun _ -> None);
     event_log = (fun e -> if st.all_events then emit (M.Event_log e)) };
   st
 
@@ -1112,11 +1386,16 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 
-let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) (program : program) ~entry =
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event program ~entry
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
+    (program : program) ~entry =
+  let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
+  let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion (program : program) ~entry =
+  (* The installed data that depend on the robot (vmax), as the machine has them. *)
+  let program = Motion_primitives.robot_data motion program in
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
@@ -1129,7 +1408,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event (pro
                                      reason = "the user level of NOSTEPIN modules (§7.3) " ^ machine_only_reason };
            fuel_used = 0 }
   | Some (_, k) ->
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event ~world ~motion program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -1182,10 +1461,19 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event (pro
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
         | e -> outcome_of_exception st e
       in
+      (* What the world and the motion did last; at the end of the task, what the robot still
+         does (as the machine's last step). *)
+      (try
+         sync st;
+         observe_world st;
+         observe_motion st;
+         if outcome = M.Ended && all_events then
+           List.iter (fun m -> on_event (M.Motion m)) (Motion_primitives.finish st.motion)
+       with _ -> ());
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
-let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe program ~entry =
+let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion ~on_event:(fun e -> acc := e :: !acc) program ~entry with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

@@ -1,8 +1,11 @@
 (** The second evaluator of RAPID's dynamic semantics: a definitional interpreter written from
     doc/semantics.md and the manual, independent of the small-step {!Machine}.
 
-    It shares with the machine only the checked, lowered program ({!Ir}) and the primitives on
-    values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}). Each routine is
+    It shares with the machine only the checked, lowered program ({!Ir}), the primitives on
+    values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}) and the interfaces of
+    the world around the program: the controller ({!Rapid_controller.World}, {!Io_primitives},
+    {!Service_primitives}) and the motion ({!Motion_primitives}); {!Closure_controller} carries
+    out waits, signals and the time limit. Each routine is
     compiled once, when it is first called, to OCaml closures: an expression to a function from
     the activation to a value, a place to a function giving its location (a container and an
     index), a statement to a function from the activation that says whether execution goes on
@@ -28,7 +31,8 @@ type result = {
 
 val run :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  ?on_event:(Machine.event -> unit) ->
+  ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
+  ?motion:Motion_primitives.state ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -38,6 +42,10 @@ val run :
     their texts are built only then). [Error] when there is no procedure
     [entry] without parameters (nothing runs).
 
+    The program runs in [world] (default: no signals, default timing, the default sandbox) with
+    the robot of [motion] (default the IRB 120), as {!Machine.start} runs it: virtual time, the
+    time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps.
+
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
     [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the
     native stack of the running thread can hold also ends as [Resource_exhausted] (the default
@@ -45,13 +53,13 @@ val run :
     exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
 
 val machine_only : Machine.outcome -> bool
-(** The outcome of a run that reached what this engine leaves to the machine: a signal's value,
-    a wait, an interrupt routine, a clock or the date, motion (the controller, doc/controller.md;
-    doc/semantics.md, "The second engine"). It is [Unsupported] at the call or the statement,
-    with a reason that ends "runs on the machine only: use --engine machine". *)
+(** Whether the outcome is an [Unsupported] whose reason ends "runs on the machine only: use
+    --engine machine". This engine runs the controller, motion and services as the machine does
+    (doc/semantics.md, "The second engine"), so none of its runs ends so any more; kept for the
+    callers that tell such an end apart. *)
 
 val events :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  Ir.program -> entry:string ->
+  ?world:Rapid_controller.World.t -> ?motion:Motion_primitives.state -> Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)

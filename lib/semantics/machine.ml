@@ -807,7 +807,13 @@ let handle cfg (e : err) =
   | None -> assert false
   | Some h ->
       waits_left cfg;
-      act.handling <- In_handler (e, cfg.mark);
+      (* R-7.2-m: an error a long jump brings between two statements of the routine's body (a
+         trap served at a point of response), no statement of it in progress, keeps the stack
+         of that point: RETRY and TRYNEXT go on from there. *)
+      let point = match cfg.mark, cfg.stack with
+        | [], (K_seq _ :: _ as at_point) -> at_point
+        | mark, _ -> mark in
+      act.handling <- In_handler (e, point);
       set_errno cfg e.number;
       cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
       cfg.mark <- [];
@@ -1019,6 +1025,10 @@ and exec_statement cfg (s : Ir.stmt) =
              | K_stmt (st, prev) :: rest ->
                  act.retried <- Some st;
                  cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_stmt st
+             | K_seq _ :: _ ->
+                 (* R-7.2-m: no statement caused the error; the point of response is taken again. *)
+                 act.retried <- None;
+                 cfg.stack <- point; cfg.mark <- []; cfg.focus <- F_next
              | _ -> cfg.focus <- F_done (Stuck "RETRY without a statement to retry"));
             ("retry", [ Observed (Retried cfg.act.routine.name) ])
           end
@@ -1036,6 +1046,7 @@ and exec_statement cfg (s : Ir.stmt) =
           cfg.act.handling <- Body;
           (match statement_point point with
            | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
+           | K_seq _ :: _ -> cfg.stack <- point; cfg.mark <- []; cfg.focus <- F_next  (* R-7.2-m *)
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
           ("trynext", [ Observed (Tried_next cfg.act.routine.name) ])
       | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))

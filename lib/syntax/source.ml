@@ -16,8 +16,14 @@ let max_length = (1 lsl length_bits) - 1
 let files : file option array ref = ref (Array.make 16 None)
 let file_count = ref 0
 
+(* Ids up to [kept] are never reused: the installed modules are parsed once per process and their
+   regions key tables of every later check (a literal's kind, a name's declaration); a new file
+   with one of their ids would make its regions equal to theirs. *)
+let kept = ref 0
+let keep () = if !file_count < max_files - 64 then kept := max !kept !file_count
+
 let register ~name ~line_starts =
-  if !file_count >= max_files then file_count := 0;
+  if !file_count >= max_files then file_count := !kept;
   incr file_count;
   let id = !file_count in
   if id >= Array.length !files then begin

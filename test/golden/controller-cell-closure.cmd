@@ -1,0 +1,1 @@
+run --engine closure --io controller-cell.io controller-cell.mod

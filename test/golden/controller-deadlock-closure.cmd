@@ -1,0 +1,1 @@
+run --engine closure --io controller-deadlock.io controller-deadlock.mod

@@ -1,0 +1,1 @@
+run --engine closure --json --samples 10 run-hello.mod

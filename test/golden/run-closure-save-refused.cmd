@@ -1,0 +1,1 @@
+run --engine closure --save saved run-hello.mod
