@@ -148,7 +148,9 @@ let parse_cmd =
   Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict)
 
 let check_cmd =
-  let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
+  let files = Arg.(value & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer (without --task).") in
+  let tasks = Arg.(value & opt_all string [] & info [ "task" ] ~docv:"NAME=FILE[,FILE...]"
+                     ~doc:"A task buffer of its own (ch. 14): its name and its module files. Repeat for several tasks, checked each on its own and then together: a system-global persistent has one type in every task (doc/user-guide.md, \"Several tasks\").") in
   let allow_unknown =
     Arg.(value & flag & info [ "allow-unknown" ]
            ~doc:"Report a name that is neither declared nor installed as a warning, and go on: \
@@ -165,14 +167,28 @@ let check_cmd =
                    both on standard output: every diagnostic with its file, region, class, \
                    sections, message and hint (doc/user-guide.md).")
   in
-  let run files allow_unknown strict format io robot =
+  let run files tasks allow_unknown strict format io robot =
     guard @@ fun () ->
-    match read_io io, Motion_cmd.load_robot robot with
-    | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
-    | Ok io, Ok _ ->
+    (* One buffer, or one per --task (its name and files). *)
+    let buffers =
+      if tasks = [] then Ok [ ("", files) ]
+      else if files <> [] then Error "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."
+      else
+        List.fold_left (fun acc t -> Result.bind acc (fun l ->
+            match String.index_opt t '=' with
+            | Some i when i > 0 && i < String.length t - 1 ->
+                let name = String.sub t 0 i in
+                if List.exists (fun (n, _) -> String.lowercase_ascii n = String.lowercase_ascii name) l then
+                  Error (Printf.sprintf "rapid-sem: --task %s is given twice: task names are unique" name)
+                else Ok (l @ [ (name, String.split_on_char ',' (String.sub t (i + 1) (String.length t - i - 1))) ])
+            | _ -> Error (Printf.sprintf "rapid-sem: --task %s: expected NAME=FILE[,FILE...]" t))) (Ok []) tasks in
+    match buffers, read_io io, Motion_cmd.load_robot robot with
+    | Error m, _, _ | _, Error m, _ | _, _, Error m -> prerr_endline m; exit_static_error
+    | Ok [ (_, []) ], _, _ -> prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; exit_static_error
+    | Ok buffers, Ok io, Ok _ ->
     let options = { Parse.default_options with strict } in
-    let parsed = List.map (fun f -> Parse.parse_file ~options f) files in
-    let syntax_errors = List.filter_map (function Error d -> Some d | Ok _ -> None) parsed in
+    let parsed = List.map (fun (name, files) -> (name, List.map (fun f -> Parse.parse_file ~options f) files)) buffers in
+    let syntax_errors = List.concat_map (fun (_, p) -> List.filter_map (function Error d -> Some d | Ok _ -> None) p) parsed in
     let print = Check_output.print ~version format in
     if syntax_errors <> [] then begin
       print (List.map Check_output.of_diagnostic syntax_errors);
@@ -187,18 +203,31 @@ let check_cmd =
       | Ok installed -> (
           (* The whole static semantics, the initial values known before the run included
              (Session: check, lower, evaluate them). *)
-          let modules = List.filter_map Result.to_option parsed in
-          let result =
-            Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-          let reports =
-            if Rapid_typing.Check.errors result <> [] then result.reports
-            else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
-              | Ok _ -> result.reports
-              | Error initial_value_errors -> result.reports @ initial_value_errors in
+          let checked = List.map (fun (name, p) ->
+              let modules = List.filter_map Result.to_option p in
+              let result =
+                Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
+              let reports =
+                if Rapid_typing.Check.errors result <> [] then result.reports
+                else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+                  | Ok _ -> result.reports
+                  | Error initial_value_errors -> result.reports @ initial_value_errors in
+              (name, modules, result, reports)) parsed in
+          let is_error (r : Rapid_typing.Report.t) = r.severity = Error in
+          (* ch. 14: the buffers together, once each is sound on its own. *)
+          let across =
+            if tasks = [] || List.exists (fun (_, _, _, reports) -> List.exists is_error reports) checked then []
+            else Rapid_semantics.Task_check.shared_persistents
+                (List.map (fun (name, modules, (result : Rapid_typing.Check.result), _) ->
+                     { Rapid_semantics.Task_check.name; modules; elaboration = result.elaboration }) checked) in
+          let reports = List.concat_map (fun (_, _, _, reports) -> reports) checked @ across in
           print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
-          if format = Check_output.Text then Option.iter prerr_endline (Rapid_typing.Check.unknown_summary result);
-          if List.exists (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports then exit_static_error
+          if format = Check_output.Text then
+            List.iter (fun (name, _, result, _) ->
+                Option.iter (fun s -> prerr_endline (if name = "" then s else "task " ^ name ^ ": " ^ s))
+                  (Rapid_typing.Check.unknown_summary result)) checked;
+          if List.exists is_error reports then exit_static_error
           else exit_ok)
   in
   let doc = "check RAPID modules, as one task buffer, against the static semantics" in
@@ -211,10 +240,14 @@ let check_cmd =
         on an indented next line where one helps; independent errors are all reported in one \
         run. $(b,--format json) and $(b,--format sarif) write them all to standard output \
         instead. A FILE $(b,-) is standard input.";
+    `P "With $(b,--task NAME=FILE,...) (repeated), checks several task buffers instead, as \
+        $(b,rapid-sem run --task) loads them: each on its own, then, when none has an error, \
+        together: a system-global persistent declared with another type than in an earlier \
+        task is an error at the later declaration (chapter 14).";
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
-  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ allow_unknown $ strict $ format $ io_arg $ Motion_cmd.robot_arg)
+  Cmd.v (Cmd.info "check" ~doc ~man) Term.(const run $ files $ tasks $ allow_unknown $ strict $ format $ io_arg $ Motion_cmd.robot_arg)
 
 (* ------------------------------------------------------------------ run and trace *)
 
@@ -511,27 +544,36 @@ let with_task name = function
 let task_ends ts =
   List.iter (fun (name, cfg) ->
       print_line (Yojson.Safe.to_string
-                    (match outcome_json (M.outcome cfg) (M.steps cfg) with
+                    (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
 
-let run_tasks ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
+let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
   start_tasks ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth retry_limit controller robot @@ fun ts names ->
       if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
+      (* --samples: the motion task's robot, as the one clock passes the samples; each
+         tcp-sample names the motion task. *)
+      let robot_task = List.find_opt (fun (_, cfg) -> Rapid_controller.World.motion_task (M.world cfg)) (TS.tasks ts) in
+      let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
+      let print_samples l =
+        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Yojson.Safe.to_string (with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
           | None -> ()
           | Some (name, _, events) ->
               report_stubbed events;
+              Option.iter (fun s -> Option.iter (fun (_, cfg) ->
+                  print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
               List.iter (fun (e : M.event) ->
                   if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
       loop ();
+      Option.iter (fun s -> Option.iter (fun (_, cfg) -> print_samples (Motion_cmd.final_samples s cfg)) robot_task) sampler;
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
@@ -577,8 +619,9 @@ let run_cmd =
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
       else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)
-      else if save <> None || samples <> None then (prerr_endline "rapid-sem: --save and --samples run one task: not with --task"; exit_static_error)
-      else run_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
+      else if save <> None then (prerr_endline "rapid-sem: --save runs one task: not with --task"; exit_static_error)
+      else match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
+      run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
     else single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
@@ -708,8 +751,9 @@ let trace_cmd =
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
     guard @@ fun () ->
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    (* One task ([single]), or several (--task): [next] the task about to step (its name with
-       several), [do_step] its step. *)
+    (* One task, or several (--task): [next] the task about to step (its name with
+       several), [do_step] its step, [single] the task whose robot --samples samples (the one
+       task, or the motion task). *)
     let body ~next ~do_step ~outcome ~steps ~single ~entry_at =
     let sampler = match samples, single with Some hz, Some _ when format = `Jsonl -> Some (Motion_cmd.sampler hz) | _ -> None in
     let contains s p =
@@ -834,9 +878,10 @@ let trace_cmd =
         (* The error in flight, for error-handled, also from the steps --from and --to leave out. *)
         List.iter note_error events;
         let st = TV.after view before cfg answer in
-        let samples () = match sampler with
-          | Some s -> Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (M.world cfg))
-          | None -> [] in
+        (* The robot sampled is [single]'s: the one task's, or with several the motion task's. *)
+        let samples () = match sampler, single with
+          | Some s, Some robot -> Motion_cmd.samples s (M.motion robot) ~until:(Rapid_controller.World.now (M.world robot))
+          | _ -> [] in
         (match level with
          | `Reduction -> reduction_step task st region kind stack samples
          | `Statement ->
@@ -856,15 +901,15 @@ let trace_cmd =
     finish outcome steps ~max_steps
     in
     if tasks <> [] then begin
-      if samples <> None then
-        (prerr_endline "rapid-sem: trace --task: not with --samples (one task's robot)"; exit_static_error)
-      else
         let module TS = Rapid_semantics.Task_set in
         start_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json:false allow_unknown max_depth retry_limit controller robot
         @@ fun ts _ ->
+        (* --samples: the motion task's robot. *)
+        let robot_task = List.find_map (fun (_, cfg) -> if Rapid_controller.World.motion_task (M.world cfg) then Some cfg else None)
+            (TS.tasks ts) in
         body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
           ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
-          ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:None
+          ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:robot_task
           ~entry_at:(fun () -> None)
     end
     else

@@ -109,8 +109,12 @@ let test_trace () =
       match String.index_opt l ' ' with Some i when l.[0] = 'T' -> Some (String.sub l 0 i) | _ -> None) (lines out) in
   Alcotest.(check (list string)) "the tasks of the statement lines"
     [ "T_ROB1"; "T_B"; "T_ROB1"; "T_ROB1"; "T_B"; "T_B"; "T_B"; "T_ROB1"; "T_ROB1"; "T_B" ] tasks_of_lines;
-  let _, status = run ("trace" :: "--samples" :: "10" :: shake_args dir) in
-  Alcotest.(check int) "--samples with --task: exit 2" 2 status
+  let out, status = run ("trace" :: "--format" :: "jsonl" :: "--samples" :: "10" :: shake_args dir) in
+  Alcotest.(check int) "--samples with --task: exit 0" 0 status;
+  (* The motion task's robot, T_ROB1's, stands still: a sample at 0 s at least. *)
+  Alcotest.(check bool) "tcp-sample of the motion task's robot" true
+    (List.exists (fun l -> try ignore (Str.search_forward (Str.regexp_string "\"tcp-sample\"") l 0); true
+                   with Not_found -> false) (lines out))
 
 let turns_a = {|MODULE turns_a
   PROC main()
@@ -201,6 +205,144 @@ let test_worlds () =
   ignore (W.sync_arrive b "Meet");
   Alcotest.(check int) "B has" 1 (W.sync_arrivals a "meet" ~task:"T_B")
 
+(* The task-end object of each task (doc/trace-format.md): a task the run's deadlock caught says
+   "deadlock" and what it waits for; one cut by the time limit of the run, "exhausted"; one that
+   ended, "ended". *)
+let test_task_ends () =
+  let dir = temp_dir () in
+  let outcome_of out task =
+    List.find_map (fun l ->
+        match Yojson.Safe.from_string l with
+        | `Assoc f when List.assoc_opt "event" f = Some (`String "task-end") && List.assoc_opt "task" f = Some (`String task) ->
+            Some ((match List.assoc_opt "outcome" f with Some (`String o) -> o | _ -> ""),
+                  (match List.assoc_opt "reason" f with Some (`String r) -> r | _ -> ""))
+        | _ -> None) (lines out) in
+  let contains s sub = try ignore (Str.search_forward (Str.regexp_string sub) s 0); true with Not_found -> false in
+  let w = write dir "w.mod" "MODULE mw\n  PERS bool lock := TRUE;\n  PROC main()\n    WaitTestAndSet lock;\n  ENDPROC\nENDMODULE\n" in
+  let e = write dir "e.mod" "MODULE me\n  PROC main()\n  ENDPROC\nENDMODULE\n" in
+  let out, status = run [ "run"; "--json"; "--task"; "A=" ^ w; "--task"; "B=" ^ e ] in
+  Alcotest.(check int) "a deadlock: exit 3" 3 status;
+  (match outcome_of out "A" with
+   | Some ("deadlock", r) -> Alcotest.(check bool) "A says what it waits for" true (contains r "the task waits for a semaphore")
+   | _ -> Alcotest.fail "A's task-end is not a deadlock");
+  Alcotest.(check (option string)) "B ended" (Some "ended") (Option.map fst (outcome_of out "B"));
+  let p = write dir "p.mod" "MODULE mp\n  PERS bool go := FALSE;\n  PROC main()\n    WaitUntil go;\n  ENDPROC\nENDMODULE\n" in
+  let out, status = run [ "run"; "--json"; "--max-time"; "2"; "--task"; "A=" ^ p; "--task"; "B=" ^ e ] in
+  Alcotest.(check int) "the time limit: exit 3" 3 status;
+  Alcotest.(check (option string)) "A cut by the time limit" (Some "exhausted") (Option.map fst (outcome_of out "A"));
+  Alcotest.(check (option string)) "B ended before" (Some "ended") (Option.map fst (outcome_of out "B"))
+
+(* R-14-n: while a task waits on a socket for a peer on the host, its traps run and the other
+   task goes on, and the virtual clock follows the host's. The client sends after 0.6 s. *)
+let socket_server port = Printf.sprintf {|MODULE sock_a
+  VAR socketdev server;
+  VAR socketdev peer;
+  VAR string text;
+  VAR intnum tick;
+  VAR num ticks := 0;
+  VAR clock c;
+  PROC main()
+    SocketCreate server;
+    SocketBind server, "127.0.0.1", %d;
+    SocketListen server;
+    SocketAccept server, peer \Time := 10;
+    CONNECT tick WITH on_tick;
+    ITimer 0.1, tick;
+    ClkStart c;
+    SocketReceive peer \Str := text \Time := 10;
+    IDelete tick;
+    TPWrite "received " + text;
+    TPWrite "ticks " \Num := ticks;
+    TPWrite "waited " \Num := ClkRead(c);
+    SocketClose peer;
+    SocketClose server;
+  ENDPROC
+  TRAP on_tick
+    ticks := ticks + 1;
+  ENDTRAP
+ENDMODULE
+|} port
+
+let other_task = {|MODULE sock_b
+  PROC main()
+    FOR i FROM 1 TO 3 DO
+      WaitTime 0.1;
+      TPWrite "B tick";
+    ENDFOR
+  ENDPROC
+ENDMODULE
+|}
+
+let test_socket_wait () =
+  let dir = temp_dir () in
+  let s0 = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+  Unix.bind s0 (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
+  let port = match Unix.getsockname s0 with Unix.ADDR_INET (_, p) -> p | _ -> 0 in
+  Unix.close s0;
+  let a = write dir "a.mod" (socket_server port) and b = write dir "b.mod" other_task in
+  let out = Filename.concat dir "out.txt" in
+  let fd = Unix.openfile out [ O_WRONLY; O_CREAT; O_TRUNC ] 0o600 in
+  let devnull = Unix.openfile "/dev/null" [ O_RDWR ] 0 in
+  let pid = Unix.create_process binary [| binary; "run"; "--task"; "T_ROB1=" ^ a; "--task"; "T_B=" ^ b |] devnull fd devnull in
+  Unix.close fd; Unix.close devnull;
+  let deadline = Unix.gettimeofday () +. 10. in
+  let rec connect () =
+    let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+    match Unix.connect s (Unix.ADDR_INET (Unix.inet_addr_loopback, port)) with
+    | () -> s
+    | exception Unix.Unix_error (Unix.ECONNREFUSED, _, _) when Unix.gettimeofday () < deadline ->
+        Unix.close s; Unix.sleepf 0.05; connect () in
+  let s = connect () in
+  Unix.sleepf 0.6;
+  ignore (Unix.write_substring s "hi" 0 2);
+  let _, status = Unix.waitpid [] pid in
+  Unix.close s;
+  Alcotest.(check bool) "exit 0" true (status = Unix.WEXITED 0);
+  let ic = open_in_bin out in
+  let o = lines (really_input_string ic (in_channel_length ic)) in
+  close_in ic;
+  Alcotest.(check (list string)) "B ran while A waited" [ "B tick"; "B tick"; "B tick" ]
+    (List.filteri (fun i _ -> i < 3) o);
+  Alcotest.(check string) "the data" "received hi" (List.nth o 3);
+  let number prefix line =
+    float_of_string (String.sub line (String.length prefix) (String.length line - String.length prefix)) in
+  let ticks = number "ticks " (List.nth o 4) and waited = number "waited " (List.nth o 5) in
+  Alcotest.(check bool) (Printf.sprintf "traps during the wait (%g)" ticks) true (ticks >= 3.);
+  Alcotest.(check bool) (Printf.sprintf "the virtual clock followed the host (%g s)" waited) true
+    (waited >= 0.3 && waited < 5.)
+
+(* check --task judges the buffers as run --task loads them: every case of spec/14-tasks that
+   expects a semantic error is refused by check --task, and no other case is (R-14-c). *)
+let test_check_agrees () =
+  let dir = "../spec/14-tasks" in
+  let cases = Sys.readdir dir |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".task")
+              |> List.sort compare in
+  Alcotest.(check bool) "cases found" true (List.length cases > 10);
+  List.iter (fun case ->
+      let folder = Filename.concat dir case in
+      let files = Sys.readdir folder |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".mod")
+                  |> List.sort compare in
+      let directive file key =
+        let ic = open_in_bin (Filename.concat folder file) in
+        let text = really_input_string ic (in_channel_length ic) in
+        close_in ic;
+        let prefix = "! @" ^ key ^ " " in
+        List.find_map (fun l ->
+            let l = String.trim l in
+            if String.length l > String.length prefix && String.sub l 0 (String.length prefix) = prefix then
+              Some (String.sub l (String.length prefix) (String.length l - String.length prefix))
+            else None) (String.split_on_char '\n' text) in
+      let tasks = List.fold_left (fun acc f ->
+          let t = Option.get (directive f "task") in
+          if List.mem_assoc t acc then List.map (fun (n, fs) -> if n = t then (n, fs @ [ f ]) else (n, fs)) acc
+          else acc @ [ (t, [ f ]) ]) [] files in
+      let refused = List.exists (fun f -> match directive f "expect" with
+          | Some e -> String.length e > 14 && String.sub e 0 14 = "semantic-error" | None -> false) files in
+      let args = List.concat_map (fun (n, fs) ->
+          [ "--task"; n ^ "=" ^ String.concat "," (List.map (Filename.concat folder) fs) ]) tasks in
+      let _, status = run ("check" :: args) in
+      Alcotest.(check int) (case ^ ": check --task") (if refused then 2 else 0) status) cases
+
 let suite =
   ( "tasks",
     [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
@@ -209,4 +351,7 @@ let suite =
       Alcotest.test_case "SplitMix64" `Quick test_splitmix;
       Alcotest.test_case "the worlds of two tasks" `Quick test_worlds;
       Alcotest.test_case "trace --task" `Quick test_trace;
-      Alcotest.test_case "refusals and deadlock" `Quick test_refusals ] )
+      Alcotest.test_case "refusals and deadlock" `Quick test_refusals;
+      Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
+      Alcotest.test_case "task-end outcomes" `Quick test_task_ends;
+      Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait ] )

@@ -129,6 +129,20 @@ let wait_for ?(write = false) fd timeout =
   let ready = go () in
   (ready, Unix.gettimeofday () -. start)
 
+(* R-14-n: whether a blocking call on the socket would go on at once, looking for at most
+   [within] host seconds; a socket no call can wait on (closed, not connected, ...) counts as
+   ready, so that the call itself reports why. *)
+let readable t id ~within =
+  match find t id with
+  | Error _ -> true
+  | Ok s when s.status = Listening || s.status = Connected || (s.udp && s.status = Bound) ->
+      if within > 0. then fst (wait_for s.fd within)
+      else (match Unix.select [ s.fd ] [] [] 0. with
+          | [], _, _ -> false
+          | _ -> true
+          | exception Unix.Unix_error _ -> true)
+  | Ok _ -> true
+
 let text_of = function Unix.ADDR_INET (a, _) -> Unix.string_of_inet_addr a | Unix.ADDR_UNIX p -> p
 
 let accept t id ~timeout =

@@ -45,6 +45,11 @@ val receive : t -> int -> max:int -> exact:bool -> timeout:float -> (string, str
 (** At most [max] bytes, at least one; with [exact], exactly [max] (\ReadNoOfBytes). *)
 
 val receive_from : t -> int -> max:int -> timeout:float -> (string * string * int, string) result * float
+val readable : t -> int -> within:float -> bool
+(** Whether SocketAccept, SocketReceive or SocketReceiveFrom on this socket would go on at once
+    (a connection or data waits, or the peer closed), looking for at most [within] host seconds;
+    [true] too for a socket no call can wait on, whose call reports the error. *)
+
 val peek : t -> int -> (int, string) result
 val close : t -> int -> unit
 val close_all : t -> unit

@@ -60,6 +60,7 @@ and shared = {
   mutable sequence : int;
   mutable members : t list;                    (* the tasks, in order of their numbers *)
   syncs : (string, int) Hashtbl.t;             (* WaitSyncTask: (sync point, task) -> arrivals *)
+  sync_moves : (string, string list) Hashtbl.t; (* SyncMoveOn: task -> the task list it synchronises with *)
 }
 
 and t = {
@@ -98,7 +99,8 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
     ?(epoch = default_epoch) (config : Io_config.t) =
   let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
-  let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4 } in
+  let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4;
+            sync_moves = Hashtbl.create 2 } in
   let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
@@ -384,3 +386,13 @@ let sync_arrive w point =
   Hashtbl.replace w.c.syncs k n; n
 
 let sync_arrivals w point ~task = Option.value (Hashtbl.find_opt w.c.syncs (sync_key point task)) ~default:0
+
+(* R-14-m: a task is in synchronized movement from its SyncMoveOn until SyncMoveOff or
+   SyncMoveUndo; the list is the one its SyncMoveOn named, which its SyncMoveOff meets. *)
+let sync_move w = Hashtbl.find_opt w.c.sync_moves (String.lowercase_ascii w.task_name)
+
+let set_sync_move w tasks =
+  let k = String.lowercase_ascii w.task_name in
+  match tasks with
+  | Some l -> Hashtbl.replace w.c.sync_moves k l
+  | None -> Hashtbl.remove w.c.sync_moves k

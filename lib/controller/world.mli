@@ -212,3 +212,9 @@ val sync_arrive : t -> string -> int
 
 val sync_arrivals : t -> string -> task:string -> int
 (** How many times the task of that name has reached the synchronisation point. *)
+
+val sync_move : t -> string list option
+(** SyncMoveOn (doc/rulings.md R-14-m): the task list this task is in synchronized movement
+    with, or [None] (independent movement). *)
+
+val set_sync_move : t -> string list option -> unit

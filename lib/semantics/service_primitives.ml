@@ -256,6 +256,45 @@ let timeout ctx args =
 
 let waited ctx seconds = W.advance_to ctx.world (W.now ctx.world +. seconds)
 
+(* R-14-n: a blocking call (SocketAccept, SocketReceive, SocketReceiveFrom) that cannot go on at
+   once is a waiting instruction: interrupts are served while it waits (§8) and, with several
+   tasks, the others run. Its wait keeps the virtual clock within [socket_slice] of the host's:
+   each look first waits on the host until the host has waited as long as the virtual clock
+   moved since the call, then lets the clock move on by one slice at most; data that comes moves
+   the clock on by the host time the host waited beyond it. The call itself runs when the socket
+   is ready, \Time on the virtual clock. *)
+let socket_slice = 0.02   (* §8: a response to an interrupt is 2-30 ms late *)
+
+let blocking ctx ~what id ~timeout (call : timeout:float -> outcome) =
+  let w = ctx.world and k = sockets ctx in
+  if K.readable k id ~within:0. then call ~timeout
+  else begin
+    let start = W.now w and host_start = Unix.gettimeofday () in
+    let deadline = start +. timeout in
+    (* One Wake at a time: with several tasks the socket is looked at every turn. *)
+    let next_look = ref (Float.min deadline (start +. socket_slice)) in
+    W.wake_at w !next_look;
+    Wait { W.what = what; deadline = Some deadline; poll = None;
+           satisfied = (fun () ->
+               let host () = Unix.gettimeofday () -. host_start in
+               let ready = K.readable k id ~within:((W.now w -. start) -. host ()) in
+               let now = W.now w in
+               if ready then begin
+                 let ahead = Float.min (start +. host ()) deadline in
+                 if ahead > now then W.advance_to w ahead
+               end
+               else if now < deadline && now >= !next_look then begin
+                 next_look := Float.min deadline (now +. socket_slice);
+                 W.wake_at w !next_look
+               end;
+               ready);
+           finish = (fun ~timed_out ->
+               if timed_out then Some "ERR_SOCK_TIMEOUT"
+               else match call ~timeout:(Float.max socket_slice (deadline -. W.now w)) with
+                 | Failed e -> Some e
+                 | _ -> None) }
+  end
+
 (* The bytes SocketSend sends: \Str, \RawData or \Data, cut to \NoOfBytes. *)
 let send_data ctx args =
   let* data =
@@ -553,7 +592,9 @@ let call (ctx : context) name args =
   | "socketaccept" ->
       Some (
         let* timeout = timeout ctx args in
-        let r, w = K.accept (sockets ctx) (object_id ctx args "Socket") ~timeout in
+        let id = object_id ctx args "Socket" in
+        blocking ctx ~what:"a client at the socket (SocketAccept)" id ~timeout @@ fun ~timeout ->
+        let r, w = K.accept (sockets ctx) id ~timeout in
         waited ctx w;
         let* client, address = r in
         let old = object_id ctx args "ClientSocket" in
@@ -583,7 +624,9 @@ let call (ctx : context) name args =
         let* target, capacity = receive_target ctx args in
         let* max, exact = receive_size ctx args capacity in
         let* timeout = timeout ctx args in
-        let r, w = K.receive (sockets ctx) (object_id ctx args "Socket") ~max ~exact ~timeout in
+        let id = object_id ctx args "Socket" in
+        blocking ctx ~what:"data at the socket (SocketReceive)" id ~timeout @@ fun ~timeout ->
+        let r, w = K.receive (sockets ctx) id ~max ~exact ~timeout in
         waited ctx w;
         let* data = r in
         deliver ctx args target data; done_)
@@ -592,7 +635,9 @@ let call (ctx : context) name args =
         let* target, capacity = receive_target ctx args in
         let* max, _ = receive_size ctx args capacity in
         let* timeout = timeout ctx args in
-        let r, w = K.receive_from (sockets ctx) (object_id ctx args "Socket") ~max ~timeout in
+        let id = object_id ctx args "Socket" in
+        blocking ctx ~what:"data at the socket (SocketReceiveFrom)" id ~timeout @@ fun ~timeout ->
+        let r, w = K.receive_from (sockets ctx) id ~max ~timeout in
         waited ctx w;
         let* data, address, port = r in
         deliver ctx args target data;

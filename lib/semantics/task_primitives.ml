@@ -15,7 +15,7 @@ let motion_instructions = [
   "StartMove"; "StopMoveReset"; "ClearPath"; "StorePath"; "RestoPath"; "WaitRob"; "StartMoveRetry";
 ]
 
-let names = [ "GetTaskName"; "WaitSyncTask" ]
+let names = [ "GetTaskName"; "WaitSyncTask"; "SyncMoveOn"; "SyncMoveOff"; "SyncMoveUndo"; "IsSyncMoveOn" ]
 
 let modelled name = List.exists (same name) names
 
@@ -28,12 +28,41 @@ let task_list = function
       | _ -> None)
   | _ -> None
 
+(* A synchronisation point (R-14-f, R-14-m): the point is the syncident object's name, the same
+   in every task. Each task counts its arrivals; the wait ends when every task of the list has
+   arrived as often as this one. With [in_pos] the task arrives only once its robot stands
+   still. [met] runs when the tasks have met, not on a time-out. *)
+let meet ~standstill ctx args ~instruction ~tasks ~in_pos ~timeout_error ~met =
+  let w = ctx.world in
+  let point = Option.value (ctx.argument_label "SyncID") ~default:"" in
+  let installed = W.task_names w in
+  if List.exists (fun t -> not (List.exists (same t) installed)) tasks then Some (Failed "ERR_TASKNAME")
+  else
+    match named_num ctx args "TimeOut" with
+    | Some t when t < 0. || not (Float.is_finite t) -> Some (Failed "ERR_ARGVALERR")
+    | timeout ->
+        let reached t = W.seconds (W.now w) >= W.seconds t in
+        let round = ref 0 in
+        let arrive () =
+          if !round > 0 then true
+          else
+            let t = standstill () in
+            if (not in_pos) || t = neg_infinity || reached t then (round := W.sync_arrive w point; true)
+            else (W.wake_at w t; false) in
+        let satisfied () = arrive () && List.for_all (fun t -> W.sync_arrivals w point ~task:t >= !round) tasks in
+        let deadline = Option.map (fun t -> W.now w +. t) timeout in
+        if satisfied () then (met (); Some (Returned None))
+        else
+          Some (Wait { W.what = Printf.sprintf "the tasks %s at %s (%s)" (String.concat ", " tasks) point instruction;
+                       satisfied; deadline; poll = None;
+                       finish = (fun ~timed_out -> if timed_out then Some timeout_error else (met (); None)) })
+
 let call ?(standstill = fun () -> neg_infinity) ctx name args =
   let w = ctx.world in
-  (* Every primitive call passes here: in the motion task, only the two routines of this module
-     (11 and 12 characters long) need a look. *)
+  (* Every primitive call passes here: in the motion task, only the routines of this module
+     (10 to 12 characters long) need a look. *)
   let n = String.length name in
-  if W.motion_task w && n <> 11 && n <> 12 then None
+  if W.motion_task w && (n < 10 || n > 12) then None
   else if (not (W.motion_task w)) && List.exists (same name) motion_instructions then Some (Failed "ERR_NOT_MOVETASK")
   else if same name "GetTaskName" then begin
     (* R-14-d: \TaskNo the task's own number; \MecTaskNo the motion task's name and number. *)
@@ -52,33 +81,36 @@ let call ?(standstill = fun () -> neg_infinity) ctx name args =
   end
   else if same name "WaitSyncTask" then begin
     (* The meeting point is the syncident object's name: the same name in every task (R-14-f). *)
-    let point = Option.value (ctx.argument_label "SyncID") ~default:"" in
     match task_list (named_argument ctx args "TaskList") with
     | None -> Some (Failed "ERR_ARGVALERR")
     | Some tasks ->
-        let installed = W.task_names w in
-        if List.exists (fun t -> not (List.exists (same t) installed)) tasks then Some (Failed "ERR_TASKNAME")
-        else begin
-          (* \InPos in the motion task: the robot stands still before the task arrives (R-14-f). *)
-          let in_pos = named_present ctx args "InPos" && W.motion_task w in
-          let reached t = W.seconds (W.now w) >= W.seconds t in
-          let round = ref 0 in
-          let arrive () =
-            if !round > 0 then true
-            else
-              let t = standstill () in
-              if (not in_pos) || t = neg_infinity || reached t then (round := W.sync_arrive w point; true)
-              else (W.wake_at w t; false) in
-          let satisfied () = arrive () && List.for_all (fun t -> W.sync_arrivals w point ~task:t >= !round) tasks in
-          let deadline = Option.map (fun t -> W.now w +. t) (named_num ctx args "TimeOut") in
-          match named_num ctx args "TimeOut" with
-          | Some t when t < 0. || not (Float.is_finite t) -> Some (Failed "ERR_ARGVALERR")
-          | _ ->
-              if satisfied () then Some (Returned None)
-              else
-                Some (Wait { W.what = Printf.sprintf "the tasks %s at %s (WaitSyncTask)" (String.concat ", " tasks) point;
-                             satisfied; deadline; poll = None;
-                             finish = (fun ~timed_out -> if timed_out then Some "ERR_WAITSYNCTASK" else None) })
-        end
+        (* \InPos in the motion task: the robot stands still before the task arrives (R-14-f). *)
+        let in_pos = named_present ctx args "InPos" && W.motion_task w in
+        meet ~standstill ctx args ~instruction:"WaitSyncTask" ~tasks ~in_pos ~timeout_error:"ERR_WAITSYNCTASK"
+          ~met:ignore
   end
+  else if same name "SyncMoveOn" then begin
+    (* R-14-m: a synchronisation point as WaitSyncTask's, at which the robot stands still; the
+       task is then in synchronized movement with the tasks of the list. *)
+    match task_list (named_argument ctx args "TaskList") with
+    | None -> Some (Failed "ERR_ARGVALERR")
+    | Some _ when W.sync_move w <> None -> Some (Failed "ERR_SYNCMOVEON")
+    | Some tasks ->
+        meet ~standstill ctx args ~instruction:"SyncMoveOn" ~tasks ~in_pos:(W.motion_task w)
+          ~timeout_error:"ERR_SYNCMOVEON" ~met:(fun () -> W.set_sync_move w (Some tasks))
+  end
+  else if same name "SyncMoveOff" then begin
+    (* R-14-m: the tasks of SyncMoveOn's list meet again, and each goes back to independent
+       movement. *)
+    match W.sync_move w with
+    | None -> Some (Failed "ERR_SYNCMOVEOFF")
+    | Some tasks ->
+        meet ~standstill ctx args ~instruction:"SyncMoveOff" ~tasks ~in_pos:(W.motion_task w)
+          ~timeout_error:"ERR_SYNCMOVEOFF" ~met:(fun () -> W.set_sync_move w None)
+  end
+  else if same name "SyncMoveUndo" then begin
+    (* R-14-m: independent movement at once, meeting no one. *)
+    W.set_sync_move w None; Some (Returned None)
+  end
+  else if same name "IsSyncMoveOn" then Some (Returned (Some (V.Bool (W.sync_move w <> None))))
   else None

@@ -1,6 +1,7 @@
 (** The installed routines of several tasks (ch. 14; doc/semantics.md, "Several tasks"):
-    GetTaskName, WaitSyncTask, and ERR_NOT_MOVETASK for a motion instruction in a task that is
-    not the motion task (doc/rulings.md R-14-d to R-14-f). *)
+    GetTaskName, WaitSyncTask, SyncMoveOn, SyncMoveOff, SyncMoveUndo, IsSyncMoveOn, and
+    ERR_NOT_MOVETASK for a motion instruction in a task that is not the motion task
+    (doc/rulings.md R-14-d to R-14-f, R-14-m). *)
 
 val call :
   ?standstill:(unit -> float) -> Primitive.context -> string -> Primitive.argument array ->

@@ -264,3 +264,14 @@ let outcome s =
       | None -> M.Ended)
 
 let world s = s.world
+
+(* A task the scheduler's end of the run caught still running has no end of its own: in a
+   deadlock it is deadlocked, waiting for what it waits for; at the time limit of the whole run,
+   cut by it. Only the step limit leaves it running (doc/trace-format.md, task-end). *)
+let task_outcome s cfg =
+  match M.outcome cfg, s.ended with
+  | M.Running, Some (M.Deadlock _) ->
+      M.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, and no task or event can end the wait"
+                    (W.now s.world) (Option.value (M.waiting_for cfg) ~default:"a wait"))
+  | M.Running, Some o -> o
+  | o, _ -> o

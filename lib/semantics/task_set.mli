@@ -40,6 +40,12 @@ val outcome : t -> Machine.outcome
 (** [Running] while a task runs; then a deadlock or the time limit of the whole run, else the
     outcome of the first task (in order) that did not end normally, else [Ended]. *)
 
+val task_outcome : t -> Machine.config -> Machine.outcome
+(** The outcome of one task of the run: its own, once it ended; a task still running when the
+    scheduler ended the run is in a [Deadlock] that says what the task waits for, or in the
+    run's [Resource_exhausted] (its time limit); [Running] only while the run goes on or after
+    the step limit. *)
+
 val tasks : t -> (string * Machine.config) list
 val steps : t -> int
 val world : t -> Rapid_controller.World.t

@@ -1,0 +1,1 @@
+check --task T_ROB1=tasks-robot.mod tasks-cell.mod

@@ -1,0 +1,1 @@
+run --task T_ROB1=tasks-robot.mod --task T_B=tasks-cell.mod
