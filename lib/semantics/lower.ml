@@ -431,11 +431,17 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
 let module_name (m : A.module_declaration) =
   match m.module_name.it with Ident s -> s | ID_placeholder -> "<ID>"
 
-let program ~installed ~modules (elab : E.t) : Ir.program =
-  let all = List.map (fun m -> (m, true)) installed @ List.map (fun m -> (m, false)) modules in
-  let ctx = { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-              locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
-              routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64 } in
+(* The routines and module data of some modules, numbered from [routine_base] and
+   [global_base]: the installed modules first, then the task's, as the program lists them. *)
+type part = {
+  part_routines : Ir.routine array;
+  part_globals : Ir.global array;
+  part_decls : (A.module_declaration * Env.data_object) list;   (* the globals' declarations *)
+  part_local_names : string array array;
+}
+
+let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * bool) list) =
+  let elab = ctx.elab in
   (* Routine and global numbering first: bodies and initial values refer to any of them. *)
   let routine_decls = concat_long (list_long (fun ((m : A.module_declaration), inst) ->
       List.filter_map (fun (r : A.routine_declaration) ->
@@ -447,7 +453,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
       match Hashtbl.find_opt elab.declared name.at with
-      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region i
+      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region (routine_base + i)
       | _ -> ()) routine_decls;
   let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
@@ -457,20 +463,64 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
-  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region i) global_decls;
+  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region (global_base + i))
+    global_decls;
+  ctx.routine_now <- -1;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
       { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
         g_read_only = obj.d_kind = Read_only_variable; g_at = obj.d_region }) global_decls in
   let local_names = ref [] in
   let routines = Array.mapi (fun i (m, inst, r, _) ->
-      ctx.routine_now <- i;
+      ctx.routine_now <- routine_base + i;
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r ->
           local_names := Array.init r.locals (fun s ->
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
           r
       | None -> assert false) (Array.of_list routine_decls) in
-  let local_names = Array.of_list (List.rev !local_names) in
+  { part_routines = routines; part_globals = globals; part_decls = global_decls;
+    part_local_names = Array.of_list (List.rev !local_names) }
+
+let new_ctx elab =
+  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
+    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+    routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64 }
+
+(* The installed modules' part is the same for every task (its names are bound by the installed
+   level alone, and it comes first), so it is lowered once and shared: the last installed
+   environment lowered is kept, compared physically, with the tables its lowering filled. The
+   Ir is immutable, so tasks may share it. *)
+let installed_cache : (A.module_declaration list * part * ctx) option ref = ref None
+
+let installed_part ~installed (elab : E.t) =
+  let fresh () =
+    let ctx = new_ctx elab in
+    let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed) in
+    installed_cache := Some (installed, part, ctx);
+    (part, ctx) in
+  match !installed_cache with
+  | Some (l, part, c) when l == installed -> (
+      (* The elaboration must be one whose installed part is that of the cache: the same
+         objects for the installed declarations (a check that shares its installed half). *)
+      match installed with
+      | [] -> (part, c)
+      | _ ->
+          let same = List.for_all (fun (_, (obj : Env.data_object)) ->
+              match Hashtbl.find_opt elab.declared obj.d_region with
+              | Some (Data o) -> o == obj
+              | _ -> false) part.part_decls in
+          if same then (part, c) else fresh ())
+  | _ -> fresh ()
+
+let program ~installed ~modules (elab : E.t) : Ir.program =
+  let inst, c = installed_part ~installed elab in
+  let ctx = { c with elab; routine_index = Hashtbl.copy c.routine_index; global_index = Hashtbl.copy c.global_index;
+                     component_names = Hashtbl.copy c.component_names } in
+  let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
+      ~global_base:(Array.length inst.part_globals) (List.map (fun m -> (m, false)) modules) in
+  let routines = Array.append inst.part_routines user.part_routines in
+  let globals = Array.append inst.part_globals user.part_globals in
+  let local_names = Array.append inst.part_local_names user.part_local_names in
   let find_global name =
     let rec go i = if i >= Array.length globals then 0
       else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
@@ -484,7 +534,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
             | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
             | Error _ -> None)
         | _ -> None
-      else None) (List.filter (fun ((m : A.module_declaration), _) -> List.memq m installed) global_decls) in
+      else None) inst.part_decls in
   let entry_points = List.filter_map (fun x -> x)
       (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
            if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, i) else None) routines)) in

@@ -20,3 +20,10 @@ let create () = {
   bindings = Hashtbl.create 256; aggregates = Hashtbl.create 256;
   late_arguments = Hashtbl.create 16;
 }
+
+let copy e = {
+  names = Hashtbl.copy e.names; declared = Hashtbl.copy e.declared; components = Hashtbl.copy e.components;
+  binary = Hashtbl.copy e.binary; unary = Hashtbl.copy e.unary; dnum_literals = Hashtbl.copy e.dnum_literals;
+  bindings = Hashtbl.copy e.bindings; aggregates = Hashtbl.copy e.aggregates;
+  late_arguments = Hashtbl.copy e.late_arguments;
+}

@@ -35,3 +35,6 @@ type t = {
 }
 
 val create : unit -> t
+
+val copy : t -> t
+(** Tables that start with the entries of the given ones and are changed apart from them. *)
