@@ -1,4 +1,4 @@
-(* Where a generated program's time goes (bench/README.md, "Fuzzing throughput"): each phase of
+(* Where a generated program's processor time goes (bench/README.md, "Fuzzing throughput"): each phase of
    what [rapid-sem fuzz] does to a program, timed alone over the same programs, then the whole
    of Fuzz_run.check_program with both engines, in programs per second on one core. *)
 
@@ -12,9 +12,9 @@ let seed = ref 1
 let time name n f =
   Gc.compact ();
   let minor0 = (Gc.quick_stat ()).minor_words in
-  let t0 = Unix.gettimeofday () in
+  let t0 = Sys.time () in
   let r = f () in
-  let dt = Unix.gettimeofday () -. t0 in
+  let dt = Sys.time () -. t0 in
   let words = (Gc.quick_stat ()).minor_words -. minor0 in
   Printf.printf "  %-34s %8.3f ms/program  %9.0f programs/s  %8.0f kwords/program\n%!" name
     (1000. *. dt /. float n) (float n /. dt) (words /. 1000. /. float n);

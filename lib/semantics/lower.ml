@@ -28,7 +28,17 @@ type ctx = {
   mutable routine_now : int;
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
+  installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
+      (* the routine and global numbers of the installed part, when it is shared (below) *)
 }
+
+let index table installed region =
+  match Hashtbl.find_opt table region, installed with
+  | (Some _ as found), _ | (None as found), None -> found
+  | None, Some t -> Hashtbl.find_opt t region
+
+let routine_number ctx region = index ctx.routine_index (Option.map fst ctx.installed_index) region
+let global_number ctx region = index ctx.global_index (Option.map snd ctx.installed_index) region
 
 let rec name_path (p : Ir.place) =
   match p with
@@ -41,7 +51,7 @@ let slot_of ctx (d : Env.data_object) : Ir.slot option =
   match d.d_level with
   | Routine_level -> Option.map (fun i -> Ir.Local i) (Hashtbl.find_opt ctx.locals d.d_region)
   | Module_level _ | Installed_level ->
-      Option.map (fun i -> Ir.Global i) (Hashtbl.find_opt ctx.global_index d.d_region)
+      Option.map (fun i -> Ir.Global i) (global_number ctx d.d_region)
 
 (* The shape only: the value is built when the machine runs, within its memory budget. *)
 let shape_default (t : Types.object_type) =
@@ -159,7 +169,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       arguments = [||]; call_at = at } in
   match Hashtbl.find_opt ctx.elab.names name.at, Hashtbl.find_opt ctx.elab.bindings at with
   | Some (Routine r), Some binding -> (
-      match Hashtbl.find_opt ctx.routine_index r.r_region with
+      match routine_number ctx r.r_region with
       | None -> unknown ()
       | Some index ->
           let params = parameters_of r in
@@ -304,7 +314,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Connect (target, trap) -> (
       match Hashtbl.find_opt ctx.elab.names trap.at with
       | Some (Routine r) -> (
-          match Hashtbl.find_opt ctx.routine_index r.r_region with
+          match routine_number ctx r.r_region with
           | Some i -> make (Connect (place ctx target, i))
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
@@ -438,6 +448,9 @@ type part = {
   part_globals : Ir.global array;
   part_decls : (A.module_declaration * Env.data_object) list;   (* the globals' declarations *)
   part_local_names : string array array;
+  part_error_numbers : (string * int) list;   (* the ERR_ constants the part declares *)
+  part_system : (string * int) list;          (* ERRNO and INTNO, if the part declares them *)
+  part_entry_points : (string * int) list;
 }
 
 let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * bool) list) =
@@ -478,53 +491,6 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
           r
       | None -> assert false) (Array.of_list routine_decls) in
-  { part_routines = routines; part_globals = globals; part_decls = global_decls;
-    part_local_names = Array.of_list (List.rev !local_names) }
-
-let new_ctx elab =
-  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
-    routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64 }
-
-(* The installed modules' part is the same for every task (its names are bound by the installed
-   level alone, and it comes first), so it is lowered once and shared: the last installed
-   environment lowered is kept, compared physically, with the tables its lowering filled. The
-   Ir is immutable, so tasks may share it. *)
-let installed_cache : (A.module_declaration list * part * ctx) option ref = ref None
-
-let installed_part ~installed (elab : E.t) =
-  let fresh () =
-    let ctx = new_ctx elab in
-    let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed) in
-    installed_cache := Some (installed, part, ctx);
-    (part, ctx) in
-  match !installed_cache with
-  | Some (l, part, c) when l == installed -> (
-      (* The elaboration must be one whose installed part is that of the cache: the same
-         objects for the installed declarations (a check that shares its installed half). *)
-      match installed with
-      | [] -> (part, c)
-      | _ ->
-          let same = List.for_all (fun (_, (obj : Env.data_object)) ->
-              match Hashtbl.find_opt elab.declared obj.d_region with
-              | Some (Data o) -> o == obj
-              | _ -> false) part.part_decls in
-          if same then (part, c) else fresh ())
-  | _ -> fresh ()
-
-let program ~installed ~modules (elab : E.t) : Ir.program =
-  let inst, c = installed_part ~installed elab in
-  let ctx = { c with elab; routine_index = Hashtbl.copy c.routine_index; global_index = Hashtbl.copy c.global_index;
-                     component_names = Hashtbl.copy c.component_names } in
-  let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
-      ~global_base:(Array.length inst.part_globals) (List.map (fun m -> (m, false)) modules) in
-  let routines = Array.append inst.part_routines user.part_routines in
-  let globals = Array.append inst.part_globals user.part_globals in
-  let local_names = Array.append inst.part_local_names user.part_local_names in
-  let find_global name =
-    let rec go i = if i >= Array.length globals then 0
-      else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
-    go 0 in
   let error_numbers = List.filter_map (fun (_, (obj : Env.data_object)) ->
       let n = String.uppercase_ascii obj.d_name in
       if obj.d_kind = Constant && (String.length n > 4 && String.sub n 0 4 = "ERR_" || n = "LONG_JMP_ALL_ERR") then
@@ -534,9 +500,58 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
             | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
             | Error _ -> None)
         | _ -> None
-      else None) inst.part_decls in
+      else None) global_decls in
+  let system = List.filter_map (fun name ->
+      let rec go i = if i >= Array.length globals then None
+        else if String.uppercase_ascii globals.(i).Ir.g_name = name then Some (name, global_base + i) else go (i + 1) in
+      go 0) [ "ERRNO"; "INTNO" ] in
   let entry_points = List.filter_map (fun x -> x)
       (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
-           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, i) else None) routines)) in
-  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO"; error_numbers; entry_points;
+           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, routine_base + i)
+           else None) routines)) in
+  { part_routines = routines; part_globals = globals; part_decls = global_decls;
+    part_local_names = Array.of_list (List.rev !local_names);
+    part_error_numbers = error_numbers; part_system = system; part_entry_points = entry_points }
+
+let new_ctx elab =
+  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
+    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+    routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
+    installed_index = None }
+
+(* The installed modules' part is the same for every task (its names are bound by the installed
+   level alone, and it comes first), so it is lowered once and shared when the checker shares
+   the installed level's elaboration (Elaboration.installed): the last one lowered is kept, with
+   the tables its lowering filled, keyed by the installed modules and that elaboration, both
+   compared physically. The Ir is immutable, so tasks may share it. *)
+let installed_cache : (A.module_declaration list * E.t * part * ctx) option ref = ref None
+
+let installed_part ~installed (elab : E.t) =
+  let base = Option.value elab.installed ~default:elab in
+  match !installed_cache with
+  | Some (l, e, part, c) when l == installed && e == base -> (part, c)
+  | _ ->
+      let ctx = new_ctx base in
+      let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed) in
+      if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
+      (part, ctx)
+
+let program ~installed ~modules (elab : E.t) : Ir.program =
+  let inst, c = installed_part ~installed elab in
+  let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
+                     component_names = Hashtbl.copy c.component_names;
+                     installed_index = Some (c.routine_index, c.global_index) } in
+  let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
+      ~global_base:(Array.length inst.part_globals) (List.map (fun m -> (m, false)) modules) in
+  let routines = Array.append inst.part_routines user.part_routines in
+  let globals = Array.append inst.part_globals user.part_globals in
+  let local_names = Array.append inst.part_local_names user.part_local_names in
+  let find_global name =
+    let rec go i = if i >= Array.length globals then 0
+      else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
+    (* ERRNO and INTNO are installed: found among the installed globals, once *)
+    match List.assoc_opt name inst.part_system with Some i -> i | None -> go 0 in
+  let entry_points = inst.part_entry_points @ user.part_entry_points in
+  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO";
+    error_numbers = inst.part_error_numbers; entry_points;
     names = { local_names; component_names = ctx.component_names } }

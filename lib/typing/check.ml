@@ -1654,11 +1654,13 @@ let check_installed options installed =
   bodies ctx (signatures ctx infos);
   (ctx, infos)
 
-(* A copy of the environment after the first half, for a task's second half: every table the
-   second half writes to is copied; the installed modules' own tables are only read. *)
+(* The environment after the first half, for a task's second half. The second half adds
+   nothing to the installed level's table, nor to the installed modules' own tables (it registers
+   user objects in the globals), so those are shared; the tables it adds to are copied, and the task's elaboration keeps its own nodes apart
+   from the installed modules' ones (Elaboration.installed). *)
 let copy_ctx report ctx =
-  { ctx with report; installed = Env.copy_table ctx.installed; globals = Env.copy_table ctx.globals;
-             module_names = Env.copy_table ctx.module_names; elab = Elaboration.copy ctx.elab;
+  { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
+             elab = Elaboration.create ~installed:ctx.elab ();
              early_constants = Hashtbl.copy ctx.early_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
              unknown_reported = Hashtbl.copy ctx.unknown_reported; const_cache = Const_eval.copy_cache ctx.const_cache }
 
