@@ -37,9 +37,11 @@ let cmd =
   let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N" ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
   let out = Arg.(value & opt string "fuzz-failures" & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events.") in
   let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does.") in
-  let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too.") in
+  let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
+  let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
+  let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard out impl mismatching coverage =
+  let run count seed shard out impl (mismatching, matching_only, no_controller) coverage =
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
     let external_check = Option.map (fun template ->
@@ -52,7 +54,8 @@ let cmd =
             match Rapid_oracle.Oracle.check ~reference ~impl:template { name = file; files = [ file ] } with
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
-    let options = { Rapid_fuzz.Program_gen.default_options with mismatching } in
+    let options = { Rapid_fuzz.Program_gen.default_options with
+                    mismatching = mismatching || not matching_only; controller = not no_controller } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
     let s = C.run ~options ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ?external_check ?progress ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
@@ -82,4 +85,4 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ mismatching $ coverage)
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ coverage)

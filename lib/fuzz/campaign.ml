@@ -18,9 +18,19 @@ type summary = {
 
 let program_seed ~seed i = Random.State.make [| seed; i |]
 
+(* A refusal's message without its place: a smaller program refused for another reason (a BREAK
+   left outside its loop by the shrinking) is not the same failure. *)
+let without_place m =
+  let rec skip m n = if n = 0 then m else match String.index_opt m ':' with
+      | Some i -> skip (String.sub m (i + 1) (String.length m - i - 1)) (n - 1)
+      | None -> m in
+  let first = match String.index_opt m ';' with Some i -> String.sub m 0 i | None -> m in
+  skip first 3
+
 let same_class (a : Fuzz_run.failure) (b : Fuzz_run.failure) =
   match a, b with
-  | Refused _, Refused _ | Exception _, Exception _ | Stuck _, Stuck _
+  | Refused a, Refused b -> without_place a = without_place b
+  | Exception _, Exception _ | Stuck _, Stuck _
   | Nondeterministic _, Nondeterministic _ | Engines_differ _, Engines_differ _
   | Round_trip _, Round_trip _ -> true
   | _ -> false

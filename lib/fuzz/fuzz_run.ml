@@ -62,9 +62,24 @@ let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
 let reset_rule_counts () = Hashtbl.reset rule_table
 let rule_counts () = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) rule_table [])
 
+(* The outside world of every generated program (doc/oracle.md, "Fuzzing"): two digital signals
+   the generator uses, and an input that changes at fixed times so that waits and interrupts on
+   it are taken. *)
+let io_text = "signal di1 di\nsignal do1 do\nat 0.25 di1 1\nat 0.75 di1 0\nat 1.5 di1 1\n"
+
+let io =
+  match Rapid_controller.Io_config.parse ~file:"fuzz.io" io_text with
+  | Ok io -> io
+  | Error m -> failwith ("the fuzzer's I/O configuration: " ^ m)
+
+(* The installed environment with the signals, made once: the checker and the lowering share
+   what they compute for it between programs as long as it is this very list. *)
+let installed = lazy (Rapid_semantics.Session.installed ~io ())
+
 let machine =
   let run program ~max_steps =
-    match M.start program ~entry:"main" with
+    let world = Rapid_controller.World.create io in
+    match M.start ~world program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok cfg ->
         let events = ref [] in
@@ -111,6 +126,18 @@ let compare_observed name (a : observed) (b : observed) =
   else if a.outcome <> b.outcome then Some (Printf.sprintf "%s: outcome %s / %s" name a.outcome b.outcome)
   else None
 
+(* As Session.load_modules, over the fuzzer's installed environment. *)
+let load m : (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result =
+  match Lazy.force installed with
+  | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
+  | Ok installed ->
+      let result = Rapid_typing.Check.check_task ~installed [ m ] in
+      if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
+      else
+        match Rapid_semantics.Session.lower ~io ~installed ~modules:[ m ] result with
+        | Ok program -> Ok { program; warnings = result.reports; unknown_summary = None }
+        | Error reports -> Error (Static (result.reports @ reports))
+
 let check_program ?(engines = []) ?(max_steps = 200_000) source =
   try
     match Parse.parse_string ~name:"fuzz.mod" source with
@@ -123,7 +150,7 @@ let check_program ?(engines = []) ?(max_steps = 200_000) source =
         | Ok m' when Ast_dump.module_declaration m <> Ast_dump.module_declaration m' ->
             Error (Round_trip "the printed module parses to another tree")
         | Ok _ -> (
-            match Rapid_semantics.Session.load_modules [ m ] with
+            match load m with
             | Error (Front_end ds) -> Error (Refused (String.concat "; " (List.map Diagnostic.to_string ds)))
             | Error (Static rs) ->
                 Error (Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
@@ -156,6 +183,6 @@ let observe ?(max_steps = 200_000) source =
   match Parse.parse_string ~name:"fuzz.mod" source with
   | Error d -> Error (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match load m with
       | Ok loaded -> Ok (machine.run loaded.program ~max_steps)
       | Error _ -> Error "the program does not check")

@@ -35,9 +35,18 @@ type options = {
   mismatching : bool;                          (** late-bound calls with wrong arguments *)
   max_routines : int;
   max_statements : int;                        (** per statement list *)
+  controller : bool;
+      (** some programs (three in ten) use the controller: interrupts (CONNECT, ITimer,
+          ISignalDI/DO, ISleep, IWatch, IDelete, IDisable, IEnable), waits (WaitTime, WaitUntil,
+          WaitDI), signals (SetDO, Set, Reset, PulseDO, reading di1 and do1), moves (MoveJ, MoveL);
+          they run with the signals of {!Fuzz_run.io} *)
+  signal_stores : bool;
+      (** assignments to signal variables ([do1 := 1]) too: off by default, since the closure
+          engine does not yet leave them to the machine (doc/fuzz-campaign.md) *)
 }
 
 val default_options : options
+(** Mismatching late-bound calls and the controller on, five routines, five statements. *)
 
 val generate : ?options:options -> Random.State.t -> program
 
