@@ -40,8 +40,10 @@ let cmd =
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
   let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
+  let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
+  let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard out impl (mismatching, matching_only, no_controller) coverage =
+  let run count seed shard out impl (mismatching, matching_only, no_controller) (mutants, hostile_every) coverage =
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
     let external_check = Option.map (fun template ->
@@ -57,7 +59,7 @@ let cmd =
     let options = { Rapid_fuzz.Program_gen.default_options with
                     mismatching = mismatching || not matching_only; controller = not no_controller } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
-    let s = C.run ~options ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ?external_check ?progress ~seed ~count ~shard () in
+    let s = C.run ~options ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ?external_check ?progress ~mutants ~hostile_every ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
     List.iter (fun (f : C.failure_found) ->
         let path = C.save ~dir:out f in
@@ -65,8 +67,9 @@ let cmd =
           (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path) s.failures;
     let known = Rapid_semantics.Machine.rule_names in
     let seen = List.filter (fun r -> List.mem_assoc r s.rules) known in
-    Printf.printf "%d programs (shard %d/%d, seed %d) in %.1f s: %.0f programs/s\n" s.programs shard.index
-      shard.count seed s.seconds (if s.seconds > 0. then float s.programs /. s.seconds else 0.);
+    Printf.printf "%d programs (shard %d/%d, seed %d) in %.1f s: %.0f programs/s (%.0f per second of processor time)\n"
+      s.programs shard.index shard.count seed s.seconds (if s.seconds > 0. then float s.programs /. s.seconds else 0.)
+      (if s.cpu_seconds > 0. then float s.programs /. s.cpu_seconds else 0.);
     Printf.printf "outcomes: %s\n" (String.concat ", " (List.map (fun (k, n) -> Printf.sprintf "%s %d" k n) s.outcomes));
     Printf.printf "rules applied: %d of %d\n" (List.length seen) (List.length known);
     if coverage then begin
@@ -85,4 +88,4 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ coverage)
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)

@@ -14,6 +14,7 @@ type summary = {
   outcomes : (string * int) list;
   rules : (string * int) list;
   seconds : float;
+  cpu_seconds : float;
 }
 
 let program_seed ~seed i = Random.State.make [| seed; i |]
@@ -52,9 +53,28 @@ let minimise judge program failure =
   in
   go program failure 500
 
+(* The mutants of program [i] and, every [hostile_every] programs, a hostile text: each failing
+   text is shrunk by lines and characters. Their random states are apart from the program's, so
+   that a campaign's programs do not change with the number of mutants. *)
+let check_texts ~seed ~mutants ~hostile_every i source =
+  let rs = Random.State.make [| seed; i; 7919 |] in
+  let texts =
+    List.init mutants (fun _ -> Mutant.mutate rs source)
+    @ (if hostile_every > 0 && i mod hostile_every = 0 then [ Mutant.hostile rs ] else []) in
+  List.filter_map (fun text ->
+      match Mutant.check_text text with
+      | Ok () -> None
+      | Error m ->
+          let fails t = Result.is_error (Mutant.check_text t) in
+          let minimal = Mutant.shrink_text fails text in
+          let m = match Mutant.check_text minimal with Error m' -> m' | Ok () -> m in
+          let lines t = List.length (String.split_on_char '\n' t) in
+          Some { program_index = i; failure = Fuzz_run.Checker_crashed m; source = minimal;
+                 original_size = lines text; minimal_size = lines minimal }) texts
+
 let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
-    ?(max_steps = 200_000) ~seed ~count ~shard () =
-  let started = Unix.gettimeofday () in
+    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ~seed ~count ~shard () =
+  let started = Unix.gettimeofday () and cpu_started = Sys.time () in
   let outcomes = Hashtbl.create 8 in
   Fuzz_run.reset_rule_counts ();
   let judge program =
@@ -74,6 +94,7 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
     if i mod shard.count = shard.index - 1 then begin
       incr programs;
       let program = Program_gen.generate ~options (program_seed ~seed i) in
+      failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i (Program_gen.to_source program)) !failures;
       (match judge program with
        | Ok observed ->
            let kind = List.hd (String.split_on_char ' ' observed.outcome) in
@@ -91,7 +112,8 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
   done;
   { programs = !programs; failures = List.rev !failures;
     outcomes = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) outcomes []);
-    rules = Fuzz_run.rule_counts (); seconds = Unix.gettimeofday () -. started }
+    rules = Fuzz_run.rule_counts (); seconds = Unix.gettimeofday () -. started;
+    cpu_seconds = Sys.time () -. cpu_started }
 
 let write path text =
   let oc = open_out_bin path in

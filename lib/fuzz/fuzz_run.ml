@@ -10,8 +10,10 @@ type failure =
   | Nondeterministic of string
   | Engines_differ of string
   | Round_trip of string
+  | Checker_crashed of string
 
 let failure_to_string = function
+  | Checker_crashed m -> "the checker does not answer properly on a mutant or hostile text: " ^ m
   | Refused m -> "the generated program does not check: " ^ m
   | Exception m -> "an OCaml exception escaped: " ^ m
   | Stuck m -> "no rule applies (exit 125): " ^ m
