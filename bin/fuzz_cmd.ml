@@ -35,7 +35,8 @@ let cmd =
   let count = Arg.(value & opt (positive_int "--count") 1000 & info [ "count" ] ~docv:"N" ~doc:"Programs in the whole campaign.") in
   let seed = Arg.(value & opt int 1 & info [ "seed" ] ~docv:"S" ~doc:"The campaign's seed: the same seed gives the same programs.") in
   let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N" ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
-  let out = Arg.(value & opt string "fuzz-failures" & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events.") in
+  let out = Arg.(value & opt (some string) None & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events (without $(b,--out): fuzz-failures), and where the rule coverage is written: coverage.json and coverage.md (doc/fuzz-campaign.md).") in
+  let merge = Arg.(value & opt_all file [] & info [ "merge" ] ~docv:"FILE" ~doc:"Add the coverage.json of another shard to this run's (repeatable); with $(b,--count 0) only merges, as bench/fuzz-campaign.sh does.") in
   let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does.") in
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
@@ -43,7 +44,7 @@ let cmd =
   let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
   let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard out impl (mismatching, matching_only, no_controller) (mutants, hostile_every) coverage =
+  let run count seed shard (out, merge) impl (mismatching, matching_only, no_controller) (mutants, hostile_every) coverage =
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
     let external_check = Option.map (fun template ->
@@ -62,21 +63,28 @@ let cmd =
     let s = C.run ~options ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ?external_check ?progress ~mutants ~hostile_every ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
     List.iter (fun (f : C.failure_found) ->
-        let path = C.save ~dir:out f in
+        let path = C.save ~dir:(Option.value out ~default:"fuzz-failures") f in
         Printf.printf "FAIL program %d: %s\n  minimal program (%d statements, from %d): %s\n" f.program_index
           (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path) s.failures;
-    let known = Rapid_semantics.Machine.rule_names in
-    let seen = List.filter (fun r -> List.mem_assoc r s.rules) known in
+    let merged = List.map Rapid_fuzz.Coverage.read merge in
+    match List.find_map (function Error m -> Some m | Ok _ -> None) merged with
+    | Some m -> Printf.eprintf "rapid-sem: %s\n" m; 2
+    | None ->
+    let cov = Rapid_fuzz.Coverage.merge
+        (Rapid_fuzz.Coverage.of_summary s :: List.filter_map Result.to_option merged) in
+    Option.iter (fun dir -> Rapid_fuzz.Coverage.write ~dir cov) out;
     Printf.printf "%d programs (shard %d/%d, seed %d) in %.1f s: %.0f programs/s (%.0f per second of processor time)\n"
       s.programs shard.index shard.count seed s.seconds (if s.seconds > 0. then float s.programs /. s.seconds else 0.)
       (if s.cpu_seconds > 0. then float s.programs /. s.cpu_seconds else 0.);
     Printf.printf "outcomes: %s\n" (String.concat ", " (List.map (fun (k, n) -> Printf.sprintf "%s %d" k n) s.outcomes));
-    Printf.printf "rules applied: %d of %d\n" (List.length seen) (List.length known);
-    if coverage then begin
-      List.iter (fun r -> Printf.printf "  %-28s %d\n" r (Option.value (List.assoc_opt r s.rules) ~default:0)) known
-    end;
+    if merge <> [] then
+      Printf.printf "merged with %d other shard%s: %d programs, %d failures\n" (List.length merge)
+        (if List.length merge = 1 then "" else "s") cov.programs cov.failures;
+    Printf.printf "rules applied: %d of %d\n" (Rapid_fuzz.Coverage.applied cov) (List.length Rapid_fuzz.Coverage.rule_names);
+    if coverage then
+      List.iter (fun (r, n) -> Printf.printf "  %-28s %d\n" r n) cov.rules;
     Printf.printf "%d passed, %d failed\n" (s.programs - List.length s.failures) (List.length s.failures);
-    if s.failures = [] then 0 else 1
+    if s.failures = [] && cov.failures = 0 then 0 else 1
   in
   let doc = "generate well-typed RAPID programs and check the semantics' properties on each" in
   let man = [
@@ -88,4 +96,4 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ out $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b -> (a, b)) $ out $ merge) $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)
