@@ -73,7 +73,7 @@ let check_texts ~seed ~mutants ~hostile_every i source =
                  original_size = lines text; minimal_size = lines minimal }) texts
 
 let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
-    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ~seed ~count ~shard () =
+    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ?max_failures ~seed ~count ~shard () =
   let started = Unix.gettimeofday () and cpu_started = Sys.time () in
   let outcomes = Hashtbl.create 8 in
   Fuzz_run.reset_rule_counts ();
@@ -91,7 +91,8 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
   in
   let failures = ref [] and programs = ref 0 in
   for i = 0 to count - 1 do
-    if i mod shard.count = shard.index - 1 then begin
+    let enough = match max_failures with Some k -> List.length !failures >= k | None -> false in
+    if i mod shard.count = shard.index - 1 && not enough then begin
       incr programs;
       let program = Program_gen.generate ~options (program_seed ~seed i) in
       failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i (Program_gen.to_source program)) !failures;

@@ -31,11 +31,12 @@ val run :
   ?engines:Fuzz_run.engine list ->
   ?external_check:(string -> (unit, string) result) ->
   ?progress:(done_:int -> total:int -> failures:int -> rules_seen:int -> unit) ->
-  ?max_steps:int -> ?mutants:int -> ?hostile_every:int ->
+  ?max_steps:int -> ?mutants:int -> ?hostile_every:int -> ?max_failures:int ->
   seed:int -> count:int -> shard:shard -> unit -> summary
 (** Each program also gives [mutants] (default 1) ill-typed mutants ({!Mutant.mutate}), and every
     [hostile_every]-th program (default 10; 0: none) a hostile text ({!Mutant.hostile}), each
     judged by {!Mutant.check_text} and shrunk by lines and characters when it fails.
+    With [max_failures], the campaign stops once it has found that many failures.
     [external_check source] compares another implementation on a program that passed every
     property (the oracle); an [Error] is a failure too. *)
 

@@ -586,10 +586,22 @@ let rec shrink_list (l : stmt list) : stmt list Seq.t =
       Seq.append without (Seq.append flattened (Seq.append inside later))
 
 let shrink (p : program) =
-  List.mapi (fun i (r : routine) ->
+  let without i l = List.filteri (fun j _ -> j <> i) l in
+  (* Whole routines first (not main: the entry routine), then module data, then routine data:
+     a candidate whose names no longer resolve is refused by the checker, and skipped by the
+     caller. *)
+  let routines = List.to_seq (List.filter_map (fun (i, (r : routine)) ->
+      if r.header = "PROC main()" then None else Some { p with routines = without i p.routines })
+      (List.mapi (fun i r -> (i, r)) p.routines)) in
+  let module_data = Seq.map (fun i -> { p with module_data = without i p.module_data })
+      (List.to_seq (List.init (List.length p.module_data) (fun i -> i))) in
+  let per_routine = List.mapi (fun i (r : routine) ->
       let with_routine r' = { p with routines = List.mapi (fun j x -> if i = j then r' else x) p.routines } in
       let bodies = Seq.map (fun body -> with_routine { r with body }) (shrink_list r.body) in
       let no_error = match r.error with Some _ -> Seq.return (with_routine { r with error = None }) | None -> Seq.empty in
       let no_undo = match r.undo with Some _ -> Seq.return (with_routine { r with undo = None }) | None -> Seq.empty in
-      Seq.append no_error (Seq.append no_undo bodies)) p.routines
-  |> List.to_seq |> Seq.flat_map (fun x -> x)
+      let data = Seq.map (fun k -> with_routine { r with data = without k r.data })
+          (List.to_seq (List.init (List.length r.data) (fun k -> k))) in
+      Seq.append no_error (Seq.append no_undo (Seq.append bodies data))) p.routines
+    |> List.to_seq |> Seq.flat_map (fun x -> x) in
+  Seq.append routines (Seq.append module_data per_routine)

@@ -54,10 +54,11 @@ val to_source : program -> string
 (** The module as RAPID source text. *)
 
 val shrink : program -> program Seq.t
-(** Smaller programs: one statement removed, or a compound statement replaced by one of its
-    statement lists, anywhere; a routine other than main removed only when nothing calls it
-    is not attempted (callers would no longer check), so shrinking keeps programs checked
-    only when the caller re-checks: candidates that no longer pass [check] are to be skipped. *)
+(** Smaller programs, the largest steps first: a routine other than main removed, a module data
+    declaration removed, an error or UNDO handler removed, one statement removed or a compound
+    statement replaced by one of its statement lists anywhere, a routine data declaration
+    removed. Many candidates no longer pass [check] (a name left without its declaration): the
+    caller skips them, since they do not fail in the same way. *)
 
 val size : program -> int
 (** Statements, counted recursively. *)
