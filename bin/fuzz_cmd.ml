@@ -75,7 +75,13 @@ let cmd =
     List.iter (fun (f : C.failure_found) ->
         let path = C.save ~dir:(Option.value out ~default:"fuzz-failures") f in
         Printf.printf "FAIL program %d: %s\n  minimal program (%d statements, from %d): %s\n" f.program_index
-          (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path) s.failures;
+          (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path;
+        (* the minimal program itself, when it is short enough to read here *)
+        let lines = String.split_on_char '\n' f.source in
+        if List.length lines <= 40 && String.length f.source <= 4000 then
+          List.iter (fun l ->
+              let printable = String.for_all (fun c -> c >= ' ' && c <= '~') l in
+              if l <> "" then Printf.printf "    | %s\n" (if printable then l else String.escaped l)) lines) s.failures;
     let merged = List.map Rapid_fuzz.Coverage.read merge in
     match List.find_map (function Error m -> Some m | Ok _ -> None) merged with
     | Some m -> Printf.eprintf "rapid-sem: %s\n" m; 2

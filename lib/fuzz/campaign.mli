@@ -41,6 +41,6 @@ val run :
     property (the oracle); an [Error] is a failure too. *)
 
 val save : dir:string -> failure_found -> string
-(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.failure] (what went wrong) and
-    [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
+(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals it may use, for
+    [rapid-sem run --io]), [fuzz-I.failure] (what went wrong) and [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
     missing; returns the .mod's path. *)
