@@ -125,7 +125,7 @@ let save ~dir f =
   let base = Filename.concat dir (Printf.sprintf "fuzz-%d" f.program_index) in
   write (base ^ ".mod") f.source;
   (* the signals the program may use: rapid-sem run --io fuzz-I.io fuzz-I.mod runs it again *)
-  write (base ^ ".io") Fuzz_run.io_text;
+  write (base ^ ".io") (Fuzz_run.io_text_for f.source);
   write (base ^ ".failure") (Fuzz_run.failure_to_string f.failure ^ "\n");
   let expected =
     match Fuzz_run.observe f.source with

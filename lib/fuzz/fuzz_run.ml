@@ -76,11 +76,25 @@ let io =
 
 (* The installed environment with the signals, made once: the checker and the lowering share
    what they compute for it between programs as long as it is this very list. *)
+(* The same signals without the stimulus, for a program that never names di1: the stimulus's
+   changes are observable events of the machine (signal changes) that such a program cannot
+   react to, and the closure engine, which leaves the controller to the machine, does not make
+   them. A long program that reached 0.25 s of virtual time by statement time alone would
+   differ between the engines for that reason only (doc/fuzz-campaign.md). *)
+let quiet_io = { io with stimuli = [] }
+
+let world_io = ref io
+
+let mentions word text =
+  let n = String.length word and m = String.length text in
+  let rec go i = i + n <= m && (String.sub text i n = word || go (i + 1)) in
+  go 0
+
 let installed = lazy (Rapid_semantics.Session.installed ~io ())
 
 let machine =
   let run program ~max_steps =
-    let world = Rapid_controller.World.create io in
+    let world = Rapid_controller.World.create !world_io in
     match M.start ~world program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok cfg ->
@@ -140,7 +154,14 @@ let load m : (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) r
         | Ok program -> Ok { program; warnings = result.reports; unknown_summary = None }
         | Error reports -> Error (Static (result.reports @ reports))
 
+(* The world changed an input (the stimulus of di1): the controller acted, which the closure
+   engine leaves to the machine but cannot notice itself (it keeps no virtual time), so the run is
+   not compared. To be dropped when the closure engine runs the controller. *)
+let stimulus_seen (o : observed) =
+  List.exists (fun e -> String.length e > 11 && String.sub e 0 11 = "signal di1 ") o.events
+
 let check_program ?(engines = []) ?(max_steps = 200_000) source =
+  world_io := if mentions "di1" source then io else quiet_io;
   try
     match Parse.parse_string ~name:"fuzz.mod" source with
     | Error d -> Error (Refused (Diagnostic.to_string d))
@@ -171,7 +192,7 @@ let check_program ?(engines = []) ?(max_steps = 200_000) source =
                           let other = e.run loaded.program ~max_steps in
                           (* An engine counts its own fuel: a run that exhausts it is compared
                              only when both finished. *)
-                          if not (first.finished && other.finished) then None
+                          if not (first.finished && other.finished) || stimulus_seen first then None
                           else compare_observed ("machine / " ^ e.engine_name) first other) engines in
                       match differ with
                       | Some d -> Error (Engines_differ d)
@@ -181,7 +202,11 @@ let check_program ?(engines = []) ?(max_steps = 200_000) source =
   | Out_of_memory -> Error (Exception "out of memory")
   | e -> Error (Exception (Printexc.to_string e))
 
+let io_text_for source =
+  if mentions "di1" source then io_text else "signal di1 di\nsignal do1 do\n"
+
 let observe ?(max_steps = 200_000) source =
+  world_io := if mentions "di1" source then io else quiet_io;
   match Parse.parse_string ~name:"fuzz.mod" source with
   | Error d -> Error (Diagnostic.to_string d)
   | Ok m -> (

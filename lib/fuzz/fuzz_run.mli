@@ -28,7 +28,12 @@ val io : Rapid_controller.Io_config.t
     at fixed times. *)
 
 val io_text : string
-(** {!io} as a stimulus file (doc/controller.md), saved beside each failure. *)
+(** {!io} as a stimulus file (doc/controller.md). *)
+
+val io_text_for : string -> string
+(** The stimulus file a program runs with: {!io_text} when the program names di1; else the same
+    signals without the stimulus, whose changes such a program cannot react to and which only
+    the machine makes (doc/fuzz-campaign.md). Saved beside each failure. *)
 
 val load : Rapid_syntax.Ast.module_declaration -> (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result
 (** As {!Rapid_semantics.Session.load_modules} with {!io}, over one installed environment made
