@@ -182,21 +182,69 @@ let check_text ?(max_steps = 20_000) text =
 
 (* ------------------------------------------------------------------ shrinking *)
 
+(* Lines, then words, then characters: each pass deletes chunks, halving their size, while the
+   text still fails. *)
+
 let shrink_text fails text =
-  (* lines first, halves then single ones; then characters the same way *)
+  (* chunks of halving sizes (and 3, the words of a small declaration), tried at every place
+     when the parts are few, at every chunk boundary when they are many *)
   let rec by_chunks split join parts chunk =
     if chunk = 0 then parts
     else
       let n = List.length parts in
+      let step = if n <= 300 then 1 else chunk in
       let rec try_at i parts =
         if i >= List.length parts then parts
         else
           let candidate = List.filteri (fun j _ -> j < i || j >= i + chunk) parts in
-          if candidate <> [] && fails (join candidate) then try_at i candidate else try_at (i + chunk) parts in
+          if candidate <> [] && fails (join candidate) then try_at i candidate else try_at (i + step) parts in
       let parts' = try_at 0 parts in
-      if List.length parts' < n then by_chunks split join parts' chunk else by_chunks split join parts' (chunk / 2) in
+      let next = if chunk > 4 && chunk / 2 < 3 then 3 else if chunk = 4 then 3 else if chunk = 3 then 2 else chunk / 2 in
+      if List.length parts' < n then by_chunks split join parts' chunk else by_chunks split join parts' next in
   let ls = by_chunks lines unlines (lines text) (max 1 (List.length (lines text) / 2)) in
   let t = unlines ls in
+  (* words next, so that a declaration goes whole from a line that holds several *)
+  let words t =
+    (* names and numbers whole, every other character alone, blanks kept with what precedes *)
+    let n = String.length t in
+    let rec go i acc =
+      if i >= n then List.rev acc
+      else
+        let j = ref (i + 1) in
+        if is_ident_char t.[i] then while !j < n && is_ident_char t.[!j] do incr j done;
+        while !j < n && (t.[!j] = ' ' || t.[!j] = '\n') do incr j done;
+        go !j (String.sub t i (!j - i) :: acc) in
+    go 0 [] in
+  let ws = words t in
+  (* a routine, a record or a compound statement at once, from its keyword to its END keyword *)
+  let blocks ws =
+    let starts w kw = let n = String.length kw in String.length w >= n && String.sub w 0 n = kw
+                                                 && (String.length w = n || not (is_ident_char w.[n])) in
+    let kws = [ "PROC"; "FUNC"; "TRAP"; "RECORD"; "IF"; "FOR"; "WHILE"; "TEST" ] in
+    let rec go ws =
+      let a = Array.of_list ws in
+      let n = Array.length a in
+      let rec from i =
+        if i >= n then ws
+        else match List.find_opt (starts a.(i)) kws with
+          | None -> from (i + 1)
+          | Some kw ->
+              let rec close j depth =
+                if j >= n then None
+                else if starts a.(j) ("END" ^ kw) then (if depth = 0 then Some j else close (j + 1) (depth - 1))
+                else if starts a.(j) kw then close (j + 1) (depth + 1)
+                else close (j + 1) depth in
+              match close (i + 1) 0 with
+              | Some j ->
+                  let candidate = List.filteri (fun k _ -> k < i || k > j) ws in
+                  if candidate <> [] && fails (String.concat "" candidate) then go candidate else from (i + 1)
+              | None -> from (i + 1) in
+      from 0 in
+    go ws in
+  let t = if String.length t > 20_000 then t
+    else
+      let ws = blocks ws in
+      String.concat "" (by_chunks words (String.concat "") ws (max 1 (List.length ws / 2))) in
   if String.length t > 2000 then t
   else
     let chars = List.init (String.length t) (String.get t) in

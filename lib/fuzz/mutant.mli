@@ -18,5 +18,5 @@ val check_text : ?max_steps:int -> string -> (unit, string) result
     without its place or class, a checked mutant that reaches a state with no rule). *)
 
 val shrink_text : (string -> bool) -> string -> string
-(** The smallest text found, by deleting lines and then characters, on which [fails] still
+(** The smallest text found, by deleting lines, then words, then characters, on which [fails] still
     holds. *)
