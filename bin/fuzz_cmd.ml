@@ -41,6 +41,7 @@ let cmd =
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
   let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
+  let signal_stores = Arg.(value & flag & info [ "signal-stores" ] ~doc:"Generate assignments to signal variables too (do1 := 1): off by default, since the closure engine does not yet leave them to the machine (doc/fuzz-campaign.md).") in
   let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
   let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
   let break_rule =
@@ -49,7 +50,7 @@ let cmd =
            ~doc:(Printf.sprintf "The mutation check: run the closure engine with one rule deliberately broken (%s), and stop at the first failure, which a working harness finds (exit 1 then; 0 would mean the harness missed it)."
                    (String.concat ", " (List.map fst names)))) in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller) (mutants, hostile_every) coverage =
+  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores) (mutants, hostile_every) coverage =
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
     let external_check = Option.map (fun template ->
@@ -63,7 +64,7 @@ let cmd =
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
     let options = { Rapid_fuzz.Program_gen.default_options with
-                    mismatching = mismatching || not matching_only; controller = not no_controller } in
+                    mismatching = mismatching || not matching_only; controller = not no_controller; signal_stores } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
     let engine = match break_rule with
       | Some m -> Rapid_fuzz.Mutation.engine m Rapid_fuzz.Fuzz_run.closure
@@ -112,4 +113,4 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b c -> (a, b, c)) $ out $ merge $ break_rule) $ impl $ Term.(const (fun a b c -> (a, b, c)) $ mismatching $ matching_only $ no_controller) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b c -> (a, b, c)) $ out $ merge $ break_rule) $ impl $ Term.(const (fun a b c d -> (a, b, c, d)) $ mismatching $ matching_only $ no_controller $ signal_stores) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)
