@@ -347,6 +347,14 @@ and simple sc =
              Printf.sprintf "TPWrite \"opt \" \\%s:=%s;" (match p.p_ty with Num -> "Num" | Dnum -> "Dnum" | Bool -> "Bool" | Str -> "Num" | Pos -> "Pos" | Orient -> "Orient")
                (if p.p_ty = Str then Printf.sprintf "StrLen(%s)" p.p_name else p.p_name)) ])
     @ (if sc.controller then [ (3, fun () -> controller_statement sc) ] else [])
+    @ [ (1, fun () ->
+          (* an aggregate argument of a late-bound call takes its parameter's type when its
+             structure fits (§3.10, §4.6), else the call raises ERR_CALLPROC *)
+          let e () = expr sc Num 1 in
+          match Random.State.int rs 4 with
+          | 0 | 1 -> Printf.sprintf "%% \"fzrec\" %% [%s, %s];" (e ()) (e ())
+          | 2 -> Printf.sprintf "%% \"fzrec\" %% [%s, %s, %s];" (e ()) (e ()) (e ())
+          | _ -> Printf.sprintf "%% \"fzrec\" %% [%s, %s];" (expr sc Str 1) (e ())) ]
     @ [ (1, fun () -> Printf.sprintf "RAISE %d;" (int_in rs 1 90));
         (1, fun () -> Printf.sprintf "RAISE Trunc(%s);" (expr sc Num 1));
         (1, fun () -> Printf.sprintf "%% \"nosuch%d\" %%;" (int_in rs 1 9));
@@ -533,8 +541,11 @@ let generate ?(options = default_options) rs =
         else []) in
   let trap = { header = "TRAP fztrap"; data = []; body = trap_body; error = None; undo = None;
                footer = "ENDTRAP" } in
+  (* the target of late-bound calls with an aggregate argument *)
+  let fzrec = { header = "PROC fzrec(fzpoint r)"; data = []; body = [ Line "TPWrite \"r \" \\Num:=r.x + r.y;" ];
+                error = None; undo = None; footer = "ENDPROC" } in
   { name = "fuzz"; module_data = "RECORD fzpoint num x; num y; ENDRECORD" :: module_data_decls;
-    routines = routines @ [ trap; main ] }
+    routines = routines @ [ fzrec; trap; main ] }
 
 (* ------------------------------------------------------------------ text *)
 
