@@ -30,6 +30,9 @@ val io : Rapid_controller.Io_config.t
 val io_text : string
 (** {!io} as a stimulus file (doc/controller.md). *)
 
+val mentions : string -> string -> bool
+(** [mentions word text]: [word] occurs in [text]. *)
+
 val io_text_for : string -> string
 (** The stimulus file a program runs with: {!io_text} when the program names di1; else the same
     signals without the stimulus, whose changes such a program cannot react to and which only
