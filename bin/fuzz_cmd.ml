@@ -37,7 +37,7 @@ let cmd =
   let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N" ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
   let out = Arg.(value & opt (some string) None & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events (without $(b,--out): fuzz-failures), and where the rule coverage is written: coverage.json and coverage.md (doc/fuzz-campaign.md).") in
   let merge = Arg.(value & opt_all file [] & info [ "merge" ] ~docv:"FILE" ~doc:"Add the coverage.json of another shard to this run's (repeatable); with $(b,--count 0) only merges, as bench/fuzz-campaign.sh does.") in
-  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does.") in
+  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does. The protocol passes the program alone, without an I/O configuration, so no program then uses the controller (as with $(b,--no-controller)).") in
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
   let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
@@ -64,7 +64,7 @@ let cmd =
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
     let options = { Rapid_fuzz.Program_gen.default_options with
-                    mismatching = mismatching || not matching_only; controller = not no_controller; signal_stores } in
+                    mismatching = mismatching || not matching_only; controller = not no_controller && impl = None; signal_stores } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
     let engine = match break_rule with
       | Some m -> Rapid_fuzz.Mutation.engine m Rapid_fuzz.Fuzz_run.closure
