@@ -14,13 +14,24 @@ type summary = {
   outcomes : (string * int) list;
   rules : (string * int) list;
   seconds : float;
+  cpu_seconds : float;
 }
 
 let program_seed ~seed i = Random.State.make [| seed; i |]
 
+(* A refusal's message without its place: a smaller program refused for another reason (a BREAK
+   left outside its loop by the shrinking) is not the same failure. *)
+let without_place m =
+  let rec skip m n = if n = 0 then m else match String.index_opt m ':' with
+      | Some i -> skip (String.sub m (i + 1) (String.length m - i - 1)) (n - 1)
+      | None -> m in
+  let first = match String.index_opt m ';' with Some i -> String.sub m 0 i | None -> m in
+  skip first 3
+
 let same_class (a : Fuzz_run.failure) (b : Fuzz_run.failure) =
   match a, b with
-  | Refused _, Refused _ | Exception _, Exception _ | Stuck _, Stuck _
+  | Refused a, Refused b -> without_place a = without_place b
+  | Exception _, Exception _ | Stuck _, Stuck _
   | Nondeterministic _, Nondeterministic _ | Engines_differ _, Engines_differ _
   | Round_trip _, Round_trip _ -> true
   | _ -> false
@@ -42,9 +53,28 @@ let minimise judge program failure =
   in
   go program failure 500
 
+(* The mutants of program [i] and, every [hostile_every] programs, a hostile text: each failing
+   text is shrunk by lines and characters. Their random states are apart from the program's, so
+   that a campaign's programs do not change with the number of mutants. *)
+let check_texts ~seed ~mutants ~hostile_every i source =
+  let rs = Random.State.make [| seed; i; 7919 |] in
+  let texts =
+    List.init mutants (fun _ -> Mutant.mutate rs source)
+    @ (if hostile_every > 0 && i mod hostile_every = 0 then [ Mutant.hostile rs ] else []) in
+  List.filter_map (fun text ->
+      match Mutant.check_text text with
+      | Ok () -> None
+      | Error m ->
+          let fails t = Result.is_error (Mutant.check_text t) in
+          let minimal = Mutant.shrink_text fails text in
+          let m = match Mutant.check_text minimal with Error m' -> m' | Ok () -> m in
+          let lines t = List.length (String.split_on_char '\n' t) in
+          Some { program_index = i; failure = Fuzz_run.Checker_crashed m; source = minimal;
+                 original_size = lines text; minimal_size = lines minimal }) texts
+
 let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
-    ?(max_steps = 200_000) ~seed ~count ~shard () =
-  let started = Unix.gettimeofday () in
+    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ?max_failures ~seed ~count ~shard () =
+  let started = Unix.gettimeofday () and cpu_started = Sys.time () in
   let outcomes = Hashtbl.create 8 in
   Fuzz_run.reset_rule_counts ();
   let judge program =
@@ -61,9 +91,11 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
   in
   let failures = ref [] and programs = ref 0 in
   for i = 0 to count - 1 do
-    if i mod shard.count = shard.index - 1 then begin
+    let enough = match max_failures with Some k -> List.length !failures >= k | None -> false in
+    if i mod shard.count = shard.index - 1 && not enough then begin
       incr programs;
       let program = Program_gen.generate ~options (program_seed ~seed i) in
+      failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i (Program_gen.to_source program)) !failures;
       (match judge program with
        | Ok observed ->
            let kind = List.hd (String.split_on_char ' ' observed.outcome) in
@@ -81,7 +113,8 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
   done;
   { programs = !programs; failures = List.rev !failures;
     outcomes = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) outcomes []);
-    rules = Fuzz_run.rule_counts (); seconds = Unix.gettimeofday () -. started }
+    rules = Fuzz_run.rule_counts (); seconds = Unix.gettimeofday () -. started;
+    cpu_seconds = Sys.time () -. cpu_started }
 
 let write path text =
   let oc = open_out_bin path in
@@ -91,6 +124,8 @@ let save ~dir f =
   if not (Sys.file_exists dir) then Sys.mkdir dir 0o755;
   let base = Filename.concat dir (Printf.sprintf "fuzz-%d" f.program_index) in
   write (base ^ ".mod") f.source;
+  (* the signals the program may use: rapid-sem run --io fuzz-I.io fuzz-I.mod runs it again *)
+  write (base ^ ".io") (Fuzz_run.io_text_for f.source);
   write (base ^ ".failure") (Fuzz_run.failure_to_string f.failure ^ "\n");
   let expected =
     match Fuzz_run.observe f.source with

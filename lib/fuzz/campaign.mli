@@ -18,7 +18,9 @@ type summary = {
   failures : failure_found list;
   outcomes : (string * int) list;        (** how runs ended: ended, stopped, exhausted ... *)
   rules : (string * int) list;           (** the machine's rules, with how often each applied *)
-  seconds : float;
+  seconds : float;                       (** wall-clock time *)
+  cpu_seconds : float;                   (** processor time of this process: programs per
+                                             second per core is [programs / cpu_seconds] *)
 }
 
 val program_seed : seed:int -> int -> Random.State.t
@@ -29,12 +31,16 @@ val run :
   ?engines:Fuzz_run.engine list ->
   ?external_check:(string -> (unit, string) result) ->
   ?progress:(done_:int -> total:int -> failures:int -> rules_seen:int -> unit) ->
-  ?max_steps:int ->
+  ?max_steps:int -> ?mutants:int -> ?hostile_every:int -> ?max_failures:int ->
   seed:int -> count:int -> shard:shard -> unit -> summary
-(** [external_check source] compares another implementation on a program that passed every
+(** Each program also gives [mutants] (default 1) ill-typed mutants ({!Mutant.mutate}), and every
+    [hostile_every]-th program (default 10; 0: none) a hostile text ({!Mutant.hostile}), each
+    judged by {!Mutant.check_text} and shrunk by lines and characters when it fails.
+    With [max_failures], the campaign stops once it has found that many failures.
+    [external_check source] compares another implementation on a program that passed every
     property (the oracle); an [Error] is a failure too. *)
 
 val save : dir:string -> failure_found -> string
-(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.failure] (what went wrong) and
-    [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
+(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals it may use, for
+    [rapid-sem run --io]), [fuzz-I.failure] (what went wrong) and [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
     missing; returns the .mod's path. *)

@@ -13,6 +13,8 @@ type failure =
   | Nondeterministic of string (** two runs gave different events *)
   | Engines_differ of string   (** the engines' events differ *)
   | Round_trip of string       (** print (parse s) does not parse to the same tree *)
+  | Checker_crashed of string  (** a mutant or hostile text made the front end or the checker
+                                   raise, or answer without a place or class (Mutant) *)
 
 val failure_to_string : failure -> string
 
@@ -20,6 +22,25 @@ type engine = {
   engine_name : string;
   run : Rapid_semantics.Ir.program -> max_steps:int -> observed;
 }
+
+val io : Rapid_controller.Io_config.t
+(** The outside world of every generated program: the signals di1 and do1, and changes of di1
+    at fixed times. *)
+
+val io_text : string
+(** {!io} as a stimulus file (doc/controller.md). *)
+
+val mentions : string -> string -> bool
+(** [mentions word text]: [word] occurs in [text]. *)
+
+val io_text_for : string -> string
+(** The stimulus file a program runs with: {!io_text} when the program names di1; else the same
+    signals without the stimulus, whose changes such a program cannot react to and which only
+    the machine makes (doc/fuzz-campaign.md). Saved beside each failure. *)
+
+val load : Rapid_syntax.Ast.module_declaration -> (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result
+(** As {!Rapid_semantics.Session.load_modules} with {!io}, over one installed environment made
+    once, so that the checker and the lowering share their work on it between programs. *)
 
 val machine : engine
 (** The small-step machine, the definition. *)

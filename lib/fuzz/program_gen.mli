@@ -35,9 +35,18 @@ type options = {
   mismatching : bool;                          (** late-bound calls with wrong arguments *)
   max_routines : int;
   max_statements : int;                        (** per statement list *)
+  controller : bool;
+      (** some programs (three in ten) use the controller: interrupts (CONNECT, ITimer,
+          ISignalDI/DO, ISleep, IWatch, IDelete, IDisable, IEnable), waits (WaitTime, WaitUntil,
+          WaitDI), signals (SetDO, Set, Reset, PulseDO, reading di1 and do1), moves (MoveJ, MoveL);
+          they run with the signals of {!Fuzz_run.io} *)
+  signal_stores : bool;
+      (** assignments to signal variables ([do1 := 1]) too: off by default, since the closure
+          engine does not yet leave them to the machine (doc/fuzz-campaign.md) *)
 }
 
 val default_options : options
+(** Mismatching late-bound calls and the controller on, five routines, five statements. *)
 
 val generate : ?options:options -> Random.State.t -> program
 
@@ -45,10 +54,11 @@ val to_source : program -> string
 (** The module as RAPID source text. *)
 
 val shrink : program -> program Seq.t
-(** Smaller programs: one statement removed, or a compound statement replaced by one of its
-    statement lists, anywhere; a routine other than main removed only when nothing calls it
-    is not attempted (callers would no longer check), so shrinking keeps programs checked
-    only when the caller re-checks: candidates that no longer pass [check] are to be skipped. *)
+(** Smaller programs, the largest steps first: a routine other than main removed, a module data
+    declaration removed, an error or UNDO handler removed, one statement removed or a compound
+    statement replaced by one of its statement lists anywhere, a routine data declaration
+    removed. Many candidates no longer pass [check] (a name left without its declaration): the
+    caller skips them, since they do not fail in the same way. *)
 
 val size : program -> int
 (** Statements, counted recursively. *)

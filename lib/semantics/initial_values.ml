@@ -147,9 +147,9 @@ and reads_of_place acc at (p : Ir.place) =
 (* R-3.2-b: module data in an order where each initial value comes after the constants it
    reads (a depth-first search with an explicit stack: a chain of constants may be long). A
    reading that closes a cycle is reported, and the value that reads it fails. *)
-let module_data ctx =
+let module_data ctx ~known =
   let n = Array.length ctx.program.globals in
-  let state = Array.make n `White in
+  let state = Array.init n (fun i -> if i < known then `Black else `White) in
   let reads i =
     match ctx.program.globals.(i).g_init with
     | Init_expr e -> List.rev (reads_of_expr [] e)
@@ -203,7 +203,7 @@ let routine_data ctx (r : Ir.routine) =
 
 (* Every expression of the program, initial values included, for its numeric literals
    (R-2.5-c). A worklist, not recursion: an ELSEIF chain is a deep nest of IF statements. *)
-let literals ctx (program : Ir.program) =
+let literals ctx ~globals_known ~routines_known (program : Ir.program) =
   let work = Stack.create () in
   let rec expr (e : Ir.expr) =
     match e.e with
@@ -250,8 +250,8 @@ let literals ctx (program : Ir.program) =
     | Goto _ | Break | Continue | Exit | Retry | Trynext | Label | Placeholder_statement -> ()
   in
   let init = function Ir.Init_expr e -> expr e | Init_default _ -> () in
-  Array.iter (fun (g : Ir.global) -> init g.g_init) program.globals;
-  Array.iter (fun (r : Ir.routine) ->
+  Array.iteri (fun i (g : Ir.global) -> if i >= globals_known then init g.g_init) program.globals;
+  Array.iteri (fun i (r : Ir.routine) -> if i >= routines_known then begin
       List.iter (fun (_, i) -> init i) r.local_inits;
       List.iter (fun b -> block b)
         (r.body :: List.filter_map (fun x -> x)
@@ -260,21 +260,47 @@ let literals ctx (program : Ir.program) =
         match Stack.pop work with
         | `Block (b : Ir.block) -> Array.iter statement b.body
         | `Statement s -> statement s
-      done) program.routines
+      done end) program.routines
+
+(* The installed part of a program is the same for every task (Lower shares it), so what is
+   computed for it here is kept from the last program that passed: the values of the leading
+   globals and the leading routines that are physically those of that program. They are installed
+   ones (a task's own are made anew for each task), and installed data and routines read nothing
+   of the task, so their values and verdicts are the same. *)
+type memo = { m_globals : Ir.global array; m_routines : Ir.routine array; m_values : outcome option array;
+              m_evaluated : Ir.global array }
+
+let last : memo option ref = ref None
+
+let common_prefix a b =
+  let n = min (Array.length a) (Array.length b) in
+  let rec go i = if i < n && a.(i) == b.(i) then go (i + 1) else i in
+  go 0
 
 let evaluate (program : Ir.program) =
   let ctx = { program; reports = []; global_values = Array.make (Array.length program.globals) None } in
+  let known, routines_known = match !last with
+    | None -> (0, 0)
+    | Some m ->
+        let k = common_prefix m.m_globals program.globals in
+        Array.blit m.m_values 0 ctx.global_values 0 k;
+        (k, common_prefix m.m_routines program.routines) in
   (* Operands of the wrong type are excluded by the static semantics; were one to come (a name
      allowed by --allow-unknown), its value is left to the run, which reports it. *)
-  (try module_data ctx with V.Type_mismatch _ -> ());
-  Array.iter (fun r -> try routine_data ctx r with V.Type_mismatch _ -> ()) program.routines;
-  literals ctx program;
+  (try module_data ctx ~known with V.Type_mismatch _ -> ());
+  Array.iteri (fun i r -> if i >= routines_known then try routine_data ctx r with V.Type_mismatch _ -> ())
+    program.routines;
+  literals ctx ~globals_known:known ~routines_known program;
   match ctx.reports with
   | [] ->
+      let evaluated_before i = match !last with Some m when i < known -> Some m.m_evaluated.(i) | _ -> None in
       let globals = Array.mapi (fun i (g : Ir.global) ->
+          match evaluated_before i with Some e -> e | None ->
           match ctx.global_values.(i) with
           | Some (Known v) -> { g with g_init = Init_expr { e = Literal v; at = g.g_at } }
           | _ -> g) program.globals in
+      last := Some { m_globals = program.globals; m_routines = program.routines; m_values = ctx.global_values;
+                     m_evaluated = globals };
       Ok { program with globals }
   | reports ->
       let order (r : R.t) =

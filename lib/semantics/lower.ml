@@ -28,7 +28,17 @@ type ctx = {
   mutable routine_now : int;
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
+  installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
+      (* the routine and global numbers of the installed part, when it is shared (below) *)
 }
+
+let index table installed region =
+  match Hashtbl.find_opt table region, installed with
+  | (Some _ as found), _ | (None as found), None -> found
+  | None, Some t -> Hashtbl.find_opt t region
+
+let routine_number ctx region = index ctx.routine_index (Option.map fst ctx.installed_index) region
+let global_number ctx region = index ctx.global_index (Option.map snd ctx.installed_index) region
 
 let rec name_path (p : Ir.place) =
   match p with
@@ -41,7 +51,7 @@ let slot_of ctx (d : Env.data_object) : Ir.slot option =
   match d.d_level with
   | Routine_level -> Option.map (fun i -> Ir.Local i) (Hashtbl.find_opt ctx.locals d.d_region)
   | Module_level _ | Installed_level ->
-      Option.map (fun i -> Ir.Global i) (Hashtbl.find_opt ctx.global_index d.d_region)
+      Option.map (fun i -> Ir.Global i) (global_number ctx d.d_region)
 
 (* The shape only: the value is built when the machine runs, within its memory budget. *)
 let shape_default (t : Types.object_type) =
@@ -159,7 +169,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       arguments = [||]; call_at = at } in
   match Hashtbl.find_opt ctx.elab.names name.at, Hashtbl.find_opt ctx.elab.bindings at with
   | Some (Routine r), Some binding -> (
-      match Hashtbl.find_opt ctx.routine_index r.r_region with
+      match routine_number ctx r.r_region with
       | None -> unknown ()
       | Some index ->
           let params = parameters_of r in
@@ -304,7 +314,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Connect (target, trap) -> (
       match Hashtbl.find_opt ctx.elab.names trap.at with
       | Some (Routine r) -> (
-          match Hashtbl.find_opt ctx.routine_index r.r_region with
+          match routine_number ctx r.r_region with
           | Some i -> make (Connect (place ctx target, i))
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
@@ -431,11 +441,20 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
 let module_name (m : A.module_declaration) =
   match m.module_name.it with Ident s -> s | ID_placeholder -> "<ID>"
 
-let program ~installed ~modules (elab : E.t) : Ir.program =
-  let all = List.map (fun m -> (m, true)) installed @ List.map (fun m -> (m, false)) modules in
-  let ctx = { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-              locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
-              routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64 } in
+(* The routines and module data of some modules, numbered from [routine_base] and
+   [global_base]: the installed modules first, then the task's, as the program lists them. *)
+type part = {
+  part_routines : Ir.routine array;
+  part_globals : Ir.global array;
+  part_decls : (A.module_declaration * Env.data_object) list;   (* the globals' declarations *)
+  part_local_names : string array array;
+  part_error_numbers : (string * int) list;   (* the ERR_ constants the part declares *)
+  part_system : (string * int) list;          (* ERRNO and INTNO, if the part declares them *)
+  part_entry_points : (string * int) list;
+}
+
+let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * bool) list) =
+  let elab = ctx.elab in
   (* Routine and global numbering first: bodies and initial values refer to any of them. *)
   let routine_decls = concat_long (list_long (fun ((m : A.module_declaration), inst) ->
       List.filter_map (fun (r : A.routine_declaration) ->
@@ -447,7 +466,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
       match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
       match Hashtbl.find_opt elab.declared name.at with
-      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region i
+      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region (routine_base + i)
       | _ -> ()) routine_decls;
   let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
@@ -457,13 +476,15 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
-  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region i) global_decls;
+  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region (global_base + i))
+    global_decls;
+  ctx.routine_now <- -1;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
       { Ir.g_name = obj.d_name; g_module = module_name m; g_init = initial ctx obj;
         g_read_only = obj.d_kind = Read_only_variable; g_at = obj.d_region }) global_decls in
   let local_names = ref [] in
   let routines = Array.mapi (fun i (m, inst, r, _) ->
-      ctx.routine_now <- i;
+      ctx.routine_now <- routine_base + i;
       match routine ctx ~module_name:(module_name m) ~installed:inst r with
       | Some r ->
           (* §9.4: the routines of a NOSTEPIN module (and of a NOVIEW one, R-9.4-a) are below the
@@ -474,11 +495,6 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
           r
       | None -> assert false) (Array.of_list routine_decls) in
-  let local_names = Array.of_list (List.rev !local_names) in
-  let find_global name =
-    let rec go i = if i >= Array.length globals then 0
-      else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
-    go 0 in
   let error_numbers = List.filter_map (fun (_, (obj : Env.data_object)) ->
       let n = String.uppercase_ascii obj.d_name in
       if obj.d_kind = Constant && (String.length n > 4 && String.sub n 0 4 = "ERR_" || n = "LONG_JMP_ALL_ERR") then
@@ -488,9 +504,58 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
             | Ok v -> Some (obj.d_name, Z.to_int (Q.num (Num_literal.to_q v)))
             | Error _ -> None)
         | _ -> None
-      else None) (List.filter (fun ((m : A.module_declaration), _) -> List.memq m installed) global_decls) in
+      else None) global_decls in
+  let system = List.filter_map (fun name ->
+      let rec go i = if i >= Array.length globals then None
+        else if String.uppercase_ascii globals.(i).Ir.g_name = name then Some (name, global_base + i) else go (i + 1) in
+      go 0) [ "ERRNO"; "INTNO" ] in
   let entry_points = List.filter_map (fun x -> x)
       (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
-           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, i) else None) routines)) in
-  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO"; error_numbers; entry_points;
+           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, routine_base + i)
+           else None) routines)) in
+  { part_routines = routines; part_globals = globals; part_decls = global_decls;
+    part_local_names = Array.of_list (List.rev !local_names);
+    part_error_numbers = error_numbers; part_system = system; part_entry_points = entry_points }
+
+let new_ctx elab =
+  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
+    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+    routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
+    installed_index = None }
+
+(* The installed modules' part is the same for every task (its names are bound by the installed
+   level alone, and it comes first), so it is lowered once and shared when the checker shares
+   the installed level's elaboration (Elaboration.installed): the last one lowered is kept, with
+   the tables its lowering filled, keyed by the installed modules and that elaboration, both
+   compared physically. The Ir is immutable, so tasks may share it. *)
+let installed_cache : (A.module_declaration list * E.t * part * ctx) option ref = ref None
+
+let installed_part ~installed (elab : E.t) =
+  let base = Option.value elab.installed ~default:elab in
+  match !installed_cache with
+  | Some (l, e, part, c) when l == installed && e == base -> (part, c)
+  | _ ->
+      let ctx = new_ctx base in
+      let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed) in
+      if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
+      (part, ctx)
+
+let program ~installed ~modules (elab : E.t) : Ir.program =
+  let inst, c = installed_part ~installed elab in
+  let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
+                     component_names = Hashtbl.copy c.component_names;
+                     installed_index = Some (c.routine_index, c.global_index) } in
+  let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
+      ~global_base:(Array.length inst.part_globals) (List.map (fun m -> (m, false)) modules) in
+  let routines = Array.append inst.part_routines user.part_routines in
+  let globals = Array.append inst.part_globals user.part_globals in
+  let local_names = Array.append inst.part_local_names user.part_local_names in
+  let find_global name =
+    let rec go i = if i >= Array.length globals then 0
+      else if String.uppercase_ascii globals.(i).g_name = name then i else go (i + 1) in
+    (* ERRNO and INTNO are installed: found among the installed globals, once *)
+    match List.assoc_opt name inst.part_system with Some i -> i | None -> go 0 in
+  let entry_points = inst.part_entry_points @ user.part_entry_points in
+  { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO";
+    error_numbers = inst.part_error_numbers; entry_points;
     names = { local_names; component_names = ctx.component_names } }

@@ -1600,34 +1600,27 @@ let builtin_environment report options =
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
 let read_only_system_variables = [ "ERRNO"; "INTNO" ]
 
-let check_task ?(options = default_options) ~installed modules =
-  let report = Report.create () in
-  let ctx = builtin_environment report options in
-  let info is_installed (m : module_declaration) =
-    let m_name = Option.value (name_of_identifier m.module_name) ~default:"" in
-    { m; m_name; objects = Env.create_table (); is_installed }
-  in
-  let infos = List.map (info true) installed @ List.map (info false) modules in
-  let user = List.filter (fun i -> not i.is_installed) infos in
-  (* §9.2: two modules may not share a name. *)
-  ignore (List.fold_left (fun seen i ->
-      if i.m_name <> "" && List.mem (key i.m_name) seen then begin
-        error ctx ~rule:"module-name-clash" ~section:"9.2" i.m.module_name.at
-          "two modules may not share the name %s" i.m_name;
-        seen
-      end
-      else key i.m_name :: seen) [] infos);
-  List.iter (fun i -> module_attributes ctx i.m.attributes;
-                      if i.m_name <> "" then Env.add ctx.module_names i.m_name (Module i.m.module_name.at)) user;
-  (* Constants' initial values, for array dimensions that name them. *)
+(* The installed level is checked once and shared (fuzzing checks thousands of small tasks
+   over the same installed environment): nothing of it depends on the user modules, since an
+   installed module sees only itself and the installed level (ch. 13, Env.lookup). So the task
+   is checked in two halves, the installed modules and then the user modules, each going through
+   the phases of the task in order (module data, initial values, signatures, bodies); the second
+   half starts from a copy of the tables the first one filled. *)
+
+let module_info is_installed (m : module_declaration) =
+  let m_name = Option.value (name_of_identifier m.module_name) ~default:"" in
+  { m; m_name; objects = Env.create_table (); is_installed }
+
+let early_constants ctx infos =
   List.iter (fun i ->
       List.iter (fun (d : data_declaration) ->
           match d.it with
           | Data_declaration { storage = Const; scope; name = { it = Ident n; _ }; initial_value = Some e; _ } ->
               Hashtbl.add ctx.early_constants (key n) (i.m_name, scope = Local, e)
-          | _ -> ()) i.m.data_declarations) infos;
-  type_definitions ctx infos;
-  (* Module data, in declaration order; initial values once all is registered. *)
+          | _ -> ()) i.m.data_declarations) infos
+
+(* Module data, in declaration order; initial values once all is registered. *)
+let module_data ctx infos =
   let deferred = ref [] in
   let later f = deferred := f :: !deferred in
   List.iter (fun i ->
@@ -1643,10 +1636,74 @@ let check_task ?(options = default_options) ~installed modules =
               register ctx i ~local n obj
           | Some (n, o) -> register ctx i ~local:false n o
           | None -> ()) i.m.data_declarations) infos;
-  List.iter (fun f -> f ()) (List.rev !deferred);
-  let bodies = List.concat_map (fun i ->
+  List.iter (fun f -> f ()) (List.rev !deferred)
+
+let signatures ctx infos =
+  List.concat_map (fun i ->
       List.filter_map (fun r -> Option.map (fun x -> (i, x)) (routine_signature ctx i r))
-        i.m.routine_declarations) infos in
+        i.m.routine_declarations) infos
+
+let bodies ctx l =
+  List.iter (fun (i, (routine, body)) ->
+      if not i.is_installed then entry_routine ctx routine;
+      routine_body ctx (module_place ctx i) routine body) l
+
+(* The first half: the installed modules, in a fresh environment. *)
+let check_installed options installed =
+  let ctx = builtin_environment (Report.create ()) options in
+  let infos = List.map (module_info true) installed in
+  early_constants ctx infos;
+  type_definitions ctx infos;
+  module_data ctx infos;
+  bodies ctx (signatures ctx infos);
+  (ctx, infos)
+
+(* The environment after the first half, for a task's second half. The second half adds
+   nothing to the installed level's table, nor to the installed modules' own tables (it registers
+   user objects in the globals), so those are shared; the tables it adds to are copied, and the task's elaboration keeps its own nodes apart
+   from the installed modules' ones (Elaboration.installed). *)
+let copy_ctx report ctx =
+  { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
+             elab = Elaboration.create ~installed:ctx.elab ();
+             early_constants = Hashtbl.copy ctx.early_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
+             unknown_reported = Hashtbl.copy ctx.unknown_reported; const_cache = Const_eval.copy_cache ctx.const_cache }
+
+(* The last installed environment checked, when its check reported nothing: [installed] is
+   compared physically, so that a new list (another I/O configuration's signals) is checked
+   afresh. *)
+let installed_cache : (module_declaration list * options * ctx * module_info list) option ref = ref None
+
+let installed_half options installed =
+  match !installed_cache with
+  | Some (l, o, ctx, infos) when l == installed && o = options -> (copy_ctx (Report.create ()) ctx, infos)
+  | _ ->
+      let ctx, infos = check_installed options installed in
+      if Report.all ctx.report = [] then begin
+        installed_cache := Some (installed, options, ctx, infos);
+        (copy_ctx (Report.create ()) ctx, infos)
+      end
+      else (ctx, infos)
+
+let check_task ?(options = default_options) ~installed modules =
+  let ctx, installed_infos = installed_half options installed in
+  let report = ctx.report in
+  let user = List.map (module_info false) modules in
+  let infos = installed_infos @ user in
+  (* §9.2: two modules may not share a name. *)
+  ignore (List.fold_left (fun seen i ->
+      if i.m_name <> "" && List.mem (key i.m_name) seen then begin
+        error ctx ~rule:"module-name-clash" ~section:"9.2" i.m.module_name.at
+          "two modules may not share the name %s" i.m_name;
+        seen
+      end
+      else key i.m_name :: seen) [] infos);
+  List.iter (fun i -> module_attributes ctx i.m.attributes;
+                      if i.m_name <> "" then Env.add ctx.module_names i.m_name (Module i.m.module_name.at)) user;
+  (* Constants' initial values, for array dimensions that name them. *)
+  early_constants ctx user;
+  type_definitions ctx user;
+  module_data ctx user;
+  let user_bodies = signatures ctx user in
   (* §2.20, §5.3, §9.2: a global object and a module may not share a name. *)
   let index_of_module name =
     let rec go k = function [] -> -1 | i :: rest -> if T.same_name i.m_name name then k else go (k + 1) rest in
@@ -1663,9 +1720,7 @@ let check_task ?(options = default_options) ~installed modules =
           error ctx ~rule:"global-module-clash" ~section:"9.2" at
             "a global object and a module may not share the name %s" i.m_name
       | None -> ()) user;
-  List.iter (fun (i, (routine, body)) ->
-      if not i.is_installed then entry_routine ctx routine;
-      routine_body ctx (module_place ctx i) routine body) bodies;
+  bodies ctx user_bodies;
   (* --allow-unknown: one warning per unknown name, at its first use, with the number of uses. *)
   let unknown = Hashtbl.fold (fun _ u acc -> u :: acc) ctx.unknown_uses [] in
   List.iter (fun ((u : unknown_name), section, hint) ->

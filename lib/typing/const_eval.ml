@@ -9,6 +9,7 @@ type key = At of Source.region | Named of string
 type cache = (key, value option option) Hashtbl.t
 
 let create_cache () : cache = Hashtbl.create 64
+let copy_cache (c : cache) : cache = Hashtbl.copy c
 
 let integer_of = function
   | Number q when Z.equal (Q.den q) Z.one -> Some (Q.num q)

@@ -19,6 +19,7 @@ type cache
 (** The values of constants computed so far, by their initial value. *)
 
 val create_cache : unit -> cache
+val copy_cache : cache -> cache
 
 val eval :
   ?cache:cache -> lookup:(string -> Ast.expression option) -> Ast.expression -> value option

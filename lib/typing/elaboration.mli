@@ -32,6 +32,11 @@ type t = {
           type ([None]: a numeric literal expression, num or dnum as its parameter wants); not
           there: no type (an aggregate, an unknown name). The binding checks it when the call
           runs. *)
+  installed : t option;
+      (** The elaboration of the installed level, when it is shared by every task (the checker
+          checks the installed modules once, lib/typing/check.ml): the entries of the installed
+          modules' nodes are there, not in the tables above, which hold the task's own nodes. [None]:
+          the tables hold both. *)
 }
 
-val create : unit -> t
+val create : ?installed:t -> unit -> t

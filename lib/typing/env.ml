@@ -77,6 +77,7 @@ let key = String.lowercase_ascii
 let create_table () = Hashtbl.create 64
 let find t name = Hashtbl.find_opt t (key name)
 let add t name o = Hashtbl.replace t (key name) o
+let copy_table t = Hashtbl.copy t
 let iter f t = Hashtbl.iter f t
 
 type scope = {

@@ -81,6 +81,7 @@ type table
 val create_table : unit -> table
 val find : table -> string -> obj option
 val add : table -> string -> obj -> unit
+val copy_table : table -> table
 val iter : (string -> obj -> unit) -> table -> unit
 
 (** {1 Scopes} *)

@@ -1,0 +1,68 @@
+(* Where a generated program's processor time goes (bench/README.md, "Fuzzing throughput"): each phase of
+   what [rapid-sem fuzz] does to a program, timed alone over the same programs, then the whole
+   of Fuzz_run.check_program with both engines, in programs per second on one core. *)
+
+open Rapid_syntax
+module G = Rapid_fuzz.Program_gen
+module F = Rapid_fuzz.Fuzz_run
+
+let count = ref 1000
+let seed = ref 1
+
+let time name n f =
+  Gc.compact ();
+  let minor0 = (Gc.quick_stat ()).minor_words in
+  let t0 = Sys.time () in
+  let r = f () in
+  let dt = Sys.time () -. t0 in
+  let words = (Gc.quick_stat ()).minor_words -. minor0 in
+  Printf.printf "  %-34s %8.3f ms/program  %9.0f programs/s  %8.0f kwords/program\n%!" name
+    (1000. *. dt /. float n) (float n /. dt) (words /. 1000. /. float n);
+  (r, dt)
+
+let () =
+  Arg.parse [ ("--count", Arg.Set_int count, "N programs (1000)"); ("--seed", Arg.Set_int seed, "S the seed (1)") ]
+    (fun _ -> raise (Arg.Bad "no positional arguments")) "fuzz_bench [--count N] [--seed S]";
+  let n = !count in
+  Printf.printf "Fuzzing throughput, %d programs, seed %d, one core\n" n !seed;
+  (* The first load elaborates whatever is shared between programs: not a program's cost. *)
+  ignore (F.check_program "MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n");
+  let programs, _ = time "generate" n (fun () ->
+      List.init n (fun i -> G.generate (Rapid_fuzz.Campaign.program_seed ~seed:!seed i))) in
+  let sources, _ = time "to_source" n (fun () -> List.map G.to_source programs) in
+  let trees, _ = time "parse" n (fun () ->
+      List.map (fun s -> match Parse.parse_string ~name:"fuzz.mod" s with Ok m -> m | Error _ -> failwith "parse") sources) in
+  let _ = time "print + parse again + compare" n (fun () ->
+      List.iter (fun m ->
+          let printed = Printer.module_declaration m in
+          match Parse.parse_string ~name:"fuzz.mod" printed with
+          | Ok m' -> ignore (Ast_dump.module_declaration m = Ast_dump.module_declaration m')
+          | Error _ -> failwith "round trip") trees) in
+  (* the signals the generated programs use, in one installed list for every program, as
+     Fuzz_run.load has it *)
+  let io = F.io in
+  let installed = match Rapid_semantics.Session.installed ~io () with Ok i -> i | Error _ -> failwith "installed" in
+  let checked, _ = time "check" n (fun () ->
+      List.map (fun m ->
+          let r = Rapid_typing.Check.check_task ~installed [ m ] in
+          if Rapid_typing.Check.errors r <> [] then failwith "a generated program does not check";
+          (m, r)) trees) in
+  let lowered, _ = time "lower" n (fun () ->
+      List.map (fun (m, (r : Rapid_typing.Check.result)) ->
+          Rapid_semantics.Lower.program ~installed ~modules:[ m ] r.elaboration) checked) in
+  let _ = time "initial values" n (fun () -> List.iter (fun p -> ignore (Rapid_semantics.Initial_values.evaluate p)) lowered) in
+  let loaded, _ = time "lower + initial values" n (fun () ->
+      List.map (fun (m, r) -> match Rapid_semantics.Session.lower ~io ~installed ~modules:[ m ] r with
+        | Ok p -> p | Error _ -> failwith "lower") checked) in
+  let _ = time "machine run" n (fun () -> List.iter (fun p -> ignore (F.machine.run p ~max_steps:200_000)) loaded) in
+  let _ = time "closure run" n (fun () -> List.iter (fun p -> ignore (F.closure.run p ~max_steps:200_000)) loaded) in
+  let _, dt = time "whole: check_program, both engines" n (fun () ->
+      List.iter (fun s -> match F.check_program ~engines:[ F.closure ] s with
+        | Ok _ -> () | Error f -> failwith (F.failure_to_string f)) sources) in
+  let _, dg = time "whole + generate + to_source" n (fun () ->
+      for i = 0 to n - 1 do
+        let s = G.to_source (G.generate (Rapid_fuzz.Campaign.program_seed ~seed:!seed i)) in
+        ignore (F.check_program ~engines:[ F.closure ] s)
+      done) in
+  ignore dt;
+  Printf.printf "throughput: %.0f programs/s/core (generated, checked and run by both engines)\n" (float n /. dg)

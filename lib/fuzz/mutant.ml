@@ -1,0 +1,252 @@
+(* Mutants work on the text, not on the generator's structure: what the checker meets in the
+   field is text, and a text mutation reaches what no well-typed generator can (a token in the
+   wrong place, a name of the wrong kind). *)
+
+open Rapid_syntax
+
+let pick rs l = List.nth l (Random.State.int rs (List.length l))
+let file_name = "fuzz.mod"
+
+(* ------------------------------------------------------------------ tokens *)
+
+let is_ident_char c = c = '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
+
+(* The text's words (names, keywords, numbers) with their offsets. *)
+let words text =
+  let n = String.length text in
+  let rec go i acc =
+    if i >= n then List.rev acc
+    else if is_ident_char text.[i] then begin
+      let j = ref i in
+      while !j < n && is_ident_char text.[!j] do incr j done;
+      go !j ((i, String.sub text i (!j - i)) :: acc)
+    end
+    else go (i + 1) acc in
+  go 0 []
+
+let replace_at text offset length by =
+  String.sub text 0 offset ^ by ^ String.sub text (offset + length) (String.length text - offset - length)
+
+let keywords = [
+  "IF"; "THEN"; "ELSE"; "ELSEIF"; "ENDIF"; "FOR"; "FROM"; "TO"; "STEP"; "DO"; "ENDFOR"; "WHILE";
+  "ENDWHILE"; "TEST"; "CASE"; "DEFAULT"; "ENDTEST"; "PROC"; "ENDPROC"; "FUNC"; "ENDFUNC"; "TRAP";
+  "ENDTRAP"; "ERROR"; "UNDO"; "BACKWARD"; "RETURN"; "RETRY"; "TRYNEXT"; "RAISE"; "EXIT"; "GOTO";
+  "CONNECT"; "WITH"; "VAR"; "PERS"; "CONST"; "INOUT"; "LOCAL"; "TASK"; "RECORD"; "ENDRECORD";
+  "ALIAS"; "MODULE"; "ENDMODULE"; "NOT"; "AND"; "OR"; "XOR"; "DIV"; "MOD"; "TRUE"; "FALSE";
+]
+
+let type_names = [ "num"; "dnum"; "bool"; "string"; "pos"; "orient"; "pose"; "robtarget"; "intnum"; "signaldo"; "errnum"; "fzpoint"; "tooldata" ]
+
+let tokens = [
+  ";"; ":="; ","; "("; ")"; "["; "]"; "{"; "}"; "\\"; "?"; "%"; "|"; ":"; "."; "+"; "-"; "*"; "/";
+  "<"; ">"; "="; "<>"; "<="; ">="; "<EXP>"; "<SMT>"; "<ARG>"; "<ID>"; "<DDN>"; "\""; "!"; "1E40";
+  "9E+09"; "0x1F"; "2147483648"; "\"x\""; "[1, 2]"; "[]"; "TRUE"; "ERRNO"; "INTNO"; "main";
+]
+
+let literal_swaps = [ "TRUE"; "FALSE"; "0"; "1.5"; "\"s\""; "[1, 2, 3]"; "[1, 0, 0, 0]"; "gpos1"; "gint"; "v100"; "<EXP>" ]
+
+let lines text = String.split_on_char '\n' text
+let unlines l = String.concat "\n" l
+
+let one_mutation rs text =
+  let ws = words text in
+  let n = String.length text in
+  if n = 0 || ws = [] then text
+  else
+    match Random.State.int rs 12 with
+    | 0 ->
+        (* a literal or name of another type: ill-typed, mostly *)
+        let off, w = pick rs ws in
+        replace_at text off (String.length w) (pick rs literal_swaps)
+    | 1 ->
+        (* a name swapped for another word of the program: a routine for a datum, a type for a
+           name, a keyword for a name *)
+        let off, w = pick rs ws in
+        let _, w' = pick rs ws in
+        replace_at text off (String.length w) w'
+    | 2 ->
+        let off, w = pick rs ws in
+        replace_at text off (String.length w) ""
+    | 3 ->
+        let off = Random.State.int rs n in
+        replace_at text off 0 (" " ^ pick rs tokens ^ " ")
+    | 4 ->
+        let off, w = pick rs ws in
+        replace_at text off (String.length w) (pick rs keywords)
+    | 5 ->
+        let off, w = pick rs ws in
+        replace_at text off (String.length w) (pick rs type_names)
+    | 6 ->
+        let l = Array.of_list (lines text) in
+        let i = Random.State.int rs (Array.length l) in
+        unlines (List.filteri (fun j _ -> j <> i) (Array.to_list l))
+    | 7 ->
+        let l = lines text in
+        let i = Random.State.int rs (List.length l) in
+        unlines (List.concat (List.mapi (fun j x -> if j = i then [ x; x ] else [ x ]) l))
+    | 8 ->
+        let l = Array.of_list (lines text) in
+        let i = Random.State.int rs (Array.length l) and j = Random.State.int rs (Array.length l) in
+        let t = l.(i) in
+        l.(i) <- l.(j); l.(j) <- t;
+        unlines (Array.to_list l)
+    | 9 ->
+        (* a parameter mode, or a storage class, where it may or may not be allowed *)
+        let off, w = pick rs ws in
+        replace_at text off 0 (pick rs [ "VAR "; "PERS "; "INOUT "; "REF "; "\\"; "LOCAL "; "CONST " ]) |> fun t -> ignore w; t
+    | 10 ->
+        (* an operator for another *)
+        let ops = [ ":="; "+"; "-"; "*"; "/"; "<"; ">"; "="; ";"; "," ] in
+        let rec find tries =
+          if tries = 0 then text
+          else
+            let off = Random.State.int rs n in
+            if List.mem (String.make 1 text.[off]) ops then replace_at text off 1 (pick rs ops) else find (tries - 1) in
+        find 50
+    | _ -> String.sub text 0 (Random.State.int rs n)
+
+let mutate rs text =
+  let rec go k t = if k = 0 then t else go (k - 1) (one_mutation rs t) in
+  go (1 + Random.State.int rs 3) text
+
+(* ------------------------------------------------------------------ hostile texts *)
+
+let repeat n s = String.concat "" (List.init n (fun _ -> s))
+
+let in_main body = Printf.sprintf "MODULE h\n  PROC main()\n%s\n  ENDPROC\nENDMODULE\n" body
+
+let hostile rs =
+  let depth () = pick rs [ 100; 1000; 10_000; 100_000 ] in
+  match Random.State.int rs 14 with
+  | 0 -> String.init (Random.State.int rs 2000) (fun _ -> Char.chr (Random.State.int rs 256))
+  | 1 -> let d = depth () in in_main (Printf.sprintf "    x := %s1%s;" (repeat d "(") (repeat d ")"))
+  | 2 -> let d = depth () in in_main (Printf.sprintf "    x := %s1%s;" (repeat d "[") (repeat d "]"))
+  | 3 -> let d = min 20_000 (depth ()) in in_main (repeat d "IF TRUE THEN\n" ^ repeat d "ENDIF\n")
+  | 4 -> let d = depth () in in_main (Printf.sprintf "    VAR num %s;" (String.make d 'a'))
+  | 5 -> in_main (Printf.sprintf "    TPWrite \"%s\";" (String.make (depth ()) 'x'))
+  | 6 -> in_main (Printf.sprintf "    x := %s;" (pick rs [ String.make 5000 '9'; "1E999999"; "1E-999999"; "0x" ^ String.make 100 'F';
+                                                          "0b" ^ String.make 200 '1'; "0o" ^ String.make 100 '7'; "1.E"; ".5E+" ]))
+  | 7 -> in_main "    TPWrite \"unterminated;\n" ^ pick rs [ "\""; ""; "\\" ]
+  | 8 -> "\xEF\xBB\xBFMODULE m\r  PROC main()\r\r\n  ENDPROC\rENDMODULE" ^ pick rs [ ""; "\r"; "\x00"; "\xFF\xFE" ]
+  | 9 -> in_main (repeat (depth ()) "    ;\n")
+  | 10 -> let d = min 10_000 (depth ()) in
+      in_main (Printf.sprintf "    x := %sa%s;" (repeat d "-") "")
+  | 11 -> let d = min 50_000 (depth ()) in
+      in_main (Printf.sprintf "    x := 1%s;" (repeat d " + 1"))
+  | 12 -> let d = min 10_000 (depth ()) in
+      Printf.sprintf "MODULE h\n%s\nENDMODULE\n"
+        (String.concat "\n" (List.init d (fun i -> Printf.sprintf "  PROC p%d() p%d; ENDPROC" i (i + 1))))
+  | _ ->
+      (* a valid program's words in random order *)
+      let vocabulary = keywords @ tokens @ type_names @ [ "x"; "main"; "1"; "\"s\"" ] in
+      String.concat " " (List.init (Random.State.int rs 300) (fun _ -> pick rs vocabulary))
+
+(* ------------------------------------------------------------------ the property *)
+
+(* [FILE:LINE:COL: CLASS: ...]: the place first, then a class word. *)
+let well_placed headline =
+  let prefix = file_name ^ ":" in
+  let p = String.length prefix in
+  String.length headline > p && String.sub headline 0 p = prefix &&
+  (match String.split_on_char ':' (String.sub headline p (String.length headline - p)) with
+   | line :: col :: cls :: _ ->
+       int_of_string_opt line <> None && int_of_string_opt (String.trim col) <> None && String.trim cls <> ""
+   | _ -> false)
+
+let check_text ?(max_steps = 20_000) text =
+  try
+    match Parse.parse_string ~name:file_name text with
+    | Error d ->
+        let h = Diagnostic.headline d in
+        if well_placed h then Ok () else Error ("a diagnostic without its place or class: " ^ h)
+    | Ok m -> (
+        match Fuzz_run.load m with
+        | Error (Front_end ds) ->
+            (match List.find_opt (fun d -> not (well_placed (Diagnostic.headline d))) ds with
+             | Some d -> Error ("a diagnostic without its place or class: " ^ Diagnostic.headline d)
+             | None -> Ok ())
+        | Error (Static rs) ->
+            (match List.find_opt (fun r -> not (well_placed (Rapid_typing.Report.headline r))) rs with
+             | Some r -> Error ("a report without its place or class: " ^ Rapid_typing.Report.headline r)
+             | None -> if List.exists (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs then Ok ()
+               else Error "refused without an error")
+        | Error (Internal m) -> Error ("internal: " ^ m)
+        | Ok loaded ->
+            let o = Fuzz_run.machine.run loaded.program ~max_steps in
+            if String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck" then Error ("no rule applies: " ^ o.outcome)
+            else Ok ())
+  with
+  | Stack_overflow -> Error "stack overflow"
+  | Out_of_memory -> Error "out of memory"
+  | e -> Error ("exception " ^ Printexc.to_string e)
+
+(* ------------------------------------------------------------------ shrinking *)
+
+(* Lines, then words, then characters: each pass deletes chunks, halving their size, while the
+   text still fails. *)
+
+let shrink_text fails text =
+  (* chunks of halving sizes (and 3, the words of a small declaration), tried at every place
+     when the parts are few, at every chunk boundary when they are many *)
+  let rec by_chunks split join parts chunk =
+    if chunk = 0 then parts
+    else
+      let n = List.length parts in
+      let step = if n <= 300 then 1 else chunk in
+      let rec try_at i parts =
+        if i >= List.length parts then parts
+        else
+          let candidate = List.filteri (fun j _ -> j < i || j >= i + chunk) parts in
+          if candidate <> [] && fails (join candidate) then try_at i candidate else try_at (i + step) parts in
+      let parts' = try_at 0 parts in
+      let next = if chunk > 4 && chunk / 2 < 3 then 3 else if chunk = 4 then 3 else if chunk = 3 then 2 else chunk / 2 in
+      if List.length parts' < n then by_chunks split join parts' chunk else by_chunks split join parts' next in
+  let ls = by_chunks lines unlines (lines text) (max 1 (List.length (lines text) / 2)) in
+  let t = unlines ls in
+  (* words next, so that a declaration goes whole from a line that holds several *)
+  let words t =
+    (* names and numbers whole, every other character alone, blanks kept with what precedes *)
+    let n = String.length t in
+    let rec go i acc =
+      if i >= n then List.rev acc
+      else
+        let j = ref (i + 1) in
+        if is_ident_char t.[i] then while !j < n && is_ident_char t.[!j] do incr j done;
+        while !j < n && (t.[!j] = ' ' || t.[!j] = '\n') do incr j done;
+        go !j (String.sub t i (!j - i) :: acc) in
+    go 0 [] in
+  let ws = words t in
+  (* a routine, a record or a compound statement at once, from its keyword to its END keyword *)
+  let blocks ws =
+    let starts w kw = let n = String.length kw in String.length w >= n && String.sub w 0 n = kw
+                                                 && (String.length w = n || not (is_ident_char w.[n])) in
+    let kws = [ "PROC"; "FUNC"; "TRAP"; "RECORD"; "IF"; "FOR"; "WHILE"; "TEST" ] in
+    let rec go ws =
+      let a = Array.of_list ws in
+      let n = Array.length a in
+      let rec from i =
+        if i >= n then ws
+        else match List.find_opt (starts a.(i)) kws with
+          | None -> from (i + 1)
+          | Some kw ->
+              let rec close j depth =
+                if j >= n then None
+                else if starts a.(j) ("END" ^ kw) then (if depth = 0 then Some j else close (j + 1) (depth - 1))
+                else if starts a.(j) kw then close (j + 1) (depth + 1)
+                else close (j + 1) depth in
+              match close (i + 1) 0 with
+              | Some j ->
+                  let candidate = List.filteri (fun k _ -> k < i || k > j) ws in
+                  if candidate <> [] && fails (String.concat "" candidate) then go candidate else from (i + 1)
+              | None -> from (i + 1) in
+      from 0 in
+    go ws in
+  let t = if String.length t > 20_000 then t
+    else
+      let ws = blocks ws in
+      String.concat "" (by_chunks words (String.concat "") ws (max 1 (List.length ws / 2))) in
+  if String.length t > 2000 then t
+  else
+    let chars = List.init (String.length t) (String.get t) in
+    let join cs = String.concat "" (List.map (String.make 1) cs) in
+    join (by_chunks (fun _ -> chars) join chars (max 1 (List.length chars / 2)))
