@@ -41,7 +41,7 @@ let cmd =
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
   let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
-  let signal_stores = Arg.(value & flag & info [ "signal-stores" ] ~doc:"Generate assignments to signal variables too (do1 := 1): off by default, since the closure engine does not yet leave them to the machine (doc/fuzz-campaign.md).") in
+  let signal_stores = Arg.(value & flag & info [ "no-signal-stores" ] ~doc:"Generate no assignments to signal variables (do1 := 1).") in
   let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
   let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
   let break_rule =
@@ -64,7 +64,7 @@ let cmd =
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
     let options = { Rapid_fuzz.Program_gen.default_options with
-                    mismatching = mismatching || not matching_only; controller = not no_controller && impl = None; signal_stores } in
+                    mismatching = mismatching || not matching_only; controller = not no_controller && impl = None; signal_stores = not signal_stores } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
     let engine = match break_rule with
       | Some m -> Rapid_fuzz.Mutation.engine m Rapid_fuzz.Fuzz_run.closure

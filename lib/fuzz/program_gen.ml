@@ -20,7 +20,7 @@ type options = {
   mismatching : bool; max_routines : int; max_statements : int; controller : bool; signal_stores : bool }
 
 let default_options =
-  { mismatching = true; max_routines = 5; max_statements = 5; controller = true; signal_stores = false }
+  { mismatching = true; max_routines = 5; max_statements = 5; controller = true; signal_stores = true }
 
 (* pos and orient for their rows of §3.12 (vector and rotation arithmetic). *)
 type ty = Num | Dnum | Bool | Str | Pos | Orient

@@ -240,6 +240,12 @@ let error_of_number cfg n at =
 let region_of_focus_stmt cfg =
   match cfg.mark with K_stmt (s, _) :: _ -> s.Ir.sat | _ -> cfg.act.routine.at
 
+(* R-7.1-w: an error raised while the routine's data are initialised (a placeholder in an
+   initial value) is not the routine's: its body has not started, so its error handler has no
+   statement to go back to; the error is raised at the call, as an argument's. *)
+let initialising cfg (act : activation) =
+  List.exists (function K_local_init (a, _) -> a == act | _ -> false) cfg.stack
+
 let raise_ ?about cfg name = cfg.focus <- F_raise (error ?about cfg name (region_of_focus_stmt cfg))
 
 let push cfg f = cfg.stack <- f :: cfg.stack
@@ -853,8 +859,8 @@ let raise_step cfg (e : err) =
       (* §6.1: an error while a BACKWARD handler runs cannot be handled by an error handler. *)
       stop cfg e "raise-in-backward"
   | (In_handler _ | In_undo), _ -> stop cfg e "raise-in-handler"
-  | Body, Some _ -> handle cfg e
-  | Body, None -> (
+  | Body, Some _ when not (initialising cfg act) -> handle cfg e
+  | Body, _ -> (
       match act.caller with
       | None -> stop cfg e "raise-unhandled"
       | Some _ when act.routine.kind = Trap && e.searched ->
@@ -1524,7 +1530,12 @@ let expr_step cfg (e : Ir.expr) =
       match c.callee with
       | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKFUN"; ("call-unknown-function", [])
       | Routine _ -> (begin_call cfg c, []))
-  | Placeholder -> raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
+  | Placeholder ->
+      (* In an initial value of routine data no statement is in progress: the placeholder's own
+         place (R-7.1-w). *)
+      if cfg.mark = [] && initialising cfg cfg.act then cfg.focus <- F_raise (error cfg "ERR_EXECPHR" e.at)
+      else raise_ cfg "ERR_EXECPHR";
+      ("execute-placeholder", [])
   | Fitted (a, shape) -> push cfg (K_fit shape); cfg.focus <- F_expr a; ("argument-aggregate", [])
 
 (* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
