@@ -878,13 +878,15 @@ let fuzz_programs_observed () =
     match Parse.parse_string ~name:"generated.mod" source with
     | Error _ -> ()
     | Ok m -> (
-        match Rapid_semantics.Session.load_modules [ m ] with
+        (* The fuzzer's controller: its signals, and the stimulus of di1. *)
+        match Rapid_fuzz.Fuzz_run.load m with
         | Error _ -> ()
         | Ok l ->
             incr compared;
             let budget = 200_000 and limits = M.default_limits in
-            let m_events, m_outcome = machine_run limits l.program ~entry:"main" ~max_steps:budget in
-            let c_events, c_outcome = closure_run limits l.program ~entry:"main" ~fuel:budget in
+            let world () = Rapid_controller.World.create Rapid_fuzz.Fuzz_run.io in
+            let m_events, m_outcome = machine_run ~world:(world ()) limits l.program ~entry:"main" ~max_steps:budget in
+            let c_events, c_outcome = closure_run ~world:(world ()) limits l.program ~entry:"main" ~fuel:budget in
             let cut_short = m_outcome = Running || c_outcome = Running
                             || (match m_outcome, c_outcome with Resource_exhausted _, _ | _, Resource_exhausted _ -> true | _ -> false) in
             if cut_short then begin
