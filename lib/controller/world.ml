@@ -35,6 +35,7 @@ type interrupt = {
   mutable source : source;
   mutable generation : int;           (* a new order cancels the pending timer events of the old *)
   mutable sleeping : bool;
+  mutable safe : bool;                (* ordered with \SingleSafe: ISleep refuses it (R-8-w) *)
 }
 
 type clock = { mutable since : int option; mutable total : int }
@@ -222,12 +223,23 @@ let connect w ~trap =
     (* The lowest number not in use: numbers are freed by IDelete. *)
     let rec free n = if Hashtbl.mem w.interrupts n then free (n + 1) else n in
     let n = free 1 in
-    Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false };
+    Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false; safe = false };
     Ok n
   end
 
 let connected w n = Hashtbl.mem w.interrupts n
-let delete w n = Hashtbl.remove w.interrupts n
+(* The occurrences still queued go with the number: dropped now, so that a later CONNECT that
+   gets the same number never serves them with its trap (R-8-x). *)
+let delete w n =
+  if Hashtbl.mem w.interrupts n then begin
+    Hashtbl.remove w.interrupts n;
+    let kept = Queue.create () in
+    Queue.iter (fun ((m, _) as q) ->
+        if m = n then observe w (Interrupt_discarded { time = now w; number = n; reason = "deleted (IDelete)" })
+        else Queue.add q kept) w.queue;
+    Queue.clear w.queue;
+    Queue.transfer kept w.queue
+  end
 
 let with_interrupt w n f =
   match Hashtbl.find_opt w.interrupts n with Some i -> f i | None -> Error "ERR_UNKINO"
@@ -285,7 +297,11 @@ let look_at_watches w =
           occur w n
       | _ -> ())
 
-let sleep w n = with_interrupt w n (fun i -> i.sleeping <- true; Ok ())
+let set_safe w n ~safe = match Hashtbl.find_opt w.interrupts n with Some i -> i.safe <- safe | None -> ()
+
+(* ch. 13, ERR_INOISSAFE: "如果尝试暂时停用安全中断,则采用ISleep" — a safe interrupt cannot be
+   deactivated for a while (R-8-w). *)
+let sleep w n = with_interrupt w n (fun i -> if i.safe then Error "ERR_INOISSAFE" else (i.sleeping <- true; Ok ()))
 let watch w n = with_interrupt w n (fun i -> i.sleeping <- false; Ok ())
 let disable w = w.disabled <- true
 let enable w = w.disabled <- false
