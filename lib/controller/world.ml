@@ -14,7 +14,14 @@ let default_poll_rate = 0.1
 let max_interrupts = 100
 let queue_capacity = 30
 
-let seconds s = int_of_float (Float.round (s *. 1e6))
+(* A time beyond 10^12 s (about 31700 years, far past any --max-time) is "never": the count
+   stops at 10^18 µs, which sums of two such times still hold, instead of overflowing the
+   integer (a num goes up to 3.4E38 seconds). *)
+let never_us = 1_000_000_000_000_000_000
+let seconds s =
+  if Float.is_nan s || s >= 1e12 then never_us
+  else if s <= -1e12 then - never_us
+  else int_of_float (Float.round (s *. 1e6))
 let to_seconds us = float_of_int us /. 1e6
 
 type signal = { s_name : string; s_kind : Io_config.signal_type; mutable value : float }

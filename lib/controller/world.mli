@@ -77,7 +77,9 @@ val wake_at : t -> float -> unit
     large (from 1e12 s) times are ignored. *)
 
 val seconds : float -> int
-(** Seconds to the clock's microseconds, rounded to nearest. *)
+(** Seconds to the clock's microseconds, rounded to nearest; from 10^12 s on (and NaN) the same
+    count, 10^18, that no run reaches ("never"), so that a time as large as a num can hold
+    neither overflows nor wraps to the past. *)
 
 (** {1 Signals} *)
 
