@@ -289,8 +289,10 @@ let call (ctx : context) name args =
             ordered ctx args n (W.order_error w n ~domain:(Option.value (int_of "ErrorDomain") ~default:0)
                     ~id:(int_of "ErrorId") ~error_type:(Option.value (int_of "ErrorType") ~default:0)))
   | "errwrite" ->
-      (* The entry goes to the event log (Primitive writes it), where IError sees it (R-8-l). *)
-      W.post_error w (err_write_datum ctx args); None
+      (* The entry goes to the event log, where IError sees it (R-8-l): written first, so that
+         the interrupts it makes occur come after it. *)
+      let r = Primitive.call ctx name args in
+      W.post_error w (err_write_datum ctx args); Some r
   | "gettrapdata" ->
       store ctx args "TrapEvent" (V.Handle (V.make_handle ~kind:"trapdata" (W.trap_data w)));
       Some done_
