@@ -251,10 +251,13 @@ let delete w n =
 let with_interrupt w n f =
   match Hashtbl.find_opt w.interrupts n with Some i -> f i | None -> Error "ERR_UNKINO"
 
+(* ch. 8: "通常,定义程序(比如,ISignalDI)将激活中断" — an order activates the interrupt, even one
+   that ISleep deactivated (R-8-w). *)
 let order_timer w n ~period ~single =
   with_interrupt w n (fun i ->
       let p = max 1 (seconds period) in
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Timer { period = p; single };
       schedule w (w.c.now + p) (Timer_due (w, n, i.generation));
       Ok ())
@@ -262,12 +265,14 @@ let order_timer w n ~period ~single =
 let order_signal w n ~signal ~trigger ~single =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Signal_edge { signal; trigger; single };
       Ok ())
 
 let order_watch w n ~changed ~single =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Watch { changed; single };
       w.watching <- true;
       Ok ())
@@ -275,6 +280,7 @@ let order_watch w n ~changed ~single =
 let order_error w n ~domain ~id ~error_type =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Error_log { domain; id; error_type };
       Ok ())
 
