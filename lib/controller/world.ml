@@ -312,7 +312,7 @@ let look_at_watches w =
 
 let set_safe w n ~safe = match Hashtbl.find_opt w.interrupts n with Some i -> i.safe <- safe | None -> ()
 
-(* ch. 13, ERR_INOISSAFE: "如果尝试暂时停用安全中断,则采用ISleep" — a safe interrupt cannot be
+(* ch. 12, ERR_INOISSAFE: "如果尝试暂时停用安全中断,则采用ISleep" — a safe interrupt cannot be
    deactivated for a while (R-8-w). *)
 let sleep w n = with_interrupt w n (fun i -> if i.safe then Error "ERR_INOISSAFE" else (i.sleeping <- true; Ok ()))
 let watch w n = with_interrupt w n (fun i -> i.sleeping <- false; Ok ())
