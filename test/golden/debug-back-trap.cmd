@@ -1,0 +1,1 @@
+debug --script debug-back-trap.dbg debug-back-trap.mod
