@@ -1,1 +1,1 @@
-debug --script debug-back-trap.dbg debug-back-trap.mod
+debug --script debug-back-trap.dbg ../../spec/06-backward/01-trap-in-backward.mod
