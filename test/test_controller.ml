@@ -112,11 +112,11 @@ let wall_clock () =
   Alcotest.(check string) "leap day" "2024-02-29 23:59:59 4" (show (W.default_epoch +. (59. *. 86400.) +. 86399.))
 
 (* The same program with the same stimulus gives the same events, byte for byte. *)
-let reproducible () =
+let reproducible_with args () =
   let run () =
     let out = Filename.temp_file "rapid-sem" ".json" in
-    let command = Printf.sprintf "cd golden && %s run --json --io controller-cell.io controller-cell.mod > %s"
-        (Filename.quote binary) (Filename.quote out) in
+    let command = Printf.sprintf "cd golden && %s %s --io controller-cell.io controller-cell.mod > %s"
+        (Filename.quote binary) args (Filename.quote out) in
     let status = Sys.command command in
     let ic = open_in_bin out in
     let text = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
@@ -153,5 +153,6 @@ let suite =
       Alcotest.test_case "the interrupt queue and its capacity" `Quick queue;
       Alcotest.test_case "IDelete, safe interrupts, times that never come" `Quick delete_safe_never;
       Alcotest.test_case "the wall clock (CDate, CTime, GetTime)" `Quick wall_clock;
-      Alcotest.test_case "two runs give byte-identical run --json" `Quick reproducible;
+      Alcotest.test_case "two runs give byte-identical run --json" `Quick (reproducible_with "run --json");
+      Alcotest.test_case "two traces give byte-identical jsonl" `Quick (reproducible_with "trace --format jsonl");
     ])
