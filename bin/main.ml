@@ -715,9 +715,15 @@ let controller_text (e : M.event) =
   | Motion m -> Some (Rapid_semantics.Motion_primitives.event_to_string m)
   | _ -> None
 
+(* An entry of the event log other than ErrWrite's (§7.5), as the debugger shows it. *)
+let event_log_text : Rapid_semantics.Primitive.log_entry -> string = function
+  | Err_log { id; kind; arguments } -> Printf.sprintf "%s %d: %s" kind id (String.concat " | " arguments)
+  | Skip_warning -> "SkipWarn"
+
 (* A change as the statement-level trace writes it after the statement. *)
 let change_text (c : TV.change) =
   match c with
+  | Controller_event (Event_log l) -> Some ("log: " ^ event_log_text l)
   | Write { place; value } -> Some (place ^ " := " ^ value)
   | Output s -> Some ("> " ^ s)
   | Erase -> Some "(erased)"
@@ -734,6 +740,7 @@ let change_text (c : TV.change) =
 (* What a reduction line adds under it: output, errors and handlers, UNDO. *)
 let change_line (c : TV.change) =
   match c with
+  | Controller_event (Event_log l) -> Some ("log: " ^ event_log_text l)
   | Output s -> Some ("> " ^ s)
   | Erase -> Some "> (erased)"
   | Log s -> Some ("log: " ^ s)

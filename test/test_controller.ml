@@ -76,6 +76,34 @@ let queue () =
   Alcotest.(check int) "discarded" (100 - W.queue_capacity) discarded;
   Alcotest.(check (result unit string)) "unknown number" (Error "ERR_UNKINO") (W.sleep w 99)
 
+(* IDelete takes the number's occurrences out of the queue (R-8-x); ISleep refuses a safe
+   interrupt (R-8-w); a time as large as a num holds never falls due (R-8-j). *)
+let delete_safe_never () =
+  let w = W.create Io.empty in
+  let connect () = match W.connect w ~trap:7 with Ok n -> n | Error e -> Alcotest.fail e in
+  let a = connect () and b = connect () in
+  ignore (W.order_timer w a ~period:0.1 ~single:true);
+  ignore (W.order_timer w b ~period:0.2 ~single:true);
+  W.disable w;
+  W.advance_to w 1.;
+  ignore (W.drain w);
+  W.delete w a;
+  let discarded = List.filter_map (function
+      | W.Interrupt_discarded { number; reason; _ } -> Some (number, reason) | _ -> None) (W.drain w) in
+  Alcotest.(check (list (pair int string))) "dropped" [ (a, "deleted (IDelete)") ] discarded;
+  let a' = connect () in
+  Alcotest.(check int) "the freed number again" a a';
+  W.enable w;
+  Alcotest.(check (option (pair int int))) "only b's" (Some (b, 7)) (W.take w);
+  Alcotest.(check (option (pair int int))) "then none" None (W.take w);
+  W.set_safe w a' ~safe:true;
+  Alcotest.(check (result unit string)) "safe" (Error "ERR_INOISSAFE") (W.sleep w a');
+  W.set_safe w a' ~safe:false;
+  Alcotest.(check (result unit string)) "not safe" (Ok ()) (W.sleep w a');
+  Alcotest.(check bool) "never" true (W.seconds 3e38 > W.seconds 1e11 && W.seconds 3e38 = W.seconds nan);
+  ignore (W.order_timer w b ~period:3e38 ~single:false);
+  Alcotest.(check bool) "not due" true (match W.next_event w with Some t -> t >= 1e12 | None -> false)
+
 let wall_clock () =
   let show t = let y, m, d, h, mi, s, wd = Rapid_semantics.Io_primitives.date_time t in
     Printf.sprintf "%04d-%02d-%02d %02d:%02d:%02d %d" y m d h mi s wd in
@@ -84,11 +112,11 @@ let wall_clock () =
   Alcotest.(check string) "leap day" "2024-02-29 23:59:59 4" (show (W.default_epoch +. (59. *. 86400.) +. 86399.))
 
 (* The same program with the same stimulus gives the same events, byte for byte. *)
-let reproducible () =
+let reproducible_with args () =
   let run () =
     let out = Filename.temp_file "rapid-sem" ".json" in
-    let command = Printf.sprintf "cd golden && %s run --json --io controller-cell.io controller-cell.mod > %s"
-        (Filename.quote binary) (Filename.quote out) in
+    let command = Printf.sprintf "cd golden && %s %s --io controller-cell.io controller-cell.mod > %s"
+        (Filename.quote binary) args (Filename.quote out) in
     let status = Sys.command command in
     let ic = open_in_bin out in
     let text = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
@@ -123,6 +151,8 @@ let suite =
       Alcotest.test_case "the clock counts microseconds exactly" `Quick exact_clock;
       Alcotest.test_case "timed events in order" `Quick events_in_order;
       Alcotest.test_case "the interrupt queue and its capacity" `Quick queue;
+      Alcotest.test_case "IDelete, safe interrupts, times that never come" `Quick delete_safe_never;
       Alcotest.test_case "the wall clock (CDate, CTime, GetTime)" `Quick wall_clock;
-      Alcotest.test_case "two runs give byte-identical run --json" `Quick reproducible;
+      Alcotest.test_case "two runs give byte-identical run --json" `Quick (reproducible_with "run --json");
+      Alcotest.test_case "two traces give byte-identical jsonl" `Quick (reproducible_with "trace --format jsonl");
     ])

@@ -14,7 +14,14 @@ let default_poll_rate = 0.1
 let max_interrupts = 100
 let queue_capacity = 30
 
-let seconds s = int_of_float (Float.round (s *. 1e6))
+(* A time beyond 10^12 s (about 31700 years, far past any --max-time) is "never": the count
+   stops at 10^18 µs, which sums of two such times still hold, instead of overflowing the
+   integer (a num goes up to 3.4E38 seconds). *)
+let never_us = 1_000_000_000_000_000_000
+let seconds s =
+  if Float.is_nan s || s >= 1e12 then never_us
+  else if s <= -1e12 then - never_us
+  else int_of_float (Float.round (s *. 1e6))
 let to_seconds us = float_of_int us /. 1e6
 
 type signal = { s_name : string; s_kind : Io_config.signal_type; mutable value : float }
@@ -35,6 +42,7 @@ type interrupt = {
   mutable source : source;
   mutable generation : int;           (* a new order cancels the pending timer events of the old *)
   mutable sleeping : bool;
+  mutable safe : bool;                (* ordered with \SingleSafe: ISleep refuses it (R-8-w) *)
 }
 
 type clock = { mutable since : int option; mutable total : int }
@@ -247,20 +255,34 @@ let connect w ~trap =
     (* The lowest number not in use: numbers are freed by IDelete. *)
     let rec free n = if Hashtbl.mem w.interrupts n then free (n + 1) else n in
     let n = free 1 in
-    Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false };
+    Hashtbl.replace w.interrupts n { trap; source = No_source; generation = 0; sleeping = false; safe = false };
     Ok n
   end
 
 let connected w n = Hashtbl.mem w.interrupts n
-let delete w n = Hashtbl.remove w.interrupts n
+(* The occurrences still queued go with the number: dropped now, so that a later CONNECT that
+   gets the same number never serves them with its trap (R-8-x). *)
+let delete w n =
+  if Hashtbl.mem w.interrupts n then begin
+    Hashtbl.remove w.interrupts n;
+    let kept = Queue.create () in
+    Queue.iter (fun ((m, _) as q) ->
+        if m = n then observe w (Interrupt_discarded { time = now w; number = n; reason = "deleted (IDelete)" })
+        else Queue.add q kept) w.queue;
+    Queue.clear w.queue;
+    Queue.transfer kept w.queue
+  end
 
 let with_interrupt w n f =
   match Hashtbl.find_opt w.interrupts n with Some i -> f i | None -> Error "ERR_UNKINO"
 
+(* ch. 8: "通常,定义程序(比如,ISignalDI)将激活中断" — an order activates the interrupt, even one
+   that ISleep deactivated (R-8-w). *)
 let order_timer w n ~period ~single =
   with_interrupt w n (fun i ->
       let p = max 1 (seconds period) in
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Timer { period = p; single };
       schedule w (w.c.now + p) (Timer_due (w, n, i.generation));
       Ok ())
@@ -268,12 +290,14 @@ let order_timer w n ~period ~single =
 let order_signal w n ~signal ~trigger ~single =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Signal_edge { signal; trigger; single };
       Ok ())
 
 let order_watch w n ~changed ~single =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Watch { changed; single };
       w.watching <- true;
       Ok ())
@@ -281,6 +305,7 @@ let order_watch w n ~changed ~single =
 let order_error w n ~domain ~id ~error_type =
   with_interrupt w n (fun i ->
       i.generation <- fresh_generation w;
+      i.sleeping <- false;
       i.source <- Error_log { domain; id; error_type };
       Ok ())
 
@@ -310,7 +335,11 @@ let look_at_watches w =
           occur w n
       | _ -> ())
 
-let sleep w n = with_interrupt w n (fun i -> i.sleeping <- true; Ok ())
+let set_safe w n ~safe = match Hashtbl.find_opt w.interrupts n with Some i -> i.safe <- safe | None -> ()
+
+(* ch. 12, ERR_INOISSAFE: "如果尝试暂时停用安全中断,则采用ISleep" — a safe interrupt cannot be
+   deactivated for a while (R-8-w). *)
+let sleep w n = with_interrupt w n (fun i -> if i.safe then Error "ERR_INOISSAFE" else (i.sleeping <- true; Ok ()))
 let watch w n = with_interrupt w n (fun i -> i.sleeping <- false; Ok ())
 let disable w = w.disabled <- true
 let enable w = w.disabled <- false

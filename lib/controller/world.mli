@@ -89,7 +89,9 @@ val wake_at : t -> float -> unit
     large (from 1e12 s) times are ignored. *)
 
 val seconds : float -> int
-(** Seconds to the clock's microseconds, rounded to nearest. *)
+(** Seconds to the clock's microseconds, rounded to nearest; from 10^12 s on (and NaN) the same
+    count, 10^18, that no run reaches ("never"), so that a time as large as a num can hold
+    neither overflows nor wraps to the past. *)
 
 (** {1 Signals} *)
 
@@ -130,8 +132,8 @@ val connect : t -> trap:int -> (int, string) result
 
 val connected : t -> int -> bool
 val delete : t -> int -> unit
-(** IDelete: the number is free again; its source is cancelled, and queued occurrences are
-    dropped when their turn comes. *)
+(** IDelete: the number is free again; its source is cancelled, and its occurrences still queued
+    are dropped (an [Interrupt_discarded] each, R-8-x). *)
 
 val order_timer : t -> int -> period:float -> single:bool -> (unit, string) result
 (** ITimer; ERR_UNKINO for a number that is not connected. *)
@@ -163,7 +165,12 @@ val trap_data : t -> int
 val error_datum : t -> int -> error_datum option
 (** ReadErrData: the event a trapdata identity denotes. *)
 
+val set_safe : t -> int -> safe:bool -> unit
+(** Whether the number's interrupt is safe (ordered with \SingleSafe, R-8-w); every order sets it. *)
+
 val sleep : t -> int -> (unit, string) result
+(** ISleep: ERR_UNKINO for a number that is not connected, ERR_INOISSAFE for a safe one. *)
+
 val watch : t -> int -> (unit, string) result
 val disable : t -> unit
 val enable : t -> unit

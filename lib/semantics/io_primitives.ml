@@ -105,6 +105,12 @@ let interrupt ctx args =
 
 let single ctx args = present ctx args "Single" || present ctx args "SingleSafe"
 
+(* The end of an order: a new order makes the interrupt safe, or not, by its \SingleSafe
+   (R-8-w). *)
+let ordered ctx args n = function
+  | Ok () -> W.set_safe ctx.world n ~safe:(present ctx args "SingleSafe"); done_
+  | Error e -> Failed e
+
 (* A clock object: the handle stored in the variable gets its identity at its first use. *)
 let clock ctx args =
   match arg ctx args "Clock" with
@@ -245,20 +251,18 @@ let call (ctx : context) name args =
       Some (let* n = interrupt ctx args in
             let* t = match num ctx args "Time" with
               | Some t when t > 0. && Float.is_finite t -> Ok t | _ -> Error "ERR_ARGVALERR" in
-            match W.order_timer w n ~period:t ~single:(single ctx args) with Ok () -> done_ | Error e -> Failed e)
+            ordered ctx args n (W.order_timer w n ~period:t ~single:(single ctx args)))
   | "isignaldi" | "isignaldo" ->
       Some (let* n = interrupt ctx args in
             let* id = signal ctx args "Signal" in
             let* t = match num ctx args "TriggValue" with
               | Some (0. | 1. | 2. as t) -> Ok t | _ -> Error "ERR_ARGVALERR" in
-            match W.order_signal w n ~signal:id ~trigger:(digital_trigger t) ~single:(single ctx args) with
-            | Ok () -> done_ | Error e -> Failed e)
+            ordered ctx args n (W.order_signal w n ~signal:id ~trigger:(digital_trigger t) ~single:(single ctx args)))
   | "isignalgi" | "isignalgo" ->
       (* A group signal interrupts at every change of its value. *)
       Some (let* n = interrupt ctx args in
             let* id = signal ctx args "Signal" in
-            match W.order_signal w n ~signal:id ~trigger:(fun ~old ~now -> old <> now) ~single:(single ctx args) with
-            | Ok () -> done_ | Error e -> Failed e)
+            ordered ctx args n (W.order_signal w n ~signal:id ~trigger:(fun ~old ~now -> old <> now) ~single:(single ctx args)))
   | "isignalai" | "isignalao" ->
       Some (let* n = interrupt ctx args in
             let* id = signal ctx args "Signal" in
@@ -268,8 +272,7 @@ let call (ctx : context) name args =
             let direction = if present ctx args "DPos" then `Up else if present ctx args "DNeg" then `Down else `Any in
             let trigger = analog_trigger ~condition ~high:(get "HighValue") ~low:(get "LowValue")
                 ~delta:(Float.abs (get "DeltaValue")) ~direction in
-            match W.order_signal w n ~signal:id ~trigger ~single:(single ctx args) with
-            | Ok () -> done_ | Error e -> Failed e)
+            ordered ctx args n (W.order_signal w n ~signal:id ~trigger ~single:(single ctx args)))
   | "ipers" -> (
       (* IPers: an interrupt each time the persistent gets a new value. *)
       match arg ctx args "Name" with
@@ -278,17 +281,18 @@ let call (ctx : context) name args =
           let changed () =
             if V.equal !last box.(i) then false else (last := V.copy box.(i); true) in
           Some (let* n = interrupt ctx args in
-                match W.order_watch w n ~changed ~single:(single ctx args) with Ok () -> done_ | Error e -> Failed e)
+                ordered ctx args n (W.order_watch w n ~changed ~single:(single ctx args)))
       | _ -> Some (Failed "ERR_ARGNOTPER"))
   | "ierror" ->
       Some (let* n = interrupt ctx args in
             let int_of name = Option.map int_of_float (num ctx args name) in
-            match W.order_error w n ~domain:(Option.value (int_of "ErrorDomain") ~default:0)
-                    ~id:(int_of "ErrorId") ~error_type:(Option.value (int_of "ErrorType") ~default:0) with
-            | Ok () -> done_ | Error e -> Failed e)
+            ordered ctx args n (W.order_error w n ~domain:(Option.value (int_of "ErrorDomain") ~default:0)
+                    ~id:(int_of "ErrorId") ~error_type:(Option.value (int_of "ErrorType") ~default:0)))
   | "errwrite" ->
-      (* The entry goes to the event log (Primitive writes it), where IError sees it (R-8-l). *)
-      W.post_error w (err_write_datum ctx args); None
+      (* The entry goes to the event log, where IError sees it (R-8-l): written first, so that
+         the interrupts it makes occur come after it. *)
+      let r = Primitive.call ctx name args in
+      W.post_error w (err_write_datum ctx args); Some r
   | "gettrapdata" ->
       store ctx args "TrapEvent" (V.Handle (V.make_handle ~kind:"trapdata" (W.trap_data w)));
       Some done_
@@ -302,6 +306,8 @@ let call (ctx : context) name args =
               store ctx args "ErrorDomain" (V.num (float_of_int d.domain));
               store ctx args "ErrorId" (V.num (float_of_int d.id));
               store ctx args "ErrorType" (V.num (float_of_int d.error_type));
+              (* \Title: the entry's title, which for ErrWrite is its header (R-8-y). *)
+              (match d.strings with title :: _ -> store ctx args "Title" (V.String title) | [] -> ());
               List.iteri (fun k s -> store ctx args (Printf.sprintf "Str%d" (k + 1)) (V.String s)) d.strings;
               Some done_)
       | _ -> Some (Failed "ERR_ARGVALERR"))

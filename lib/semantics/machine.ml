@@ -485,12 +485,21 @@ let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
   | Some (Local i) when i < Array.length cfg.act.kinds -> cfg.act.kinds.(i)
   | _ -> k
 
-let primitive_context cfg events : Primitive.context = {
+(* What the world observed so far goes into the events before what a primitive does next, so
+   that an effect is never seen before its cause (ErrWrite's entry, then the IError interrupt it
+   makes occur). *)
+let flush_world cfg events =
+  match W.drain cfg.world with
+  | [] -> ()
+  | seen -> List.iter (fun o -> events := Controller o :: !events) seen
+
+let primitive_context cfg events : Primitive.context =
+  let add e = flush_world cfg events; events := e :: !events in {
   (* The pendant shows a control character as its character code (Format.display). *)
-  output = (fun line -> events := Output (Format.display line) :: !events);
-  erase = (fun () -> events := Erase :: !events);
-  log = (fun line -> events := Log line :: !events);
-  event_log = (fun entry -> events := Event_log entry :: !events);
+  output = (fun line -> add (Output (Format.display line)));
+  erase = (fun () -> add Erase);
+  log = (fun line -> add (Log line));
+  event_log = (fun entry -> add (Event_log entry));
   book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
   error_number = (fun name -> error_number cfg name);
   world = cfg.world;
@@ -556,6 +565,7 @@ let call_primitive cfg (cs : call_state) name =
     | None -> match Service_primitives.call ctx name cs.primitive_args with
       | Some r -> r
       | None -> Primitive.call ctx name cs.primitive_args in
+  flush_world cfg events;
   (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
   List.iter (fun (box, idx) ->
       events := List.rev_append (observed_store cfg { box; idx } box.(idx)) !events) (Observation.changed before);

@@ -1,0 +1,1 @@
+debug --script debug-back-trap.dbg ../../spec/06-backward/01-trap-in-backward.mod

@@ -1,0 +1,1 @@
+debug --script debug-event-log.dbg debug-event-log.mod

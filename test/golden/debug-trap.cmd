@@ -1,0 +1,1 @@
+debug --script debug-trap.dbg debug-trap.mod

@@ -1,0 +1,1 @@
+run --json --statement-time 0 debug-event-log.mod

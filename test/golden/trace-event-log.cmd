@@ -1,0 +1,1 @@
+trace --level statement --statement-time 0 debug-event-log.mod
