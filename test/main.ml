@@ -24,6 +24,7 @@ let () =
       Test_services.suite;
       Test_debugger.suite;
       Test_engines.suite;
+      Test_closure_call.suite;
       Test_tasks.suite;
       Test_observation.suite;
     ]

@@ -173,11 +173,10 @@ let charge_active st (a : act) bytes what at =
   if bytes > st.limits.max_memory - st.memory then memory_exhausted st what at
   else begin a.memory <- a.memory + bytes; st.memory <- st.memory + bytes end
 
-(* Value.to_single, here so that it is inlined into the operators below. An integer of at most
-   24 bits is a single already: it is recognised without the conversion's two calls. *)
-let to_single x =
-  if Float.of_int (Float.to_int x) = x && x <= 16777216. && x >= -16777216. then x
-  else Int32.float_of_bits (Int32.bits_of_float x) [@@inline]
+(* For Value.to_single in the operators below: an integer of at most 24 bits is a single
+   already, and finite; it is recognised without the conversion's two calls (below 2^24 in
+   magnitude, adding and taking away 1.5 x 2^52 rounds x to an integer, exactly). *)
+let is_small_integer x = x <= 16777216. && x >= -16777216. && (x +. 0x1.8p52) -. 0x1.8p52 = x [@@inline]
 
 (* What a procedure gives back: no value. Recognised by identity. *)
 let no_value = V.String "(no value)"
@@ -185,8 +184,13 @@ let no_value = V.String "(no value)"
 let v_true = V.Bool true
 let v_false = V.Bool false
 
+(* An activation's end: what it counted is given back ([pop], here to be inlined). *)
+let release st (c : act) =
+  st.depth <- c.level; st.native <- st.native - c.nest;
+  st.memory <- st.memory - c.memory; c.memory <- 0 [@@inline]
+
 (* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
-let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v
+let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v [@@inline]
 
 let fuel_out () = raise (Halt M.Running)
 
@@ -399,16 +403,18 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
 and binary st ~at (op : Arith.binary) x y : act -> V.t =
   let slow u v = check st ~at (Arith.binary op u v) in
   let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  (* An integer of at most 24 bits is a single already, and finite. *)
+  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op with
   | Num_add -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> num (to_single (p +. q)) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single (p +. q) | _ -> slow u v)
   | Num_sub -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> num (to_single (p -. q)) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single (p -. q) | _ -> slow u v)
   | Num_mul -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> num (to_single (p *. q)) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single (p *. q) | _ -> slow u v)
   | Num_div -> fun a -> let u = x a in let v = y a in
       (match u, v with
-       | V.Num p, V.Num q when q <> 0. -> num (to_single (p /. q))
+       | V.Num p, V.Num q when q <> 0. -> single (p /. q)
        | _ -> slow u v)
   | Num_lt -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Num p, V.Num q -> if p < q then v_true else v_false | _ -> slow u v)
@@ -428,15 +434,17 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
 and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
   let slow u = check st ~at (Arith.binary op u v) in
   let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  (* An integer of at most 24 bits is a single already, and finite. *)
+  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op, own with
   (* An own slot on the left is read without a call. *)
-  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p +. q)) | u -> slow u)
-  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> num (to_single (p -. q)) | u -> slow u)
+  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p +. q) | u -> slow u)
+  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p -. q) | u -> slow u)
   | _ ->
   match op with
-  | Num_add -> fun a -> (match x a with V.Num p -> num (to_single (p +. q)) | u -> slow u)
-  | Num_sub -> fun a -> (match x a with V.Num p -> num (to_single (p -. q)) | u -> slow u)
-  | Num_mul -> fun a -> (match x a with V.Num p -> num (to_single (p *. q)) | u -> slow u)
+  | Num_add -> fun a -> (match x a with V.Num p -> single (p +. q) | u -> slow u)
+  | Num_sub -> fun a -> (match x a with V.Num p -> single (p -. q) | u -> slow u)
+  | Num_mul -> fun a -> (match x a with V.Num p -> single (p *. q) | u -> slow u)
   | _ -> binary st ~at op x (fun _ -> v)
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -720,6 +728,8 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
         end
         else stores ();
         primitive_outcome st caller a ~at ~call_at ~condition callee name result
+  | None when Closure_call.direct callee arguments <> None ->
+      direct_call st caller ~at ~r_index:k callee (Option.get (Closure_call.direct callee arguments))
   | None ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in
@@ -759,6 +769,95 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
             let c = new_act shape callee a in
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+
+(* A call that needs no binder (Closure_call.direct): every argument a copy (§5.2) of a value,
+   the callee without an error handler or UNDO, so its activation shares the empty extension.
+   The call's fixed work (the copies counted in the memory budget, the call depth, the
+   activation's bytes, its unit of fuel, its share of the native stack) is done here in one
+   place, in the order [enter] does it, so that a budget runs out at the same point. *)
+and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources : Closure_call.source array) : act -> V.t =
+  let args = Array.map (function
+      | Closure_call.Value e -> expr st caller ~at e
+      | Closure_call.Read p -> read st caller ~at p) sources in
+  let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  let n = Array.length args in
+  let size = if callee.locals < 1 then 1 else callee.locals in
+  let act_bytes = activation_bytes callee in
+  let code = ref None in
+  let is_function = callee.kind = Function in
+  let has_init = callee.local_inits <> [] in
+  let limits = st.limits in
+  let call_of = "the call of " ^ callee.name in
+  let start (a : act) store pending =
+    let level = a.level + 1 in
+    if level >= limits.max_call_depth then
+      raise (Halt (M.Resource_exhausted
+                     (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" limits.max_call_depth)));
+    if act_bytes > limits.max_memory - st.memory - pending then memory_exhausted st call_of at;
+    tick st;
+    let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
+    let nest = code.c_nest in
+    if st.native + nest > st.native_budget then
+      raise (Halt (M.Resource_exhausted
+                     (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" level)));
+    let memory = pending + act_bytes in
+    let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+    st.native <- st.native + nest;
+    st.memory <- st.memory + memory;
+    st.depth <- level + 1;
+    entered st callee c ~code ~at ~is_function ~has_init
+  in
+  (* A run that observes nothing (schema rapid-sem/2) needs of [entered] only the routine's
+     entry and exit, built once here: when every budget has room, the call is made here with
+     one test each; otherwise [start] takes it, to stop at the budget that runs out first. *)
+  let entered_event = M.Routine_entered callee.name and left_event = M.Routine_left callee.name in
+  let events = st.all_events and observe = st.observe in
+  let quick (a : act) store pending =
+      match !code with
+      | Some code when not observe ->
+          let level = a.level + 1 and nest = code.c_nest in
+          if level < limits.max_call_depth && act_bytes <= limits.max_memory - st.memory - pending
+             && st.fuel > 0 && st.native + nest <= st.native_budget then begin
+            st.fuel <- st.fuel - 1;
+            let memory = pending + act_bytes in
+            let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+            st.native <- st.native + nest;
+            st.memory <- st.memory + memory;
+            st.depth <- level + 1;
+            if events then st.emit entered_event;
+            match if has_init then code.c_init at c; code.c_body c with
+            | true ->
+                release st c;
+                if events then st.emit left_event;
+                if is_function then fail ~about:callee.name st ~at "ERR_FNCNORET" else no_value
+            | false -> release st c; if events then st.emit left_event; c.result
+            | exception left -> left_by st code c left
+          end
+          else start a store pending
+      | _ -> start a store pending
+  in
+  let fresh () = match size with
+    | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+    | _ -> Array.make size v_false [@@inline] in
+  match args with
+  | [||] -> fun a -> quick a (fresh ()) 0
+  | [| f0 |] -> let w0 = whats.(0) in fun a ->
+      let v = f0 a in
+      let b = value_bytes v in
+      if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
+      let store = match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
+      quick a store b
+  | _ -> fun a ->
+      let store = fresh () in
+      let pending = ref 0 in
+      for i = 0 to n - 1 do
+        let v = args.(i) a in
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
+        pending := !pending + b;
+        store.(i) <- copy v
+      done;
+      quick a store !pending
 
 and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
@@ -921,6 +1020,10 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   c.memory <- c.memory + bytes;
   st.memory <- st.memory + c.memory;
   st.depth <- c.level + 1;
+  entered st r c ~code ~at ~is_function ~has_init
+
+(* The activation is counted: it runs. *)
+and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
   if st.all_events then st.emit (M.Routine_entered r.name);
   if st.observe && Array.length r.parameters > 0 then
     st.emit (M.Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
@@ -948,6 +1051,14 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
+
+(* What [entered] does when an exception leaves the routine's body. *)
+and left_by st code (c : act) left =
+  match left with
+  | Raised e | Leaving e -> leave_with_error st code c (caught c e)
+  | Long_jump (j, e) when j = c.level -> emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
+  | Long_jump _ | Exit_task -> abandon st code c; raise left
+  | _ -> raise left
 
 (* A routine left by a propagated error, a long jump or EXIT runs its UNDO handler, then its
    activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
