@@ -34,6 +34,10 @@ exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
 exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
 exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
+exception Kept_leave of int * error option
+    (* §7.4, R-7.4-m: the handler of an asynchronous error, run while the program pointer was
+       kept in a routine the handler's activation (this level) called, ended by RETURN (None) or
+       RAISE (the error): the routines in between are abandoned on the way *)
 
 (* What only some activations need: routines with alias or optional parameters, or with an error
    handler. Other activations share one that nothing writes. *)
@@ -103,6 +107,9 @@ type state = {
   max_time : float;
   mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
   mutable serve_trap : act -> int -> int -> unit;  (* [serve_trap], tied below *)
+  mutable undoing : act list;         (* activations whose UNDO handler runs (§7.6's search) *)
+  mutable kept : act list;            (* activations in the handler of a kept asynchronous error *)
+  mutable async_errors : error list;  (* recent \SyncLastMoveInst errors: TRYNEXT as RETRY (§7.4) *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -763,8 +770,7 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
 and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
-  | Failed error when Motion_primitives.take_async_raised st.motion ->
-      leave_to_machine ~at:call_at error ("the asynchronous error " ^ error ^ " (§7.4, \\SyncLastMoveInst)")
+  | Failed error when Motion_primitives.take_async_raised st.motion -> async_at_move st ~at error
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
@@ -802,7 +808,6 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
 and wait st (a : act) ~at (wt : W.wait) ~condition =
   let first_poll = Motion_primitives.take_first_poll st.motion in
   let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
-  let asynchronous = ref false in
   let serve () =
     if st.in_trap then false
     else
@@ -811,21 +816,61 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
       | None -> (
           match Motion_primitives.take_org_error st.motion with
           | None -> false
-          | Some (name, _, _) ->
-              (* §7.4: the handler of an asynchronous error runs with the program pointer kept
-                 where it waits (RETRY and TRYNEXT resume there); that is the machine's alone
-                 for now (doc/semantics.md, "The second engine"). *)
-              asynchronous := true;
-              leave_to_machine ~at name ("the asynchronous error " ^ name ^ " (§7.4, the kept program pointer)"))
+          | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
   match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
   | Finished None -> ()
+  | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
   | Halted o -> raise (Halt o)
-  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task) as left) ->
-      if not !asynchronous then Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
+  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task | Kept_leave _) as left) ->
+      Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
       raise left
 
+(* §7.4 (\SyncLastMoveInst): the error raised at the move instruction, as any error there, but
+   remembered as asynchronous: TRYNEXT in its handler executes as RETRY (R-7.4-m). *)
+and async_at_move : 'a. state -> at:Rapid_syntax.Source.region -> string -> 'a = fun st ~at name ->
+  let e = { name; number = number_of st name; at; about = None; chain = None } in
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
+  emit_raised st e;
+  raise (Raised e)
+
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions), rules async-error, async-error-unhandled: the
+   error is raised at the statement the program pointer [a] waits in. Its handler is looked for
+   in §7.6's order (R-7.6-m): the routine whose move instruction made the path and up from it
+   (when that call has ended, a \SyncOrgMoveInst error starts at its nearest caller still in the
+   chain; a collision goes on to step 3), then the program pointer's routine and up; an
+   activation already in its error or UNDO handler does not take it. None: the system error
+   handler (step 5), at once, without UNDO handlers. Found: its handler runs while the program
+   pointer stays where it is (R-7.4-m); RETRY and TRYNEXT resume the wait ([true]: the wait
+   goes on, rules async-retry-resume, async-trynext-resume); RETURN and RAISE leave by
+   [Kept_leave] (async-handler-leave), EXIT by [Exit_task] (async-exit): the routines in
+   between are abandoned with their UNDO handlers on the way. *)
+and kept_async_error st (a : act) ~at name move handled =
+  let e = caught a { name; number = number_of st name; at; about = None; chain = None } in
+  emit_raised st e;
+  let rec in_chain (x : act) (b : act) = b.level >= 0 && (b == x || in_chain x b.parent) in
+  let rec up acc (b : act) = if b.level < 0 then List.rev acc else up (b :: acc) b.parent in
+  let rec live (b : act) = if b.level < 0 then [] else if in_chain b a then up [] b else live b.parent in
+  let owner = match move with Some id -> List.assoc_opt id st.move_owners | None -> None in
+  let from_motion = match owner with
+    | Some o when in_chain o a -> up [] o
+    | Some o when name <> "ERR_COLL_STOP" -> live o.parent
+    | _ -> [] in
+  let takes (b : act) =
+    b.routine.error <> None && b.ext.current = None && not (List.memq b st.undoing) in
+  match (if handled then List.find_opt takes (from_motion @ up [] a) else None) with
+  | None -> raise (Halt (stopped e))
+  | Some h ->
+      let rec index i = if st.program.routines.(i) == h.routine then i else index (i + 1) in
+      let handler = Option.get (Lazy.force st.compiled.(index 0)).c_handler in
+      st.kept <- h :: st.kept;
+      let finish () = st.kept <- List.filter (fun k -> k != h) st.kept in
+      match run_handler st handler h e with
+      | `Retry | `Trynext -> finish (); true
+      | `Return -> finish (); raise (Kept_leave (h.level, None))
+      | exception Leaving e' -> finish (); raise (Kept_leave (h.level, Some e'))
+      | exception left -> finish (); raise left
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
@@ -948,6 +993,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
   | exception (Long_jump _ as jump) -> abandon st code c; raise jump
   | exception Exit_task -> abandon st code c; raise Exit_task
+  | exception (Kept_leave _ as left) -> abandon st code c; raise left
 
 (* A routine left by a propagated error, a long jump or EXIT runs its UNDO handler, then its
    activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
@@ -957,8 +1003,9 @@ and abandon st code (c : act) =
    | None -> ()
    | Some undo -> (
        if st.all_events then st.emit (M.Undo_run c.routine.name);
+       st.undoing <- c :: st.undoing;
        match undo c with
-       | _ -> ()
+       | _ -> st.undoing <- List.tl st.undoing
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught c e)))));
   pop st c;
   if st.all_events then begin
@@ -1068,6 +1115,10 @@ and guarded st handler (core : act -> bool) : act -> bool =
       | goes_on -> if retried then a.ext.retries <- 0; goes_on
       | exception Raised e -> handle (caught a e)
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
+      | exception Kept_leave (j, left) when j = a.level -> (
+          (* R-7.4-m: the kept handler's RETURN or RAISE, now that the routines the program
+             pointer was in are abandoned, acts here as in any handler. *)
+          match left with None -> false | Some e -> raise (Leaving e))
     and handle e =
       match run_handler st handler a e with
       | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); attempt true
@@ -1166,9 +1217,18 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
          itself (in a compact IF too, where other errors are the IF's). *)
       fun a ->
-        if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+        (* R-7.4-m: resuming a kept program pointer executes no statement again: not counted. *)
+        if st.kept <> [] && List.memq a st.kept then raise_notrace Retry_signal
+        else if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
-  | Trynext -> fun _ -> raise_notrace Trynext_signal
+  | Trynext ->
+      fun a -> (
+        match a.ext.current with
+        | Some e when st.async_errors <> [] && not (List.memq a st.kept) && List.memq e st.async_errors ->
+            (* §7.4: "TRYNEXT executes as RETRY" for an asynchronous error (R-7.4-m). *)
+            if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+            else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
+        | _ -> raise_notrace Trynext_signal)
   | Connect (place, trap) ->
       (* §4.15: the target "must be (or denote) a module variable (not a routine variable)",
          through parameters too (ERR_CNTNOTVAR); it gets a new interrupt number; one still
@@ -1360,6 +1420,7 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     moving = W.collisions world <> [];
     max_time = W.max_time world; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
+    undoing = []; kept = []; async_errors = [];
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
