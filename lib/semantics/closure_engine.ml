@@ -154,10 +154,6 @@ let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain =
    (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
 let machine_only_reason = "runs on the machine only: use --engine machine"
 
-(* The user level of NOSTEPIN routines (§7.3, RaiseToUser) is the machine's alone. *)
-let leave_to_machine ~at name what =
-  raise (Halt (M.Unsupported { name; at; reason = Printf.sprintf "%s %s" what machine_only_reason }))
-
 let machine_only (o : M.outcome) =
   match o with
   | Unsupported { reason; _ } ->
@@ -781,7 +777,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
       let motion = Motion_primitives.modelled name in
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name
+      let tasks = Task_primitives.modelled name in
+      let controller = motion || tasks || Io_primitives.modelled name || Service_primitives.modelled name
                        || String.lowercase_ascii name = "errwrite" in
       (* What the world observes during the call is reported before what the routine itself
          writes, as the machine reports a step's events (its output waits meanwhile). *)
@@ -810,6 +807,15 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         else begin
           watch st;
           if motion then st.moving <- true;
+          (* GetTaskName and WaitSyncTask (ch. 14) in the one task of a run, as the machine's. *)
+          let task_call () =
+            if not tasks then None
+            else
+              let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner st.motion) in
+              Task_primitives.call ~standstill ctx name values in
+          match task_call () with
+          | Some r -> r
+          | None ->
           match Motion_primitives.call ctx st.motion name values with
           | Some r -> r
           | None -> match Io_primitives.call ctx name values with
@@ -898,9 +904,6 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> if st.all_events then st.emit M.Task_ended; raise (Halt M.Ended)
-  | Not_modelled when String.length name = 11 && String.lowercase_ascii name = "raisetouser" ->
-      (* RaiseToUser (§7.3) is the machine's, with the user level. *)
-      leave_to_machine ~at:call_at callee.name callee.name
   | Not_modelled when st.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22). *)
