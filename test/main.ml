@@ -23,6 +23,7 @@ let () =
       Test_services.suite;
       Test_debugger.suite;
       Test_engines.suite;
+      Test_engines_kept.suite;
       Test_tasks.suite;
       Test_observation.suite;
     ]

@@ -1125,9 +1125,10 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
    activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
    to the system error handler (raise-in-handler). *)
 and abandon st code (c : act) =
+  let skip = st.skip_undo <> [] && List.memq c st.skip_undo in
+  if skip then st.skip_undo <- List.filter (fun x -> x != c) st.skip_undo;
   (match code.c_undo with
-   | Some _ when st.skip_undo <> [] && List.memq c st.skip_undo ->
-       st.skip_undo <- List.filter (fun x -> x != c) st.skip_undo
+   | Some _ when skip -> ()
    | None -> ()
    | Some undo -> (
        if st.all_events then st.emit (M.Undo_run c.routine.name);
