@@ -165,7 +165,60 @@ let kept_pointer () =
       Alcotest.(check bool) (ending ^ ": the handler ran") true (List.mem "main handler 1108" out))
     [ "RETRY"; "TRYNEXT"; "RETURN"; "RAISE"; "EXIT" ]
 
+(* An asynchronous error that the kept handler lets go (RAISE) stays asynchronous where it is
+   handled next: TRYNEXT there executes as RETRY (R-7.4-m); a recovery point takes it or not. *)
+let propagated_text = {rapid|MODULE e1
+  CONST robtarget p10 := [[300,-250,300],[0,0,1,0],[-1,0,-1,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p20 := [[300,250,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    middle;
+    TPWrite "main after";
+  ERROR (LONG_JMP_ALL_ERR)
+    TPWrite "main recovery " \Num:=ERRNO;
+    TRYNEXT;
+  ENDPROC
+  PROC middle()
+    MoveJ p10, v1000, fine, tool0;
+    MoveJ \Conc, p20, v10, fine, tool0;
+    deeper;
+    TPWrite "middle after";
+  ERROR
+    TPWrite "middle handler " \Num:=ERRNO;
+    WaitTime 1;
+    TPWrite "middle waited";
+    RAISE;
+  UNDO
+    TPWrite "middle undo";
+  ENDPROC
+  PROC deeper()
+    WaitTime 10;
+    TPWrite "deeper waited";
+  ERROR
+    TPWrite "deeper handler";
+    RETRY;
+  UNDO
+    TPWrite "deeper undo";
+  ENDPROC
+ENDMODULE
+|rapid}
+
+let kept_error_propagated () =
+  let io = match Rapid_controller.Io_config.parse ~file:"c.io" "at 3 collision\nat 6 collision\n" with
+    | Ok io -> io | Error m -> Alcotest.fail m in
+  let replace a b text = Str.global_replace (Str.regexp_string a) b text in
+  List.iter (fun (middle_end, recovery, main_end) ->
+      let text = propagated_text
+                 |> replace "    RAISE;\n" ("    " ^ middle_end ^ "\n")
+                 |> replace "  ERROR (LONG_JMP_ALL_ERR)" recovery
+                 |> replace "    TRYNEXT;\n" ("    " ^ main_end ^ "\n") in
+      let out = both ~io [ ("e1", text) ] in
+      Alcotest.(check bool) "the kept handler ran" true (List.mem "middle handler 1108" out))
+    [ ("RAISE;", "  ERROR (LONG_JMP_ALL_ERR)", "TRYNEXT;"); ("RAISE;", "  ERROR", "TRYNEXT;");
+      ("RAISE;", "  ERROR", "RETURN;"); ("RETURN;", "  ERROR", "TRYNEXT;"); ("EXIT;", "  ERROR", "TRYNEXT;");
+      ("TRYNEXT;", "  ERROR (LONG_JMP_ALL_ERR)", "RETRY;") ]
+
 let suite =
   ( "engines-kept",
     [ Alcotest.test_case "machine = closure: the user level of NOSTEPIN routines" `Quick user_level;
-      Alcotest.test_case "machine = closure: a kept program pointer in NOSTEPIN routines" `Quick kept_pointer ] )
+      Alcotest.test_case "machine = closure: a kept program pointer in NOSTEPIN routines" `Quick kept_pointer;
+      Alcotest.test_case "machine = closure: a kept error raised on, TRYNEXT as RETRY" `Quick kept_error_propagated ] )

@@ -185,9 +185,14 @@ let stop st (b : act) e = Halt (stopped (at_user_level st b (caught b e)))
 
 (* R-7.3-o: an error leaving the last NOSTEPIN routine [c] for its user-level caller is raised
    again at the call ([at]), with the caller's call chain. *)
-let relocate (c : act) e ~at =
+let relocate st (c : act) e ~at =
   if c.routine.nostepin && c.routine.kind <> Trap && c.parent.level >= 0 && not c.parent.routine.nostepin
-  then { e with at; chain = Some (chain_of c.parent) }
+  then begin
+    let e' = { e with at; chain = Some (chain_of c.parent) } in
+    (* Still the asynchronous error it was (§7.4: TRYNEXT as RETRY wherever it is handled). *)
+    if st.async_errors <> [] && List.memq e st.async_errors then st.async_errors <- e' :: st.async_errors;
+    e'
+  end
   else e
 
 (* ------------------------------------------------------------------ the memory budget *)
@@ -973,6 +978,9 @@ and async_at_move : 'a. state -> at:Rapid_syntax.Source.region -> string -> 'a =
    between are abandoned with their UNDO handlers on the way. *)
 and kept_async_error st (a : act) ~at name move handled =
   let e = caught a { name; number = number_of st name; at; about = None; chain = None } in
+  (* Handled elsewhere than in the kept handler (propagated, carried by a long jump), TRYNEXT
+     executes as RETRY, as for any asynchronous error (R-7.4-m). *)
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
   emit_raised st e;
   let rec in_chain (x : act) (b : act) = b.level >= 0 && (b == x || in_chain x b.parent) in
   let rec up acc (b : act) = if b.level < 0 then List.rev acc else up (b :: acc) b.parent in
@@ -1116,7 +1124,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
       (* An asynchronous error carried to the routine of its move, which has no error handler
          (§7.6): it is raised there, and propagated to the call point without a new search. *)
       emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
-  | exception Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate c e ~at))
+  | exception Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate st c e ~at))
   | exception Exit_task -> abandon st code c; raise Exit_task
   | exception (Kept_leave _ as left) -> abandon st code c; raise left
   | exception (Continued_leave _ as left) -> pop st c; raise left
@@ -1185,7 +1193,7 @@ and recovery_search st (b : act) e =
    not found, it is raised again at the call point. *)
 and leave_with_error ?call st code (c : act) e =
   abandon st code c;
-  let e = match call with Some at -> relocate c e ~at | None -> e in
+  let e = match call with Some at -> relocate st c e ~at | None -> e in
   let rec search (b : act) =
     if b.level < 0 then None
     else if recovers st b e.number then Some b.level
