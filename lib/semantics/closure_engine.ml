@@ -34,6 +34,14 @@ exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
 exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
 exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
+exception Kept_leave of int * error option
+exception Continued_leave of int * [ `Return | `Raise of error | `Exit ]
+    (* §7.3, R-7.3-p: the user level's handler that RaiseToUser \Continue ran ended otherwise
+       than by RETRY or TRYNEXT: the NOSTEPIN routines in between are dropped on the way to the
+       user routine (this level), without their UNDO handlers *)
+    (* §7.4, R-7.4-m: the handler of an asynchronous error, run while the program pointer was
+       kept in a routine the handler's activation (this level) called, ended by RETURN (None) or
+       RAISE (the error): the routines in between are abandoned on the way *)
 
 (* What only some activations need: routines with alias or optional parameters, or with an error
    handler. Other activations share one that nothing writes. *)
@@ -103,6 +111,15 @@ type state = {
   max_time : float;
   mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
   mutable serve_trap : act -> int -> int -> unit;  (* [serve_trap], tied below *)
+  mutable undoing : act list;         (* activations whose UNDO handler runs (§7.6's search) *)
+  mutable kept : act list;            (* activations in the handler of a kept asynchronous error *)
+  mutable async_errors : error list;  (* recent \SyncLastMoveInst errors: TRYNEXT as RETRY (§7.4) *)
+  mutable user_calls : (act * Rapid_syntax.Source.region) list;
+      (* §7.3: user-level activations in a call of a NOSTEPIN routine, and that call's statement *)
+  mutable resuming : (act * act) list;
+      (* §7.3: a user level's handler run by RaiseToUser \Continue, and the NOSTEPIN activation
+         its RETRY and TRYNEXT go on in *)
+  mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -137,16 +154,46 @@ let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain =
    (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
 let machine_only_reason = "runs on the machine only: use --engine machine"
 
-(* The user level of NOSTEPIN routines (§7.3, RaiseToUser) is the machine's alone. *)
-let leave_to_machine ~at name what =
-  raise (Halt (M.Unsupported { name; at; reason = Printf.sprintf "%s %s" what machine_only_reason }))
-
 let machine_only (o : M.outcome) =
   match o with
   | Unsupported { reason; _ } ->
       let n = String.length machine_only_reason and m = String.length reason in
       m >= n && String.sub reason (m - n) n = machine_only_reason
   | _ -> false
+
+(* §7.3: the user level of an activation of a NOSTEPIN routine: the first routine above it that
+   is not one (none across a trap: its caller is no call), with the statement of its call. *)
+let user_call st (b : act) =
+  let rec go (b : act) =
+    if b.routine.kind = Trap then None
+    else
+      let c = b.parent in
+      if c.level < 0 then None
+      else if c.routine.nostepin then go c
+      else Option.map (fun at -> (c, at)) (List.assq_opt c st.user_calls) in
+  if b.routine.nostepin then go b else None
+
+(* R-7.3-o: an error the system error handler reports while NOSTEPIN routines are active is
+   reported at the call in user code, with the call chain from there. *)
+let at_user_level st (b : act) e =
+  match user_call st b with
+  | Some (u, at) -> { e with at; chain = Some (chain_of u) }
+  | None -> e
+
+(* The system error handler stops the task (§7.1) with an error caught in activation [b]. *)
+let stop st (b : act) e = Halt (stopped (at_user_level st b (caught b e)))
+
+(* R-7.3-o: an error leaving the last NOSTEPIN routine [c] for its user-level caller is raised
+   again at the call ([at]), with the caller's call chain. *)
+let relocate st (c : act) e ~at =
+  if c.routine.nostepin && c.routine.kind <> Trap && c.parent.level >= 0 && not c.parent.routine.nostepin
+  then begin
+    let e' = { e with at; chain = Some (chain_of c.parent) } in
+    (* Still the asynchronous error it was (§7.4: TRYNEXT as RETRY wherever it is handled). *)
+    if st.async_errors <> [] && List.memq e st.async_errors then st.async_errors <- e' :: st.async_errors;
+    e'
+  end
+  else e
 
 (* ------------------------------------------------------------------ the memory budget *)
 
@@ -642,6 +689,89 @@ and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
 and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
+  | Some name when String.lowercase_ascii name = "raisetouser" -> raise_to_user st caller ~at ~call_at callee arguments
+  | _ when callee.nostepin && not caller.nostepin -> user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
+  | _ -> call_routine_core st caller ~at ~call_at k arguments
+
+(* §7.3: a call from user code into a NOSTEPIN routine: the statement is remembered, for what
+   is reported at the user level (R-7.3-o). *)
+and user_level_call st ~at (f : act -> V.t) : act -> V.t =
+  fun a ->
+    st.user_calls <- (a, at) :: st.user_calls;
+    let restore () = match st.user_calls with (b, _) :: rest when b == a -> st.user_calls <- rest
+                                             | l -> st.user_calls <- List.filter (fun (b, _) -> b != a) l in
+    match f a with
+    | v -> restore (); v
+    | exception x -> restore (); raise x
+
+(* RaiseToUser (§7.3, R-7.3-m..q; rules raise-to-user-continue, raise-to-user-break-off,
+   raise-to-user-no-user-level, raise-to-user-unhandled, raise-to-user-illegal,
+   raise-to-user-misplaced): in the error handler of a NOSTEPIN routine, the error in hand (or
+   \ErrorNumber's) goes to the error handler of the user level. \BreakOff: this routine is left
+   without its UNDO handler, the NOSTEPIN routines above it run theirs, and the error jumps to
+   the user routine, raised at its call. \Continue (\Resume): the user's handler runs at once,
+   the NOSTEPIN routines kept; its RETRY and TRYNEXT go on in this routine as its own would; any
+   other end leaves the user routine, the NOSTEPIN routines dropped without UNDO. No user level,
+   or one without a free error handler: the system error handler. *)
+and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) arguments : act -> V.t =
+  let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
+  let index name =
+    let found = ref None in
+    Array.iteri (fun i (p : parameter) ->
+        if String.lowercase_ascii p.p_name = name && i < Array.length args then found := Some i) callee.parameters;
+    !found in
+  let errornumber = index "errornumber" and breakoff = index "breakoff" in
+  fun a ->
+    let arg = function Some i -> args.(i) a | None -> Primitive.Missing in
+    match a.ext.current with
+    | Some e when a.routine.nostepin && a.routine.kind <> Trap -> (
+        let number = match arg errornumber with
+          | Primitive.Missing -> Some e.number
+          | Value (V.Num x) when Float.is_integer x ->
+              let n = int_of_float x in
+              if (n >= 1 && n <= 90) || List.mem n st.booked
+                 || List.exists (fun (_, m) -> m = n) st.program.error_numbers then Some n else None
+          | _ -> None in
+        match number with
+        | None -> fail st ~at "ERR_ILLRAISE"
+        | Some n -> (
+            let name = match List.find_opt (fun (_, m) -> m = n) st.program.error_numbers with
+              | Some (name, _) -> name | None -> string_of_int n in
+            let e' = caught a { name; number = n; at = e.at; about = None; chain = None } in
+            match user_call st a with
+            | None -> raise (stop st a e')
+            | Some (user, user_at) -> (
+                let e' = { e' with at = user_at; chain = Some (chain_of user) } in
+                let free = user.routine.error <> None && user.ext.current = None
+                           && not (List.memq user st.undoing) in
+                if not free then raise (stop st a e')
+                else if arg breakoff <> Primitive.Missing then begin
+                  st.skip_undo <- a :: st.skip_undo;
+                  raise (Long_jump (user.level, e'))
+                end
+                else begin
+                  emit_raised st e';
+                  let rec index i = if st.program.routines.(i) == user.routine then i else index (i + 1) in
+                  let handler = Option.get (Lazy.force st.compiled.(index 0)).c_handler in
+                  st.resuming <- (user, a) :: st.resuming;
+                  let finish () = st.resuming <- List.filter (fun (u, _) -> u != user) st.resuming in
+                  match run_handler st handler user e' with
+                  | `Retry -> finish (); raise_notrace Retry_signal
+                  | `Trynext -> finish (); raise_notrace Trynext_signal
+                  | `Return -> finish (); raise (Continued_leave (user.level, `Return))
+                  | exception Leaving x -> finish (); raise (Continued_leave (user.level, `Raise x))
+                  | exception Exit_task -> finish (); raise (Continued_leave (user.level, `Exit))
+                  | exception x -> finish (); raise x
+                end)))
+    | _ ->
+        (* A call the checker cannot see (late binding): no error of a NOSTEPIN routine to hand
+           on (R-7.3-n). *)
+        raise (Halt (M.Stopped { name = "ERR_ILLRAISE"; number = number_of st "ERR_ILLRAISE"; at = call_at;
+                                 chain = chain_of a; about = Some "RaiseToUser" }))
+
+and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
+  let callee = st.program.routines.(k) in
+  match callee.primitive with
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
@@ -660,7 +790,8 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
       let motion = Motion_primitives.modelled name in
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let controller = motion || Io_primitives.modelled name || Service_primitives.modelled name
+      let tasks = Task_primitives.modelled name in
+      let controller = motion || tasks || Io_primitives.modelled name || Service_primitives.modelled name
                        || String.lowercase_ascii name = "errwrite" in
       (* What the world observes during the call is reported before what the routine itself
          writes, as the machine reports a step's events (its output waits meanwhile). *)
@@ -689,6 +820,15 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
         else begin
           watch st;
           if motion then st.moving <- true;
+          (* GetTaskName and WaitSyncTask (ch. 14) in the one task of a run, as the machine's. *)
+          let task_call () =
+            if not tasks then None
+            else
+              let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner st.motion) in
+              Task_primitives.call ~standstill ctx name values in
+          match task_call () with
+          | Some r -> r
+          | None ->
           match Motion_primitives.call ctx st.motion name values with
           | Some r -> r
           | None -> match Io_primitives.call ctx name values with
@@ -862,16 +1002,12 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
 and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
-  | Failed error when Motion_primitives.take_async_raised st.motion ->
-      leave_to_machine ~at:call_at error ("the asynchronous error " ^ error ^ " (§7.4, \\SyncLastMoveInst)")
+  | Failed error when Motion_primitives.take_async_raised st.motion -> async_at_move st ~at error
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> if st.all_events then st.emit M.Task_ended; raise (Halt M.Ended)
-  | Not_modelled when String.length name = 11 && String.lowercase_ascii name = "raisetouser" ->
-      (* RaiseToUser (§7.3) is the machine's, with the user level. *)
-      leave_to_machine ~at:call_at callee.name callee.name
   | Not_modelled when st.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22). *)
@@ -901,7 +1037,6 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
 and wait st (a : act) ~at (wt : W.wait) ~condition =
   let first_poll = Motion_primitives.take_first_poll st.motion in
   let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
-  let asynchronous = ref false in
   let serve () =
     if st.in_trap then false
     else
@@ -910,21 +1045,64 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
       | None -> (
           match Motion_primitives.take_org_error st.motion with
           | None -> false
-          | Some (name, _, _) ->
-              (* §7.4: the handler of an asynchronous error runs with the program pointer kept
-                 where it waits (RETRY and TRYNEXT resume there); that is the machine's alone
-                 for now (doc/semantics.md, "The second engine"). *)
-              asynchronous := true;
-              leave_to_machine ~at name ("the asynchronous error " ^ name ^ " (§7.4, the kept program pointer)"))
+          | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
   match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
   | Finished None -> ()
+  | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
   | Halted o -> raise (Halt o)
-  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task) as left) ->
-      if not !asynchronous then Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
+  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task | Kept_leave _) as left) ->
+      Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
       raise left
 
+(* §7.4 (\SyncLastMoveInst): the error raised at the move instruction, as any error there, but
+   remembered as asynchronous: TRYNEXT in its handler executes as RETRY (R-7.4-m). *)
+and async_at_move : 'a. state -> at:Rapid_syntax.Source.region -> string -> 'a = fun st ~at name ->
+  let e = { name; number = number_of st name; at; about = None; chain = None } in
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
+  emit_raised st e;
+  raise (Raised e)
+
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions), rules async-error, async-error-unhandled: the
+   error is raised at the statement the program pointer [a] waits in. Its handler is looked for
+   in §7.6's order (R-7.6-m): the routine whose move instruction made the path and up from it
+   (when that call has ended, a \SyncOrgMoveInst error starts at its nearest caller still in the
+   chain; a collision goes on to step 3), then the program pointer's routine and up; an
+   activation already in its error or UNDO handler does not take it. None: the system error
+   handler (step 5), at once, without UNDO handlers. Found: its handler runs while the program
+   pointer stays where it is (R-7.4-m); RETRY and TRYNEXT resume the wait ([true]: the wait
+   goes on, rules async-retry-resume, async-trynext-resume); RETURN and RAISE leave by
+   [Kept_leave] (async-handler-leave), EXIT by [Exit_task] (async-exit): the routines in
+   between are abandoned with their UNDO handlers on the way. *)
+and kept_async_error st (a : act) ~at name move handled =
+  let e = caught a { name; number = number_of st name; at; about = None; chain = None } in
+  (* Handled elsewhere than in the kept handler (propagated, carried by a long jump), TRYNEXT
+     executes as RETRY, as for any asynchronous error (R-7.4-m). *)
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
+  emit_raised st e;
+  let rec in_chain (x : act) (b : act) = b.level >= 0 && (b == x || in_chain x b.parent) in
+  let rec up acc (b : act) = if b.level < 0 then List.rev acc else up (b :: acc) b.parent in
+  let rec live (b : act) = if b.level < 0 then [] else if in_chain b a then up [] b else live b.parent in
+  let owner = match move with Some id -> List.assoc_opt id st.move_owners | None -> None in
+  let from_motion = match owner with
+    | Some o when in_chain o a -> up [] o
+    | Some o when name <> "ERR_COLL_STOP" -> live o.parent
+    | _ -> [] in
+  let takes (b : act) =
+    b.routine.error <> None && b.ext.current = None && not (List.memq b st.undoing) in
+  match (if handled then List.find_opt takes (from_motion @ up [] a) else None) with
+  | None -> raise (stop st a e)
+  | Some h ->
+      let rec index i = if st.program.routines.(i) == h.routine then i else index (i + 1) in
+      let handler = Option.get (Lazy.force st.compiled.(index 0)).c_handler in
+      st.kept <- h :: st.kept;
+      let finish () = st.kept <- List.filter (fun k -> k != h) st.kept in
+      match run_handler st handler h e with
+      | `Retry | `Trynext -> finish (); true
+      | `Return -> finish (); raise (Kept_leave (h.level, None))
+      | exception Leaving e' -> finish (); raise (Kept_leave (h.level, Some e'))
+      | exception left -> finish (); raise left
 
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
@@ -1044,13 +1222,15 @@ and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
       if st.observe && is_function then
         st.emit (M.Observed (Returned { routine = r.name; value = Observation.value c.result }));
       if st.all_events then st.emit (M.Routine_left r.name); c.result
-  | exception (Raised e | Leaving e) -> leave_with_error st code c (caught c e)
+  | exception (Raised e | Leaving e) -> leave_with_error ~call:at st code c (caught c e)
   | exception Long_jump (j, e) when j = c.level ->
       (* An asynchronous error carried to the routine of its move, which has no error handler
          (§7.6): it is raised there, and propagated to the call point without a new search. *)
       emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
-  | exception (Long_jump _ as jump) -> abandon st code c; raise jump
+  | exception Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate st c e ~at))
   | exception Exit_task -> abandon st code c; raise Exit_task
+  | exception (Kept_leave _ as left) -> abandon st code c; raise left
+  | exception (Continued_leave _ as left) -> pop st c; raise left
 
 (* What [entered] does when an exception leaves the routine's body. *)
 and left_by st code (c : act) left =
@@ -1064,13 +1244,17 @@ and left_by st code (c : act) left =
    activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
    to the system error handler (raise-in-handler). *)
 and abandon st code (c : act) =
+  let skip = st.skip_undo <> [] && List.memq c st.skip_undo in
+  if skip then st.skip_undo <- List.filter (fun x -> x != c) st.skip_undo;
   (match code.c_undo with
+   | Some _ when skip -> ()
    | None -> ()
    | Some undo -> (
        if st.all_events then st.emit (M.Undo_run c.routine.name);
+       st.undoing <- c :: st.undoing;
        match undo c with
-       | _ -> ()
-       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught c e)))));
+       | _ -> st.undoing <- List.tl st.undoing
+       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (stop st c e)));
   pop st c;
   if st.all_events then begin
     st.emit (M.Routine_left c.routine.name);
@@ -1118,8 +1302,9 @@ and recovery_search st (b : act) e =
    longjump-found, raise-propagate): after the routine is abandoned, the call chain is searched
    from the caller up for an error recovery point naming the error; found, the error jumps there;
    not found, it is raised again at the call point. *)
-and leave_with_error st code (c : act) e =
+and leave_with_error ?call st code (c : act) e =
   abandon st code c;
+  let e = match call with Some at -> relocate st c e ~at | None -> e in
   let rec search (b : act) =
     if b.level < 0 then None
     else if recovers st b e.number then Some b.level
@@ -1158,16 +1343,16 @@ and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
   let previous = a.ext.current in
   a.ext.current <- Some e;
   match handler a with
-  | true -> raise (Halt (stopped e))
+  | true -> raise (stop st a e)
   | false -> `Return
   | exception Retry_signal -> a.ext.current <- previous; `Retry
   | exception Trynext_signal -> a.ext.current <- previous; `Trynext
-  | exception Raised e' -> raise (Halt (stopped (caught a e')))
+  | exception Raised e' -> raise (stop st a e')
   | exception Long_jump (j, e') when j >= a.level ->
       (* A long jump to this activation while it runs its handler arrives there, and is an
          error in the handler. *)
       emit_raised st e';
-      raise (Halt (stopped (caught a e')))
+      raise (stop st a e')
 
 (* A statement of a routine with an error handler: an error in it, or in a routine it calls
    that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
@@ -1179,6 +1364,12 @@ and guarded st handler (core : act -> bool) : act -> bool =
       | goes_on -> if retried then a.ext.retries <- 0; goes_on
       | exception Raised e -> handle (caught a e)
       | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
+      | exception Kept_leave (j, left) when j = a.level -> (
+          (* R-7.4-m: the kept handler's RETURN or RAISE, now that the routines the program
+             pointer was in are abandoned, acts here as in any handler. *)
+          match left with None -> false | Some e -> raise (Leaving e))
+      | exception Continued_leave (j, left) when j = a.level -> (
+          match left with `Return -> false | `Raise e -> raise (Leaving e) | `Exit -> raise Exit_task)
     and handle e =
       match run_handler st handler a e with
       | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); attempt true
@@ -1277,9 +1468,28 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
          itself (in a compact IF too, where other errors are the IF's). *)
       fun a ->
-        if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+        (* R-7.4-m: resuming a kept program pointer executes no statement again: not counted. *)
+        if st.kept <> [] && List.memq a st.kept then raise_notrace Retry_signal
+        else if st.resuming <> [] && List.mem_assq a st.resuming then begin
+          (* R-7.3-p: the NOSTEPIN routine's own RETRY, counted there (rule resume-retry). *)
+          let inner = List.assq a st.resuming in
+          if inner.ext.retries >= st.limits.retry_limit then begin
+            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None; chain = None } in
+            emit_raised st e;
+            raise (stop st inner e)
+          end
+          else begin inner.ext.retries <- inner.ext.retries + 1; raise_notrace Retry_signal end
+        end
+        else if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
-  | Trynext -> fun _ -> raise_notrace Trynext_signal
+  | Trynext ->
+      fun a -> (
+        match a.ext.current with
+        | Some e when st.async_errors <> [] && not (List.memq a st.kept) && List.memq e st.async_errors ->
+            (* §7.4: "TRYNEXT executes as RETRY" for an asynchronous error (R-7.4-m). *)
+            if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+            else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
+        | _ -> raise_notrace Trynext_signal)
   | Connect (place, trap) ->
       (* §4.15: the target "must be (or denote) a module variable (not a routine variable)",
          through parameters too (ERR_CNTNOTVAR); it gets a new interrupt number; one still
@@ -1471,6 +1681,7 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     moving = W.collisions world <> [];
     max_time = W.max_time world; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
@@ -1510,14 +1721,6 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
-  | Some (_, k) when Array.exists (fun (x : routine) -> x.nostepin) program.routines ->
-      (* The user level of NOSTEPIN routines (§7.3: RaiseToUser, errors reported at the user's
-         call) is the machine's alone. *)
-      let x = List.find (fun (x : routine) -> x.nostepin) (Array.to_list program.routines) in
-      ignore k;
-      Ok { outcome = M.Unsupported { name = x.module_name; at = x.at;
-                                     reason = "the user level of NOSTEPIN modules (§7.3) " ^ machine_only_reason };
-           fuel_used = 0 }
   | Some (_, k) ->
       let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event ~world ~motion program in
       let r = program.routines.(k) in

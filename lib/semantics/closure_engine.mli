@@ -44,7 +44,9 @@ val run :
 
     The program runs in [world] (default: no signals, default timing, the default sandbox) with
     the robot of [motion] (default the IRB 120), as {!Machine.start} runs it: virtual time, the
-    time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps.
+    time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps,
+    the asynchronous errors of moves with the program pointer kept (§7.4, §7.6), and the user
+    level of NOSTEPIN routines (§7.3, RaiseToUser). One task only: several are the machine's.
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
     [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the
