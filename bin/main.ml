@@ -613,9 +613,14 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (enum [ ("machine", `Machine); ("closure", `Closure) ]) `Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,machine) (the small-step machine, the default) or $(b,closure) (the second engine: the same events, faster; --max-steps counts its units of fuel; the controller, motion and services as the machine's; not with --save or --samples, doc/semantics.md).") in
+  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --task, --save or --samples runs on the machine, which alone has them (doc/semantics.md, \"The second engine\").") in
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
+    (* The closure engine by default, once the differential campaign passed (doc/fuzz-campaign.md);
+       what only the machine has selects it. *)
+    let engine = match engine with
+      | Some e -> e
+      | None -> if tasks <> [] || save <> None || samples <> None then `Machine else `Closure in
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
       else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)

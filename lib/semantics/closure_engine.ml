@@ -30,6 +30,7 @@ exception Break_loop                   (* §4.8 *)
 exception Continue_loop                (* §4.9 *)
 exception Goto_label of int * int      (* §4.7: the label's statement list and index *)
 exception Exit_task                    (* §4.12 *)
+exception Observer_failed of exn        (* raised by the caller's on_event *)
 exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
 exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
@@ -1722,6 +1723,9 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
   | Some (_, k) ->
+      (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
+         program's: it leaves the run as it came, instead of ending it as Stuck. *)
+      let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
       let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event ~world ~motion program in
       let r = program.routines.(k) in
       let outcome =
@@ -1773,6 +1777,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
               M.Ended
         with
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
+        | Observer_failed ex -> raise ex
         | e -> outcome_of_exception st e
       in
       (* What the world and the motion did last; at the end of the task, what the robot still
