@@ -103,6 +103,19 @@ let program = {rapid|MODULE direct
     here := n;
     RETURN down(n - by, by) + 1;
   ENDFUNC
+  FUNC num pick(num n)
+    VAR num twice := 0;
+    IF n > 5 THEN
+      RETURN 1;
+    ENDIF
+    twice := 2 * n;
+    TEST n
+    CASE 1:
+      RETURN 10;
+    ENDTEST
+    IF n = 2 RETURN twice;
+    RETURN n + pick(n + 3);
+  ENDFUNC
   FUNC num noreturn(num n)
     TPWrite "n=" \Num:=n;
   ENDFUNC
@@ -113,6 +126,7 @@ let program = {rapid|MODULE direct
   PROC main()
     TPWrite "fib(12)=" \Num:=fib(12);
     count 3;
+    TPWrite "pick=" \Num:=pick(1) + pick(2) + pick(4) + pick(6);
     TPWrite "down=" \Num:=down(100000, 1);
   ENDPROC
   PROC main2()
@@ -144,9 +158,9 @@ let budgets () =
   let deep = { M.default_limits with max_call_depth = max_int } in
   let o = same ~limits:deep p "main" in
   Alcotest.(check bool) ("native stack: " ^ o) true (contains o "native stack");
-  Alcotest.(check string) "an error in a directly called function" "stopped ERR_FNCNORET direct.mod:25:5"
+  Alcotest.(check string) "an error in a directly called function" "stopped ERR_FNCNORET direct.mod:39:5"
     (same p "main2");
-  Alcotest.(check string) "an error in an argument" "stopped ERR_DIVZERO direct.mod:33:5" (same p "main3");
+  Alcotest.(check string) "an error in an argument" "stopped ERR_DIVZERO direct.mod:47:5" (same p "main3");
   (* The memory budget: the smallest that lets down() reach the call depth of 40 is found (the
      installed data count too); below it, every budget down to one that does not hold the
      first activation, in steps that meet each place in a call. *)
