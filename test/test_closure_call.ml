@@ -103,6 +103,34 @@ let program = {rapid|MODULE direct
     here := n;
     RETURN down(n - by, by) + 1;
   ENDFUNC
+  FUNC num pick(num n)
+    VAR num twice := 0;
+    IF n > 5 THEN
+      RETURN 1;
+    ENDIF
+    twice := 2 * n;
+    TEST n
+    CASE 1:
+      RETURN 10;
+    ENDTEST
+    IF n = 2 RETURN twice;
+    RETURN n + pick(n + 3);
+  ENDFUNC
+  FUNC num hop(num n)
+    VAR num k := 0;
+    again:
+    k := k + 1;
+    IF k < n GOTO again;
+    RETURN k;
+  ENDFUNC
+  FUNC num firstover(num n)
+    VAR num i := 0;
+    WHILE TRUE DO
+      i := i + 1;
+      IF i * i > n RETURN i;
+    ENDWHILE
+    RETURN -1;
+  ENDFUNC
   FUNC num noreturn(num n)
     TPWrite "n=" \Num:=n;
   ENDFUNC
@@ -113,6 +141,9 @@ let program = {rapid|MODULE direct
   PROC main()
     TPWrite "fib(12)=" \Num:=fib(12);
     count 3;
+    TPWrite "pick=" \Num:=pick(1) + pick(2) + pick(4) + pick(6);
+    TPWrite "hop=" \Num:=hop(3);
+    TPWrite "firstover=" \Num:=firstover(10);
     TPWrite "down=" \Num:=down(100000, 1);
   ENDPROC
   PROC main2()
@@ -144,9 +175,9 @@ let budgets () =
   let deep = { M.default_limits with max_call_depth = max_int } in
   let o = same ~limits:deep p "main" in
   Alcotest.(check bool) ("native stack: " ^ o) true (contains o "native stack");
-  Alcotest.(check string) "an error in a directly called function" "stopped ERR_FNCNORET direct.mod:25:5"
+  Alcotest.(check string) "an error in a directly called function" "stopped ERR_FNCNORET direct.mod:56:5"
     (same p "main2");
-  Alcotest.(check string) "an error in an argument" "stopped ERR_DIVZERO direct.mod:33:5" (same p "main3");
+  Alcotest.(check string) "an error in an argument" "stopped ERR_DIVZERO direct.mod:64:5" (same p "main3");
   (* The memory budget: the smallest that lets down() reach the call depth of 40 is found (the
      installed data count too); below it, every budget down to one that does not hold the
      first activation, in steps that meet each place in a call. *)

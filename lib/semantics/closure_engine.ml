@@ -78,6 +78,9 @@ type compiled = {
   c_handler : (act -> bool) option;
   c_undo : (act -> bool) option;
   c_nest : int;                       (* the depth of its syntax tree, statements and expressions *)
+  c_value : (act -> V.t) option;
+      (* a function whose body ends in RETURN e, for the direct path: its body giving RETURN's
+         value itself, not through [result] (see [valued_body]) *)
 }
 
 type state = {
@@ -966,6 +969,12 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             st.memory <- st.memory + memory;
             st.depth <- level + 1;
             if events then st.emit entered_event;
+            match code.c_value with
+            | Some body -> (
+                match if has_init then code.c_init at c; body c with
+                | v -> release st c; if events then st.emit left_event; v
+                | exception left -> left_by st code c left)
+            | _ ->
             match if has_init then code.c_init at c; code.c_body c with
             | true ->
                 release st c;
@@ -1638,6 +1647,32 @@ and goto_stmt acc (s : stmt) =
   | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
   | _ -> ()
 
+(* The body of a function for the direct path (no handler, no UNDO, no label in its statement
+   list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
+   the value is neither stored in the activation nor tested for. Each statement is entered as
+   [block] enters it (a unit of fuel, a point of response); the list's end is never reached. *)
+let valued_body st (r : routine) ~gotos : (act -> V.t) option =
+  let b = r.body in
+  let n = Array.length b.body in
+  let ends_in_return = n > 0 && (match b.body.(n - 1).s with Return (Some _) -> true | _ -> false) in
+  if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || not ends_in_return
+  then None
+  else
+    let rec from k : act -> V.t =
+      let s = b.body.(k) in
+      match s.s with
+      | Return (Some e) ->
+          let f = expr st r ~at:s.sat e in
+          fun a -> tick st; at_statement st a; f a
+      | Compact_if (c, { s = Return (Some e); _ }) ->
+          let c = condition st r ~at:s.sat c and f = expr st r ~at:s.sat e and rest = from (k + 1) in
+          fun a -> tick st; at_statement st a; if c a then f a else rest a
+      | _ ->
+          let g = stmt st r ~handler:None ~gotos s and rest = from (k + 1) in
+          fun a -> tick st; at_statement st a; if g a then rest a else a.result
+    in
+    Some (from 0)
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -1662,7 +1697,8 @@ let compile_routine st k =
   let c_init = match inits with
     | [] -> fun _ _ -> ()
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
-  { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r }
+  { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
+    c_value = valued_body st r ~gotos }
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ~all_events ~emit ~world ~motion (program : program) =
