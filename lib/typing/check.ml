@@ -1193,8 +1193,13 @@ let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : En
       | None -> None
       | Some n ->
           let d_type = Option.value object_type ~default:unknown_object_type in
+          (* R-2.22-w: a placeholder for a dimension is executed when the data object is made
+             (ERR_EXECPHR, as a placeholder for its initial value is): the data has no shape. *)
+          let d_initial = match List.find_opt (fun (d : expression) -> d.it = EXP_placeholder) dims with
+            | Some d -> Some d
+            | None -> initial_value in
           let o = Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
-                             d_optional = false; d_initial = initial_value;
+                             d_optional = false; d_initial;
                              d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) } in
           Hashtbl.replace ctx.elab.declared name.at o;
           Some (n, o))
@@ -1316,7 +1321,16 @@ let add_routine_name ctx table name (obj : Env.obj) =
    persistent of type errnum (an alias of num). *)
 let recovery_error_number ctx place (n : recovery_error_number) =
   match n.it with
-  | Error_number_literal _ -> ()
+  | Error_number_literal t -> (
+      (* An error number is a whole number a num holds exactly (§7.2, §2.4: ERRNO is a num);
+         any other literal names no error. *)
+      match Rapid_syntax.Num_literal.of_text t with
+      | Ok v ->
+          let q = Rapid_syntax.Num_literal.to_q v in
+          if not (Z.equal (Q.den q) Z.one && Z.leq (Z.abs (Q.num q)) (Z.of_int 8388608)) then
+            error ctx ~rule:"error-number-list" ~section:"7.2" n.at
+              "an error number of an ERROR list is a whole number from -8388608 to 8388608, not %s" t
+      | Error m -> error ctx ~rule:"error-number-list" ~section:"7.2" n.at "%s" m)
   | Error_number_name name -> (
       match Env.lookup place.scope name.it with
       | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ } as o) ->
