@@ -678,7 +678,7 @@ let call_unguarded (ctx : context) st name args =
   | "accset" -> Some (Returned None)
   | "cornerpathwarning" | "gripload" -> Some (Returned None)
   | "setsysdata" when not (present ctx args "ObjectName") -> (
-      (* R-13-x: the three record types SetSysData takes are told apart by their components;
+      (* R-13-y: the three record types SetSysData takes are told apart by their components;
          a load is accepted and changes nothing, as GripLoad (R-4.1-g). \ObjectName (activate by
          name) is not modelled. *)
       match get "SourceObject" with

@@ -3,7 +3,7 @@ MODULE set_sys_data
 ! @section 13
 ! @expect ok
 ! @statement-time 0
-! @description SetSysData makes a persistent tooldata or wobjdata the active one, as CTool and CWObj then return, before any move; a loaddata is accepted and changes nothing, as GripLoad (doc/rulings.md R-13-x). A later move's tool and work object replace them.
+! @description SetSysData makes a persistent tooldata or wobjdata the active one, as CTool and CWObj then return, before any move; a loaddata is accepted and changes nothing, as GripLoad (doc/rulings.md R-13-y). A later move's tool and work object replace them.
 ! @output before 0 0
 ! @output after 65 -20
 ! @output load 65 -20

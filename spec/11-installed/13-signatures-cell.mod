@@ -3,7 +3,7 @@ MODULE sig_cell
 ! @section 13
 ! @section 4.6
 ! @expect ok
-! @description Installed routines of cell programs declared in cell.sys (doc/rulings.md R-13-w): the RAPID Message Queue (rmqslot, rmqmessage, rmqheader, RMQFindSlot, RMQSendMessage, IRMQMessage, RMQGetMessage, RMQGetMsgHeader, RMQGetMsgData, RMQReadWait, RMQEmptyQueue, RMQGetSlotName), TriggInt and TriggC, CirPathMode, SetSysData, the mechanical-unit routines and ModExist, called as ABB documents them.
+! @description Installed routines of cell programs declared in cell.sys (doc/rulings.md R-13-x): the RAPID Message Queue (rmqslot, rmqmessage, rmqheader, RMQFindSlot, RMQSendMessage, IRMQMessage, RMQGetMessage, RMQGetMsgHeader, RMQGetMsgData, RMQReadWait, RMQEmptyQueue, RMQGetSlotName), TriggInt and TriggC, CirPathMode, SetSysData, the mechanical-unit routines and ModExist, called as ABB documents them.
   VAR rmqslot peer;
   VAR rmqmessage inbox;
   VAR rmqheader head;
