@@ -566,6 +566,7 @@ let names = [
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
   "SetSysData";
+  "IsStopMoveAct";
 ]
 
 let modelled name = List.exists (same name) names
@@ -677,6 +678,10 @@ let call_unguarded (ctx : context) st name args =
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | "accset" -> Some (Returned None)
   | "cornerpathwarning" | "gripload" -> Some (Returned None)
+  | "isstopmoveact" ->
+      (* R-13-z: only the motion task can StopMove in rapid-sem (R-14-e), so a stop from a
+         non-motion task is never active; without a switch, a stop from either. *)
+      Some (Returned (Some (V.Bool (not (present ctx args "FromNonMoveTask") && P.stopped st.planner))))
   | "setsysdata" when not (present ctx args "ObjectName") -> (
       (* R-13-y: the three record types SetSysData takes are told apart by their components;
          a load is accepted and changes nothing, as GripLoad (R-4.1-g). \ObjectName (activate by
