@@ -422,11 +422,29 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
+(* R-13-aa: under --allow-unknown --stub-unmodelled, the undeclared names a program passes as
+   signals become virtual signals at 0, reported once each on standard error. *)
+let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
+  if not (allow_unknown && stub_unmodelled) then io
+  else
+    match Rapid_typing.Installed_env.modules () with
+    | Error _ -> io
+    | Ok installed ->
+        let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+        let inferred = Rapid_semantics.Signal_inference.infer ~installed modules in
+        let io' = Rapid_semantics.Signal_inference.extend io inferred in
+        List.iter (fun (s : Rapid_controller.Io_config.signal) ->
+            if not (List.memq s io.signals) then
+              Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n" s.name
+                (Rapid_controller.Io_config.type_name s.kind)) io'.signals;
+        io'
+
 let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) files io in
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
@@ -457,6 +475,7 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) files io in
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
