@@ -427,17 +427,12 @@ let report_stubbed events =
 let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
   if not (allow_unknown && stub_unmodelled) then io
   else
-    match Rapid_typing.Installed_env.modules () with
-    | Error _ -> io
-    | Ok installed ->
-        let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
-        let inferred = Rapid_semantics.Signal_inference.infer ~installed modules in
-        let io' = Rapid_semantics.Signal_inference.extend io inferred in
-        List.iter (fun (s : Rapid_controller.Io_config.signal) ->
-            if not (List.memq s io.signals) then
-              Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n" s.name
-                (Rapid_controller.Io_config.type_name s.kind)) io'.signals;
-        io'
+    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let io, added = Rapid_semantics.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
+    List.iter (fun (s : Rapid_controller.Io_config.signal) ->
+        Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n" s.name
+          (Rapid_controller.Io_config.type_name s.kind)) added;
+    io
 
 let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();

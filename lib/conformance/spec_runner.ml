@@ -200,6 +200,8 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
         match io with
         | Error m -> fail case m
         | Ok io ->
+        let io = fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+                        ~stub_unmodelled:case.stub_unmodelled modules io) in
         (* The whole static semantics, the initial values known before the run included. *)
         match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
         | Error (Internal m) -> fail case m

@@ -1,5 +1,6 @@
 (* R-13-aa: virtual signals for the undeclared names a program passes as signals. The kind
-   comes from the installed routine's own declaration, so no routine list is kept here. *)
+   comes from the called routine's own declaration (installed or the program's), so no routine
+   list is kept here. *)
 
 open Rapid_syntax
 module Io = Rapid_controller.Io_config
@@ -83,7 +84,9 @@ let declared (modules : Ast.module_declaration list) =
   names
 
 let infer ~installed modules =
-  let table = signatures installed in
+  (* The program's own routines count as well: a signal handed to a parameter of type
+     signaldo is a signal whoever declares the parameter. *)
+  let table = signatures (installed @ modules) in
   let known = declared (installed @ modules) in
   let found = ref [] in
   let note name kind =
@@ -156,3 +159,12 @@ let extend (io : Io.t) inferred =
   let extra = List.filter_map (fun (name, kind) ->
       if have name then None else Some { Io.name; kind; initial = 0. }) inferred in
   { io with signals = io.signals @ extra }
+
+let for_run ~allow_unknown ~stub_unmodelled modules io =
+  if not (allow_unknown && stub_unmodelled) then (io, [])
+  else
+    match Rapid_typing.Installed_env.modules () with
+    | Error _ -> (io, [])
+    | Ok installed ->
+        let io' = extend io (infer ~installed modules) in
+        (io', List.filter (fun s -> not (List.memq s io.signals)) io'.signals)
