@@ -52,6 +52,8 @@ let atomic_types : (string * Types.value_class * Types.data_type option) list = 
   ("rmqslot", Types.Non_value, None);
   (* A message taken from the queue by RMQGetMessage or RMQReadWait (cell.sys). *)
   ("rmqmessage", Types.Non_value, None);
+  (* A world zone's volume, defined by WZBoxDef and the like (cell.sys). *)
+  ("shapedata", Types.Non_value, None);
 ]
 
 let find name =
