@@ -531,6 +531,8 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   | Some n, _ -> Printf.eprintf "rapid-sem: --task %s is given twice: task names are unique\n" n; exit_static_error
   | _, Some (n, _) -> Printf.eprintf "rapid-sem: --entry %s=...: there is no task %s\n" n n; exit_static_error
   | None, None ->
+  (* R-13-aa: the signals are the controller's, shared by every task. *)
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) (List.concat_map snd tasks) io in
   let specs = List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
       { Rapid_semantics.Task_set.name; files; entry }) tasks in
