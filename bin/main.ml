@@ -422,11 +422,24 @@ let report_stubbed events =
             (Source.to_string at) routine
       | _ -> ()) events
 
+(* R-13-aa: under --allow-unknown --stub-unmodelled, the undeclared names a program passes as
+   signals become virtual signals at 0, reported once each on standard error. *)
+let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
+  if not (allow_unknown && stub_unmodelled) then io
+  else
+    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let io, added = Rapid_semantics.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
+    List.iter (fun (s : Rapid_controller.Io_config.signal) ->
+        Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n" s.name
+          (Rapid_controller.Io_config.type_name s.kind)) added;
+    io
+
 let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
   machine_gc ();
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) files io in
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
@@ -457,6 +470,7 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) files io in
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
@@ -517,6 +531,8 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   | Some n, _ -> Printf.eprintf "rapid-sem: --task %s is given twice: task names are unique\n" n; exit_static_error
   | _, Some (n, _) -> Printf.eprintf "rapid-sem: --entry %s=...: there is no task %s\n" n n; exit_static_error
   | None, None ->
+  (* R-13-aa: the signals are the controller's, shared by every task. *)
+  let io = with_inferred_signals (allow_unknown, stub_unmodelled) (List.concat_map snd tasks) io in
   let specs = List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
       { Rapid_semantics.Task_set.name; files; entry }) tasks in

@@ -143,6 +143,11 @@ let run_tasks engine case expected (run : Spec_case.run) =
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
   | Ok io, Ok robot ->
+  let io =
+    let modules = List.concat_map (fun (_, files) ->
+        List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
+    fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+           ~stub_unmodelled:case.stub_unmodelled modules io) in
   let limits = { M.default_limits with retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
@@ -200,6 +205,8 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
         match io with
         | Error m -> fail case m
         | Ok io ->
+        let io = fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+                        ~stub_unmodelled:case.stub_unmodelled modules io) in
         (* The whole static semantics, the initial values known before the run included. *)
         match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
         | Error (Internal m) -> fail case m

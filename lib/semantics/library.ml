@@ -542,6 +542,10 @@ let f2 f a = f (arg a 0) (arg a 1)
 let f3 f a = f (arg a 0) (arg a 1) (arg a 2)
 let present (a : Value.t option array) i = Option.is_some a.(i)
 
+(* StrToByte and ByteToStr: the argument, then the switches \Hex, \Okt, \Bin, \Char. *)
+let byte_base a =
+  Byte_text.base_of_switches ~hex:(present a 1) ~okt:(present a 2) ~bin:(present a 3) ~char:(present a 4)
+
 let functions =
   [ ("StrLen", 1, f1 str_len);
     ("StrPart", 3, f3 str_part);
@@ -611,7 +615,9 @@ let functions =
     ("BitNegDnum", 1, f1 bit_neg_dnum);
     ("BitLShDnum", 2, f2 bit_lsh_dnum);
     ("BitRShDnum", 2, f2 bit_rsh_dnum);
-    ("BitCheckDnum", 2, f2 bit_check_dnum) ]
+    ("BitCheckDnum", 2, f2 bit_check_dnum);
+    ("StrToByte", 5, fun a -> Byte_text.str_to_byte (byte_base a) (arg a 0));
+    ("ByteToStr", 5, fun a -> Byte_text.byte_to_str (byte_base a) (arg a 0)) ]
 
 let table =
   let t = Hashtbl.create 97 in

@@ -565,6 +565,8 @@ let names = [
   "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
+  "SetSysData";
+  "IsStopMoveAct";
 ]
 
 let modelled name = List.exists (same name) names
@@ -676,6 +678,21 @@ let call_unguarded (ctx : context) st name args =
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | "accset" -> Some (Returned None)
   | "cornerpathwarning" | "gripload" -> Some (Returned None)
+  | "isstopmoveact" ->
+      (* R-13-z: only the motion task can StopMove in rapid-sem (R-14-e), so a stop from a
+         non-motion task is never active; without a switch, a stop from either. *)
+      Some (Returned (Some (V.Bool (not (present ctx args "FromNonMoveTask") && P.stopped st.planner))))
+  | "setsysdata" when not (present ctx args "ObjectName") -> (
+      (* R-13-y: the three record types SetSysData takes are told apart by their components;
+         a load is accepted and changes nothing, as GripLoad (R-4.1-g). \ObjectName (activate by
+         name) is not modelled. *)
+      match get "SourceObject" with
+      | Some (V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] as t) when Array.length l = 6 ->
+          st.tool <- V.copy t; Some (Returned None)
+      | Some (V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] as o) ->
+          st.wobj <- V.copy o; Some (Returned None)
+      | Some (V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |]) -> Some (Returned None)
+      | _ -> Some (Failed "ERR_ARGVALERR"))
   | "confl" -> settings.conf_l <- not (present ctx args "Off"); Some (Returned None)
   | "confj" -> settings.conf_j <- not (present ctx args "Off"); Some (Returned None)
   | "singarea" ->

@@ -48,6 +48,12 @@ let atomic_types : (string * Types.value_class * Types.data_type option) list = 
   ("egmident", Types.Non_value, None);
   (* A mechanical unit of the configuration (ROB_1, ...). *)
   ("mecunit", Types.Non_value, None);
+  (* A slot of the RAPID Message Queue, found with RMQFindSlot (cell.sys). *)
+  ("rmqslot", Types.Non_value, None);
+  (* A message taken from the queue by RMQGetMessage or RMQReadWait (cell.sys). *)
+  ("rmqmessage", Types.Non_value, None);
+  (* A world zone's volume, defined by WZBoxDef and the like (cell.sys). *)
+  ("shapedata", Types.Non_value, None);
 ]
 
 let find name =
