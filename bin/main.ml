@@ -674,7 +674,7 @@ let run_cmd =
   let doc = "run a task: check the modules, then execute the entry routine" in
   let man = [
     `S Manpage.s_description;
-    `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the small-step semantics of doc/semantics.md. Standard output carries only the program's output, one line per TPWrite.";
+    `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the semantics of doc/semantics.md (the second engine unless $(b,--engine) or what only the machine has asks for the small-step machine). Standard output carries only the program's output, one line per TPWrite.";
     `P "With $(b,--task NAME=FILE,...) (repeated), runs several tasks instead, each its own task buffer and entry routine, on one virtual clock, in turns of one statement (round robin, or the order of $(b,--schedule SEED)); system-global persistents are shared between them (chapter 14; doc/user-guide.md, \"Several tasks\"). With $(b,--json), each event names its task.";
     `S Manpage.s_exit_status;
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
