@@ -224,7 +224,7 @@ let call (ctx : context) name args =
   | "ginputdnum" | "goutputdnum" -> Some (let* id = signal ctx args "Signal" in Returned (Some (V.dnum (W.read w id))))
   | "testdi" -> Some (let* id = signal ctx args "Signal" in Returned (Some (V.Bool (W.read w id = 1.))))
   | "testandset" | "waittestandset" -> (
-      (* One task: nothing else holds the semaphore between the test and the set. *)
+      (* Tasks take turns of whole statements: no other task comes between the test and the set. *)
       match arg ctx args "Object" with
       | Location (box, i, _) ->
           let was = box.(i) = V.Bool true in
