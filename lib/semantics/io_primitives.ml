@@ -170,7 +170,7 @@ let call (ctx : context) name args =
   let value f = Returned (Some (V.num f)) in
   match String.lowercase_ascii name with
   | "waittime" ->
-      (* \InPos: no motion is modelled, so the robot always stands still (R-8-b). *)
+      (* WaitTime \InPos is Motion_primitives', which is called first (R-8-n). *)
       Some (let* t = duration (num ctx args "Time") in
             Wait { W.what = "time"; satisfied = (fun () -> false); deadline = Some (W.now w +. t);
                    finish = (fun ~timed_out:_ -> None); poll = None })
