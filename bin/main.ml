@@ -117,9 +117,9 @@ let parse_cmd =
   in
   let strict =
     Arg.(value & flag & info [ "strict" ]
-           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, comment lines \
+           ~doc:"Refuse what chapter 10 does not print: a %%% header block, comment lines \
                  before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
-                 without a final line break (doc/dialect.md).")
+                 without a final line break, \\\\Continue as an argument (doc/dialect.md).")
   in
   let run files print ast strict =
     guard @@ fun () ->
