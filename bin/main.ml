@@ -934,7 +934,7 @@ let trace_cmd =
   let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became (errors raised and where they went included), and the statement as it stands after |; output and UNDO handlers follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
+    `P "Runs the task like $(b,rapid-sem run --engine machine) (the small-step machine) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became (errors raised and where they went included), and the statement as it stands after |; output and UNDO handlers follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
