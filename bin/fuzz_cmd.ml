@@ -40,7 +40,7 @@ let cmd =
   let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does. The protocol passes the program alone, without an I/O configuration, so no program then uses the controller (as with $(b,--no-controller)).") in
   let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
   let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
-  let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves): every program is then compared between the engines.") in
+  let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves).") in
   let signal_stores = Arg.(value & flag & info [ "no-signal-stores" ] ~doc:"Generate no assignments to signal variables (do1 := 1).") in
   let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
   let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in

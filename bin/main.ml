@@ -117,9 +117,9 @@ let parse_cmd =
   in
   let strict =
     Arg.(value & flag & info [ "strict" ]
-           ~doc:"Refuse what chapter 10 does not print: a %%%% header block, comment lines \
+           ~doc:"Refuse what chapter 10 does not print: a %%% header block, comment lines \
                  before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
-                 without a final line break (doc/dialect.md).")
+                 without a final line break, \\\\Continue as an argument (doc/dialect.md).")
   in
   let run files print ast strict =
     guard @@ fun () ->
@@ -690,7 +690,7 @@ let run_cmd =
   let doc = "run a task: check the modules, then execute the entry routine" in
   let man = [
     `S Manpage.s_description;
-    `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the small-step semantics of doc/semantics.md. Standard output carries only the program's output, one line per TPWrite.";
+    `P "Checks the FILEs as one task buffer (as $(b,rapid-sem check)), then runs the entry routine by the semantics of doc/semantics.md (the second engine unless $(b,--engine) or what only the machine has asks for the small-step machine). Standard output carries only the program's output, one line per TPWrite.";
     `P "With $(b,--task NAME=FILE,...) (repeated), runs several tasks instead, each its own task buffer and entry routine, on one virtual clock, in turns of one statement (round robin, or the order of $(b,--schedule SEED)); system-global persistents are shared between them (chapter 14; doc/user-guide.md, \"Several tasks\"). With $(b,--json), each event names its task.";
     `S Manpage.s_exit_status;
     `P "0: the task ended (end of the entry routine, RETURN in it, EXIT). 1: the system error handler stopped it; the error's name and the place of the failing statement go to standard error. 2: a static error, before anything ran. 3: the step limit or a resource limit (call depth, the memory budget of --max-memory) was exhausted. 4: the program called an installed routine rapid-sem does not model yet. 141: standard output was closed (a pipe whose reader has gone) or could not be written.";
@@ -950,7 +950,7 @@ let trace_cmd =
   let doc = "print the reductions of a run one by one, or the statements it executes" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task like $(b,rapid-sem run) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became (errors raised and where they went included), and the statement as it stands after |; output and UNDO handlers follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
+    `P "Runs the task like $(b,rapid-sem run --engine machine) (the small-step machine) and prints each reduction: the step number, the rule applied (doc/semantics.md), where in the source, the redex with the values it works on and what it became (errors raised and where they went included), and the statement as it stands after |; output and UNDO handlers follow on lines of their own. $(b,--level statement) prints one line per statement executed, as a programmer steps through it on the FlexPendant: MODULE:LINE, the statement, and the changes it made (store writes, output, errors). $(b,--format jsonl) writes one JSON object per line in the schema of doc/trace-format.md.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run).";
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)

@@ -131,7 +131,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
   let doc = "run a task and draw its motion: the TCP path, the timeline, samples" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task as $(b,rapid-sem run) (its output on standard output), then writes what the robot did: $(b,--svg) the TCP path in the world frame (top view x-y, side view x-z), $(b,--timeline) the moves, corner paths and TCP speed against virtual time with the program's waits, traps and signal changes below, $(b,--csv) samples of the TCP pose, the axis angles and the external axes (doc/motion.md, \"Output\"). Each file written is named on standard error.";
+    `P "Runs the task as $(b,rapid-sem run --engine machine) does (its output on standard output), then writes what the robot did: $(b,--svg) the TCP path in the world frame (top view x-y, side view x-z), $(b,--timeline) the moves, corner paths and TCP speed against virtual time with the program's waits, traps and signal changes below, $(b,--csv) samples of the TCP pose, the axis angles and the external axes (doc/motion.md, \"Output\"). Each file written is named on standard error.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run); 2 also when a file cannot be written.";
   ] in
   Cmd.v (Cmd.info "motion" ~doc ~man)

@@ -83,7 +83,7 @@ let rec run_program engine case (run : Spec_case.run) ~io program =
   match execute engine case run ~io program with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
-      (* The case needs the controller, which the closure engine leaves to the machine. *)
+      (* What the closure engine leaves to the machine (nothing any more; Closure_engine.machine_only). *)
       { case; verdict = Skipped; detail = "needs the controller: " ^ reason }
   | Ok r -> judge case run r
 

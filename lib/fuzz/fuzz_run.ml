@@ -116,8 +116,8 @@ let machine =
   { engine_name = "machine"; run }
 
 (* The second engine (doc/semantics.md, "The second engine"). A run that exhausts its fuel or a
-   resource, or reaches what the closure engine leaves to the machine (the controller, motion),
-   is not finished: it is not compared. *)
+   resource, or ends as [Closure_engine.machine_only] says (no run does any more), is not
+   finished: it is not compared. *)
 let closure =
   let run program ~max_steps =
     let add, events = streams () in

@@ -216,8 +216,8 @@ and function_call sc s depth =
       | `Optional t -> " " ^ t) args in
   Printf.sprintf "%s(%s)" s.r_name (String.trim (String.concat "" text))
 
-(* What needs the controller: waits, signals, interrupts (ch. 8), moves. A program that uses it
-   runs on the machine; the closure engine leaves it to the machine (not compared). *)
+(* What needs the controller: waits, signals, interrupts (ch. 8), moves. Both engines run it in
+   the same world (doc/semantics.md, "The second engine"), so it is compared as the rest. *)
 let controller_statement sc =
   let rs = sc.rs in
   let time () = pick rs [ "0"; "0.05"; "0.1"; "0.3"; "1" ] in

@@ -41,8 +41,8 @@ type options = {
           WaitDI), signals (SetDO, Set, Reset, PulseDO, reading di1 and do1), moves (MoveJ, MoveL);
           they run with the signals of {!Fuzz_run.io} *)
   signal_stores : bool;
-      (** assignments to signal variables ([do1 := 1]) too: off by default, since the closure
-          engine does not yet leave them to the machine (doc/fuzz-campaign.md) *)
+      (** assignments to signal variables ([do1 := 1]) too: on by default, since both engines run
+          the controller (doc/fuzz-campaign.md); [--no-signal-stores] turns them off *)
 }
 
 val default_options : options

@@ -1,9 +1,11 @@
 (** Frames (doc/motion.md, "Frames"): a robtarget is in the work object (uframe · oframe) and is
-    reached by the tool's TCP (tframe); the base frame is the world frame. The position
+    reached by the tool's TCP (tframe); the base frame is the world frame unless a track moves it
+    ([?base] below). The position
     functions CRobT, CPos, CalcRobT, CalcJointT and CJointT in floats. *)
 
 type robtarget = { pose : Geom.pose; conf : Kinematics.conf }
-(** The robot part of a robtarget (external axes are not modelled). *)
+(** The robot part of a robtarget (its external axes are the planner's: doc/motion.md, "External
+    axes"). *)
 
 val object_frame : Motion_data.wobjdata -> Geom.pose
 (** uframe · oframe. *)

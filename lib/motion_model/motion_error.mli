@@ -1,4 +1,4 @@
-(** The errors of the motion model, each under the name the machine will raise (ABB's event
+(** The errors of the motion model, each under the name the engines raise (ABB's event
     names where ABB has one; doc/motion.md, "Errors"). *)
 
 type t =

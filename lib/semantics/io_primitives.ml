@@ -170,7 +170,7 @@ let call (ctx : context) name args =
   let value f = Returned (Some (V.num f)) in
   match String.lowercase_ascii name with
   | "waittime" ->
-      (* \InPos: no motion is modelled, so the robot always stands still (R-8-b). *)
+      (* WaitTime \InPos is Motion_primitives', which is called first (R-8-n). *)
       Some (let* t = duration (num ctx args "Time") in
             Wait { W.what = "time"; satisfied = (fun () -> false); deadline = Some (W.now w +. t);
                    finish = (fun ~timed_out:_ -> None); poll = None })
@@ -224,7 +224,7 @@ let call (ctx : context) name args =
   | "ginputdnum" | "goutputdnum" -> Some (let* id = signal ctx args "Signal" in Returned (Some (V.dnum (W.read w id))))
   | "testdi" -> Some (let* id = signal ctx args "Signal" in Returned (Some (V.Bool (W.read w id = 1.))))
   | "testandset" | "waittestandset" -> (
-      (* One task: nothing else holds the semaphore between the test and the set. *)
+      (* Tasks take turns of whole statements: no other task comes between the test and the set. *)
       match arg ctx args "Object" with
       | Location (box, i, _) ->
           let was = box.(i) = V.Bool true in

@@ -2106,7 +2106,7 @@ let backward cfg =
   | F_stmt cur, K_seq (b, j) :: rest when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == cur ->
       if cfg.act.handling <> Body then
         (* §6.2: "the instructions of a BACKWARD handler or an error handler cannot be executed
-           backward"; UNDO handlers likewise (doc/rulings.md R-6.2-a). *)
+           backward"; UNDO handlers likewise (doc/rulings.md R-6-d). *)
         not_supported "the program pointer is in an error or UNDO handler (§6.2)"
       else if cfg.backward_depth >= 0 then not_supported "backward execution cannot be nested (§6.2)"
       else if j = 1 then not_supported "the program pointer is at the top of a statement list"

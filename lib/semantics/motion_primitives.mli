@@ -1,5 +1,5 @@
 (** The installed routines of motion (lib/typing/installed/motion.sys; ABB's RAPID Instructions,
-    Functions and Data types) as primitives of the machine: the moves hand their segments to the
+    Functions and Data types) as primitives of both engines: the moves hand their segments to the
     run's planner ({!Rapid_motion_model.Planner}) and the program pointer waits, on the virtual
     clock and open to interrupts, until the planner's ready time; the position functions read the
     robot where it is at the current virtual time (doc/motion.md, "Moves in the machine"). *)
