@@ -328,7 +328,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
-  | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
+  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
   | Some i ->
       let routine = program.routines.(i) in
       if routine.kind <> Procedure || Array.length routine.parameters > 0 then
