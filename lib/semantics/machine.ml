@@ -351,6 +351,9 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
           match e.e with
           | Literal v -> Ok v
           | Read (Whole (Global i)) -> Ok (get globals.(i))
+          (* An unknown name (--allow-unknown) is ERR_REFUNKDAT wherever it is read, here as in
+             a statement and in the closure engine. *)
+          | Read (Unresolved _) -> Error "ERR_REFUNKDAT"
           | Read (Component (p, k)) -> (
               match eval { e with e = Read p } with
               | Ok (V.Record cs) -> Ok cs.(k)
