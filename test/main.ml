@@ -28,4 +28,5 @@ let () =
       Test_engines_kept.suite;
       Test_tasks.suite;
       Test_observation.suite;
+      Test_realprog2.suite;
     ]

@@ -607,6 +607,35 @@ let segment_span t id =
   back (t.cur.pieces.len - 1);
   if !lo = infinity then None else Some (real_time t.cur !lo, real_time t.cur !hi)
 
+(* [segment_span] for several moves in one walk back through the queue: a check of the moves
+   still running asks for all of them at once, and one walk per move made that quadratic in
+   the moves queued (a long path of zone points). A piece counts for a move as long as no later
+   piece is wholly older than the move, which is where [segment_span]'s walk stops. *)
+let segment_spans t ids =
+  let spans = Hashtbl.create 16 in
+  List.iter (fun id -> Hashtbl.replace spans id (infinity, neg_infinity)) ids;
+  let oldest = List.fold_left min max_int ids in
+  let rec back i runmin =
+    if i >= 0 && runmin >= oldest then begin
+      let pc = Vec.get t.cur.pieces i in
+      let pids = match pc.shape with
+        | Part sg -> [ sg.id ] | Blend b -> [ b.a.id; b.b.id ] | Joint_blend b -> [ b.a.id; b.b.id ] in
+      let runmin = min runmin (List.fold_left max min_int pids) in
+      List.iter (fun id ->
+          if id <= runmin then
+            match Hashtbl.find_opt spans id with
+            | Some (lo, hi) ->
+                let ends_here = match pc.shape with Part _ -> true | Blend b -> b.b.id = id | Joint_blend b -> b.b.id = id in
+                let hi = if ends_here then Float.max hi pc.tm.t1 else Float.max hi pc.tm.t0 in
+                Hashtbl.replace spans id (Float.min lo pc.tm.t0, hi)
+            | None -> ()) (List.sort_uniq compare pids);
+      back (i - 1) runmin
+    end in
+  back (t.cur.pieces.len - 1) max_int;
+  fun id -> match Hashtbl.find_opt spans id with
+    | Some (lo, hi) when lo <> infinity -> Some (real_time t.cur lo, real_time t.cur hi)
+    | _ -> None
+
 let point_time t id =
   let corner = ref None and own_end = ref None in
   let rec back i =

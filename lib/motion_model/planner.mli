@@ -141,6 +141,10 @@ val segment_span : t -> int -> (float * float) option
     outgoing corner begins, or at its point), real time, on the current path level; [None] for a
     move not (or no longer) in the queue. Cheap for recent moves. *)
 
+val segment_spans : t -> int list -> int -> (float * float) option
+(** [segment_spans t ids] answers [segment_span t id] for every [id] of [ids], walking the
+    queue once. *)
+
 val point_time : t -> int -> float option
 (** When the robot passes the move's programmed point: the middle of its corner path (MoveLDO,
     MoveJDO), or the end of its part; [None] when not in the queue. *)

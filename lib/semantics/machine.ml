@@ -328,7 +328,7 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
-  | None -> Error (Printf.sprintf "there is no procedure %s to run" entry)
+  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
   | Some i ->
       let routine = program.routines.(i) in
       if routine.kind <> Procedure || Array.length routine.parameters > 0 then
@@ -351,6 +351,9 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
           match e.e with
           | Literal v -> Ok v
           | Read (Whole (Global i)) -> Ok (get globals.(i))
+          (* An unknown name (--allow-unknown) is ERR_REFUNKDAT wherever it is read, here as in
+             a statement and in the closure engine. *)
+          | Read (Unresolved _) -> Error "ERR_REFUNKDAT"
           | Read (Component (p, k)) -> (
               match eval { e with e = Read p } with
               | Ok (V.Record cs) -> Ok cs.(k)

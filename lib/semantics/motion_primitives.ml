@@ -255,8 +255,9 @@ let check st ~now =
   let w_next = ref infinity in
   let events = ref [] in
   let level1 = P.path_level st.planner = 1 in
+  let span = P.segment_spans st.planner (List.map (fun tr -> tr.t_id) st.tracks) in
   st.tracks <- List.filter (fun tr ->
-      match P.segment_span st.planner tr.t_id with
+      match span tr.t_id with
       | None ->
           if level1 then (events := Segment_dropped { time = now; id = tr.t_id; label = tr.t_label } :: !events; false)
           else true
