@@ -1957,22 +1957,10 @@ let location_value = get
 
 (* Where a location is: searched from the current activation's slots, then the module data, by
    identity of the storage; the path runs from the data object to the location. *)
-type path_step = Index of int | Component_of of int
+type path_step = Observation.step = Index of int | Component_of of int
 
 let location_path cfg (l : location) =
-  let rec within v path =
-    match v with
-    | V.Record cs | V.Array cs ->
-        let step k = match v with V.Record _ -> Component_of k | _ -> Index (k + 1) in
-        if cs == l.box then Some (List.rev (step l.idx :: path))
-        else
-          let rec each k =
-            if k >= Array.length cs then None
-            else match within cs.(k) (step k :: path) with Some p -> Some p | None -> each (k + 1)
-          in
-          each 0
-    | _ -> None
-  in
+  let within v _ = Observation.path_within (l.box, l.idx) v in
   let search roots slot =
     let rec go i =
       if i >= Array.length roots then None

@@ -179,7 +179,7 @@ val frame_view : config -> frame_view
 
 val location_value : location -> Value.t
 
-type path_step = Index of int | Component_of of int
+type path_step = Observation.step = Index of int | Component_of of int
 (** [Index] from 1, [Component_of] from 0. *)
 
 val location_path : config -> location -> (Ir.slot * path_step list) option

@@ -48,7 +48,7 @@ type roots = {
    the data it denotes: the routine names it so), then one that holds it in a record or an
    array. No two module data objects share storage, so the second pass may take them in any
    order: the last declared first, the program's own before the installed ones. *)
-let find ((box, idx) : V.t array * int) roots =
+let path_within ((box, idx) : V.t array * int) v =
   let rec within v path =
     match v with
     | V.Record cs | V.Array cs ->
@@ -62,6 +62,10 @@ let find ((box, idx) : V.t array * int) roots =
           each 0
     | _ -> None
   in
+  within v []
+
+let find ((box, idx) : V.t array * int) roots =
+  let within v _ = path_within (box, idx) v in
   let rec same_local i =
     if i >= roots.n_locals then None
     else let rbox, ridx = roots.local i in

@@ -32,6 +32,19 @@ val value : Value.t -> string
 type step = Index of int | Component_of of int
 (** [Index] from 1, [Component_of] from 0. *)
 
+val path_within : Value.t array * int -> Value.t -> step list option
+(** The path from a record or array value down to a location inside it (the container and the
+    index there), or [None] when the value does not hold it. *)
+
+val routine_index : Ir.program -> Ir.routine -> int
+(** The routine's index in the program's table, [-1] when it is not there. *)
+
+val slot_name : Ir.program -> int -> Ir.slot -> string
+(** The name of a slot of the routine of that index (module data by its own name). *)
+
+val component_name : Ir.program -> int -> Ir.slot -> int list -> int -> string
+(** The name of component [k] at a path of components within a slot's record value. *)
+
 type roots = {
   n_locals : int;
   local : int -> Value.t array * int;       (** the location of local slot [i] *)

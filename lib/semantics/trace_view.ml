@@ -105,26 +105,9 @@ let statement_text t s = source_text t (statement_region s)
 
 (* ------------------------------------------------------------------ places *)
 
-let routine_index (program : Ir.program) (r : Ir.routine) =
-  let rec find i =
-    if i >= Array.length program.routines then -1
-    else if program.routines.(i) == r then i else find (i + 1)
-  in
-  find 0
-
-let slot_name (program : Ir.program) ri (s : Ir.slot) =
-  match s with
-  | Global i -> program.globals.(i).g_name
-  | Local i ->
-      if ri >= 0 && ri < Array.length program.names.local_names && i < Array.length program.names.local_names.(ri)
-      then program.names.local_names.(ri).(i)
-      else Printf.sprintf "<local %d>" i
-
-let component_name (program : Ir.program) ri (s : Ir.slot) path k =
-  let scope = match s with Global _ -> -1 | Local _ -> ri in
-  match Hashtbl.find_opt program.names.component_names (scope, s, path @ [ k ]) with
-  | Some n -> n
-  | None -> Printf.sprintf "<component %d>" (k + 1)
+let routine_index = Observation.routine_index
+let slot_name = Observation.slot_name
+let component_name = Observation.component_name
 
 (* A place as it is written, its indexes as their source text. *)
 let place_text t program ri (p : Ir.place) =
