@@ -434,8 +434,9 @@ let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
           (Rapid_controller.Io_config.type_name s.kind)) added;
     io
 
-let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
-  machine_gc ();
+(* The task buffer loaded, in the controller of the options (signals, stimulus, clock, services,
+   robot), which both engines run it in; its warnings on standard error. *)
+let in_controller ?json ?robot files (allow_unknown, stub_unmodelled) controller k =
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
@@ -445,65 +446,52 @@ let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, st
   else
   match Rapid_semantics.Session.load ~allow_unknown ~io files with
   | Error f -> report_load_failure ?json f
-  | Ok loaded -> (
+  | Ok loaded ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       Option.iter prerr_endline loaded.unknown_summary;
-      let retry_limit, max_memory = retry_limit in
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
       let motion = Rapid_semantics.Motion_primitives.create ~robot () in
       match Services_args.install controller.services world with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-      | Ok () ->
-      match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
-              ~observe loaded.program ~entry with
-      | Error m ->
-          if json = Some true then
-            List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
-          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-      | Ok cfg -> k cfg)
+      | Ok () -> k loaded world motion
+
+let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+  machine_gc ();
+  in_controller ?json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
+  let retry_limit, max_memory = retry_limit in
+  match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
+          ~observe loaded.program ~entry with
+  | Error m ->
+      if json = Some true then
+        List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
+      Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+  | Ok cfg -> k cfg
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
    controller (signals, stimulus, clock, services, robot) as the machine's. *)
 let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
     controller print_event =
-  match read_io controller.io, Motion_cmd.load_robot robot with
-  | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
-  | Ok io, Ok robot ->
-  let io = with_inferred_signals (allow_unknown, stub_unmodelled) files io in
-  if controller.statement_time < 0. || controller.max_time < 0. then
-    (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
-  else
-  match Rapid_semantics.Session.load ~allow_unknown ~io files with
-  | Error f -> report_load_failure ~json f
-  | Ok loaded -> (
-      let world = Rapid_controller.World.create ~statement_time:controller.statement_time
-          ~max_time:controller.max_time ~epoch:controller.epoch io in
-      let motion = Rapid_semantics.Motion_primitives.create ~robot () in
-      match Services_args.install controller.services world with
-      | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-      | Ok () ->
-      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
-      if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
-      Option.iter prerr_endline loaded.unknown_summary;
-      let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
-      let stubbed = ref [] in
-      let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
-      match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-              ~observe:json ~on_event ~world ~motion loaded.program ~entry with
-      | Error m ->
-          if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
-          Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-      | Ok { outcome; fuel_used } ->
-          report_stubbed (List.rev !stubbed);
-          if json then print_endline (Yojson.Safe.to_string
-                                        (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
-          match outcome with
-          | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
-              (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
-              Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
-              exit_unsupported
-          | _ -> finish outcome fuel_used ~max_steps)
+  in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
+  if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+  let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
+  let stubbed = ref [] in
+  let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+  match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
+          ~observe:json ~on_event ~world ~motion loaded.program ~entry with
+  | Error m ->
+      if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
+      Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
+  | Ok { outcome; fuel_used } ->
+      report_stubbed (List.rev !stubbed);
+      if json then print_endline (Yojson.Safe.to_string
+                                    (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
+      match outcome with
+      | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
+          (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
+          Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
+          exit_unsupported
+      | _ -> finish outcome fuel_used ~max_steps
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
    (Task_set); each event of --json names its task. *)
