@@ -105,8 +105,7 @@ let closure_run ?stub_unmodelled ?world limits program ~entry ~fuel =
    errors, traps) and the world's (signal changes, interrupts, moves), which carry their virtual
    times. Between the two the engines may differ: the machine reports what the world did during
    a step before the step's own events, and a step may run on into the next statement's entry. *)
-let world_event (e : M.event) = match e with Controller _ | Motion _ -> true | _ -> false
-let streams events = List.partition (fun e -> not (world_event e)) events
+let streams events = List.partition (fun e -> not (M.world_event e)) events
 
 let is_prefix a b =
   let rec prefix a b = match a, b with [], _ -> true | x :: a, y :: b -> x = y && prefix a b | _ :: _, [] -> false in

@@ -89,11 +89,9 @@ let installed = lazy (Rapid_semantics.Session.installed ~io ())
 (* The events of a run as two streams, each in its order: the program's, then the world's
    (signal changes, interrupts, motion). The engines may interleave the two differently within
    a step (doc/semantics.md, "What is compared"); each stream must be the same. *)
-let world_event (e : M.event) = match e with Controller _ | Motion _ -> true | _ -> false
-
 let streams () =
   let program = ref [] and world = ref [] in
-  let add e = if world_event e then world := event_text e :: !world else program := event_text e :: !program in
+  let add e = if M.world_event e then world := event_text e :: !world else program := event_text e :: !program in
   let result () = List.rev_append !program ("-- the world's events --" :: List.rev !world) in
   (add, result)
 

@@ -321,6 +321,8 @@ let rec release cfg (act : activation) =
         end in
       up inner
 
+let world_event = function Controller _ | Motion _ -> true | _ -> false
+
 let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(cooperative = false)
     ?(observe = false) (program : Ir.program) ~entry =
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in

@@ -90,6 +90,11 @@ val start :
     arguments of calls and the values functions return ({!Observation.t}: texts built only then,
     schema rapid-sem/2). *)
 
+val world_event : event -> bool
+(** An event of the world (signal changes, interrupts, motion) rather than of the program: the
+    two engines order each stream alike, but may interleave the two differently within a step
+    (doc/semantics.md, "What is compared"). *)
+
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while
     [outcome] is [Running]. *)
