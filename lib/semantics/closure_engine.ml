@@ -252,6 +252,37 @@ let tick st =
 
 let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
+(* [binary]'s num result, for the fused forms below: rounded to single (R-2.13-a), an integer
+   of at most 24 bits as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
+let single_num st ~at x =
+  if is_small_integer x then V.Num x
+  else
+    let y = Int32.float_of_bits (Int32.bits_of_float x) in
+    if Float.is_finite y then V.Num y else fail st ~at "ERR_OVERFLOW" [@@inline]
+
+(* [condition]'s comparison of two nums (§3.12). *)
+let compare_nums (op : Arith.binary) (p : float) (q : float) =
+  match op with
+  | Num_lt -> p < q
+  | Num_le -> p <= q
+  | Num_gt -> p > q
+  | Num_ge -> p >= q
+  | Equal -> p = q
+  | _ -> not (p = q) [@@inline]
+
+let is_num_comparison = function
+  | Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal -> true
+  | _ -> false
+
+(* An argument [own + k] or [own - k]: an own slot of the caller and a num literal (the step of
+   a recursion), computed in the call's closure, as [binary_literal] computes it. *)
+let own_step own (source : Closure_call.source) =
+  match source with
+  | Closure_call.Value { e = Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ },
+                                     { e = Literal (V.Num q as v); _ }); _ } when own i ->
+      Some (i, op, v, q)
+  | _ -> None
+
 (* ------------------------------------------------------------------ the controller *)
 
 (* What the world and the motion did since last asked, as the machine reports it after each
@@ -991,6 +1022,23 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
     | _ -> Array.make size v_false [@@inline] in
   match args with
   | [||] -> fun a -> quick a (fresh ()) 0
+  | [| _ |] when size = 1 && own_step (fun i -> local_access caller i = Own) sources.(0) <> None ->
+      let i, op, v, q = Option.get (own_step (fun i -> local_access caller i = Own) sources.(0)) in
+      let w0 = whats.(0) in
+      let slow u = check st ~at (Arith.binary op u v) in
+      let sub = op = Arith.Num_sub in
+      fun a -> (
+        match a.store.(i) with
+        | V.Num p ->
+            (* a num: 32 bytes (value_bytes), its copy itself *)
+            let v = single_num st ~at (if sub then p -. q else p +. q) in
+            if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+            quick a [| v |] 32
+        | u ->
+            let v = slow u in
+            let b = value_bytes v in
+            if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
+            quick a [| copy v |] b)
   | [| f0 |] -> let w0 = whats.(0) in fun a ->
       let v = f0 a in
       let b = value_bytes v in
@@ -1664,6 +1712,23 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
       | Return (Some e) ->
           let f = expr st r ~at:s.sat e in
           fun a -> tick st; at_statement st a; f a
+      | Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
+                    { s = Return (Some e); _ })
+        when is_num_comparison op && local_access r i = Own -> (
+          (* IF own < k RETURN e; (the end of a recursion): the comparison in the statement's
+             closure, as [condition] makes it, and an own slot returned in place *)
+          let at = s.sat and rest = from (k + 1) in
+          let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+          match e.e with
+          | Read (Whole (Local j)) when local_access r j = Own ->
+              fun a -> tick st; at_statement st a;
+                if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow u) then a.store.(j)
+                else rest a
+          | _ ->
+              let f = expr st r ~at e in
+              fun a -> tick st; at_statement st a;
+                if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow u) then f a
+                else rest a)
       | Compact_if (c, { s = Return (Some e); _ }) ->
           let c = condition st r ~at:s.sat c and f = expr st r ~at:s.sat e and rest = from (k + 1) in
           fun a -> tick st; at_statement st a; if c a then f a else rest a
