@@ -25,6 +25,7 @@ let () =
       Test_debugger.suite;
       Test_engines.suite;
       Test_closure_call.suite;
+      Test_closure_fused.suite;
       Test_engines_kept.suite;
       Test_tasks.suite;
       Test_observation.suite;

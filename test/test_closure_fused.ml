@@ -1,0 +1,59 @@
+(* The closure engine's fused forms for recursive functions (lib/semantics/closure_engine.ml,
+   [valued_body] and [direct_call]; doc/semantics.md, "The second engine"): a guard [IF own < k
+   RETURN e;] compared in its statement's closure, and an argument [own + k] or [own - k]
+   computed in the call's closure. They take the direct path only: a run taking them must be
+   the run the general path makes (observed, schema rapid-sem/2), at every unit of fuel, and
+   the machine's run. The program is the conformance case that states what the manual
+   requires of them (each comparison at its boundary, single-precision steps, ERR_OVERFLOW). *)
+
+let case = "../spec/05-run/04-recursive-function-guards.mod"
+
+let text () =
+  let ic = open_in_bin case in
+  Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let with_machine () =
+  let program = Test_engines.load_text "guards" (text ()) in
+  let events, outcome = Test_engines.agree program in
+  Alcotest.(check string) "ended" "ended" (Test_engines.outcome_text outcome);
+  let output = List.filter_map (function Rapid_semantics.Machine.Output s -> Some s | _ -> None) events in
+  Alcotest.(check int) "every line written" 12 (List.length output)
+
+let at_every_fuel () =
+  let program = Test_closure_call.load "guards" (text ()) in
+  Alcotest.(check string) "the whole run" "ended" (Test_closure_call.same program "main");
+  let used = match Rapid_semantics.Closure_engine.run ~all_events:false program ~entry:"main" with
+    | Ok r -> r.fuel_used
+    | Error m -> Alcotest.fail m in
+  for fuel = 1 to used do ignore (Test_closure_call.same ~fuel program "main") done
+
+(* §1.4: the memory budget runs out at the copy of a fused argument, and at the activation it
+   goes to, where the general path stops: budgets just below the least that lets the run end
+   are tried, in steps that meet each place in a call. *)
+let memory () =
+  let program = Test_closure_call.load "guards" (text ()) in
+  let limits max_memory = { Rapid_semantics.Machine.default_limits with max_memory } in
+  let ends m = Test_closure_call.same ~limits:(limits m) program "main" = "ended" in
+  let rec least lo hi = if lo >= hi then lo else let mid = (lo + hi) / 2 in
+      if ends mid then least lo mid else least (mid + 1) hi in
+  let enough = least 0 100_000_000 in
+  let contains s w =
+    let n = String.length w in
+    let rec go i = i + n <= String.length s && (String.sub s i n = w || go (i + 1)) in
+    go 0 in
+  let copies = ref 0 and calls = ref 0 in
+  let m = ref (enough - 1) in
+  while !m > enough - 4_000 do
+    let o = Test_closure_call.same ~limits:(limits !m) program "main" in
+    if contains o "the copy for the parameter" then incr copies;
+    if contains o "the call of" then incr calls;
+    m := !m - 7
+  done;
+  Alcotest.(check bool) (Printf.sprintf "both kinds of memory exhaustion met (%d, %d)" !copies !calls) true
+    (!copies > 0 && !calls > 0)
+
+let suite =
+  ( "closure_fused",
+    [ Alcotest.test_case "the fused forms against the machine" `Quick with_machine;
+      Alcotest.test_case "the fused forms against the general path, at every unit of fuel" `Quick at_every_fuel;
+      Alcotest.test_case "the fused forms within the memory budget" `Quick memory ] )
