@@ -1700,6 +1700,8 @@ let compile_routine st k =
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
     c_value = valued_body st r ~gotos }
 
+let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
+
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ~all_events ~emit ~world ~motion (program : program) =
   let numbers = Hashtbl.create 128 in
@@ -1722,7 +1724,9 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
-  st.compiled <- Array.init (Array.length program.routines) (fun k -> lazy (compile_routine st k));
+  (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
+  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st.prim_ctx <- {
     (* The pendant shows a control character as its character code (Format.display). *)
