@@ -17,6 +17,13 @@ type summary = {
   cpu_seconds : float;
 }
 
+(* A campaign's process keeps a large heap that does not change (the installed environment,
+   checked and lowered once) beside a stream of short-lived programs: major collections that
+   mark the former again and again, and minor ones that promote what a program still holds,
+   were a quarter of the time (bench/README.md, "Fuzzing throughput"). *)
+let tune_gc () =
+  Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20; space_overhead = 400; max_overhead = 1_000_000 }
+
 let program_seed ~seed i = Random.State.make [| seed; i |]
 
 (* A refusal's message without its place: a smaller program refused for another reason (a BREAK

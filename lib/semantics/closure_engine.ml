@@ -1700,12 +1700,24 @@ let compile_routine st k =
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
     c_value = valued_body st r ~gotos }
 
+(* The ERR_ names by upper-case name, only read: the table of the last list (the installed
+   environment's, the same list physically for every program) is kept. *)
+let last_numbers : ((string * int) list * (string, int) Hashtbl.t) option ref = ref None
+
+let error_number_table error_numbers =
+  match !last_numbers with
+  | Some (l, t) when l == error_numbers -> t
+  | _ ->
+      let numbers = Hashtbl.create 128 in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      last_numbers := Some (error_numbers, numbers);
+      numbers
+
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ~all_events ~emit ~world ~motion (program : program) =
-  let numbers = Hashtbl.create 128 in
-  List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
+  let numbers = error_number_table program.error_numbers in
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;

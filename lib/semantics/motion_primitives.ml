@@ -110,7 +110,7 @@ let emit st e = st.fresh <- e :: st.fresh
 
 (* ------------------------------------------------------------------ arguments *)
 
-let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+let same = Rapid_typing.Types.same_name  (* without lowered copies: every call site asks [modelled] *)
 
 let arg = named_argument
 
