@@ -24,6 +24,8 @@ let () =
   Arg.parse [ ("--count", Arg.Set_int count, "N programs (1000)"); ("--seed", Arg.Set_int seed, "S the seed (1)") ]
     (fun _ -> raise (Arg.Bad "no positional arguments")) "fuzz_bench [--count N] [--seed S]";
   let n = !count in
+  (* the garbage collector as rapid-sem fuzz sets it *)
+  Rapid_fuzz.Campaign.tune_gc ();
   Printf.printf "Fuzzing throughput, %d programs, seed %d, one core\n" n !seed;
   (* The first load elaborates whatever is shared between programs: not a program's cost. *)
   ignore (F.check_program "MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n");
