@@ -3,6 +3,7 @@ let () =
     [ Test_lexer.suite;
       Test_parser.suite;
       Test_printer.suite;
+      Test_ast_erase.suite;
       Test_roundtrip.suite;
       Test_fuzz.suite;
       Test_cli.suite;
