@@ -27,6 +27,7 @@ let () =
       Test_engines.suite;
       Test_closure_call.suite;
       Test_engines_kept.suite;
+      Test_start_sharing.suite;
       Test_tasks.suite;
       Test_observation.suite;
       Test_realprog2.suite;
