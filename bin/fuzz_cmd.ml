@@ -51,6 +51,7 @@ let cmd =
                    (String.concat ", " (List.map fst names)))) in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
   let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores) (mutants, hostile_every) coverage =
+    C.tune_gc ();
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
     let external_check = Option.map (fun template ->

@@ -3,6 +3,7 @@ let () =
     [ Test_lexer.suite;
       Test_parser.suite;
       Test_printer.suite;
+      Test_ast_erase.suite;
       Test_roundtrip.suite;
       Test_fuzz.suite;
       Test_cli.suite;
@@ -27,6 +28,7 @@ let () =
       Test_closure_call.suite;
       Test_closure_fused.suite;
       Test_engines_kept.suite;
+      Test_start_sharing.suite;
       Test_tasks.suite;
       Test_observation.suite;
       Test_realprog2.suite;

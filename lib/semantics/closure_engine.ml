@@ -1765,10 +1765,24 @@ let compile_routine st k =
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
     c_value = valued_body st r ~gotos }
 
+(* The ERR_ names by upper-case name, only read: the table of the last list (the installed
+   environment's, the same list physically for every program) is kept. *)
+let last_numbers : ((string * int) list * (string, int) Hashtbl.t) option ref = ref None
+
+let error_number_table error_numbers =
+  match !last_numbers with
+  | Some (l, t) when l == error_numbers -> t
+  | _ ->
+      let numbers = Hashtbl.create 128 in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      last_numbers := Some (error_numbers, numbers);
+      numbers
+
+let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
+
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ~all_events ~emit ~world ~motion (program : program) =
-  let numbers = Hashtbl.create 128 in
-  List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
+  let numbers = error_number_table program.error_numbers in
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;
@@ -1787,7 +1801,9 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
-  st.compiled <- Array.init (Array.length program.routines) (fun k -> lazy (compile_routine st k));
+  (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
+  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st.prim_ctx <- {
     (* The pendant shows a control character as its character code (Format.display). *)

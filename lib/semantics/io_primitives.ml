@@ -3,7 +3,7 @@ module W = Rapid_controller.World
 module C = Rapid_controller.Io_config
 open Primitive
 
-let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+let same = Rapid_typing.Types.same_name  (* without lowered copies: every call site asks [modelled] *)
 
 let arg = named_argument
 

@@ -268,14 +268,57 @@ let rec static_loc cfg (p : Ir.place) =
 
 (* ------------------------------------------------------------------ start *)
 
-(* Routines by lower-case name, built once: a late-bound call looks its name up in O(1). *)
+(* Routines by lower-case name, built once: a late-bound call looks its name up in O(1). The
+   table is only read, so the runs of one program share it: the last one built is kept, keyed
+   by the program's routine array compared physically (a fuzzer runs each program three times). *)
+let last_by_name : (Ir.routine array * (string, int list) Hashtbl.t) option ref = ref None
+
+(* The leading routines that a program shares physically with the one before it (the installed
+   ones, lowered once and numbered first for every task: Lower), with their table: the routine
+   array they were found in, how many, the table. A program that starts with the same routines
+   starts from a copy of it. *)
+let shared_by_name : (Ir.routine array * int * (string, int list) Hashtbl.t) option ref = ref None
+
+(* Routines [from] to [until - 1], in increasing order, each index after those of its name
+   already there: a name's list is in increasing order. *)
+let add_routines t (routines : Ir.routine array) ~from ~until =
+  for i = from to until - 1 do
+    let key = String.lowercase_ascii routines.(i).name in
+    Hashtbl.replace t key (Option.value (Hashtbl.find_opt t key) ~default:[] @ [ i ])
+  done
+
+let common_prefix (a : Ir.routine array) (b : Ir.routine array) =
+  let n = min (Array.length a) (Array.length b) in
+  let rec go i = if i < n && a.(i) == b.(i) then go (i + 1) else i in
+  go 0
+
 let routines_by_name (program : Ir.program) =
-  let t = Hashtbl.create (2 * Array.length program.routines + 1) in
-  for i = Array.length program.routines - 1 downto 0 do
-    let key = String.lowercase_ascii program.routines.(i).name in
-    Hashtbl.replace t key (i :: Option.value (Hashtbl.find_opt t key) ~default:[])
-  done;
-  t
+  let routines = program.routines in
+  let count = Array.length routines in
+  match !last_by_name with
+  | Some (r, t) when r == routines -> t
+  | previous ->
+      let t =
+        match !shared_by_name with
+        | Some (a, n, shared) when n <= count && common_prefix a routines >= n ->
+            let t = Hashtbl.copy shared in
+            add_routines t routines ~from:n ~until:count;
+            t
+        | _ ->
+            let t = Hashtbl.create (2 * count + 1) in
+            add_routines t routines ~from:0 ~until:count;
+            (match previous with
+             | Some (r, _) ->
+                 let n = common_prefix r routines in
+                 if n > 0 then begin
+                   let shared = Hashtbl.create (2 * n + 1) in
+                   add_routines shared routines ~from:0 ~until:n;
+                   shared_by_name := Some (routines, n, shared)
+                 end
+             | None -> ());
+            t in
+      last_by_name := Some (routines, t);
+      t
 
 (* [settle], defined with the step below: the first configuration is settled too. *)
 let settle_ref : (config -> unit) ref = ref (fun _ -> ())
@@ -339,14 +382,19 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
         (* §2.21: module data first takes its type's initial value, within the memory budget. *)
         let memory = ref 0 in
         let too_big = ref None in
-        let globals = Array.map (fun (g : Ir.global) ->
-            match g.g_init with
-            | Init_default shape when !too_big = None ->
-                let bytes = V.shape_bytes shape in
-                if bytes > limits.max_memory - !memory then (too_big := Some g; fresh_loc (V.Bool false))
-                else (memory := !memory + bytes; fresh_loc (V.default_of shape))
-            | _ -> fresh_loc (V.Bool false))
-            program.globals in
+        (* Filled in place rather than by Array.map: an array of hundreds made from a fresh
+           first element forces a minor collection (the runtime's caml_make_vect), at every
+           start. *)
+        let globals = Array.make (Array.length program.globals) no_loc in
+        Array.iteri (fun i (g : Ir.global) ->
+            globals.(i) <-
+              (match g.g_init with
+               | Init_default shape when !too_big = None ->
+                   let bytes = V.shape_bytes shape in
+                   if bytes > limits.max_memory - !memory then (too_big := Some g; fresh_loc (V.Bool false))
+                   else (memory := !memory + bytes; fresh_loc (V.default_of shape))
+               | _ -> fresh_loc (V.Bool false)))
+          program.globals;
         (* §2.21: module data is static, initialised when its module is loaded, before the task
            runs: constant and literal expressions (§3.2, §3.3), evaluated here, not as steps. *)
         let rec eval (e : Ir.expr) : (V.t, string) result =

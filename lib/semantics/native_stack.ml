@@ -76,5 +76,10 @@ let native_stack_bytes () =
    (bench/README.md, "The closure engine"), doubled. *)
 let bytes_per_nest = 26
 
-let budget () = native_stack_bytes () / bytes_per_nest
+(* Read once per process: every run of the closure engine asks (a fuzzer's thousands), and the
+   limit of a running process does not change unless it changes it itself, which rapid-sem never
+   does. *)
+let read_budget = lazy (native_stack_bytes () / bytes_per_nest)
+
+let budget () = Lazy.force read_budget
 

@@ -14,4 +14,4 @@ val bytes_per_nest : int
 (** Native stack bytes budgeted per unit of nesting: 26, twice the 11 to 13 measured. *)
 
 val budget : unit -> int
-(** [native_stack_bytes () / bytes_per_nest]. *)
+(** [native_stack_bytes () / bytes_per_nest], read the first time it is asked in the process. *)

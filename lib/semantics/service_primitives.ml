@@ -4,7 +4,7 @@ module S = Rapid_controller.Services
 module K = Rapid_controller.Sockets
 open Primitive
 
-let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+let same = Rapid_typing.Types.same_name  (* without lowered copies: every call site asks [modelled] *)
 
 let arg = named_argument
 

@@ -35,7 +35,8 @@ let installed ?(io = Io.empty) () =
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)
 let connect_signals (io : Io.t) (program : Ir.program) =
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  (* without lowered copies: every installed data object is compared, for every program *)
+  let same = Rapid_typing.Types.same_name in
   let globals = Array.map (fun (g : Ir.global) ->
       if not (same g.g_module signal_module_name) then g
       else

@@ -6,7 +6,7 @@ module V = Value
 module W = Rapid_controller.World
 open Primitive
 
-let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+let same = Rapid_typing.Types.same_name  (* without lowered copies: every call site asks [modelled] *)
 
 (* R-14-e: the instructions that move the robot or act on its path; in a task that is not the
    motion task they raise ERR_NOT_MOVETASK. *)

@@ -424,11 +424,16 @@ let lexical_hint message =
 (* The tokens before the error that the local hints look back at: a statement's worth. *)
 let window = 512
 
+(* What the arrays of tokens are made with before they are filled: an array of hundreds made
+   from a fresh element forces a minor collection (the runtime's caml_make_vect), and a hint is
+   sought for every syntax error a fuzzer's mutants meet. *)
+let no_token = { token = EOF; start = 0; stop = 0 }
+
 let hint file (decoded : Decode.t) ~installed ~error_start =
   let lexer = Lexer.create ~installed file decoded in
   let sc = new_scanner file in
   (* The last [window] tokens before the error, in a ring. *)
-  let ring = Array.make window { token = EOF; start = 0; stop = 0 } in
+  let ring = Array.make window no_token in
   let before = ref 0 in
   let after = ref [] and error = ref None in
   (try
@@ -452,9 +457,11 @@ let hint file (decoded : Decode.t) ~installed ~error_start =
   | Some e ->
       let kept = min !before window in
       let first = !before - kept in
-      let tokens = Array.concat [
-          Array.init kept (fun i -> ring.((first + i) mod window)); [| e |];
-          Array.of_list (List.rev !after) ] in
+      let after = Array.of_list (List.rev !after) in
+      let tokens = Array.make (kept + 1 + Array.length after) no_token in
+      for i = 0 to kept - 1 do tokens.(i) <- ring.((first + i) mod window) done;
+      tokens.(kept) <- e;
+      Array.blit after 0 tokens (kept + 1) (Array.length after);
       let cx = { file; text = decoded.text; tokens; error = kept; from_start = first = 0;
                  stack = sc.stack; compact = sc.compact } in
       match find cx with
