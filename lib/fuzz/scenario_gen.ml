@@ -57,7 +57,7 @@ let unmodelled rs =
 let time_limit rs =
   let max_time = pick rs [ 0.05; 0.2; 0.5 ] in
   let io, wait =
-    match Random.State.int rs 5 with
+    match Random.State.int rs 6 with
     | 0 -> (stimulus [], [ "WHILE gn1 < 1000000 DO"; ])
     | 1 -> (stimulus [], [ Printf.sprintf "WaitTime %s;" (pick rs [ "1"; "10" ]) ])
     | 2 -> (stimulus ~changes:false (if chance rs 0.5 then [] else [ (30., "di1 1") ]), [ "WaitDI di1, 1;" ])
@@ -197,7 +197,7 @@ let tasks rs =
   let a_steps = ref [] and b_steps = ref [] in
   let add_a l = a_steps := !a_steps @ l and add_b l = b_steps := !b_steps @ l in
   for _ = 1 to int_in rs 1 3 do
-    match Random.State.int rs 5 with
+    match Random.State.int rs 6 with
     | 0 ->
         add_a [ Printf.sprintf "WaitTime %s;" (pick rs [ "0.1"; "0.5" ]); "fzflag := fzflag + 1;" ];
         add_b [ Printf.sprintf "WaitUntil fzflag > %d%s;" (int_in rs 0 1) (pick rs [ ""; " \\MaxTime:=1"; " \\PollRate:=0.05" ]);
@@ -206,6 +206,9 @@ let tasks rs =
     | 2 -> add_a [ "WaitSyncTask fzmeet, fzboth \\TimeOut:=0.5;" ]
     | 3 -> add_a [ "WaitTestAndSet fzlock;"; "TPWrite \"A holds\";"; "WaitTime 0.1;"; "fzlock := FALSE;" ];
            add_b [ "WaitTestAndSet fzlock;"; "TPWrite \"B holds\";"; "fzlock := FALSE;" ]
+    | 4 ->
+        (* a semaphore never given back: the second task waits for what no task can change *)
+        add_a [ "WaitTestAndSet fzlock;"; "TPWrite \"A keeps\";" ]; add_b [ "WaitTestAndSet fzlock;"; "TPWrite \"B keeps\";" ]
     | _ -> add_b [ Printf.sprintf "WaitTime %s;" (pick rs [ "0.05"; "0.2" ]); "fzflag := fzflag + 1;" ];
            add_a [ "WaitUntil fzflag > 0 \\MaxTime:=0.5;" ]
   done;
@@ -224,7 +227,7 @@ let tasks rs =
 let table = [
   ("unknown", unknown); ("unmodelled", unmodelled); ("time-limit", time_limit); ("memory", memory);
   ("call-depth", call_depth); ("connect-parameter", connect_parameter); ("async", async); ("async", async);
-  ("user-level", user_level); ("user-level", user_level); ("tasks", tasks);
+  ("user-level", user_level); ("user-level", user_level); ("user-level", user_level); ("tasks", tasks);
 ]
 
 let kinds = List.sort_uniq compare (List.map fst table)
