@@ -197,7 +197,7 @@ let scenarios_reach_rules () =
   Alcotest.(check int) "failures" 0 (List.length s.failures);
   List.iter (fun rule ->
       Alcotest.(check bool) (rule ^ " applied") true (List.mem_assoc rule s.rules))
-    [ "connect-not-variable"; "memory-exhausted"; "call-not-modelled"; "call-stubbed"; "place-unknown";
+    [ "argument-pass-on-duplicate"; "connect-not-variable"; "memory-exhausted"; "call-not-modelled"; "call-stubbed"; "place-unknown";
       "call-unknown"; "call-unknown-function"; "call-depth-exceeded"; "time-limit"; "wait-yield";
       "wait-time-limit"; "wait-deadlock"; "async-error"; "async-error-unhandled"; "async-retry-resume";
       "async-trynext-resume"; "async-exit"; "async-handler-leave"; "async-error-at-move";

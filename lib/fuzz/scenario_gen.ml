@@ -93,6 +93,24 @@ let call_depth rs =
   one ~options:{ Fuzz_case.default_options with max_call_depth = Some limit } ~data:[ "VAR num gn1;" ]
     [ r; proc ?error "main" [ Printf.sprintf "down %d;" n; "TPWrite \"depth \" \\Num:=gn1;" ] ]
 
+(* ---------------------------------------------------------------- conditional arguments *)
+
+(* §3.11, §5.2: conditional arguments for two alternatives of one optional parameter, each
+   present when the caller's optional parameter is: both present is ERR_ARGDUPCND
+   (argument-pass-on-duplicate), which the programs of Program_gen reach a few times in a
+   hundred thousand. *)
+let conditional rs =
+  let value = chance rs 0.5 in
+  let params = if value then "\\num a | num b" else "\\switch a | switch b" in
+  let check = proc ~params "alt"
+      [ "IF Present(a) TPWrite \"a\";"; "IF Present(b) TPWrite \"b\";" ] in
+  let pass = proc ~params:(if value then "\\num x, \\num y" else "\\switch x, \\switch y") "pass" [ "alt \\a?x \\b?y;" ] in
+  let argument p = if value then Printf.sprintf " \\%s:=%d" p (int_in rs 1 9) else " \\" ^ p in
+  let call () =
+    Printf.sprintf "pass%s%s;" (if chance rs 0.6 then argument "x" else "") (if chance rs 0.6 then argument "y" else "") in
+  let error = if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ]) else None in
+  one [ check; pass; proc ?error "main" (List.init (int_in rs 1 4) (fun _ -> call ()) @ [ "TPWrite \"end\";" ]) ]
+
 (* ---------------------------------------------------------------- CONNECT *)
 
 (* §4.15: the target of CONNECT is a variable of the module; through a VAR or INOUT parameter
@@ -226,7 +244,7 @@ let tasks rs =
 
 let table = [
   ("unknown", unknown); ("unmodelled", unmodelled); ("time-limit", time_limit); ("memory", memory);
-  ("call-depth", call_depth); ("connect-parameter", connect_parameter); ("async", async); ("async", async);
+  ("call-depth", call_depth); ("conditional", conditional); ("connect-parameter", connect_parameter); ("async", async); ("async", async);
   ("user-level", user_level); ("user-level", user_level); ("user-level", user_level); ("tasks", tasks);
 ]
 
