@@ -186,13 +186,21 @@ let user_level rs =
   let inner = proc "inner" ~error:[ "TPWrite \"inner handler \" \\Num:=ERRNO;"; "RaiseToUser" ^ switch ^ number ^ ";" ]
       ?undo:(if chance rs 0.5 then Some [ "TPWrite \"inner undo\";" ] else None)
       [ "TPWrite \"inner\";"; raise_; "TPWrite \"inner goes on\";" ] in
+  (* a function below the user level, whose error the user routine's RETRY evaluates again
+     (spec/07-user-level/03-function-error-constant) *)
+  let scaled = { header = "FUNC num scaled(num x)"; data = [];
+                 body = lines [ "IF gdiv = 0 RAISE 5;"; "RETURN x * gdiv;" ];
+                 error = Some ("ERROR", lines [ "RaiseToUser" ^ switch ^ number ^ ";" ]); undo = None; footer = "ENDFUNC" } in
   let outer = proc "outer"
       ?error:(if chance rs 0.3 then Some [ "TPWrite \"outer handler\";"; "RAISE;" ] else None)
       ?undo:(if chance rs 0.4 then Some [ "TPWrite \"outer undo\";" ] else None)
-      [ "inner;"; "TPWrite \"outer goes on\";" ] in
+      ((if chance rs 0.3 then [ "gn1 := scaled(3) + 1;" ] else [])
+       @ [ (if chance rs 0.85 then "inner;" else "RAISE 56;"); "TPWrite \"outer goes on\";" ]) in
   let user_error =
     if chance rs 0.15 then None
-    else Some ([ "TPWrite \"user handler \" \\Num:=ERRNO;"; "gdiv := 2;"; "gerr := 5;" ]
+    else Some ([ "TPWrite \"user handler \" \\Num:=ERRNO;" ]
+               (* without the repair, RETRY meets the error again until the retry limit *)
+               @ (if chance rs 0.8 then [ "gdiv := 2;"; "gerr := 5;" ] else [])
                @ handler_ending rs [ "RETRY;"; "TRYNEXT;"; "RETRY;"; "TRYNEXT;"; "RETURN;"; "RAISE;"; "" ]) in
   let misplaced = if chance rs 0.1 then [ "% \"RaiseToUser\" % \\BreakOff;" ] else [] in
   let user = proc ?error:user_error "work" (("TPWrite \"work\";" :: misplaced) @ [ "outer;"; "TPWrite \"work goes on\";" ]) in
@@ -200,8 +208,13 @@ let user_level rs =
   let below = chance rs 0.1 in
   let main_error = if chance rs 0.5 then Some [ "TPWrite \"main handler \" \\Num:=ERRNO;"; "TRYNEXT;" ] else None in
   let main = proc ?error:main_error "main" [ "work;"; "TPWrite \"main done\";" ] in
-  let lib = { name = "fzlib (NOSTEPIN)"; module_data = [];
-              routines = [ outer; inner ] @ (if below then [ user; main ] else []) } in
+  (* an error recovery point above the user level: the long jump from below it is reported at
+     the call (R-7.3-o) *)
+  let main = if chance rs 0.2 then { main with error = Some ("ERROR (56, LONG_JMP_ALL_ERR)", lines [ "TPWrite \"recovery point\";"; "TRYNEXT;" ]) } else main in
+  (* a NOVIEW module is below the user level too (R-9.4-a) *)
+  let attribute = if chance rs 0.2 then "NOVIEW" else "NOSTEPIN" in
+  let lib = { name = Printf.sprintf "fzlib (%s)" attribute; module_data = [];
+              routines = [ outer; inner; scaled ] @ (if below then [ user; main ] else []) } in
   let app = { name = "fuzz"; module_data = data; routines = (if below then [] else [ user; main ]) } in
   { Fuzz_case.tasks = [ { task_name = "T_ROB1"; modules = [ app; lib ] } ];
     io_text = stimulus []; options = Fuzz_case.default_options; schedule = None }
