@@ -21,7 +21,10 @@ let bounded_campaign () =
       "call-enter"; "argument-alias"; "test-match"; "for-step"; "while-again"; "function-no-return";
       (* the controller, and the forms added for the rules one statement rarely reaches *)
       "interrupt-serve"; "trap-end"; "execute-placeholder"; "argument-reference"; "index-not-integer";
-      "call-by-var-mismatch"; "call-late-mismatch"; "connect-inomax"; "wait-start" ];
+      "call-by-var-mismatch"; "call-late-mismatch"; "connect-inomax"; "wait-start";
+      (* and its scenarios, one program in ten: the user level, asynchronous errors, two tasks,
+         a memory budget *)
+      "raise-to-user-continue"; "async-error"; "wait-yield"; "memory-exhausted" ];
   (* A conditional argument [\p ? x] (§3.11) is bound by settling, within the step that enters
      the call (doc/semantics.md, "Settling"): no rule of its own to count. The campaign's
      programs have them, and the campaign runs them (call-enter above). *)
