@@ -36,21 +36,21 @@ let handler_ending rs endings = match pick rs endings with "" -> [] | e -> [ e ]
    ERR_REFUNKDAT, ERR_REFUNKPRC or ERR_REFUNKFUN (doc/semantics.md, place-unknown,
    call-unknown, call-unknown-function). *)
 let unknown rs =
-  let uses = [ "gn1 := fzunknown + 1;"; "fzunknownproc 1;"; "gn1 := fzunknownfun(2);"; "TPWrite \"u \" \\Num:=fzunknown;";
+  let uses = [ "zn1 := fzunknown + 1;"; "fzunknownproc 1;"; "zn1 := fzunknownfun(2);"; "TPWrite \"u \" \\Num:=fzunknown;";
                "fzunknown := 3;" ] in
-  let body = List.init (int_in rs 1 3) (fun _ -> pick rs uses) @ [ "TPWrite \"end \" \\Num:=gn1;" ] in
+  let body = List.init (int_in rs 1 3) (fun _ -> pick rs uses) @ [ "TPWrite \"end \" \\Num:=zn1;" ] in
   let error = if chance rs 0.7 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETRY;"; "" ]) else None in
-  one ~options:{ Fuzz_case.default_options with allow_unknown = true } ~data:[ "VAR num gn1 := 1;" ]
+  one ~options:{ Fuzz_case.default_options with allow_unknown = true } ~data:[ "VAR num zn1 := 1;" ]
     [ proc ?error "main" body ]
 
 (* Installed routines whose behaviour rapid-sem does not model (the stub cases of spec/11-installed):
    the run ends there, or under --stub-unmodelled they run as no-ops (R-13-i). *)
 let unmodelled rs =
-  let calls = [ "TPReadFK gn1, \"Go on?\", \"Yes\", \"No\", \"\", \"\", \"\";"; "gn1 := OpMode();";
-                "gb1 := IsSysId(\"6400-1234\");"; "gs1 := Type(gn1);" ] in
-  let body = List.concat (List.init (int_in rs 1 3) (fun _ -> [ pick rs calls; "TPWrite \"n \" \\Num:=gn1;" ])) in
+  let calls = [ "TPReadFK zn1, \"Go on?\", \"Yes\", \"No\", \"\", \"\", \"\";"; "zn1 := OpMode();";
+                "zb1 := IsSysId(\"6400-1234\");"; "zs1 := Type(zn1);" ] in
+  let body = List.concat (List.init (int_in rs 1 3) (fun _ -> [ pick rs calls; "TPWrite \"n \" \\Num:=zn1;" ])) in
   one ~options:{ Fuzz_case.default_options with stub_unmodelled = chance rs 0.6 }
-    ~data:[ "VAR num gn1 := 7;"; "VAR bool gb1;"; "VAR string gs1;" ] [ proc "main" body ]
+    ~data:[ "VAR num zn1 := 7;"; "VAR bool zb1;"; "VAR string zs1;" ] [ proc "main" body ]
 
 (* --max-time with what outlasts it: a long loop (time-limit), a wait whose next event lies
    beyond it (wait-time-limit), a wait nothing can end (wait-deadlock), a WaitUntil polling. *)
@@ -58,17 +58,17 @@ let time_limit rs =
   let max_time = pick rs [ 0.05; 0.2; 0.5 ] in
   let io, wait =
     match Random.State.int rs 6 with
-    | 0 -> (stimulus [], [ "WHILE gn1 < 1000000 DO"; ])
+    | 0 -> (stimulus [], [ "WHILE zn1 < 1000000 DO"; ])
     | 1 -> (stimulus [], [ Printf.sprintf "WaitTime %s;" (pick rs [ "1"; "10" ]) ])
     | 2 -> (stimulus ~changes:false (if chance rs 0.5 then [] else [ (30., "di1 1") ]), [ "WaitDI di1, 1;" ])
-    | 3 -> (stimulus [], [ Printf.sprintf "WaitUntil gn1 < 0%s;" (pick rs [ ""; " \\PollRate:=0.05"; " \\MaxTime:=5" ]) ])
+    | 3 -> (stimulus [], [ Printf.sprintf "WaitUntil zn1 < 0%s;" (pick rs [ ""; " \\PollRate:=0.05"; " \\MaxTime:=5" ]) ])
     | _ -> (stimulus [], [ "WaitTime 0.01;"; "WaitTime 0.02;" ]) in
   let body =
     match wait with
-    | [ "WHILE gn1 < 1000000 DO" ] -> [ Compound ([ ("WHILE gn1 < 1000000 DO", lines [ "Incr gn1;" ]) ], "ENDWHILE") ]
+    | [ "WHILE zn1 < 1000000 DO" ] -> [ Compound ([ ("WHILE zn1 < 1000000 DO", lines [ "Incr zn1;" ]) ], "ENDWHILE") ]
     | l -> lines l in
-  let main = { (proc "main" []) with body = Line "TPWrite \"start\";" :: body @ [ Line "TPWrite \"end \" \\Num:=gn1;" ] } in
-  one ~options:{ Fuzz_case.default_options with max_time = Some max_time } ~io ~data:[ "VAR num gn1;" ] [ main ]
+  let main = { (proc "main" []) with body = Line "TPWrite \"start\";" :: body @ [ Line "TPWrite \"end \" \\Num:=zn1;" ] } in
+  one ~options:{ Fuzz_case.default_options with max_time = Some max_time } ~io ~data:[ "VAR num zn1;" ] [ main ]
 
 (* --max-memory with routine data that may not fit (Value.bytes: a num 32 bytes, an element 8
    more): memory-exhausted at the call, or at a module declaration before the first step. *)
@@ -88,10 +88,10 @@ let memory rs =
 let call_depth rs =
   let limit = int_in rs 3 12 and n = int_in rs 1 15 in
   let r = { (proc ~params:"num k" "down" []) with
-            body = [ Compound ([ ("IF k > 0 THEN", lines [ "down k - 1;" ]) ], "ENDIF"); Line "Incr gn1;" ] } in
+            body = [ Compound ([ ("IF k > 0 THEN", lines [ "down k - 1;" ]) ], "ENDIF"); Line "Incr zn1;" ] } in
   let error = if chance rs 0.3 then Some [ "TPWrite \"handler\";"; "TRYNEXT;" ] else None in
-  one ~options:{ Fuzz_case.default_options with max_call_depth = Some limit } ~data:[ "VAR num gn1;" ]
-    [ r; proc ?error "main" [ Printf.sprintf "down %d;" n; "TPWrite \"depth \" \\Num:=gn1;" ] ]
+  one ~options:{ Fuzz_case.default_options with max_call_depth = Some limit } ~data:[ "VAR num zn1;" ]
+    [ r; proc ?error "main" [ Printf.sprintf "down %d;" n; "TPWrite \"depth \" \\Num:=zn1;" ] ]
 
 (* ---------------------------------------------------------------- conditional arguments *)
 
@@ -117,12 +117,12 @@ let conditional rs =
    it may be routine data or a persistent: ERR_CNTNOTVAR (connect-not-variable). *)
 let connect_parameter rs =
   let mode = pick rs [ "VAR"; "INOUT" ] in
-  let target = pick rs ([ "gint"; "lint" ] @ if mode = "INOUT" then [ "pint" ] else []) in
+  let target = pick rs ([ "zint"; "lint" ] @ if mode = "INOUT" then [ "pint" ] else []) in
   let error = if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ]) else None in
-  let conn = proc ?error ~params:(mode ^ " intnum x") "conn" [ "CONNECT x WITH fztrap;"; "ITimer \\Single, 0.01, x;"; "WaitTime 0.05;" ] in
-  one ~data:[ "VAR intnum gint;"; "PERS intnum pint := 0;" ]
-    [ conn; trap "fztrap" [ "TPWrite \"trap \" \\Num:=INTNO;" ];
-      proc ~data:[ "VAR intnum lint;" ] "main" [ Printf.sprintf "conn %s;" target; "IDelete gint;"; "TPWrite \"end\";" ] ]
+  let conn = proc ?error ~params:(mode ^ " intnum x") "conn" [ "CONNECT x WITH zztrap;"; "ITimer \\Single, 0.01, x;"; "WaitTime 0.05;" ] in
+  one ~data:[ "VAR intnum zint;"; "PERS intnum pint := 0;" ]
+    [ conn; trap "zztrap" [ "TPWrite \"trap \" \\Num:=INTNO;" ];
+      proc ~data:[ "VAR intnum lint;" ] "main" [ Printf.sprintf "conn %s;" target; "IDelete zint;"; "TPWrite \"end\";" ] ]
 
 (* ---------------------------------------------------------------- asynchronous errors *)
 
@@ -155,7 +155,7 @@ let async rs =
   let speed = if at_move then "v1000" else pick rs [ "v100"; "v200"; "v200"; "v1000" ] in
   let zone = if at_move then "z10" else pick rs [ "fine"; "z10" ] in
   let wait = if at_move then "WaitTime 2;"
-    else pick rs [ "WaitTime 0.5;"; "WaitTime 2;"; "WaitUntil gn1 > 0 \\MaxTime:=1;"; "TPWrite \"no wait\";" ] in
+    else pick rs [ "WaitTime 0.5;"; "WaitTime 2;"; "WaitUntil zn1 > 0 \\MaxTime:=1;"; "TPWrite \"no wait\";" ] in
   let waiter = proc ?error:(if chance rs 0.4 then async_handler rs else None)
       ?undo:(if chance rs 0.4 then Some [ "TPWrite \"undo waiter\";" ] else None)
       "waiter" [ "TPWrite \"waiter\";"; wait ] in
@@ -169,7 +169,7 @@ let async rs =
   let main = proc ?error:(async_handler rs) "main"
       [ "MoveJ fzq1, v1000, fine, tool0;"; "mover;"; "TPWrite \"main done\";" ] in
   let io = stimulus (if collision then [ (pick rs [ 0.5; 1.; 1.5; 2.5 ], "collision") ] else []) in
-  one ~io ~data:(targets @ [ "VAR intnum gfail;"; "VAR num gn1;" ]) ([ waiter; mover ] @ (if collision then [] else [ fail ]) @ [ main ])
+  one ~io ~data:(targets @ [ "VAR intnum gfail;"; "VAR num zn1;" ]) ([ waiter; mover ] @ (if collision then [] else [ fail ]) @ [ main ])
 
 (* ---------------------------------------------------------------- the user level *)
 
@@ -182,7 +182,7 @@ let user_level rs =
   (* without a switch RaiseToUser is a static error (raise-to-user-switch) *)
   let switch = pick rs [ " \\Continue"; " \\Resume"; " \\BreakOff" ] in
   let number = pick rs [ ""; ""; " \\ErrorNumber:=gerr"; " \\ErrorNumber:=ERR_DIVZERO" ] in
-  let raise_ = pick rs [ "gn1 := 10 / gdiv;"; "RAISE 7;"; "RAISE gerr;" ] in
+  let raise_ = pick rs [ "zn1 := 10 / gdiv;"; "RAISE 7;"; "RAISE gerr;" ] in
   let inner = proc "inner" ~error:[ "TPWrite \"inner handler \" \\Num:=ERRNO;"; "RaiseToUser" ^ switch ^ number ^ ";" ]
       ?undo:(if chance rs 0.5 then Some [ "TPWrite \"inner undo\";" ] else None)
       [ "TPWrite \"inner\";"; raise_; "TPWrite \"inner goes on\";" ] in
@@ -194,7 +194,7 @@ let user_level rs =
   let outer = proc "outer"
       ?error:(if chance rs 0.3 then Some [ "TPWrite \"outer handler\";"; "RAISE;" ] else None)
       ?undo:(if chance rs 0.4 then Some [ "TPWrite \"outer undo\";" ] else None)
-      ((if chance rs 0.3 then [ "gn1 := scaled(3) + 1;" ] else [])
+      ((if chance rs 0.3 then [ "zn1 := scaled(3) + 1;" ] else [])
        @ [ (if chance rs 0.85 then "inner;" else "RAISE 56;"); "TPWrite \"outer goes on\";" ]) in
   let user_error =
     if chance rs 0.15 then None
@@ -204,7 +204,7 @@ let user_level rs =
                @ handler_ending rs [ "RETRY;"; "TRYNEXT;"; "RETRY;"; "TRYNEXT;"; "RETURN;"; "RAISE;"; "" ]) in
   let misplaced = if chance rs 0.1 then [ "% \"RaiseToUser\" % \\BreakOff;" ] else [] in
   let user = proc ?error:user_error "work" (("TPWrite \"work\";" :: misplaced) @ [ "outer;"; "TPWrite \"work goes on\";" ]) in
-  let data = [ "VAR num gdiv := 0;"; "VAR num gn1;"; Printf.sprintf "VAR num gerr := %d;" (pick rs [ 5; 95; 0 ]) ] in
+  let data = [ "VAR num gdiv := 0;"; "VAR num zn1;"; Printf.sprintf "VAR num gerr := %d;" (pick rs [ 5; 95; 0 ]) ] in
   let below = chance rs 0.1 in
   let main_error = if chance rs 0.5 then Some [ "TPWrite \"main handler \" \\Num:=ERRNO;"; "TRYNEXT;" ] else None in
   let main = proc ?error:main_error "main" [ "work;"; "TPWrite \"main done\";" ] in
@@ -263,7 +263,27 @@ let table = [
 
 let kinds = List.sort_uniq compare (List.map fst table)
 
-let generate rs = (snd (pick rs table)) rs
+(* Three scenarios in ten of one task also hold a program of Program_gen, its main renamed
+   fzgen and called at the end of the scenario's main: the scenario's options, stimulus and
+   handlers then meet every statement form too. The scenarios' names (z..., fz...) are apart
+   from the program's (g..., p<n>, f<n>, fztrap, fzrec). *)
+let with_program rs (c : Fuzz_case.t) =
+  match c.tasks with
+  | [ ({ modules = app :: rest; _ } as t) ] when List.exists (fun (r : routine) -> r.header = "PROC main()") app.routines ->
+      let g = Program_gen.generate rs in
+      let renamed = List.map (fun (r : routine) ->
+          if r.header = "PROC main()" then { r with header = "PROC fzgen()" } else r) g.routines in
+      (* its RECORD first: type definitions come before data declarations (§9.2) *)
+      let app = { app with module_data = g.module_data @ app.module_data;
+                           routines = List.map (fun (r : routine) ->
+                               if r.header = "PROC main()" then { r with body = r.body @ [ Line "fzgen;" ] } else r)
+                               app.routines @ renamed } in
+      { c with tasks = [ { t with modules = app :: rest } ] }
+  | _ -> c
+
+let generate rs =
+  let c = (snd (pick rs table)) rs in
+  if chance rs 0.3 then with_program rs c else c
 
 let generate_kind kind rs =
   match List.assoc_opt kind table with
