@@ -18,6 +18,9 @@
     - two tasks on one clock: a shared persistent, WaitUntil on it, WaitSyncTask,
       WaitTestAndSet (wait-yield, wait-deadlock, ch. 14).
 
+    Three scenarios of one task in ten also hold a program of {!Program_gen}, called at the end
+    of the scenario's main.
+
     Every scenario terminates: recursion and retries are bounded, waits have a bound, a time
     limit or end in a deadlock the scheduler sees. *)
 
