@@ -44,13 +44,14 @@ let cmd =
   let signal_stores = Arg.(value & flag & info [ "no-signal-stores" ] ~doc:"Generate no assignments to signal variables (do1 := 1).") in
   let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
   let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
+  let scenarios = Arg.(value & opt (positive_int "--scenarios") 10 & info [ "scenarios" ] ~docv:"K" ~doc:"One program in K on average is a scenario: several modules, a NOSTEPIN module, two tasks, a collision, or run with $(b,--allow-unknown), $(b,--stub-unmodelled) or small limits (doc/fuzz-campaign.md, \"Scenarios\"); 0: none. Not with $(b,--impl).") in
   let break_rule =
     let names = List.map (fun m -> (Rapid_fuzz.Mutation.name m, m)) Rapid_fuzz.Mutation.all in
     Arg.(value & opt (some (enum names)) None & info [ "break-rule" ] ~docv:"MUTATION"
            ~doc:(Printf.sprintf "The mutation check: run the closure engine with one rule deliberately broken (%s), and stop at the first failure, which a working harness finds (exit 1 then; 0 would mean the harness missed it)."
                    (String.concat ", " (List.map fst names)))) in
   let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores) (mutants, hostile_every) coverage =
+  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores) (mutants, hostile_every, scenarios) coverage =
     C.tune_gc ();
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
@@ -71,7 +72,8 @@ let cmd =
       | Some m -> Rapid_fuzz.Mutation.engine m Rapid_fuzz.Fuzz_run.closure
       | None -> Rapid_fuzz.Fuzz_run.closure in
     let max_failures = Option.map (fun _ -> 1) break_rule in
-    let s = C.run ~options ~engines:[ engine ] ?external_check ?progress ~mutants ~hostile_every ?max_failures
+    let scenarios = if impl = None then scenarios else 0 in
+    let s = C.run ~options ~engines:[ engine ] ?external_check ?progress ~mutants ~hostile_every ~scenarios ?max_failures
         ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
     List.iter (fun (f : C.failure_found) ->
@@ -114,4 +116,4 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b c -> (a, b, c)) $ out $ merge $ break_rule) $ impl $ Term.(const (fun a b c d -> (a, b, c, d)) $ mismatching $ matching_only $ no_controller $ signal_stores) $ Term.(const (fun a b -> (a, b)) $ mutants $ hostile_every) $ coverage)
+  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b c -> (a, b, c)) $ out $ merge $ break_rule) $ impl $ Term.(const (fun a b c d -> (a, b, c, d)) $ mismatching $ matching_only $ no_controller $ signal_stores) $ Term.(const (fun a b c -> (a, b, c)) $ mutants $ hostile_every $ scenarios) $ coverage)

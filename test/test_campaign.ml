@@ -21,7 +21,10 @@ let bounded_campaign () =
       "call-enter"; "argument-alias"; "test-match"; "for-step"; "while-again"; "function-no-return";
       (* the controller, and the forms added for the rules one statement rarely reaches *)
       "interrupt-serve"; "trap-end"; "execute-placeholder"; "argument-reference"; "index-not-integer";
-      "call-by-var-mismatch"; "call-late-mismatch"; "connect-inomax"; "wait-start" ];
+      "call-by-var-mismatch"; "call-late-mismatch"; "connect-inomax"; "wait-start";
+      (* and its scenarios, one program in ten: the user level, asynchronous errors, two tasks,
+         a memory budget *)
+      "raise-to-user-continue"; "async-error"; "wait-yield"; "memory-exhausted" ];
   (* A conditional argument [\p ? x] (§3.11) is bound by settling, within the step that enters
      the call (doc/semantics.md, "Settling"): no rule of its own to count. The campaign's
      programs have them, and the campaign runs them (call-enter above). *)
@@ -187,6 +190,53 @@ let generator_forms () =
       "(gpt <> gpt)"; "ITimer"; "ISignalDI"; "WaitTime"; "WaitDI"; "WaitUntil"; "SetDO do1"; "PulseDO";
       "MoveL"; "MoveJ"; "CONNECT gint WITH fztrap"; "CallByVar"; "\\nosuch:=1"; "<SMT>" ]
 
+(* Scenarios (doc/fuzz-campaign.md, "Scenarios"): a campaign of scenarios only reaches each rule
+   the one-module programs cannot, with every property holding. *)
+let scenarios_reach_rules () =
+  let s = C.run ~engines:[ Rapid_fuzz.Fuzz_run.closure ] ~scenarios:1 ~seed:2031 ~count:300 ~shard:whole () in
+  List.iter (fun (f : C.failure_found) ->
+      Printf.printf "scenario %d: %s\n%s\n" f.program_index (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.source)
+    s.failures;
+  Alcotest.(check int) "failures" 0 (List.length s.failures);
+  List.iter (fun rule ->
+      Alcotest.(check bool) (rule ^ " applied") true (List.mem_assoc rule s.rules))
+    [ "argument-pass-on-duplicate"; "connect-not-variable"; "memory-exhausted"; "call-not-modelled"; "call-stubbed"; "place-unknown";
+      "call-unknown"; "call-unknown-function"; "call-depth-exceeded"; "time-limit"; "wait-yield";
+      "wait-time-limit"; "wait-deadlock"; "async-error"; "async-error-unhandled"; "async-retry-resume";
+      "async-trynext-resume"; "async-exit"; "async-handler-leave"; "async-error-at-move";
+      "raise-to-user-continue"; "raise-to-user-break-off"; "raise-to-user-no-user-level";
+      "raise-to-user-unhandled"; "raise-to-user-illegal"; "raise-to-user-misplaced"; "resume-retry";
+      "resume-trynext" ];
+  (* the default campaign has them too, one program in ten *)
+  let scenario_indexes = List.filter (fun i -> C.is_scenario ~seed:2030 ~scenarios:10 i) (List.init 300 Fun.id) in
+  let n = List.length scenario_indexes in
+  Alcotest.(check bool) (Printf.sprintf "scenarios in the bounded campaign (%d of 300)" n) true (n >= 15 && n <= 45)
+
+(* A scenario saved with a failure runs again as saved: run.sh in its folder (the options, the
+   stimulus, the modules, the tasks) ends as the campaign's run of it did. *)
+let scenario_reproduces () =
+  let dir = Filename.temp_file "rapid-fuzz-saved" "" in
+  Sys.remove dir;
+  let bin = Filename.temp_file "rapid-fuzz-bin" "" in
+  Sys.remove bin; Sys.mkdir bin 0o755;
+  Unix.symlink (Filename.concat (Sys.getcwd ()) "../bin/main.exe") (Filename.concat bin "rapid-sem");
+  let status = function
+    | "ended" -> 0 | "stopped" -> 1 | "exhausted" | "deadlock" -> 3 | "unsupported" -> 4 | o -> Alcotest.failf "outcome %s" o in
+  List.iteri (fun i kind ->
+      let case = Rapid_fuzz.Scenario_gen.generate_kind kind (Random.State.make [| 17; i |]) in
+      match Rapid_fuzz.Case_run.observe case with
+      | Error m -> Alcotest.failf "%s: %s" kind m
+      | Ok o ->
+          let f = { C.program_index = i; failure = Rapid_fuzz.Fuzz_run.Stuck "(a test)"; source = Rapid_fuzz.Fuzz_case.to_text case;
+                    original_size = 0; minimal_size = 0; case = Some case } in
+          let folder = C.save ~dir f in
+          let expected = status (List.hd (String.split_on_char ' ' o.outcome)) in
+          let code = Sys.command (Printf.sprintf "PATH=%s:$PATH sh %s >/dev/null 2>&1" (Filename.quote bin)
+                                    (Filename.quote (Filename.concat folder "run.sh"))) in
+          Alcotest.(check int) (Printf.sprintf "%s (%s): %s" kind o.outcome (Rapid_fuzz.Fuzz_case.command case)) expected code)
+    Rapid_fuzz.Scenario_gen.kinds;
+  ignore (Sys.command (Printf.sprintf "rm -rf %s %s" (Filename.quote dir) (Filename.quote bin)))
+
 let suite =
   ("campaign", [
       Alcotest.test_case "a bounded campaign" `Slow bounded_campaign;
@@ -199,4 +249,6 @@ let suite =
       Alcotest.test_case "mutants and hostile texts" `Quick mutants_answered;
       Alcotest.test_case "text shrinking" `Quick text_shrinking;
       Alcotest.test_case "coverage merges" `Quick coverage_merges;
-      Alcotest.test_case "generator forms" `Quick generator_forms ])
+      Alcotest.test_case "generator forms" `Quick generator_forms;
+      Alcotest.test_case "scenarios reach every rule" `Slow scenarios_reach_rules;
+      Alcotest.test_case "a saved scenario runs again" `Quick scenario_reproduces ])

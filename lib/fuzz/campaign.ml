@@ -6,6 +6,7 @@ type failure_found = {
   source : string;
   original_size : int;
   minimal_size : int;
+  case : Fuzz_case.t option;
 }
 
 type summary = {
@@ -64,6 +65,26 @@ let minimise judge program failure =
   in
   go program failure 500
 
+(* The same for a scenario: its modules shrunk one at a time (Fuzz_case.shrink). *)
+let minimise_case judge case failure =
+  let rec go case failure budget =
+    if budget = 0 then (case, failure)
+    else
+      let next = Seq.filter_map (fun candidate ->
+          match judge candidate with
+          | Error f when same_class f failure -> Some (candidate, f)
+          | _ -> None) (Fuzz_case.shrink case) in
+      match next () with
+      | Seq.Nil -> (case, failure)
+      | Seq.Cons ((smaller, f), _) -> go smaller f (budget - 1)
+  in
+  go case failure 500
+
+(* Whether program [i] is a scenario (Scenario_gen): drawn from a state apart from the
+   program's, so that the other programs are those of a campaign without scenarios. *)
+let is_scenario ~seed ~scenarios i =
+  scenarios > 0 && Random.State.int (Random.State.make [| seed; i; 104729 |]) scenarios = 0
+
 (* The mutants of program [i] and, every [hostile_every] programs, a hostile text: each failing
    text is shrunk by lines and characters. Their random states are apart from the program's, so
    that a campaign's programs do not change with the number of mutants. *)
@@ -81,10 +102,10 @@ let check_texts ~seed ~mutants ~hostile_every i source =
           let m = match Mutant.check_text minimal with Error m' -> m' | Ok () -> m in
           let lines t = List.length (String.split_on_char '\n' t) in
           Some { program_index = i; failure = Fuzz_run.Checker_crashed m; source = minimal;
-                 original_size = lines text; minimal_size = lines minimal }) texts
+                 original_size = lines text; minimal_size = lines minimal; case = None }) texts
 
 let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
-    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ?max_failures ~seed ~count ~shard () =
+    ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ?(scenarios = 10) ?max_failures ~seed ~count ~shard () =
   let started = Unix.gettimeofday () and cpu_started = Sys.time () in
   let outcomes = Hashtbl.create 8 in
   Fuzz_run.reset_rule_counts ();
@@ -105,17 +126,37 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
     let enough = match max_failures with Some k -> List.length !failures >= k | None -> false in
     if i mod shard.count = shard.index - 1 && not enough then begin
       incr programs;
+      let count_outcome (observed : Fuzz_run.observed) =
+        let kind = List.hd (String.split_on_char ' ' observed.outcome) in
+        Hashtbl.replace outcomes kind (1 + Option.value (Hashtbl.find_opt outcomes kind) ~default:0) in
+      if is_scenario ~seed ~scenarios i then begin
+        (* a scenario: its options and stimulus are its own, so no external check (the
+           oracle's protocol passes one program alone); its first module is mutated *)
+        let case = Scenario_gen.generate (program_seed ~seed i) in
+        let first = match case.tasks with
+          | { modules = m :: _; _ } :: _ -> Program_gen.to_source m | _ -> "" in
+        failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i first) !failures;
+        let judge c = Case_run.check_case ~engines ~max_steps c in
+        match judge case with
+        | Ok observed -> count_outcome observed
+        | Error failure ->
+            let minimal, failure = minimise_case judge case failure in
+            failures := { program_index = i; failure; source = Fuzz_case.to_text minimal;
+                          original_size = Fuzz_case.size case; minimal_size = Fuzz_case.size minimal;
+                          case = Some minimal } :: !failures
+      end
+      else begin
       let program = Program_gen.generate ~options (program_seed ~seed i) in
       failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i (Program_gen.to_source program)) !failures;
       (match judge program with
-       | Ok observed ->
-           let kind = List.hd (String.split_on_char ' ' observed.outcome) in
-           Hashtbl.replace outcomes kind (1 + Option.value (Hashtbl.find_opt outcomes kind) ~default:0)
+       | Ok observed -> count_outcome observed
        | Error failure ->
            let minimal, failure = minimise judge program failure in
            failures := { program_index = i; failure; source = Program_gen.to_source minimal;
-                         original_size = Program_gen.size program; minimal_size = Program_gen.size minimal }
-                       :: !failures);
+                         original_size = Program_gen.size program; minimal_size = Program_gen.size minimal;
+                         case = None }
+                       :: !failures)
+      end;
       match progress with
       | Some f -> f ~done_:!programs ~total:((count - shard.index) / shard.count + 1)
                     ~failures:(List.length !failures) ~rules_seen:(List.length (Fuzz_run.rule_counts ()))
@@ -131,9 +172,41 @@ let write path text =
   let oc = open_out_bin path in
   Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
 
+(* A scenario: a folder fuzz-I.case with its modules (a folder per task when there are
+   several), the stimulus fuzz.io and the command that runs it (run.sh). *)
+let save_case ~base f (c : Fuzz_case.t) =
+  let folder = base ^ ".case" in
+  if not (Sys.file_exists folder) then Sys.mkdir folder 0o755;
+  let several = List.length c.tasks > 1 in
+  List.iter (fun (t : Fuzz_case.task) ->
+      let sub = if several then Filename.concat folder t.task_name else folder in
+      if not (Sys.file_exists sub) then Sys.mkdir sub 0o755;
+      List.iter (fun m -> write (Filename.concat sub (Fuzz_case.module_file m)) (Program_gen.to_source m)) t.modules) c.tasks;
+  write (Filename.concat folder "fuzz.io") c.io_text;
+  let command =
+    if several then
+      (* the files of each task are in its folder *)
+      String.concat " " ([ "rapid-sem run" ] @ Fuzz_case.arguments c.options @ [ "--io fuzz.io" ]
+                         @ (match c.schedule with Some s -> [ "--schedule"; string_of_int s ] | None -> [])
+                         @ List.map (fun (t : Fuzz_case.task) ->
+                             Printf.sprintf "--task %s=%s" t.task_name
+                               (String.concat "," (List.map (fun m -> t.task_name ^ "/" ^ Fuzz_case.module_file m) t.modules))) c.tasks)
+    else Fuzz_case.command c in
+  write (Filename.concat folder "run.sh") ("#!/bin/sh\ncd \"$(dirname \"$0\")\"\n" ^ command ^ " \"$@\"\n");
+  write (base ^ ".failure") (Fuzz_run.failure_to_string f.failure ^ "\n");
+  let expected =
+    match Case_run.observe c with
+    | Ok o -> String.concat "\n" (o.events @ [ "end " ^ o.outcome ]) ^ "\n"
+    | Error m -> m ^ "\n" in
+  write (base ^ ".expected") expected;
+  folder
+
 let save ~dir f =
   if not (Sys.file_exists dir) then Sys.mkdir dir 0o755;
   let base = Filename.concat dir (Printf.sprintf "fuzz-%d" f.program_index) in
+  match f.case with
+  | Some c -> save_case ~base f c
+  | None ->
   write (base ^ ".mod") f.source;
   (* the signals the program may use: rapid-sem run --io fuzz-I.io fuzz-I.mod runs it again *)
   write (base ^ ".io") (Fuzz_run.io_text_for f.source);

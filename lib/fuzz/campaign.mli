@@ -11,6 +11,7 @@ type failure_found = {
   source : string;                       (** the minimal program *)
   original_size : int;
   minimal_size : int;
+  case : Fuzz_case.t option;             (** a scenario's minimal case ([source] is its text) *)
 }
 
 type summary = {
@@ -31,21 +32,30 @@ val tune_gc : unit -> unit
 val program_seed : seed:int -> int -> Random.State.t
 (** The random state of program [i] of a campaign: the same for every shard layout. *)
 
+val is_scenario : seed:int -> scenarios:int -> int -> bool
+(** Whether program [i] of a campaign is a scenario: one in [scenarios] on average, drawn from
+    a random state of its own. *)
+
 val run :
   ?options:Program_gen.options ->
   ?engines:Fuzz_run.engine list ->
   ?external_check:(string -> (unit, string) result) ->
   ?progress:(done_:int -> total:int -> failures:int -> rules_seen:int -> unit) ->
-  ?max_steps:int -> ?mutants:int -> ?hostile_every:int -> ?max_failures:int ->
+  ?max_steps:int -> ?mutants:int -> ?hostile_every:int -> ?scenarios:int -> ?max_failures:int ->
   seed:int -> count:int -> shard:shard -> unit -> summary
 (** Each program also gives [mutants] (default 1) ill-typed mutants ({!Mutant.mutate}), and every
     [hostile_every]-th program (default 10; 0: none) a hostile text ({!Mutant.hostile}), each
     judged by {!Mutant.check_text} and shrunk by lines and characters when it fails.
+    One program in [scenarios] (default 10; 0: none), drawn from the seed, is a scenario of
+    {!Scenario_gen} instead, judged by {!Case_run.check_case} with its own options and stimulus
+    (doc/fuzz-campaign.md, "Scenarios"); its first module is mutated as a program is.
     With [max_failures], the campaign stops once it has found that many failures.
     [external_check source] compares another implementation on a program that passed every
     property (the oracle); an [Error] is a failure too. *)
 
 val save : dir:string -> failure_found -> string
-(** Writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals it may use, for
+(** A scenario's failure is written as a folder [fuzz-I.case] (its modules, [fuzz.io] and
+    [run.sh], the command that runs it) with [fuzz-I.failure] and [fuzz-I.expected]; returns
+    the folder. Otherwise: writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals it may use, for
     [rapid-sem run --io]), [fuzz-I.failure] (what went wrong) and [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
     missing; returns the .mod's path. *)

@@ -62,6 +62,7 @@ let outcome_text (o : M.outcome) =
   | Stuck m -> "stuck " ^ m
 
 let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
+let note_rule rule = Hashtbl.replace rule_table rule (1 + Option.value (Hashtbl.find_opt rule_table rule) ~default:0)
 let reset_rule_counts () = Hashtbl.reset rule_table
 let rule_counts () = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) rule_table [])
 
@@ -86,6 +87,22 @@ let mentions word text =
 
 let installed = lazy (Rapid_semantics.Session.installed ~io ())
 
+(* What a scenario runs with (Fuzz_case): its stimulus, limits and options; the engines read it,
+   so that their type stays that of one program. *)
+type setting = { s_io : Rapid_controller.Io_config.t; s_options : Fuzz_case.options }
+
+let setting = ref { s_io = io; s_options = Fuzz_case.default_options }
+
+let with_run_options ~io options f =
+  let saved = !setting in
+  setting := { s_io = io; s_options = options };
+  Fun.protect ~finally:(fun () -> setting := saved) f
+
+let new_world () =
+  let s = !setting in
+  if s.s_options = Fuzz_case.default_options && s.s_io == io then Rapid_controller.World.create !world_io
+  else Rapid_controller.World.create ?max_time:s.s_options.max_time s.s_io
+
 (* The events of a run as two streams, each in its order: the program's, then the world's
    (signal changes, interrupts, motion). The engines may interleave the two differently within
    a step (doc/semantics.md, "What is compared"); each stream must be the same. *)
@@ -97,14 +114,15 @@ let streams () =
 
 let machine =
   let run program ~max_steps =
-    let world = Rapid_controller.World.create !world_io in
-    match M.start ~world ~observe:true program ~entry:"main" with
+    let world = new_world () and o = !setting.s_options in
+    match M.start ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled ~world ~observe:true
+            program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok cfg ->
         let add, events = streams () in
         while M.outcome cfg = Running && M.steps cfg < max_steps do
           let rule, evs = M.step cfg in
-          Hashtbl.replace rule_table rule (1 + Option.value (Hashtbl.find_opt rule_table rule) ~default:0);
+          note_rule rule;
           List.iter add evs
         done;
         let o = M.outcome cfg in
@@ -119,8 +137,9 @@ let machine =
 let closure =
   let run program ~max_steps =
     let add, events = streams () in
-    let world = Rapid_controller.World.create !world_io in
-    match Rapid_semantics.Closure_engine.run ~fuel:max_steps ~observe:true ~world ~on_event:add
+    let world = new_world () and o = !setting.s_options in
+    match Rapid_semantics.Closure_engine.run ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled
+            ~fuel:max_steps ~observe:true ~world ~on_event:add
             program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok r ->
@@ -146,17 +165,20 @@ let compare_observed name (a : observed) (b : observed) =
   else if a.outcome <> b.outcome then Some (Printf.sprintf "%s: outcome %s / %s" name a.outcome b.outcome)
   else None
 
-(* As Session.load_modules, over the fuzzer's installed environment. *)
-let load m : (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result =
+(* As Session.load_modules, over the fuzzer's installed environment (a scenario's stimulus
+   declares the same signals, so the same environment serves it). *)
+let load_modules ?(allow_unknown = false) ?(io = io) modules : (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result =
   match Lazy.force installed with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->
-      let result = Rapid_typing.Check.check_task ~installed [ m ] in
+      let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
-        match Rapid_semantics.Session.lower ~io ~installed ~modules:[ m ] result with
+        match Rapid_semantics.Session.lower ~io ~installed ~modules result with
         | Ok program -> Ok { program; warnings = result.reports; unknown_summary = None }
         | Error reports -> Error (Static (result.reports @ reports))
+
+let load m = load_modules [ m ]
 
 let check_program ?(engines = []) ?(max_steps = 200_000) source =
   try

@@ -42,6 +42,28 @@ val load : Rapid_syntax.Ast.module_declaration -> (Rapid_semantics.Session.loade
 (** As {!Rapid_semantics.Session.load_modules} with {!io}, over one installed environment made
     once, so that the checker and the lowering share their work on it between programs. *)
 
+val load_modules :
+  ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> Rapid_syntax.Ast.module_declaration list ->
+  (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result
+(** {!load} of several modules of one task buffer, with the checker's [--allow-unknown] and a
+    stimulus of the same signals as {!io} (default {!io}). *)
+
+val with_run_options : io:Rapid_controller.Io_config.t -> Fuzz_case.options -> (unit -> 'a) -> 'a
+(** [f ()] with {!machine} and {!closure} running in a world of [io] with the case's limits and
+    options (max time, memory, call depth, stubs); afterwards as before. *)
+
+val event_text : Rapid_semantics.Machine.event -> string
+val outcome_text : Rapid_semantics.Machine.outcome -> string
+(** An event and an outcome as {!observed} holds them. *)
+
+val note_rule : string -> unit
+(** Counts one application of a rule ({!rule_counts}): for the runs of several tasks, which step
+    the machines themselves. *)
+
+val compare_observed : string -> observed -> observed -> string option
+(** The first difference of two observations (events, then outcome), named [what]; [None]
+    when they are the same. *)
+
 val machine : engine
 (** The small-step machine, the definition. *)
 

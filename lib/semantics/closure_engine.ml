@@ -700,7 +700,17 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
   | Present_switch -> fun _ -> Primitive.Switch
   | By_value e -> let f = expr st caller ~at e in fun a -> Primitive.Value (f a)
   | By_reference (place, kind) ->
-      if is_alias p then location place kind
+      if is_alias p then begin
+        (* §5.2, the execution-error cells of the access table, for an installed routine's
+           parameter as for a RAPID one's: an INOUT parameter bound to a persistent passed on
+           to a VAR parameter (ITimer's interrupt), or to a variable passed on to a PERS one. *)
+        let l = location place kind and bound = effective_kind caller place kind in
+        match p.p_mode with
+        | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
+        | Mode_pers -> fun a -> (match bound a with
+            | Ref_variable | Ref_other -> fail st ~at "ERR_ARGNOTPER" | _ -> l a)
+        | _ -> l
+      end
       else let f = read st caller ~at place in fun a -> Primitive.Value (f a)
   | Pass_on s ->
       let present = slot_present caller s in

@@ -1,0 +1,143 @@
+open Rapid_syntax
+module M = Rapid_semantics.Machine
+module TS = Rapid_semantics.Task_set
+module F = Fuzz_run
+
+let several_tasks_closure : (Fuzz_case.t -> max_steps:int -> F.observed) option ref = ref None
+
+let sources (t : Fuzz_case.task) = List.map (fun m -> (Fuzz_case.module_file m, Program_gen.to_source m)) t.modules
+
+(* Every module parses, and its printed form parses to the same tree. *)
+let parse_task t =
+  List.fold_left (fun acc (file, source) ->
+      Result.bind acc (fun ms ->
+          match Parse.parse_string ~name:file source with
+          | Error d -> Error (F.Refused (Diagnostic.to_string d))
+          | Ok m ->
+              let printed = Printer.module_declaration m in
+              match Parse.parse_string ~name:file printed with
+              | Error d -> Error (F.Round_trip (Diagnostic.to_string d))
+              | Ok m' when Ast_dump.module_declaration m <> Ast_dump.module_declaration m' ->
+                  Error (F.Round_trip (file ^ ": the printed module parses to another tree"))
+              | Ok _ -> Ok (ms @ [ m ]))) (Ok []) (sources t)
+
+let io_of (c : Fuzz_case.t) =
+  match Rapid_controller.Io_config.parse ~file:"fuzz.io" c.io_text with
+  | Ok io -> Ok io
+  | Error m -> Error (F.Refused ("the stimulus: " ^ m))
+
+let refused = function
+  | Rapid_semantics.Session.Front_end ds -> F.Refused (String.concat "; " (List.map Diagnostic.to_string ds))
+  | Static rs ->
+      F.Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
+                                       (List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs)))
+  | Internal m -> F.Exception m
+
+let is_stuck (o : F.observed) = String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck"
+
+(* One task: as Fuzz_run.check_program, in the case's world. *)
+let check_one ~engines ~max_steps (c : Fuzz_case.t) io program =
+  F.with_run_options ~io c.options @@ fun () ->
+  let first = F.machine.run program ~max_steps in
+  if is_stuck first then Error (F.Stuck first.outcome)
+  else
+    let again = F.machine.run program ~max_steps in
+    match F.compare_observed "machine twice" first again with
+    | Some d -> Error (F.Nondeterministic d)
+    | None ->
+        let differ = List.find_map (fun (e : F.engine) ->
+            let other = e.run program ~max_steps in
+            if not (first.finished && other.finished) then None
+            else F.compare_observed ("machine / " ^ e.engine_name) first other) engines in
+        match differ with Some d -> Error (F.Engines_differ d) | None -> Ok first
+
+(* Several tasks: Task_set reads its buffers from files, written to a directory of their own. *)
+let with_files (c : Fuzz_case.t) f =
+  let dir = Filename.temp_file "rapid-fuzz-tasks" "" in
+  Sys.remove dir; Sys.mkdir dir 0o700;
+  let written = ref [] in
+  let remove p = if Sys.is_directory p then Sys.rmdir p else Sys.remove p in
+  Fun.protect ~finally:(fun () -> List.iter remove !written; Sys.rmdir dir) @@ fun () ->
+  let specs = List.map (fun (t : Fuzz_case.task) ->
+      let sub = Filename.concat dir t.task_name in
+      Sys.mkdir sub 0o700;
+      written := sub :: !written;
+      let files = List.map (fun (file, source) ->
+          let path = Filename.concat sub file in
+          let oc = open_out_bin path in
+          output_string oc source; close_out oc;
+          written := path :: !written; path) (sources t) in
+      { TS.name = t.task_name; files; entry = "main" }) c.tasks in
+  f specs
+
+let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
+  let world = Rapid_controller.World.create ?max_time:c.options.max_time io in
+  let motion = Rapid_semantics.Motion_primitives.create () in
+  match TS.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
+          ~allow_unknown:c.options.allow_unknown ~io ~observe:true ?seed ~world ~motion specs with
+  | Error (Load (name, f)) -> Error (match refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
+  | Error (Refused m) -> Error (F.Refused m)
+  | Ok (ts, _) ->
+      let events = ref [] in
+      let rec loop () =
+        if TS.steps ts < max_steps then
+          match TS.step ts with
+          | None -> ()
+          | Some (name, rule, evs) ->
+              F.note_rule rule;
+              List.iter (fun e -> events := (name ^ ": " ^ F.event_text e) :: !events) evs;
+              loop () in
+      loop ();
+      let outcomes = List.map (fun (name, cfg) -> name ^ " " ^ F.outcome_text (TS.task_outcome ts cfg)) (TS.tasks ts) in
+      let o = TS.outcome ts in
+      let finished = match o with M.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
+      let stuck = List.exists (fun (_, cfg) -> match TS.task_outcome ts cfg with M.Stuck _ -> true | _ -> false) (TS.tasks ts) in
+      let outcome = F.outcome_text o in
+      Ok ({ F.events = List.rev !events @ outcomes; outcome = (if stuck && not (String.length outcome >= 5 && String.sub outcome 0 5 = "stuck") then "stuck " ^ String.concat "; " outcomes else outcome); finished })
+
+let check_tasks ~max_steps (c : Fuzz_case.t) io =
+  with_files c @@ fun specs ->
+  (* the case's schedule, and round robin: each run twice *)
+  let seeds = List.sort_uniq compare [ c.schedule; None ] in
+  let rec each = function
+    | [] -> assert false
+    | seed :: rest ->
+        Result.bind (run_tasks ~max_steps c io specs ~seed) (fun first ->
+            if is_stuck first then Error (F.Stuck first.outcome)
+            else
+              Result.bind (run_tasks ~max_steps c io specs ~seed) (fun again ->
+                  match F.compare_observed "machine twice" first again with
+                  | Some d -> Error (F.Nondeterministic d)
+                  | None ->
+                      if rest = [] then Ok first else Result.map (fun _ -> first) (each rest))) in
+  Result.bind (each seeds) (fun first ->
+      match !several_tasks_closure with
+      | None -> Ok first
+      | Some run ->
+          let other = run c ~max_steps in
+          if not (first.finished && other.finished) then Ok first
+          else match F.compare_observed "machine / closure (several tasks)" first other with
+            | Some d -> Error (F.Engines_differ d)
+            | None -> Ok first)
+
+let check_case ?(engines = []) ?(max_steps = 200_000) (c : Fuzz_case.t) =
+  try
+    Result.bind (io_of c) (fun io ->
+        let parsed = List.fold_left (fun acc t -> Result.bind acc (fun l -> Result.map (fun ms -> l @ [ ms ]) (parse_task t)))
+            (Ok []) c.tasks in
+        Result.bind parsed (fun parsed ->
+            match c.tasks, parsed with
+            | [ _ ], [ modules ] -> (
+                match F.load_modules ~allow_unknown:c.options.allow_unknown ~io modules with
+                | Error f -> Error (refused f)
+                | Ok loaded -> check_one ~engines ~max_steps c io loaded.program)
+            | _ -> check_tasks ~max_steps c io))
+  with
+  | Stack_overflow -> Error (F.Exception "stack overflow")
+  | Out_of_memory -> Error (F.Exception "out of memory")
+  | e -> Error (F.Exception (Printexc.to_string e))
+
+let observe ?(max_steps = 200_000) c =
+  match check_case ~max_steps c with
+  | Ok o -> Ok o
+  | Error f -> Error (F.failure_to_string f)
