@@ -82,8 +82,9 @@ let with_world (case : Rapid_conformance.Spec_case.t) f =
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
   let services = Rapid_controller.Services.create ~sandbox () in
   Rapid_controller.World.set_services world services;
-  Fun.protect (fun () -> f world)
-    ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
+  Rapid_conformance.Loopback_lock.exclusive case (fun () ->
+      Fun.protect (fun () -> f world)
+        ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox))
 
 let machine_run ?stub_unmodelled ?world limits program ~entry ~max_steps =
   (* Observed: the store writes, arguments and returned values of schema rapid-sem/2 too. *)

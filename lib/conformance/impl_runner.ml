@@ -112,7 +112,7 @@ let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) 
     { case; passed = false; skipped = true; detail = "several tasks (format 4)" }
   else if case.problems <> [] then
     { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
-  else
+  else Loopback_lock.exclusive case @@ fun () ->
     let cmd = command ~template case in
     match Rapid_oracle.Implementation.run ~timeout ~template:cmd [] with
     | exception (Unix.Unix_error (e, _, _)) -> { case; passed = false; skipped = false; detail = Unix.error_message e }

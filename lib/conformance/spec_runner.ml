@@ -80,7 +80,7 @@ let execute engine case (run : Spec_case.run) ~io program =
       | Ok r -> release (); Ok (List.rev !output, r.outcome))
 
 let rec run_program engine case (run : Spec_case.run) ~io program =
-  match execute engine case run ~io program with
+  match Loopback_lock.exclusive case (fun () -> execute engine case run ~io program) with
   | Error m -> fail case ("cannot run: " ^ m)
   | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
       (* What the closure engine leaves to the machine (nothing any more; Closure_engine.machine_only). *)
