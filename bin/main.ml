@@ -486,12 +486,7 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
       report_stubbed (List.rev !stubbed);
       if json then print_endline (Yojson.Safe.to_string
                                     (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
-      match outcome with
-      | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
-          (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
-          Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
-          exit_unsupported
-      | _ -> finish outcome fuel_used ~max_steps
+      finish outcome fuel_used ~max_steps
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
    (Task_set); each event of --json names its task. *)

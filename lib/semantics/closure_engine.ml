@@ -13,6 +13,14 @@ let default_fuel = 100_000_000
 
 type result = { outcome : M.outcome; fuel_used : int }
 
+(* Several tasks (Closure_tasks): the run hands the turn over at each statement and wait. *)
+type cooperation = {
+  share : V.t array -> unit;
+  turn : unit -> unit;
+  yield : wake:float option -> what:string -> pure:bool -> unit;
+  native_budget : int;
+}
+
 (* An error in flight (ch. 7): its name (ERR_... or the number of a user error), its number
    (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
 type error = {
@@ -124,6 +132,7 @@ type state = {
       (* §7.3: a user level's handler run by RaiseToUser \Continue, and the NOSTEPIN activation
          its RETRY and TRYNEXT go on in *)
   mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
+  cooperation : cooperation option;   (* one of several tasks (Closure_tasks) *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -153,17 +162,6 @@ let fail ?about st ~at name =
   raise (Raised e)
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
-
-(* The reason an engine gives for what it leaves to the machine. This one now leaves nothing
-   (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
-let machine_only_reason = "runs on the machine only: use --engine machine"
-
-let machine_only (o : M.outcome) =
-  match o with
-  | Unsupported { reason; _ } ->
-      let n = String.length machine_only_reason and m = String.length reason in
-      m >= n && String.sub reason (m - n) n = machine_only_reason
-  | _ -> false
 
 (* §7.3: the user level of an activation of a NOSTEPIN routine: the first routine above it that
    is not one (none across a trap: its caller is no call), with the statement of its call. *)
@@ -299,8 +297,19 @@ let rec at_point st a =
     st.quiet <- left; st.quiet_base <- left
   end
 
-(* [quiet] is 0 whenever the world is observed. *)
-let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
+(* ch. 14: where the machine's turn ends, a statement of a statement list in focus, after its
+   point of response; what happened in this task's world meanwhile is reported as the turn
+   comes back (the machine reports it after the turn's first step). *)
+let pass_turn st =
+  match st.cooperation with
+  | Some c -> c.turn (); observe st
+  | None -> ()
+
+(* [quiet] is 0 whenever the world is observed (always with several tasks). *)
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else (at_point st a; pass_turn st) [@@inline]
+
+(* A new round of a loop: a point of response, not a statement (no turn ends there). *)
+let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
 
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
@@ -794,7 +803,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
       let motion = Motion_primitives.modelled name in
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let tasks = Task_primitives.modelled name in
+      let tasks = Task_primitives.modelled name
+                  || List.exists (fun m -> String.lowercase_ascii m = String.lowercase_ascii name) Task_primitives.motion_instructions in
       let controller = motion || tasks || Io_primitives.modelled name || Service_primitives.modelled name
                        || String.lowercase_ascii name = "errwrite" in
       (* What the world observes during the call is reported before what the routine itself
@@ -1057,7 +1067,8 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
           | None -> false
           | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
-  match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
+  let yield = Option.map (fun c -> c.yield) st.cooperation in
+  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
   | Finished None -> ()
   | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
@@ -1538,7 +1549,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         while !continue do
           tick st;
           if c a then (match body a with
-              | true -> at_statement st a  (* a new round (while-again) *)
+              | true -> at_round st a  (* a new round (while-again) *)
               | false -> continue := false; goes_on := false
               | exception Continue_loop -> ()
               | exception Break_loop -> continue := false)
@@ -1560,9 +1571,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
           (match body a with
-           | true -> at_statement st a  (* a new round (for-step, for-done) *)
+           | true -> at_round st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false
-           | exception Continue_loop -> at_statement st a
+           | exception Continue_loop -> at_round st a
            | exception Break_loop -> continue := false);
           if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
         done;
@@ -1701,24 +1712,24 @@ let compile_routine st k =
     c_value = valued_body st r ~gotos }
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
-    ~all_events ~emit ~world ~motion (program : program) =
+    ?cooperation ~all_events ~emit ~world ~motion (program : program) =
   let numbers = Hashtbl.create 128 in
   List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) program.error_numbers;
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;
     fuel; fuel_limit = fuel; depth = 0; native = 0;
-    native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
+    native_budget = (match cooperation with Some (c : cooperation) -> c.native_budget | None -> Native_stack.budget ()); booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
     world; motion; in_trap = false; interrupts = false;
     (* A stimulus, or collisions, make the world report without the program asking. *)
-    observing = W.next_event world <> None || W.collisions world <> [];
+    observing = W.next_event world <> None || W.collisions world <> [] || cooperation <> None;
     quiet = 0; quiet_base = 0;
     moving = W.collisions world <> [];
     max_time = W.max_time world; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
-    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation;
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
@@ -1746,13 +1757,13 @@ let outcome_of_exception st = function
   | e -> M.Stuck (Printexc.to_string e)
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
-    (program : program) ~entry =
+    ?cooperation (program : program) ~entry =
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion program ~entry
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ~on_event ~world ~motion program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ~on_event ~world ~motion (program : program) ~entry =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
   let program = Motion_primitives.robot_data motion program in
   let lower = String.lowercase_ascii entry in
@@ -1762,7 +1773,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event ~world ~motion program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~world ~motion program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -1789,6 +1800,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
                   | v -> st.memory <- st.memory + V.bytes v; st.globals.(i) <- V.copy v
                   | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
               | Init_default _ -> ()) program.globals;
+          Option.iter (fun c -> c.share st.globals) cooperation;
           let code = Lazy.force st.compiled.(k) in
           let a = new_act (activation_shape r) r sentinel in
           a.nest <- code.c_nest;
