@@ -162,9 +162,117 @@ let run_cases () =
   List.concat_map (fun folder ->
       Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
       |> List.filter (fun path ->
-          (* Several tasks (format 4) run on the machine only. *)
+          (* Several tasks (format 4) are compared below (compare_tasks_case). *)
           match (Rapid_conformance.Spec_case.read path).run with
           | Some r -> r.tasks = [] | None -> false))
+    folders
+
+(* ------------------------------------------------------------------ several tasks (ch. 14) *)
+
+module TS = Rapid_semantics.Task_set
+module CT = Rapid_semantics.Closure_tasks
+
+type tasks_run = {
+  events : (string * M.event) list;          (* each with its task, in order *)
+  outcome : M.outcome;
+  task_outcomes : (string * M.outcome) list;
+}
+
+(* The same controller for each engine: the case's signals, stimulus, clock and mass memory. *)
+let tasks_world (run : Rapid_conformance.Spec_case.run) f =
+  let io = match run.io with
+    | Some file -> (match Rapid_controller.Io_config.read_file file with Ok io -> io | Error m -> Alcotest.fail m)
+    | None -> Rapid_controller.Io_config.empty in
+  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+  let services = Rapid_controller.Services.create ~sandbox () in
+  Rapid_controller.World.set_services world services;
+  let robot = match run.robot with
+    | Some file -> (match Rapid_motion_model.Robot.load file with Ok r -> Some r | Error _ -> Alcotest.fail file)
+    | None -> None in
+  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  Fun.protect (fun () -> f ~io ~world ~motion)
+    ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
+
+let specs_of (run : Rapid_conformance.Spec_case.run) =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  List.map (fun (name, files) ->
+      let entry = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
+        | Some (_, r) -> r | None -> run.entry in
+      { TS.name; files; entry }) run.tasks
+
+(* [None] when the tasks are refused (both engines load them alike: Closure_tasks.start is
+   Task_set.start). *)
+let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
+  match TS.start ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~world ~motion specs with
+  | Error _ -> None
+  | Ok (ts, _) ->
+      let events = ref [] in
+      let rec loop () =
+        if TS.steps ts < max_steps then
+          match TS.step ts with
+          | None -> ()
+          | Some (name, _, es) -> List.iter (fun e -> events := (name, e) :: !events) es; loop ()
+      in
+      loop ();
+      Some { events = List.rev !events; outcome = TS.outcome ts;
+             task_outcomes = List.map (fun (n, cfg) -> (n, TS.task_outcome ts cfg)) (TS.tasks ts) }
+
+let closure_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
+  match CT.start ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs with
+  | Error _ -> None
+  | Ok (ct, _) ->
+      let events = ref [] in
+      let r = CT.run ~fuel:max_steps ~observe:true ~on_event:(fun name e -> events := (name, e) :: !events) ct in
+      Some { events = List.rev !events; outcome = r.outcome;
+             task_outcomes = List.map (fun (t : CT.task_result) -> (t.name, t.task_outcome)) r.tasks }
+
+(* Both engines' runs of several tasks: the same outcome, the same outcome for each task, and
+   the same events of every task in the same order, the tasks' events interleaved alike: the
+   program's stream and the world's, each in its order, as [difference] compares one task. *)
+let tasks_agree what (m : tasks_run) (c : tasks_run) =
+  Alcotest.(check string) (what ^ ": outcome") (outcome_text m.outcome) (outcome_text c.outcome);
+  (* A deadlock's message names each task and what it waits for, so whole messages. *)
+  let full (o : M.outcome) = match o with Deadlock m -> "deadlock: " ^ m | o -> outcome_text o in
+  Alcotest.(check (list (pair string string))) (what ^ ": each task's outcome")
+    (List.map (fun (n, o) -> (n, full o)) m.task_outcomes) (List.map (fun (n, o) -> (n, full o)) c.task_outcomes);
+  let text (n, e) = n ^ " " ^ event_text e in
+  let rec go stream i m c =
+    match m, c with
+    | [], [] -> ()
+    | x :: m, y :: c when text x = text y -> go stream (i + 1) m c
+    | _ ->
+        let show = function [] -> "(nothing)" | e :: _ -> text e in
+        Alcotest.failf "%s: %s %d: machine %s, closure %s" what stream i (show m) (show c) in
+  let split = List.partition (fun (_, e) -> not (M.world_event e)) in
+  let mp, mw = split m.events and cp, cw = split c.events in
+  go "event" 0 mp cp;
+  go "world event" 0 mw cw
+
+let compare_tasks_case ?seed path () =
+  let case = Rapid_conformance.Spec_case.read path in
+  let run = Option.get case.run in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let seed = match seed with Some s -> Some s | None -> run.schedule in
+  let specs = specs_of run in
+  let go engine = tasks_world run (fun ~io ~world ~motion ->
+      engine ?seed ~stub_unmodelled:case.stub_unmodelled ~allow_unknown:case.allow_unknown ~max_steps ~io ~world ~motion
+        ?motion_task:run.motion_task specs) in
+  match go machine_tasks, go closure_tasks with
+  | None, None -> ()
+  | Some _, None | None, Some _ -> Alcotest.fail "one engine refused the tasks, the other did not"
+  | Some m, Some c ->
+      let what = Printf.sprintf "%s%s" (Filename.basename path)
+          (match seed with Some s -> Printf.sprintf " (seed %d)" s | None -> "") in
+      tasks_agree what m c
+
+let task_cases () =
+  List.concat_map (fun folder ->
+      Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
+      |> List.filter (fun path ->
+          match (Rapid_conformance.Spec_case.read path).run with
+          | Some r -> r.tasks <> [] | None -> false))
     folders
 
 (* The conformance suite's run cases under the closure engine, through the spec runner. A case
@@ -185,11 +293,8 @@ let spec_under_closure () =
           if case.run = None then None
           else
             let o = Rapid_conformance.Spec_runner.run_case ~engine:Closure case in
-            (* Skipped only for what stays the machine's: several tasks (format 4; doc/semantics.md,
-               "The second engine"). *)
-            let several_tasks = (match case.run with Some r -> r.tasks <> [] | None -> false)
-                                && o.verdict = Skipped && Str_contains.has o.detail "several tasks" in
-            if o.verdict <> Passed && not several_tasks then Some (path ^ ": " ^ o.detail) else None)) folders in
+            (* Nothing is skipped: several tasks (format 4) run too (Closure_tasks). *)
+            if o.verdict <> Passed then Some (path ^ ": " ^ o.detail) else None)) folders in
   Alcotest.(check (list string)) "spec/ run cases failing under --engine closure" [] failures
 
 
@@ -993,4 +1098,12 @@ let suite =
     @ List.map (fun path ->
         let name = String.concat "/" (List.rev (List.filteri (fun i _ -> i < 2)
                                                   (List.rev (String.split_on_char '/' path)))) in
-        Alcotest.test_case ("machine = closure: " ^ name) `Quick (compare_case path)) (run_cases ()) )
+        Alcotest.test_case ("machine = closure: " ^ name) `Quick (compare_case path)) (run_cases ())
+    @ List.map (fun path ->
+        Alcotest.test_case ("machine = closure, several tasks: " ^ Filename.basename path) `Quick
+          (compare_tasks_case path)) (task_cases ())
+    @ List.concat_map (fun path ->
+        (* Every case again under several schedules: round robin and five seeds. *)
+        List.map (fun seed ->
+            Alcotest.test_case (Printf.sprintf "machine = closure, several tasks, seed %d: %s" seed (Filename.basename path))
+              `Quick (compare_tasks_case ~seed path)) [ 1; 2; 3; 7; 99 ]) (task_cases ()) )

@@ -16,6 +16,7 @@ type result = { outcome : M.outcome; fuel_used : int }
 (* Several tasks (Closure_tasks): the run hands the turn over at each statement and wait. *)
 type cooperation = {
   share : V.t array -> unit;
+  mutable entered : bool;
   turn : unit -> unit;
   yield : wake:float option -> what:string -> pure:bool -> unit;
   native_budget : int;
@@ -299,14 +300,16 @@ let rec at_point st a =
 
 (* ch. 14: where the machine's turn ends, a statement of a statement list in focus, after its
    point of response; what happened in this task's world meanwhile is reported as the turn
-   comes back (the machine reports it after the turn's first step). *)
-let pass_turn st =
+   comes back (the machine reports it after the turn's first step). The entry of the first
+   statement is the task's start's: the machine made for it took it (Closure_tasks). *)
+let entered st a =
   match st.cooperation with
-  | Some c -> c.turn (); observe st
-  | None -> ()
+  | None -> at_point st a
+  | Some c when not c.entered -> c.entered <- true
+  | Some c -> at_point st a; c.turn (); observe st
 
 (* [quiet] is 0 whenever the world is observed (always with several tasks). *)
-let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else (at_point st a; pass_turn st) [@@inline]
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else entered st a [@@inline]
 
 (* A new round of a loop: a point of response, not a statement (no turn ends there). *)
 let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]

@@ -33,6 +33,10 @@ type cooperation = {
   share : Value.t array -> unit;
       (** the task's module data, once initialised (§2.21), before the entry routine runs: the
           slots of the persistents shared with other tasks are set here *)
+  mutable entered : bool;
+      (** whether the entry routine's first statement was entered: [false] when the task's
+          start took that entry already (its statement time, as {!Task_set.start}'s machines
+          do when made); the engine then goes on without taking it again *)
   turn : unit -> unit;
       (** a statement of a statement list comes into focus, its time charged and the interrupts
           served (where the machine's turn ends): returns when it is this task's turn again *)

@@ -71,7 +71,7 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
       let tasks = Array.of_list (List.map2 (fun (s : Task_set.spec) cfg ->
           { name = s.name; program = M.program cfg; entry = s.entry; world = M.world cfg; motion = M.motion cfg;
             globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
-            finished = None; fuel_used = 0; thread = None }) specs (Array.to_list machines)) in
+            finished = None; fuel_used = 0; thread = None}) specs (Array.to_list machines)) in
       let objects = Hashtbl.create 64 in
       let shared = ref [] in
       let object_of k j =
@@ -136,6 +136,7 @@ let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event ()
     else
       let cooperation = {
         C.share = (fun globals -> task.globals <- globals; take_over t task);
+        entered = false;
         turn = (fun () -> hand_over t task Boundary);
         yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
         native_budget = thread_budget () } in
