@@ -489,9 +489,8 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
       finish outcome fuel_used ~max_steps
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
-   (Task_set); each event of --json names its task. *)
-let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
-    (retry_limit, max_memory) controller robot k =
+   (Task_set); each event of --json names its task. [start] loads them for one engine. *)
+let prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot start =
   machine_gc ();
   let parse_task s =
     match String.index_opt s '=' with
@@ -524,12 +523,20 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   let motion = Rapid_semantics.Motion_primitives.create ~robot () in
   match Services_args.install controller.services world with
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-  | Ok () ->
+  | Ok () -> start ~io ~world ~motion specs names
+
+let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
+  match failure with
+  | Load (name, f) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
+  | Refused m -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
+
+let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot k =
+  prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ~observe:json ?seed ?motion_task ~world ~motion specs with
-  | Error (Load (name, f)) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
-  | Error (Refused m) -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
+  | Error f -> refused_tasks ~json f
   | Ok (ts, warnings) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
       k ts names
@@ -546,6 +553,36 @@ let task_ends ts =
                     (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
+
+(* run --task by the closure engine (Closure_tasks): the same events, in the same order, as
+   run_tasks's; --max-steps is each task's fuel. *)
+let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot =
+  prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
+  let module CT = Rapid_semantics.Closure_tasks in
+  match CT.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
+          ?seed ?motion_task ~world ~motion specs with
+  | Error f -> refused_tasks ~json f
+  | Ok (ct, warnings) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+      if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
+                                                                 ("tasks", `List (List.map (fun n -> `String n) names)) ]));
+      let on_event name (e : M.event) =
+        report_stubbed [ e ];
+        if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
+        else match e with Output s -> print_line s | _ -> () in
+      let r = CT.run ~fuel:max_steps ~all_events:(json || stub_unmodelled) ~observe:json ~on_event ct in
+      let steps = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
+      if json then begin
+        List.iter (fun (t : CT.task_result) ->
+            print_line (Yojson.Safe.to_string
+                          (match outcome_json t.task_outcome t.fuel_used with
+                           | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String t.name) :: rest)
+                           | j -> j))) r.tasks;
+        print_line (Yojson.Safe.to_string (outcome_json r.outcome steps))
+      end;
+      flush_output ();
+      finish r.outcome steps ~max_steps
 
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
@@ -612,18 +649,21 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --task, --save or --samples runs on the machine, which alone has them (doc/semantics.md, \"The second engine\").") in
+  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel, each task's with --task) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --save or --samples runs on the machine, which alone has them (doc/semantics.md, \"The second engine\").") in
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     (* The closure engine by default, once the differential campaign passed (doc/fuzz-campaign.md);
        what only the machine has selects it. *)
     let engine = match engine with
       | Some e -> e
-      | None -> if tasks <> [] || save <> None || samples <> None then `Machine else `Closure in
+      | None -> if save <> None || samples <> None then `Machine else `Closure in
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
-      else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)
       else if save <> None then (prerr_endline "rapid-sem: --save runs one task: not with --task"; exit_static_error)
+      else if engine = `Closure && samples <> None then
+        (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
+      else if engine = `Closure then
+        run_tasks_closure ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
       else match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
       run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
