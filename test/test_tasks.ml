@@ -359,6 +359,11 @@ let test_engines_agree () =
     ("turns", [ "--task"; "A=" ^ a; "--task"; "B=" ^ b ]);
     ("a deadlock", [ "--task"; "A=" ^ w; "--task"; "B=" ^ e ]);
     ("the time limit", [ "--max-time"; "2"; "--task"; "A=" ^ p; "--task"; "B=" ^ e ]);
+    (* R-14-o: rounds of empty loops, a busy wait for the other task. *)
+    ("empty loops", [ "--task"; "A=../spec/14-tasks/02-empty-loop-round.task/a.mod";
+                      "--task"; "B=../spec/14-tasks/02-empty-loop-round.task/b.mod" ]);
+    ("a busy wait", [ "--task"; "A=../spec/14-tasks/02-busy-wait-empty-loop.task/a.mod";
+                      "--task"; "B=../spec/14-tasks/02-busy-wait-empty-loop.task/b.mod" ]);
   ] in
   List.iter (fun (what, args) ->
       List.iter (fun schedule ->

@@ -314,6 +314,9 @@ let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else enter
 (* A new round of a loop: a point of response, not a statement (no turn ends there). *)
 let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
 
+(* R-14-o: a new round of a loop whose body has no statement ends the turn (with several tasks). *)
+let empty_round st = match st.cooperation with Some c -> c.turn (); observe st | None -> ()
+
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
 let rec serve_at_end st a =
@@ -1545,14 +1548,15 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
       let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
       fun a -> if c a then s a else true
-  | While (c, body) ->
-      let c = truth c and body = block body in
+  | While (c, b) ->
+      let c = truth c and body = block b in
+      let empty = Array.length b.body = 0 in
       fun a ->
         let continue = ref true and goes_on = ref true in
         while !continue do
           tick st;
           if c a then (match body a with
-              | true -> at_round st a  (* a new round (while-again) *)
+              | true -> at_round st a; if empty then empty_round st  (* a new round (while-again) *)
               | false -> continue := false; goes_on := false
               | exception Continue_loop -> ()
               | exception Break_loop -> continue := false)
@@ -1564,15 +1568,17 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let from_ = number from_ and to_ = number to_ in
       let step = Option.map number step in
       let body = block loop_body in
+      let empty = Array.length loop_body.body = 0 in
       fun a ->
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
-        let v = ref lo and continue = ref true and goes_on = ref true in
+        let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
+          if empty then (if !round then empty_round st else round := true);  (* for-step *)
           (match body a with
            | true -> at_round st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false

@@ -38,9 +38,6 @@ let splitmix state =
   let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 27)) 0x94D049BB133111EBL in
   Int64.logxor z (Int64.shift_right_logical z 31)
 
-(* A turn that never brings a statement into focus (an empty loop) still ends. *)
-let max_turn_steps = 1000
-
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
 (* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
@@ -246,7 +243,10 @@ let step s =
         if rule = "wait-yield" then (task.idle <- true; s.current <- None)
         else begin
           Array.iter (fun t -> t.idle <- false) s.tasks;
-          if not (running task) || M.pointer_statement task.cfg <> None || s.turn_steps >= max_turn_steps then
+          (* R-14-o: a new round of a loop without a statement ends the turn too, so that every
+             turn ends (a loop waiting for another task with an empty body lets it run). *)
+          if not (running task) || M.pointer_statement task.cfg <> None
+             || ((rule = "while-again" || rule = "for-step") && M.empty_loop_round task.cfg) then
             s.current <- None
         end;
         Some (task.t_name, rule, events)
