@@ -36,6 +36,7 @@ type task = {
   mutable finished : C.result option;
   mutable fuel_used : int;
   mutable thread : Thread.t option;
+  wakeup : Condition.t;                    (* its turn comes, or its end *)
 }
 
 type order = Round_robin | Seeded of int64 ref
@@ -52,8 +53,10 @@ type t = {
   limits : M.limits option;
   stub_unmodelled : bool option;
   clock : W.t;
+  mutable over : bool;                     (* the run is over: no more turns *)
+  mutable crashed : exn option;            (* what a caller's on_event raised *)
   lock : Mutex.t;
-  changed : Condition.t;
+  done_ : Condition.t;                     (* the run is over *)
 }
 
 type task_result = { name : string; task_outcome : M.outcome; fuel_used : int; module_data : (string * string * Value.t) list }
@@ -71,7 +74,7 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
       let tasks = Array.of_list (List.map2 (fun (s : Task_set.spec) cfg ->
           { name = s.name; program = M.program cfg; entry = s.entry; world = M.world cfg; motion = M.motion cfg;
             globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
-            finished = None; fuel_used = 0; thread = None}) specs (Array.to_list machines)) in
+            finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) specs (Array.to_list machines)) in
       let objects = Hashtbl.create 64 in
       let shared = ref [] in
       let object_of k j =
@@ -89,67 +92,13 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
           tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
       let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
       Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = 0; ended = None; cut = false;
-            aborting = false; ran = false; limits; stub_unmodelled; clock = world; lock = Mutex.create (); changed = Condition.create () },
+            aborting = false; ran = false; limits; stub_unmodelled; clock = world; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
           warnings)
 
 (* The shared data objects: a task's slots hold the same values as the others' while it runs
    (only one runs at a time); a value written whole is taken over when the turn passes. *)
 let publish t task = List.iter (fun (slot, n) -> t.shared.(n) <- task.globals.(slot)) task.links
 let take_over t task = List.iter (fun (slot, n) -> task.globals.(slot) <- t.shared.(n)) task.links
-
-(* On the task's thread: the turn passes to the scheduler until it gives it back. *)
-let hand_over t task reply =
-  if t.aborting then raise Aborted;
-  publish t task;
-  Mutex.lock t.lock;
-  task.reply <- Some reply;
-  Condition.broadcast t.changed;
-  while task.command = None do Condition.wait t.changed t.lock done;
-  let command = task.command in
-  task.command <- None;
-  Mutex.unlock t.lock;
-  match command with
-  | Some Go -> take_over t task
-  | _ -> raise Aborted
-
-(* On the scheduler's thread: the task takes a turn (or unwinds, [Abort]); how it ended. *)
-let give t task command =
-  Mutex.lock t.lock;
-  task.reply <- None;
-  task.command <- Some command;
-  Condition.broadcast t.changed;
-  while task.reply = None do Condition.wait t.changed t.lock done;
-  let reply = Option.get task.reply in
-  task.reply <- None;
-  Mutex.unlock t.lock;
-  reply
-
-let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event () =
-  let reply =
-    (* The first turn: wait for it, as for any other. *)
-    Mutex.lock t.lock;
-    while task.command = None do Condition.wait t.changed t.lock done;
-    let command = task.command in
-    task.command <- None;
-    Mutex.unlock t.lock;
-    if command <> Some Go then Finished (Error "not run")
-    else
-      let cooperation = {
-        C.share = (fun globals -> task.globals <- globals; take_over t task);
-        entered = false;
-        turn = (fun () -> hand_over t task Boundary);
-        yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
-        native_budget = thread_budget () } in
-      let on_event e = if not t.aborting then on_event task.name e in
-      match C.run ?limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
-              ~motion:task.motion ~cooperation task.program ~entry:task.entry with
-      | r -> if task.globals <> [||] then publish t task; Finished r
-      | exception e -> Crashed e
-  in
-  Mutex.lock t.lock;
-  task.reply <- Some reply;
-  Condition.broadcast t.changed;
-  Mutex.unlock t.lock
 
 let running task = task.finished = None
 
@@ -187,6 +136,79 @@ let all_wait t =
 
 let wake_all t = Array.iter (fun task -> task.idle <- false) t.members
 
+(* The scheduler, run by the thread whose turn just ended (under the lock): the turn's end as
+   Task_set.step counts it, then the next task's turn, or the end of the run. A turn passes
+   straight from one task's thread to the next's. *)
+let rec pick t =
+  if t.ended <> None || t.cut || t.crashed <> None || not (Array.exists running t.members) then begin
+    t.over <- true; Condition.signal t.done_
+  end
+  else
+    match same_rules_choose t with
+    | Some next -> next.command <- Some Go; Condition.signal next.wakeup
+    | None -> all_wait t; pick t
+
+let turn_ended t task reply =
+  (match reply with
+   | Boundary -> wake_all t
+   | Yielded { wake; what; pure } ->
+       if not pure then wake_all t;
+       task.idle <- true; task.wake <- wake; task.what <- Some what
+   | Finished (Ok r) ->
+       wake_all t;
+       task.finished <- Some r; task.fuel_used <- r.fuel_used;
+       if r.outcome = M.Running then t.cut <- true
+   | Finished (Error m) ->
+       wake_all t;
+       task.finished <- Some { C.outcome = M.Stuck m; fuel_used = 0 }
+   | Crashed e -> t.crashed <- Some e; task.finished <- Some { C.outcome = M.Running; fuel_used = 0 });
+  pick t
+
+(* On the task's thread (lock held): wait for its turn. *)
+let await t task =
+  while task.command = None do Condition.wait task.wakeup t.lock done;
+  let command = task.command in
+  task.command <- None;
+  command
+
+(* On the task's thread: the turn passes on until it comes back. *)
+let hand_over t task reply =
+  if t.aborting then raise Aborted;
+  publish t task;
+  Mutex.lock t.lock;
+  turn_ended t task reply;
+  let command = await t task in
+  Mutex.unlock t.lock;
+  match command with
+  | Some Go -> take_over t task
+  | _ -> raise Aborted
+
+let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event () =
+  Mutex.lock t.lock;
+  let command = await t task in
+  Mutex.unlock t.lock;
+  let reply =
+    if command <> Some Go then Finished (Error "not run")
+    else
+      let cooperation = {
+        C.share = (fun globals -> task.globals <- globals; take_over t task);
+        entered = false;
+        turn = (fun () -> hand_over t task Boundary);
+        yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
+        native_budget = thread_budget () } in
+      let on_event e = if not t.aborting then on_event task.name e in
+      match C.run ?limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
+              ~motion:task.motion ~cooperation task.program ~entry:task.entry with
+      | r -> if task.globals <> [||] then publish t task; Finished r
+      | exception e -> Crashed e
+  in
+  Mutex.lock t.lock;
+  (match reply with
+   | Finished (Ok r) when t.aborting -> task.fuel_used <- r.fuel_used
+   | _ when t.aborting -> ()
+   | reply -> turn_ended t task reply);
+  Mutex.unlock t.lock
+
 let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_event = fun _ _ -> ()) t =
   let limits = t.limits and stub_unmodelled = t.stub_unmodelled in
   if t.ran then invalid_arg "Closure_tasks.run: the tasks ran already";
@@ -194,37 +216,15 @@ let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_ev
   Array.iter (fun task ->
       task.thread <- Some (Thread.create (body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event) ()))
     t.members;
-  let crashed = ref None in
-  let rec loop () =
-    if t.ended = None && not t.cut && !crashed = None && Array.exists running t.members then
-      match same_rules_choose t with
-      | None -> all_wait t; loop ()
-      | Some task ->
-          (match give t task Go with
-           | Boundary -> wake_all t
-           | Yielded { wake; what; pure } ->
-               if not pure then wake_all t;
-               task.idle <- true; task.wake <- wake; task.what <- Some what
-           | Finished (Ok r) ->
-               wake_all t;
-               task.finished <- Some r; task.fuel_used <- r.fuel_used;
-               if r.outcome = M.Running then t.cut <- true
-           | Finished (Error m) ->
-               wake_all t;
-               task.finished <- Some { C.outcome = M.Stuck m; fuel_used = 0 }
-           | Crashed e -> crashed := Some e; task.finished <- Some { C.outcome = M.Running; fuel_used = 0 });
-          loop ()
-  in
-  loop ();
+  Mutex.lock t.lock;
+  pick t;
+  while not t.over do Condition.wait t.done_ t.lock done;
   (* The tasks the run's end caught still running unwind (their events no longer count). *)
   t.aborting <- true;
-  Array.iter (fun task ->
-      if running task then
-        match give t task Abort with
-        | Finished (Ok r) -> task.fuel_used <- r.fuel_used
-        | _ -> ()) t.members;
+  Array.iter (fun task -> if running task then (task.command <- Some Abort; Condition.signal task.wakeup)) t.members;
+  Mutex.unlock t.lock;
   Array.iter (fun task -> Option.iter Thread.join task.thread) t.members;
-  Option.iter raise !crashed;
+  Option.iter raise t.crashed;
   let task_outcome (task : task) =
     match task.finished, t.ended with
     | Some r, _ -> r.C.outcome
