@@ -470,15 +470,17 @@ let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, st
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
    controller (signals, stimulus, clock, services, robot) as the machine's. *)
-let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
+let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
     controller print_event =
   in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
   let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
   let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+  let data = ref [] in
+  let module_data = Option.map (fun _ d -> data := d) save in
   match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-          ~observe:json ~on_event ~world ~motion loaded.program ~entry with
+          ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
   | Error m ->
       if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -486,7 +488,16 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
       report_stubbed (List.rev !stubbed);
       if json then print_endline (Yojson.Safe.to_string
                                     (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
-      finish outcome fuel_used ~max_steps
+      (* --save: as the machine's run writes them (Persistent_save). *)
+      let saved = match save with
+        | None -> Ok []
+        | Some dir ->
+            flush_output ();
+            (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
+            Rapid_semantics.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
+      match saved with
+      | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
+      | Ok _ -> finish outcome fuel_used ~max_steps
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
    (Task_set); each event of --json names its task. [start] loads them for one engine. *)
@@ -649,14 +660,14 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel, each task's with --task) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --save or --samples runs on the machine, which alone has them (doc/semantics.md, \"The second engine\").") in
+  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel, each task's with --task) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --samples runs on the machine, which alone has it (doc/semantics.md, \"The second engine\").") in
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     (* The closure engine by default, once the differential campaign passed (doc/fuzz-campaign.md);
        what only the machine has selects it. *)
     let engine = match engine with
       | Some e -> e
-      | None -> if save <> None || samples <> None then `Machine else `Closure in
+      | None -> if samples <> None then `Machine else `Closure in
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
       else if save <> None then (prerr_endline "rapid-sem: --save runs one task: not with --task"; exit_static_error)
@@ -671,12 +682,10 @@ let run_cmd =
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
-    if engine = `Closure && save <> None then
-      (prerr_endline "rapid-sem: --save runs on the machine only: use --engine machine"; exit_static_error)
-    else if engine = `Closure && samples <> None then
+    if engine = `Closure && samples <> None then
       (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
     else if engine = `Closure then
-      run_closure ?robot files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
+      run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));

@@ -1766,13 +1766,14 @@ let outcome_of_exception st = function
   | e -> M.Stuck (Printexc.to_string e)
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
-    ?cooperation (program : program) ~entry =
+    ?cooperation ?module_data (program : program) ~entry =
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ~on_event ~world ~motion program ~entry
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ~on_event ~world ~motion (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion
+    (program : program) ~entry =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
   let program = Motion_primitives.robot_data motion program in
   let lower = String.lowercase_ascii entry in
@@ -1846,6 +1847,10 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ~
          if outcome = M.Ended && all_events then
            List.iter (fun m -> on_event (M.Motion m)) (Motion_primitives.finish st.motion)
        with _ -> ());
+      (* --save (Persistent_save): the module data as the run left it. *)
+      Option.iter (fun f ->
+          f (Array.to_list (Array.mapi (fun i (g : global) -> (g.g_module, g.g_name, st.globals.(i))) program.globals)))
+        module_data;
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
 let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion program ~entry =

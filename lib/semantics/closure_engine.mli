@@ -54,6 +54,7 @@ val run :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
   ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
   ?motion:Motion_primitives.state -> ?cooperation:cooperation ->
+  ?module_data:((string * string * Value.t) list -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -68,7 +69,9 @@ val run :
     time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps,
     the asynchronous errors of moves with the program pointer kept (§7.4, §7.6), and the user
     level of NOSTEPIN routines (§7.3, RaiseToUser). One task; with [cooperation], one of several
-    ({!Closure_tasks}), whose waits yield instead of moving the clock.
+    ({!Closure_tasks}), whose waits yield instead of moving the clock. [module_data] is given the
+    module data at the end of a run that started (module, name, value, as
+    {!Machine.module_data}: [run --save]).
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
     [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the
