@@ -62,7 +62,12 @@ type t = {
 type task_result = { name : string; task_outcome : M.outcome; fuel_used : int; module_data : (string * string * Value.t) list }
 type result = { outcome : M.outcome; tasks : task_result list }
 
-let thread_budget () = min (Native_stack.budget ()) (8 * 1024 * 1024 / Native_stack.bytes_per_nest)
+(* A thread's stack is the C library's default: the soft limit when there is one (glibc), 2 MB
+   on x86-64 when it is unlimited (Native_stack reports 1 GB then); at most 8 MB counted. *)
+let thread_budget () =
+  let limit = Native_stack.native_stack_bytes () in
+  let stack = if limit >= 1024 * 1024 * 1024 then 2 * 1024 * 1024 else min limit (8 * 1024 * 1024) in
+  min (Native_stack.budget ()) (stack / Native_stack.bytes_per_nest)
 
 let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion (specs : Task_set.spec list) =
   match Task_set.start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion specs with
@@ -176,9 +181,13 @@ let hand_over t task reply =
   if t.aborting then raise Aborted;
   publish t task;
   Mutex.lock t.lock;
-  turn_ended t task reply;
-  let command = await t task in
-  Mutex.unlock t.lock;
+  let command =
+    match turn_ended t task reply; await t task with
+    | command -> Mutex.unlock t.lock; command
+    | exception e ->
+        (* Not part of the semantics (the hand-off failed): the run ends, and says so. *)
+        t.crashed <- Some e; t.over <- true; Condition.signal t.done_; Mutex.unlock t.lock;
+        raise Aborted in
   match command with
   | Some Go -> take_over t task
   | _ -> raise Aborted

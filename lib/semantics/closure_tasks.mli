@@ -54,5 +54,6 @@ val motion_task : t -> (string * Motion_primitives.state) option
 (** The task that has the robot, and its motion. *)
 
 val thread_budget : unit -> int
-(** The native stack budget of a task's thread ({!Native_stack.budget}, at most that of an
-    8 MB stack: a thread's stack is the default one, not the main thread's). *)
+(** The native stack budget of a task's thread: {!Native_stack.budget}, at most that of the C
+    library's default thread stack (the soft limit, 2 MB when it is unlimited, at most 8 MB
+    counted): a thread's stack is not the main thread's. *)
