@@ -267,6 +267,65 @@ let compare_tasks_case ?seed path () =
           (match seed with Some s -> Printf.sprintf " (seed %d)" s | None -> "") in
       tasks_agree what m c
 
+(* Two tasks of random statements around a shared persistent (ch. 14): writes, reads, waits for
+   the other task (WaitUntil with a time-out, a busy wait of an empty loop), empty and full
+   loops, calls, errors and their handlers, RETRY, the clock; both engines, round robin and a
+   seed each, must agree as on the cases above. *)
+let random_tasks () =
+  let open QCheck.Gen in
+  let statement = oneofl [
+      "shared := shared + 1;"; "mine := mine + shared;"; "TPWrite \"s \" \\Num:=shared;";
+      "WaitTime 0.002;"; "WaitUntil shared > 3 \\MaxTime:=0.05;"; "FOR i FROM 1 TO 3 DO\n    ENDFOR";
+      "FOR i FROM 1 TO 2 DO\n      shared := shared + i;\n    ENDFOR";
+      "WHILE shared < 2 AND mine < 50 DO\n      mine := mine + 1;\n    ENDWHILE";
+      "work;"; "IF shared MOD 2 = 0 THEN\n      TPWrite \"even\";\n    ELSE\n      shared := shared * 2;\n    ENDIF";
+      "mine := 1 / (shared - shared);"; "shared := shared - 1;" ] in
+  let task =
+    let* body = list_size (int_range 1 6) statement in
+    let* work_body = list_size (int_range 1 3) statement in
+    let work_body = List.filter (fun s -> s <> "work;") work_body in
+    let* init = oneofl [ " := 0"; " := 1"; "" ] in
+    let* handler = oneofl [ ""; "  ERROR\n    IF ERRNO = ERR_DIVZERO TRYNEXT;\n    RAISE;\n";
+                            "  ERROR\n    mine := 0;\n    shared := shared + 1;\n    IF shared < 6 RETRY;\n    TRYNEXT;\n" ] in
+    return (Printf.sprintf
+              "MODULE m\n  PERS num shared%s;\n  VAR num mine := 0;\n  PROC work()\n    %s\n  ENDPROC\n\
+               \  PROC main()\n    %s\n%s  ENDPROC\nENDMODULE\n"
+              init (String.concat "\n    " (if work_body = [] then [ "mine := mine + 1;" ] else work_body))
+              (String.concat "\n    " body) handler) in
+  let gen = triple task task (oneofl [ None; Some 1; Some 2; Some 5; Some 11 ]) in
+  let dir = Filename.temp_file "rapid-sem-tasks" "" in
+  Sys.remove dir; Unix.mkdir dir 0o755;
+  let write name text =
+    let path = Filename.concat dir name in
+    let oc = open_out_bin path in
+    output_string oc text; close_out oc; path in
+  let compared = ref 0 and ended = ref 0 in
+  let agree_on (a, b, seed) =
+    let specs = [ { TS.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
+                  { TS.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
+    let run engine =
+      let world = Rapid_controller.World.create ~statement_time:0.001 Rapid_controller.Io_config.empty in
+      engine ?seed ~stub_unmodelled:false ~allow_unknown:false ~max_steps:1_000_000 ~io:Rapid_controller.Io_config.empty
+        ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) ?motion_task:None specs in
+    match run machine_tasks, run closure_tasks with
+    | None, None -> true
+    | Some m, Some c -> (
+        incr compared;
+        if m.outcome = M.Ended then incr ended;
+        match tasks_agree "random tasks" m c with
+        | () -> true
+        | exception e -> QCheck.Test.fail_reportf "%s" (Printexc.to_string e))
+    | _ -> QCheck.Test.fail_reportf "one engine refused the tasks"
+  in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 20261128 |])
+    (QCheck.Test.make ~count:200 ~name:"machine = closure on random pairs of tasks"
+       (QCheck.make ~print:(fun (a, b, seed) ->
+            Printf.sprintf "seed %s\n%s\n%s" (match seed with Some s -> string_of_int s | None -> "none") a b) gen)
+       agree_on);
+  (* Not refused, and not all ending the same way: the pairs ran. *)
+  Alcotest.(check bool) (Printf.sprintf "pairs run (%d), some ended (%d), some not" !compared !ended) true
+    (!compared = 200 && !ended > 20 && !ended < 200)
+
 let task_cases () =
   List.concat_map (fun folder ->
       Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
@@ -1076,6 +1135,7 @@ let suite =
     Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
     Alcotest.test_case "machine = closure, observed, on 300 fuzz programs" `Quick fuzz_programs_observed ::
     Alcotest.test_case "machine = closure on 300 random controller programs" `Quick controller_programs ::
+    Alcotest.test_case "machine = closure on 200 random pairs of tasks" `Quick random_tasks ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
     :: Alcotest.test_case "machine = closure: the controller, signals, traps, motion" `Quick controller_runs
     :: Alcotest.test_case "the memory budget: the same bytes, the same call" `Quick memory_budget

@@ -314,8 +314,10 @@ let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else enter
 (* A new round of a loop: a point of response, not a statement (no turn ends there). *)
 let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
 
-(* R-14-o: a new round of a loop whose body has no statement ends the turn (with several tasks). *)
-let empty_round st = match st.cooperation with Some c -> c.turn (); observe st | None -> ()
+(* With several tasks, where the machine's turn ends without a statement being entered: a new
+   round of a loop whose body has no statement (R-14-o), the statement RETRY runs again (in
+   focus again, its time not taken again). *)
+let pass_turn st = match st.cooperation with Some c -> c.turn (); observe st | None -> ()
 
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
@@ -1399,7 +1401,7 @@ and guarded st handler (core : act -> bool) : act -> bool =
           match left with `Return -> false | `Raise e -> raise (Leaving e) | `Exit -> raise Exit_task)
     and handle e =
       match run_handler st handler a e with
-      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); attempt true
+      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); pass_turn st; attempt true
       | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); true
       | `Return -> false
     in
@@ -1556,7 +1558,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         while !continue do
           tick st;
           if c a then (match body a with
-              | true -> at_round st a; if empty then empty_round st  (* a new round (while-again) *)
+              | true -> at_round st a; if empty then pass_turn st  (* a new round (while-again) *)
               | false -> continue := false; goes_on := false
               | exception Continue_loop -> ()
               | exception Break_loop -> continue := false)
@@ -1578,7 +1580,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           tick st;
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
-          if empty then (if !round then empty_round st else round := true);  (* for-step *)
+          if empty then (if !round then pass_turn st else round := true);  (* for-step *)
           (match body a with
            | true -> at_round st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false
