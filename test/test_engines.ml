@@ -279,19 +279,29 @@ let random_tasks () =
       "FOR i FROM 1 TO 2 DO\n      shared := shared + i;\n    ENDFOR";
       "WHILE shared < 2 AND mine < 50 DO\n      mine := mine + 1;\n    ENDWHILE";
       "work;"; "IF shared MOD 2 = 0 THEN\n      TPWrite \"even\";\n    ELSE\n      shared := shared * 2;\n    ENDIF";
-      "mine := 1 / (shared - shared);"; "shared := shared - 1;" ] in
+      "mine := 1 / (shared - shared);"; "shared := shared - 1;";
+      (* a timer whose trap writes the shared persistent, served at either task's points *)
+      "ITimer \\Single, 0.003, t1;"; "ISleep t1;"; "IWatch t1;";
+      (* a semaphore on a shared bool, a meeting point of both tasks *)
+      "WaitTestAndSet lock;\n    shared := shared + 10;\n    lock := FALSE;";
+      "WaitSyncTask meet, both \\TimeOut:=0.04;";
+      "TEST shared\n    CASE 1, 2:\n      TPWrite \"small\";\n    DEFAULT:\n      mine := mine - 1;\n    ENDTEST";
+      "IF mine > 40 RETURN;" ] in
   let task =
     let* body = list_size (int_range 1 6) statement in
     let* work_body = list_size (int_range 1 3) statement in
-    let work_body = List.filter (fun s -> s <> "work;") work_body in
+    let work_body = List.filter (fun s -> s <> "work;" && s <> "IF mine > 40 RETURN;") work_body in
+    let* trap = oneofl [ "shared := shared + 100;"; "TPWrite \"tick\";\n    shared := shared * 2;"; "mine := 1 / 0;" ] in
     let* init = oneofl [ " := 0"; " := 1"; "" ] in
     let* handler = oneofl [ ""; "  ERROR\n    IF ERRNO = ERR_DIVZERO TRYNEXT;\n    RAISE;\n";
                             "  ERROR\n    mine := 0;\n    shared := shared + 1;\n    IF shared < 6 RETRY;\n    TRYNEXT;\n" ] in
     return (Printf.sprintf
-              "MODULE m\n  PERS num shared%s;\n  VAR num mine := 0;\n  PROC work()\n    %s\n  ENDPROC\n\
-               \  PROC main()\n    %s\n%s  ENDPROC\nENDMODULE\n"
+              "MODULE m\n  PERS num shared%s;\n  PERS bool lock;\n  PERS tasks both{2} := [[\"T_ROB1\"],[\"T_B\"]];\n\
+               \  VAR syncident meet;\n  VAR intnum t1;\n  VAR num mine := 0;\n  PROC work()\n    %s\n  ENDPROC\n\
+               \  TRAP tick\n    %s\n  ENDTRAP\n\
+               \  PROC main()\n    CONNECT t1 WITH tick;\n    %s\n%s  ENDPROC\nENDMODULE\n"
               init (String.concat "\n    " (if work_body = [] then [ "mine := mine + 1;" ] else work_body))
-              (String.concat "\n    " body) handler) in
+              trap (String.concat "\n    " body) handler) in
   let gen = triple task task (oneofl [ None; Some 1; Some 2; Some 5; Some 11 ]) in
   let dir = Filename.temp_file "rapid-sem-tasks" "" in
   Sys.remove dir; Unix.mkdir dir 0o755;

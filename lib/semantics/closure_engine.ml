@@ -1580,9 +1580,12 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           tick st;
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
-          if empty then (if !round then pass_turn st else round := true);  (* for-step *)
           (match body a with
-           | true -> at_round st a  (* a new round (for-step, for-done) *)
+           | true ->
+               (* R-14-o: the turn ends after the variable stepped and the empty body passed
+                  (for-step), before the next round's point of response. *)
+               if empty then (if !round then pass_turn st else round := true);
+               at_round st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false
            | exception Continue_loop -> at_round st a
            | exception Break_loop -> continue := false);
