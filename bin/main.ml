@@ -470,15 +470,17 @@ let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, st
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
    controller (signals, stimulus, clock, services, robot) as the machine's. *)
-let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
+let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
     controller print_event =
   in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
   let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
   let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+  let data = ref [] in
+  let module_data = Option.map (fun _ d -> data := d) save in
   match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-          ~observe:json ~on_event ~world ~motion loaded.program ~entry with
+          ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
   | Error m ->
       if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -486,17 +488,20 @@ let run_closure ?robot files entry max_steps (allow_unknown, stub_unmodelled) ma
       report_stubbed (List.rev !stubbed);
       if json then print_endline (Yojson.Safe.to_string
                                     (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
-      match outcome with
-      | Unsupported { reason; at; _ } when Rapid_semantics.Closure_engine.machine_only outcome ->
-          (* The controller and motion: --stub-unmodelled does not help, the machine does. *)
-          Printf.eprintf "%s: not run by the closure engine: %s\n" (Source.to_string at) reason;
-          exit_unsupported
-      | _ -> finish outcome fuel_used ~max_steps
+      (* --save: as the machine's run writes them (Persistent_save). *)
+      let saved = match save with
+        | None -> Ok []
+        | Some dir ->
+            flush_output ();
+            (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
+            Rapid_semantics.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
+      match saved with
+      | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
+      | Ok _ -> finish outcome fuel_used ~max_steps
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
-   (Task_set); each event of --json names its task. *)
-let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
-    (retry_limit, max_memory) controller robot k =
+   (Task_set); each event of --json names its task. [start] loads them for one engine. *)
+let prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot start =
   machine_gc ();
   let parse_task s =
     match String.index_opt s '=' with
@@ -529,12 +534,20 @@ let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_un
   let motion = Rapid_semantics.Motion_primitives.create ~robot () in
   match Services_args.install controller.services world with
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-  | Ok () ->
+  | Ok () -> start ~io ~world ~motion specs names
+
+let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
+  match failure with
+  | Load (name, f) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
+  | Refused m -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
+
+let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot k =
+  prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ~observe:json ?seed ?motion_task ~world ~motion specs with
-  | Error (Load (name, f)) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
-  | Error (Refused m) -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
+  | Error f -> refused_tasks ~json f
   | Ok (ts, warnings) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
       k ts names
@@ -551,6 +564,36 @@ let task_ends ts =
                     (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
+
+(* run --task by the closure engine (Closure_tasks): the same events, in the same order, as
+   run_tasks's; --max-steps is each task's fuel. *)
+let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
+    (retry_limit, max_memory) controller robot =
+  prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
+  let module CT = Rapid_semantics.Closure_tasks in
+  match CT.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
+          ?seed ?motion_task ~world ~motion specs with
+  | Error f -> refused_tasks ~json f
+  | Ok (ct, warnings) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+      if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
+                                                                 ("tasks", `List (List.map (fun n -> `String n) names)) ]));
+      let on_event name (e : M.event) =
+        report_stubbed [ e ];
+        if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
+        else match e with Output s -> print_line s | _ -> () in
+      let r = CT.run ~fuel:max_steps ~all_events:(json || stub_unmodelled) ~observe:json ~on_event ct in
+      let steps = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
+      if json then begin
+        List.iter (fun (t : CT.task_result) ->
+            print_line (Yojson.Safe.to_string
+                          (match outcome_json t.task_outcome t.fuel_used with
+                           | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String t.name) :: rest)
+                           | j -> j))) r.tasks;
+        print_line (Yojson.Safe.to_string (outcome_json r.outcome steps))
+      end;
+      flush_output ();
+      finish r.outcome steps ~max_steps
 
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
@@ -617,18 +660,21 @@ let run_cmd =
                           declaration's initial value replaced by the persistent's current value; the rest \
                           of the text is kept byte for byte, and each file is replaced atomically (doc/services.md).") in
   
-  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --task, --save or --samples runs on the machine, which alone has them (doc/semantics.md, \"The second engine\").") in
+  let engine = Arg.(value & opt (some (enum [ ("machine", `Machine); ("closure", `Closure) ])) None & info [ "engine" ] ~docv:"ENGINE" ~doc:"$(b,closure) (the second engine, the default: the same events as the machine's, faster; --max-steps counts its units of fuel, each task's with --task) or $(b,machine) (the small-step machine, the definition, which $(b,trace) and $(b,debug) run). Without this option, a run with --samples runs on the machine, which alone has it (doc/semantics.md, \"The second engine\").") in
   let run (files, entries, tasks, schedule, motion_task) max_steps allow_unknown max_depth retry_limit json controller robot samples save engine =
     guard @@ fun () ->
     (* The closure engine by default, once the differential campaign passed (doc/fuzz-campaign.md);
        what only the machine has selects it. *)
     let engine = match engine with
       | Some e -> e
-      | None -> if tasks <> [] || save <> None || samples <> None then `Machine else `Closure in
+      | None -> if samples <> None then `Machine else `Closure in
     if tasks <> [] then begin
       if files <> [] then (prerr_endline "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."; exit_static_error)
-      else if engine = `Closure then (prerr_endline "rapid-sem: the closure engine runs one task: --task needs --engine machine"; exit_static_error)
       else if save <> None then (prerr_endline "rapid-sem: --save runs one task: not with --task"; exit_static_error)
+      else if engine = `Closure && samples <> None then
+        (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
+      else if engine = `Closure then
+        run_tasks_closure ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
       else match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
       run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
@@ -636,12 +682,10 @@ let run_cmd =
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
-    if engine = `Closure && save <> None then
-      (prerr_endline "rapid-sem: --save runs on the machine only: use --engine machine"; exit_static_error)
-    else if engine = `Closure && samples <> None then
+    if engine = `Closure && samples <> None then
       (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
     else if engine = `Closure then
-      run_closure ?robot files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
+      run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));

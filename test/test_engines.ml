@@ -55,12 +55,6 @@ let outcome_text (o : M.outcome) =
   | Deadlock _ -> "deadlock"
   | Stuck m -> "stuck " ^ m
 
-(* The closure engine runs the controller, motion, services, the user level of §7.3 and §7.4's
-   kept program pointer too: nothing of one task is left to the machine (doc/semantics.md, "The
-   second engine"); an end that says otherwise is a failure. *)
-let no_machine_only what o =
-  if C.machine_only o then Alcotest.failf "%s: the closure engine left it to the machine: %s" what (outcome_text o)
-
 let io_of (case : Rapid_conformance.Spec_case.t) =
   match case.run with
   | Some { io = Some file; _ } -> (
@@ -138,7 +132,6 @@ let compare_case path () =
         with_world case (fun world -> machine_run ~stub_unmodelled ~world limits program ~entry:run.entry ~max_steps:budget) in
       let c_events, c_outcome =
         with_world case (fun world -> closure_run ~stub_unmodelled ~world limits program ~entry:run.entry ~fuel:budget) in
-      no_machine_only path c_outcome;
       begin
       Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
       (* Making only the output events (as rapid-sem run does) changes nothing else. *)
@@ -170,21 +163,190 @@ let run_cases () =
   List.concat_map (fun folder ->
       Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
       |> List.filter (fun path ->
-          (* Several tasks (format 4) run on the machine only. *)
+          (* Several tasks (format 4) are compared below (compare_tasks_case). *)
           match (Rapid_conformance.Spec_case.read path).run with
           | Some r -> r.tasks = [] | None -> false))
     folders
 
-(* The conformance suite's run cases under the closure engine, through the spec runner. A case
-   that needs the controller is skipped there (the differential test above compares its events
-   up to the controller). *)
-module Str_contains = struct
-  let has s sub =
-    let n = String.length sub and m = String.length s in
-    let rec at i = i + n <= m && (String.sub s i n = sub || at (i + 1)) in
-    at 0
-end
+(* ------------------------------------------------------------------ several tasks (ch. 14) *)
 
+module TS = Rapid_semantics.Task_set
+module CT = Rapid_semantics.Closure_tasks
+
+type tasks_run = {
+  events : (string * M.event) list;          (* each with its task, in order *)
+  outcome : M.outcome;
+  task_outcomes : (string * M.outcome) list;
+}
+
+(* The same controller for each engine: the case's signals, stimulus, clock and mass memory. *)
+let tasks_world (run : Rapid_conformance.Spec_case.run) f =
+  let io = match run.io with
+    | Some file -> (match Rapid_controller.Io_config.read_file file with Ok io -> io | Error m -> Alcotest.fail m)
+    | None -> Rapid_controller.Io_config.empty in
+  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
+  let sandbox = Rapid_controller.File_sandbox.temporary () in
+  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+  let services = Rapid_controller.Services.create ~sandbox () in
+  Rapid_controller.World.set_services world services;
+  let robot = match run.robot with
+    | Some file -> (match Rapid_motion_model.Robot.load file with Ok r -> Some r | Error _ -> Alcotest.fail file)
+    | None -> None in
+  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  Fun.protect (fun () -> f ~io ~world ~motion)
+    ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
+
+let specs_of (run : Rapid_conformance.Spec_case.run) =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  List.map (fun (name, files) ->
+      let entry = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
+        | Some (_, r) -> r | None -> run.entry in
+      { TS.name; files; entry }) run.tasks
+
+(* [None] when the tasks are refused (both engines load them alike: Closure_tasks.start is
+   Task_set.start). *)
+let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
+  match TS.start ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~world ~motion specs with
+  | Error _ -> None
+  | Ok (ts, _) ->
+      let events = ref [] in
+      let rec loop () =
+        if TS.steps ts < max_steps then
+          match TS.step ts with
+          | None -> ()
+          | Some (name, _, es) -> List.iter (fun e -> events := (name, e) :: !events) es; loop ()
+      in
+      loop ();
+      Some { events = List.rev !events; outcome = TS.outcome ts;
+             task_outcomes = List.map (fun (n, cfg) -> (n, TS.task_outcome ts cfg)) (TS.tasks ts) }
+
+let closure_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
+  match CT.start ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs with
+  | Error _ -> None
+  | Ok (ct, _) ->
+      let events = ref [] in
+      let r = CT.run ~fuel:max_steps ~observe:true ~on_event:(fun name e -> events := (name, e) :: !events) ct in
+      Some { events = List.rev !events; outcome = r.outcome;
+             task_outcomes = List.map (fun (t : CT.task_result) -> (t.name, t.task_outcome)) r.tasks }
+
+(* Both engines' runs of several tasks: the same outcome, the same outcome for each task, and
+   the same events of every task in the same order, the tasks' events interleaved alike: the
+   program's stream and the world's, each in its order, as [difference] compares one task. *)
+let tasks_agree what (m : tasks_run) (c : tasks_run) =
+  Alcotest.(check string) (what ^ ": outcome") (outcome_text m.outcome) (outcome_text c.outcome);
+  (* A deadlock's message names each task and what it waits for, so whole messages. *)
+  let full (o : M.outcome) = match o with Deadlock m -> "deadlock: " ^ m | o -> outcome_text o in
+  Alcotest.(check (list (pair string string))) (what ^ ": each task's outcome")
+    (List.map (fun (n, o) -> (n, full o)) m.task_outcomes) (List.map (fun (n, o) -> (n, full o)) c.task_outcomes);
+  let text (n, e) = n ^ " " ^ event_text e in
+  let rec go stream i m c =
+    match m, c with
+    | [], [] -> ()
+    | x :: m, y :: c when text x = text y -> go stream (i + 1) m c
+    | _ ->
+        let show = function [] -> "(nothing)" | e :: _ -> text e in
+        Alcotest.failf "%s: %s %d: machine %s, closure %s" what stream i (show m) (show c) in
+  let split = List.partition (fun (_, e) -> not (M.world_event e)) in
+  let mp, mw = split m.events and cp, cw = split c.events in
+  go "event" 0 mp cp;
+  go "world event" 0 mw cw
+
+let compare_tasks_case ?seed path () =
+  let case = Rapid_conformance.Spec_case.read path in
+  let run = Option.get case.run in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let seed = match seed with Some s -> Some s | None -> run.schedule in
+  let specs = specs_of run in
+  let go engine = Rapid_conformance.Loopback_lock.exclusive case @@ fun () -> tasks_world run (fun ~io ~world ~motion ->
+      engine ?seed ~stub_unmodelled:case.stub_unmodelled ~allow_unknown:case.allow_unknown ~max_steps ~io ~world ~motion
+        ?motion_task:run.motion_task specs) in
+  match go machine_tasks, go closure_tasks with
+  | None, None -> ()
+  | Some _, None | None, Some _ -> Alcotest.fail "one engine refused the tasks, the other did not"
+  | Some m, Some c ->
+      let what = Printf.sprintf "%s%s" (Filename.basename path)
+          (match seed with Some s -> Printf.sprintf " (seed %d)" s | None -> "") in
+      tasks_agree what m c
+
+(* Two tasks of random statements around a shared persistent (ch. 14): writes, reads, waits for
+   the other task (WaitUntil with a time-out, a busy wait of an empty loop), empty and full
+   loops, calls, errors and their handlers, RETRY, the clock; both engines, round robin and a
+   seed each, must agree as on the cases above. *)
+let random_tasks () =
+  let open QCheck.Gen in
+  let statement = oneofl [
+      "shared := shared + 1;"; "mine := mine + shared;"; "TPWrite \"s \" \\Num:=shared;";
+      "WaitTime 0.002;"; "WaitUntil shared > 3 \\MaxTime:=0.05;"; "FOR i FROM 1 TO 3 DO\n    ENDFOR";
+      "FOR i FROM 1 TO 2 DO\n      shared := shared + i;\n    ENDFOR";
+      "WHILE shared < 2 AND mine < 50 DO\n      mine := mine + 1;\n    ENDWHILE";
+      "work;"; "IF shared MOD 2 = 0 THEN\n      TPWrite \"even\";\n    ELSE\n      shared := shared * 2;\n    ENDIF";
+      "mine := 1 / (shared - shared);"; "shared := shared - 1;";
+      (* a timer whose trap writes the shared persistent, served at either task's points *)
+      "ITimer \\Single, 0.003, t1;"; "ISleep t1;"; "IWatch t1;";
+      (* a semaphore on a shared bool, a meeting point of both tasks *)
+      "WaitTestAndSet lock;\n    shared := shared + 10;\n    lock := FALSE;";
+      "WaitSyncTask meet, both \\TimeOut:=0.04;";
+      "TEST shared\n    CASE 1, 2:\n      TPWrite \"small\";\n    DEFAULT:\n      mine := mine - 1;\n    ENDTEST";
+      "IF mine > 40 RETURN;" ] in
+  let task =
+    let* body = list_size (int_range 1 6) statement in
+    let* work_body = list_size (int_range 1 3) statement in
+    let work_body = List.filter (fun s -> s <> "work;" && s <> "IF mine > 40 RETURN;") work_body in
+    let* trap = oneofl [ "shared := shared + 100;"; "TPWrite \"tick\";\n    shared := shared * 2;"; "mine := 1 / 0;" ] in
+    let* init = oneofl [ " := 0"; " := 1"; "" ] in
+    let* handler = oneofl [ ""; "  ERROR\n    IF ERRNO = ERR_DIVZERO TRYNEXT;\n    RAISE;\n";
+                            "  ERROR\n    mine := 0;\n    shared := shared + 1;\n    IF shared < 6 RETRY;\n    TRYNEXT;\n" ] in
+    return (Printf.sprintf
+              "MODULE m\n  PERS num shared%s;\n  PERS bool lock;\n  PERS tasks both{2} := [[\"T_ROB1\"],[\"T_B\"]];\n\
+               \  VAR syncident meet;\n  VAR intnum t1;\n  VAR num mine := 0;\n  PROC work()\n    %s\n  ENDPROC\n\
+               \  TRAP tick\n    %s\n  ENDTRAP\n\
+               \  PROC main()\n    CONNECT t1 WITH tick;\n    %s\n%s  ENDPROC\nENDMODULE\n"
+              init (String.concat "\n    " (if work_body = [] then [ "mine := mine + 1;" ] else work_body))
+              trap (String.concat "\n    " body) handler) in
+  let gen = triple task task (oneofl [ None; Some 1; Some 2; Some 5; Some 11 ]) in
+  let dir = Filename.temp_file "rapid-sem-tasks" "" in
+  Sys.remove dir; Unix.mkdir dir 0o755;
+  let write name text =
+    let path = Filename.concat dir name in
+    let oc = open_out_bin path in
+    output_string oc text; close_out oc; path in
+  let compared = ref 0 and ended = ref 0 in
+  let agree_on (a, b, seed) =
+    let specs = [ { TS.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
+                  { TS.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
+    let run engine =
+      let world = Rapid_controller.World.create ~statement_time:0.001 Rapid_controller.Io_config.empty in
+      engine ?seed ~stub_unmodelled:false ~allow_unknown:false ~max_steps:1_000_000 ~io:Rapid_controller.Io_config.empty
+        ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) ?motion_task:None specs in
+    match run machine_tasks, run closure_tasks with
+    | None, None -> true
+    | Some m, Some c -> (
+        incr compared;
+        if m.outcome = M.Ended then incr ended;
+        match tasks_agree "random tasks" m c with
+        | () -> true
+        | exception e -> QCheck.Test.fail_reportf "%s" (Printexc.to_string e))
+    | _ -> QCheck.Test.fail_reportf "one engine refused the tasks"
+  in
+  QCheck.Test.check_exn ~rand:(Random.State.make [| 20261128 |])
+    (QCheck.Test.make ~count:200 ~name:"machine = closure on random pairs of tasks"
+       (QCheck.make ~print:(fun (a, b, seed) ->
+            Printf.sprintf "seed %s\n%s\n%s" (match seed with Some s -> string_of_int s | None -> "none") a b) gen)
+       agree_on);
+  (* Not refused, and not all ending the same way: the pairs ran. *)
+  Alcotest.(check bool) (Printf.sprintf "pairs run (%d), some ended (%d), some not" !compared !ended) true
+    (!compared = 200 && !ended > 20 && !ended < 200)
+
+let task_cases () =
+  List.concat_map (fun folder ->
+      Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
+      |> List.filter (fun path ->
+          match (Rapid_conformance.Spec_case.read path).run with
+          | Some r -> r.tasks <> [] | None -> false))
+    folders
+
+(* The conformance suite's run cases under the closure engine, through the spec runner, the
+   cases of several tasks included: every one must pass, none is skipped. *)
 let spec_under_closure () =
   let failures = List.concat_map (fun folder ->
       Rapid_conformance.Spec_runner.find_cases (Filename.concat "../spec" folder)
@@ -193,11 +355,8 @@ let spec_under_closure () =
           if case.run = None then None
           else
             let o = Rapid_conformance.Spec_runner.run_case ~engine:Closure case in
-            (* Skipped only for what stays the machine's: several tasks (format 4; doc/semantics.md,
-               "The second engine"). *)
-            let several_tasks = (match case.run with Some r -> r.tasks <> [] | None -> false)
-                                && o.verdict = Skipped && Str_contains.has o.detail "several tasks" in
-            if o.verdict <> Passed && not several_tasks then Some (path ^ ": " ^ o.detail) else None)) folders in
+            (* Nothing is skipped: several tasks (format 4) run too (Closure_tasks). *)
+            if o.verdict <> Passed then Some (path ^ ": " ^ o.detail) else None)) folders in
   Alcotest.(check (list string)) "spec/ run cases failing under --engine closure" [] failures
 
 
@@ -641,7 +800,6 @@ let load_text ?(allow_unknown = false) ?io name text =
 let agree ?(limits = M.default_limits) ?(budget = 10_000_000) program =
   let m_events, m_outcome = machine_run limits program ~entry:"main" ~max_steps:budget in
   let c_events, c_outcome = closure_run limits program ~entry:"main" ~fuel:budget in
-  no_machine_only "program" c_outcome;
   begin
     Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
     (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d)
@@ -988,6 +1146,7 @@ let suite =
     Alcotest.test_case "machine = closure on 150 random programs" `Quick random_programs ::
     Alcotest.test_case "machine = closure, observed, on 300 fuzz programs" `Quick fuzz_programs_observed ::
     Alcotest.test_case "machine = closure on 300 random controller programs" `Quick controller_programs ::
+    Alcotest.test_case "machine = closure on 200 random pairs of tasks" `Quick random_tasks ::
     Alcotest.test_case "the spec/ run cases pass under the closure engine" `Quick spec_under_closure
     :: Alcotest.test_case "machine = closure: the controller, signals, traps, motion" `Quick controller_runs
     :: Alcotest.test_case "the memory budget: the same bytes, the same call" `Quick memory_budget
@@ -1002,4 +1161,12 @@ let suite =
     @ List.map (fun path ->
         let name = String.concat "/" (List.rev (List.filteri (fun i _ -> i < 2)
                                                   (List.rev (String.split_on_char '/' path)))) in
-        Alcotest.test_case ("machine = closure: " ^ name) `Quick (compare_case path)) (run_cases ()) )
+        Alcotest.test_case ("machine = closure: " ^ name) `Quick (compare_case path)) (run_cases ())
+    @ List.map (fun path ->
+        Alcotest.test_case ("machine = closure, several tasks: " ^ Filename.basename path) `Quick
+          (compare_tasks_case path)) (task_cases ())
+    @ List.concat_map (fun path ->
+        (* Every case again under several schedules: round robin and five seeds. *)
+        List.map (fun seed ->
+            Alcotest.test_case (Printf.sprintf "machine = closure, several tasks, seed %d: %s" seed (Filename.basename path))
+              `Quick (compare_tasks_case ~seed path)) [ 1; 2; 3; 7; 99 ]) (task_cases ()) )

@@ -230,6 +230,35 @@ let file_bounds () =
           \  ERROR\n    TPWrite \"open \" + ValToStr(k) + \" \" + ValToStr(ERRNO = ERR_FILEOPEN);\n  ENDPROC\nENDMODULE\n" in
       Alcotest.(check (list string)) "output" [ "10 bytes"; "ERR_FILESIZE TRUE"; "size 10"; "open 33 TRUE" ] out)
 
+(* --save by both engines (doc/semantics.md, "The second engine"): the same modules, byte for
+   byte, from the values the run left (whole values, components, arrays, a run stopped by an
+   error). *)
+let save_engines () =
+  let dir = temp_dir () in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command ("rm -rf " ^ Filename.quote dir))) (fun () ->
+      let source = Filename.concat dir "cell.mod" in
+      write_file source
+        "MODULE cell\n  PERS num count := 0;\n  PERS string name := \"a\";  ! kept\n  PERS pos p := [1,2,3];\n\
+        \  PERS num row{3} := [0,0,0];\n  VAR num v := 5;\n  PROC main()\n    count := count + 41 / 4;\n\
+        \    name := name + \"b\";\n    p.y := -0.5;\n    FOR i FROM 1 TO 3 DO\n      row{i} := i * i;\n    ENDFOR\n\
+        \    v := 1 / (count - count);\n  ENDPROC\nENDMODULE\n";
+      let save engine =
+        let out = Filename.concat dir engine in
+        let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+        let pid = Unix.create_process binary [| binary; "run"; "--engine"; engine; "--save"; out; source |]
+            devnull devnull devnull in
+        Unix.close devnull;
+        let status = match wait_bounded pid 60. with Some (Unix.WEXITED n) -> n | _ -> -1 in
+        (status, read_file (Filename.concat out "cell.mod")) in
+      let ms, machine = save "machine" and cs, closure = save "closure" in
+      Alcotest.(check int) "stopped by ERR_DIVZERO: exit 1" 1 ms;
+      Alcotest.(check int) "the same exit status" ms cs;
+      Alcotest.(check bool) "the values of the run" true
+        (List.for_all (fun l -> List.mem l (String.split_on_char '\n' machine))
+           [ "  PERS num count := 10.25;"; "  PERS string name := \"ab\";  ! kept"; "  PERS pos p := [1,-0.5,3];";
+             "  PERS num row{3} := [1,4,9];" ]);
+      Alcotest.(check string) "the closure engine saves as the machine" machine closure)
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
@@ -237,4 +266,5 @@ let suite = ("services", [
     Alcotest.test_case "--net and --map-address" `Quick address_policy;
     Alcotest.test_case "--save writes values that read back" `Quick literals;
     Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;
+    Alcotest.test_case "--save: both engines write the same modules" `Quick save_engines;
   ])

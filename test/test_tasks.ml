@@ -343,6 +343,43 @@ let test_check_agrees () =
       let _, status = run ("check" :: args) in
       Alcotest.(check int) (case ^ ": check --task") (if refused then 2 else 0) status) cases
 
+(* Both engines through run --task --json (doc/semantics.md, "The second engine"): the same
+   objects, line for line, and the same exit status, for round robin and several seeds; only
+   the step counts are each engine's own (a machine step is not a unit of fuel). *)
+let test_engines_agree () =
+  let dir = temp_dir () in
+  let steps = Str.regexp "\"steps\":[0-9]+" in
+  let normal out = List.map (fun l -> Str.global_replace steps "\"steps\":_" l) (lines out) in
+  let w = write dir "w.mod" "MODULE mw\n  PERS bool lock := TRUE;\n  PROC main()\n    WaitTestAndSet lock;\n  ENDPROC\nENDMODULE\n" in
+  let e = write dir "e.mod" "MODULE me\n  PROC main()\n  ENDPROC\nENDMODULE\n" in
+  let p = write dir "p.mod" "MODULE mp\n  PERS bool go := FALSE;\n  PROC main()\n    WaitUntil go;\n  ENDPROC\nENDMODULE\n" in
+  let a = write dir "ta.mod" turns_a and b = write dir "tb.mod" turns_b in
+  let runs = [
+    ("the hand-shake", shake_args dir);
+    ("turns", [ "--task"; "A=" ^ a; "--task"; "B=" ^ b ]);
+    ("a deadlock", [ "--task"; "A=" ^ w; "--task"; "B=" ^ e ]);
+    ("the time limit", [ "--max-time"; "2"; "--task"; "A=" ^ p; "--task"; "B=" ^ e ]);
+    (* R-14-o: rounds of empty loops, a busy wait for the other task. *)
+    ("empty loops", [ "--task"; "A=../spec/14-tasks/02-empty-loop-round.task/a.mod";
+                      "--task"; "B=../spec/14-tasks/02-empty-loop-round.task/b.mod" ]);
+    ("a busy wait", [ "--task"; "A=../spec/14-tasks/02-busy-wait-empty-loop.task/a.mod";
+                      "--task"; "B=../spec/14-tasks/02-busy-wait-empty-loop.task/b.mod" ]);
+  ] in
+  List.iter (fun (what, args) ->
+      List.iter (fun schedule ->
+          let args = schedule @ args in
+          let m, ms = run ("run" :: "--json" :: "--engine" :: "machine" :: args) in
+          let c, cs = run ("run" :: "--json" :: "--engine" :: "closure" :: args) in
+          let what = what ^ " " ^ String.concat " " schedule in
+          Alcotest.(check int) (what ^ ": exit status") ms cs;
+          Alcotest.(check bool) (what ^ ": events") true (List.length (lines m) > 3);
+          Alcotest.(check (list string)) (what ^ ": the same objects") (normal m) (normal c);
+          (* The closure engine is run's default with --task too. *)
+          let d, ds = run ("run" :: "--json" :: args) in
+          Alcotest.(check int) (what ^ ": default exit status") cs ds;
+          Alcotest.(check (list string)) (what ^ ": the default is the closure engine") (lines c) (lines d))
+        ([] :: List.map (fun s -> [ "--schedule"; string_of_int s ]) [ 1; 2; 3; 7; 99 ])) runs
+
 let suite =
   ( "tasks",
     [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
@@ -354,4 +391,5 @@ let suite =
       Alcotest.test_case "refusals and deadlock" `Quick test_refusals;
       Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
       Alcotest.test_case "task-end outcomes" `Quick test_task_ends;
-      Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait ] )
+      Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait;
+      Alcotest.test_case "run --task: both engines, several schedules" `Quick test_engines_agree ] )

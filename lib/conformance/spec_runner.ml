@@ -82,9 +82,6 @@ let execute engine case (run : Spec_case.run) ~io program =
 let rec run_program engine case (run : Spec_case.run) ~io program =
   match Loopback_lock.exclusive case (fun () -> execute engine case run ~io program) with
   | Error m -> fail case ("cannot run: " ^ m)
-  | Ok (_, (Unsupported { reason; _ } as outcome)) when engine = Closure && Rapid_semantics.Closure_engine.machine_only outcome ->
-      (* What the closure engine leaves to the machine (nothing any more; Closure_engine.machine_only). *)
-      { case; verdict = Skipped; detail = "needs the controller: " ^ reason }
   | Ok r -> judge case run r
 
 (* The output, exit status and error of a run against those the case expects. *)
@@ -133,12 +130,11 @@ let compare_static case expected reports =
                        (String.concat ", §" first.sections) (String.concat ", §" case.sections) o.detail }
       | o -> o)
 
-(* Format 4: several tasks (@task), run as rapid-sem run --task does, by the machine only. *)
+(* Format 4: several tasks (@task), run as rapid-sem run --task does, by either engine. *)
 let run_tasks engine case expected (run : Spec_case.run) =
   let module M = Rapid_semantics.Machine in
   let module TS = Rapid_semantics.Task_set in
-  if engine = Closure then { case; verdict = Skipped; detail = "several tasks: the machine runs them" }
-  else
+  let module CT = Rapid_semantics.Closure_tasks in
   let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
@@ -160,24 +156,35 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
     | Some (_, r) -> r | None -> run.entry in
   let specs = List.map (fun (name, files) -> { TS.name; files; entry = entry_of name }) run.tasks in
-  let result = TS.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~allow_unknown:case.allow_unknown ~io
-      ?seed:run.schedule ?motion_task:run.motion_task ~world ~motion:(Rapid_semantics.Motion_primitives.create ?robot ()) specs in
+  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  let stub_unmodelled = case.Spec_case.stub_unmodelled and allow_unknown = case.allow_unknown in
+  let seed = run.schedule and motion_task = run.motion_task in
+  (* The run's output and outcome, by the chosen engine. *)
+  let result = match engine with
+    | Machine ->
+        Result.map (fun (ts, w) -> ((fun () ->
+            let output = ref [] in
+            let rec loop () =
+              if TS.steps ts < max_steps then
+                match TS.step ts with
+                | None -> ()
+                | Some (_, _, events) -> List.iter (function M.Output s -> output := s :: !output | _ -> ()) events; loop ()
+            in
+            loop ();
+            (List.rev !output, TS.outcome ts)), w)) (TS.start ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs)
+    | Closure ->
+        Result.map (fun (ct, w) -> ((fun () ->
+            let output = ref [] in
+            let r = CT.run ~fuel:max_steps ~all_events:false
+                ~on_event:(fun _ -> function M.Output s -> output := s :: !output | _ -> ()) ct in
+            (List.rev !output, r.outcome)), w)) (CT.start ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs) in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
     | Error (Load (_, Static reports)) -> compare_static case expected reports
     | Error (Load (_, Internal m)) | Error (Refused m) -> fail case m
     | Ok _ when expected <> Spec_case.Accepted -> accepted case expected
-    | Ok (ts, _) ->
-        let output = ref [] in
-        let rec loop () =
-          if TS.steps ts < max_steps then
-            match TS.step ts with
-            | None -> ()
-            | Some (_, _, events) -> List.iter (function M.Output s -> output := s :: !output | _ -> ()) events; loop ()
-        in
-        loop ();
-        judge case run (List.rev !output, TS.outcome ts)
+    | Ok (go, _) -> judge case run (go ())
   in
   release (); verdict
 
@@ -191,7 +198,7 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
     let options = { Parse.default_options with strict = case.strict } in
     let expected = Option.get case.expectation in
     match case.run with
-    | Some ({ tasks = _ :: _; _ } as run) -> run_tasks engine case expected run
+    | Some ({ tasks = _ :: _; _ } as run) -> Loopback_lock.exclusive case (fun () -> run_tasks engine case expected run)
     | _ ->
     let results = List.map (Parse.parse_file ~options) case.files in
     match List.find_map (function Error d -> Some d | Ok _ -> None) results with

@@ -3,7 +3,7 @@ module M = Rapid_semantics.Machine
 module TS = Rapid_semantics.Task_set
 module F = Fuzz_run
 
-let several_tasks_closure : (Fuzz_case.t -> max_steps:int -> F.observed) option ref = ref None
+let several_tasks_closure = ref true
 
 let sources (t : Fuzz_case.task) = List.map (fun m -> (Fuzz_case.module_file m, Program_gen.to_source m)) t.modules
 
@@ -70,6 +70,26 @@ let with_files (c : Fuzz_case.t) f =
       { TS.name = t.task_name; files; entry = "main" }) c.tasks in
   f specs
 
+(* The events of several tasks, each prefixed by its task, as two streams each in its order
+   (the program's, then the world's), as Fuzz_run observes one task: an engine may report what
+   the world did during a step before or after the step's own events. *)
+let streams () =
+  let program = ref [] and world = ref [] in
+  let add name e =
+    let text = name ^ ": " ^ F.event_text e in
+    if M.world_event e then world := text :: !world else program := text :: !program in
+  (add, fun () -> List.rev_append !program ("-- the world's events --" :: List.rev !world))
+
+let observed events (o : M.outcome) task_outcomes =
+  let outcomes = List.map (fun (name, o) -> name ^ " " ^ F.outcome_text o) task_outcomes in
+  let finished = match o with M.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
+  let stuck = List.exists (fun (_, o) -> match o with M.Stuck _ -> true | _ -> false) task_outcomes in
+  let outcome = F.outcome_text o in
+  { F.events = events @ outcomes;
+    outcome = (if stuck && not (String.length outcome >= 5 && String.sub outcome 0 5 = "stuck")
+               then "stuck " ^ String.concat "; " outcomes else outcome);
+    finished }
+
 let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
   let world = Rapid_controller.World.create ?max_time:c.options.max_time io in
   let motion = Rapid_semantics.Motion_primitives.create () in
@@ -78,22 +98,33 @@ let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
   | Error (Load (name, f)) -> Error (match refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
   | Error (Refused m) -> Error (F.Refused m)
   | Ok (ts, _) ->
-      let events = ref [] in
+      let add, events = streams () in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
           | None -> ()
           | Some (name, rule, evs) ->
               F.note_rule rule;
-              List.iter (fun e -> events := (name ^ ": " ^ F.event_text e) :: !events) evs;
+              List.iter (add name) evs;
               loop () in
       loop ();
-      let outcomes = List.map (fun (name, cfg) -> name ^ " " ^ F.outcome_text (TS.task_outcome ts cfg)) (TS.tasks ts) in
-      let o = TS.outcome ts in
-      let finished = match o with M.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
-      let stuck = List.exists (fun (_, cfg) -> match TS.task_outcome ts cfg with M.Stuck _ -> true | _ -> false) (TS.tasks ts) in
-      let outcome = F.outcome_text o in
-      Ok ({ F.events = List.rev !events @ outcomes; outcome = (if stuck && not (String.length outcome >= 5 && String.sub outcome 0 5 = "stuck") then "stuck " ^ String.concat "; " outcomes else outcome); finished })
+      Ok (observed (events ()) (TS.outcome ts)
+            (List.map (fun (name, cfg) -> (name, TS.task_outcome ts cfg)) (TS.tasks ts)))
+
+(* The same tasks by the closure engine (Closure_tasks), in the same kind of world. [fuel] is
+   each task's there, the whole run's for the machine: runs cut short are not compared. *)
+let run_tasks_closure ~max_steps (c : Fuzz_case.t) io specs ~seed =
+  let world = Rapid_controller.World.create ?max_time:c.options.max_time io in
+  let motion = Rapid_semantics.Motion_primitives.create () in
+  match Rapid_semantics.Closure_tasks.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
+          ~allow_unknown:c.options.allow_unknown ~io ?seed ~world ~motion specs with
+  | Error (Load (name, f)) -> Error (match refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
+  | Error (Refused m) -> Error (F.Refused m)
+  | Ok (ct, _) ->
+      let add, events = streams () in
+      let r = Rapid_semantics.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
+      Ok (observed (events ()) r.outcome
+            (List.map (fun (t : Rapid_semantics.Closure_tasks.task_result) -> (t.name, t.task_outcome)) r.tasks))
 
 let check_tasks ~max_steps (c : Fuzz_case.t) io =
   with_files c @@ fun specs ->
@@ -109,16 +140,17 @@ let check_tasks ~max_steps (c : Fuzz_case.t) io =
                   match F.compare_observed "machine twice" first again with
                   | Some d -> Error (F.Nondeterministic d)
                   | None ->
-                      if rest = [] then Ok first else Result.map (fun _ -> first) (each rest))) in
-  Result.bind (each seeds) (fun first ->
-      match !several_tasks_closure with
-      | None -> Ok first
-      | Some run ->
-          let other = run c ~max_steps in
-          if not (first.finished && other.finished) then Ok first
-          else match F.compare_observed "machine / closure (several tasks)" first other with
-            | Some d -> Error (F.Engines_differ d)
-            | None -> Ok first)
+                      let agree =
+                        if not !several_tasks_closure then Ok ()
+                        else
+                          Result.bind (run_tasks_closure ~max_steps c io specs ~seed) (fun (other : F.observed) ->
+                              if not (first.finished && other.finished) then Ok ()
+                              else match F.compare_observed "machine / closure (several tasks)" first other with
+                                | Some d -> Error (F.Engines_differ d)
+                                | None -> Ok ()) in
+                      Result.bind agree (fun () ->
+                          if rest = [] then Ok first else Result.map (fun _ -> first) (each rest)))) in
+  each seeds
 
 let check_case ?(engines = []) ?(max_steps = 200_000) (c : Fuzz_case.t) =
   try

@@ -3,13 +3,12 @@
     progress, determinism, and the engines' agreement in the same world, observed, run with the
     case's stimulus, limits and options. *)
 
-val several_tasks_closure : (Fuzz_case.t -> max_steps:int -> Fuzz_run.observed) option ref
-(** The switch for programs of several tasks. The closure engine runs one task only on this
-    branch, so a case of several tasks is judged on the machine alone (round trip, progress,
-    determinism for its schedule seed and for round robin). Once an engine runs several tasks,
-    set this to its run (events as {!Fuzz_run.observed} holds them, each prefixed by its task's
-    name and a colon, as here) and every such case is compared with the machine too. [None]
-    here. *)
+val several_tasks_closure : bool ref
+(** A case of several tasks is judged on the machine (round trip, progress, determinism for its
+    schedule seed and for round robin) and, while this holds ([true] unless a caller turns it
+    off), compared with the closure engine's run of the same tasks ({!Rapid_semantics.Closure_tasks})
+    for each of those schedules: the events of every task, each prefixed by its task's name, as
+    two streams (the program's and the world's), and every task's outcome. *)
 
 val check_case : ?engines:Fuzz_run.engine list -> ?max_steps:int -> Fuzz_case.t -> (Fuzz_run.observed, Fuzz_run.failure) result
 (** [Ok] with the machine's observation when every property holds. *)

@@ -48,18 +48,22 @@ type wait_end = Finished of string option | Halted of Machine.outcome
    first; then the poll of a WaitUntil condition when its time has come, the wait's own test, the
    deadline; else the clock moves on (wait-advance), or nothing can end the wait
    (wait-deadlock). *)
-let wait w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
+let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
   let now = W.now w in
   let period = Option.value wt.poll ~default:0. in
   let next_poll = ref (match first_poll with Some t -> Float.max t (now +. period) | None -> now +. period) in
   let finish timed_out = Finished (wt.finish ~timed_out) in
+  (* ch. 14: whether this turn (of several tasks) began at this wait's yield and nothing
+     happened since: then the turn was the yield alone, which wakes no other task. *)
+  let fresh = ref false in
   let rec turn () =
-    if serve () then turn ()
+    if serve () then (fresh := false; turn ())
     else
       let now = W.now w in
       let reached t = W.seconds now >= W.seconds t in
       match condition with
       | Some holds when reached !next_poll ->
+          fresh := false;
           if holds () then finish false
           else begin
             next_poll := !next_poll +. Option.value wt.poll ~default:W.default_poll_rate;
@@ -70,12 +74,19 @@ let wait w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
       | _ -> (
           let candidates = List.filter_map Fun.id
               [ wt.deadline; W.next_event w; (if condition = None then None else Some !next_poll) ] in
-          match List.sort compare candidates with
-          | [] ->
+          match List.sort compare candidates, yield with
+          | l, Some yield ->
+              (* ch. 14: another task may end the wait; the scheduler moves the clock when every
+                 task waits (the machine's wait-yield). *)
+              yield ~wake:(match l with t :: _ -> Some t | [] -> None) ~what:wt.what ~pure:!fresh;
+              fresh := true;
+              observe ();
+              turn ()
+          | [], None ->
               Halted (Machine.Deadlock
                         (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
                            now wt.what))
-          | t :: _ when t > W.max_time w -> Halted (time_limit w)
-          | t :: _ -> W.advance_to w t; observe (); turn ())
+          | t :: _, None when t > W.max_time w -> Halted (time_limit w)
+          | t :: _, None -> W.advance_to w t; observe (); turn ())
   in
   turn ()

@@ -13,6 +13,15 @@ let default_fuel = 100_000_000
 
 type result = { outcome : M.outcome; fuel_used : int }
 
+(* Several tasks (Closure_tasks): the run hands the turn over at each statement and wait. *)
+type cooperation = {
+  share : V.t array -> unit;
+  mutable entered : bool;
+  turn : unit -> unit;
+  yield : wake:float option -> what:string -> pure:bool -> unit;
+  native_budget : int;
+}
+
 (* An error in flight (ch. 7): its name (ERR_... or the number of a user error), its number
    (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
 type error = {
@@ -124,6 +133,7 @@ type state = {
       (* §7.3: a user level's handler run by RaiseToUser \Continue, and the NOSTEPIN activation
          its RETRY and TRYNEXT go on in *)
   mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
+  cooperation : cooperation option;   (* one of several tasks (Closure_tasks) *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -153,17 +163,6 @@ let fail ?about st ~at name =
   raise (Raised e)
 
 let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
-
-(* The reason an engine gives for what it leaves to the machine. This one now leaves nothing
-   (doc/semantics.md, "The second engine"); [machine_only] stays for its callers. *)
-let machine_only_reason = "runs on the machine only: use --engine machine"
-
-let machine_only (o : M.outcome) =
-  match o with
-  | Unsupported { reason; _ } ->
-      let n = String.length machine_only_reason and m = String.length reason in
-      m >= n && String.sub reason (m - n) n = machine_only_reason
-  | _ -> false
 
 (* §7.3: the user level of an activation of a NOSTEPIN routine: the first routine above it that
    is not one (none across a trap: its caller is no call), with the statement of its call. *)
@@ -330,8 +329,26 @@ let rec at_point st a =
     st.quiet <- left; st.quiet_base <- left
   end
 
-(* [quiet] is 0 whenever the world is observed. *)
-let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
+(* ch. 14: where the machine's turn ends, a statement of a statement list in focus, after its
+   point of response; what happened in this task's world meanwhile is reported as the turn
+   comes back (the machine reports it after the turn's first step). The entry of the first
+   statement is the task's start's: the machine made for it took it (Closure_tasks). *)
+let entered st a =
+  match st.cooperation with
+  | None -> at_point st a
+  | Some c when not c.entered -> c.entered <- true
+  | Some c -> at_point st a; c.turn (); observe st
+
+(* [quiet] is 0 whenever the world is observed (always with several tasks). *)
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else entered st a [@@inline]
+
+(* A new round of a loop: a point of response, not a statement (no turn ends there). *)
+let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
+
+(* With several tasks, where the machine's turn ends without a statement being entered: a new
+   round of a loop whose body has no statement (R-14-o), the statement RETRY runs again (in
+   focus again, its time not taken again). *)
+let pass_turn st = match st.cooperation with Some c -> c.turn (); observe st | None -> ()
 
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
@@ -835,7 +852,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
       let motion = Motion_primitives.modelled name in
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let tasks = Task_primitives.modelled name in
+      let tasks = Task_primitives.modelled name
+                  || List.exists (fun m -> String.lowercase_ascii m = String.lowercase_ascii name) Task_primitives.motion_instructions in
       let controller = motion || tasks || Io_primitives.modelled name || Service_primitives.modelled name
                        || String.lowercase_ascii name = "errwrite" in
       (* What the world observes during the call is reported before what the routine itself
@@ -1115,7 +1133,8 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
           | None -> false
           | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
-  match CC.wait st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
+  let yield = Option.map (fun c -> c.yield) st.cooperation in
+  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
   | Finished None -> ()
   | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
@@ -1440,7 +1459,7 @@ and guarded st handler (core : act -> bool) : act -> bool =
           match left with `Return -> false | `Raise e -> raise (Leaving e) | `Exit -> raise Exit_task)
     and handle e =
       match run_handler st handler a e with
-      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); attempt true
+      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); pass_turn st; attempt true
       | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); true
       | `Return -> false
     in
@@ -1589,14 +1608,15 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
       let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
       fun a -> if c a then s a else true
-  | While (c, body) ->
-      let c = truth c and body = block body in
+  | While (c, b) ->
+      let c = truth c and body = block b in
+      let empty = Array.length b.body = 0 in
       fun a ->
         let continue = ref true and goes_on = ref true in
         while !continue do
           tick st;
           if c a then (match body a with
-              | true -> at_statement st a  (* a new round (while-again) *)
+              | true -> at_round st a; if empty then pass_turn st  (* a new round (while-again) *)
               | false -> continue := false; goes_on := false
               | exception Continue_loop -> ()
               | exception Break_loop -> continue := false)
@@ -1608,19 +1628,24 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let from_ = number from_ and to_ = number to_ in
       let step = Option.map number step in
       let body = block loop_body in
+      let empty = Array.length loop_body.body = 0 in
       fun a ->
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
-        let v = ref lo and continue = ref true and goes_on = ref true in
+        let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
           a.store.(variable) <- V.Num !v;
           if st.observe then observe_store st a (a.store, variable);
           (match body a with
-           | true -> at_statement st a  (* a new round (for-step, for-done) *)
+           | true ->
+               (* R-14-o: the turn ends after the variable stepped and the empty body passed
+                  (for-step), before the next round's point of response. *)
+               if empty then (if !round then pass_turn st else round := true);
+               at_round st a  (* a new round (for-step, for-done) *)
            | false -> continue := false; goes_on := false
-           | exception Continue_loop -> at_statement st a
+           | exception Continue_loop -> at_round st a
            | exception Break_loop -> continue := false);
           if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
         done;
@@ -1791,23 +1816,23 @@ let error_number_table error_numbers =
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
-    ~all_events ~emit ~world ~motion (program : program) =
+    ?cooperation ~all_events ~emit ~world ~motion (program : program) =
   let numbers = error_number_table program.error_numbers in
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;
     fuel; fuel_limit = fuel; depth = 0; native = 0;
-    native_budget = Native_stack.budget (); booked = []; next_booked = 2001;
+    native_budget = (match cooperation with Some (c : cooperation) -> c.native_budget | None -> Native_stack.budget ()); booked = []; next_booked = 2001;
     next_interrupt = 0; numbers; compiled = [||];
     memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
     world; motion; in_trap = false; interrupts = false;
     (* A stimulus, or collisions, make the world report without the program asking. *)
-    observing = W.next_event world <> None || W.collisions world <> [];
+    observing = W.next_event world <> None || W.collisions world <> [] || cooperation <> None;
     quiet = 0; quiet_base = 0;
     moving = W.collisions world <> [];
     max_time = W.max_time world; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
-    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation;
     prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
                  error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
                  parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
@@ -1837,13 +1862,14 @@ let outcome_of_exception st = function
   | e -> M.Stuck (Printexc.to_string e)
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
-    (program : program) ~entry =
+    ?cooperation ?module_data (program : program) ~entry =
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
   let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion program ~entry
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~world ~motion (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion
+    (program : program) ~entry =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
   let program = Motion_primitives.robot_data motion program in
   let lower = String.lowercase_ascii entry in
@@ -1853,7 +1879,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ~all_events ~emit:on_event ~world ~motion program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~world ~motion program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -1880,6 +1906,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
                   | v -> st.memory <- st.memory + V.bytes v; st.globals.(i) <- V.copy v
                   | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
               | Init_default _ -> ()) program.globals;
+          Option.iter (fun c -> c.share st.globals) cooperation;
           let code = Lazy.force st.compiled.(k) in
           let a = new_act (activation_shape r) r sentinel in
           a.nest <- code.c_nest;
@@ -1916,6 +1943,10 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ~on_event ~wor
          if outcome = M.Ended && all_events then
            List.iter (fun m -> on_event (M.Motion m)) (Motion_primitives.finish st.motion)
        with _ -> ());
+      (* --save (Persistent_save): the module data as the run left it. *)
+      Option.iter (fun f ->
+          f (Array.to_list (Array.mapi (fun i (g : global) -> (g.g_module, g.g_name, st.globals.(i))) program.globals)))
+        module_data;
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
 let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion program ~entry =

@@ -29,10 +29,32 @@ type result = {
           WHILE condition, each FOR iteration) and per routine entered *)
 }
 
+type cooperation = {
+  share : Value.t array -> unit;
+      (** the task's module data, once initialised (§2.21), before the entry routine runs: the
+          slots of the persistents shared with other tasks are set here *)
+  mutable entered : bool;
+      (** whether the entry routine's first statement was entered: [false] when the task's
+          start took that entry already (its statement time, as {!Task_set.start}'s machines
+          do when made); the engine then goes on without taking it again *)
+  turn : unit -> unit;
+      (** a statement of a statement list comes into focus, its time charged and the interrupts
+          served (where the machine's turn ends): returns when it is this task's turn again *)
+  yield : wake:float option -> what:string -> pure:bool -> unit;
+      (** a wait with nothing to do now (the machine's wait-yield): the earliest time the clock
+          can end it, what it waits for, and whether nothing else happened in this turn;
+          returns at the task's next turn *)
+  native_budget : int;
+      (** the native stack budget of the thread it runs on ({!Native_stack.budget}'s units) *)
+}
+(** One task of several ({!Closure_tasks}; doc/semantics.md, "The second engine"): the run
+    hands the turn over where the machine's scheduler ends a turn. *)
+
 val run :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
   ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
-  ?motion:Motion_primitives.state ->
+  ?motion:Motion_primitives.state -> ?cooperation:cooperation ->
+  ?module_data:((string * string * Value.t) list -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -46,19 +68,16 @@ val run :
     the robot of [motion] (default the IRB 120), as {!Machine.start} runs it: virtual time, the
     time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps,
     the asynchronous errors of moves with the program pointer kept (§7.4, §7.6), and the user
-    level of NOSTEPIN routines (§7.3, RaiseToUser). One task only: several are the machine's.
+    level of NOSTEPIN routines (§7.3, RaiseToUser). One task; with [cooperation], one of several
+    ({!Closure_tasks}), whose waits yield instead of moving the clock. [module_data] is given the
+    module data at the end of a run that started (module, name, value, as
+    {!Machine.module_data}: [run --save]).
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
     [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the
     native stack of the running thread can hold also ends as [Resource_exhausted] (the default
     depth of 10,000 needs far less than the usual 8 MB stack; bench/README.md). No OCaml
     exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
-
-val machine_only : Machine.outcome -> bool
-(** Whether the outcome is an [Unsupported] whose reason ends "runs on the machine only: use
-    --engine machine". This engine runs the controller, motion and services as the machine does
-    (doc/semantics.md, "The second engine"), so none of its runs ends so any more; kept for the
-    callers that tell such an end apart. *)
 
 val events :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->

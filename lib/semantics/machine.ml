@@ -2099,6 +2099,15 @@ let pointer_statement cfg =
   | F_stmt s, K_seq (b, j) :: _ when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == s -> Some s
   | _ -> None
 
+(* ch. 14 (R-14-o): the loop whose round the last step began, when its body has no statement:
+   right after while-again its condition is in focus; right after for-step settling has left
+   the empty body already. *)
+let empty_loop_round cfg =
+  match cfg.stack with
+  | K_while_test (_, b) :: _ | K_seq (b, 0) :: K_for_body _ :: _ -> Array.length b.Ir.body = 0
+  | K_for_body (f, _, _) :: _ -> Array.length f.loop_body.Ir.body = 0
+  | _ -> false
+
 (* Each active routine and where it stands, innermost first: a caller stands at its call, the
    statement its callee's activation keeps as the caller's mark. *)
 let call_chain_view cfg =

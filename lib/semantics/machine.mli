@@ -219,6 +219,10 @@ val pointer_statement : config -> Ir.stmt option
 (** The statement the program pointer is at, when the machine stands before a statement of a
     statement list (not the simple statement of a compact IF, which is part of its IF). *)
 
+val empty_loop_round : config -> bool
+(** After a step of rule while-again or for-step: whether the loop's body has no statement
+    (where a turn of several tasks ends, doc/rulings.md R-14-o). *)
+
 
 val call_chain_view : config -> (Ir.routine * Rapid_syntax.Source.region) list
 (** The active routines, innermost first, each with where it stands: the innermost at the

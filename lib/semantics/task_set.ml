@@ -22,6 +22,7 @@ type t = {
   mutable turn_steps : int;
   mutable ended : M.outcome option;     (* a deadlock or the time limit of the whole run *)
   world : W.t;                          (* the first task's: the clock is everyone's *)
+  links : (M.config * int * M.config * int) list;  (* the shared data objects (see [shared]) *)
 }
 
 type failure =
@@ -36,9 +37,6 @@ let splitmix state =
   let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 30)) 0xBF58476D1CE4E5B9L in
   let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 27)) 0x94D049BB133111EBL in
   Int64.logxor z (Int64.shift_right_logical z 31)
-
-(* A turn that never brings a statement into focus (an empty loop) still ends. *)
-let max_turn_steps = 1000
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
@@ -66,7 +64,7 @@ type shared_pers = { owner : M.config; slot : int; type_text : string; mutable h
 (* ch. 14: one value for every task declaring the persistent with the same name and type; the
    initial value of the first declaration (in the order of the tasks) that has one, else the
    type's initial value (R-14-b). A different type is refused (R-14-c). *)
-let share_persistents (tasks : (string * M.config * Ast.module_declaration list) list) =
+let share_persistents ~link (tasks : (string * M.config * Ast.module_declaration list) list) =
   let table = Hashtbl.create 16 in
   let rec go = function
     | [] -> Ok ()
@@ -104,7 +102,7 @@ let share_persistents (tasks : (string * M.config * Ast.module_declaration list)
                          | None -> ());
                         p.has_init <- true
                       end;
-                      M.share_global cfg j ~with_:(p.owner, p.slot);
+                      link cfg j (p.owner, p.slot);
                       each more))
         in
         each (system_global_pers modules)
@@ -114,7 +112,7 @@ let share_persistents (tasks : (string * M.config * Ast.module_declaration list)
 (* ch. 14: an installed data object is one for every task ("所有其他数据对象与其他任务共享值"), except
    ERRNO and INTNO, whose values are each task's (R-14-g). Installed: a global of a module that
    is not one of the task's own. *)
-let share_installed (tasks : (string * M.config * Ast.module_declaration list) list) =
+let share_installed ~link (tasks : (string * M.config * Ast.module_declaration list) list) =
   match tasks with
   | [] -> ()
   | (_, first, _) :: rest ->
@@ -126,7 +124,7 @@ let share_installed (tasks : (string * M.config * Ast.module_declaration list) l
           Array.iteri (fun i (g : Ir.global) ->
               if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then
                 match global_index first_program ~module_name:g.g_module ~name:g.g_name with
-                | Some j when j <> first_program.errno && j <> first_program.intno -> M.share_global cfg i ~with_:(first, j)
+                | Some j when j <> first_program.errno && j <> first_program.intno -> link cfg i (first, j)
                 | _ -> ()) program.globals) rest
 
 let parse_all files =
@@ -171,14 +169,16 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
       | Error f -> Error f
       | Ok started -> (
           let triples = List.map (fun (n, c, m, _) -> (n, c, m)) started in
-          share_installed triples;
-          match share_persistents triples with
+          let links = ref [] in
+          let link cfg i (owner, j) = M.share_global cfg i ~with_:(owner, j); links := (cfg, i, owner, j) :: !links in
+          share_installed ~link triples;
+          match share_persistents ~link triples with
           | Error f -> Error f
           | Ok () ->
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
               let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
               let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
-              Ok ({ tasks; order; cursor = 0; current = None; turn_steps = 0; ended = None; world }, warnings))
+              Ok ({ tasks; order; cursor = 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links }, warnings))
 
 let running task = M.outcome task.cfg = M.Running
 
@@ -243,7 +243,10 @@ let step s =
         if rule = "wait-yield" then (task.idle <- true; s.current <- None)
         else begin
           Array.iter (fun t -> t.idle <- false) s.tasks;
-          if not (running task) || M.pointer_statement task.cfg <> None || s.turn_steps >= max_turn_steps then
+          (* R-14-o: a new round of a loop without a statement ends the turn too, so that every
+             turn ends (a loop waiting for another task with an empty body lets it run). *)
+          if not (running task) || M.pointer_statement task.cfg <> None
+             || ((rule = "while-again" || rule = "for-step") && M.empty_loop_round task.cfg) then
             s.current <- None
         end;
         Some (task.t_name, rule, events)
@@ -264,6 +267,12 @@ let outcome s =
       | None -> M.Ended)
 
 let world s = s.world
+
+let shared s =
+  let index cfg =
+    let rec go k = if s.tasks.(k).cfg == cfg then k else go (k + 1) in
+    go 0 in
+  List.map (fun (cfg, i, owner, j) -> (index cfg, i, index owner, j)) s.links
 
 (* A task the scheduler's end of the run caught still running has no end of its own: in a
    deadlock it is deadlocked, waiting for what it waits for; at the time limit of the whole run,

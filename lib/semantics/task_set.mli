@@ -51,5 +51,10 @@ val steps : t -> int
 val world : t -> Rapid_controller.World.t
 (** The clock of the run (the first task's world). *)
 
+val shared : t -> (int * int * int * int) list
+(** The data objects the tasks share (system-global persistents, installed data): task [k]'s
+    global slot [i] is task [k']'s slot [j], as [(k, i, k', j)], tasks numbered from 0 in their
+    order; [k'] owns the value, and its slot is shared with nothing else. *)
+
 val splitmix : int64 ref -> int64
 (** SplitMix64: the next number of the state (the state moves on). *)

@@ -1,1 +1,1 @@
-run --json --task T_ROB1=tasks-robot.mod --task T_B=tasks-cell-late.mod
+run --engine machine --json --task T_ROB1=tasks-robot.mod --task T_B=tasks-cell-late.mod

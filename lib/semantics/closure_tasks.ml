@@ -1,0 +1,265 @@
+(* Several tasks by the closure engine (ch. 14). The closure engine recurses on the native stack,
+   so a task cannot be suspended between two statements as a machine can: each task runs on a
+   thread of its own, and a hand-off (one mutex, one condition) lets exactly one run at a time.
+   The scheduler, on the calling thread, gives the turns by Task_set's rules; a task hands the
+   turn back where the machine's turn ends, so that both engines make the same events in the
+   same order for every schedule. *)
+
+module M = Machine
+module W = Rapid_controller.World
+module C = Closure_engine
+
+(* How a task's turn ended. *)
+type reply =
+  | Boundary                                          (* a statement in focus *)
+  | Yielded of { wake : float option; what : string; pure : bool }
+  | Finished of (C.result, string) Stdlib.result
+  | Crashed of exn                                    (* raised by the caller's on_event *)
+
+type command = Go | Abort
+
+exception Aborted   (* the run ended while the task was still running: its thread unwinds *)
+
+type task = {
+  name : string;
+  program : Ir.program;
+  entry : string;
+  world : W.t;
+  motion : Motion_primitives.state;
+  mutable globals : Value.t array;         (* its module data, once initialised *)
+  mutable links : (int * int) list;        (* a slot of [globals] and the shared object it is *)
+  mutable reply : reply option;
+  mutable command : command option;
+  mutable idle : bool;                     (* it yielded, and nothing happened since *)
+  mutable wake : float option;             (* the time its last yield gave *)
+  mutable what : string option;            (* what its last yield waits for *)
+  mutable finished : C.result option;
+  mutable fuel_used : int;
+  mutable thread : Thread.t option;
+  wakeup : Condition.t;                    (* its turn comes, or its end *)
+}
+
+type order = Round_robin | Seeded of int64 ref
+
+type t = {
+  members : task array;
+  shared : Value.t array;                  (* each shared data object's value *)
+  order : order;
+  mutable cursor : int;
+  mutable ended : M.outcome option;        (* a deadlock or the time limit of the whole run *)
+  mutable cut : bool;                      (* a task ran out of fuel: the run stopped *)
+  mutable aborting : bool;
+  mutable ran : bool;
+  limits : M.limits option;
+  stub_unmodelled : bool option;
+  clock : W.t;
+  mutable over : bool;                     (* the run is over: no more turns *)
+  mutable crashed : exn option;            (* what a caller's on_event raised *)
+  lock : Mutex.t;
+  done_ : Condition.t;                     (* the run is over *)
+}
+
+type task_result = { name : string; task_outcome : M.outcome; fuel_used : int; module_data : (string * string * Value.t) list }
+type result = { outcome : M.outcome; tasks : task_result list }
+
+(* A thread's stack is the C library's default: the soft limit when there is one (glibc), 2 MB
+   on x86-64 when it is unlimited (Native_stack reports 1 GB then); at most 8 MB counted. *)
+let thread_budget () =
+  let limit = Native_stack.native_stack_bytes () in
+  let stack = if limit >= 1024 * 1024 * 1024 then 2 * 1024 * 1024 else min limit (8 * 1024 * 1024) in
+  min (Native_stack.budget ()) (stack / Native_stack.bytes_per_nest)
+
+let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion (specs : Task_set.spec list) =
+  match Task_set.start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion specs with
+  | Error f -> Error f
+  | Ok (ts, warnings) ->
+      (* The machines Task_set made are not run: they give the loaded programs, the worlds, the
+         robot, and the values of the shared data objects as ch. 14 initialises them. *)
+      let machines = Array.of_list (List.map snd (Task_set.tasks ts)) in
+      let tasks = Array.of_list (List.map2 (fun (s : Task_set.spec) cfg ->
+          { name = s.name; program = M.program cfg; entry = s.entry; world = M.world cfg; motion = M.motion cfg;
+            globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
+            finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) specs (Array.to_list machines)) in
+      let objects = Hashtbl.create 64 in
+      let shared = ref [] in
+      let object_of k j =
+        match Hashtbl.find_opt objects (k, j) with
+        | Some n -> n
+        | None ->
+            let n = Hashtbl.length objects in
+            Hashtbl.replace objects (k, j) n;
+            let v = match M.read_data machines.(k) (Ir.Global j) with Some v -> Value.copy v | None -> Value.Bool false in
+            shared := v :: !shared;
+            tasks.(k).links <- (j, n) :: tasks.(k).links;
+            n in
+      List.iter (fun (k, i, k', j) ->
+          let n = object_of k' j in
+          tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
+      let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
+      Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = 0; ended = None; cut = false;
+            aborting = false; ran = false; limits; stub_unmodelled; clock = world; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
+          warnings)
+
+(* The shared data objects: a task's slots hold the same values as the others' while it runs
+   (only one runs at a time); a value written whole is taken over when the turn passes. *)
+let publish t task = List.iter (fun (slot, n) -> t.shared.(n) <- task.globals.(slot)) task.links
+let take_over t task = List.iter (fun (slot, n) -> task.globals.(slot) <- t.shared.(n)) task.links
+
+let running task = task.finished = None
+
+let same_rules_choose t =
+  let candidates = List.filter (fun k -> running t.members.(k) && not t.members.(k).idle)
+      (List.init (Array.length t.members) Fun.id) in
+  match candidates, t.order with
+  | [], _ -> None
+  | _, Round_robin ->
+      let n = Array.length t.members in
+      let rec look i = if List.mem (i mod n) candidates then i mod n else look (i + 1) in
+      let k = look t.cursor in
+      t.cursor <- (k + 1) mod n; Some t.members.(k)
+  | _, Seeded state ->
+      let r = Int64.unsigned_rem (Task_set.splitmix state) (Int64.of_int (List.length candidates)) in
+      Some t.members.(List.nth candidates (Int64.to_int r))
+
+let waiting_tasks t =
+  Array.to_list t.members |> List.filter running
+  |> List.map (fun task -> match task.what with Some what -> task.name ^ " for " ^ what | None -> task.name)
+
+(* Every running task waits: Task_set's all_wait. *)
+let all_wait t =
+  let times = Array.to_list t.members |> List.filter running |> List.filter_map (fun task -> task.wake) in
+  match List.sort compare times with
+  | [] ->
+      t.ended <- Some (M.Deadlock (Printf.sprintf
+                                     "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
+                                     (W.now t.clock) (String.concat "; " (waiting_tasks t))))
+  | w :: _ when w > W.max_time t.clock ->
+      t.ended <- Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time t.clock)))
+  | w :: _ ->
+      W.advance_to t.clock w;
+      Array.iter (fun task -> task.idle <- false) t.members
+
+let wake_all t = Array.iter (fun task -> task.idle <- false) t.members
+
+(* The scheduler, run by the thread whose turn just ended (under the lock): the turn's end as
+   Task_set.step counts it, then the next task's turn, or the end of the run. A turn passes
+   straight from one task's thread to the next's. *)
+let rec pick t =
+  if t.ended <> None || t.cut || t.crashed <> None || not (Array.exists running t.members) then begin
+    t.over <- true; Condition.signal t.done_
+  end
+  else
+    match same_rules_choose t with
+    | Some next -> next.command <- Some Go; Condition.signal next.wakeup
+    | None -> all_wait t; pick t
+
+let turn_ended t task reply =
+  (match reply with
+   | Boundary -> wake_all t
+   | Yielded { wake; what; pure } ->
+       if not pure then wake_all t;
+       task.idle <- true; task.wake <- wake; task.what <- Some what
+   | Finished (Ok r) ->
+       wake_all t;
+       task.finished <- Some r; task.fuel_used <- r.fuel_used;
+       if r.outcome = M.Running then t.cut <- true
+   | Finished (Error m) ->
+       wake_all t;
+       task.finished <- Some { C.outcome = M.Stuck m; fuel_used = 0 }
+   | Crashed e -> t.crashed <- Some e; task.finished <- Some { C.outcome = M.Running; fuel_used = 0 });
+  pick t
+
+(* On the task's thread (lock held): wait for its turn. *)
+let await t task =
+  while task.command = None do Condition.wait task.wakeup t.lock done;
+  let command = task.command in
+  task.command <- None;
+  command
+
+(* On the task's thread: the turn passes on until it comes back. *)
+let hand_over t task reply =
+  if t.aborting then raise Aborted;
+  publish t task;
+  Mutex.lock t.lock;
+  let command =
+    match turn_ended t task reply; await t task with
+    | command -> Mutex.unlock t.lock; command
+    | exception e ->
+        (* Not part of the semantics (the hand-off failed): the run ends, and says so. *)
+        t.crashed <- Some e; t.over <- true; Condition.signal t.done_; Mutex.unlock t.lock;
+        raise Aborted in
+  match command with
+  | Some Go -> take_over t task
+  | _ -> raise Aborted
+
+let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event () =
+  Mutex.lock t.lock;
+  let command = await t task in
+  Mutex.unlock t.lock;
+  let reply =
+    if command <> Some Go then Finished (Error "not run")
+    else
+      let cooperation = {
+        C.share = (fun globals -> task.globals <- globals; take_over t task);
+        entered = false;
+        turn = (fun () -> hand_over t task Boundary);
+        yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
+        native_budget = thread_budget () } in
+      let on_event e = if not t.aborting then on_event task.name e in
+      match C.run ?limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
+              ~motion:task.motion ~cooperation task.program ~entry:task.entry with
+      | r -> if task.globals <> [||] then publish t task; Finished r
+      | exception e -> Crashed e
+  in
+  Mutex.lock t.lock;
+  (match reply with
+   | Finished (Ok r) when t.aborting -> task.fuel_used <- r.fuel_used
+   | _ when t.aborting -> ()
+   | reply -> turn_ended t task reply);
+  Mutex.unlock t.lock
+
+let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_event = fun _ _ -> ()) t =
+  let limits = t.limits and stub_unmodelled = t.stub_unmodelled in
+  if t.ran then invalid_arg "Closure_tasks.run: the tasks ran already";
+  t.ran <- true;
+  Array.iter (fun task ->
+      task.thread <- Some (Thread.create (body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event) ()))
+    t.members;
+  Mutex.lock t.lock;
+  pick t;
+  while not t.over do Condition.wait t.done_ t.lock done;
+  (* The tasks the run's end caught still running unwind (their events no longer count). *)
+  t.aborting <- true;
+  Array.iter (fun task -> if running task then (task.command <- Some Abort; Condition.signal task.wakeup)) t.members;
+  Mutex.unlock t.lock;
+  Array.iter (fun task -> Option.iter Thread.join task.thread) t.members;
+  Option.iter raise t.crashed;
+  let task_outcome (task : task) =
+    match task.finished, t.ended with
+    | Some r, _ -> r.C.outcome
+    | None, Some (M.Deadlock _) ->
+        M.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, and no task or event can end the wait"
+                      (W.now t.clock) (Option.value task.what ~default:"a wait"))
+    | None, Some o -> o
+    | None, None -> M.Running in
+  let outcome =
+    match t.ended with
+    | Some o -> o
+    | None -> (
+        match Array.to_list t.members |> List.map task_outcome |> List.find_opt (fun o -> o <> M.Ended) with
+        | Some o -> o
+        | None -> M.Ended) in
+  { outcome;
+    tasks = Array.to_list (Array.map (fun (task : task) ->
+        { name = task.name; task_outcome = task_outcome task;
+          fuel_used = task.fuel_used;
+          module_data = Array.to_list (Array.mapi (fun i (g : Ir.global) ->
+              (g.g_module, g.g_name, if i < Array.length task.globals then task.globals.(i) else Value.Bool false))
+              task.program.globals) }) t.members) }
+
+let names t = Array.to_list (Array.map (fun (task : task) -> task.name) t.members)
+let world t = t.clock
+
+let motion_task t =
+  Array.to_list t.members |> List.find_opt (fun (task : task) -> W.motion_task task.world)
+  |> Option.map (fun (task : task) -> (task.name, task.motion))

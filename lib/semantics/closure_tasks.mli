@@ -1,0 +1,59 @@
+(** Several tasks on one virtual clock by the closure engine (ch. 14; doc/semantics.md, "The
+    second engine" and "Several tasks").
+
+    The tasks are loaded and checked as {!Task_set.start} loads them (the same refusals, the
+    same shared data objects, the same initial values); each then runs as a
+    {!Closure_engine.run} of its own, on a thread of its own, and exactly one runs at a time.
+    Each hands the turn over where the machine's scheduler ends a turn (a statement of a
+    statement list in focus, a wait with nothing to do, the end of the task), and the scheduler
+    here chooses the next task by {!Task_set}'s rules: round robin in the order of the tasks, or
+    with a seed SplitMix64's order; when every running task waits, the clock moves to the
+    earliest time one gave; with none, a deadlock. *)
+
+type t
+
+val start :
+  ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  world:Rapid_controller.World.t -> motion:Motion_primitives.state -> Task_set.spec list ->
+  (t * Rapid_typing.Report.t list, Task_set.failure) result
+(** As {!Task_set.start}; nothing runs yet. *)
+
+type task_result = {
+  name : string;
+  task_outcome : Machine.outcome;
+      (** as {!Task_set.task_outcome}: its own end, or the run's deadlock (what it waits for) or
+          time limit; [Running] when the run stopped at the fuel limit *)
+  fuel_used : int;      (** {!Closure_engine.result}'s, of this task *)
+  module_data : (string * string * Value.t) list;
+      (** its module data at the end (module, name, value), as {!Machine.module_data} *)
+}
+
+type result = {
+  outcome : Machine.outcome;
+      (** as {!Task_set.outcome}: a deadlock or the time limit of the whole run, else the
+          outcome of the first task (in order) that did not end normally, else [Ended];
+          [Running] when a task ran out of fuel (the run then stops: the step limit) *)
+  tasks : task_result list;   (** in the order of the tasks *)
+}
+
+val run :
+  ?fuel:int -> ?all_events:bool -> ?observe:bool -> ?on_event:(string -> Machine.event -> unit) ->
+  t -> result
+(** Runs every task to its end (or the run's), calling [on_event] with the task's name on each
+    observable event as it happens, in the machine's order. [fuel] is each task's
+    ({!Closure_engine.run}'s), [all_events] and [observe] as there. Once. An exception that
+    [on_event] raises ends the run and is raised again here, every task's thread ended. *)
+
+val names : t -> string list
+
+val world : t -> Rapid_controller.World.t
+(** The clock of the run (the first task's world). *)
+
+val motion_task : t -> (string * Motion_primitives.state) option
+(** The task that has the robot, and its motion. *)
+
+val thread_budget : unit -> int
+(** The native stack budget of a task's thread: {!Native_stack.budget}, at most that of the C
+    library's default thread stack (the soft limit, 2 MB when it is unlimited, at most 8 MB
+    counted): a thread's stack is not the main thread's. *)

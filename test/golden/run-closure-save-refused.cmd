@@ -1,1 +1,0 @@
-run --engine closure --save saved run-hello.mod
