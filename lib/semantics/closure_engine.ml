@@ -1699,6 +1699,43 @@ and goto_stmt acc (s : stmt) =
    list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
    the value is neither stored in the activation nor tested for. Each statement is entered as
    [block] enters it (a unit of fuel, a point of response); the list's end is never reached. *)
+(* A valued body of exactly two statements, [IF own op k RETURN e1; RETURN x op' y;], e1 an own
+   slot or a literal and op' one of +, -, * of two operands neither a num literal (the end of a
+   recursion, then its step): both statements in one closure, the comparison as [condition]
+   makes it and the operator as [binary] computes it, in the same order. Each statement is
+   entered as [block] enters it; the run is [valued_body]'s general form's, step for step. *)
+let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
+  let own i = local_access r i = Own in
+  match b.body with
+  | [| { s = Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
+                         { s = Return (Some e1); _ }); sat = at1; _ };
+       { s = Return (Some { e = Binary ((Num_add | Num_sub | Num_mul) as op', x, y); _ }); sat = at2; _ } |]
+    when is_num_comparison op && own i
+         && (match e1.e with Read (Whole (Local j)) -> own j | Literal _ -> true | _ -> false)
+         && (match y.e with Literal (V.Num _) -> false | _ -> true) ->
+      (* the first statement's value: an own slot ([j]), or else the literal [w] *)
+      let j, w = match e1.e with Read (Whole (Local j)) -> (j, no_value) | Literal w -> (-1, w) | _ -> assert false in
+      let slow_if u = V.bool_value (check st ~at:at1 (Arith.binary op u v)) in
+      let slow u' v' = check st ~at:at2 (Arith.binary op' u' v') in
+      let x = expr st r ~at:at2 x and y = expr st r ~at:at2 y in
+      let lt = op = Arith.Num_lt in
+      Some (fun a ->
+          tick st; at_statement st a;
+          if (match a.store.(i) with
+              | V.Num p -> if lt then p < q else compare_nums op p q
+              | u -> slow_if u)
+          then (if j >= 0 then a.store.(j) else w)
+          else begin
+            tick st; at_statement st a;
+            let u' = x a in
+            let v' = y a in
+            match u', v' with
+            | V.Num p, V.Num q' ->
+                single_num st ~at:at2 (match op' with Num_add -> p +. q' | Num_sub -> p -. q' | _ -> p *. q')
+            | _ -> slow u' v'
+          end)
+  | _ -> None
+
 let valued_body st (r : routine) ~gotos : (act -> V.t) option =
   let b = r.body in
   let n = Array.length b.body in
@@ -1706,6 +1743,9 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
   if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || not ends_in_return
   then None
   else
+    match guarded_return st r b with
+    | Some f -> Some f
+    | None ->
     let rec from k : act -> V.t =
       let s = b.body.(k) in
       match s.s with
