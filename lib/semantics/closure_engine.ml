@@ -987,7 +987,32 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
      one test each; otherwise [start] takes it, to stop at the budget that runs out first. *)
   let entered_event = M.Routine_entered callee.name and left_event = M.Routine_left callee.name in
   let events = st.all_events and observe = st.observe in
+  (* A valued body's call, once its code is known ([fast]), with the budgets' bounds computed
+     once: [quick]'s tests, in a form that needs fewer loads. *)
+  let max_depth = limits.max_call_depth and room = limits.max_memory - act_bytes
+  and native_budget = st.native_budget in
+  let fast = ref None in
+  let valued (a : act) store pending code body =
+    let level = a.level + 1 and nest = code.c_nest in
+    if level < max_depth && st.memory + pending <= room && st.fuel > 0 && st.native + nest <= native_budget
+    then begin
+      st.fuel <- st.fuel - 1;
+      let memory = pending + act_bytes in
+      let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+      st.native <- st.native + nest;
+      st.memory <- st.memory + memory;
+      st.depth <- level + 1;
+      if events then st.emit entered_event;
+      match if has_init then code.c_init at c; body c with
+      | v -> release st c; if events then st.emit left_event; v
+      | exception left -> left_by st code c left
+    end
+    else start a store pending
+  in
   let quick (a : act) store pending =
+      match !fast with
+      | Some (code, body) -> valued a store pending code body
+      | None ->
       match !code with
       | Some code when not observe ->
           let level = a.level + 1 and nest = code.c_nest in
@@ -1002,6 +1027,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             if events then st.emit entered_event;
             match code.c_value with
             | Some body -> (
+                fast := Some (code, body);
                 match if has_init then code.c_init at c; body c with
                 | v -> release st c; if events then st.emit left_event; v
                 | exception left -> left_by st code c left)
@@ -1027,13 +1053,35 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let w0 = whats.(0) in
       let slow u = check st ~at (Arith.binary op u v) in
       let sub = op = Arith.Num_sub in
+      let stepped a v =
+        if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+        quick a [| v |] 32 in
       fun a -> (
         match a.store.(i) with
-        | V.Num p ->
+        | V.Num p -> (
             (* a num: 32 bytes (value_bytes), its copy itself *)
             let v = single_num st ~at (if sub then p -. q else p +. q) in
-            if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
-            quick a [| v |] 32
+            match !fast with
+            | Some (code, body) ->
+                (* [valued] here, the copy's bytes tested with the activation's: when any test
+                   fails, [stepped] makes them one by one, as the general path *)
+                let level = a.level + 1 and nest = code.c_nest in
+                if level < max_depth && st.memory + 32 <= room && st.fuel > 0 && st.native + nest <= native_budget
+                then begin
+                  st.fuel <- st.fuel - 1;
+                  let memory = 32 + act_bytes in
+                  let c = { routine = callee; store = [| v |]; ext = shared_extension; level; parent = a;
+                            result = no_value; nest; memory } in
+                  st.native <- st.native + nest;
+                  st.memory <- st.memory + memory;
+                  st.depth <- level + 1;
+                  if events then st.emit entered_event;
+                  match if has_init then code.c_init at c; body c with
+                  | v -> release st c; if events then st.emit left_event; v
+                  | exception left -> left_by st code c left
+                end
+                else stepped a v
+            | None -> stepped a v)
         | u ->
             let v = slow u in
             let b = value_bytes v in
@@ -1718,22 +1766,39 @@ let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
       let slow_if u = V.bool_value (check st ~at:at1 (Arith.binary op u v)) in
       let slow u' v' = check st ~at:at2 (Arith.binary op' u' v') in
       let x = expr st r ~at:at2 x and y = expr st r ~at:at2 y in
-      let lt = op = Arith.Num_lt in
-      Some (fun a ->
-          tick st; at_statement st a;
-          if (match a.store.(i) with
-              | V.Num p -> if lt then p < q else compare_nums op p q
-              | u -> slow_if u)
-          then (if j >= 0 then a.store.(j) else w)
-          else begin
-            tick st; at_statement st a;
-            let u' = x a in
-            let v' = y a in
-            match u', v' with
-            | V.Num p, V.Num q' ->
-                single_num st ~at:at2 (match op' with Num_add -> p +. q' | Num_sub -> p -. q' | _ -> p *. q')
-            | _ -> slow u' v'
-          end)
+      let arith p q' = match op' with Num_add -> p +. q' | Num_sub -> p -. q' | _ -> p *. q' [@@inline] in
+      (* the second statement, entered *)
+      let second a =
+        tick st; at_statement st a;
+        let u' = x a in
+        let v' = y a in
+        match u', v' with
+        | V.Num p, V.Num q' -> single_num st ~at:at2 (arith p q')
+        | _ -> slow u' v' in
+      begin match op with
+      | Num_lt ->
+          (* the usual end of a recursion, its comparison a branch of its own *)
+          Some (fun a ->
+              tick st; at_statement st a;
+              match a.store.(i) with
+              | V.Num p ->
+                  if p < q then (if j >= 0 then a.store.(j) else w)
+                  else begin
+                    tick st; at_statement st a;
+                    let u' = x a in
+                    let v' = y a in
+                    match u', v' with
+                    | V.Num p, V.Num q' -> single_num st ~at:at2 (arith p q')
+                    | _ -> slow u' v'
+                  end
+              | u -> if slow_if u then (if j >= 0 then a.store.(j) else w) else second a)
+      | _ ->
+          Some (fun a ->
+              tick st; at_statement st a;
+              if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow_if u)
+              then (if j >= 0 then a.store.(j) else w)
+              else second a)
+      end
   | _ -> None
 
 let valued_body st (r : routine) ~gotos : (act -> V.t) option =
