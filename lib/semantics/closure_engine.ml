@@ -81,6 +81,10 @@ type compiled = {
   c_value : (act -> V.t) option;
       (* a function whose body ends in RETURN e, for the direct path: its body giving RETURN's
          value itself, not through [result] (see [valued_body]) *)
+  c_guard : (Arith.binary * float * V.t option) option;
+      (* with [c_value], when its first statement is [IF slot1 op k RETURN e;], e the first slot
+         (None) or a literal: the comparison and k, for a call that can see it holds before the
+         activation is built (see [direct_call]) *)
 }
 
 type state = {
@@ -992,6 +996,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   let max_depth = limits.max_call_depth and room = limits.max_memory - act_bytes
   and native_budget = st.native_budget in
   let fast = ref None in
+  let leaf = ref None in   (* the callee's [c_guard], when [fast] is known *)
   let valued (a : act) store pending code body =
     let level = a.level + 1 and nest = code.c_nest in
     if level < max_depth && st.memory + pending <= room && st.fuel > 0 && st.native + nest <= native_budget
@@ -1028,6 +1033,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             match code.c_value with
             | Some body -> (
                 fast := Some (code, body);
+                leaf := (if has_init then None else code.c_guard);
                 match if has_init then code.c_init at c; body c with
                 | v -> release st c; if events then st.emit left_event; v
                 | exception left -> left_by st code c left)
@@ -1068,6 +1074,19 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                 let level = a.level + 1 and nest = code.c_nest in
                 if level < max_depth && st.memory + 32 <= room && st.fuel > 0 && st.native + nest <= native_budget
                 then begin
+                  match !leaf, v with
+                  | Some (op, k, w), V.Num x when st.fuel > 1 && st.quiet > 0 && compare_nums op x k ->
+                      (* The callee's first statement returns: its unit of fuel and the call's,
+                         its entry (no point of response falls due: [quiet]), its value; what the
+                         activation would have counted is given back as it returns, so it is
+                         not built. *)
+                      st.fuel <- st.fuel - 1;
+                      if events then st.emit entered_event;
+                      tick st; at_statement st a;
+                      st.depth <- level;
+                      if events then st.emit left_event;
+                      (match w with None -> v | Some w -> w)
+                  | _ ->
                   st.fuel <- st.fuel - 1;
                   let memory = 32 + act_bytes in
                   let c = { routine = callee; store = [| v |]; ext = shared_extension; level; parent = a;
@@ -1843,6 +1862,25 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
     in
     Some (from 0)
 
+(* [c_guard]: a body that [valued_body] compiles, of a routine with one slot and no routine
+   data, whose first statement is [IF slot1 op k RETURN e;], e the slot or a literal. *)
+let leading_guard (r : routine) ~gotos =
+  let b = r.body in
+  let n = Array.length b.body in
+  if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || n < 2
+     || r.locals > 1 || Array.length r.parameters <> 1 || r.local_inits <> []
+     || local_access r 0 <> Own
+     || (match b.body.(n - 1).s with Return (Some _) -> false | _ -> true) then None
+  else
+    match b.body.(0).s with
+    | Compact_if ({ e = Binary (op, { e = Read (Whole (Local 0)); _ }, { e = Literal (V.Num q); _ }); _ },
+                  { s = Return (Some e); _ }) when is_num_comparison op -> (
+        match e.e with
+        | Read (Whole (Local 0)) -> Some (op, q, None)
+        | Literal w -> Some (op, q, Some w)
+        | _ -> None)
+    | _ -> None
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -1868,7 +1906,8 @@ let compile_routine st k =
     | [] -> fun _ _ -> ()
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
-    c_value = valued_body st r ~gotos }
+    c_value = valued_body st r ~gotos;
+    c_guard = leading_guard r ~gotos }
 
 let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ~all_events ~emit ~world ~motion (program : program) =
