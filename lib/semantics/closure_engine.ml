@@ -1075,7 +1075,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                 if level < max_depth && st.memory + 32 <= room && st.fuel > 0 && st.native + nest <= native_budget
                 then begin
                   match !leaf, v with
-                  | Some (op, k, w), V.Num x when st.fuel > 1 && st.quiet > 0 && compare_nums op x k ->
+                  | Some (op, k, w), V.Num x
+                    when st.fuel > 1 && st.quiet > 0 && (if op == Arith.Num_lt then x < k else compare_nums op x k) ->
                       (* The callee's first statement returns: its unit of fuel and the call's,
                          its entry (no point of response falls due: [quiet]), its value; what the
                          activation would have counted is given back as it returns, so it is
@@ -1785,14 +1786,14 @@ let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
       let slow_if u = V.bool_value (check st ~at:at1 (Arith.binary op u v)) in
       let slow u' v' = check st ~at:at2 (Arith.binary op' u' v') in
       let x = expr st r ~at:at2 x and y = expr st r ~at:at2 y in
-      let arith p q' = match op' with Num_add -> p +. q' | Num_sub -> p -. q' | _ -> p *. q' [@@inline] in
+      let add = op' = Arith.Num_add and sub = op' = Arith.Num_sub in
       (* the second statement, entered *)
       let second a =
         tick st; at_statement st a;
         let u' = x a in
         let v' = y a in
         match u', v' with
-        | V.Num p, V.Num q' -> single_num st ~at:at2 (arith p q')
+        | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
         | _ -> slow u' v' in
       begin match op with
       | Num_lt ->
@@ -1807,7 +1808,7 @@ let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
                     let u' = x a in
                     let v' = y a in
                     match u', v' with
-                    | V.Num p, V.Num q' -> single_num st ~at:at2 (arith p q')
+                    | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
                     | _ -> slow u' v'
                   end
               | u -> if slow_if u then (if j >= 0 then a.store.(j) else w) else second a)
