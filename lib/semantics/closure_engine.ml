@@ -1076,7 +1076,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                 then begin
                   match !leaf, v with
                   | Some (op, k, w), V.Num x
-                    when st.fuel > 1 && st.quiet > 0 && (if op == Arith.Num_lt then x < k else compare_nums op x k) ->
+                    when (if op == Arith.Num_lt then x < k else compare_nums op x k) && st.fuel > 1 && st.quiet > 0 ->
                       (* The callee's first statement returns: its unit of fuel and the call's,
                          its entry (no point of response falls due: [quiet]), its value; what the
                          activation would have counted is given back as it returns, so it is
