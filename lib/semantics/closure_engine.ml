@@ -1077,10 +1077,10 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                   match !leaf, v with
                   | Some (op, k, w), V.Num x
                     when (if op == Arith.Num_lt then x < k else compare_nums op x k) && st.fuel > 1 && st.quiet > 0 ->
-                      (* The callee's first statement returns: its unit of fuel and the call's,
-                         its entry (no point of response falls due: [quiet]), its value; what the
-                         activation would have counted is given back as it returns, so it is
-                         not built. *)
+                      (* The callee's first statement returns (§4.17, §4.10): its unit of fuel and
+                         the call's, its entry (no point of response falls due, ch. 8: [quiet]),
+                         its value; what the activation would have counted is given back as it
+                         returns, so it is not built. *)
                       st.fuel <- st.fuel - 1;
                       if events then st.emit entered_event;
                       tick st; at_statement st a;
@@ -1763,15 +1763,12 @@ and goto_stmt acc (s : stmt) =
   | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
   | _ -> ()
 
-(* The body of a function for the direct path (no handler, no UNDO, no label in its statement
-   list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
-   the value is neither stored in the activation nor tested for. Each statement is entered as
-   [block] enters it (a unit of fuel, a point of response); the list's end is never reached. *)
 (* A valued body of exactly two statements, [IF own op k RETURN e1; RETURN x op' y;], e1 an own
    slot or a literal and op' one of +, -, * of two operands neither a num literal (the end of a
    recursion, then its step): both statements in one closure, the comparison as [condition]
-   makes it and the operator as [binary] computes it, in the same order. Each statement is
-   entered as [block] enters it; the run is [valued_body]'s general form's, step for step. *)
+   makes it (§4.17, §3.12) and the operator as [binary] computes it (§3.12, R-2.13-a; the left
+   operand first, §3.1), RETURN's value the function's (§4.10). Each statement is entered as
+   [block] enters it; the run is [valued_body]'s general form's, step for step. *)
 let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
   let own i = local_access r i = Own in
   match b.body with
@@ -1821,6 +1818,10 @@ let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
       end
   | _ -> None
 
+(* The body of a function for the direct path (no handler, no UNDO, no label in its statement
+   list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
+   the value is neither stored in the activation nor tested for. Each statement is entered as
+   [block] enters it (a unit of fuel, a point of response); the list's end is never reached. *)
 let valued_body st (r : routine) ~gotos : (act -> V.t) option =
   let b = r.body in
   let n = Array.length b.body in
