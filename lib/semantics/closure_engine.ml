@@ -90,6 +90,10 @@ type compiled = {
   c_value : (act -> V.t) option;
       (* a function whose body ends in RETURN e, for the direct path: its body giving RETURN's
          value itself, not through [result] (see [valued_body]) *)
+  c_guard : (Arith.binary * float * V.t option) option;
+      (* with [c_value], when its first statement is [IF slot1 op k RETURN e;], e the first slot
+         (None) or a literal: the comparison and k, for a call that can see it holds before the
+         activation is built (see [direct_call]) *)
 }
 
 type state = {
@@ -1015,7 +1019,33 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
      one test each; otherwise [start] takes it, to stop at the budget that runs out first. *)
   let entered_event = M.Routine_entered callee.name and left_event = M.Routine_left callee.name in
   let events = st.all_events and observe = st.observe in
+  (* A valued body's call, once its code is known ([fast]), with the budgets' bounds computed
+     once: [quick]'s tests, in a form that needs fewer loads. *)
+  let max_depth = limits.max_call_depth and room = limits.max_memory - act_bytes
+  and native_budget = st.native_budget in
+  let fast = ref None in
+  let leaf = ref None in   (* the callee's [c_guard], when [fast] is known *)
+  let valued (a : act) store pending code body =
+    let level = a.level + 1 and nest = code.c_nest in
+    if level < max_depth && st.memory + pending <= room && st.fuel > 0 && st.native + nest <= native_budget
+    then begin
+      st.fuel <- st.fuel - 1;
+      let memory = pending + act_bytes in
+      let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+      st.native <- st.native + nest;
+      st.memory <- st.memory + memory;
+      st.depth <- level + 1;
+      if events then st.emit entered_event;
+      match if has_init then code.c_init at c; body c with
+      | v -> release st c; if events then st.emit left_event; v
+      | exception left -> left_by st code c left
+    end
+    else start a store pending
+  in
   let quick (a : act) store pending =
+      match !fast with
+      | Some (code, body) -> valued a store pending code body
+      | None ->
       match !code with
       | Some code when not observe ->
           let level = a.level + 1 and nest = code.c_nest in
@@ -1030,6 +1060,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             if events then st.emit entered_event;
             match code.c_value with
             | Some body -> (
+                fast := Some (code, body);
+                leaf := (if has_init then None else code.c_guard);
                 match if has_init then code.c_init at c; body c with
                 | v -> release st c; if events then st.emit left_event; v
                 | exception left -> left_by st code c left)
@@ -1055,13 +1087,49 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let w0 = whats.(0) in
       let slow u = check st ~at (Arith.binary op u v) in
       let sub = op = Arith.Num_sub in
+      let stepped a v =
+        if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+        quick a [| v |] 32 in
       fun a -> (
         match a.store.(i) with
-        | V.Num p ->
+        | V.Num p -> (
             (* a num: 32 bytes (value_bytes), its copy itself *)
             let v = single_num st ~at (if sub then p -. q else p +. q) in
-            if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
-            quick a [| v |] 32
+            match !fast with
+            | Some (code, body) ->
+                (* [valued] here, the copy's bytes tested with the activation's: when any test
+                   fails, [stepped] makes them one by one, as the general path *)
+                let level = a.level + 1 and nest = code.c_nest in
+                if level < max_depth && st.memory + 32 <= room && st.fuel > 0 && st.native + nest <= native_budget
+                then begin
+                  match !leaf, v with
+                  | Some (op, k, w), V.Num x
+                    when (if op == Arith.Num_lt then x < k else compare_nums op x k) && st.fuel > 1 && st.quiet > 0 ->
+                      (* The callee's first statement returns (§4.17, §4.10): its unit of fuel and
+                         the call's, its entry (no point of response falls due, ch. 8: [quiet]),
+                         its value; what the activation would have counted is given back as it
+                         returns, so it is not built. *)
+                      st.fuel <- st.fuel - 1;
+                      if events then st.emit entered_event;
+                      tick st; at_statement st a;
+                      st.depth <- level;
+                      if events then st.emit left_event;
+                      (match w with None -> v | Some w -> w)
+                  | _ ->
+                  st.fuel <- st.fuel - 1;
+                  let memory = 32 + act_bytes in
+                  let c = { routine = callee; store = [| v |]; ext = shared_extension; level; parent = a;
+                            result = no_value; nest; memory } in
+                  st.native <- st.native + nest;
+                  st.memory <- st.memory + memory;
+                  st.depth <- level + 1;
+                  if events then st.emit entered_event;
+                  match if has_init then code.c_init at c; body c with
+                  | v -> release st c; if events then st.emit left_event; v
+                  | exception left -> left_by st code c left
+                end
+                else stepped a v
+            | None -> stepped a v)
         | u ->
             let v = slow u in
             let b = value_bytes v in
@@ -1730,6 +1798,61 @@ and goto_stmt acc (s : stmt) =
   | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
   | _ -> ()
 
+(* A valued body of exactly two statements, [IF own op k RETURN e1; RETURN x op' y;], e1 an own
+   slot or a literal and op' one of +, -, * of two operands neither a num literal (the end of a
+   recursion, then its step): both statements in one closure, the comparison as [condition]
+   makes it (§4.17, §3.12) and the operator as [binary] computes it (§3.12, R-2.13-a; the left
+   operand first, §3.1), RETURN's value the function's (§4.10). Each statement is entered as
+   [block] enters it; the run is [valued_body]'s general form's, step for step. *)
+let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
+  let own i = local_access r i = Own in
+  match b.body with
+  | [| { s = Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
+                         { s = Return (Some e1); _ }); sat = at1; _ };
+       { s = Return (Some { e = Binary ((Num_add | Num_sub | Num_mul) as op', x, y); _ }); sat = at2; _ } |]
+    when is_num_comparison op && own i
+         && (match e1.e with Read (Whole (Local j)) -> own j | Literal _ -> true | _ -> false)
+         && (match y.e with Literal (V.Num _) -> false | _ -> true) ->
+      (* the first statement's value: an own slot ([j]), or else the literal [w] *)
+      let j, w = match e1.e with Read (Whole (Local j)) -> (j, no_value) | Literal w -> (-1, w) | _ -> assert false in
+      let slow_if u = V.bool_value (check st ~at:at1 (Arith.binary op u v)) in
+      let slow u' v' = check st ~at:at2 (Arith.binary op' u' v') in
+      let x = expr st r ~at:at2 x and y = expr st r ~at:at2 y in
+      let add = op' = Arith.Num_add and sub = op' = Arith.Num_sub in
+      (* the second statement, entered *)
+      let second a =
+        tick st; at_statement st a;
+        let u' = x a in
+        let v' = y a in
+        match u', v' with
+        | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
+        | _ -> slow u' v' in
+      begin match op with
+      | Num_lt ->
+          (* the usual end of a recursion, its comparison a branch of its own *)
+          Some (fun a ->
+              tick st; at_statement st a;
+              match a.store.(i) with
+              | V.Num p ->
+                  if p < q then (if j >= 0 then a.store.(j) else w)
+                  else begin
+                    tick st; at_statement st a;
+                    let u' = x a in
+                    let v' = y a in
+                    match u', v' with
+                    | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
+                    | _ -> slow u' v'
+                  end
+              | u -> if slow_if u then (if j >= 0 then a.store.(j) else w) else second a)
+      | _ ->
+          Some (fun a ->
+              tick st; at_statement st a;
+              if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow_if u)
+              then (if j >= 0 then a.store.(j) else w)
+              else second a)
+      end
+  | _ -> None
+
 (* The body of a function for the direct path (no handler, no UNDO, no label in its statement
    list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
    the value is neither stored in the activation nor tested for. Each statement is entered as
@@ -1741,6 +1864,9 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
   if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || not ends_in_return
   then None
   else
+    match guarded_return st r b with
+    | Some f -> Some f
+    | None ->
     let rec from k : act -> V.t =
       let s = b.body.(k) in
       match s.s with
@@ -1773,6 +1899,25 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
     in
     Some (from 0)
 
+(* [c_guard]: a body that [valued_body] compiles, of a routine with one slot and no routine
+   data, whose first statement is [IF slot1 op k RETURN e;], e the slot or a literal. *)
+let leading_guard (r : routine) ~gotos =
+  let b = r.body in
+  let n = Array.length b.body in
+  if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || n < 2
+     || r.locals > 1 || Array.length r.parameters <> 1 || r.local_inits <> []
+     || local_access r 0 <> Own
+     || (match b.body.(n - 1).s with Return (Some _) -> false | _ -> true) then None
+  else
+    match b.body.(0).s with
+    | Compact_if ({ e = Binary (op, { e = Read (Whole (Local 0)); _ }, { e = Literal (V.Num q); _ }); _ },
+                  { s = Return (Some e); _ }) when is_num_comparison op -> (
+        match e.e with
+        | Read (Whole (Local 0)) -> Some (op, q, None)
+        | Literal w -> Some (op, q, Some w)
+        | _ -> None)
+    | _ -> None
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -1798,7 +1943,8 @@ let compile_routine st k =
     | [] -> fun _ _ -> ()
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
-    c_value = valued_body st r ~gotos }
+    c_value = valued_body st r ~gotos;
+    c_guard = leading_guard r ~gotos }
 
 (* The ERR_ names by upper-case name, only read: the table of the last list (the installed
    environment's, the same list physically for every program) is kept. *)
