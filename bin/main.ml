@@ -995,7 +995,11 @@ let spec_cmd =
   let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD"
                     ~doc:"Run the suite against another implementation through the oracle's protocol \
                           (doc/oracle.md): $(b,{mode}) is parse, check or run, $(b,{options}) the \
-                          case's options, $(b,{files}) its files.") in
+                          case's options, $(b,{files}) its files. With $(b,{tasks}) in CMD, the cases of \
+                          several tasks (format 4) run too, {tasks} standing for their $(b,--task) NAME=FILE,..., \
+                          $(b,--entry) TASK=ROUTINE, $(b,--schedule) SEED and $(b,--motion-task) NAME as \
+                          $(b,rapid-sem run) spells them ({files} then empty), and their events are compared \
+                          task by task; without it they are skipped.") in
   let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
   let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
   let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
@@ -1008,7 +1012,7 @@ let spec_cmd =
       | Some template ->
           ignore (Rapid_oracle.Oracle.self_reference ());
           (* Run cases compare the events with rapid-sem's own too. *)
-          let reference = Filename.quote Sys.executable_name ^ " run --json {options} {files}" in
+          let reference = Filename.quote Sys.executable_name ^ " run --json {options} {tasks} {files}" in
           Rapid_conformance.Impl_runner.run ~verbose ~reference ~ignore:ignore_kinds ?junit ?json:report ~template
             Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed

@@ -5,25 +5,57 @@ type result = { case : Spec_case.t; passed : bool; skipped : bool; detail : stri
 let mode (case : Spec_case.t) =
   match case.format with "1" -> "parse" | "2" -> "check" | _ -> "run"
 
+let several_tasks (case : Spec_case.t) =
+  match case.run with Some { tasks = _ :: _; _ } -> true | _ -> false
+
 let options (case : Spec_case.t) =
   let run = case.run in
+  let tasks = several_tasks case in
   List.concat [
     (if case.strict then [ "--strict" ] else []);
     (if case.allow_unknown then [ "--allow-unknown" ] else []);
     (if case.stub_unmodelled then [ "--stub-unmodelled" ] else []);
     (match run with Some { io = Some f; _ } -> [ "--io"; Filename.quote f ] | _ -> []);
-    (match run with Some { entry; _ } when entry <> "main" -> [ "--entry"; entry ] | _ -> []);
+    (* With several tasks, {tasks} names each task's entry. *)
+    (match run with Some { entry; _ } when entry <> "main" && not tasks -> [ "--entry"; entry ] | _ -> []);
     (match run with Some { retry_limit = Some n; _ } -> [ "--retry-limit"; string_of_int n ] | _ -> []);
     (match run with Some { statement_time = Some t; _ } -> [ "--statement-time"; Printf.sprintf "%g" t ] | _ -> []);
     (match run with Some { max_time = Some t; _ } -> [ "--max-time"; Printf.sprintf "%g" t ] | _ -> []);
   ]
 
+(* Format 4 as rapid-sem run spells several tasks: a task's entry as the case's runner takes it,
+   its own @entry TASK=ROUTINE (the last one written), else the case's @entry. *)
+let task_options (case : Spec_case.t) =
+  match case.run with
+  | Some ({ tasks = _ :: _; _ } as run) ->
+      let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+      let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
+        | Some (_, r) -> r | None -> run.entry in
+      List.concat [
+        List.concat_map (fun (name, files) -> [ "--task"; Filename.quote (name ^ "=" ^ String.concat "," files) ]) run.tasks;
+        List.concat_map (fun (name, _) ->
+            let e = entry_of name in
+            if e = "main" then [] else [ "--entry"; Filename.quote (name ^ "=" ^ e) ]) run.tasks;
+        (match run.schedule with Some n -> [ "--schedule"; string_of_int n ] | None -> []);
+        (match run.motion_task with Some t -> [ "--motion-task"; Filename.quote t ] | None -> []);
+      ]
+  | _ -> []
+
 let replace_all = Rapid_oracle.Implementation.replace_all
+
+let takes_tasks template =
+  let sub = "{tasks}" in
+  let n = String.length sub in
+  let rec go i = i + n <= String.length template && (String.sub template i n = sub || go (i + 1)) in
+  go 0
 
 let command ~template (case : Spec_case.t) =
   let with_mode = replace_all ~sub:"{mode}" ~by:(mode case)
-      (replace_all ~sub:"{options}" ~by:(String.concat " " (options case)) template) in
-  Rapid_oracle.Implementation.command_line ~template:with_mode ~files:case.files
+      (replace_all ~sub:"{options}" ~by:(String.concat " " (options case))
+         (replace_all ~sub:"{tasks}" ~by:(String.concat " " (task_options case)) template)) in
+  (* The files of several tasks are in {tasks}: rapid-sem run takes no FILE beside --task. *)
+  if several_tasks case then replace_all ~sub:"{file}" ~by:"" (replace_all ~sub:"{files}" ~by:"" with_mode)
+  else Rapid_oracle.Implementation.command_line ~template:with_mode ~files:case.files
 
 let field name = function `Assoc f -> List.assoc_opt name f | _ -> None
 let string_field name j = match field name j with Some (`String s) -> Some s | _ -> None
@@ -97,6 +129,12 @@ let same_events ?ignore ?timeout ~reference (case : Spec_case.t) (actual : Strea
       match Stream.parse r.stdout with
       | Error m -> Error ("rapid-sem's own events: " ^ m)
       | Ok expected -> (
+          if several_tasks case then
+            match Rapid_oracle.Task_streams.compare ?ignore ~expected ~actual () with
+            | Agree _ -> Ok ()
+            | Broken m -> Error m
+            | Diverge d -> Error (Rapid_oracle.Task_streams.report d)
+          else
           match Rapid_oracle.Oracle.compare_streams ?ignore ~expected ~actual () with
           | Agree _ -> Ok ()
           | Broken m -> Error m
@@ -104,12 +142,14 @@ let same_events ?ignore ?timeout ~reference (case : Spec_case.t) (actual : Strea
               let show = function Some e -> Stream.to_string e | None -> "(no more events)" in
               Error (Printf.sprintf "event %d: expected %s, got %s" d.index (show d.expected) (show d.actual))))
 
+let no_tasks_detail = "several tasks (format 4): the template has no {tasks}"
+
 let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) =
   if not (List.mem case.format Spec_case.known_formats) then
     { case; passed = false; skipped = true; detail = "format " ^ case.format }
-  else if (match case.run with Some { tasks = _ :: _; _ } -> true | _ -> false) then
-    (* The protocol of doc/oracle.md names the files of one task: several tasks it cannot say. *)
-    { case; passed = false; skipped = true; detail = "several tasks (format 4)" }
+  else if several_tasks case && not (takes_tasks template) then
+    (* Opt-in: a template without {tasks} is a tool of one task, not failed on several. *)
+    { case; passed = false; skipped = true; detail = no_tasks_detail }
   else if case.problems <> [] then
     { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
   else Loopback_lock.exclusive case @@ fun () ->
@@ -212,6 +252,10 @@ let run ?(verbose = false) ?timeout ?reference ?ignore ?junit ?json ~template ou
   let passed = List.length (List.filter (fun r -> r.passed) results) in
   let failed = List.length (List.filter (fun r -> not r.passed && not r.skipped) results) + List.length errors in
   let skipped = List.length (List.filter (fun r -> r.skipped) results) in
+  let without_tasks = List.length (List.filter (fun r -> r.skipped && r.detail = no_tasks_detail) results) in
+  if without_tasks > 0 then
+    Format.fprintf out "@.%d case%s of several tasks skipped: the template has no {tasks} (doc/oracle.md, \"Several tasks\")@."
+      without_tasks (if without_tasks = 1 then "" else "s");
   if skipped = 0 then Format.fprintf out "@.%d passed, %d failed@." passed failed
   else Format.fprintf out "@.%d passed, %d failed, %d skipped@." passed failed skipped;
   (passed, failed)
