@@ -1,0 +1,1 @@
+spec --impl 'sh spec-impl-self.sh {mode} {options} {files}' -v spec-impl-tasks-cases
