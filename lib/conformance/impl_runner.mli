@@ -5,7 +5,9 @@
 type result = {
   case : Spec_case.t;
   passed : bool;
-  skipped : bool;                    (** a format this runner does not know *)
+  skipped : bool;
+      (** a format this runner does not know, or several tasks (format 4) and a template
+          without [{tasks}] *)
   detail : string;
 }
 
@@ -14,18 +16,24 @@ val command : template:string -> Spec_case.t -> string
     (format 2) or [run] (format 3); [{files}] the case's files and [{file}] its first, quoted;
     [{options}] the options the case asks for, spelled as rapid-sem's ([--strict],
     [--allow-unknown], [--io FILE], [--entry NAME], [--retry-limit N], [--statement-time S],
-    [--max-time S], [--stub-unmodelled]). *)
+    [--max-time S], [--stub-unmodelled]); [{tasks}] nothing, except in a case of several tasks
+    (format 4, [{mode}] [run]): their [--task NAME=FILE,...], [--entry TASK=ROUTINE] (for each
+    entry that is not main), [--schedule SEED] and [--motion-task NAME], as rapid-sem run spells
+    them, with [{file}] and [{files}] then empty and no [--entry] in [{options}]. *)
 
 val run_case :
   ?timeout:float -> ?reference:string -> ?ignore:string list -> template:string -> Spec_case.t -> result
 (** [reference] (a template as [template], for rapid-sem's own [run --json]): a run case passes
     only when the implementation's events also agree with rapid-sem's, compared as
     [rapid-sem oracle] compares them ([ignore]: the kinds left out); the detail of a failure names
-    the first divergence's index. *)
+    the first divergence's index. A case of several tasks is skipped unless [template] has
+    [{tasks}]; its events are compared task by task ({!Rapid_oracle.Task_streams}), and
+    [reference] needs [{tasks}] too. *)
 
 val run :
   ?verbose:bool -> ?timeout:float -> ?reference:string -> ?ignore:string list -> ?junit:string ->
   ?json:string -> template:string -> Format.formatter -> string -> int * int
 (** Every case below the folder: failures printed, a summary per section, [N passed, N failed];
     [junit] and [json] name files to write the results to (JUnit XML, which CI systems read, and
-    JSON). Returns (passed, failed). *)
+    JSON); a line says how many cases of several tasks were skipped for want of [{tasks}].
+    Returns (passed, failed). *)
