@@ -86,6 +86,13 @@ let tasks_placeholder () =
     (Printf.sprintf "tool run   [%s]" (Filename.quote (dir ^ "05-get-task-name-one-task.mod")))
     (cmd (case_at "05-get-task-name-one-task.mod"))
 
+(* rapid-sem oracle's programs are one task each: the same template serves. *)
+let oracle_template () =
+  let cmd template = Rapid_oracle.Implementation.command_line ~template ~files:[ "a.mod"; "b.mod" ] in
+  Alcotest.(check string) "{tasks} is nothing" "tool  'a.mod' 'b.mod'" (cmd "tool {tasks} {files}");
+  Alcotest.(check string) "the files appended" "tool  'a.mod' 'b.mod'" (cmd "tool {tasks}");
+  Alcotest.(check string) "{file}" "tool 'a.mod'" (cmd "tool {file}")
+
 let without_tasks_skipped () =
   let r = IR.run_case ~reference ~template:"sh golden/spec-impl-self.sh {mode} {options} {files}"
       (case_at "02-entry-per-task.task") in
@@ -165,6 +172,7 @@ let suite =
       Alcotest.test_case "with {tasks}: every case of several tasks passes" `Quick self_passes_every_format_4_case;
       Alcotest.test_case "{tasks}: the options of rapid-sem run" `Quick tasks_placeholder;
       Alcotest.test_case "without {tasks}: several tasks skipped" `Quick without_tasks_skipped;
+      Alcotest.test_case "oracle: {tasks} is nothing for one task" `Quick oracle_template;
       Alcotest.test_case "several tasks: a wrong store caught at the task's event" `Quick wrong_tasks_caught;
       Alcotest.test_case "several tasks: compared task by task" `Quick compare_task_streams;
       Alcotest.test_case "several tasks: the world's stream" `Quick world_stream ])

@@ -17,6 +17,9 @@ let replace_all ~sub ~by s =
 let contains ~sub s = replace_all ~sub ~by:"" s <> s
 
 let command_line ~template ~files =
+  (* A program here is one task: a template written for spec --impl's cases of several tasks
+     serves too. *)
+  let template = replace_all ~sub:"{tasks}" ~by:"" template in
   let quoted = List.map Filename.quote files in
   let all = String.concat " " quoted in
   let first = match quoted with f :: _ -> f | [] -> "" in
