@@ -67,4 +67,13 @@ let () =
         ignore (F.check_program ~engines:[ F.closure ] s)
       done) in
   ignore dt;
+  (* What the default configuration adds (one mutant a program, a hostile text every ten), made
+     as Campaign.check_texts makes them, timed per program of the campaign. *)
+  let module M = Rapid_fuzz.Mutant in
+  let texts i = Random.State.make [| !seed; i; 7919 |] in
+  let mutants = List.mapi (fun i s -> M.mutate (texts i) s) sources in
+  let _ = time "mutants (one a program)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) mutants) in
+  let hostiles = List.filteri (fun i _ -> i mod 10 = 0) sources
+                 |> List.mapi (fun k s -> let rs = texts (10 * k) in ignore (M.mutate rs s); M.hostile rs) in
+  let _ = time "hostile texts (one every ten)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) hostiles) in
   Printf.printf "throughput: %.0f programs/s/core (generated, checked and run by both engines)\n" (float n /. dg)
