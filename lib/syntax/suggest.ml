@@ -1,9 +1,12 @@
-(* The optimal string alignment distance (Damerau-Levenshtein without repeated edits of one
-   substring): a swapped pair of letters (WObj, Wboj) is one slip of the fingers. *)
 (* The table of [lower_distance], kept and grown: a module of thousands of routines asks the
    distance to each of their names (bench/README.md). Every cell read is written first. *)
 let scratch = ref (Array.make 64 0)
 
+(* Stdlib's [min] is polymorphic: a call to the runtime's comparison at every cell. *)
+let min (a : int) b = if a <= b then a else b
+
+(* The optimal string alignment distance (Damerau-Levenshtein without repeated edits of one
+   substring): a swapped pair of letters (WObj, Wboj) is one slip of the fingers. *)
 (* On names already in lower case; one flat table of (n+1)(m+1) cells, row i at i(m+1). *)
 let lower_distance a b =
   let n = String.length a and m = String.length b in
@@ -41,12 +44,12 @@ let closest name candidates =
         if abs (String.length c - length) > limit then None
         else
           let k = String.lowercase_ascii c in
-          if Hashtbl.mem seen k || k = lower then None
-          else begin
-            Hashtbl.add seen k ();
+          if k = lower then None
+          else
             let d = lower_distance lower k in
-            if d <= limit then Some (d, c) else None
-          end) candidates
+            (* Only near names need [seen]: a later candidate of the same spelling is as far. *)
+            if d > limit || Hashtbl.mem seen k then None
+            else begin Hashtbl.add seen k (); Some (d, c) end) candidates
   in
   match List.sort (fun (d, _) (e, _) -> compare d e) scored with
   | [] -> []
