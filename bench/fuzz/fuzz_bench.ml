@@ -77,6 +77,8 @@ let () =
   let _ = time "mutants (one a program)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) mutants) in
   let hostiles = List.filteri (fun i _ -> i mod 10 = 0) sources
                  |> List.mapi (fun k s -> let rs = texts (10 * k) in ignore (M.mutate rs s); M.hostile rs) in
+  (* A change for speed must leave the texts as they were: compare this line between builds. *)
+  Printf.printf "  texts made: digest %s\n%!" (Digest.to_hex (Digest.string (String.concat "\000" (mutants @ hostiles))));
   let _ = time "hostile texts (one every ten)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) hostiles) in
   if !detail then begin
     (* each hostile text alone, the slowest first: which kinds the time goes to *)
