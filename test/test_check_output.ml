@@ -123,8 +123,58 @@ let suggestions () =
   Alcotest.(check (option string)) "hint" (Some "did you mean a12, a13 or a14?")
     (Suggest.hint "a1x" [ "a12"; "a13"; "a14" ])
 
+(* "did you mean" against its plain definition (bench/README.md: Suggest tests a candidate's
+   length first and its spelling's repetition only when near, and keeps its table between
+   calls): every candidate in lower case, once, not the name itself, its distance computed on a
+   fresh table; the nearest, at most three, in the order given. Random names over a small
+   alphabet in both cases, so that repeated spellings, ties and every length difference occur. *)
+let suggestions_as_defined () =
+  let open Rapid_syntax in
+  let plain_distance a b =
+    let a = String.lowercase_ascii a and b = String.lowercase_ascii b in
+    let n = String.length a and m = String.length b in
+    let d = Array.make_matrix (n + 1) (m + 1) 0 in
+    for i = 0 to n do d.(i).(0) <- i done;
+    for j = 0 to m do d.(0).(j) <- j done;
+    for i = 1 to n do
+      for j = 1 to m do
+        let cost = if a.[i - 1] = b.[j - 1] then 0 else 1 in
+        let best = List.fold_left Stdlib.min max_int [ d.(i - 1).(j) + 1; d.(i).(j - 1) + 1; d.(i - 1).(j - 1) + cost ] in
+        d.(i).(j) <- (if i > 1 && j > 1 && a.[i - 1] = b.[j - 2] && a.[i - 2] = b.[j - 1]
+                      then Stdlib.min best (d.(i - 2).(j - 2) + 1) else best)
+      done
+    done;
+    d.(n).(m) in
+  let plain_closest name candidates =
+    if String.length name < 3 then [] else
+    let limit = max 1 (Stdlib.min 3 (String.length name / 3)) in
+    let lower = String.lowercase_ascii name in
+    let rec scan seen acc = function
+      | [] -> List.rev acc
+      | c :: rest ->
+          let k = String.lowercase_ascii c in
+          if List.mem k seen || k = lower then scan seen acc rest
+          else
+            let d = plain_distance name c in
+            scan (k :: seen) (if d <= limit then (d, c) :: acc else acc) rest in
+    let scored = scan [] [] candidates in
+    match List.sort compare (List.map fst scored) with
+    | [] -> []
+    | best :: _ -> List.filteri (fun i _ -> i < 3) (List.filter_map (fun (d, c) -> if d = best then Some c else None) scored) in
+  let rs = Random.State.make [| 11 |] in
+  let name () = String.init (1 + Random.State.int rs 12) (fun _ ->
+      let c = "abp1".[Random.State.int rs 4] in
+      if Random.State.bool rs then Char.uppercase_ascii c else c) in
+  for _ = 1 to 3000 do
+    let n = name () and cs = List.init (Random.State.int rs 30) (fun _ -> name ()) in
+    Alcotest.(check (list string)) (String.concat " " (n :: cs)) (plain_closest n cs) (Suggest.closest n cs);
+    let c = name () in
+    Alcotest.(check int) (n ^ " " ^ c) (plain_distance n c) (Suggest.distance n c)
+  done
+
 let suite =
   ( "check-output",
     [ Alcotest.test_case "SARIF 2.1.0 required fields, one result per diagnostic" `Quick sarif_shape;
       Alcotest.test_case "JSON fields, one item per diagnostic" `Quick json_shape;
-      Alcotest.test_case "did you mean" `Quick suggestions ] )
+      Alcotest.test_case "did you mean" `Quick suggestions;
+      Alcotest.test_case "did you mean, as defined, on random names" `Quick suggestions_as_defined ] )

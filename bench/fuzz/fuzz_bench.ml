@@ -8,6 +8,7 @@ module F = Rapid_fuzz.Fuzz_run
 
 let count = ref 1000
 let seed = ref 1
+let detail = ref false
 
 let time name n f =
   Gc.compact ();
@@ -21,8 +22,9 @@ let time name n f =
   (r, dt)
 
 let () =
-  Arg.parse [ ("--count", Arg.Set_int count, "N programs (1000)"); ("--seed", Arg.Set_int seed, "S the seed (1)") ]
-    (fun _ -> raise (Arg.Bad "no positional arguments")) "fuzz_bench [--count N] [--seed S]";
+  Arg.parse [ ("--count", Arg.Set_int count, "N programs (1000)"); ("--seed", Arg.Set_int seed, "S the seed (1)");
+              ("--hostile-detail", Arg.Set detail, " the slowest hostile texts, each timed alone") ]
+    (fun _ -> raise (Arg.Bad "no positional arguments")) "fuzz_bench [--count N] [--seed S] [--hostile-detail]";
   let n = !count in
   (* the garbage collector as rapid-sem fuzz sets it *)
   Rapid_fuzz.Campaign.tune_gc ();
@@ -67,4 +69,24 @@ let () =
         ignore (F.check_program ~engines:[ F.closure ] s)
       done) in
   ignore dt;
+  (* What the default configuration adds (one mutant a program, a hostile text every ten), made
+     as Campaign.check_texts makes them, timed per program of the campaign. *)
+  let module M = Rapid_fuzz.Mutant in
+  let texts i = Random.State.make [| !seed; i; 7919 |] in
+  let mutants = List.mapi (fun i s -> M.mutate (texts i) s) sources in
+  let _ = time "mutants (one a program)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) mutants) in
+  let hostiles = List.filteri (fun i _ -> i mod 10 = 0) sources
+                 |> List.mapi (fun k s -> let rs = texts (10 * k) in ignore (M.mutate rs s); M.hostile rs) in
+  (* A change for speed must leave the texts as they were: compare this line between builds. *)
+  Printf.printf "  texts made: digest %s\n%!" (Digest.to_hex (Digest.string (String.concat "\000" (mutants @ hostiles))));
+  let _ = time "hostile texts (one every ten)" n (fun () -> List.iter (fun t -> ignore (M.check_text t)) hostiles) in
+  if !detail then begin
+    (* each hostile text alone, the slowest first: which kinds the time goes to *)
+    let timed = List.map (fun t ->
+        let t0 = Sys.time () in ignore (M.check_text t); (Sys.time () -. t0, t)) hostiles in
+    List.iter (fun (dt, t) ->
+        Printf.printf "  %8.3f ms  %7d bytes  %S\n" (1000. *. dt) (String.length t)
+          (String.sub t 0 (min 40 (String.length t))))
+      (List.filteri (fun i _ -> i < 25) (List.sort (fun (a, _) (b, _) -> compare b a) timed))
+  end;
   Printf.printf "throughput: %.0f programs/s/core (generated, checked and run by both engines)\n" (float n /. dg)

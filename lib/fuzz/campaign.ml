@@ -89,10 +89,13 @@ let is_scenario ~seed ~scenarios i =
    text is shrunk by lines and characters. Their random states are apart from the program's, so
    that a campaign's programs do not change with the number of mutants. *)
 let check_texts ~seed ~mutants ~hostile_every i source =
-  let rs = Random.State.make [| seed; i; 7919 |] in
+  let hostile = hostile_every > 0 && i mod hostile_every = 0 in
+  (* Making a random state digests its seed some hundred times: not done for no text. *)
   let texts =
-    List.init mutants (fun _ -> Mutant.mutate rs source)
-    @ (if hostile_every > 0 && i mod hostile_every = 0 then [ Mutant.hostile rs ] else []) in
+    if mutants = 0 && not hostile then []
+    else
+      let rs = Random.State.make [| seed; i; 7919 |] in
+      List.init mutants (fun _ -> Mutant.mutate rs source) @ (if hostile then [ Mutant.hostile rs ] else []) in
   List.filter_map (fun text ->
       match Mutant.check_text text with
       | Ok () -> None
@@ -109,8 +112,8 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
   let started = Unix.gettimeofday () and cpu_started = Sys.time () in
   let outcomes = Hashtbl.create 8 in
   Fuzz_run.reset_rule_counts ();
-  let judge program =
-    let source = Program_gen.to_source program in
+  (* [source] is [Program_gen.to_source program], printed once for the texts and the judge. *)
+  let judge_source source =
     match Fuzz_run.check_program ~engines ~max_steps source with
     | Error f -> Error f
     | Ok observed -> (
@@ -121,6 +124,7 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
             | Ok () -> Ok observed
             | Error m -> Error (Fuzz_run.Engines_differ ("the implementation: " ^ m))))
   in
+  let judge program = judge_source (Program_gen.to_source program) in
   let failures = ref [] and programs = ref 0 in
   for i = 0 to count - 1 do
     let enough = match max_failures with Some k -> List.length !failures >= k | None -> false in
@@ -147,8 +151,9 @@ let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check
       end
       else begin
       let program = Program_gen.generate ~options (program_seed ~seed i) in
-      failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i (Program_gen.to_source program)) !failures;
-      (match judge program with
+      let source = Program_gen.to_source program in
+      failures := List.rev_append (check_texts ~seed ~mutants ~hostile_every i source) !failures;
+      (match judge_source source with
        | Ok observed -> count_outcome observed
        | Error failure ->
            let minimal, failure = minimise judge program failure in

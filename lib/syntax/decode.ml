@@ -81,7 +81,7 @@ let line_starts text =
    soon as a byte above 0x7F appears: the general path takes over. *)
 let ascii_line_starts raw start =
   let n = String.length raw in
-  let starts = ref (Array.make 1024 0) and count = ref 1 in
+  let starts = ref (Array.make 256 0) and count = ref 1 in
   let add offset =
     if !count = Array.length !starts then begin
       let bigger = Array.make (2 * !count) 0 in

@@ -92,7 +92,7 @@ module Names = struct
 
   let max_names = 100_000
 
-  let create () = { keys = Array.make 4096 ""; count = 0 }
+  let create () = { keys = Array.make 256 ""; count = 0 }
 
   let hash text start stop =
     let h = ref 0 in

@@ -38,8 +38,13 @@ let of_based base digits =
   let t = { mantissa = z; exponent = 0 } in
   check t (String.length (Z.to_string z))
 
+(* The first 'e' or 'E', without a lowered copy of every literal. *)
+let rec exponent_mark s i =
+  if i >= String.length s then None
+  else match String.unsafe_get s i with 'e' | 'E' -> Some i | _ -> exponent_mark s (i + 1)
+
 let split_exponent s =
-  match String.index_opt (String.lowercase_ascii s) 'e' with
+  match exponent_mark s 0 with
   | None -> (s, Z.zero)
   | Some i ->
       let e = String.sub s (i + 1) (String.length s - i - 1) in

@@ -1,21 +1,32 @@
+(* The table of [lower_distance], kept and grown: a module of thousands of routines asks the
+   distance to each of their names (bench/README.md). Every cell read is written first. *)
+let scratch = ref (Array.make 64 0)
+
+(* Stdlib's [min] is polymorphic: a call to the runtime's comparison at every cell. *)
+let min (a : int) b = if a <= b then a else b
+
 (* The optimal string alignment distance (Damerau-Levenshtein without repeated edits of one
    substring): a swapped pair of letters (WObj, Wboj) is one slip of the fingers. *)
-let distance a b =
-  let a = String.lowercase_ascii a and b = String.lowercase_ascii b in
+(* On names already in lower case; one flat table of (n+1)(m+1) cells, row i at i(m+1). *)
+let lower_distance a b =
   let n = String.length a and m = String.length b in
-  let d = Array.make_matrix (n + 1) (m + 1) 0 in
-  for i = 0 to n do d.(i).(0) <- i done;
-  for j = 0 to m do d.(0).(j) <- j done;
+  let w = m + 1 in
+  if Array.length !scratch < (n + 1) * w then scratch := Array.make ((n + 1) * w) 0;
+  let d = !scratch in
+  for i = 0 to n do d.(i * w) <- i done;
+  for j = 0 to m do d.(j) <- j done;
   for i = 1 to n do
     for j = 1 to m do
       let cost = if a.[i - 1] = b.[j - 1] then 0 else 1 in
-      let best = min (min (d.(i - 1).(j) + 1) (d.(i).(j - 1) + 1)) (d.(i - 1).(j - 1) + cost) in
-      d.(i).(j) <-
+      let best = min (min (d.((i - 1) * w + j) + 1) (d.(i * w + j - 1) + 1)) (d.((i - 1) * w + j - 1) + cost) in
+      d.(i * w + j) <-
         (if i > 1 && j > 1 && a.[i - 1] = b.[j - 2] && a.[i - 2] = b.[j - 1]
-         then min best (d.(i - 2).(j - 2) + 1) else best)
+         then min best (d.((i - 2) * w + j - 2) + 1) else best)
     done
   done;
-  d.(n).(m)
+  d.(n * w + m)
+
+let distance a b = lower_distance (String.lowercase_ascii a) (String.lowercase_ascii b)
 
 (* A third of the name: "tol0" finds tool0, "pHome" does not find pStart. Names of one or two
    characters are near every other short name, and get no suggestion. *)
@@ -24,18 +35,21 @@ let limit name = max 1 (min 3 (String.length name / 3))
 let closest name candidates =
   if String.length name < 3 then [] else
   let seen = Hashtbl.create 16 in
+  let lower = String.lowercase_ascii name and limit = limit name and length = String.length name in
   let scored =
     List.filter_map (fun c ->
-        let k = String.lowercase_ascii c in
-        if Hashtbl.mem seen k || k = String.lowercase_ascii name then None
-        else begin
-          Hashtbl.add seen k ();
-          (* names far longer or shorter cannot be near: skip the table *)
-          if abs (String.length c - String.length name) > limit name then None
+        (* Names far longer or shorter cannot be near. Tested first: a later candidate of the
+           same spelling has the same length, so leaving this one out of [seen] changes
+           nothing. *)
+        if abs (String.length c - length) > limit then None
+        else
+          let k = String.lowercase_ascii c in
+          if k = lower then None
           else
-            let d = distance name c in
-            if d <= limit name then Some (d, c) else None
-        end) candidates
+            let d = lower_distance lower k in
+            (* Only near names need [seen]: a later candidate of the same spelling is as far. *)
+            if d > limit || Hashtbl.mem seen k then None
+            else begin Hashtbl.add seen k (); Some (d, c) end) candidates
   in
   match List.sort (fun (d, _) (e, _) -> compare d e) scored with
   | [] -> []

@@ -117,7 +117,7 @@ let names_in_scope (place : place) what =
   let from table =
     let acc = ref [] in
     Env.iter (fun _ o -> if fits o then Option.iter (fun n -> acc := n :: !acc) (spelling o)) table;
-    List.sort compare !acc
+    List.sort String.compare !acc
   in
   let sc = place.scope in
   List.concat_map from sc.routine @ from sc.module_objects

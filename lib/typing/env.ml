@@ -73,7 +73,13 @@ let obj_kind_name = function
 
 type table = (string, obj) Hashtbl.t
 
-let key = String.lowercase_ascii
+(* Speed (bench/README.md): most names are looked up many times and many are in lower case
+   already; such a name is its own key, without a copy. *)
+let rec has_upper name i =
+  i < String.length name
+  && (match String.unsafe_get name i with 'A' .. 'Z' -> true | _ -> has_upper name (i + 1))
+
+let key name = if has_upper name 0 then String.lowercase_ascii name else name
 let create_table () = Hashtbl.create 64
 let find t name = Hashtbl.find_opt t (key name)
 let add t name o = Hashtbl.replace t (key name) o
@@ -90,6 +96,9 @@ type scope = {
 }
 
 let lookup scope name =
+  (* the key made once for every table probed *)
+  let name = key name in
+  let find t name = Hashtbl.find_opt t name in
   let rec in_routine = function
     | [] -> None
     | t :: rest -> (match find t name with Some o -> Some o | None -> in_routine rest)
@@ -111,6 +120,7 @@ let lookup scope name =
 (* Data types are looked up past data objects and routines of the same name: a parameter may
    share its name with a type (installed routines do: TPWrite's \Num, PoseInv's Pose). *)
 let lookup_type scope name =
+  let name = key name in
   let is_type = function Some (Type _) -> true | _ -> false in
   let tables =
     List.map (fun t -> find t name) scope.routine
