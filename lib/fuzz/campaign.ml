@@ -51,34 +51,24 @@ let same_class (a : Fuzz_run.failure) (b : Fuzz_run.failure) =
 (* Greedy shrinking: take the first smaller program that fails in the same way, until none
    does. A candidate that no longer checks is not a smaller failure of the same kind (unless
    the failure is itself a refusal). *)
-let minimise judge program failure =
+let minimise_by shrink judge program failure =
   let rec go program failure budget =
     if budget = 0 then (program, failure)
     else
       let next = Seq.filter_map (fun candidate ->
           match judge candidate with
           | Error f when same_class f failure -> Some (candidate, f)
-          | _ -> None) (Program_gen.shrink program) in
+          | _ -> None) (shrink program) in
       match next () with
       | Seq.Nil -> (program, failure)
       | Seq.Cons ((smaller, f), _) -> go smaller f (budget - 1)
   in
   go program failure 500
 
+let minimise judge program failure = minimise_by Program_gen.shrink judge program failure
+
 (* The same for a scenario: its modules shrunk one at a time (Fuzz_case.shrink). *)
-let minimise_case judge case failure =
-  let rec go case failure budget =
-    if budget = 0 then (case, failure)
-    else
-      let next = Seq.filter_map (fun candidate ->
-          match judge candidate with
-          | Error f when same_class f failure -> Some (candidate, f)
-          | _ -> None) (Fuzz_case.shrink case) in
-      match next () with
-      | Seq.Nil -> (case, failure)
-      | Seq.Cons ((smaller, f), _) -> go smaller f (budget - 1)
-  in
-  go case failure 500
+let minimise_case judge case failure = minimise_by Fuzz_case.shrink judge case failure
 
 (* Whether program [i] is a scenario (Scenario_gen): drawn from a state apart from the
    program's, so that the other programs are those of a campaign without scenarios. *)

@@ -39,12 +39,11 @@ type task = {
   wakeup : Condition.t;                    (* its turn comes, or its end *)
 }
 
-type order = Round_robin | Seeded of int64 ref
 
 type t = {
   members : task array;
   shared : Value.t array;                  (* each shared data object's value *)
-  order : order;
+  order : Task_set.order;
   mutable cursor : int;
   mutable ended : M.outcome option;        (* a deadlock or the time limit of the whole run *)
   mutable cut : bool;                      (* a task ran out of fuel: the run stopped *)
@@ -95,7 +94,7 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
       List.iter (fun (k, i, k', j) ->
           let n = object_of k' j in
           tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
-      let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
+      let order = Task_set.order_of_seed seed in
       Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = 0; ended = None; cut = false;
             aborting = false; ran = false; limits; stub_unmodelled; clock = world; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
           warnings)
@@ -110,16 +109,10 @@ let running task = task.finished = None
 let same_rules_choose t =
   let candidates = List.filter (fun k -> running t.members.(k) && not t.members.(k).idle)
       (List.init (Array.length t.members) Fun.id) in
-  match candidates, t.order with
-  | [], _ -> None
-  | _, Round_robin ->
-      let n = Array.length t.members in
-      let rec look i = if List.mem (i mod n) candidates then i mod n else look (i + 1) in
-      let k = look t.cursor in
-      t.cursor <- (k + 1) mod n; Some t.members.(k)
-  | _, Seeded state ->
-      let r = Int64.unsigned_rem (Task_set.splitmix state) (Int64.of_int (List.length candidates)) in
-      Some t.members.(List.nth candidates (Int64.to_int r))
+  let cursor = ref t.cursor in
+  let k = Task_set.next_turn t.order ~cursor ~count:(Array.length t.members) candidates in
+  t.cursor <- !cursor;
+  Option.map (fun k -> t.members.(k)) k
 
 let waiting_tasks t =
   Array.to_list t.members |> List.filter running

@@ -14,6 +14,8 @@ type task = { t_name : string; cfg : M.config; mutable idle : bool }
 
 type order = Round_robin | Seeded of int64 ref   (* SplitMix64's state *)
 
+let order_of_seed = function Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin
+
 type t = {
   tasks : task array;
   order : order;
@@ -176,26 +178,33 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
           | Error f -> Error f
           | Ok () ->
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
-              let order = match seed with Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin in
+              let order = order_of_seed seed in
               let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
               Ok ({ tasks; order; cursor = 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links }, warnings))
 
 let running task = M.outcome task.cfg = M.Running
 
+(* The scheduler's rule, for both engines' task sets: among the candidates (indices of [count]
+   tasks, in order), the next in round robin from [cursor], or SplitMix64's pick. *)
+let next_turn order ~cursor ~count candidates =
+  match candidates, order with
+  | [], _ -> None
+  | _, Round_robin ->
+      let rec look i = if List.mem (i mod count) candidates then i mod count else look (i + 1) in
+      let k = look !cursor in
+      cursor := (k + 1) mod count; Some k
+  | _, Seeded state ->
+      let r = Int64.unsigned_rem (splitmix state) (Int64.of_int (List.length candidates)) in
+      Some (List.nth candidates (Int64.to_int r))
+
 (* The next task to take a turn, among the running tasks that do not wait in vain. *)
 let choose s =
   let candidates = List.filter (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
       (List.init (Array.length s.tasks) Fun.id) in
-  match candidates, s.order with
-  | [], _ -> None
-  | _, Round_robin ->
-      let n = Array.length s.tasks in
-      let rec look i = if List.mem (i mod n) candidates then i mod n else look (i + 1) in
-      let k = look s.cursor in
-      s.cursor <- (k + 1) mod n; Some s.tasks.(k)
-  | _, Seeded state ->
-      let r = Int64.unsigned_rem (splitmix state) (Int64.of_int (List.length candidates)) in
-      Some s.tasks.(List.nth candidates (Int64.to_int r))
+  let cursor = ref s.cursor in
+  let k = next_turn s.order ~cursor ~count:(Array.length s.tasks) candidates in
+  s.cursor <- !cursor;
+  Option.map (fun k -> s.tasks.(k)) k
 
 let waiting_tasks s =
   Array.to_list s.tasks |> List.filter running

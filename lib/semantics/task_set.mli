@@ -58,3 +58,14 @@ val shared : t -> (int * int * int * int) list
 
 val splitmix : int64 ref -> int64
 (** SplitMix64: the next number of the state (the state moves on). *)
+
+type order = Round_robin | Seeded of int64 ref   (** SplitMix64's state *)
+
+val order_of_seed : int option -> order
+(** [--schedule SEED]'s order, or round robin without a seed. *)
+
+val next_turn : order -> cursor:int ref -> count:int -> int list -> int option
+(** The scheduler's rule for both engines ({!Closure_tasks} too): among the candidates (indices
+    of [count] tasks in their order, those running and not waiting in vain), the first from
+    [cursor] in round robin ([cursor] moves past it), or SplitMix64's pick; [None] when there is
+    none. *)
