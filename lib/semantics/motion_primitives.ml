@@ -285,6 +285,8 @@ let check st ~now =
           if not tr.started then w_next := Float.min !w_next s;
           if not tr.ended then w_next := Float.min !w_next e;
           not tr.ended) st.tracks;
+  (* Its drops are all made now: a later one has its own cause and time. *)
+  st.cleared_at <- None;
   st.check_at <- !w_next;
   List.stable_sort (fun a b -> compare (event_time a) (event_time b)) (List.rev !events)
 
