@@ -86,6 +86,21 @@ let tasks_placeholder () =
     (Printf.sprintf "tool run   [%s]" (Filename.quote (dir ^ "05-get-task-name-one-task.mod")))
     (cmd (case_at "05-get-task-name-one-task.mod"))
 
+(* {options} carries @max-steps and @robot, so that rapid-sem behind the protocol passes the
+   cases that need them (an endless loop, a robot on a track). *)
+let options_of_limits_and_robot () =
+  Unix.putenv "RAPID_SEM" binary;
+  let read p = Rapid_conformance.Spec_case.read ("../spec/" ^ p) in
+  let loop = read "04-run/19-endless-loop.mod" and track = read "motion/46-track-movel.mod" in
+  Alcotest.(check bool) "--max-steps" true
+    (contains (IR.command ~template:"tool {options} {files}" loop) " --max-steps 100000 ");
+  Alcotest.(check bool) "--robot" true
+    (contains (IR.command ~template:"tool {options} {files}" track)
+       (" --robot " ^ Filename.quote "../spec/motion/robot/track.robot" ^ " "));
+  List.iter (fun (c : Rapid_conformance.Spec_case.t) ->
+      let r = IR.run_case ~reference ~template:self_tasks c in
+      Alcotest.(check (pair bool string)) c.path (true, "") (r.passed, r.detail)) [ loop; track ]
+
 (* rapid-sem oracle's programs are one task each: the same template serves. *)
 let oracle_template () =
   let cmd template = Rapid_oracle.Implementation.command_line ~template ~files:[ "a.mod"; "b.mod" ] in
@@ -171,6 +186,7 @@ let suite =
       Alcotest.test_case "a wrong implementation is caught, in JUnit and JSON too" `Quick wrong_is_caught;
       Alcotest.test_case "with {tasks}: every case of several tasks passes" `Quick self_passes_every_format_4_case;
       Alcotest.test_case "{tasks}: the options of rapid-sem run" `Quick tasks_placeholder;
+      Alcotest.test_case "{options}: @max-steps and @robot" `Quick options_of_limits_and_robot;
       Alcotest.test_case "without {tasks}: several tasks skipped" `Quick without_tasks_skipped;
       Alcotest.test_case "oracle: {tasks} is nothing for one task" `Quick oracle_template;
       Alcotest.test_case "several tasks: a wrong store caught at the task's event" `Quick wrong_tasks_caught;

@@ -21,6 +21,10 @@ let options (case : Spec_case.t) =
     (match run with Some { retry_limit = Some n; _ } -> [ "--retry-limit"; string_of_int n ] | _ -> []);
     (match run with Some { statement_time = Some t; _ } -> [ "--statement-time"; Printf.sprintf "%g" t ] | _ -> []);
     (match run with Some { max_time = Some t; _ } -> [ "--max-time"; Printf.sprintf "%g" t ] | _ -> []);
+    (* Without them a case of @max-steps or @robot asks another question than the one it
+       states: an endless loop runs to the timeout, a track robot's moves fail. *)
+    (match run with Some { max_steps = Some n; _ } -> [ "--max-steps"; string_of_int n ] | _ -> []);
+    (match run with Some { robot = Some f; _ } -> [ "--robot"; Filename.quote f ] | _ -> []);
   ]
 
 (* Format 4 as rapid-sem run spells several tasks: a task's entry as the case's runner takes it,

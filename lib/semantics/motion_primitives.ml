@@ -68,6 +68,7 @@ type state = {
   mutable history : (P.motion * float array * float array) list;
       (* forward moves and their start axes (the arm's, the external ones), newest first *)
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
+  mutable cleared_at : float option;           (* the last ClearPath: when the moves it drops are dropped *)
 }
 
 let dummy = V.Bool false
@@ -77,7 +78,7 @@ let create ?(robot = MM.Robot.irb120) () =
   { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
     dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
-    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false }
+    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None }
 
 let set_backward st b = st.backward <- b
 
@@ -269,7 +270,10 @@ let check st ~now =
   st.tracks <- List.filter (fun tr ->
       match span tr.t_id with
       | None ->
-          if level1 then (events := Segment_dropped { time = now; id = tr.t_id; label = tr.t_label } :: !events; false)
+          (* Dropped when ClearPath ran, not when an engine next looks: the machine looks a step
+             later than the closure engine, and both must write the same time. *)
+          let time = Option.value st.cleared_at ~default:now in
+          if level1 then (events := Segment_dropped { time; id = tr.t_id; label = tr.t_label } :: !events; false)
           else true
       | Some (s, e) ->
           if not tr.started && passed s then begin
@@ -281,6 +285,8 @@ let check st ~now =
           if not tr.started then w_next := Float.min !w_next s;
           if not tr.ended then w_next := Float.min !w_next e;
           not tr.ended) st.tracks;
+  (* Its drops are all made now: a later one has its own cause and time. *)
+  st.cleared_at <- None;
   st.check_at <- !w_next;
   List.stable_sort (fun a b -> compare (event_time a) (event_time b)) (List.rev !events)
 
@@ -482,6 +488,7 @@ let wait_abandoned st w ~now =
   if List.exists (fun m -> m == w) st.move_waits then begin
     st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
     P.clear st.planner ~at:now;
+    st.cleared_at <- Some now;
     st.dirty <- true;
     emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
   end
@@ -550,7 +557,7 @@ let search ctx st name args =
                  | Ok r -> box.(i) <- robtarget_value ~extax:(eax_value e) r
                  | Error _ -> ())
              | _ -> ());
-            if stops then (P.clear st.planner ~at:t; st.dirty <- true;
+            if stops then (P.clear st.planner ~at:t; st.cleared_at <- Some t; st.dirty <- true;
                            emit st (Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
@@ -658,7 +665,7 @@ let call_unguarded (ctx : context) st name args =
       P.start st.planner ~at:now; st.dirty <- true;
       emit st (Path_command { time = now; command = "StartMove" });
       Some Retry_requested
-  | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; Ok ()))
+  | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
   | "procerrrecovery" ->
