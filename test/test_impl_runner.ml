@@ -66,6 +66,24 @@ let self_passes_every_format_4_case () =
       let r = IR.run_case ~reference ~template:self_tasks c in
       Alcotest.(check (pair bool string)) c.path (true, "") (r.passed, r.detail)) cases
 
+(* The cases of the mass memory (@home, files made and read again): each run behind the
+   protocol has a mass memory of its own (--fs), so rapid-sem passes them, and neither run
+   leaves a mass memory in the current folder. *)
+let mass_memory_of_its_own () =
+  Unix.putenv "RAPID_SEM" binary;
+  let before = Sys.file_exists ".rapid-sem" in
+  List.iter (fun path ->
+      let c = Rapid_conformance.Spec_case.read ("../spec/" ^ path) in
+      let r = IR.run_case ~reference ~template:self_tasks c in
+      Alcotest.(check (pair bool string)) path (true, "") (r.passed, r.detail))
+    [ "06-backward/7-5-manual-example.mod"; "13-services/13-dir.mod"; "13-services/13-open-errors.mod";
+      "13-services/15-text-tables.mod"; "13-services/15-write-from-file.mod" ];
+  Alcotest.(check bool) "no .rapid-sem made here" before (Sys.file_exists ".rapid-sem");
+  let c = Rapid_conformance.Spec_case.read "../spec/13-services/15-text-tables.mod" in
+  let words = String.split_on_char ' ' (IR.command ~fs:[ "--fs"; "D" ] ~template:"tool {options}" c) in
+  Alcotest.(check bool) "--fs D in {options}" true
+    (let rec has = function "--fs" :: "D" :: _ -> true | _ :: l -> has l | [] -> false in has words)
+
 let case_at path = Rapid_conformance.Spec_case.read ("golden/spec-impl-tasks-cases/" ^ path)
 
 (* {tasks} spelled as rapid-sem run spells the options; {files} empty beside it; a case of one
@@ -187,6 +205,7 @@ let suite =
       Alcotest.test_case "with {tasks}: every case of several tasks passes" `Quick self_passes_every_format_4_case;
       Alcotest.test_case "{tasks}: the options of rapid-sem run" `Quick tasks_placeholder;
       Alcotest.test_case "{options}: @max-steps and @robot" `Quick options_of_limits_and_robot;
+      Alcotest.test_case "a mass memory of its own for each run (--fs, @home)" `Quick mass_memory_of_its_own;
       Alcotest.test_case "without {tasks}: several tasks skipped" `Quick without_tasks_skipped;
       Alcotest.test_case "oracle: {tasks} is nothing for one task" `Quick oracle_template;
       Alcotest.test_case "several tasks: a wrong store caught at the task's event" `Quick wrong_tasks_caught;

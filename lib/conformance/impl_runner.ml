@@ -53,9 +53,21 @@ let takes_tasks template =
   let rec go i = i + n <= String.length template && (String.sub template i n = sub || go (i + 1)) in
   go 0
 
-let command ~template (case : Spec_case.t) =
+(* A run's mass memory (doc/services.md): a fresh folder for each run, so that the tool's run of
+   a case and rapid-sem's own never see each other's files, with HOME: holding the case's @home
+   folder; given to the run as [--fs DIR] in {options}. *)
+let with_mass_memory (case : Spec_case.t) f =
+  match case.run with
+  | None -> f []
+  | Some run ->
+      let sandbox = Rapid_controller.File_sandbox.temporary () in
+      Fun.protect ~finally:(fun () -> Rapid_controller.File_sandbox.remove sandbox) @@ fun () ->
+      Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
+      f [ "--fs"; Filename.quote (Rapid_controller.File_sandbox.root sandbox) ]
+
+let command ?(fs = []) ~template (case : Spec_case.t) =
   let with_mode = replace_all ~sub:"{mode}" ~by:(mode case)
-      (replace_all ~sub:"{options}" ~by:(String.concat " " (options case))
+      (replace_all ~sub:"{options}" ~by:(String.concat " " (options case @ fs))
          (replace_all ~sub:"{tasks}" ~by:(String.concat " " (task_options case)) template)) in
   (* The files of several tasks are in {tasks}: rapid-sem run takes no FILE beside --task. *)
   if several_tasks case then replace_all ~sub:"{file}" ~by:"" (replace_all ~sub:"{files}" ~by:"" with_mode)
@@ -127,7 +139,7 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
 (* With a reference (rapid-sem's own run --json), a run case passes only when the events agree
    too: the first divergence is named by its index, as rapid-sem oracle names it. *)
 let same_events ?ignore ?timeout ~reference (case : Spec_case.t) (actual : Stream.t) =
-  match Rapid_oracle.Implementation.run ?timeout ~template:(command ~template:reference case) [] with
+  match with_mass_memory case (fun fs -> Rapid_oracle.Implementation.run ?timeout ~template:(command ~fs ~template:reference case) []) with
   | exception (Unix.Unix_error (e, _, _)) -> Error ("rapid-sem could not be run: " ^ Unix.error_message e)
   | r -> (
       match Stream.parse r.stdout with
@@ -157,8 +169,7 @@ let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) 
   else if case.problems <> [] then
     { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
   else Loopback_lock.exclusive case @@ fun () ->
-    let cmd = command ~template case in
-    match Rapid_oracle.Implementation.run ~timeout ~template:cmd [] with
+    match with_mass_memory case (fun fs -> Rapid_oracle.Implementation.run ~timeout ~template:(command ~fs ~template case) []) with
     | exception (Unix.Unix_error (e, _, _)) -> { case; passed = false; skipped = false; detail = Unix.error_message e }
     | r -> (
         match r.status with

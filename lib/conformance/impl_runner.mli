@@ -11,12 +11,14 @@ type result = {
   detail : string;
 }
 
-val command : template:string -> Spec_case.t -> string
+val command : ?fs:string list -> template:string -> Spec_case.t -> string
 (** The shell command for a case: in the template, [{mode}] is [parse] (format 1), [check]
     (format 2) or [run] (format 3); [{files}] the case's files and [{file}] its first, quoted;
     [{options}] the options the case asks for, spelled as rapid-sem's ([--strict],
     [--allow-unknown], [--io FILE], [--entry NAME], [--retry-limit N], [--statement-time S],
-    [--max-time S], [--stub-unmodelled]); [{tasks}] nothing, except in a case of several tasks
+    [--max-time S], [--stub-unmodelled], [--max-steps N], [--robot FILE]), then [fs] ([run_case]
+    gives each run of a run case [--fs DIR], a fresh mass memory whose HOME: holds the case's
+    [@home] files); [{tasks}] nothing, except in a case of several tasks
     (format 4, [{mode}] [run]): their [--task NAME=FILE,...], [--entry TASK=ROUTINE] (for each
     entry that is not main), [--schedule SEED] and [--motion-task NAME], as rapid-sem run spells
     them, with [{file}] and [{files}] then empty and no [--entry] in [{options}]. *)
