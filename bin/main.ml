@@ -1002,7 +1002,7 @@ let spec_cmd =
                           task by task; without it they are skipped.") in
   let junit = Arg.(value & opt (some string) None & info [ "junit" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JUnit XML.") in
   let report = Arg.(value & opt (some string) None & info [ "report-json" ] ~docv:"FILE" ~doc:"With --impl: also write the results as JSON.") in
-  let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the cases of format 3: $(b,machine) (default) or $(b,closure).") in
+  let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the run-time cases (formats 3 and 4, one task or several): $(b,machine) (default) or $(b,closure).") in
   let ignore_kinds = Arg.(value & opt_all string [] & info [ "ignore" ] ~docv:"KIND"
                             ~doc:"With --impl: leave the events of this kind out of the comparison of the events (repeatable).") in
   let run dir verbose impl junit report engine ignore_kinds =
