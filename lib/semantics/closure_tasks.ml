@@ -44,7 +44,7 @@ type t = {
   members : task array;
   shared : Value.t array;                  (* each shared data object's value *)
   order : Task_set.order;
-  mutable cursor : int;
+  cursor : int ref;
   mutable ended : M.outcome option;        (* a deadlock or the time limit of the whole run *)
   mutable cut : bool;                      (* a task ran out of fuel: the run stopped *)
   mutable aborting : bool;
@@ -95,7 +95,7 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
           let n = object_of k' j in
           tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
       let order = Task_set.order_of_seed seed in
-      Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = 0; ended = None; cut = false;
+      Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = ref 0; ended = None; cut = false;
             aborting = false; ran = false; limits; stub_unmodelled; clock = world; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
           warnings)
 
@@ -107,30 +107,16 @@ let take_over t task = List.iter (fun (slot, n) -> task.globals.(slot) <- t.shar
 let running task = task.finished = None
 
 let same_rules_choose t =
-  let candidates = List.filter (fun k -> running t.members.(k) && not t.members.(k).idle)
-      (List.init (Array.length t.members) Fun.id) in
-  let cursor = ref t.cursor in
-  let k = Task_set.next_turn t.order ~cursor ~count:(Array.length t.members) candidates in
-  t.cursor <- !cursor;
-  Option.map (fun k -> t.members.(k)) k
+  Task_set.next_turn t.order ~cursor:t.cursor ~count:(Array.length t.members)
+    (fun k -> running t.members.(k) && not t.members.(k).idle)
+  |> Option.map (fun k -> t.members.(k))
 
-let waiting_tasks t =
-  Array.to_list t.members |> List.filter running
-  |> List.map (fun task -> match task.what with Some what -> task.name ^ " for " ^ what | None -> task.name)
-
-(* Every running task waits: Task_set's all_wait. *)
+(* Every running task waits: Task_set's rule. *)
 let all_wait t =
-  let times = Array.to_list t.members |> List.filter running |> List.filter_map (fun task -> task.wake) in
-  match List.sort compare times with
-  | [] ->
-      t.ended <- Some (M.Deadlock (Printf.sprintf
-                                     "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
-                                     (W.now t.clock) (String.concat "; " (waiting_tasks t))))
-  | w :: _ when w > W.max_time t.clock ->
-      t.ended <- Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time t.clock)))
-  | w :: _ ->
-      W.advance_to t.clock w;
-      Array.iter (fun task -> task.idle <- false) t.members
+  let waits = Array.to_list t.members |> List.filter running |> List.map (fun (task : task) -> (task.name, task.what, task.wake)) in
+  match Task_set.every_task_waits t.clock waits with
+  | Some ended -> t.ended <- Some ended
+  | None -> Array.iter (fun task -> task.idle <- false) t.members
 
 let wake_all t = Array.iter (fun task -> task.idle <- false) t.members
 

@@ -19,7 +19,7 @@ let order_of_seed = function Some s -> Seeded (ref (Int64.of_int s)) | None -> R
 type t = {
   tasks : task array;
   order : order;
-  mutable cursor : int;                 (* round robin: the next task to look at *)
+  cursor : int ref;                     (* round robin: the next task to look at *)
   mutable current : task option;        (* the task whose turn it is *)
   mutable turn_steps : int;
   mutable ended : M.outcome option;     (* a deadlock or the time limit of the whole run *)
@@ -180,13 +180,14 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
               let order = order_of_seed seed in
               let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
-              Ok ({ tasks; order; cursor = 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links }, warnings))
+              Ok ({ tasks; order; cursor = ref 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links }, warnings))
 
 let running task = M.outcome task.cfg = M.Running
 
-(* The scheduler's rule, for both engines' task sets: among the candidates (indices of [count]
-   tasks, in order), the next in round robin from [cursor], or SplitMix64's pick. *)
-let next_turn order ~cursor ~count candidates =
+(* The scheduler's rule, for both engines' task sets: among the [count] tasks, those [eligible]
+   (running, not waiting in vain), the next in round robin from [cursor], or SplitMix64's pick. *)
+let next_turn order ~cursor ~count eligible =
+  let candidates = List.filter eligible (List.init count Fun.id) in
   match candidates, order with
   | [], _ -> None
   | _, Round_robin ->
@@ -199,33 +200,31 @@ let next_turn order ~cursor ~count candidates =
 
 (* The next task to take a turn, among the running tasks that do not wait in vain. *)
 let choose s =
-  let candidates = List.filter (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
-      (List.init (Array.length s.tasks) Fun.id) in
-  let cursor = ref s.cursor in
-  let k = next_turn s.order ~cursor ~count:(Array.length s.tasks) candidates in
-  s.cursor <- !cursor;
-  Option.map (fun k -> s.tasks.(k)) k
+  next_turn s.order ~cursor:s.cursor ~count:(Array.length s.tasks) (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
+  |> Option.map (fun k -> s.tasks.(k))
 
-let waiting_tasks s =
-  Array.to_list s.tasks |> List.filter running
-  |> List.map (fun t -> match M.waiting_for t.cfg with
-      | Some what -> t.t_name ^ " for " ^ what
-      | None -> t.t_name)
-
-(* Every running task waits: the clock moves on to the earliest time one gave (ch. 14, one
-   clock); with none, a deadlock. *)
-let all_wait s =
-  let times = Array.to_list s.tasks |> List.filter running |> List.filter_map (fun t -> M.wake_time t.cfg) in
+(* Every running task waits (ch. 14, one clock): [waits] gives each running task's name, what it
+   waits for, and the time its wait gave. The clock moves on to the earliest such time ([None]);
+   with none, a deadlock; beyond --max-time, the time limit. For both engines' task sets. *)
+let every_task_waits world waits =
+  let times = List.filter_map (fun (_, _, wake) -> wake) waits in
   match List.sort compare times with
   | [] ->
-      s.ended <- Some (M.Deadlock (Printf.sprintf
-                                     "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
-                                     (W.now s.world) (String.concat "; " (waiting_tasks s))))
-  | t :: _ when t > W.max_time s.world ->
-      s.ended <- Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time s.world)))
-  | t :: _ ->
-      W.advance_to s.world t;
-      Array.iter (fun t -> t.idle <- false) s.tasks
+      let waiting = List.map (fun (name, what, _) ->
+          match what with Some what -> name ^ " for " ^ what | None -> name) waits in
+      Some (M.Deadlock (Printf.sprintf
+                          "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
+                          (W.now world) (String.concat "; " waiting)))
+  | t :: _ when t > W.max_time world ->
+      Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time world)))
+  | t :: _ -> W.advance_to world t; None
+
+let all_wait s =
+  let waits = Array.to_list s.tasks |> List.filter running
+              |> List.map (fun t -> (t.t_name, M.waiting_for t.cfg, M.wake_time t.cfg)) in
+  match every_task_waits s.world waits with
+  | Some ended -> s.ended <- Some ended
+  | None -> Array.iter (fun t -> t.idle <- false) s.tasks
 
 (* The task whose turn it is, chosen now if none is: the clock moves on when every task waits. *)
 let rec next s =

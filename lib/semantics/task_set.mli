@@ -64,8 +64,14 @@ type order = Round_robin | Seeded of int64 ref   (** SplitMix64's state *)
 val order_of_seed : int option -> order
 (** [--schedule SEED]'s order, or round robin without a seed. *)
 
-val next_turn : order -> cursor:int ref -> count:int -> int list -> int option
-(** The scheduler's rule for both engines ({!Closure_tasks} too): among the candidates (indices
-    of [count] tasks in their order, those running and not waiting in vain), the first from
+val next_turn : order -> cursor:int ref -> count:int -> (int -> bool) -> int option
+(** The scheduler's rule for both engines ({!Closure_tasks} too): among the [count] tasks (by
+    index, in their order) those [eligible] (running, not waiting in vain), the first from
     [cursor] in round robin ([cursor] moves past it), or SplitMix64's pick; [None] when there is
     none. *)
+
+val every_task_waits :
+  Rapid_controller.World.t -> (string * string option * float option) list -> Machine.outcome option
+(** Every running task waits, each given as (name, what it waits for, the time its wait gave):
+    [None] with the clock moved on to the earliest such time; a deadlock when none gave a time;
+    the time limit when that time is beyond --max-time. For both engines. *)
