@@ -13,43 +13,16 @@ let parse_task t =
       Result.bind acc (fun ms ->
           match Parse.parse_string ~name:file source with
           | Error d -> Error (F.Refused (Diagnostic.to_string d))
-          | Ok m ->
-              let printed = Printer.module_declaration m in
-              match Parse.parse_string ~name:file printed with
-              | Error d -> Error (F.Round_trip (Diagnostic.to_string d))
-              | Ok m' when Ast_dump.module_declaration m <> Ast_dump.module_declaration m' ->
-                  Error (F.Round_trip (file ^ ": the printed module parses to another tree"))
-              | Ok _ -> Ok (ms @ [ m ]))) (Ok []) (sources t)
+          | Ok m -> Result.map (fun () -> ms @ [ m ]) (F.round_trip ~name:file m))) (Ok []) (sources t)
 
 let io_of (c : Fuzz_case.t) =
   match Rapid_controller.Io_config.parse ~file:"fuzz.io" c.io_text with
   | Ok io -> Ok io
   | Error m -> Error (F.Refused ("the stimulus: " ^ m))
 
-let refused = function
-  | Rapid_semantics.Session.Front_end ds -> F.Refused (String.concat "; " (List.map Diagnostic.to_string ds))
-  | Static rs ->
-      F.Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
-                                       (List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs)))
-  | Internal m -> F.Exception m
-
-let is_stuck (o : F.observed) = String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck"
-
 (* One task: as Fuzz_run.check_program, in the case's world. *)
 let check_one ~engines ~max_steps (c : Fuzz_case.t) io program =
-  F.with_run_options ~io c.options @@ fun () ->
-  let first = F.machine.run program ~max_steps in
-  if is_stuck first then Error (F.Stuck first.outcome)
-  else
-    let again = F.machine.run program ~max_steps in
-    match F.compare_observed "machine twice" first again with
-    | Some d -> Error (F.Nondeterministic d)
-    | None ->
-        let differ = List.find_map (fun (e : F.engine) ->
-            let other = e.run program ~max_steps in
-            if not (first.finished && other.finished) then None
-            else F.compare_observed ("machine / " ^ e.engine_name) first other) engines in
-        match differ with Some d -> Error (F.Engines_differ d) | None -> Ok first
+  F.with_run_options ~io c.options (fun () -> F.judge_runs ~engines ~max_steps program)
 
 (* Several tasks: Task_set reads its buffers from files, written to a directory of their own. *)
 let with_files (c : Fuzz_case.t) f =
@@ -90,13 +63,20 @@ let observed events (o : M.outcome) task_outcomes =
                then "stuck " ^ String.concat "; " outcomes else outcome);
     finished }
 
+(* Both engines load several tasks as Task_set.start does: its refusals, as the fuzzer reports
+   them; each run has a world and a motion of its own. *)
+let tasks_refused : TS.failure -> F.failure = function
+  | Load (name, f) -> (match F.refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
+  | Refused m -> F.Refused m
+
+let tasks_world (c : Fuzz_case.t) io =
+  (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_semantics.Motion_primitives.create ())
+
 let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  let world = Rapid_controller.World.create ?max_time:c.options.max_time io in
-  let motion = Rapid_semantics.Motion_primitives.create () in
+  let world, motion = tasks_world c io in
   match TS.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
           ~allow_unknown:c.options.allow_unknown ~io ~observe:true ?seed ~world ~motion specs with
-  | Error (Load (name, f)) -> Error (match refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
-  | Error (Refused m) -> Error (F.Refused m)
+  | Error f -> Error (tasks_refused f)
   | Ok (ts, _) ->
       let add, events = streams () in
       let rec loop () =
@@ -114,12 +94,10 @@ let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
 (* The same tasks by the closure engine (Closure_tasks), in the same kind of world. [fuel] is
    each task's there, the whole run's for the machine: runs cut short are not compared. *)
 let run_tasks_closure ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  let world = Rapid_controller.World.create ?max_time:c.options.max_time io in
-  let motion = Rapid_semantics.Motion_primitives.create () in
+  let world, motion = tasks_world c io in
   match Rapid_semantics.Closure_tasks.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
           ~allow_unknown:c.options.allow_unknown ~io ?seed ~world ~motion specs with
-  | Error (Load (name, f)) -> Error (match refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
-  | Error (Refused m) -> Error (F.Refused m)
+  | Error f -> Error (tasks_refused f)
   | Ok (ct, _) ->
       let add, events = streams () in
       let r = Rapid_semantics.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
@@ -134,7 +112,7 @@ let check_tasks ~max_steps (c : Fuzz_case.t) io =
     | [] -> assert false
     | seed :: rest ->
         Result.bind (run_tasks ~max_steps c io specs ~seed) (fun first ->
-            if is_stuck first then Error (F.Stuck first.outcome)
+            if F.is_stuck first then Error (F.Stuck first.outcome)
             else
               Result.bind (run_tasks ~max_steps c io specs ~seed) (fun again ->
                   match F.compare_observed "machine twice" first again with
@@ -161,7 +139,7 @@ let check_case ?(engines = []) ?(max_steps = 200_000) (c : Fuzz_case.t) =
             match c.tasks, parsed with
             | [ _ ], [ modules ] -> (
                 match F.load_modules ~allow_unknown:c.options.allow_unknown ~io modules with
-                | Error f -> Error (refused f)
+                | Error f -> Error (F.refused f)
                 | Ok loaded -> check_one ~engines ~max_steps c io loaded.program)
             | _ -> check_tasks ~max_steps c io))
   with

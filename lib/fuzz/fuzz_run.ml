@@ -179,43 +179,51 @@ let load_modules ?(allow_unknown = false) ?(io = io) modules : (Rapid_semantics.
 
 let load m = load_modules [ m ]
 
+(* The printer's round trip: the printed module reads back to the same tree, locations aside
+   (Ast_dump's equality, without writing the two dumps). *)
+let round_trip ~name m =
+  match Parse.parse_string ~name (Printer.module_declaration m) with
+  | Error d -> Error (Round_trip (Diagnostic.to_string d))
+  | Ok m' when not (Ast_erase.equal m m') -> Error (Round_trip (name ^ ": the printed module parses to another tree"))
+  | Ok _ -> Ok ()
+
+let refused : Rapid_semantics.Session.failure -> failure = function
+  | Front_end ds -> Refused (String.concat "; " (List.map Diagnostic.to_string ds))
+  | Static rs ->
+      Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
+                                     (List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs)))
+  | Internal m -> Exception m
+
+let is_stuck (o : observed) = String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck"
+
+(* Progress, determinism (the machine twice) and the engines' agreement on one loaded program. *)
+let judge_runs ~engines ~max_steps program =
+  let first = machine.run program ~max_steps in
+  if is_stuck first then Error (Stuck first.outcome)
+  else
+    let again = machine.run program ~max_steps in
+    match compare_observed "machine twice" first again with
+    | Some d -> Error (Nondeterministic d)
+    | None ->
+        let differ = List.find_map (fun e ->
+            let other = e.run program ~max_steps in
+            (* An engine counts its own fuel: a run that exhausts it is compared only when both
+               finished. *)
+            if not (first.finished && other.finished) then None
+            else compare_observed ("machine / " ^ e.engine_name) first other) engines in
+        match differ with
+        | Some d -> Error (Engines_differ d)
+        | None -> Ok first
+
 let check_program ?(engines = []) ?(max_steps = 200_000) source =
   try
     match Parse.parse_string ~name:"fuzz.mod" source with
     | Error d -> Error (Refused (Diagnostic.to_string d))
-    | Ok m -> (
-        (* The printer's round trip: the printed module reads back to the same tree, locations
-           aside (Ast_dump's equality, without writing the two dumps). *)
-        let printed = Printer.module_declaration m in
-        match Parse.parse_string ~name:"fuzz.mod" printed with
-        | Error d -> Error (Round_trip (Diagnostic.to_string d))
-        | Ok m' when not (Ast_erase.equal m m') ->
-            Error (Round_trip "the printed module parses to another tree")
-        | Ok _ -> (
+    | Ok m ->
+        Result.bind (round_trip ~name:"fuzz.mod" m) (fun () ->
             match load m with
-            | Error (Front_end ds) -> Error (Refused (String.concat "; " (List.map Diagnostic.to_string ds)))
-            | Error (Static rs) ->
-                Error (Refused (String.concat "; " (List.map Rapid_typing.Report.to_string
-                                                      (List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) rs))))
-            | Error (Internal m) -> Error (Exception m)
-            | Ok loaded ->
-                let first = machine.run loaded.program ~max_steps in
-                if String.length first.outcome >= 5 && String.sub first.outcome 0 5 = "stuck" then
-                  Error (Stuck first.outcome)
-                else
-                  let again = machine.run loaded.program ~max_steps in
-                  match compare_observed "machine twice" first again with
-                  | Some d -> Error (Nondeterministic d)
-                  | None ->
-                      let differ = List.find_map (fun e ->
-                          let other = e.run loaded.program ~max_steps in
-                          (* An engine counts its own fuel: a run that exhausts it is compared
-                             only when both finished. *)
-                          if not (first.finished && other.finished) then None
-                          else compare_observed ("machine / " ^ e.engine_name) first other) engines in
-                      match differ with
-                      | Some d -> Error (Engines_differ d)
-                      | None -> Ok first))
+            | Error f -> Error (refused f)
+            | Ok loaded -> judge_runs ~engines ~max_steps loaded.program)
   with
   | Stack_overflow -> Error (Exception "stack overflow")
   | Out_of_memory -> Error (Exception "out of memory")

@@ -72,6 +72,19 @@ val closure : engine
     exhausts its fuel or a resource, or reaches the controller or motion (which it leaves to the
     machine), is not finished and so not compared. *)
 
+val round_trip : name:string -> Rapid_syntax.Ast.module_declaration -> (unit, failure) result
+(** The printer's round trip of a parsed module: its printed text parses to the same tree,
+    locations aside. *)
+
+val refused : Rapid_semantics.Session.failure -> failure
+(** A load's failure as the fuzzer reports it (static errors only, not warnings). *)
+
+val is_stuck : observed -> bool
+
+val judge_runs : engines:engine list -> max_steps:int -> Rapid_semantics.Ir.program -> (observed, failure) result
+(** Progress, determinism (the machine runs it twice) and each engine's agreement with the
+    machine (when both finished), on a loaded program; [Ok] with the machine's observation. *)
+
 val check_program : ?engines:engine list -> ?max_steps:int -> string -> (observed, failure) result
 (** Parses, checks and runs the source with the machine twice and with every other engine;
     [Ok] with the machine's observation when every property holds. *)
