@@ -155,9 +155,13 @@ let async_tools_text = {rapid|MODULE atools (NOSTEPIN)
 ENDMODULE
 |rapid}
 
+(* The stimulus of both tests: a collision at 3 s and another at 6 s. *)
+let two_collisions () =
+  match Rapid_controller.Io_config.parse ~file:"c.io" "at 3 collision\nat 6 collision\n" with
+  | Ok io -> io | Error m -> Alcotest.fail m
+
 let kept_pointer () =
-  let io = match Rapid_controller.Io_config.parse ~file:"c.io" "at 3 collision\nat 6 collision\n" with
-    | Ok io -> io | Error m -> Alcotest.fail m in
+  let io = two_collisions () in
   List.iter (fun ending ->
       let text = Str.global_replace (Str.regexp_string "IF tries = 1 RETRY;") ("IF tries = 1 " ^ ending ^ ";") main_text in
       let out = both ~io [ ("amain", text); ("atools", async_tools_text) ] in
@@ -202,8 +206,7 @@ ENDMODULE
 |rapid}
 
 let kept_error_propagated () =
-  let io = match Rapid_controller.Io_config.parse ~file:"c.io" "at 3 collision\nat 6 collision\n" with
-    | Ok io -> io | Error m -> Alcotest.fail m in
+  let io = two_collisions () in
   let replace a b text = Str.global_replace (Str.regexp_string a) b text in
   List.iter (fun (middle_end, recovery, main_end) ->
       let text = propagated_text
