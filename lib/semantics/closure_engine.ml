@@ -202,14 +202,18 @@ let relocate st (c : act) e ~at =
   end
   else e
 
+(* This engine recurses on the native stack (doc/semantics.md): a call beyond its budget ends
+   the run before the stack overflows; the machine keeps its continuations on the heap. *)
+let native_stack_exhausted level =
+  M.Resource_exhausted
+    (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4; a larger ulimit -s, or --engine machine)" level)
+
 (* ------------------------------------------------------------------ the memory budget *)
 
 (* The budget of RAPID data (§1.4, doc/user-guide.md "Resources"), by the model of Value.bytes:
    beyond it the run ends as a resource exhausted at the place, before anything is built. *)
 let memory_exhausted st what at =
-  raise (Halt (M.Resource_exhausted
-                 (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
-                    (Rapid_syntax.Source.to_string at) what st.limits.max_memory)))
+  raise (Halt (M.memory_exhausted_by st.limits what at))
 
 (* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
 let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
@@ -998,15 +1002,13 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   let start (a : act) store pending =
     let level = a.level + 1 in
     if level >= limits.max_call_depth then
-      raise (Halt (M.Resource_exhausted
-                     (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" limits.max_call_depth)));
+      raise (Halt (M.call_depth_exceeded limits));
     if act_bytes > limits.max_memory - st.memory - pending then memory_exhausted st call_of at;
     tick st;
     let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
     let nest = code.c_nest in
     if st.native + nest > st.native_budget then
-      raise (Halt (M.Resource_exhausted
-                     (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" level)));
+      raise (Halt (native_stack_exhausted level));
     let memory = pending + act_bytes in
     let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
     st.native <- st.native + nest;
@@ -1337,8 +1339,7 @@ and pop st (c : act) =
    return-function, function-no-return, call-depth-exceeded). *)
 and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
   if c.level >= st.limits.max_call_depth then
-    raise (Halt (M.Resource_exhausted
-                   (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" st.limits.max_call_depth)));
+    raise (Halt (M.call_depth_exceeded st.limits));
   let bytes = activation_bytes r in
   if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st ("the call of " ^ r.name) at;
   tick st;
@@ -1346,8 +1347,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   (* Each activation costs the native stack in proportion to the nesting of its routine: beyond
      the budget the run ends as the call-depth limit ends it, before the stack overflows. *)
   if st.native + code.c_nest > st.native_budget then
-    raise (Halt (M.Resource_exhausted
-                   (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4)" c.level)));
+    raise (Halt (native_stack_exhausted c.level));
   c.nest <- code.c_nest;
   st.native <- st.native + code.c_nest;
   c.memory <- c.memory + bytes;

@@ -339,10 +339,17 @@ let activation ~routine ~slots ~present ~kinds ~module_data ~caller ~return_to ~
     memory = 0; handling = Body; retries = 0; retried = None; resume = None;
     trap_level = (match caller with None -> false | Some c -> c.trap_level) }
 
-let memory_exhausted cfg what at =
+(* The resource limits' outcomes (§1.4), each naming the option that sets its limit. *)
+let memory_exhausted_by limits what at =
   Resource_exhausted
     (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
-       (Source.to_string at) what cfg.limits.max_memory)
+       (Source.to_string at) what limits.max_memory)
+
+let memory_exhausted cfg what at = memory_exhausted_by cfg.limits what at
+
+let call_depth_exceeded limits =
+  Resource_exhausted
+    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4; --max-call-depth)" limits.max_call_depth)
 
 (* Charges [bytes] of RAPID data to the activation, or says the budget does not hold them. *)
 let charge cfg (act : activation) bytes =
@@ -467,8 +474,7 @@ let enter_routine cfg (cs : call_state) =
   let r = cs.callee in
   let depth = cfg.act.call_depth + 1 in
   if depth > cfg.limits.max_call_depth then begin
-    cfg.focus <- F_done (Resource_exhausted
-                           (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4)" cfg.limits.max_call_depth));
+    cfg.focus <- F_done (call_depth_exceeded cfg.limits);
     ("call-depth-exceeded", [])
   end
   else if activation_bytes r > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin

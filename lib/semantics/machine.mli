@@ -75,6 +75,13 @@ type limits = {
 
 val default_limits : limits
 
+val call_depth_exceeded : limits -> outcome
+(** The outcome of a call beyond [max_call_depth] (§1.4), in the words both engines give. *)
+
+val memory_exhausted_by : limits -> string -> Rapid_syntax.Source.region -> outcome
+(** The outcome of RAPID data [what] at a place beyond [max_memory], in the words both engines
+    give. *)
+
 val start :
   ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> ?motion:Motion_primitives.state ->
   ?cooperative:bool -> ?observe:bool -> Ir.program -> entry:string -> (config, string) result
