@@ -222,24 +222,40 @@ let refusals () =
   Alcotest.(check int) "--save onto a file: exit 2" 2 status
 
 (* The temporary file of a save killed before its rename is removed by the next save of that
-   module; one of a save still running (its process alive) is left to it. *)
+   module, whatever process has its id now; one another save is writing (it holds its lock) is
+   left to it, as is a file of another program's naming. *)
 let stale_parts () =
   with_dir @@ fun dir ->
   let target = Filename.concat dir "m.mod" in
-  (* A process id that is surely gone: a child that has ended and been reaped. *)
+  let part pid = Filename.concat dir (Printf.sprintf "m.mod.%d.rapid-sem.part" pid) in
+  (* A process id that is gone, and one that is alive but holds no lock. *)
   let gone = match Unix.fork () with 0 -> Unix._exit 0 | pid -> ignore (Unix.waitpid [] pid); pid in
-  let stale = Filename.concat dir (Printf.sprintf "m.mod.%d.rapid-sem.part" gone) in
-  let running = Filename.concat dir (Printf.sprintf "m.mod.%d.rapid-sem.part" (Unix.getppid ())) in
-  let foreign = Filename.concat dir "m.mod.x.part" in
-  List.iter (fun f -> write_file f "MODULE m\n") [ stale; running; foreign ];
-  (match P.write_atomically target "MODULE m\nENDMODULE\n" with Ok () -> () | Error e -> Alcotest.fail e);
+  let stale = part gone and reused = part (Unix.getppid ()) and foreign = Filename.concat dir "m.mod.x.part" in
+  List.iter (fun f -> write_file f "MODULE m\n") [ stale; reused; foreign ];
+  (* A save in progress: another process holding the lock of its part file. *)
+  let ready_r, ready_w = Unix.pipe () and go_r, go_w = Unix.pipe () in
+  let writing = part 1 in
+  write_file writing "MODULE m\n";
+  let child = match Unix.fork () with
+    | 0 ->
+        let fd = Unix.openfile writing [ Unix.O_RDWR ] 0 in
+        Unix.lockf fd Unix.F_LOCK 0;
+        ignore (Unix.write_substring ready_w "x" 0 1);
+        ignore (Unix.read go_r (Bytes.create 1) 0 1);
+        Unix._exit 0
+    | pid -> pid in
+  ignore (Unix.read ready_r (Bytes.create 1) 0 1);
+  let result = P.write_atomically target "MODULE m\nENDMODULE\n" in
+  ignore (Unix.write_substring go_w "x" 0 1);
+  ignore (Unix.waitpid [] child);
+  List.iter Unix.close [ ready_r; ready_w; go_r; go_w ];
+  (match result with Ok () -> () | Error e -> Alcotest.fail e);
   Alcotest.(check string) "written" "MODULE m\nENDMODULE\n" (read_file target);
-  Alcotest.(check bool) "the stale one removed" false (Sys.file_exists stale);
-  Alcotest.(check bool) "the live one kept" true (Sys.file_exists running);
+  Alcotest.(check bool) "a killed save's removed" false (Sys.file_exists stale);
+  Alcotest.(check bool) "... also when its process id is in use again" false (Sys.file_exists reused);
+  Alcotest.(check bool) "the one being written kept" true (Sys.file_exists writing);
   Alcotest.(check bool) "another program's kept" true (Sys.file_exists foreign);
-  Alcotest.(check (list string)) "no temporary file of this save" []
-    (List.filter (fun f -> Filename.check_suffix f (Printf.sprintf ".%d.rapid-sem.part" (Unix.getpid ())))
-       (Array.to_list (Sys.readdir dir)))
+  Alcotest.(check bool) "no temporary file of this save" false (Sys.file_exists (part (Unix.getpid ())))
 
 let suite = ("save", [
     Alcotest.test_case "--save: random values read back, a second save changes nothing" `Quick property;

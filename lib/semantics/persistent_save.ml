@@ -158,56 +158,76 @@ let splice ~original m current =
 
 (* -------------------------------------------------------------------------------- writing *)
 
-(* Temporary files are named <base>.<pid>.rapid-sem.part: the writer's process id tells a
-   stale one (its process is gone, killed in the middle of a save) from one another save is
-   writing now. *)
+(* Temporary files are named <base>.<pid>.rapid-sem.part, the process id keeping two saves
+   apart. Their writer holds a lock on them (lockf) until the rename: a part file that can be
+   locked is stale, left by a save killed in the middle (a killed process's locks are gone),
+   whatever process has its id now. *)
 let part_suffix = ".rapid-sem.part"
 
 let part_name base pid = Printf.sprintf "%s.%d%s" base pid part_suffix
 
-let alive pid = match Unix.kill pid 0 with () -> true | exception Unix.Unix_error (e, _, _) -> e = Unix.EPERM
-
-let stale_parts dir base =
+let is_part_of base f =
   let prefix = base ^ "." in
-  match Sys.readdir dir with
-  | exception Sys_error _ -> []
-  | names ->
-      Array.to_list names |> List.filter_map (fun f ->
-          let lp = String.length prefix and ls = String.length part_suffix and lf = String.length f in
-          if lf > lp + ls && String.sub f 0 lp = prefix && String.sub f (lf - ls) ls = part_suffix then
-            match int_of_string_opt (String.sub f lp (lf - lp - ls)) with
-            | Some pid when pid > 0 && (pid = Unix.getpid () || not (alive pid)) -> Some (Filename.concat dir f)
-            | _ -> None
-          else None)
+  let lp = String.length prefix and ls = String.length part_suffix and lf = String.length f in
+  lf > lp + ls && String.sub f 0 lp = prefix && String.sub f (lf - ls) ls = part_suffix
+  && Option.is_some (int_of_string_opt (String.sub f lp (lf - lp - ls)))
+
+(* Removes [file] when nobody holds its lock; it is unlinked while we hold it, so that its
+   writer (who checks, once it has the lock, that its name is still its file) starts again. *)
+let remove_if_stale file =
+  match Unix.openfile file [ Unix.O_RDWR; Unix.O_CLOEXEC ] 0 with
+  | exception Unix.Unix_error _ -> ()
+  | fd ->
+      (match Unix.lockf fd Unix.F_TLOCK 0 with
+       | () -> (try Unix.unlink file with Unix.Unix_error _ -> ())
+       | exception Unix.Unix_error _ -> ());
+      Unix.close fd
 
 let remove_stale_parts path =
-  List.iter (fun f -> try Sys.remove f with Sys_error _ -> ())
-    (stale_parts (Filename.dirname path) (Filename.basename path))
+  let dir = Filename.dirname path and base = Filename.basename path in
+  match Sys.readdir dir with
+  | exception Sys_error _ -> ()
+  | names -> Array.iter (fun f -> if is_part_of base f then remove_if_stale (Filename.concat dir f)) names
 
 let fsync_dir dir =
   match Unix.openfile dir [ Unix.O_RDONLY ] 0 with
   | fd -> (try Unix.fsync fd with Unix.Unix_error _ -> ()); Unix.close fd
   | exception Unix.Unix_error _ -> ()
 
+(* The temporary file, created and locked; a few tries when another save's cleaning removes
+   it between the two. *)
+let rec create_locked tmp tries =
+  let fd = Unix.openfile tmp [ Unix.O_RDWR; Unix.O_CREAT; Unix.O_EXCL; Unix.O_CLOEXEC ] 0o644 in
+  let mine = match Unix.lockf fd Unix.F_TLOCK 0 with
+    | () -> (
+        match Unix.stat tmp with
+        | st -> st.Unix.st_ino = (Unix.fstat fd).Unix.st_ino
+        | exception Unix.Unix_error _ -> false)
+    | exception Unix.Unix_error _ -> false in
+  if mine then fd
+  else begin
+    Unix.close fd;
+    if tries <= 1 then raise (Unix.Unix_error (Unix.EAGAIN, "lockf", tmp)) else create_locked tmp (tries - 1)
+  end
+
 let write_atomically path text =
   let dir = Filename.dirname path in
   remove_stale_parts path;
   let tmp = Filename.concat dir (part_name (Filename.basename path) (Unix.getpid ())) in
   try
-    let fd = Unix.openfile tmp [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_EXCL; Unix.O_CLOEXEC ] 0o644 in
-    (try
-       Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
-           let rec write off =
-             let n = String.length text in
-             if off < n then write (off + Unix.write_substring fd text off (n - off)) in
-           write 0;
-           Unix.fsync fd);
-       (* Keep the permissions of the file it replaces. *)
-       (match Unix.stat path with st -> Unix.chmod tmp st.Unix.st_perm | exception Unix.Unix_error _ -> ());
-       Unix.rename tmp path;
-       fsync_dir dir;
-       Ok ()
-     with Unix.Unix_error _ as e -> (try Sys.remove tmp with Sys_error _ -> ()); raise e)
+    let fd = create_locked tmp 5 in
+    Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
+        try
+          let n = String.length text in
+          let rec write off = if off < n then write (off + Unix.write_substring fd text off (n - off)) in
+          write 0;
+          Unix.fsync fd;
+          (* Keep the permissions of the file it replaces. *)
+          (match Unix.stat path with st -> Unix.fchmod fd st.Unix.st_perm | exception Unix.Unix_error _ -> ());
+          Unix.rename tmp path;
+          fsync_dir dir;
+          Ok ()
+        with Unix.Unix_error _ as e -> (try Unix.unlink tmp with Unix.Unix_error _ -> ()); raise e)
   with Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
 
 let read_bytes path =
