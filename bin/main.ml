@@ -493,7 +493,6 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
         | None -> Ok []
         | Some dir ->
             flush_output ();
-            (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
             Rapid_semantics.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
       match saved with
       | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
@@ -678,7 +677,11 @@ let run_cmd =
       else match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
       run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
-    else single_task files entries schedule motion_task @@ fun entry ->
+    else let saved_files = List.filter (( <> ) "-") files in
+    match Option.map (fun dir -> Rapid_semantics.Persistent_save.check ~dir ~files:saved_files) save with
+    | Some (Error m) -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
+    | _ ->
+    single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
       if json then print_line (Yojson.Safe.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
@@ -712,7 +715,6 @@ let run_cmd =
     let saved = match save with
       | None -> Ok []
       | Some dir ->
-          (try if not (Sys.file_exists dir) then Unix.mkdir dir 0o755 with Unix.Unix_error _ -> ());
           Rapid_semantics.Persistent_save.save_modules ~dir
             ~files:(List.filter (( <> ) "-") files) (M.module_data cfg) in
     match saved with

@@ -1,66 +1,111 @@
 module V = Value
 open Rapid_syntax
 
-(* The fewest significant digits that read back as the same number of this precision. *)
-let shortest ~round ~max_digits f =
-  if Float.is_integer f && Float.abs f < 1e15 then Printf.sprintf "%.0f" f
-  else
-    let rec go p =
-      let s = Printf.sprintf "%.*g" p f in
-      if p >= max_digits || round (float_of_string s) = f then s else go (p + 1) in
-    let s = go 1 in
-    (* RAPID writes the exponent with E (§2.5). *)
-    String.map (fun c -> if c = 'e' then 'E' else c) s
+(* ------------------------------------------------------------------------------ literals *)
 
-let rec literal = function
-  | V.Num f -> shortest ~round:V.to_single ~max_digits:9 f
-  | V.Dnum f -> shortest ~round:(fun x -> x) ~max_digits:17 f
+(* The exact value a numeric literal's text denotes (§2.5), rounded as the declaration's type
+   rounds it; a leading minus is the unary operator. *)
+let reads_as precision s =
+  let negative = String.length s > 0 && s.[0] = '-' in
+  let digits = if negative then String.sub s 1 (String.length s - 1) else s in
+  match Num_literal.of_text digits with
+  | Error _ -> None
+  | Ok lit -> (
+      match V.of_literal lit precision with
+      | V.Num f | V.Dnum f -> Some (if negative then -.f else f)
+      | _ -> None)
+
+(* The fewest significant digits whose literal reads back as exactly [f]: checked by the
+   lexer's own reading of a literal, not by the host's float_of_string, whose rounding to
+   double first and then to single may differ from the literal's rounding to single. *)
+let shortest precision ~max_digits f =
+  if not (Float.is_finite f) then V.type_mismatch "a finite number (R-3.12-c)"
+  else if Float.is_integer f && Float.abs f < 1e15 then Printf.sprintf "%.0f" f
+  else
+    (* RAPID writes the exponent with E (§2.5). *)
+    let text p = String.map (fun c -> if c = 'e' then 'E' else c) (Printf.sprintf "%.*g" p f) in
+    let rec go p =
+      let s = text p in
+      if p >= max_digits || reads_as precision s = Some f then s else go (p + 1) in
+    go 1
+
+(* The length of the valid UTF-8 sequence at [i] of [s] and its code point; (0, 0) when the
+   bytes there are not one (overlong forms, surrogates and code points beyond U+10FFFF are
+   not). *)
+let utf8_at s i =
+  let n = String.length s in
+  let byte k = if i + k < n then Char.code s.[i + k] else -1 in
+  let cont k = let b = byte k in if b >= 0x80 && b < 0xC0 then b land 0x3F else -1 in
+  let c = byte 0 in
+  if c < 0x80 then (1, c)
+  else if c < 0xC2 then (0, 0)
+  else if c < 0xE0 then (if cont 1 >= 0 then (2, ((c land 0x1F) lsl 6) lor cont 1) else (0, 0))
+  else if c < 0xF0 then
+    if cont 1 < 0 || cont 2 < 0 then (0, 0)
+    else
+      let u = ((c land 0x0F) lsl 12) lor (cont 1 lsl 6) lor cont 2 in
+      if u < 0x800 || (u >= 0xD800 && u <= 0xDFFF) then (0, 0) else (3, u)
+  else if c < 0xF5 then
+    if cont 1 < 0 || cont 2 < 0 || cont 3 < 0 then (0, 0)
+    else
+      let u = ((c land 0x07) lsl 18) lor (cont 1 lsl 12) lor (cont 2 lsl 6) lor cont 3 in
+      if u < 0x10000 || u > 0x10FFFF then (0, 0) else (4, u)
+  else (0, 0)
+
+(* §2.7: a string literal whose value is exactly the bytes of [s] when the literal stands in a
+   file of this encoding. The lexer gives a literal's value as the UTF-8 of the characters the
+   file decodes to, so a character is written as itself only when decoding it gives back the
+   same bytes: in a UTF-8 file a whole UTF-8 sequence, in a Latin-1 file the one byte of a
+   character U+00A0..U+00FF. Every other byte, control characters (C0, DEL, C1) included, is
+   a character code \HH; a quote and a backslash are written twice. *)
+let string_literal ~latin1 s =
+  let b = Buffer.create (String.length s + 2) in
+  let n = String.length s in
+  let code i = Buffer.add_string b (Printf.sprintf "\\%02X" (Char.code s.[i])) in
+  let rec go i =
+    if i < n then
+      match s.[i] with
+      | '"' -> Buffer.add_string b "\"\""; go (i + 1)
+      | '\\' -> Buffer.add_string b "\\\\"; go (i + 1)
+      | c when Char.code c < 0x20 || Char.code c = 0x7F -> code i; go (i + 1)
+      | c when Char.code c < 0x80 -> Buffer.add_char b c; go (i + 1)
+      | _ -> (
+          match utf8_at s i with
+          | k, u when k > 0 && u >= 0xA0 && not latin1 -> Buffer.add_string b (String.sub s i k); go (i + k)
+          | 2, u when u >= 0xA0 && u <= 0xFF && latin1 -> Buffer.add_char b (Char.chr u); go (i + 2)
+          | _ -> code i; go (i + 1)) in
+  Buffer.add_char b '"';
+  go 0;
+  Buffer.add_char b '"';
+  Buffer.contents b
+
+let rec literal_in ~latin1 = function
+  | V.Num f -> shortest `Num ~max_digits:9 f
+  | V.Dnum f -> shortest `Dnum ~max_digits:17 f
   | V.Bool b -> if b then "TRUE" else "FALSE"
-  | V.String s -> Format.string_literal s
-  | V.Record cs | V.Array cs -> "[" ^ String.concat "," (Array.to_list (Array.map literal cs)) ^ "]"
+  | V.String s -> string_literal ~latin1 s
+  | V.Record cs | V.Array cs -> "[" ^ String.concat "," (Array.to_list (Array.map (literal_in ~latin1) cs)) ^ "]"
   | V.Handle _ -> V.type_mismatch "a handle has no literal"
 
-(* Byte offset in the file of each character offset of the decoded text. *)
-let byte_offsets original (d : Decode.t) =
-  let n = d.length in
-  let offsets = Array.make (n + 1) 0 in
-  if d.latin1 then Array.iteri (fun i _ -> offsets.(i) <- i) offsets
-  else begin
-    let b = ref (if d.byte_order_mark then 3 else 0) in
-    for i = 0 to n do
-      offsets.(i) <- !b;
-      if !b < String.length original then begin
-        let c = Char.code original.[!b] in
-        (* A CR LF is one line break but two characters of the decoded text? The decoder keeps
-           them as they are: one character per code point. *)
-        b := !b + (if c < 0x80 then 1 else if c < 0xE0 then 2 else if c < 0xF0 then 3 else 4)
-      end
-    done
-  end;
+let literal v = literal_in ~latin1:false v
+
+(* -------------------------------------------------------------------------------- splice *)
+
+(* Byte offset in the decoded text (UTF-8, Decode.t.text) of each character offset, the unit
+   of every region of the tree (Source). *)
+let text_offsets (d : Decode.t) =
+  let offsets = Array.make (d.length + 1) (String.length d.text) in
+  let c = ref 0 in
+  String.iteri (fun i ch ->
+      if Char.code ch land 0xC0 <> 0x80 && !c <= d.length then (offsets.(!c) <- i; incr c)) d.text;
   offsets
 
-(* Text for a Latin-1 file: the UTF-8 of a literal as ISO 8859-1 bytes. *)
-let to_latin1 s =
-  let b = Buffer.create (String.length s) in
-  let n = String.length s in
-  let rec go i =
-    if i < n then begin
-      let c = Char.code s.[i] in
-      let len = if c < 0x80 then 1 else if c < 0xE0 then 2 else if c < 0xF0 then 3 else 4 in
-      (if len = 1 then Buffer.add_char b s.[i]
-       else if len = 2 && i + 1 < n then
-         let u = ((c land 0x1F) lsl 6) lor (Char.code s.[i + 1] land 0x3F) in
-         Buffer.add_char b (if u < 256 then Char.chr u else '?')
-       else Buffer.add_char b '?');
-      go (i + len)
-    end in
-  go 0; Buffer.contents b
+(* One replacement: the characters [start, stop) of the decoded text become [value]'s literal. *)
+type edit = { start : int; stop : int; before : string; value : V.t }
 
-let splice ~original (m : Ast.module_declaration) current =
-  let d = Decode.decode original in
-  let offsets = byte_offsets original d in
-  let byte c = offsets.(max 0 (min c (Array.length offsets - 1))) in
-  let edits = List.filter_map (fun (decl : Ast.data_declaration) ->
+let edits (d : Decode.t) offsets (m : Ast.module_declaration) current =
+  let byte c = offsets.(max 0 (min c d.length)) in
+  List.filter_map (fun (decl : Ast.data_declaration) ->
       match decl.it with
       | Ast.Data_declaration { storage = Pers; name = { it = Ident n; at = name_at }; initial_value; _ } -> (
           match current n with
@@ -68,65 +113,196 @@ let splice ~original (m : Ast.module_declaration) current =
           | Some v when (match literal v with _ -> false | exception V.Type_mismatch _ -> true) ->
               (* A value without a literal (an installed object) keeps its text. *)
               None
-          | Some v ->
-              let text = literal v in
-              let text = if d.latin1 then to_latin1 text else text in
+          | Some value -> (
               match initial_value with
-              | Some e -> Some (byte (Source.start_offset e.at), byte (Source.stop_offset e.at), text)
+              | Some e -> Some { start = Source.start_offset e.at; stop = Source.stop_offset e.at; before = ""; value }
               | None ->
                   (* Before the declaration's ';'. *)
-                  let stop = byte (Source.stop_offset decl.at) in
-                  let semi = try String.rindex_from original (stop - 1) ';' with Not_found | Invalid_argument _ -> -1 in
-                  if semi >= byte (Source.stop_offset name_at) then Some (semi, semi, " := " ^ text) else None)
-      | _ -> None) m.data_declarations in
-  let edits = List.sort (fun (a, _, _) (b, _, _) -> compare a b) edits in
-  let buf = Buffer.create (String.length original + 64) in
-  let last = List.fold_left (fun pos (a, b, text) ->
-      Buffer.add_string buf (String.sub original pos (a - pos));
-      Buffer.add_string buf text; b) 0 edits in
-  Buffer.add_string buf (String.sub original last (String.length original - last));
+                  let first = Source.stop_offset name_at in
+                  let rec semicolon c =
+                    if c < first then None else if d.text.[byte c] = ';' then Some c else semicolon (c - 1) in
+                  Option.map (fun c -> { start = c; stop = c; before = " := "; value })
+                    (semicolon (min (Source.stop_offset decl.at) d.length - 1))))
+      | _ -> None) m.data_declarations
+  |> List.sort (fun a b -> compare a.start b.start)
+
+(* [text] with the edits applied, their offsets mapped to positions of [text] by [at]. *)
+let apply text at literal edits =
+  let buf = Buffer.create (String.length text + 64) in
+  let last = List.fold_left (fun pos e ->
+      let a = at e.start in
+      Buffer.add_string buf (String.sub text pos (a - pos));
+      Buffer.add_string buf e.before;
+      Buffer.add_string buf (literal e.value); at e.stop) 0 edits in
+  Buffer.add_string buf (String.sub text last (String.length text - last));
   Buffer.contents buf
+
+let bom = "\xEF\xBB\xBF"
+
+let splice ~original m current =
+  let d = Decode.decode original in
+  let offsets = text_offsets d in
+  let skip = if d.byte_order_mark then 3 else 0 in
+  let es = edits d offsets m current in
+  (* The same characters measured in the file's own unit: a byte of a Latin-1 file is one
+     character, a UTF-8 file is the decoded text itself. *)
+  let raw_at c = skip + (if d.latin1 then c else offsets.(c)) in
+  let spliced = apply original raw_at (literal_in ~latin1:d.latin1) es in
+  let meant = apply d.text (fun c -> offsets.(c)) literal es in
+  if (Decode.decode spliced).text = meant then spliced
+  else
+    (* A Latin-1 file whose only bytes that are not UTF-8 stood in the replaced values would
+       now read as UTF-8, and any other character above U+007F would change: the module is
+       written as UTF-8 (chapter 16), every character as it was (R-2.23-save1). *)
+    (if d.byte_order_mark then bom else "") ^ meant
+
+(* -------------------------------------------------------------------------------- writing *)
+
+(* Temporary files are named <base>.<pid>.rapid-sem.part, the process id keeping two saves
+   apart. Their writer holds a lock on them (lockf) until the rename: a part file that can be
+   locked is stale, left by a save killed in the middle (a killed process's locks are gone),
+   whatever process has its id now. *)
+let part_suffix = ".rapid-sem.part"
+
+let part_name base pid = Printf.sprintf "%s.%d%s" base pid part_suffix
+
+let is_part_of base f =
+  let prefix = base ^ "." in
+  let lp = String.length prefix and ls = String.length part_suffix and lf = String.length f in
+  lf > lp + ls && String.sub f 0 lp = prefix && String.sub f (lf - ls) ls = part_suffix
+  && Option.is_some (int_of_string_opt (String.sub f lp (lf - lp - ls)))
+
+(* Removes [file] when nobody holds its lock; it is unlinked while we hold it, so that its
+   writer (who checks, once it has the lock, that its name is still its file) starts again. *)
+let remove_if_stale file =
+  match Unix.openfile file [ Unix.O_RDWR; Unix.O_CLOEXEC ] 0 with
+  | exception Unix.Unix_error _ -> ()
+  | fd ->
+      (match Unix.lockf fd Unix.F_TLOCK 0 with
+       | () -> (try Unix.unlink file with Unix.Unix_error _ -> ())
+       | exception Unix.Unix_error _ -> ());
+      Unix.close fd
+
+let remove_stale_parts path =
+  let dir = Filename.dirname path and base = Filename.basename path in
+  match Sys.readdir dir with
+  | exception Sys_error _ -> ()
+  | names -> Array.iter (fun f -> if is_part_of base f then remove_if_stale (Filename.concat dir f)) names
+
+let fsync_dir dir =
+  match Unix.openfile dir [ Unix.O_RDONLY ] 0 with
+  | fd -> (try Unix.fsync fd with Unix.Unix_error _ -> ()); Unix.close fd
+  | exception Unix.Unix_error _ -> ()
+
+(* The temporary file, created and locked; a few tries when another save's cleaning removes
+   it between the two. *)
+let rec create_locked tmp tries =
+  let fd = Unix.openfile tmp [ Unix.O_RDWR; Unix.O_CREAT; Unix.O_EXCL; Unix.O_CLOEXEC ] 0o644 in
+  let mine = match Unix.lockf fd Unix.F_TLOCK 0 with
+    | () -> (
+        match Unix.stat tmp with
+        | st -> st.Unix.st_ino = (Unix.fstat fd).Unix.st_ino
+        | exception Unix.Unix_error _ -> false)
+    | exception Unix.Unix_error _ -> false in
+  if mine then fd
+  else begin
+    Unix.close fd;
+    if tries <= 1 then raise (Unix.Unix_error (Unix.EAGAIN, "lockf", tmp)) else create_locked tmp (tries - 1)
+  end
 
 let write_atomically path text =
   let dir = Filename.dirname path in
-  match Filename.temp_file ~temp_dir:dir (Filename.basename path ^ ".") ".part" with
-  | exception Sys_error m -> Error m
-  | tmp -> (
-      try
-        let fd = Unix.openfile tmp [ Unix.O_WRONLY; Unix.O_TRUNC ] 0o644 in
-        Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
-            let b = Bytes.of_string text in
-            let rec write off = if off < Bytes.length b then write (off + Unix.write fd b off (Bytes.length b - off)) in
-            write 0;
-            Unix.fsync fd);
-        (* Keep the permissions of the file it replaces. *)
-        (match Unix.stat path with st -> Unix.chmod tmp st.Unix.st_perm | exception Unix.Unix_error _ -> ());
-        Unix.rename tmp path;
-        Ok ()
-      with Unix.Unix_error (e, _, _) -> (try Sys.remove tmp with Sys_error _ -> ()); Error (Unix.error_message e))
+  remove_stale_parts path;
+  let tmp = Filename.concat dir (part_name (Filename.basename path) (Unix.getpid ())) in
+  try
+    let fd = create_locked tmp 5 in
+    Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
+        try
+          let n = String.length text in
+          let rec write off = if off < n then write (off + Unix.write_substring fd text off (n - off)) in
+          write 0;
+          Unix.fsync fd;
+          (* Keep the permissions of the file it replaces. *)
+          (match Unix.stat path with st -> Unix.fchmod fd st.Unix.st_perm | exception Unix.Unix_error _ -> ());
+          Unix.rename tmp path;
+          fsync_dir dir;
+          Ok ()
+        with Unix.Unix_error _ as e -> (try Unix.unlink tmp with Unix.Unix_error _ -> ()); raise e)
+  with Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
 
 let read_bytes path =
   match open_in_bin path with
   | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
-      try Ok (really_input_string ic (in_channel_length ic)) with Sys_error m | Failure m -> Error m)
+      try Ok (really_input_string ic (in_channel_length ic)) with
+      | Sys_error m | Failure m -> Error m
+      | End_of_file -> Error "the file changed while it was read")
   | exception Sys_error m -> Error m
 
-let save_modules ~dir ~files data =
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
-  let rec go written = function
-    | [] -> Ok (List.rev written)
-    | file :: rest -> (
-        match read_bytes file with
-        | Error m -> Error m
-        | Ok original -> (
-            match Parse.parse_string ~name:file original with
-            | Error d -> Error (Diagnostic.to_string d)
-            | Ok m ->
-                let module_name = match m.module_name.it with Ast.Ident n -> n | Ast.ID_placeholder -> "" in
-                let current name =
-                  List.find_map (fun (md, n, v) -> if same md module_name && same n name then Some v else None) data in
-                let target = Filename.concat dir (Filename.basename file) in
-                match write_atomically target (splice ~original m current) with
-                | Ok () -> go (target :: written) rest
-                | Error e -> Error (target ^ ": " ^ e))) in
+(* Two files of one base name would be saved to one file, the second over the first. *)
+let same_base files =
+  let rec go seen = function
+    | [] -> None
+    | f :: rest -> (
+        let base = Filename.basename f in
+        match List.assoc_opt base seen with
+        | Some g when g <> f -> Some (g, f, base)
+        | _ -> go ((base, f) :: seen) rest) in
   go [] files
+
+let check ~dir ~files =
+  if dir = "" then Error "the folder is an empty name (for the current folder, write --save .)"
+  else if Sys.file_exists dir && not (Sys.is_directory dir) then Error (dir ^ ": not a folder")
+  else match same_base files with
+    | Some (a, b, base) ->
+        Error (Printf.sprintf "%s and %s would both be saved as %s: nothing is saved (give the files different names)"
+                 a b (Filename.concat dir base))
+    | None -> Ok ()
+
+let prepare_dir ~dir ~files =
+  match check ~dir ~files with
+  | Error m -> Error m
+  | Ok () when Sys.file_exists dir -> Ok ()
+  | Ok () -> (
+      match Unix.mkdir dir 0o755 with
+      | () -> Ok ()
+      | exception Unix.Unix_error (e, _, _) -> Error (dir ^ ": " ^ Unix.error_message e))
+
+(* The text to write for one file, or why it cannot be saved. *)
+let saved_text data file =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  match read_bytes file with
+  | Error m -> Error m
+  | Ok original -> (
+      match Parse.parse_string ~name:file original with
+      | Error d -> Error (Diagnostic.to_string d)
+      | Ok m -> (
+          let module_name = match m.module_name.it with Ast.Ident n -> n | Ast.ID_placeholder -> "" in
+          let current name =
+            List.find_map (fun (md, n, v) -> if same md module_name && same n name then Some v else None) data in
+          let text = splice ~original m current in
+          (* Never replace a module by one that does not read back. *)
+          match Parse.parse_string ~name:file text with
+          | Ok _ -> Ok text
+          | Error d -> Error ("the saved module would not read back: " ^ Diagnostic.to_string d)))
+
+let save_modules ~dir ~files data =
+  match prepare_dir ~dir ~files with
+  | Error m -> Error m
+  | Ok () -> (
+      (* Every text first, so that a module that cannot be saved leaves every file as it was. *)
+      let rec texts acc = function
+        | [] -> Ok (List.rev acc)
+        | file :: rest -> (
+            match saved_text data file with
+            | Ok t -> texts ((Filename.concat dir (Filename.basename file), t) :: acc) rest
+            | Error e -> Error (file ^ ": " ^ e)) in
+      match texts [] files with
+      | Error e -> Error e
+      | Ok ts ->
+          let rec write written = function
+            | [] -> Ok (List.rev written)
+            | (target, text) :: rest -> (
+                match write_atomically target text with
+                | Ok () -> write (target :: written) rest
+                | Error e -> Error (target ^ ": " ^ e)) in
+          write [] ts)
