@@ -31,8 +31,18 @@ let parse_expression text =
   if has_newline text then Error "an expression stands on one line, without ';'"
   else Result.map snd (statement_of ("debugger := " ^ text))
 
+(* A target that is no data reference would be reported as a statement of the wrapping
+   routine (a call, a declaration): the command's form says more. *)
 let parse_assignment text =
-  if has_newline text then Error "an assignment stands on one line, without ';'" else statement_of text
+  if has_newline text then Error "an assignment stands on one line, without ';'"
+  else
+    match statement_of text with
+    | Ok a -> Ok a
+    | Error m ->
+        let target = match String.index_opt text ':' with Some i -> String.trim (String.sub text 0 i) | None -> "" in
+        if target <> "" && Result.is_error (statement_of (target ^ " := 0")) then
+          Error (Printf.sprintf "set REF := EXPR: %s is not a data object, an element or a component (§4.5)" target)
+        else Error m
 
 (* A value with the type it is known to have, for its components. *)
 type typed = { v : Value.t; t : T.object_type option }
