@@ -140,7 +140,7 @@ ENDMODULE
    never stop the program pointer. *)
 let malformed_commands () =
   let file = program {|MODULE m
-  VAR num x := 0;
+  VAR num x := 0; VAR num a{2};
   PROC main()
     x := 1;
 
@@ -175,6 +175,10 @@ ENDMODULE
           Alcotest.(check (list string)) "set alone" [ "set: set REF := EXPR" ] (answer "set");
           Alcotest.(check (list string)) "set of a literal"
             [ "set: set REF := EXPR: 3 is not a data object, an element or a component (§4.5)" ] (answer "set 3 := 4");
+          (* An index beyond int's range is not wrapped round into the array. *)
+          Alcotest.(check (list string)) "a huge index"
+            [ "print: ERR_OUTOFBND: index 1.00000002e+20 is outside the array (§3.6)" ]
+            (answer "print a{99999999999999999999}");
           Alcotest.(check (list string)) "nothing changed" [ "x = 0" ] (answer "print x");
           (* The refused breakpoints took no number; the one set stops continue. *)
           Alcotest.(check (list string)) "continue" [ "m:6  x := 2;" ] (answer "continue"))

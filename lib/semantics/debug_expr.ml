@@ -51,6 +51,9 @@ let element_type (t : T.object_type option) = Option.map (fun (t : T.object_type
 
 let to_index v =
   match v with
+  (* Beyond any array's bounds before int_of_float could wrap it round into one. *)
+  | Value.Num f | Value.Dnum f when Float.is_integer f && Float.abs f > 1e15 ->
+      Error (Printf.sprintf "ERR_OUTOFBND: index %.9g is outside the array (§3.6)" f)
   | Value.Num f | Value.Dnum f when Float.is_integer f -> Ok (int_of_float f)
   | Value.Num _ | Value.Dnum _ -> Error "ERR_NOTINTVAL: an index is an integer (§3.6)"
   | _ -> Error "an index is a num (§3.6)"
