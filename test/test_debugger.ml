@@ -179,6 +179,11 @@ ENDMODULE
           Alcotest.(check (list string)) "a huge index"
             [ "print: ERR_OUTOFBND: index 1.00000002e+20 is outside the array (§3.6)" ]
             (answer "print a{99999999999999999999}");
+          (* tooldata has three components, as a pos: its negation is refused, not a crash. *)
+          Alcotest.(check (list string)) "the negation of a tooldata"
+            [ "print: no operator of §3.12 takes an operand of this type" ] (answer "print -tool0");
+          Alcotest.(check (list string)) "set to the negation of a tooldata"
+            [ "set: no operator of §3.12 takes an operand of this type" ] (answer "set x := -tool0");
           Alcotest.(check (list string)) "nothing changed" [ "x = 0" ] (answer "print x");
           (* The refused breakpoints took no number; the one set stops continue. *)
           Alcotest.(check (list string)) "continue" [ "m:6  x := 2;" ] (answer "continue"))
