@@ -25,7 +25,7 @@
 #   - a file written outside the temporary folder (the sandbox is inside it: --fs).
 # The last line is
 #   cli: INPUTS inputs, E125 exit 125, E134 exit 134, H hangs, X other failures
-# (INPUTS = 2 N, both surfaces; the exit 125 and 134 counts are the runs of BIN), and the exit status is 0 iff the four counts are 0.
+# (INPUTS = 2 N, both surfaces; the counts of exit 125 and 134 are of the runs of BIN), and the exit status is 0 iff the four counts are 0.
 set -u
 if [ $# -lt 1 ]; then echo "usage: $0 BIN [N]" >&2; exit 2; fi
 BIN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -82,7 +82,9 @@ def expr(r, names, depth):
     if k == 0: return r.choice(NUMBERS)
     if k == 1: return r.choice(names)
     if k == 2: return r.choice(['"text"', '""', "TRUE", "FALSE", '"\\41"', '"' + "x" * r.choice([1, 80, 81]) + '"'])
-    if k == 3: return r.choice(names) + r.choice(["{1}", "{0}", "{-1}", "{99999999999999999999}", "{1,2}", ".x", ".trans.z", "{2}.count", "{}"])
+    if k == 3:
+        return r.choice(names) + r.choice(["{1}", "{0}", "{-1}", "{99999999999999999999}", "{1,2}", ".x",
+                                           ".trans.z", "{2}.count", "{}"])
     if k <= 6: return expr(r, names, depth - 1) + " " + r.choice(OPS) + " " + expr(r, names, depth - 1)
     if k == 7: return "(" + expr(r, names, depth - 1) + ")"
     if k == 8: return r.choice(["NOT ", "-", "+", "- -"]) + expr(r, names, depth - 1)
@@ -97,7 +99,8 @@ def mangle(r, s):
 
 def command(r, names, files):
     k = r.randrange(20)
-    big = r.choice(["", "0", "1", "2", "5", "100", "100000", "999999999999", "99999999999999999999", "-1", "x", "1.5", "1e3"])
+    big = r.choice(["", "0", "1", "2", "5", "100", "100000", "999999999999", "99999999999999999999", "-1", "x",
+                    "1.5", "1e3"])
     if k <= 2: return r.choice(["step", "s"]) + (" " + big if big else "")
     if k == 3: return r.choice(["next", "n", "finish", "where", "continue", "c"])
     if k == 4: return r.choice(["back", "b", "back", "step", "back"])
@@ -105,17 +108,22 @@ def command(r, names, files):
         f = r.choice(files + [os.path.basename(x) for x in files] + ["", "nosuch.mod", "/etc/passwd", ":", "a:b"])
         line = r.choice([str(r.randrange(-3, 60)), "99999999999999999999", "", "x", "0", "1e2"])
         return "break " + f + ":" + line if r.random() < 0.9 else "break " + f
-    if k == 6: return "delete" + (" " + r.choice(["1", "2", "0", "-1", "99999999999999999999", "x", "1 2"]) if r.random() < 0.7 else "")
+    if k == 6:
+        return "delete" + (" " + r.choice(["1", "2", "0", "-1", "99999999999999999999", "x", "1 2"])
+                           if r.random() < 0.7 else "")
     if k <= 10: return r.choice(["print ", "p "]) + mangle(r, expr(r, names, r.randrange(5)))
     if k <= 13:
         target = r.choice(names) + r.choice(["", "", "{1}", "{3}", ".x", "{1,1}", "{99999999999999999999}"])
         if r.random() < 0.1: target = r.choice(["", "3", "(x)", "x + 1", "ERRNO", "\"s\""])
-        return "set " + target + r.choice([" := ", " := ", ":=", " = ", " "]) + mangle(r, expr(r, names, r.randrange(4)))
-    if k == 14: return r.choice(["print", "p", "set", "set := 5", "break", "delete x", "quit now", "#", "# comment", ""])
+        assign = r.choice([" := ", " := ", ":=", " = ", " "])
+        return "set " + target + assign + mangle(r, expr(r, names, r.randrange(4)))
+    if k == 14:
+        return r.choice(["print", "p", "set", "set := 5", "break", "delete x", "quit now", "#", "# comment", ""])
     if k == 15: return "".join(chr(r.randrange(1, 256)) for _ in range(r.randrange(1, 40)))
     if k == 16:
         d = r.choice([50, 999, 1001, 5000, 100000])
-        return r.choice(["print " + "(" * d + "1" + ")" * d, "print " + "1+" * d + "1", "set " + r.choice(names) + " := " + "[" * d + "]" * d,
+        return r.choice(["print " + "(" * d + "1" + ")" * d, "print " + "1+" * d + "1",
+                         "set " + r.choice(names) + " := " + "[" * d + "]" * d,
                          "print " + "-" * d + "1", "print " + "NOT " * d + "TRUE"])
     if k == 17: return r.choice(["print ", "set x := ", "break ", "step "]) + "x" * r.choice([1000, 100000])
     if k == 18: return r.choice(["step", "next"]) + "\r"

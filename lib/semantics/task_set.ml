@@ -176,7 +176,8 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
             let w = if first then (W.name_task world ~name:s.name ~motion:is_motion; world)
               else W.add_task world ~name:s.name ~motion:is_motion in
             let motion = if is_motion then motion else Motion_primitives.create () in
-            match M.start ~limits ~world:w ~stub_unmodelled ~motion ~cooperative:true ~observe l.program ~entry:s.entry with
+            match M.start ~limits ~world:w ~stub_unmodelled ~motion ~cooperative:true ~observe l.program
+                    ~entry:s.entry with
             | Error m -> Error (Refused (Printf.sprintf "task %s: %s" s.name m))
             | Ok cfg -> start_all ((s.name, cfg, modules, l) :: acc) false rest)
       in
