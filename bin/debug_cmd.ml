@@ -41,11 +41,16 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
             match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
         then [ ident m.module_name ] else []) parsed in
     let type_of = Rapid_semantics.Debug_types.type_of parsed in
-    let session = D.create ~max_steps ~routine_data ~type_of
+    let files = List.map (fun f -> if f = "-" then Rapid_syntax.Parse.stdin_name else f) files in
+    let session = D.create ~max_steps ~routine_data ~type_of ~files
         ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
+    (* A person typing commands sees when the session waits for the next one; a script or a
+       pipe gets the transcript alone (doc/debugger.md). *)
+    let prompt = script = None && Unix.isatty Unix.stdin in
     let rec loop () =
+      if prompt then (print_string "(rapid-sem) "; flush stdout);
       match input_line ic with
-      | exception End_of_file -> ()
+      | exception End_of_file -> if prompt then print_newline ()
       | line ->
           let line = String.trim line in
           if echo && line <> "" then print_endline ("(rapid) " ^ line);

@@ -18,8 +18,11 @@ let exit_output_failed = 141
 
 exception Output_failed of string
 
+(* Each line leaves the process as it is written: a reader waiting for it (a client before the
+   program's SocketAccept) would otherwise wait for the buffer to fill, and a run killed by a
+   timeout (SIGKILL) would lose every line still in the buffer (doc/services.md). *)
 let print_line s =
-  try print_string s; print_char '\n' with Sys_error m -> raise (Output_failed m)
+  try print_string s; print_char '\n'; flush stdout with Sys_error m -> raise (Output_failed m)
 
 let flush_output () = try flush stdout with Sys_error m -> raise (Output_failed m)
 
@@ -430,7 +433,7 @@ let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
     let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
     let io, added = Rapid_semantics.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
     List.iter (fun (s : Rapid_controller.Io_config.signal) ->
-        Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n" s.name
+        Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n%!" s.name
           (Rapid_controller.Io_config.type_name s.kind)) added;
     io
 

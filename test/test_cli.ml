@@ -35,4 +35,26 @@ let case name =
       let expected = read_file (Filename.concat golden_dir (name ^ ".out")) in
       Alcotest.(check string) (name ^ ".out") expected (transcript args))
 
-let suite = ("cli", List.map case (cases ()))
+(* The interactive debugger prompts on a terminal (doc/debugger.md); from a pipe it writes the
+   transcript alone. script(1) (util-linux's bsdutils, essential on Debian) gives the terminal. *)
+let debugger_prompt () =
+  let commands = Filename.temp_file "rapid-sem" ".in" and out = Filename.temp_file "rapid-sem" ".out" in
+  Fun.protect ~finally:(fun () -> Sys.remove commands; Sys.remove out) (fun () ->
+      let oc = open_out_bin commands in
+      output_string oc "step\nquit\n"; close_out oc;
+      let run shell =
+        let status = Sys.command (Printf.sprintf "cd %s && timeout 20 %s < %s > %s 2>&1" (Filename.quote golden_dir) shell
+                                    (Filename.quote commands) (Filename.quote out)) in
+        (status, read_file out) in
+      let debug = Printf.sprintf "%s debug debug-steps.mod" (Filename.quote binary) in
+      let prompts text = List.length (String.split_on_char '(' text |> List.filter (fun p ->
+          String.length p >= 11 && String.sub p 0 11 = "rapid-sem) ")) in
+      let status, piped = run debug in
+      Alcotest.(check int) "piped: exit 0" 0 status;
+      Alcotest.(check int) "piped: no prompt" 0 (prompts piped);
+      let status, on_terminal = run (Printf.sprintf "script -qec %s /dev/null" (Filename.quote debug)) in
+      Alcotest.(check int) "terminal: exit 0" 0 status;
+      (* One before each command: step, quit. *)
+      Alcotest.(check int) ("terminal: a prompt before each command: " ^ String.escaped on_terminal) 2 (prompts on_terminal))
+
+let suite = ("cli", List.map case (cases ()) @ [ Alcotest.test_case "the debugger prompts on a terminal" `Quick debugger_prompt ])

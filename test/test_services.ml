@@ -259,6 +259,115 @@ let save_engines () =
              "  PERS num row{3} := [1,4,9];" ]);
       Alcotest.(check string) "the closure engine saves as the machine" machine closure)
 
+
+(* The first line a run writes reaches a reader while the program still waits on the host (here
+   for a client that never comes): each line leaves the process as it is written, so a client
+   waiting for it does not deadlock and a run then killed loses nothing (doc/services.md). *)
+let waiting_server port = Printf.sprintf {|MODULE waiting
+  VAR socketdev listener;
+  VAR socketdev client;
+  PROC main()
+    TPWrite "listening";
+    SocketCreate listener;
+    SocketBind listener, "127.0.0.1", %d;
+    SocketListen listener;
+    SocketAccept listener, client \Time:=30;
+    TPWrite "never";
+  ENDPROC
+ENDMODULE
+|} port
+
+let first_line_before_wait () =
+  let dir = temp_dir () in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))) (fun () ->
+      let file = Filename.concat dir "waiting.mod" in
+      write_file file (waiting_server (free_port ()));
+      List.iter (fun (what, options, expected) ->
+          let out_r, out_w = Unix.pipe ~cloexec:true () in
+          let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+          let pid = Unix.create_process binary
+              (Array.of_list ([ binary; "run"; "--fs"; Filename.concat dir "fs" ] @ options @ [ file ]))
+              devnull out_w devnull in
+          Unix.close out_w; Unix.close devnull;
+          (* Lines up to [expected], read while the run waits; none may need the process's end. *)
+          let seen = Buffer.create 64 and chunk = Bytes.create 4096 in
+          let deadline = Unix.gettimeofday () +. 10. in
+          let rec read () =
+            if not (List.mem expected (String.split_on_char '\n' (Buffer.contents seen))) then
+              let left = deadline -. Unix.gettimeofday () in
+              if left > 0. then
+                match Unix.select [ out_r ] [] [] left with
+                | [], _, _ -> ()
+                | _ -> let n = Unix.read out_r chunk 0 4096 in if n > 0 then (Buffer.add_subbytes seen chunk 0 n; read ()) in
+          read ();
+          let still_running = match Unix.waitpid [ Unix.WNOHANG ] pid with 0, _ -> true | _ -> false in
+          (try Unix.kill pid Sys.sigkill with Unix.Unix_error _ -> ());
+          ignore (Unix.waitpid [] pid); Unix.close out_r;
+          Alcotest.(check bool) (what ^ ": the run still waits for its client") true still_running;
+          Alcotest.(check bool) (what ^ ": its first line was read meanwhile: " ^ String.escaped (Buffer.contents seen)) true
+            (List.mem expected (String.split_on_char '\n' (Buffer.contents seen))))
+        [ ("run", [], "listening");
+          ("run --engine machine", [ "--engine"; "machine" ], "listening");
+          ("run --json", [ "--json" ], {|{"event":"output","text":"listening"}|});
+          ("run --json --engine machine", [ "--json"; "--engine"; "machine" ], {|{"event":"output","text":"listening"}|}) ])
+
+(* 200 clients connecting at once all get their connection within a bound, while the server
+   accepts them one by one: the listen backlog holds them (R-13-cli1); with a backlog of 8 the
+   kernel drops the rest's SYNs, and they retry after 1 s, 3 s, 7 s ... *)
+let many_clients_server port n = Printf.sprintf {|MODULE many
+  VAR socketdev listener;
+  VAR socketdev client;
+  PROC main()
+    SocketCreate listener;
+    SocketBind listener, "127.0.0.1", %d;
+    SocketListen listener;
+    TPWrite "listening";
+    FOR i FROM 1 TO %d DO
+      SocketAccept listener, client \Time:=30;
+      SocketClose client;
+    ENDFOR
+    TPWrite "served";
+  ENDPROC
+ENDMODULE
+|} port n
+
+let simultaneous_clients () =
+  let dir = temp_dir () in
+  let n = 200 in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))) (fun () ->
+      let port = free_port () in
+      let file = Filename.concat dir "many.mod" and out = Filename.concat dir "out.txt" in
+      write_file file (many_clients_server port n);
+      let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
+      let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+      let pid = Unix.create_process binary [| binary; "run"; "--fs"; Filename.concat dir "fs"; file |] devnull fd_out fd_out in
+      Unix.close fd_out; Unix.close devnull;
+      (* Listening once one client gets in. *)
+      Unix.close (connect_retrying port);
+      let t0 = Unix.gettimeofday () in
+      let address = Unix.ADDR_INET (Unix.inet_addr_loopback, port) in
+      let clients = List.init (n - 1) (fun _ ->
+          let s = Unix.socket ~cloexec:true Unix.PF_INET Unix.SOCK_STREAM 0 in
+          Unix.set_nonblock s;
+          (try Unix.connect s address with Unix.Unix_error ((Unix.EINPROGRESS | Unix.EAGAIN), _, _) -> ());
+          s) in
+      (* Connected: writable with no pending error. *)
+      let rec await pending =
+        let left = t0 +. 0.9 -. Unix.gettimeofday () in
+        if pending = [] || left <= 0. then pending
+        else
+          let _, writable, _ = Unix.select [] pending [] left in
+          await (List.filter (fun s -> not (List.memq s writable && Unix.getsockopt_error s = None)) pending) in
+      let late = await clients in
+      let elapsed = Unix.gettimeofday () -. t0 in
+      List.iter Unix.close clients;
+      let status = wait_bounded pid 20. in
+      Alcotest.(check int) (Printf.sprintf "clients not connected within 0.9 s (%.2f s)" elapsed) 0 (List.length late);
+      (match status with
+       | Some (Unix.WEXITED 0) -> ()
+       | _ -> Alcotest.fail ("the server did not serve every client: " ^ read_file out));
+      Alcotest.(check string) "server output" "listening\nserved\n" (read_file out))
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
@@ -267,4 +376,6 @@ let suite = ("services", [
     Alcotest.test_case "--save writes values that read back" `Quick literals;
     Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;
     Alcotest.test_case "--save: both engines write the same modules" `Quick save_engines;
+    Alcotest.test_case "a line is read while the run waits on the host" `Quick first_line_before_wait;
+    Alcotest.test_case "200 simultaneous clients connect at once" `Quick simultaneous_clients;
   ])

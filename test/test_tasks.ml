@@ -380,6 +380,42 @@ let test_engines_agree () =
           Alcotest.(check (list string)) (what ^ ": the default is the closure engine") (lines c) (lines d))
         ([] :: List.map (fun s -> [ "--schedule"; string_of_int s ]) [ 1; 2; 3; 7; 99 ])) runs
 
+
+(* Each task's data counts in the one budget of --max-memory (R-14-cli3): a module that fits the
+   budget alone does not fit it twice, in either engine; more tasks than a controller runs are
+   refused with a message, 20 run. *)
+let big_data = {|MODULE big
+  VAR num data{500};
+  PROC main()
+    data{1} := 1;
+    TPWrite "ran";
+  ENDPROC
+ENDMODULE
+|}
+
+let test_task_budget () =
+  let dir = temp_dir () in
+  let file = write dir "big.mod" big_data in
+  List.iter (fun engine ->
+      let budget = [ "--engine"; engine; "--max-memory"; "60000" ] in
+      let out, status = run ([ "run" ] @ budget @ [ file ]) in
+      Alcotest.(check (pair string int)) (engine ^ ": one task fits") ("ran\n", 0) (out, status);
+      let out, status = run ([ "run" ] @ budget @ [ "--task"; "A=" ^ file; "--task"; "B=" ^ file ]) in
+      Alcotest.(check (pair string int)) (engine ^ ": two tasks exhaust the budget") ("", 3) (out, status);
+      let tasks n = List.concat (List.init n (fun i -> [ "--task"; Printf.sprintf "T%d=%s" i file ])) in
+      let out, status = run ([ "run"; "--engine"; engine ] @ tasks Rapid_semantics.Task_set.max_tasks) in
+      Alcotest.(check int) (engine ^ ": 20 tasks run") 0 status;
+      Alcotest.(check int) (engine ^ ": each writes") Rapid_semantics.Task_set.max_tasks (List.length (lines out));
+      let err = Filename.concat dir "err.txt" in
+      let status = Sys.command (Printf.sprintf "%s run --engine %s %s > /dev/null 2> %s" (Filename.quote binary) engine
+                                  (String.concat " " (List.map Filename.quote (tasks 300))) (Filename.quote err)) in
+      let ic = open_in_bin err in
+      let message = really_input_string ic (in_channel_length ic) in
+      close_in ic;
+      Alcotest.(check (pair int string)) (engine ^ ": 300 tasks refused")
+        (2, "rapid-sem: 300 tasks: a run has at most 20 tasks, as a controller with Multitasking (ch. 14)\n")
+        (status, message)) [ "closure"; "machine" ]
+
 let suite =
   ( "tasks",
     [ Alcotest.test_case "a two-task hand-shake through a PERS" `Quick test_hand_shake;
@@ -392,4 +428,5 @@ let suite =
       Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
       Alcotest.test_case "task-end outcomes" `Quick test_task_ends;
       Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait;
-      Alcotest.test_case "run --task: both engines, several schedules" `Quick test_engines_agree ] )
+      Alcotest.test_case "run --task: both engines, several schedules" `Quick test_engines_agree;
+      Alcotest.test_case "the tasks share --max-memory; at most 20 tasks" `Quick test_task_budget ] )

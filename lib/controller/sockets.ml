@@ -109,12 +109,20 @@ let bind t id addr port =
             Unix.bind s.fd a; s.status <- Bound; Ok ()
           with Unix.Unix_error (e, _, _) -> Error (error_of e)))
 
+(* SocketListen names no queue length (ABB's pages are silent): the host's largest, so that
+   clients connecting at once are queued by the kernel while the program accepts them one by one,
+   instead of having their SYNs dropped and retried a second or more later (R-13-cli1). The
+   kernel caps it at net.core.somaxconn. *)
+let listen_backlog = 4096
+
 let listen t id =
   match find t id with
   | Error e -> Error e
   | Ok s when s.udp -> Error "ERR_SOCK_UNSPEC"
   | Ok s when s.status <> Bound -> Error "ERR_SOCK_NOT_BOUND"
-  | Ok s -> (try Unix.listen s.fd 8; s.status <- Listening; Ok () with Unix.Unix_error (e, _, _) -> Error (error_of e))
+  | Ok s ->
+      (try Unix.listen s.fd listen_backlog; s.status <- Listening; Ok ()
+       with Unix.Unix_error (e, _, _) -> Error (error_of e))
 
 (* Waits until the descriptor is readable (or writable), at most [timeout] host seconds. *)
 let wait_for ?(write = false) fd timeout =

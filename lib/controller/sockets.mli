@@ -32,6 +32,11 @@ val status : t -> int -> status
 (** Of an identity no socket has: [Closed]. *)
 
 val bind : t -> int -> string -> int -> (unit, string) result
+
+val listen_backlog : int
+(** The length of a listening socket's queue of connections not yet accepted: 4096, SOMAXCONN of
+    current Linux, capped by the host's net.core.somaxconn (doc/rulings.md R-13-cli1). *)
+
 val listen : t -> int -> (unit, string) result
 
 val accept : t -> int -> timeout:float -> (int * string, string) result * float

@@ -31,8 +31,18 @@ let parse_expression text =
   if has_newline text then Error "an expression stands on one line, without ';'"
   else Result.map snd (statement_of ("debugger := " ^ text))
 
+(* A target that is no data reference would be reported as a statement of the wrapping
+   routine (a call, a declaration): the command's form says more. *)
 let parse_assignment text =
-  if has_newline text then Error "an assignment stands on one line, without ';'" else statement_of text
+  if has_newline text then Error "an assignment stands on one line, without ';'"
+  else
+    match statement_of text with
+    | Ok a -> Ok a
+    | Error m ->
+        let target = match String.index_opt text ':' with Some i -> String.trim (String.sub text 0 i) | None -> "" in
+        if target <> "" && Result.is_error (statement_of (target ^ " := 0")) then
+          Error (Printf.sprintf "set REF := EXPR: %s is not a data object, an element or a component (§4.5)" target)
+        else Error m
 
 (* A value with the type it is known to have, for its components. *)
 type typed = { v : Value.t; t : T.object_type option }
@@ -41,6 +51,9 @@ let element_type (t : T.object_type option) = Option.map (fun (t : T.object_type
 
 let to_index v =
   match v with
+  (* Beyond any array's bounds before int_of_float could wrap it round into one. *)
+  | Value.Num f | Value.Dnum f when Float.is_integer f && Float.abs f > 1e15 ->
+      Error (Printf.sprintf "ERR_OUTOFBND: index %.9g is outside the array (§3.6)" f)
   | Value.Num f | Value.Dnum f when Float.is_integer f -> Ok (int_of_float f)
   | Value.Num _ | Value.Dnum _ -> Error "ERR_NOTINTVAL: an index is an integer (§3.6)"
   | _ -> Error "an index is a num (§3.6)"
@@ -127,7 +140,9 @@ let rec eval_typed (env : env) (e : Ast.expression) : (typed, string) result =
         | Not, Bool _ -> Ok Not
         | _ -> Error "no operator of §3.12 takes an operand of this type" in
       let* r = row in
-      let* v = arith (Arith.unary r x.v) in
+      (* A record of three members is read as a pos: tooldata (robhold, tframe, tload) too. *)
+      let* v = (try arith (Arith.unary r x.v) with Value.Type_mismatch _ ->
+          Error "no operator of §3.12 takes an operand of this type") in
       Ok { v; t = None })
   | Binary ((And | Or) as op, l, r) -> (
       (* §3.1: the right operand only when the left one does not decide. *)
@@ -173,7 +188,11 @@ and reference env (d : Ast.data_reference) : (typed, string) result =
       Ok c
   | VAR_placeholder -> Error "ERR_EXECPHR: a placeholder has no value (§2.9)"
 
-let eval env e = Result.map (fun x -> x.v) (eval_typed env e)
+(* The operators' rows are taken from the values (doc/debugger.md), not from checked types: a
+   value that is not of its row's type is the user's expression, refused, never a crash. *)
+let mismatch f = try f () with Value.Type_mismatch _ -> Error "no operator of §3.12 takes operands of these types"
+
+let eval env e = mismatch (fun () -> Result.map (fun x -> x.v) (eval_typed env e))
 
 (* The new value in the form of the one it replaces: an aggregate becomes a record where a record
    was (§3.10), a num becomes a dnum where a dnum was (§2.5, R-2.5-b). *)
@@ -191,7 +210,9 @@ let rec fit (old : Value.t) (v : Value.t) : (Value.t, string) result =
   | (Record _ | Array _), (Array _ | Record _) -> Error "the aggregate has another number of members (§3.10)"
   | _ -> Error "the value is not of the type of the data it would replace (§4.5)"
 
-let assign env (target : Ast.data_reference) (e : Ast.expression) =
+let rec assign env target e = mismatch (fun () -> assign_checked env target e)
+
+and assign_checked env (target : Ast.data_reference) (e : Ast.expression) =
   let* v = eval env e in
   (* The reference as its root name and the steps down to the place. *)
   let rec path (d : Ast.data_reference) =

@@ -18,6 +18,8 @@ type t = {
   routine_data : Ir.routine -> string list;            (* names of its routine data, in order *)
   type_of : Ir.routine -> string -> (Rapid_typing.Types.object_type * bool) option;
       (* a name's declared type in a routine's scope, and whether it may be written *)
+  statement_lines : (string * int list) list;
+      (* the task's files and the lines a statement begins on, where a breakpoint can stop *)
 }
 
 let config s = s.cfg
@@ -109,10 +111,40 @@ let run_until s stop =
   in
   go true
 
+(* The program pointer stops only at a statement (doc/debugger.md), on the line it begins on: a
+   breakpoint on any other line could never stop [continue]. Every statement list of every
+   routine of the task's [files] (all files without them), handlers included. *)
+let statement_lines ?files (program : Ir.program) =
+  let table = Hashtbl.create 8 in
+  let add region =
+    let file = file_name region in
+    let lines = Option.value ~default:[] (Hashtbl.find_opt table file) in
+    Hashtbl.replace table file ((Source.start region).line :: lines) in
+  let rec stmt (st : Ir.stmt) =
+    add st.sat;
+    match st.s with
+    | If (_, a, b) | Elseif (_, a, b) -> block a; block b
+    | Compact_if (_, inner) -> stmt inner
+    | For f -> block f.loop_body
+    | While (_, b) -> block b
+    | Test (_, cases, default) -> Array.iter (fun (_, b) -> block b) cases; block default
+    | _ -> ()
+  and block (b : Ir.block) = Array.iter stmt b.body in
+  Array.iter (fun (r : Ir.routine) ->
+      if r.primitive = None then begin
+        block r.body; Option.iter block r.backward; Option.iter block r.undo;
+        Option.iter (fun (h : Ir.error_handler) -> block h.handler) r.error
+      end) program.routines;
+  let named = match files with
+    | Some fs -> List.map (fun f -> (f, Option.value ~default:[] (Hashtbl.find_opt table f))) fs
+    | None -> Hashtbl.fold (fun f lines acc -> if f = "" then acc else (f, lines) :: acc) table [] in
+  List.sort compare (List.map (fun (f, lines) -> (f, List.sort_uniq compare lines)) named)
+
 let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> [])
-    ?(type_of = fun _ _ -> None) ~out cfg =
+    ?(type_of = fun _ _ -> None) ?files ~out cfg =
   let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
-            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data; type_of } in
+            rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data; type_of;
+            statement_lines = statement_lines ?files (M.program cfg) } in
   (* The machine starts settled, at the entry routine's first statement when it has one. *)
   if not (M.pointer_statement cfg <> None && visible s) then run_until s (fun () -> true);
   show_pointer s;
@@ -173,6 +205,7 @@ let env s name =
            write = (if writable then Some (fun v -> M.write_data s.cfg slot v) else None) }
 
 let print_ s text =
+  if String.trim text = "" then s.out "print: print EXPR" else
   match Debug_expr.parse_expression text with
   | Error m -> s.out ("print: " ^ m)
   | Ok e -> (
@@ -180,9 +213,18 @@ let print_ s text =
       | Ok v -> s.out (Printf.sprintf "%s = %s" (String.trim text) (value_text v))
       | Error m -> s.out ("print: " ^ m))
 
+(* The position of the first ":=" of a set command's text. *)
+let contains_assign text =
+  let n = String.length text in
+  let rec go i = if i + 1 >= n then None else if text.[i] = ':' && text.[i + 1] = '=' then Some i else go (i + 1) in
+  go 0
+
 let set_ s text =
+  let target_missing = match contains_assign text with
+    | Some i -> String.trim (String.sub text 0 i) = ""
+    | None -> true in
+  if target_missing then s.out "set: set REF := EXPR" else
   match Debug_expr.parse_assignment text with
-  | Error _ when not (String.contains text ':') -> s.out "set: VAR := EXPR"
   | Error m -> s.out ("set: " ^ m)
   | Ok (target, e) -> (
       match Debug_expr.assign (env s) target e with
@@ -208,6 +250,40 @@ let back s =
           run_until s (fun () -> M.depth s.cfg <= d && not (M.backward_running s.cfg))
         end;
         show_pointer s
+
+(* Lines as ranges: "3-5, 9, 12-14". *)
+let ranges lines =
+  let rec go acc = function
+    | [] -> List.rev acc
+    | l :: rest ->
+        let rec extend last = function
+          | m :: more when m = last + 1 -> extend m more
+          | more -> (last, more) in
+        let last, more = extend l rest in
+        go ((if last = l then string_of_int l else Printf.sprintf "%d-%d" l last) :: acc) more in
+  go [] lines
+
+(* A breakpoint that could never stop the program pointer is refused, saying where one can:
+   the task's files, or the lines of FILE a statement begins on (around LINE, for a long file). *)
+let breakable s file line =
+  let same (f, _) = f = file || Filename.basename f = Filename.basename file in
+  match List.filter same s.statement_lines with
+  | [] ->
+      Error (Printf.sprintf "no file %s in the task (its files: %s)" file
+               (String.concat ", " (List.map fst s.statement_lines)))
+  | found when List.exists (fun (_, lines) -> List.mem line lines) found -> Ok ()
+  | (f, lines) :: _ ->
+      let shown = ranges lines in
+      let shown =
+        if List.length shown <= 12 then String.concat ", " shown
+        else
+          let before = List.filter (fun l -> l < line) lines and after = List.filter (fun l -> l > line) lines in
+          let last k l = List.filteri (fun i _ -> i >= List.length l - k) l in
+          let first k l = List.filteri (fun i _ -> i < k) l in
+          String.concat ", " ((if List.length before > 5 then [ "..." ] else []) @ ranges (last 5 before)
+                              @ ranges (first 5 after) @ (if List.length after > 5 then [ "..." ] else [])) in
+      Error (if lines = [] then Printf.sprintf "%s has no statement" f
+             else Printf.sprintf "no statement begins on line %d of %s; statements begin on lines %s" line f shown)
 
 let words line =
   List.filter (fun w -> w <> "") (String.split_on_char ' ' (String.trim line))
@@ -252,10 +328,14 @@ let command s line =
       | Some i when i > 0 && (match int_of_string_opt (String.sub rest (i + 1) (String.length rest - i - 1)) with
           | Some l -> l >= 1 | None -> false) ->
           let file = String.sub rest 0 i and l = int_of_string (String.sub rest (i + 1) (String.length rest - i - 1)) in
-          let n = s.next_breakpoint in
-          s.next_breakpoint <- n + 1;
-          s.breakpoints <- s.breakpoints @ [ (n, file, l) ];
-          s.out (Printf.sprintf "breakpoint %d at %s:%d" n file l); `Go_on
+          (match breakable s file l with
+           | Error m -> s.out ("break: " ^ m)
+           | Ok () ->
+               let n = s.next_breakpoint in
+               s.next_breakpoint <- n + 1;
+               s.breakpoints <- s.breakpoints @ [ (n, file, l) ];
+               s.out (Printf.sprintf "breakpoint %d at %s:%d" n file l));
+          `Go_on
       | _ -> s.out "break: break FILE:LINE"; `Go_on)
   | "delete" -> (
       match words rest with

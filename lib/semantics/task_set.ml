@@ -25,6 +25,7 @@ type t = {
   mutable ended : M.outcome option;     (* a deadlock or the time limit of the whole run *)
   world : W.t;                          (* the first task's: the clock is everyone's *)
   links : (M.config * int * M.config * int) list;  (* the shared data objects (see [shared]) *)
+  limits : M.limits;                    (* each task's: its share of the run's memory budget *)
 }
 
 type failure =
@@ -135,6 +136,13 @@ let parse_all files =
   | [] -> Ok (List.filter_map Result.to_option parsed)
   | errors -> Error (Session.Front_end errors)
 
+(* A controller runs a bounded number of tasks (R-14-cli3); each task's RAPID data counts in the
+   one budget of --max-memory, split evenly so that every task has its share whatever the others
+   do and whatever the turns: N tasks never hold more than the budget together. *)
+let max_tasks = 20
+
+let task_limits (limits : M.limits) ~count = { limits with max_memory = limits.max_memory / max 1 count }
+
 let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe = false) ?io ?seed ?motion_task ~world
     ~motion (specs : spec list) =
   let motion_name = match motion_task, specs with
@@ -149,7 +157,12 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
             | Error f -> Error (Load (s.name, f))
             | Ok loaded -> load ((s, modules, loaded) :: acc) rest))
   in
+  let count = List.length specs in
+  let limits = task_limits (Option.value limits ~default:M.default_limits) ~count in
   if specs = [] then Error (Refused "no task to run")
+  else if count > max_tasks then
+    Error (Refused (Printf.sprintf "%d tasks: a run has at most %d tasks, as a controller with Multitasking (ch. 14)"
+                      count max_tasks))
   else if not (List.exists (fun (s : spec) -> same s.name motion_name) specs) then
     Error (Refused (Printf.sprintf "the motion task %s is not one of the tasks" motion_name))
   else
@@ -163,7 +176,8 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
             let w = if first then (W.name_task world ~name:s.name ~motion:is_motion; world)
               else W.add_task world ~name:s.name ~motion:is_motion in
             let motion = if is_motion then motion else Motion_primitives.create () in
-            match M.start ?limits ~world:w ~stub_unmodelled ~motion ~cooperative:true ~observe l.program ~entry:s.entry with
+            match M.start ~limits ~world:w ~stub_unmodelled ~motion ~cooperative:true ~observe l.program
+                    ~entry:s.entry with
             | Error m -> Error (Refused (Printf.sprintf "task %s: %s" s.name m))
             | Ok cfg -> start_all ((s.name, cfg, modules, l) :: acc) false rest)
       in
@@ -180,9 +194,11 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
               let order = order_of_seed seed in
               let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
-              Ok ({ tasks; order; cursor = ref 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links }, warnings))
+              Ok ({ tasks; order; cursor = ref 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links;
+                   limits }, warnings))
 
 let running task = M.outcome task.cfg = M.Running
+let limits t = t.limits
 
 (* The scheduler's rule, for both engines' task sets: among the [count] tasks, those [eligible]
    (running, not waiting in vain), the next in round robin from [cursor], or SplitMix64's pick. *)

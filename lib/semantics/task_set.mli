@@ -19,6 +19,13 @@ type failure =
           with another type than in an earlier task is a semantic error at its declaration *)
   | Refused of string   (** no such entry routine, no such motion task *)
 
+val max_tasks : int
+(** The tasks a run may have: 20 (doc/rulings.md R-14-cli3); {!start} refuses more. *)
+
+val task_limits : Machine.limits -> count:int -> Machine.limits
+(** The limits of each of [count] tasks: [max_memory] split evenly between them, so that the
+    tasks together never hold more RAPID data than the run's budget (R-14-cli3). *)
+
 val start :
   ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
@@ -26,7 +33,12 @@ val start :
   (t * Rapid_typing.Report.t list, failure) result
 (** The tasks in order, ready to run, and the warnings of their checks. [world] becomes the
     first task's world; [motion] the motion task's robot ([motion_task], default the first
-    task). [observe] as {!Machine.start}'s, for every task. *)
+    task). [observe] as {!Machine.start}'s, for every task. [limits] are the run's; each task
+    runs with {!task_limits} of them. More than {!max_tasks} tasks are [Refused]. *)
+
+val limits : t -> Machine.limits
+(** Each task's limits ({!task_limits} of the run's): what the closure engine's tasks run with
+    too. *)
 
 val next : t -> (string * Machine.config) option
 (** The task whose turn it is (its name and machine), which {!step} steps next; [None] when the
