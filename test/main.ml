@@ -23,6 +23,7 @@ let () =
       Test_motion_run.suite;
       Test_impl_runner.suite;
       Test_services.suite;
+      Test_sandbox.suite;
       Test_debugger.suite;
       Test_engines.suite;
       Test_closure_call.suite;
