@@ -51,7 +51,8 @@ let dangling_links () =
         "Open \"HOME:/od/new.txt\", f \\Write;"; "CopyFile \"HOME:/a.txt\", \"HOME:/dl\";";
         "CopyFile \"HOME:/a.txt\", \"HOME:/c1\";"; "MakeDir \"HOME:/dd\";"; "MakeDir \"HOME:/od/sub\";";
         "RenameFile \"HOME:/a.txt\", \"HOME:/rel\";"; "RemoveFile \"HOME:/dl\";"; "OpenDir d, \"HOME:/dd\";";
-        "Open \"HOME:/in/f.txt\", f \\Write;"; "Open \"HOME:/inl\", f \\Write;"; "CopyFile \"HOME:/a.txt\", \"HOME:/in/b.txt\";";
+        "Open \"HOME:/in/f.txt\", f \\Write;"; "Open \"HOME:/inl\", f \\Write;";
+        "CopyFile \"HOME:/a.txt\", \"HOME:/in/b.txt\";";
       ] in
       let out_lines = Test_services.run_with (S.create ~sandbox ()) (attempts statements) in
       Alcotest.(check (list string)) "outcomes"
@@ -67,6 +68,32 @@ let dangling_links () =
         [ "real/f.txt"; "real/made.txt"; "real/b.txt" ];
       List.iter (fun p -> Alcotest.(check bool) p true (Result.is_error (FS.resolve sandbox p)))
         [ "HOME:/dl"; "HOME:/rel"; "HOME:/c1"; "HOME:/dd/x"; "HOME:/od" ])
+
+(* A link put in the way after the path was checked (the race of a host process against the
+   run): the operations reach the location from the root without following any link, so they
+   fail and make nothing outside. *)
+let link_after_check () =
+  let outside = temp_dir () in
+  let sandbox = FS.temporary () in
+  Fun.protect ~finally:(fun () -> FS.remove sandbox; remove_tree outside) (fun () ->
+      let located p = match FS.locate sandbox p with Ok l -> l | Error e -> Alcotest.fail e in
+      let home = Filename.concat (FS.root sandbox) "HOME" in
+      ignore (located "HOME:");
+      Unix.mkdir (Filename.concat home "d") 0o755;
+      let in_folder = located "HOME:/d/f.txt" and last = located "HOME:/x.txt" and folder = located "HOME:/d/e" in
+      let listing = located "HOME:/d" in
+      Unix.rmdir (Filename.concat home "d");
+      Unix.symlink outside (Filename.concat home "d");
+      Unix.symlink (Filename.concat outside "x.txt") (Filename.concat home "x.txt");
+      let failed what r = Alcotest.(check bool) what true (Result.is_error r) in
+      failed "a folder on the way" (FS.open_file sandbox in_folder Rapid_controller.Sandbox_calls.Write);
+      failed "the last component" (FS.open_file sandbox last Rapid_controller.Sandbox_calls.Append);
+      failed "a new file" (FS.open_file sandbox last Rapid_controller.Sandbox_calls.Create_new);
+      failed "a folder" (FS.make_folder sandbox folder);
+      failed "a listing" (FS.read_folder sandbox listing);
+      Alcotest.(check bool) "the link's kind, not its target's" true
+        (match FS.kind sandbox last with Some (Unix.S_LNK, _) -> true | _ -> false);
+      Alcotest.(check (list string)) "nothing made outside" [] (Array.to_list (Sys.readdir outside)))
 
 (* Runs the binary on a module with these arguments, at most 20 s; its exit status and output. *)
 let run_binary args text =
@@ -113,24 +140,28 @@ let quota () =
   let sandbox = FS.temporary () in
   Fun.protect ~finally:(fun () -> FS.remove sandbox) (fun () ->
       let statements = [
-        "Open \"HOME:/a.txt\", f \\Write; Write f, \"123456789\";"; "Open \"TEMP:/b.txt\", f \\Write; Write f, \"12345\";";
+        "Open \"HOME:/a.txt\", f \\Write; Write f, \"123456789\";";
+        "Open \"TEMP:/b.txt\", f \\Write; Write f, \"12345\";";
         "Open \"TEMP:/c.txt\", f \\Write; Write f, \"1234\";"; "CopyFile \"HOME:/a.txt\", \"HOME:/d.txt\";";
         "Open \"TEMP:/e.txt\", f \\Write; WriteStrBin f, \"xxxxx\";";
       ] in
       let out = Test_services.run_with (S.create ~sandbox ~max_total_size:20 ()) (attempts statements) in
-      Alcotest.(check (list string)) "outcomes" (numbered [ "ok"; "ok"; "ERR_FILEACC"; "ERR_FILEACC"; "ERR_FILEACC" ]) out;
+      Alcotest.(check (list string)) "outcomes"
+        (numbered [ "ok"; "ok"; "ERR_FILEACC"; "ERR_FILEACC"; "ERR_FILEACC" ]) out;
       Alcotest.(check int) "c.txt empty" 0 (Unix.stat (Filename.concat (FS.root sandbox) "TEMP/c.txt")).Unix.st_size;
       Alcotest.(check bool) "d.txt not made" false (Sys.file_exists (Filename.concat (FS.root sandbox) "HOME/d.txt")));
   Alcotest.(check int) "the default" (256 * 1024 * 1024) S.max_total_size;
   let root = temp_dir () in
   Fun.protect ~finally:(fun () -> remove_tree root) (fun () ->
       let status, lines = run_binary [ "--fs"; root; "--fs-quota"; "5" ]
-          (attempts [ "Open \"HOME:/a.txt\", f \\Write; Write f, \"1234\";"; "Open \"HOME:/b.txt\", f \\Write; Write f, \"1\";" ]) in
+          (attempts [ "Open \"HOME:/a.txt\", f \\Write; Write f, \"1234\";";
+                      "Open \"HOME:/b.txt\", f \\Write; Write f, \"1\";" ]) in
       Alcotest.(check int) "exit status" 0 status;
       Alcotest.(check (list string)) "--fs-quota 5" (numbered [ "ok"; "ERR_FILEACC" ]) lines)
 
 let suite = ("sandbox", [
     Alcotest.test_case "links out of the sandbox, dangling or not" `Quick dangling_links;
+    Alcotest.test_case "a link put in the way after the check" `Quick link_after_check;
     Alcotest.test_case "FIFOs, sockets and devices refused at once" `Quick special_files;
     Alcotest.test_case "the quota of a run's files" `Quick quota;
   ])

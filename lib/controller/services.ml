@@ -42,7 +42,7 @@ let open_file t path mode =
   else match FS.locate t.sandbox path with
     | Error _ -> Error "ERR_FILEOPEN"
     | Ok l ->
-        let how = match mode with Read -> Sandbox_calls.Read | Write -> Sandbox_calls.Write | Append -> Sandbox_calls.Append in
+        let how : Sandbox_calls.how = match mode with Read -> Read | Write -> Write | Append -> Append in
         match FS.open_file t.sandbox l how with
         | Error _ -> Error "ERR_FILEOPEN"
         | Ok fd ->
