@@ -187,7 +187,7 @@ run_case() {
     ( while [ -e race ]; do
         rm -rf fs/HOME/race; ln -s ../../outside fs/HOME/race 2>/dev/null
         rm -f fs/HOME/race; mkdir fs/HOME/race 2>/dev/null
-      done ) &
+      done ) 2>/dev/null &
     racer=$!
   fi
   # shellcheck disable=SC2046
