@@ -24,6 +24,7 @@ let () =
       Test_impl_runner.suite;
       Test_services.suite;
       Test_save.suite;
+      Test_sandbox.suite;
       Test_debugger.suite;
       Test_engines.suite;
       Test_closure_call.suite;

@@ -27,21 +27,70 @@ let ensure t =
     t.made <- true
   end
 
-let inside ~root path =
-  let root = if String.length root > 1 && root.[String.length root - 1] = '/' then root else root ^ "/" in
-  path ^ "/" = root || (String.length path >= String.length root && String.sub path 0 (String.length root) = root)
+(* The components of a host path, "." and empty ones dropped, ".." taken back lexically; None
+   when ".." goes above the first component. *)
+let normal parts =
+  let step acc p = match acc, p with
+    | None, _ -> None
+    | Some acc, ("" | ".") -> Some acc
+    | Some [], ".." -> None
+    | Some (_ :: up), ".." -> Some up
+    | Some acc, p -> Some (p :: acc) in
+  Option.map List.rev (List.fold_left step (Some []) parts)
 
-(* The real location of the longest existing prefix of the path: a symbolic link anywhere on
-   the way that leads out of the root is refused. *)
-let rec real path =
-  match Unix.realpath path with
-  | r -> Some r
-  | exception Unix.Unix_error ((Unix.ENOENT | Unix.ENOTDIR), _, _) ->
-      let parent = Filename.dirname path in
-      if parent = path then None else Option.map (fun p -> Filename.concat p (Filename.basename path)) (real parent)
-  | exception Unix.Unix_error _ -> None
+let split path = String.split_on_char '/' path
 
-let resolve t path =
+(* The part of an absolute host path under the root (the root's real path, or the root as given
+   made absolute), if it is under it. *)
+let under_root roots target =
+  let rec strip prefix parts = match prefix, parts with
+    | [], rest -> Some rest
+    | p :: prefix, q :: parts when p = q -> strip prefix parts
+    | _ -> None in
+  match normal (split target) with
+  | None -> None
+  | Some parts -> List.find_map (fun root -> strip root parts) roots
+
+let max_links = 40  (* the host's own bound (SYMLOOP_MAX on Linux) *)
+
+type location = { parents : string list; name : string }
+
+(* The components of a path under the root with every symbolic link on the way replaced by
+   what it names, read with lstat and readlink, never by the host's own resolution: a link
+   that leads out of the root is refused whether or not its target exists, and a link at the
+   end is checked even when [follow] is false (then the link itself is the location). What is
+   found stays a path under the root: the operations walk it from the root's folder without
+   following any link (Sandbox_calls), so a link put in the way later is an error, not an
+   escape. *)
+let follow_links ~roots ~root ~follow parts =
+  let out = Error "a symbolic link leads out of the sandbox" in
+  let rec go here todo links =
+    match todo with
+    | [] -> Ok (List.rev here)
+    | ("" | ".") :: rest -> go here rest links
+    | ".." :: rest -> (match here with [] -> out | _ :: up -> go up rest links)
+    | c :: rest ->
+        let host = String.concat "/" (root :: List.rev (c :: here)) in
+        match Unix.lstat host with
+        | { Unix.st_kind = Unix.S_LNK; _ } when links >= max_links -> Error "too many symbolic links"
+        | { Unix.st_kind = Unix.S_LNK; _ } -> (
+            match Unix.readlink host with
+            | exception Unix.Unix_error _ -> Error "a symbolic link cannot be read"
+            | target ->
+                let next = if Filename.is_relative target then Ok (here, split target)
+                  else match under_root roots target with
+                    | Some inside -> Ok ([], inside)
+                    | None -> out in
+                match next with
+                | Error _ as e -> e
+                | Ok (start, todo) when rest = [] && not follow ->
+                    Result.map (fun _ -> List.rev (c :: here)) (go start todo (links + 1))
+                | Ok (start, todo) -> go start (todo @ rest) (links + 1))
+        | _ -> go (c :: here) rest links
+        | exception Unix.Unix_error _ -> go (c :: here) rest links in
+  go [] parts 0
+
+let locate ?(follow = true) t path =
   let device, rest =
     match String.index_opt path ':' with
     | Some i -> (String.uppercase_ascii (String.sub path 0 (i + 1)), String.sub path (i + 1) (String.length path - i - 1))
@@ -58,11 +107,58 @@ let resolve t path =
       else match ensure t with
       | exception (Unix.Unix_error _ | Sys_error _) -> Error "the sandbox's folder cannot be made"
       | () ->
-        let host = List.fold_left Filename.concat (Filename.concat t.root folder) parts in
-        match Unix.realpath t.root, real host with
-        | r, Some h when inside ~root:r h -> Ok host
-        | _ -> Error "a symbolic link leads out of the sandbox"
-        | exception Unix.Unix_error _ -> Error "the sandbox's folder cannot be reached"
+          match Unix.realpath t.root with
+          | exception Unix.Unix_error _ -> Error "the sandbox's folder cannot be reached"
+          | real ->
+              let absolute = if Filename.is_relative t.root then Filename.concat (Sys.getcwd ()) t.root else t.root in
+              let roots = List.filter_map (fun r -> normal (split r)) [ real; absolute ] in
+              match follow_links ~roots ~root:t.root ~follow (folder :: parts) with
+              | Error _ as e -> e
+              | Ok [] -> Error "the sandbox's own folder is no file of a device"
+              | Ok components ->
+                  let rev = List.rev components in
+                  Ok { parents = List.rev (List.tl rev); name = List.hd rev }
+
+let host t l = String.concat "/" ((t.root :: l.parents) @ [ l.name ])
+
+let resolve t path = Result.map (host t) (locate t path)
+
+let failure e = Error (Unix.error_message e)
+
+(* The location's folder, reached from the root without following a link. *)
+let in_parent t l f =
+  match Sandbox_calls.walk t.root l.parents with
+  | exception Unix.Unix_error (e, _, _) -> failure e
+  | dir ->
+      Fun.protect ~finally:(fun () -> Unix.close dir) (fun () ->
+          try f dir with Unix.Unix_error (e, _, _) -> failure e)
+
+let kind t l = match in_parent t l (fun dir -> Ok (Sandbox_calls.kind_at dir l.name)) with
+  | Ok k -> k
+  | Error _ -> None
+
+(* Opened without waiting, then refused unless a regular file: a FIFO, a socket or a device
+   would block the host or is no file of a mass memory. Truncated only then. *)
+let open_file t l how =
+  in_parent t l (fun dir ->
+      let fd = Sandbox_calls.open_at dir l.name how in
+      match (Unix.fstat fd).Unix.st_kind with
+      | Unix.S_REG ->
+          if how = Sandbox_calls.Write then Unix.ftruncate fd 0;
+          if how = Sandbox_calls.Append then ignore (Unix.lseek fd 0 Unix.SEEK_END);
+          Unix.clear_nonblock fd;
+          Ok fd
+      | _ -> Unix.close fd; Error "not a regular file"
+      | exception Unix.Unix_error (e, _, _) -> Unix.close fd; failure e)
+
+let remove_file t l = in_parent t l (fun dir -> Ok (Sandbox_calls.unlink_at dir l.name ~folder:false))
+let remove_folder t l = in_parent t l (fun dir -> Ok (Sandbox_calls.unlink_at dir l.name ~folder:true))
+let make_folder t l = in_parent t l (fun dir -> Ok (Sandbox_calls.mkdir_at dir l.name))
+
+let rename t a b =
+  in_parent t a (fun da -> in_parent t b (fun db -> Ok (Sandbox_calls.rename_at da a.name db b.name)))
+
+let read_folder t l = in_parent t l (fun dir -> Ok (Sandbox_calls.read_dir_at dir l.name))
 
 let temporary () =
   let f = Filename.temp_file "rapid-sem-fs" "" in

@@ -5,9 +5,11 @@
 
 type t
 
-val create : ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?max_file_size:int -> unit -> t
+val create :
+  ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?max_file_size:int -> ?max_total_size:int -> unit -> t
 (** Without [sandbox], {!File_sandbox.default_root}; without [sockets], loopback only;
-    [max_file_size] bytes a file may hold (default {!max_file_size}). *)
+    [max_file_size] bytes a file may hold (default {!max_file_size}), [max_total_size] bytes
+    the run may write into files in all (default {!max_total_size}). *)
 
 val sandbox : t -> File_sandbox.t
 val sockets : t -> Sockets.t
@@ -26,6 +28,13 @@ val max_file_size : int
 val file_limit : t -> int
 (** The run's bound on the size of a file. *)
 
+val max_total_size : int
+(** 256 MiB: the quota of the bytes a run writes into files (Write and the other writes,
+    CopyFile); a write beyond it raises ERR_FILEACC, as on a full mass memory
+    (doc/rulings.md R-13-sandbox1). *)
+
+val quota : t -> int
+
 (** {1 Files (iodev)} *)
 
 type mode = Read | Write | Append
@@ -41,7 +50,35 @@ val input : t -> int -> (in_channel, string) result
 
 val output : t -> int -> (out_channel, string) result
 
+val write : t -> int -> string -> (unit, string) result
+(** Writes and flushes; ERR_FILESIZE beyond the file's bound, ERR_FILEACC beyond the quota or
+    when the file is not open for writing. *)
+
 val rewind : t -> int -> (unit, string) result
+
+(** {1 Paths}
+
+    The routines that name a file or folder. A path the sandbox refuses (File_sandbox.locate)
+    gives ERR_FILEACC; so does a file that is not a regular one where a file is read. *)
+
+val file_kind : t -> string -> (Unix.file_kind option, string) result
+(** What is at the path, [None] when nothing is (IsFile). *)
+
+val file_size : t -> string -> (int, string) result
+val remove_file : t -> string -> (unit, string) result
+(** A regular file, or a symbolic link (that stays inside): the link, not what it names. *)
+
+val make_dir : t -> string -> (unit, string) result
+(** ERR_FILEEXIST when something is there. *)
+
+val remove_dir : t -> string -> (unit, string) result
+val read_file : t -> string -> (string, string) result
+(** The whole of a regular file (TextTabInstall). *)
+
+val rename_file : t -> src:string -> dst:string -> (unit, string) result
+val copy_file : t -> src:string -> dst:string -> (unit, string) result
+(** Both: [src] a regular file, ERR_FILEEXIST when [dst] exists; a copy counts against the
+    quota. *)
 
 (** {1 Directories (dir)} *)
 

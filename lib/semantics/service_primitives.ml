@@ -46,16 +46,9 @@ let integer = function Some f when Float.is_integer f -> Some (int_of_float f) |
 
 (* ---------------------------------------------------------------- files *)
 
-let path_error = function Ok h -> Ok h | Error _ -> Error "ERR_FILEACC"
-let resolve ctx p = path_error (Rapid_controller.File_sandbox.resolve (S.sandbox (services ctx)) p)
+let path ctx args name = Option.value (str ctx args name) ~default:""
 
-let write_text ctx args text =
-  let* oc = S.output (services ctx) (object_id ctx args "IODevice") in
-  match pos_out oc + String.length text > S.file_limit (services ctx) with
-  | true -> Failed "ERR_FILESIZE"
-  | false -> (
-      try output_string oc text; flush oc; done_ with Sys_error _ -> Failed "ERR_FILEACC")
-  | exception Sys_error _ -> Failed "ERR_FILEACC"
+let write_text ctx args text = of_unit (S.write (services ctx) (object_id ctx args "IODevice") text)
 
 let device_input ctx args = S.input (services ctx) (object_id ctx args "IODevice")
 
@@ -147,19 +140,6 @@ let rec same_shape a b = match a, b with
   | V.Record x, V.Record y | V.Array x, V.Array y ->
       Array.length x = Array.length y && Array.for_all2 same_shape x y
   | _ -> false
-
-module In_channel_text = struct
-  let read host =
-    match open_in_bin host with
-    | ic -> Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () ->
-        try Some (really_input_string ic (in_channel_length ic)) with Sys_error _ | End_of_file -> None)
-    | exception Sys_error _ -> None
-end
-
-let file_kind host =
-  match Unix.stat host with
-  | st -> Some st.Unix.st_kind
-  | exception Unix.Unix_error _ -> None
 
 (* ---------------------------------------------------------------- raw data *)
 
@@ -468,8 +448,7 @@ let call (ctx : context) name args =
             ret (V.num (match read_byte ic with Some c -> float_of_int c | None -> 511.)))
   | "isfile" ->
       Some (
-        let* host = resolve ctx (Option.value (str ctx args "Path") ~default:"") in
-        let kind = file_kind host in
+        let* kind = S.file_kind (sv ()) (path ctx args "Path") in
         let is k = kind = Some k in
         ret (V.Bool (
             if present ctx args "Directory" then is Unix.S_DIR
@@ -478,47 +457,14 @@ let call (ctx : context) name args =
             else if present ctx args "BlockSpec" then is Unix.S_BLK
             else if present ctx args "CharSpec" then is Unix.S_CHR
             else kind <> None)))
-  | "filesize" ->
-      Some (
-        let* host = resolve ctx (Option.value (str ctx args "Path") ~default:"") in
-        match Unix.stat host with
-        | st when st.Unix.st_kind = Unix.S_REG -> ret (V.num (float_of_int st.Unix.st_size))
-        | _ -> Failed "ERR_FILEACC"
-        | exception Unix.Unix_error _ -> Failed "ERR_FILEACC")
-  | "removefile" ->
-      Some (
-        let* host = resolve ctx (Option.value (str ctx args "Path") ~default:"") in
-        match file_kind host with
-        | Some (Unix.S_REG | Unix.S_LNK) -> (try Unix.unlink host; done_ with Unix.Unix_error _ -> Failed "ERR_FILEACC")
-        | _ -> Failed "ERR_FILEACC")
-  | "makedir" ->
-      Some (
-        let* host = resolve ctx (Option.value (str ctx args "Path") ~default:"") in
-        if file_kind host <> None then Failed "ERR_FILEEXIST"
-        else try Unix.mkdir host 0o755; done_ with Unix.Unix_error _ -> Failed "ERR_FILEACC")
-  | "removedir" ->
-      Some (
-        let* host = resolve ctx (Option.value (str ctx args "Path") ~default:"") in
-        match file_kind host with
-        | Some Unix.S_DIR -> (try Unix.rmdir host; done_ with Unix.Unix_error _ -> Failed "ERR_FILEACC")
-        | _ -> Failed "ERR_FILEACC")
-  | "renamefile" | "copyfile" as op ->
-      Some (
-        let* src = resolve ctx (Option.value (str ctx args "OldPath") ~default:"") in
-        let* dst = resolve ctx (Option.value (str ctx args "NewPath") ~default:"") in
-        if file_kind src <> Some Unix.S_REG then Failed "ERR_FILEACC"
-        else if file_kind dst <> None then Failed "ERR_FILEEXIST"
-        else if op = "renamefile" then (try Unix.rename src dst; done_ with Unix.Unix_error _ -> Failed "ERR_FILEACC")
-        else
-          try
-            let ic = open_in_bin src in
-            let data = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
-            let oc = open_out_bin dst in
-            Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc data);
-            done_
-          with Sys_error _ | End_of_file -> Failed "ERR_FILEACC")
+  | "filesize" -> Some (let* size = S.file_size (sv ()) (path ctx args "Path") in ret (V.num (float_of_int size)))
+  | "removefile" -> Some (of_unit (S.remove_file (sv ()) (path ctx args "Path")))
+  | "makedir" -> Some (of_unit (S.make_dir (sv ()) (path ctx args "Path")))
+  | "removedir" -> Some (of_unit (S.remove_dir (sv ()) (path ctx args "Path")))
+  | "renamefile" -> Some (of_unit (S.rename_file (sv ()) ~src:(path ctx args "OldPath") ~dst:(path ctx args "NewPath")))
+  | "copyfile" -> Some (of_unit (S.copy_file (sv ()) ~src:(path ctx args "OldPath") ~dst:(path ctx args "NewPath")))
   | "opendir" ->
-      Some (let* id = S.open_dir (sv ()) (Option.value (str ctx args "Path") ~default:"") in
+      Some (let* id = S.open_dir (sv ()) (path ctx args "Path") in
             set_object ctx args "Dev" id; done_)
   | "closedir" -> S.close_dir (sv ()) (object_id ctx args "Dev"); Some done_
   | "readdir" ->
@@ -651,14 +597,11 @@ let call (ctx : context) name args =
   (* ------------------------------------------------------------ text resources (ch. 15) *)
   | "texttabinstall" ->
       Some (
-        let* host = resolve ctx (Option.value (str ctx args "File") ~default:"") in
-        match In_channel_text.read host with
-        | None -> Failed "ERR_FILEACC"
-        | Some contents -> (
-            (* A file that is not a text resource cannot be installed (R-15-c). *)
-            match Rapid_controller.Text_tables.parse contents with
-            | Error _ -> Failed "ERR_FILEACC"
-            | Ok table -> Rapid_controller.Text_tables.install (S.texts (sv ())) table; done_))
+        let* contents = S.read_file (sv ()) (path ctx args "File") in
+        (* A file that is not a text resource cannot be installed (R-15-c). *)
+        match Rapid_controller.Text_tables.parse contents with
+        | Error _ -> Failed "ERR_FILEACC"
+        | Ok table -> Rapid_controller.Text_tables.install (S.texts (sv ())) table; done_)
   | "texttabfreetouse" ->
       Some (ret (V.Bool (Rapid_controller.Text_tables.free_to_use (S.texts (sv ())) (Option.value (str ctx args "TableName") ~default:""))))
   | "texttabget" ->
