@@ -56,7 +56,32 @@ let engines_agree () =
   Alcotest.(check string) "outcome" "ended" (Test_engines.outcome_text outcome);
   Alcotest.(check bool) "n 5000" true (List.mem (M.Output "n 5000") events)
 
+(* Item 8: each poll of a WaitUntil and each move of the clock in a wait is a unit of work, as
+   it is a step of the machine, so that --max-steps ends a wait that --max-time would let run
+   for a very long time: 1,000 polls of a second, or 10,000 timer firings queued behind
+   IDisable, do not fit in 200 units of fuel or 200 steps. *)
+let waits_spend_fuel () =
+  let bodies = [ "WaitUntil FALSE \\PollRate:=1;";
+                 "CONNECT t WITH tr;\n    IDisable;\n    ITimer 0.1, t;\n    WaitTime 1000;" ] in
+  List.iter (fun body ->
+      let text = Printf.sprintf "MODULE w\n  VAR intnum t;\n  TRAP tr\n  ENDTRAP\n  PROC main()\n    %s\n\
+                                \    TPWrite \"end\";\n  ENDPROC\nENDMODULE\n" body in
+      let program = Test_engines.load_text "w" text in
+      let world () = Rapid_controller.World.create ~max_time:2000. Rapid_controller.Io_config.empty in
+      (match C.run ~world:(world ()) ~fuel:200 ~all_events:false program ~entry:"main" with
+       | Ok { outcome = Running; fuel_used } ->
+           Alcotest.(check bool) "within the fuel" true (fuel_used <= 200)
+       | Ok { outcome; _ } -> Alcotest.failf "closure, %s: %s" body (Test_engines.outcome_text outcome)
+       | Error m -> Alcotest.fail m);
+      match M.start ~world:(world ()) program ~entry:"main" with
+      | Error m -> Alcotest.fail m
+      | Ok cfg ->
+          while M.outcome cfg = Running && M.steps cfg < 200 do ignore (M.step cfg) done;
+          Alcotest.(check bool) ("machine, still waiting: " ^ body) true (M.outcome cfg = Running))
+    bodies
+
 let suite =
   ( "waits",
     [ Alcotest.test_case "recovery by recursion: the same bytes a level at any depth" `Quick per_level_bounded;
-      Alcotest.test_case "recovery by recursion: machine = closure" `Quick engines_agree ] )
+      Alcotest.test_case "recovery by recursion: machine = closure" `Quick engines_agree;
+      Alcotest.test_case "a wait's polls and moves of the clock spend fuel" `Quick waits_spend_fuel ] )

@@ -1205,7 +1205,8 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
           | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
   let yield = Option.map (fun c -> c.yield) st.cooperation in
-  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
+  let spend () = tick st in
+  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
   | Finished None -> ()
   | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
