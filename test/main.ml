@@ -30,6 +30,7 @@ let () =
       Test_closure_call.suite;
       Test_closure_fused.suite;
       Test_engines_kept.suite;
+      Test_waits.suite;
       Test_start_sharing.suite;
       Test_tasks.suite;
       Test_observation.suite;

@@ -11,6 +11,9 @@ let default_statement_time = 0.0001
 let default_max_time = 3600.
 let default_epoch = 1704067200.   (* 2024-01-01 00:00:00 UTC, a Monday *)
 let default_poll_rate = 0.1
+let min_poll_rate = 0.04
+let min_timer_single = 0.01
+let min_timer_cyclic = 0.1
 let max_interrupts = 100
 let queue_capacity = 30
 
@@ -278,9 +281,12 @@ let with_interrupt w n f =
 
 (* ch. 8: "通常,定义程序(比如,ISignalDI)将激活中断" — an order activates the interrupt, even one
    that ISleep deactivated (R-8-w). *)
+(* A shorter time is the minimum ABB gives ITimer (doc/rulings.md R-8-waits1): a cyclic timer
+   fires at most ten times a virtual second, so that the firings of a run are bounded by
+   --max-time. *)
 let order_timer w n ~period ~single =
   with_interrupt w n (fun i ->
-      let p = max 1 (seconds period) in
+      let p = seconds (Float.max period (if single then min_timer_single else min_timer_cyclic)) in
       i.generation <- fresh_generation w;
       i.sleeping <- false;
       i.source <- Timer { period = p; single };

@@ -35,6 +35,15 @@ val default_epoch : float
 val default_poll_rate : float
 (** WaitUntil's \PollRate when absent: 0.1 s (installed-facts.md section 4, UNCERTAIN). *)
 
+val min_poll_rate : float
+(** 0.04 s: a shorter WaitUntil \PollRate polls at this rate (installed-facts.md section 4,
+    doc/rulings.md R-8-waits1). *)
+
+val min_timer_single : float
+val min_timer_cyclic : float
+(** ITimer's minimum Time: 0.01 s with \Single or \SingleSafe, 0.1 s cyclic; a shorter time
+    is raised to it (installed-facts.md section 6, doc/rulings.md R-8-waits1). *)
+
 val max_interrupts : int
 (** Interrupt numbers a task may hold at once: 100 (installed-facts.md section 6); one more
     CONNECT raises ERR_INOMAX. *)
@@ -136,7 +145,8 @@ val delete : t -> int -> unit
     are dropped (an [Interrupt_discarded] each, R-8-x). *)
 
 val order_timer : t -> int -> period:float -> single:bool -> (unit, string) result
-(** ITimer; ERR_UNKINO for a number that is not connected. *)
+(** ITimer; ERR_UNKINO for a number that is not connected. A period below {!min_timer_single}
+    or {!min_timer_cyclic} is raised to it. *)
 
 type trigger = old:float -> now:float -> bool
 (** May keep a state of its own (ISignalAI's reference value). *)

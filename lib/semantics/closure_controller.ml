@@ -47,8 +47,9 @@ type wait_end = Finished of string option | Halted of Machine.outcome
 (* The machine's wait-* rules, in the same order at each turn: interrupts and asynchronous errors
    first; then the poll of a WaitUntil condition when its time has come, the wait's own test, the
    deadline; else the clock moves on (wait-advance), or nothing can end the wait
-   (wait-deadlock). *)
-let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
+   (wait-deadlock). Each poll, each move of the clock and each yield is a step of the machine:
+   [spend] charges it, so that --max-steps bounds a wait as it bounds the machine's (issue 21). *)
+let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe ~spend =
   let now = W.now w in
   let period = Option.value wt.poll ~default:0. in
   let next_poll = ref (match first_poll with Some t -> Float.max t (now +. period) | None -> now +. period) in
@@ -63,6 +64,7 @@ let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
       let reached t = W.seconds now >= W.seconds t in
       match condition with
       | Some holds when reached !next_poll ->
+          spend ();
           fresh := false;
           if holds () then finish false
           else begin
@@ -78,6 +80,7 @@ let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
           | l, Some yield ->
               (* ch. 14: another task may end the wait; the scheduler moves the clock when every
                  task waits (the machine's wait-yield). *)
+              spend ();
               yield ~wake:(match l with t :: _ -> Some t | [] -> None) ~what:wt.what ~pure:!fresh;
               fresh := true;
               observe ();
@@ -87,6 +90,6 @@ let wait ?yield w (wt : W.wait) ~first_poll ~condition ~serve ~observe =
                         (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
                            now wt.what))
           | t :: _, None when t > W.max_time w -> Halted (time_limit w)
-          | t :: _, None -> W.advance_to w t; observe (); turn ())
+          | t :: _, None -> spend (); W.advance_to w t; observe (); turn ())
   in
   turn ()

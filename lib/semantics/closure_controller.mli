@@ -30,13 +30,16 @@ type wait_end =
 
 val wait :
   ?yield:(wake:float option -> what:string -> pure:bool -> unit) -> Rapid_controller.World.t -> Rapid_controller.World.wait -> first_poll:float option ->
-  condition:(unit -> bool) option -> serve:(unit -> bool) -> observe:(unit -> unit) -> wait_end
+  condition:(unit -> bool) option -> serve:(unit -> bool) -> observe:(unit -> unit) -> spend:(unit -> unit) ->
+  wait_end
 (** A waiting instruction carried out (doc/controller.md): at each turn, [serve ()] lets an
     interrupt (or an asynchronous error) in, [true] when it ran a trap, and the turn is taken
     again; then the wait ends when [condition] (WaitUntil, at each poll) or the wait's own test
     holds, or at its deadline; otherwise the clock moves on to the next timed event, the deadline
     or the next poll, and [observe ()] passes on what happened meanwhile. With nothing to come,
     a deadlock. [first_poll]: the motion's time of WaitUntil \InPos's first evaluation.
+    [spend ()] is called at each poll, each move of the clock and each yield, before it: the
+    engine's unit of work, which may end the run (its fuel).
 
     [yield] (one of several tasks, ch. 14): instead of moving the clock or ending in a deadlock,
     the wait yields its turn ({!Closure_engine.cooperation}) and is taken again when the task's

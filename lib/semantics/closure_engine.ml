@@ -27,8 +27,9 @@ type cooperation = {
 type error = {
   name : string; number : int; at : Rapid_syntax.Source.region;
   about : string option;              (* the unknown name, the procedure, the function (§7.1) *)
-  mutable chain : string list option;
-      (* filled in by the first activation that catches the error, the one it occurred in *)
+  mutable chain : string list Lazy.t option;
+      (* filled in by the first activation that catches the error, the one it occurred in; lazy,
+         so that a raise costs the same at any depth: only a report reads the chain *)
 }
 
 (* What may happen to an activation while one of its statements runs. *)
@@ -153,9 +154,9 @@ let chain_of (a : act) =
   go a []
 
 (* The error as it was caught in activation [a]: where it occurred, if nothing caught it before. *)
-let caught (a : act) e = (if e.chain = None then e.chain <- Some (chain_of a)); e
+let caught (a : act) e = (match e.chain with None -> e.chain <- Some (lazy (chain_of a)) | Some _ -> ()); e
 
-let chain e = Option.value e.chain ~default:[]
+let chain e = match e.chain with Some l -> Lazy.force l | None -> []
 
 let emit_raised st e =
   if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
@@ -184,7 +185,7 @@ let user_call st (b : act) =
    reported at the call in user code, with the call chain from there. *)
 let at_user_level st (b : act) e =
   match user_call st b with
-  | Some (u, at) -> { e with at; chain = Some (chain_of u) }
+  | Some (u, at) -> { e with at; chain = Some (lazy (chain_of u)) }
   | None -> e
 
 (* The system error handler stops the task (§7.1) with an error caught in activation [b]. *)
@@ -195,7 +196,7 @@ let stop st (b : act) e = Halt (stopped (at_user_level st b (caught b e)))
 let relocate st (c : act) e ~at =
   if c.routine.nostepin && c.routine.kind <> Trap && c.parent.level >= 0 && not c.parent.routine.nostepin
   then begin
-    let e' = { e with at; chain = Some (chain_of c.parent) } in
+    let e' = { e with at; chain = Some (lazy (chain_of c.parent)) } in
     (* Still the asynchronous error it was (§7.4: TRYNEXT as RETRY wherever it is handled). *)
     if st.async_errors <> [] && List.memq e st.async_errors then st.async_errors <- e' :: st.async_errors;
     e'
@@ -811,7 +812,7 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
             match user_call st a with
             | None -> raise (stop st a e')
             | Some (user, user_at) -> (
-                let e' = { e' with at = user_at; chain = Some (chain_of user) } in
+                let e' = { e' with at = user_at; chain = Some (lazy (chain_of user)) } in
                 let free = user.routine.error <> None && user.ext.current = None
                            && not (List.memq user st.undoing) in
                 if not free then raise (stop st a e')
@@ -1204,7 +1205,8 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
           | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
   let yield = Option.map (fun c -> c.yield) st.cooperation in
-  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) with
+  let spend () = tick st in
+  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
   | Finished None -> ()
   | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name

@@ -26,7 +26,8 @@ type result = {
       (** as the machine's; [Running] when the fuel ran out (the machine's "step limit") *)
   fuel_used : int;
       (** units of fuel spent: one per statement started, per loop iteration (each test of a
-          WHILE condition, each FOR iteration) and per routine entered *)
+          WHILE condition, each FOR iteration), per routine entered, and per poll, move of the
+          clock and yield of a wait (doc/rulings.md R-8-waits1) *)
 }
 
 type cooperation = {

@@ -179,8 +179,9 @@ let call (ctx : context) name args =
           | Value (V.Bool true) -> ignore (timed_wait ctx args ~what:"" ~satisfied:(fun () -> true)); done_
           | _ -> (
               let rate = Option.value (num ctx args "PollRate") ~default:W.default_poll_rate in
-              (* The clock counts microseconds: a shorter poll is one microsecond. *)
-              let rate = if rate > 0. then Float.max rate 1e-6 else rate in
+              (* A shorter poll is the minimum (R-8-waits1): a wait polls at most 25 times a
+                 virtual second. *)
+              let rate = if rate > 0. then Float.max rate W.min_poll_rate else rate in
               if not (rate > 0.) || not (Float.is_finite rate) then Failed "ERR_ARGVALERR"
               else match timed_wait ctx args ~what:"a condition" ~satisfied:(fun () -> false) with
                 | Wait wt -> Wait { wt with poll = Some rate }
