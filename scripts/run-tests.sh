@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test of rapid-sem and ends with one line "N passed, N failed" that counts them all:
-# the unit and property tests (alcotest, test/) and the conformance suite (spec/).
+# the unit and property tests (alcotest, test/), the conformance suite (spec/) and a small run of
+# the attack campaign (bench/attack.sh).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bin=./_build/install/default/bin/rapid-sem
@@ -43,6 +44,23 @@ else
 fi
 [ "$spec_status" -eq 0 ] || status=1
 rm -f "$spec_log"
+
+# A small run of the attack campaign (bench/attack.sh, doc/attack-campaign.md): 20 hostile inputs
+# a surface, each surface one test. The campaign itself (1,000 a surface) is bench/attack.sh.
+attack_log=$(mktemp)
+RAPID_SEM="$bin" bench/attack.sh -n 20 -o "$attack_log" >/dev/null 2>&1
+attack_status=$?
+while IFS= read -r line; do
+  echo "attack smoke: $line"
+  if grep -qE ': [0-9]+ inputs, 0 exit 125, 0 exit 134, 0 hangs, 0 other failures' <<<"$line"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+  fi
+done < "$attack_log"
+if [ "$attack_status" -ne 0 ] && ! grep -q . "$attack_log"; then failed=$((failed + 1)); fi
+[ "$attack_status" -eq 0 ] || status=1
+rm -f "$attack_log"
 
 echo
 echo "$passed passed, $failed failed"
