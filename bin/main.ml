@@ -1016,7 +1016,8 @@ let spec_cmd =
           ignore (Rapid_oracle.Oracle.self_reference ());
           (* Run cases compare the events with rapid-sem's own too. *)
           let reference = Filename.quote Sys.executable_name ^ " run --json {options} {tasks} {files}" in
-          Rapid_conformance.Impl_runner.run ~verbose ~timeout ~reference ~ignore:ignore_kinds ?junit ?json:report ~template
+          Rapid_conformance.Impl_runner.run ~verbose ~timeout ~reference ~ignore:ignore_kinds ?junit ?json:report
+            ~template
             Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
@@ -1029,7 +1030,8 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds $ timeout)
+  Cmd.v (Cmd.info "spec" ~doc ~man)
+    Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds $ timeout)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)

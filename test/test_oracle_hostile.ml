@@ -73,7 +73,8 @@ let endless_events () =
   says "endless" r "line 1000001: more than 1000000 events"
 
 let long_event_clipped () =
-  let r = verdict (start ^ "\npython3 -c 'print(\"{\\\"event\\\":\\\"output\\\",\\\"text\\\":\\\"\" + \"x\" * 100000 + \"\\\"}\")'\n") in
+  let line = {|print("{\"event\":\"output\",\"text\":\"" + "x" * 100000 + "\"}")|} in
+  let r = verdict (start ^ "\npython3 -c " ^ Filename.quote line ^ "\n") in
   says "clipped" r "... (100028 bytes)"; short "clipped" r
 
 (* The reading is bounded whatever the implementation writes on standard error: 600 MB of it in
@@ -92,7 +93,8 @@ let stderr_drained () =
 
 let background_child_ended () =
   let pids = pid_file "background" in
-  let r = verdict (Printf.sprintf "sleep 60 & echo $! > %s\nexec \"$RAPID_SEM\" run --json \"$1\"\n" (Filename.quote pids)) in
+  let r = verdict (Printf.sprintf "sleep 60 & echo $! > %s\nexec \"$RAPID_SEM\" run --json \"$1\"\n"
+                     (Filename.quote pids)) in
   says "background" r "agree";
   Alcotest.(check bool) "the background child is gone" true (gone (pid_in pids))
 
@@ -119,7 +121,8 @@ let spec_impl () =
   says "spec deep" (run (start ^ "\npython3 -c 'print(\"{\\\"a\\\":\" * 200000)'\n")) "nested deeper than 100";
   says "spec killed" (run (start ^ "\nkill -ABRT $$\n")) "killed by signal SIGABRT";
   let pids = pid_file "spec" in
-  let detail = run (Printf.sprintf "sleep 60 & echo $! > %s\nshift\nexec \"$RAPID_SEM\" run --json \"$@\"\n" (Filename.quote pids)) in
+  let detail = run (Printf.sprintf "sleep 60 & echo $! > %s\nshift\nexec \"$RAPID_SEM\" run --json \"$@\"\n"
+                      (Filename.quote pids)) in
   Alcotest.(check string) "spec background: passes" "" detail;
   Alcotest.(check bool) "spec background: the child is gone" true (gone (pid_in pids))
 

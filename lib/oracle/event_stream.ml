@@ -15,7 +15,8 @@ let kind = function
    recursive: a line of 1 MiB may hold half a million items. *)
 let rec canonical : Yojson.Safe.t -> Yojson.Safe.t = function
   | `Assoc fields ->
-      `Assoc (List.sort (fun (a, _) (b, _) -> compare a b) (List.rev (List.rev_map (fun (k, v) -> (k, canonical v)) fields)))
+      let fields = List.rev (List.rev_map (fun (k, v) -> (k, canonical v)) fields) in
+      `Assoc (List.sort (fun (a, _) (b, _) -> compare a b) fields)
   | `List items -> `List (List.rev (List.rev_map canonical items))
   | other -> other
 
