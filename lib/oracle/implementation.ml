@@ -68,11 +68,12 @@ let kill_unreaped pid = kill_group pid; try Unix.kill pid Sys.sigkill with Unix.
 let rec restart f = try f () with Unix.Unix_error (Unix.EINTR, _, _) -> restart f
 
 (* The command in a session and process group of its own (OCaml 4.13's Unix has setsid, not
-   setpgid), so that what it leaves behind (a child in the
-   background, a child still writing when the time is up) can be ended with it. *)
+   setpgid), so that what it leaves behind (a child in the background, a child still writing
+   when the time is up) can be ended with it. *)
 let spawn cmd ~stdout ~stderr =
   let null = Unix.openfile "/dev/null" [ Unix.O_RDONLY; O_CLOEXEC ] 0 in
   match Unix.fork () with
+  | exception e -> Unix.close null; raise e
   | 0 -> (
       try
         ignore (Unix.setsid ());
@@ -146,6 +147,7 @@ let run ?(timeout = 60.) ~template ~on_line files =
       | 0, _ -> ()
       | _, Unix.WEXITED n -> status := Some (`Exited n); kill_group pid
       | _, (Unix.WSIGNALED n | Unix.WSTOPPED n) -> status := Some (`Signaled n); kill_group pid
+      (* WSTOPPED only comes with WUNTRACED: a stopped command waits for its timeout. *)
   in
   let finish s = kill_unreaped pid; ignore (restart (fun () -> Unix.waitpid [] pid)); status := Some s in
   let rec loop () =
