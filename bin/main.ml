@@ -1010,15 +1010,19 @@ let spec_cmd =
   let engine = Arg.(value & opt (enum [ ("machine", Rapid_conformance.Spec_runner.Machine); ("closure", Closure) ]) Machine & info [ "engine" ] ~docv:"ENGINE" ~doc:"The engine that runs the run-time cases (formats 3 and 4, one task or several): $(b,machine) (default) or $(b,closure).") in
   let ignore_kinds = Arg.(value & opt_all string [] & info [ "ignore" ] ~docv:"KIND"
                             ~doc:"With --impl: leave the events of this kind out of the comparison of the events (repeatable).") in
-  let run dir verbose impl junit report engine ignore_kinds =
+  let timeout = Arg.(value & opt float 60. & info [ "timeout" ] ~docv:"SECONDS"
+                       ~doc:"With --impl: the time allowed to each run of a case (either tool's).") in
+  let run dir verbose impl junit report engine ignore_kinds timeout =
     guard @@ fun () ->
+    if timeout <= 0. || Float.is_nan timeout then (prerr_endline "rapid-sem: --timeout must be positive"; 2) else
     let _, failed = match impl with
       | None -> Rapid_conformance.Spec_runner.run ~verbose ~engine Format.std_formatter dir
       | Some template ->
           ignore (Rapid_oracle.Oracle.self_reference ());
           (* Run cases compare the events with rapid-sem's own too. *)
           let reference = Filename.quote Sys.executable_name ^ " run --json {options} {tasks} {files}" in
-          Rapid_conformance.Impl_runner.run ~verbose ~reference ~ignore:ignore_kinds ?junit ?json:report ~template
+          Rapid_conformance.Impl_runner.run ~verbose ~timeout ~reference ~ignore:ignore_kinds ?junit ?json:report
+            ~template
             Format.std_formatter dir in
     if failed = 0 then exit_ok else exit_spec_failed
   in
@@ -1031,7 +1035,8 @@ let spec_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every case passes; 1 otherwise.";
   ] in
-  Cmd.v (Cmd.info "spec" ~doc ~man) Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds)
+  Cmd.v (Cmd.info "spec" ~doc ~man)
+    Term.(const run $ dir $ verbose $ impl $ junit $ report $ engine $ ignore_kinds $ timeout)
 
 let () =
   (* A closed pipe is then an error of the write (EPIPE), which ends the run with its status. *)

@@ -23,7 +23,7 @@ let cmd =
            ~doc:"Module files, $(b,*.task) folders, or folders searched for both.")
   in
   let run impl ignore timeout paths =
-    if timeout <= 0. then (prerr_endline "rapid-sem: --timeout must be positive"; 2)
+    if timeout <= 0. || Float.is_nan timeout then (prerr_endline "rapid-sem: --timeout must be positive"; 2)
     else
     match Rapid_oracle.Oracle.programs_of_paths paths with
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2

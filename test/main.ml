@@ -22,6 +22,7 @@ let () =
       Test_robustness.suite;
       Test_motion_run.suite;
       Test_impl_runner.suite;
+      Test_oracle_hostile.suite;
       Test_services.suite;
       Test_save.suite;
       Test_sandbox.suite;

@@ -74,7 +74,9 @@ let command ?(fs = []) ~template (case : Spec_case.t) =
   else Rapid_oracle.Implementation.command_line ~template:with_mode ~files:case.files
 
 let field name = function `Assoc f -> List.assoc_opt name f | _ -> None
+(* The implementation's strings, clipped where a detail shows them (Stream.clip). *)
 let string_field name j = match field name j with Some (`String s) -> Some s | _ -> None
+let shown_field name j = Option.map Stream.clip (string_field name j)
 let int_field name j = match field name j with Some (`Int n) -> Some n | _ -> None
 
 let place j =
@@ -85,13 +87,19 @@ let place j =
       | _ -> None)
   | None -> None
 
-let show_place = function Some (f, l, c) -> Printf.sprintf "%s:%d:%d" f l c | None -> "(no place)"
+let show_place = function Some (f, l, c) -> Printf.sprintf "%s:%d:%d" (Stream.clip f) l c | None -> "(no place)"
 
 (* The exit status of spec/README.md's format 3, from an end object. *)
 let status_of outcome =
   match outcome with
   | "ended" -> 0 | "stopped" -> 1 | "refused" -> 2 | "exhausted" | "deadlock" | "running" -> 3
   | "unsupported" -> 4 | _ -> 125
+
+(* An implementation's output lines in a detail: each clipped, and at most the first 20. *)
+let shown_outputs lines =
+  let shown = List.filteri (fun i _ -> i < 20) lines in
+  String.concat " | " (List.map (fun l -> Stream.clip (Printf.sprintf "%S" l)) shown)
+  ^ (if List.length lines > 20 then Printf.sprintf " | ... (%d lines)" (List.length lines) else "")
 
 let judge (case : Spec_case.t) (events : Stream.event list) =
   let ends = List.filter (fun e -> Stream.kind e = "end") events in
@@ -102,31 +110,31 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
       let outcome = Option.value (string_field "outcome" last) ~default:"" in
       match case.expectation, case.run with
       | Some (Refused { error_class; file; line; col }), _ ->
-          let got_class = Option.value (string_field "class" last) ~default:"" in
+          let got_class = Option.value (shown_field "class" last) ~default:"" in
           let got = place last in
           let file_ok = match file, got with Some f, Some (g, _, _) -> f = g | None, _ -> true | _ -> false in
           if outcome = "refused" && got_class = error_class && file_ok
              && (match got with Some (_, l, c) -> l = line && c = col | None -> false)
           then Ok ()
-          else Error (Printf.sprintf "expected %s at %d:%d; got %s%s" error_class line col outcome
+          else Error (Printf.sprintf "expected %s at %d:%d; got %s%s" error_class line col (Stream.clip outcome)
                         (if outcome = "refused" then Printf.sprintf " %s at %s" got_class (show_place got) else ""))
       | Some Accepted, None ->
           if outcome = "accepted" || outcome = "ended" then Ok ()
-          else Error (Printf.sprintf "expected the case to be accepted; got %s %s" outcome
-                        (Option.value (string_field "class" last) ~default:""))
+          else Error (Printf.sprintf "expected the case to be accepted; got %s %s"
+                        (Stream.clip outcome) (Option.value (shown_field "class" last) ~default:""))
       | Some Accepted, Some run ->
           let output = List.filter_map (fun e ->
               if Stream.kind e = "output" then string_field "text" e else None) events in
           let status = status_of outcome in
           let problems =
             (if output <> run.outputs then
-               [ Printf.sprintf "output %s, expected %s"
-                   (String.concat " | " (List.map (Printf.sprintf "%S") output))
+               [ Printf.sprintf "output %s, expected %s" (shown_outputs output)
                    (String.concat " | " (List.map (Printf.sprintf "%S") run.outputs)) ] else [])
-            @ (if status <> run.exit_status then [ Printf.sprintf "exit %d (%s), expected %d" status outcome run.exit_status ] else [])
+            @ (if status <> run.exit_status then
+                 [ Printf.sprintf "exit %d (%s), expected %d" status (Stream.clip outcome) run.exit_status ] else [])
             @ (match run.error with
                | Some (name, l, c) -> (
-                   let got_name = Option.value (string_field "name" last) ~default:"" in
+                   let got_name = Option.value (shown_field "name" last) ~default:"" in
                    match place last with
                    | Some (f, gl, gc) when got_name = name && gl = l && gc = c
                                            && (match run.error_file with Some ef -> ef = f | None -> true) -> []
@@ -139,24 +147,22 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
 (* With a reference (rapid-sem's own run --json), a run case passes only when the events agree
    too: the first divergence is named by its index, as rapid-sem oracle names it. *)
 let same_events ?ignore ?timeout ~reference (case : Spec_case.t) (actual : Stream.t) =
-  match with_mass_memory case (fun fs -> Rapid_oracle.Implementation.run ?timeout ~template:(command ~fs ~template:reference case) []) with
-  | exception (Unix.Unix_error (e, _, _)) -> Error ("rapid-sem could not be run: " ^ Unix.error_message e)
-  | r -> (
-      match Stream.parse r.stdout with
-      | Error m -> Error ("rapid-sem's own events: " ^ m)
-      | Ok expected -> (
-          if several_tasks case then
-            match Rapid_oracle.Task_streams.compare ?ignore ~expected ~actual () with
-            | Agree _ -> Ok ()
-            | Broken m -> Error m
-            | Diverge d -> Error (Rapid_oracle.Task_streams.report d)
-          else
-          match Rapid_oracle.Oracle.compare_streams ?ignore ~expected ~actual () with
-          | Agree _ -> Ok ()
-          | Broken m -> Error m
-          | Diverge d ->
-              let show = function Some e -> Stream.to_string e | None -> "(no more events)" in
-              Error (Printf.sprintf "event %d: expected %s, got %s" d.index (show d.expected) (show d.actual))))
+  match with_mass_memory case (fun fs ->
+      Rapid_oracle.Oracle.run_stream "rapid-sem" ?timeout ~template:(command ~fs ~template:reference case) []) with
+  | Error m -> Error m
+  | Ok expected -> (
+    if several_tasks case then
+      match Rapid_oracle.Task_streams.compare ?ignore ~expected ~actual () with
+      | Agree _ -> Ok ()
+      | Broken m -> Error m
+      | Diverge d -> Error (Rapid_oracle.Task_streams.report d)
+    else
+    match Rapid_oracle.Oracle.compare_streams ?ignore ~expected ~actual () with
+    | Agree _ -> Ok ()
+    | Broken m -> Error m
+    | Diverge d ->
+        let show = function Some e -> Stream.show e | None -> "(no more events)" in
+        Error (Printf.sprintf "event %d: expected %s, got %s" d.index (show d.expected) (show d.actual)))
 
 let no_tasks_detail = "several tasks (format 4): the template has no {tasks}"
 
@@ -169,25 +175,19 @@ let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) 
   else if case.problems <> [] then
     { case; passed = false; skipped = false; detail = String.concat "; " case.problems }
   else Loopback_lock.exclusive case @@ fun () ->
-    match with_mass_memory case (fun fs -> Rapid_oracle.Implementation.run ~timeout ~template:(command ~fs ~template case) []) with
-    | exception (Unix.Unix_error (e, _, _)) -> { case; passed = false; skipped = false; detail = Unix.error_message e }
-    | r -> (
-        match r.status with
-        | `Timed_out -> { case; passed = false; skipped = false; detail = "the implementation did not finish in time" }
-        | `Signaled n -> { case; passed = false; skipped = false; detail = Printf.sprintf "killed by signal %d" n }
-        | `Exited _ -> (
-            match Stream.parse r.stdout with
-            | Error m -> { case; passed = false; skipped = false; detail = "not an event stream: " ^ m }
-            | Ok s -> (
-                match judge case s.events with
-                | Ok () -> (
-                    match reference, case.run with
-                    | Some reference, Some _ -> (
-                        match same_events ?ignore ~timeout ~reference case s with
-                        | Ok () -> { case; passed = true; skipped = false; detail = "" }
-                        | Error m -> { case; passed = false; skipped = false; detail = m })
-                    | _ -> { case; passed = true; skipped = false; detail = "" })
-                | Error m -> { case; passed = false; skipped = false; detail = m })))
+    match with_mass_memory case (fun fs ->
+        Rapid_oracle.Oracle.run_stream "the implementation" ~timeout ~template:(command ~fs ~template case) []) with
+    | Error m -> { case; passed = false; skipped = false; detail = m }
+    | Ok s -> (
+        match judge case s.events with
+        | Ok () -> (
+            match reference, case.run with
+            | Some reference, Some _ -> (
+                match same_events ?ignore ~timeout ~reference case s with
+                | Ok () -> { case; passed = true; skipped = false; detail = "" }
+                | Error m -> { case; passed = false; skipped = false; detail = m })
+            | _ -> { case; passed = true; skipped = false; detail = "" })
+        | Error m -> { case; passed = false; skipped = false; detail = m })
 
 let xml_escape s =
   let b = Buffer.create (String.length s) in

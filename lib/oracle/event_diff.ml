@@ -55,7 +55,7 @@ let report ~file d =
   let line fmt = Printf.ksprintf (fun s -> Buffer.add_string b s; Buffer.add_char b '\n') fmt in
   line "%s: the implementation diverges at event %d%s" file d.index
     (match d.at with Some r -> " (near " ^ region_text r ^ ")" | None -> "");
-  List.iter (fun e -> line "    agreed:   %s" (Event_stream.to_string e)) d.before;
-  line "    expected: %s" (match d.expected with Some e -> Event_stream.to_string e | None -> "(no more events)");
-  line "    actual:   %s" (match d.actual with Some e -> Event_stream.to_string e | None -> "(no more events)");
+  List.iter (fun e -> line "    agreed:   %s" (Event_stream.show e)) d.before;
+  line "    expected: %s" (match d.expected with Some e -> Event_stream.show e | None -> "(no more events)");
+  line "    actual:   %s" (match d.actual with Some e -> Event_stream.show e | None -> "(no more events)");
   Buffer.contents b

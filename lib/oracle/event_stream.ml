@@ -1,38 +1,102 @@
 type event = Yojson.Safe.t
 type t = { schema : string option; events : event list }
 
+let max_depth = 100
+let max_events = 1_000_000
+let max_values = 8_000_000
+let shown_bytes = 300
+
 let kind = function
   | `Assoc fields -> (match List.assoc_opt "event" fields with Some (`String k) -> k | _ -> "")
   | _ -> ""
 
 (* Two implementations may write an object's fields in any order: the comparison and the
-   report see them sorted, so that only a difference of content counts. *)
+   report see them sorted, so that only a difference of content counts. The maps are tail
+   recursive: a line of 1 MiB may hold half a million items. *)
 let rec canonical : Yojson.Safe.t -> Yojson.Safe.t = function
   | `Assoc fields ->
-      `Assoc (List.sort (fun (a, _) (b, _) -> compare a b) (List.map (fun (k, v) -> (k, canonical v)) fields))
-  | `List items -> `List (List.map canonical items)
+      let fields = List.rev (List.rev_map (fun (k, v) -> (k, canonical v)) fields) in
+      `Assoc (List.sort (fun (a, _) (b, _) -> compare a b) fields)
+  | `List items -> `List (List.rev (List.rev_map canonical items))
   | other -> other
 
 let to_string e = Yojson.Safe.to_string (canonical e)
 
-let parse text =
-  let lines = String.split_on_char '\n' text in
-  let rec read n acc = function
-    | [] -> Ok (List.rev acc)
-    | line :: rest when String.trim line = "" -> read (n + 1) acc rest
-    | line :: rest -> (
-        match Yojson.Safe.from_string line with
-        | `Assoc _ as obj -> read (n + 1) (canonical obj :: acc) rest
-        | _ -> Error (Printf.sprintf "line %d: not a JSON object" n)
-        | exception Yojson.Json_error m ->
-            let one_line = String.map (function '\n' -> ' ' | c -> c) m in
-            Error (Printf.sprintf "line %d: not JSON (%s)" n one_line))
+let clip s =
+  let one_line = String.map (function '\n' | '\r' -> ' ' | c -> c) s in
+  if String.length one_line <= shown_bytes then one_line
+  else Printf.sprintf "%s... (%d bytes)" (String.sub one_line 0 shown_bytes) (String.length s)
+
+let show e = clip (to_string e)
+
+(* One pass over a line before yojson sees it: [None] when its brackets and braces nest deeper
+   than [max_depth] outside strings (yojson's reader recurses once per level, so a line of a
+   million brackets would exhaust the stack before it said a word), else [Some n], [n] the
+   values and names it holds (each begins a line or follows a bracket, a brace, a colon or a
+   comma), which bound what its tree takes in memory. *)
+let scan line =
+  let n = String.length line in
+  let rec go i depth in_string values =
+    if i >= n then Some values
+    else
+      let c = line.[i] in
+      if in_string then
+        if c = '\\' then go (i + 2) depth true values
+        else go (i + 1) depth (c <> '"') values
+      else
+        match c with
+        | '"' -> go (i + 1) depth true values
+        | '[' | '{' -> if depth + 1 > max_depth then None else go (i + 1) (depth + 1) false (values + 1)
+        | ']' | '}' -> go (i + 1) (depth - 1) false values
+        | ':' | ',' -> go (i + 1) depth false (values + 1)
+        | _ -> go (i + 1) depth false values
   in
-  match read 1 [] lines with
-  | Error m -> Error m
-  | Ok (first :: rest) when kind first = "start" ->
-      let schema = match first with
-        | `Assoc f -> (match List.assoc_opt "schema" f with Some (`String s) -> Some s | _ -> None)
-        | _ -> None in
-      Ok { schema; events = rest }
-  | Ok events -> Ok { schema = None; events }
+  go 0 0 false 1
+
+type reader = {
+  mutable first : event option;
+  mutable rest : event list;
+  mutable count : int;
+  mutable values : int;
+}
+
+let reader () = { first = None; rest = []; count = 0; values = 0 }
+
+let is_blank line = String.trim line = ""
+
+let add_line r n line =
+  if is_blank line then Ok ()
+  else if r.count >= max_events then
+    Error (Printf.sprintf "line %d: more than %d events" n max_events)
+  else
+    match scan line with
+    | None -> Error (Printf.sprintf "line %d: nested deeper than %d arrays and objects" n max_depth)
+    | Some v when r.values + v > max_values ->
+        Error (Printf.sprintf "line %d: more than %d JSON values in all" n max_values)
+    | Some v -> (
+        match Yojson.Safe.from_string line with
+        | `Assoc _ as obj ->
+            let e = canonical obj in
+            (match r.first with None -> r.first <- Some e | Some _ -> r.rest <- e :: r.rest);
+            r.count <- r.count + 1;
+            r.values <- r.values + v;
+            Ok ()
+        | _ -> Error (Printf.sprintf "line %d: not a JSON object" n)
+        | exception Yojson.Json_error m -> Error (Printf.sprintf "line %d: not JSON (%s)" n (clip m)))
+
+let contents r =
+  let rest = List.rev r.rest in
+  match r.first with
+  | Some (`Assoc f as first) when kind first = "start" ->
+      let schema = match List.assoc_opt "schema" f with Some (`String s) -> Some s | _ -> None in
+      { schema; events = rest }
+  | Some first -> { schema = None; events = first :: rest }
+  | None -> { schema = None; events = [] }
+
+let parse text =
+  let r = reader () in
+  let rec go n = function
+    | [] -> Ok (contents r)
+    | line :: more -> (match add_line r n line with Ok () -> go (n + 1) more | Error m -> Error m)
+  in
+  go 1 (String.split_on_char '\n' text)

@@ -35,20 +35,25 @@ let programs_of_paths paths =
 
 type verdict = Agree of int | Diverge of Event_diff.divergence | Broken of string
 
-let stream_of who (r : Implementation.result) =
-  match r.status with
-  | `Timed_out -> Error (who ^ " did not finish in time")
-  | `Signaled n -> Error (Printf.sprintf "%s was killed by signal %d" who n)
-  | `Exited _ -> (
-      match Event_stream.parse r.stdout with
-      | Ok s -> Ok s
-      | Error m -> Error (Printf.sprintf "%s wrote something that is not an event stream: %s" who m))
+(* The first line of what the command wrote on standard error, which is otherwise ignored: a
+   tool that cannot write its stream often says why there. *)
+let stderr_note (r : Implementation.result) =
+  match String.split_on_char '\n' (String.trim r.stderr) with
+  | first :: _ when first <> "" -> Printf.sprintf " (its standard error: %s)" (Event_stream.clip first)
+  | _ -> ""
 
 let run_stream who ?timeout ~template files =
-  match Implementation.run ?timeout ~template files with
-  | r -> stream_of who r
+  let stream = Event_stream.reader () in
+  match Implementation.run ?timeout ~template ~on_line:(Event_stream.add_line stream) files with
   | exception (Unix.Unix_error (e, _, _)) -> Error (Printf.sprintf "%s could not be run: %s" who (Unix.error_message e))
   | exception (Sys_error m) -> Error (Printf.sprintf "%s could not be run: %s" who m)
+  | r -> (
+      match r.refused, r.status, Implementation.death r.status with
+      | Some m, _, _ ->
+          Error (Printf.sprintf "%s wrote something that is not an event stream: %s%s" who m (stderr_note r))
+      | None, `Timed_out, _ -> Error (Printf.sprintf "%s did not finish in time%s" who (stderr_note r))
+      | None, _, Some death -> Error (Printf.sprintf "%s was %s%s" who death (stderr_note r))
+      | None, _, None -> Ok (Event_stream.contents stream))
 
 let compare_streams ?ignore ~(expected : Event_stream.t) ~(actual : Event_stream.t) () =
   (* An implementation of schema rapid-sem/1 is compared on what /1 says (Schema_compat); one
@@ -56,7 +61,7 @@ let compare_streams ?ignore ~(expected : Event_stream.t) ~(actual : Event_stream
   let v1 = actual.schema = Some "rapid-sem/1" && expected.schema = Some Schema_compat.current in
   if actual.schema <> expected.schema && not v1 then
     Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s"
-              (Option.value actual.schema ~default:"(none)")
+              (Event_stream.clip (Option.value actual.schema ~default:"(none)"))
               (String.concat " or " Schema_compat.accepted))
   else
     let expected_events, actual_events =

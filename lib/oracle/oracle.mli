@@ -19,6 +19,13 @@ val check :
 (** [reference] and [impl] are command templates ({!Implementation.command_line}); the
     reference is rapid-sem's own [run --json]. *)
 
+val run_stream :
+  string -> ?timeout:float -> template:string -> string list -> (Event_stream.t, string) result
+(** [run_stream who ~template files]: the command's events, read line by line
+    ({!Implementation.run}, {!Event_stream.add_line}); [Error] names [who] and says why there
+    are none: a line refused, the time out, death by a signal (the first line of its standard
+    error added, clipped), or a command that cannot be started. *)
+
 val compare_streams :
   ?ignore:string list -> expected:Event_stream.t -> actual:Event_stream.t -> unit -> verdict
 (** rapid-sem's stream against an implementation's: of the same schema, compared whole; an

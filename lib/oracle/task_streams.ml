@@ -26,7 +26,8 @@ type verdict = Agree of int | Diverge of divergence | Broken of string
 let compare ?(ignore = []) ~(expected : Event_stream.t) ~(actual : Event_stream.t) () =
   if actual.schema <> expected.schema then
     Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s (the schema of several tasks)"
-              (Option.value actual.schema ~default:"(none)") (Option.value expected.schema ~default:"(none)"))
+              (Event_stream.clip (Option.value actual.schema ~default:"(none)"))
+              (Option.value expected.schema ~default:"(none)"))
   else
     let keep e = not (List.mem (Event_stream.kind e) ignore) in
     let expected_streams = streams (List.filter keep expected.events)
@@ -50,5 +51,5 @@ let compare ?(ignore = []) ~(expected : Event_stream.t) ~(actual : Event_stream.
     | (_, d) :: _ -> Diverge d
 
 let report { stream; divergence = d } =
-  let show = function Some e -> Event_stream.to_string e | None -> "(no more events)" in
+  let show = function Some e -> Event_stream.show e | None -> "(no more events)" in
   Printf.sprintf "%s, event %d: expected %s, got %s" stream d.index (show d.expected) (show d.actual)
