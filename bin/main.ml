@@ -740,7 +740,7 @@ module TV = Rapid_semantics.Trace_view
 
 let write_json (w : TV.change) =
   match w with
-  | Write { place; value } -> Some (`Assoc [ ("place", `String place); ("value", `String value) ])
+  | Write { place; value } -> Some (`Assoc [ ("place", text place); ("value", text value) ])
   | _ -> None
 
 (* The changes other than writes, as the events of run --json, with two more kinds. *)
