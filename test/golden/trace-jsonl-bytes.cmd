@@ -1,0 +1,1 @@
+trace --format jsonl --rules store trace-bytes.mod
