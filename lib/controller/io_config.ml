@@ -31,33 +31,15 @@ let check_name line col name =
   if Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii name) then
     raise (Bad (line, col, Printf.sprintf "%s is a reserved word (§2.4), so it cannot name a signal" name))
 
-(* §2.13: a num is an IEEE 754 single-precision number; this is its largest finite value,
-   3.40282347E+38. A number read for a signal or a time beyond it is refused (R-8-numbers1). *)
-let num_max = Int32.float_of_bits 0x7f7fffffl
-
-(* doc/controller.md: numbers are decimal, [+-]DIGITS[.DIGITS][e[+-]DIGITS]. float_of_string
-   alone would take hexadecimal (0x10), underscores (1_0), nan and inf too. *)
-let is_decimal w =
-  let n = String.length w and i = ref 0 in
-  let digits () =
-    let from = !i in
-    while !i < n && w.[!i] >= '0' && w.[!i] <= '9' do incr i done;
-    !i - from in
-  let sign () = if !i < n && (w.[!i] = '+' || w.[!i] = '-') then incr i in
-  sign ();
-  let whole = digits () in
-  let fraction = if !i < n && w.[!i] = '.' then (incr i; digits ()) else 0 in
-  let exponent_ok =
-    if !i < n && (w.[!i] = 'e' || w.[!i] = 'E') then (incr i; sign (); digits () > 0) else true in
-  whole + fraction > 0 && exponent_ok && !i = n
-
+(* doc/controller.md: numbers are decimal; within num's range (§2.13, R-8-numbers1). *)
 let number line col w =
-  if not (is_decimal w) then
-    raise (Bad (line, col, Printf.sprintf "%S is not a decimal number (such as 1, 0.25 or 1e-3)" w));
-  match float_of_string_opt w with
-  | Some f when Float.abs f <= num_max -> f +. 0.   (* -0 is 0 *)
-  | _ -> raise (Bad (line, col, Printf.sprintf "%s is beyond the range of num (IEEE 754 single precision, \
-                                                  at most 3.40282347E+38 in magnitude; §2.13)" w))
+  match Rapid_syntax.Decimal.read w with
+  | Ok f -> f
+  | Error `Not_decimal ->
+      raise (Bad (line, col, Printf.sprintf "%S is not a decimal number (such as 1, 0.25 or 1e-3)" w))
+  | Error `Beyond_num ->
+      raise (Bad (line, col, Printf.sprintf "%s is beyond the range of num (IEEE 754 single precision, \
+                                             at most 3.40282347E+38 in magnitude; §2.13)" w))
 
 (* Words of a line with their columns (1-based), up to a comment. *)
 let words line =
@@ -195,7 +177,7 @@ let eio_words ln text first_col =
 
 let eio_signal ~seen signals ln words =
   (* A bare word that starts with '-' is the next key, unless it is a number (-Default -5). *)
-  let is_key w = String.length w > 1 && w.[0] = '-' && not (is_decimal w) in
+  let is_key w = String.length w > 1 && w.[0] = '-' && not (Rapid_syntax.Decimal.is_decimal w) in
   let rec pairs = function
     | (`Bare key, _, _) :: rest when is_key key -> (
         let key = String.lowercase_ascii (String.sub key 1 (String.length key - 1)) in
