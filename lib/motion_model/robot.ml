@@ -49,7 +49,7 @@ let words line_no line =
 let number line (col, w) what =
   match Rapid_syntax.Decimal.read w with
   | Ok f -> f
-  | Error `Not_decimal -> raise (Bad (line, col, Printf.sprintf "%s: expected a decimal number, found %S" what w))
+  | Error `Not_decimal -> raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what w))
   | Error `Beyond_num ->
       raise (Bad (line, col, Printf.sprintf "%s: %s is beyond the range of num (at most 3.40282347E+38, §2.13)" what w))
 
