@@ -29,7 +29,8 @@ let stimulus_errors () =
   check "twice" "t.io:2:8: io error: the signal DI1 is declared twice" "signal di1 di\nsignal DI1 do";
   check "name" "t.io:1:8: io error: \"1x\" is not a RAPID identifier (§2.3), so it cannot name a signal" "signal 1x di";
   check "entry" "t.io:1:1: io error: unknown entry \"sig\" (signal or at)" "sig di1 di";
-  check "number" "t.io:2:4: io error: \"soon\" is not a decimal number (such as 1, 0.25 or 1e-3)" "signal di1 di\nat soon di1 1";
+  check "number" "t.io:2:4: io error: \"soon\" is not a decimal number (such as 1, 0.25 or 1e-3)"
+    "signal di1 di\nat soon di1 1";
   Alcotest.(check string) "missing file" "no-such.io:1:1: io error: cannot read the file (no-such.io: No such file or directory)"
     (match Io.read_file "no-such.io" with Error m -> m | Ok _ -> "")
 
@@ -188,14 +189,17 @@ let eio_numbers () =
   match parse "EIO_SIGNAL:\n  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-3\" -Default 15\n\
                \  -Name \"b\" -SignalType \"AI\" -MinLog -5 -MaxLog 5 -Default -4.5\n" with
   | Error m -> Alcotest.fail m
-  | Ok c -> Alcotest.(check (list (float 0.))) "defaults" [ 15.; -4.5 ] (List.map (fun (s : Io.signal) -> s.initial) c.signals)
+  | Ok c ->
+      Alcotest.(check (list (float 0.))) "defaults" [ 15.; -4.5 ]
+        (List.map (fun (s : Io.signal) -> s.initial) c.signals)
 
 (* A UTF-8 byte order mark first is not an entry; the columns of line 1 count after it. *)
 let byte_order_mark () =
   (match parse "\xEF\xBB\xBFsignal di1 di\nat 1 di1 1\n" with
    | Ok c -> Alcotest.(check (list string)) "signals" [ "di1" ] (List.map (fun (s : Io.signal) -> s.name) c.signals)
    | Error m -> Alcotest.fail m);
-  Alcotest.(check string) "column after the mark" "t.io:1:12: io error: unknown signal type \"dx\" (di, do, ai, ao, gi or go)"
+  Alcotest.(check string) "column after the mark"
+    "t.io:1:12: io error: unknown signal type \"dx\" (di, do, ai, ao, gi or go)"
     (error_of "\xEF\xBB\xBFsignal di1 dx")
 
 (* A signal named after an installed object: the checker's error at the stimulus file's line

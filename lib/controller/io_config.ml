@@ -27,7 +27,8 @@ let check_name line col name =
   if name = "" || String.length name > 32
      || not (match name.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
      || not (String.for_all ok_char name)
-  then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal" name));
+  then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal"
+                               (Rapid_syntax.Decimal.shown name)));
   if Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii name) then
     raise (Bad (line, col, Printf.sprintf "%s is a reserved word (§2.4), so it cannot name a signal" name))
 
@@ -36,10 +37,12 @@ let number line col w =
   match Rapid_syntax.Decimal.read w with
   | Ok f -> f
   | Error `Not_decimal ->
-      raise (Bad (line, col, Printf.sprintf "%S is not a decimal number (such as 1, 0.25 or 1e-3)" w))
+      raise (Bad (line, col, Printf.sprintf "%S is not a decimal number (such as 1, 0.25 or 1e-3)"
+                               (Rapid_syntax.Decimal.shown w)))
   | Error `Beyond_num ->
       raise (Bad (line, col, Printf.sprintf "%s is beyond the range of num (IEEE 754 single precision, \
-                                             at most 3.40282347E+38 in magnitude; §2.13)" w))
+                                             at most 3.40282347E+38 in magnitude; §2.13)"
+                               (Rapid_syntax.Decimal.shown w)))
 
 (* Words of a line with their columns (1-based), up to a comment. *)
 let words line =
@@ -107,7 +110,8 @@ let parse_stimulus ~file lines =
               check_name ln nc name;
               let kind = match kind_of_word ty with
                 | Some k -> k
-                | None -> raise (Bad (ln, tc, Printf.sprintf "unknown signal type %S (di, do, ai, ao, gi or go)" ty)) in
+                | None -> raise (Bad (ln, tc, Printf.sprintf "unknown signal type %S (di, do, ai, ao, gi or go)"
+                                          (Rapid_syntax.Decimal.shown ty))) in
               let initial = match init with
                 | [] -> 0.
                 | [ (w, c) ] -> let v = number ln c w in check_value ln c kind v; v
@@ -125,7 +129,8 @@ let parse_stimulus ~file lines =
               let time = time_of ln t !last_time in
               let s = match Hashtbl.find_opt by_name (String.lowercase_ascii name) with
                 | Some s -> s
-                | None -> raise (Bad (ln, nc, Printf.sprintf "the signal %s is not declared above" name)) in
+                | None -> raise (Bad (ln, nc, Printf.sprintf "the signal %s is not declared above"
+                                                (Rapid_syntax.Decimal.shown name))) in
               if not (is_input s.kind) then
                 raise (Bad (ln, nc, Printf.sprintf "%s is an output: the outside world changes inputs only" s.name));
               let value = number ln vc v in
@@ -133,14 +138,17 @@ let parse_stimulus ~file lines =
               last_time := time;
               stimuli := { time; signal = s.name; value } :: !stimuli
           | _ -> raise (Bad (ln, 1, "expected: at TIME NAME VALUE, or at TIME collision")))
-      | (w, c) :: _ -> raise (Bad (ln, c, Printf.sprintf "unknown entry %S (signal or at)" w)))
+      | (w, c) :: _ ->
+          raise (Bad (ln, c, Printf.sprintf "unknown entry %S (signal or at)" (Rapid_syntax.Decimal.shown w))))
     lines;
   { file; signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions }
 
 (* -DeviceMap of a group signal: bits "0-7", or a list of them "0-3,8-11"; its width is the
    number of bits it maps. *)
 let device_map_bits ln col map =
-  let bad () = raise (Bad (ln, col, Printf.sprintf "-DeviceMap %S: expected bits such as \"0-7\" or \"0-3,8-11\"" map)) in
+  let bad () =
+    raise (Bad (ln, col, Printf.sprintf "-DeviceMap %S: expected bits such as \"0-7\" or \"0-3,8-11\""
+                           (Rapid_syntax.Decimal.shown map))) in
   let bit w = match int_of_string_opt (String.trim w) with
     | Some b when b >= 0 && b < 100_000 && String.for_all (fun c -> c = ' ' || (c >= '0' && c <= '9')) w -> b
     | _ -> bad () in
@@ -225,7 +233,8 @@ let parse_eio ~file lines =
   List.iteri (fun i raw ->
       let ln = i + 1 in
       let line = String.trim raw in
-      let first_col = match String.index_opt raw (if line = "" then ' ' else line.[0]) with Some k -> k + 1 | None -> 1 in
+      let first_col =
+        match String.index_opt raw (if line = "" then ' ' else line.[0]) with Some k -> k + 1 | None -> 1 in
       let ends_continued = String.length line > 0 && line.[String.length line - 1] = '\\' in
       let body = if ends_continued then String.sub line 0 (String.length line - 1) else line in
       let is_section = String.length line > 1 && line.[String.length line - 1] = ':'

@@ -49,9 +49,11 @@ let words line_no line =
 let number line (col, w) what =
   match Rapid_syntax.Decimal.read w with
   | Ok f -> f
-  | Error `Not_decimal -> raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what w))
+  | Error `Not_decimal ->
+      raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what (Rapid_syntax.Decimal.shown w)))
   | Error `Beyond_num ->
-      raise (Bad (line, col, Printf.sprintf "%s: %s is beyond the range of num (at most 3.40282347E+38, §2.13)" what w))
+      raise (Bad (line, col, Printf.sprintf "%s: %s is beyond the range of num (at most 3.40282347E+38, §2.13)"
+                               what (Rapid_syntax.Decimal.shown w)))
 
 (* R-desc-numbers1: what the model takes. Lengths up to 100 m, a non-zero one from 1 µm (the
    inverse kinematics divides by them); twists and joint offsets within a turn either way;
@@ -68,14 +70,14 @@ let max_speed = 100_000.
 let within line (col, w) what ~low ~high ~unit v =
   if v < low || v > high then
     raise (Bad (line, col, Printf.sprintf "%s: %s is outside %g .. %g %s, the range of the model (doc/motion.md)"
-                             what w low high unit))
+                             what (Rapid_syntax.Decimal.shown w) low high unit))
 
 let length line cw what =
   let v = number line cw what in
   within line cw what ~low:(-. max_length) ~high:max_length ~unit:"mm" v;
   if v <> 0. && Float.abs v < min_length then
     raise (Bad (line, fst cw, Printf.sprintf "%s: %s is below 0.001 mm, the model's resolution (0 or at least 0.001)"
-                                what (snd cw)));
+                                what (Rapid_syntax.Decimal.shown (snd cw))));
   v
 
 (* A speed: positive (its own message, the common mistake), then within the model's range. *)
@@ -109,8 +111,8 @@ let external_axis ln known rest =
       let v = List.map2 (fun f w -> number ln w (Printf.sprintf "%s %s" n f)) fields nums in
       let unit = if kind = Ext_axes.Linear then "mm" else "degrees" in
       List.iteri (fun i w -> if i < 2 then
-                     within ln w (Printf.sprintf "%s %s" n (List.nth fields i)) ~low:(-. max_limit) ~high:max_limit ~unit
-                       (List.nth v i)) nums;
+                     within ln w (Printf.sprintf "%s %s" n (List.nth fields i))
+                       ~low:(-. max_limit) ~high:max_limit ~unit (List.nth v i)) nums;
       let min = List.nth v 0 and max = List.nth v 1 in
       if min >= max then
         raise (Bad (ln, fst (List.nth nums 0), Printf.sprintf "%s: range min %g is not below max %g" n min max));
@@ -205,7 +207,8 @@ let parse ~file text =
             axis_line.(k - 1) <- ln
         | (_, "external") :: rest -> externals := !externals @ [ external_axis ln !externals rest ]
         | (c, w) :: _ ->
-            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)" w)))
+            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)"
+                               (Rapid_syntax.Decimal.shown w))))
       lines;
     let last = List.length lines in
     let missing = ref None in

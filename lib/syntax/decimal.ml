@@ -20,3 +20,5 @@ let read w =
     match float_of_string_opt w with
     | Some f when Float.abs f <= num_max -> Ok (f +. 0.)
     | _ -> Error `Beyond_num
+
+let shown w = if String.length w <= 40 then w else String.sub w 0 40 ^ "..."

@@ -11,3 +11,7 @@ val num_max : float
 val read : string -> (float, [ `Not_decimal | `Beyond_num ]) result
 (** A decimal within num's range ([-0] is 0); [`Beyond_num] for one whose magnitude is above
     {!num_max}. *)
+
+val shown : string -> string
+(** A word as an error message quotes it: at most 40 bytes, then "...", so that a number of a
+    million digits does not make a message of a million characters. *)
