@@ -147,7 +147,7 @@ let test_description () =
       Array.iteri (fun i a -> close (Printf.sprintf "axis %d" (i + 1)) q'.(i) a) q
 
 (* Issue 21, item 3: the numbers of a description within num and within the model's ranges
-   (R-desc-numbers1), at the offending word; before, a length of 1e300 reached the run and
+   (R-2.13-numbers2), at the offending word; before, a length of 1e300 reached the run and
    ended in an internal error. *)
 let test_description_numbers () =
   let replace_line n l =
@@ -621,7 +621,7 @@ let test_output () =
 let suite =
   ( "motion",
     [ Alcotest.test_case "K-home: the IRB 120's home pose" `Quick test_home;
-      Alcotest.test_case "the robot description's numbers (R-desc-numbers1)" `Quick test_description_numbers;
+      Alcotest.test_case "the robot description's numbers (R-2.13-numbers2)" `Quick test_description_numbers;
       Alcotest.test_case "K-inverse: FK then IK, random" `Quick test_fk_ik;
       Alcotest.test_case "K-errors: reach and axis range" `Quick test_ik_errors;
       Alcotest.test_case "the robot description and its errors" `Quick test_description;

@@ -55,7 +55,7 @@ let number line (col, w) what =
       raise (Bad (line, col, Printf.sprintf "%s: %s is beyond the range of num (at most 3.40282347E+38, §2.13)"
                                what (Rapid_syntax.Decimal.shown w)))
 
-(* R-desc-numbers1: what the model takes. Lengths up to 100 m, a non-zero one from 1 µm (the
+(* R-2.13-numbers2: what the model takes. Lengths up to 100 m, a non-zero one from 1 µm (the
    inverse kinematics divides by them); twists and joint offsets within a turn either way;
    axis limits within 100,000 degrees (axis 6 of ABB's arms turns up to ±242 revolutions) or
    100 m; speeds from 0.001 to 100,000 units a second (a slower axis would take centuries to
