@@ -36,8 +36,10 @@ cat > "$WORK/prog.mod" <<'EOF'
 MODULE attack_io
   PROC main()
     VAR num x;
-    x := di1 + ai1 + gi1;
+    x := ai1;
     TPWrite "start " \Num:=x;
+    TPWrite "group " \Num:=gi1;
+    x := di1 + ai1 + gi1;
     WaitTime 0.5;
     x := AInput(ai1) + GInput(gi1);
     TPWrite "later " \Num:=x;
