@@ -223,7 +223,8 @@ let check_cmd =
             else Rapid_semantics.Task_check.shared_persistents
                 (List.map (fun (name, modules, (result : Rapid_typing.Check.result), _) ->
                      { Rapid_semantics.Task_check.name; modules; elaboration = result.elaboration }) checked) in
-          let reports = List.concat_map (fun (_, _, _, reports) -> reports) checked @ across in
+          let reports = List.map (Rapid_semantics.Session.at_io_place io)
+              (List.concat_map (fun (_, _, _, reports) -> reports) checked @ across) in
           print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
           if format = Check_output.Text then

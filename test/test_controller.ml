@@ -29,7 +29,8 @@ let stimulus_errors () =
   check "twice" "t.io:2:8: io error: the signal DI1 is declared twice" "signal di1 di\nsignal DI1 do";
   check "name" "t.io:1:8: io error: \"1x\" is not a RAPID identifier (§2.3), so it cannot name a signal" "signal 1x di";
   check "entry" "t.io:1:1: io error: unknown entry \"sig\" (signal or at)" "sig di1 di";
-  check "number" "t.io:2:4: io error: \"soon\" is not a number" "signal di1 di\nat soon di1 1";
+  check "number" "t.io:2:4: io error: \"soon\" is not a decimal number (such as 1, 0.25 or 1e-3)"
+    "signal di1 di\nat soon di1 1";
   Alcotest.(check string) "missing file" "no-such.io:1:1: io error: cannot read the file (no-such.io: No such file or directory)"
     (match Io.read_file "no-such.io" with Error m -> m | Ok _ -> "")
 
@@ -142,12 +143,107 @@ let never_raises () =
           | Ok _ -> true
           | Error m -> String.length m > 5 && String.sub m 0 2 = "f:"))
 
+(* Issue 21, item 3: a number of the file is checked against what it feeds, at its own word
+   (R-8-numbers1); before, 1e300 or 3.5e38 reached the run and ended in an internal error. *)
+let numbers_checked () =
+  let check name expected text = Alcotest.(check string) name expected (error_of text) in
+  let beyond w = Printf.sprintf "%s is beyond the range of num (IEEE 754 single precision, at most \
+                                 3.40282347E+38 in magnitude; §2.13)" w in
+  check "analog initial 1e300" ("t.io:1:13: io error: " ^ beyond "1e300") "signal a ai 1e300";
+  check "analog initial 3.5e38" ("t.io:1:13: io error: " ^ beyond "3.5e38") "signal a ai 3.5e38";
+  check "analog value 1e300" ("t.io:2:8: io error: " ^ beyond "-1e300") "signal a ai\nat 1 a -1e300";
+  check "time 1e300" ("t.io:2:4: io error: " ^ beyond "1e300") "signal a di\nat 1e300 a 1";
+  check "group 1e300" ("t.io:1:13: io error: " ^ beyond "1e300") "signal g gi 1e300";
+  check "group beyond 32 bits"
+    "t.io:2:8: io error: 4294967296 does not fit in the group signal's 32 bits (at most 4294967295)"
+    "signal g gi\nat 1 g 4294967296";
+  List.iter (fun w ->
+      check ("time " ^ w) (Printf.sprintf "t.io:2:4: io error: %S is not a decimal number (such as 1, 0.25 or 1e-3)" w)
+        ("signal a di\nat " ^ w ^ " a 1"))
+    [ "0x10"; "1_0"; "nan"; "inf"; "-inf"; "infinity"; "1e"; "."; "+"; "1e+"; "0b1"; "1.5f"; "_1" ];
+  check "value nan" "t.io:2:8: io error: \"nan\" is not a decimal number (such as 1, 0.25 or 1e-3)"
+    "signal a ai\nat 1 a nan";
+  match parse "signal a ai 3.4e38\nsignal g gi 4294967295\nsignal b ai -0\nat 1e+06 a .5\nat 1E6 a -2.5e-3\n" with
+  | Error m -> Alcotest.fail m
+  | Ok c ->
+      Alcotest.(check (list (float 0.))) "initial values" [ 3.4e38; 4294967295.; 0. ]
+        (List.map (fun (s : Io.signal) -> s.initial) c.signals);
+      Alcotest.(check bool) "-0 is 0" false (Float.sign_bit (List.nth c.signals 2).initial);
+      Alcotest.(check (list (float 0.))) "times" [ 1e6; 1e6 ] (List.map (fun (s : Io.stimulus) -> s.time) c.stimuli)
+
+let eio_numbers () =
+  let check name expected text = Alcotest.(check string) name expected (error_of ("EIO_SIGNAL:\n" ^ text)) in
+  check "group beyond its -DeviceMap, on the continued line"
+    "t.io:3:14: io error: 16 does not fit in the group signal's 4 bits (at most 15)"
+    "  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-3\" \\\n    -Default 16\n";
+  check "-DeviceMap of two ranges" "t.io:2:61: io error: 256 does not fit in the group signal's 8 bits (at most 255)"
+    "  -Name \"g\" -SignalType \"GO\" -DeviceMap \"0-3,8-11\" -Default 256\n";
+  check "analog below -MinLog" "t.io:2:60: io error: -6 is below the signal's -MinLog -5"
+    "  -Name \"b\" -SignalType \"AI\" -MinLog -5 -MaxLog 5 -Default -6\n";
+  check "-Default 1e300" ("t.io:2:39: io error: 1e300 is beyond the range of num (IEEE 754 single precision, at \
+                           most 3.40282347E+38 in magnitude; §2.13)")
+    "  -Name \"b\" -SignalType \"AI\" -Default 1e300\n";
+  check "-DeviceMap wider than 32 bits"
+    "t.io:2:41: io error: -DeviceMap \"0-40\" maps 41 bits: a group signal has at most 32"
+    "  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-40\"\n";
+  match parse "EIO_SIGNAL:\n  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-3\" -Default 15\n\
+               \  -Name \"b\" -SignalType \"AI\" -MinLog -5 -MaxLog 5 -Default -4.5\n" with
+  | Error m -> Alcotest.fail m
+  | Ok c ->
+      Alcotest.(check (list (float 0.))) "defaults" [ 15.; -4.5 ]
+        (List.map (fun (s : Io.signal) -> s.initial) c.signals)
+
+(* A UTF-8 byte order mark first is not an entry; the columns of line 1 count after it. *)
+let byte_order_mark () =
+  (match parse "\xEF\xBB\xBFsignal di1 di\nat 1 di1 1\n" with
+   | Ok c -> Alcotest.(check (list string)) "signals" [ "di1" ] (List.map (fun (s : Io.signal) -> s.name) c.signals)
+   | Error m -> Alcotest.fail m);
+  Alcotest.(check string) "column after the mark"
+    "t.io:1:12: io error: unknown signal type \"dx\" (di, do, ai, ao, gi or go)"
+    (error_of "\xEF\xBB\xBFsignal di1 dx")
+
+(* A signal named after an installed object: the checker's error at the stimulus file's line
+   and column, not in the generated module of the signals. *)
+let installed_name_clash () =
+  match parse "# the cell\nsignal di1 di\n  signal tool0 do\n" with
+  | Error m -> Alcotest.fail m
+  | Ok io -> (
+      match Rapid_semantics.Session.load_modules ~io [] with
+      | Error (Static reports) ->
+          let errors = List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports in
+          Alcotest.(check (list string)) "at the stimulus line"
+            [ "t.io:3:10: semantic error: the installed object tool0 is declared twice (§13)" ]
+            (List.map Rapid_typing.Report.headline errors)
+      | Error _ -> Alcotest.fail "another failure"
+      | Ok _ -> Alcotest.fail "accepted")
+
+(* Issue 21, item 9: declaring n signals takes time linear in n. 100,000 signals took minutes
+   when every pair was compared (Io_config's duplicate check, Session.connect_signals). *)
+let many_signals () =
+  let n = 100_000 in
+  let text = String.concat "" (List.init n (fun i -> Printf.sprintf "signal s%d di\n" i))
+             ^ String.concat "" (List.init (n / 10) (fun i -> Printf.sprintf "at %d s%d 1\n" i (i * 10))) in
+  let t0 = Sys.time () in
+  let io = match parse text with Ok io -> io | Error m -> Alcotest.fail m in
+  let read = Sys.time () -. t0 in
+  Alcotest.(check int) "signals" n (List.length io.signals);
+  (match Rapid_semantics.Session.load_modules ~io [] with
+   | Ok _ -> () | Error _ -> Alcotest.fail "refused");
+  let loaded = Sys.time () -. t0 in
+  Alcotest.(check bool) (Printf.sprintf "read in %.1f s (under 5 s)" read) true (read < 5.);
+  Alcotest.(check bool) (Printf.sprintf "read, checked and connected in %.1f s (under 40 s)" loaded) true (loaded < 40.)
+
 let suite =
   ("controller", [
       Alcotest.test_case "the stimulus file" `Quick stimulus_file;
       Alcotest.test_case "errors in the stimulus file: FILE:LINE:COL" `Quick stimulus_errors;
       Alcotest.test_case "EIO.cfg: EIO_SIGNAL entries" `Quick eio_file;
       Alcotest.test_case "the io reader never raises" `Quick never_raises;
+      Alcotest.test_case "numbers checked against what they feed (R-8-numbers1)" `Quick numbers_checked;
+      Alcotest.test_case "EIO.cfg numbers: -DeviceMap, -MinLog/-MaxLog, at the word" `Quick eio_numbers;
+      Alcotest.test_case "a UTF-8 byte order mark" `Quick byte_order_mark;
+      Alcotest.test_case "a signal named after an installed object, at its line" `Quick installed_name_clash;
+      Alcotest.test_case "100,000 signals in linear time" `Quick many_signals;
       Alcotest.test_case "the clock counts microseconds exactly" `Quick exact_clock;
       Alcotest.test_case "timed events in order" `Quick events_in_order;
       Alcotest.test_case "the interrupt queue and its capacity" `Quick queue;

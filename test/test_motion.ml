@@ -146,6 +146,55 @@ let test_description () =
       let q' = ok "inverse" (Kinematics.inverse k (Kinematics.forward k q) (With_conf (Kinematics.conf_of k q))) in
       Array.iteri (fun i a -> close (Printf.sprintf "axis %d" (i + 1)) q'.(i) a) q
 
+(* Issue 21, item 3: the numbers of a description within num and within the model's ranges
+   (R-2.13-numbers2), at the offending word; before, a length of 1e300 reached the run and
+   ended in an internal error. *)
+let test_description_numbers () =
+  let replace_line n l =
+    String.concat "\n" (List.mapi (fun i x -> if i = n then l else x) (String.split_on_char '\n' Robot.irb120_text)) in
+  let err text expected =
+    match Robot.parse ~file:"r.robot" text with
+    | Ok _ -> Alcotest.failf "accepted, expected %s" expected
+    | Error e -> Alcotest.(check string) expected expected (Robot.error_to_string e) in
+  let axis2 a alpha d offset min max speed =
+    replace_line 4 (Printf.sprintf "axis 2 %s %s %s %s %s %s %s" a alpha d offset min max speed) in
+  let pre = "r.robot:5:" and model = ", the range of the model (doc/motion.md)" in
+  err (axis2 "1e300" "0" "0" "-90" "-110" "110" "250")
+    (pre ^ "8: robot description error: axis 2 a: 1e300 is beyond the range of num (at most 3.40282347E+38, §2.13)");
+  err (axis2 "0x10" "0" "0" "-90" "-110" "110" "250")
+    (pre ^ "8: robot description error: axis 2 a: expected a number, found \"0x10\"");
+  err (axis2 "1_0" "0" "0" "-90" "-110" "110" "250")
+    (pre ^ "8: robot description error: axis 2 a: expected a number, found \"1_0\"");
+  err (axis2 "2e5" "0" "0" "-90" "-110" "110" "250")
+    (pre ^ "8: robot description error: axis 2 a: 2e5 is outside -100000 .. 100000 mm" ^ model);
+  err (axis2 "1e-300" "0" "0" "-90" "-110" "110" "250")
+    (pre ^ "8: robot description error: axis 2 a: 1e-300 is below 0.001 mm, the model's resolution "
+     ^ "(0 or at least 0.001)");
+  err (axis2 "270" "0" "0" "400" "-110" "110" "250")
+    (pre ^ "16: robot description error: axis 2 offset: 400 is outside -360 .. 360 degrees" ^ model);
+  err (axis2 "270" "0" "0" "-90" "-1e6" "110" "250")
+    (pre ^ "20: robot description error: axis 2 min: -1e6 is outside -100000 .. 100000 degrees" ^ model);
+  err (axis2 "270" "0" "0" "-90" "-110" "110" "1e-300")
+    (pre ^ "29: robot description error: axis 2 speed: 1e-300 is outside 0.001 .. 100000 degrees/s" ^ model);
+  err (axis2 "270" "0" "0" "-90" "-110" "110" "nan")
+    (pre ^ "29: robot description error: axis 2 speed: expected a number, found \"nan\"");
+  err (replace_line 4 "axis 0x2 270 0 0 -90 -110 110 250")
+    (pre ^ "6: robot description error: axis number must be 1 to 6, found \"0x2\"");
+  err (replace_line 9 "max_tcp_speed 1e300")
+    ("r.robot:10:15: robot description error: max_tcp_speed: 1e300 is beyond the range of num "
+     ^ "(at most 3.40282347E+38, §2.13)");
+  err (replace_line 9 "max_tcp_speed 3e38")
+    ("r.robot:10:15: robot description error: max_tcp_speed: 3e38 is outside 0.001 .. 100000 mm/s" ^ model);
+  err (Robot.irb120_text ^ "external eax_a linear 0 1e300 100\n")
+    ("r.robot:11:25: robot description error: eax_a max: 1e300 is beyond the range of num "
+     ^ "(at most 3.40282347E+38, §2.13)");
+  err (Robot.irb120_text ^ "external eax_a linear 0 1000 100 track 1e30 0 0\n")
+    ("r.robot:11:40: robot description error: eax_a track: 1e30 is outside -100000 .. 100000 (a direction)" ^ model);
+  (* the largest figures the model takes, and a byte order mark first, are accepted *)
+  match Robot.parse ~file:"r.robot" ("\xEF\xBB\xBF" ^ replace_line 9 "max_tcp_speed 100000") with
+  | Ok r -> close "max_tcp_speed" r.max_tcp_speed 100000.
+  | Error e -> Alcotest.fail (Robot.error_to_string e)
+
 (* ------------------------------------------------------------------ data and frames *)
 
 let test_data () =
@@ -572,6 +621,7 @@ let test_output () =
 let suite =
   ( "motion",
     [ Alcotest.test_case "K-home: the IRB 120's home pose" `Quick test_home;
+      Alcotest.test_case "the robot description's numbers (R-2.13-numbers2)" `Quick test_description_numbers;
       Alcotest.test_case "K-inverse: FK then IK, random" `Quick test_fk_ik;
       Alcotest.test_case "K-errors: reach and axis range" `Quick test_ik_errors;
       Alcotest.test_case "the robot description and its errors" `Quick test_description;

@@ -8,12 +8,16 @@ type signal = {
   name : string;
   kind : signal_type;
   initial : float;                  (** the value at time 0 *)
+  line : int;                       (** where the file names it, so that the checker's errors about
+                                        the name point there; 0 for a signal no file declares *)
+  col : int;
 }
 
 (** At [time] seconds of virtual time, the input [signal] takes [value]. *)
 type stimulus = { time : float; signal : string; value : float }
 
 type t = {
+  file : string;                    (** the file read; [""] for none *)
   signals : signal list;            (** in the order of the file *)
   stimuli : stimulus list;          (** in the order of the file *)
   collisions : float list;          (** [at TIME collision]: the robot collides (doc/motion.md) *)
@@ -23,7 +27,10 @@ val empty : t
 
 val parse : file:string -> string -> (t, string) result
 (** The text of a stimulus file or of an EIO.cfg file. An error is one line,
-    [FILE:LINE:COL: io error: MESSAGE]. *)
+    [FILE:LINE:COL: io error: MESSAGE]. Every number is decimal and within num's range (§2.13),
+    and fits what it feeds: a digital value 0 or 1, a group value the group's bits (32, or an
+    EIO.cfg's -DeviceMap), an analog value an EIO.cfg's -MinLog .. -MaxLog, a time not negative
+    and in order (doc/controller.md; R-8-numbers1). A UTF-8 byte order mark first is skipped. *)
 
 val read_file : string -> (t, string) result
 

@@ -47,9 +47,44 @@ let words line_no line =
   go 0 []
 
 let number line (col, w) what =
-  match float_of_string_opt w with
-  | Some f when Float.is_finite f && w <> "" && (w.[0] = '-' || w.[0] = '+' || w.[0] = '.' || (w.[0] >= '0' && w.[0] <= '9')) -> f
-  | _ -> raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what w))
+  match Rapid_syntax.Decimal.read w with
+  | Ok f -> f
+  | Error `Not_decimal ->
+      raise (Bad (line, col, Printf.sprintf "%s: expected a number, found %S" what (Rapid_syntax.Decimal.shown w)))
+  | Error `Beyond_num ->
+      raise (Bad (line, col, Printf.sprintf "%s: %s is beyond the range of num (at most 3.40282347E+38, §2.13)"
+                               what (Rapid_syntax.Decimal.shown w)))
+
+(* R-2.13-numbers2: what the model takes. Lengths up to 100 m, a non-zero one from 1 µm (the
+   inverse kinematics divides by them); twists and joint offsets within a turn either way;
+   axis limits within 100,000 degrees (axis 6 of ABB's arms turns up to ±242 revolutions) or
+   100 m; speeds from 0.001 to 100,000 units a second (a slower axis would take centuries to
+   move, beyond the clock of R-8-j). Every figure of the model then stays far inside num. *)
+let max_length = 100_000.
+let min_length = 0.001
+let max_turn = 360.
+let max_limit = 100_000.
+let min_speed = 0.001
+let max_speed = 100_000.
+
+let within line (col, w) what ~low ~high ~unit v =
+  if v < low || v > high then
+    raise (Bad (line, col, Printf.sprintf "%s: %s is outside %g .. %g %s, the range of the model (doc/motion.md)"
+                             what (Rapid_syntax.Decimal.shown w) low high unit))
+
+let length line cw what =
+  let v = number line cw what in
+  within line cw what ~low:(-. max_length) ~high:max_length ~unit:"mm" v;
+  if v <> 0. && Float.abs v < min_length then
+    raise (Bad (line, fst cw, Printf.sprintf "%s: %s is below 0.001 mm, the model's resolution (0 or at least 0.001)"
+                                what (Rapid_syntax.Decimal.shown (snd cw))));
+  v
+
+(* A speed: positive (its own message, the common mistake), then within the model's range. *)
+let speed line cw what ~unit ~positive v =
+  if v <= 0. then raise (Bad (line, fst cw, positive));
+  within line cw what ~low:min_speed ~high:max_speed ~unit v;
+  v
 
 (* external NAME linear|rotating MIN MAX SPEED [track DX DY DZ] (doc/motion.md, law X-desc). *)
 let external_axis ln known rest =
@@ -74,10 +109,15 @@ let external_axis ln known rest =
         raise (Bad (ln, (match List.rev rest with (c, _) :: _ -> c | [] -> nc),
                     Printf.sprintf "%s: expected 3 numbers (min max speed), found %d" n (List.length nums)));
       let v = List.map2 (fun f w -> number ln w (Printf.sprintf "%s %s" n f)) fields nums in
-      let min = List.nth v 0 and max = List.nth v 1 and speed = List.nth v 2 in
+      let unit = if kind = Ext_axes.Linear then "mm" else "degrees" in
+      List.iteri (fun i w -> if i < 2 then
+                     within ln w (Printf.sprintf "%s %s" n (List.nth fields i))
+                       ~low:(-. max_limit) ~high:max_limit ~unit (List.nth v i)) nums;
+      let min = List.nth v 0 and max = List.nth v 1 in
       if min >= max then
         raise (Bad (ln, fst (List.nth nums 0), Printf.sprintf "%s: range min %g is not below max %g" n min max));
-      if speed <= 0. then raise (Bad (ln, fst (List.nth nums 2), Printf.sprintf "%s: speed must be positive" n));
+      let speed = speed ln (List.nth nums 2) (n ^ " speed") ~unit:(unit ^ "/s")
+          ~positive:(Printf.sprintf "%s: speed must be positive" n) (List.nth v 2) in
       let track = match track with
         | None -> None
         | Some (tc, _) when kind = Ext_axes.Rotating ->
@@ -85,7 +125,9 @@ let external_axis ln known rest =
         | Some (tc, dir) ->
             if List.length dir <> 3 then
               raise (Bad (ln, tc, Printf.sprintf "%s: track: expected 3 numbers (a direction DX DY DZ), found %d" n (List.length dir)));
-            let d = List.map (fun w -> number ln w (n ^ " track")) dir in
+            let d = List.map (fun w ->
+                let v = number ln w (n ^ " track") in
+                within ln w (n ^ " track") ~low:(-. max_length) ~high:max_length ~unit:"(a direction)" v; v) dir in
             let p = { Geom.x = List.nth d 0; y = List.nth d 1; z = List.nth d 2 } in
             let l = Geom.norm p in
             if not (l > 0.) then raise (Bad (ln, tc, Printf.sprintf "%s: track: the direction is zero" n));
@@ -116,6 +158,9 @@ let parse ~file text =
   let externals = ref [] in
   let fail line col message = Error { file; line; col; message } in
   try
+    (* a UTF-8 byte order mark, which some editors write first, is not part of line 1 *)
+    let text = if String.length text >= 3 && String.sub text 0 3 = "\xEF\xBB\xBF"
+      then String.sub text 3 (String.length text - 3) else text in
     let lines = String.split_on_char '\n' text in
     List.iteri (fun i line ->
         let ln = i + 1 in
@@ -127,14 +172,15 @@ let parse ~file text =
             name := Some (String.sub w 1 (String.length w - 1))
         | (_, "name") :: _ -> raise (Bad (ln, 1, "name: expected one quoted name"))
         | [ (_, "max_tcp_speed"); v ] ->
-            let s = number ln v "max_tcp_speed" in
-            if s <= 0. then raise (Bad (ln, fst v, "max_tcp_speed must be positive"));
+            let s = speed ln v "max_tcp_speed" ~unit:"mm/s" ~positive:"max_tcp_speed must be positive"
+                (number ln v "max_tcp_speed") in
             if !tcp <> None then raise (Bad (ln, 1, "max_tcp_speed given twice"));
             tcp := Some s
         | (_, "max_tcp_speed") :: _ -> raise (Bad (ln, 1, "max_tcp_speed: expected one number (mm/s)"))
         | (_, "axis") :: (nc, n) :: rest ->
-            let k = match int_of_string_opt n with
-              | Some k when k >= 1 && k <= 6 -> k
+            (* int_of_string would take 0x1 and 1_ too *)
+            let k = match n with
+              | "1" | "2" | "3" | "4" | "5" | "6" -> int_of_string n
               | _ -> raise (Bad (ln, nc, Printf.sprintf "axis number must be 1 to 6, found %S" n)) in
             if axes.(k - 1) <> None then raise (Bad (ln, nc, Printf.sprintf "axis %d given twice" k));
             let fields = [ "a"; "alpha"; "d"; "offset"; "min"; "max"; "speed" ] in
@@ -143,17 +189,26 @@ let parse ~file text =
                           Printf.sprintf "axis %d: expected 7 numbers (a alpha d offset min max speed), found %d"
                             k (List.length rest)));
             let v = List.map2 (fun f w -> number ln w (Printf.sprintf "axis %d %s" k f)) fields rest in
-            let get i = List.nth v i in
-            let ax = { a = get 0; alpha = get 1; d = get 2; offset = get 3; min = get 4; max = get 5; speed = get 6 } in
+            let get i = List.nth v i and word i = List.nth rest i in
+            let what i = Printf.sprintf "axis %d %s" k (List.nth fields i) in
+            let len i = length ln (word i) (what i) in
+            let turn i = within ln (word i) (what i) ~low:(-. max_turn) ~high:max_turn ~unit:"degrees" (get i); get i in
+            let limit i =
+              within ln (word i) (what i) ~low:(-. max_limit) ~high:max_limit ~unit:"degrees" (get i); get i in
+            (* in the order of the line, so that the first bad word is the one reported *)
+            let a = len 0 in let alpha = turn 1 in let d = len 2 in let offset = turn 3 in
+            let min = limit 4 in let max = limit 5 in
+            let ax = { a; alpha; d; offset; min; max; speed = get 6 } in
             if ax.min >= ax.max then
               raise (Bad (ln, fst (List.nth rest 4), Printf.sprintf "axis %d: range min %g is not below max %g" k ax.min ax.max));
-            if ax.speed <= 0. then
-              raise (Bad (ln, fst (List.nth rest 6), Printf.sprintf "axis %d: speed must be positive" k));
+            let ax = { ax with speed = speed ln (word 6) (what 6) ~unit:"degrees/s"
+                                   ~positive:(Printf.sprintf "axis %d: speed must be positive" k) ax.speed } in
             axes.(k - 1) <- Some ax;
             axis_line.(k - 1) <- ln
         | (_, "external") :: rest -> externals := !externals @ [ external_axis ln !externals rest ]
         | (c, w) :: _ ->
-            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)" w)))
+            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)"
+                               (Rapid_syntax.Decimal.shown w))))
       lines;
     let last = List.length lines in
     let missing = ref None in

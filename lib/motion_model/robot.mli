@@ -34,8 +34,9 @@ val error_to_string : error -> string
 
 val parse : file:string -> string -> (t, error) result
 (** Reads a description. Refuses what the model cannot move: a missing or repeated axis, an
-    empty or inverted range, a speed that is not positive, and a kinematic structure other than
-    the one the analytic inverse kinematics solves (see {!Kinematics}). *)
+    empty or inverted range, a speed that is not positive, a number that is not decimal or is
+    beyond num or the model's ranges (doc/rulings.md R-2.13-numbers2), and a kinematic structure
+    other than the one the analytic inverse kinematics solves (see {!Kinematics}). *)
 
 val load : string -> (t, error) result
 (** [parse] of a file's contents; an unreadable file is an error at 1:1. *)

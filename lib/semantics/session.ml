@@ -13,6 +13,8 @@ module Io = Rapid_controller.Io_config
    (§2.16): a generated installed module declares them, so that the checker knows them. *)
 let signal_module_name = "Installed_signals"
 
+let signal_file_name = "the signals of the I/O configuration"
+
 let signal_module (io : Io.t) =
   if io.signals = [] then Ok None
   else
@@ -22,7 +24,7 @@ let signal_module (io : Io.t) =
         Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
     Buffer.add_string text "ENDMODULE\n";
     match Parse.parse_string ~options:{ Parse.default_options with installed = true }
-            ~name:"the signals of the I/O configuration" (Buffer.contents text) with
+            ~name:signal_file_name (Buffer.contents text) with
     | Ok m -> Ok (Some m)
     | Error d -> Error d
 
@@ -35,19 +37,21 @@ let installed ?(io = Io.empty) () =
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)
 let connect_signals (io : Io.t) (program : Ir.program) =
-  (* without lowered copies: every installed data object is compared, for every program *)
+  (* a table of the signals' names (letter case aside, §2.3), so that connecting n signals
+     takes n look-ups, not n * n comparisons *)
+  let ids = Hashtbl.create (List.length io.signals) in
+  List.iteri (fun i (s : Io.signal) ->
+      let key = String.lowercase_ascii s.name in
+      if not (Hashtbl.mem ids key) then Hashtbl.replace ids key (i + 1, s)) io.signals;
   let same = Rapid_typing.Types.same_name in
   let globals = Array.map (fun (g : Ir.global) ->
       if not (same g.g_module signal_module_name) then g
       else
-        let rec find i = function
-          | [] -> g
-          | (s : Io.signal) :: rest ->
-              if same s.name g.g_name then
-                let handle = Value.Handle (Value.make_handle ~kind:(Io.type_name s.kind) i) in
-                { g with g_init = Init_expr { e = Literal handle; at = g.g_at } }
-              else find (i + 1) rest in
-        find 1 io.signals) program.globals in
+        match Hashtbl.find_opt ids (String.lowercase_ascii g.g_name) with
+        | None -> g
+        | Some (i, s) ->
+            let handle = Value.Handle (Value.make_handle ~kind:(Io.type_name s.kind) i) in
+            { g with g_init = Init_expr { e = Literal handle; at = g.g_at } }) program.globals in
   { program with globals }
 
 (* The program of a checked task, its signals connected and the initial values of its data
@@ -55,12 +59,32 @@ let connect_signals (io : Io.t) (program : Ir.program) =
 let lower ?(io = Io.empty) ~installed ~modules (result : Rapid_typing.Check.result) =
   Initial_values.evaluate (connect_signals io (Lower.program ~installed ~modules result.elaboration))
 
+(* The checker's reports on the generated module of the signals (a signal named after an
+   installed object, §13) belong where the I/O configuration names the signal: line k + 1 of
+   that module declares its k-th signal. The place becomes a region of a file of the
+   configuration's name whose lines 1 .. L-1 are one character long, so that its line L,
+   column C is the offset L - 1 + C - 1. *)
+let at_io_place (io : Io.t) =
+  let signals = lazy (Array.of_list io.signals) in
+  fun (r : Rapid_typing.Report.t) ->
+    match Source.file_of r.region with
+    | Some f when Source.name f = signal_file_name ->
+        let signals = Lazy.force signals in
+        let k = (Source.start r.region).line - 2 in
+        if k < 0 || k >= Array.length signals || signals.(k).line < 1 then r
+        else
+          let s = signals.(k) in
+          let file = Source.register ~name:io.file ~line_starts:(Array.init s.line (fun i -> i)) in
+          let start = s.line - 1 + s.col - 1 in
+          { r with region = Source.region file start (start + String.length s.name) }
+    | _ -> r
+
 let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
   match installed ~io () with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->
       let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
-      if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
+      if Rapid_typing.Check.errors result <> [] then Error (Static (List.map (at_io_place io) result.reports))
       else
         match lower ~io ~installed ~modules result with
         | Ok program ->

@@ -36,6 +36,11 @@ val lower :
     initial values of its data computed before the run (§3.2, doc/rulings.md R-3.2-a); [Error]
     holds the semantic errors of initial values that cannot be computed. *)
 
+val at_io_place : Rapid_controller.Io_config.t -> Rapid_typing.Report.t -> Rapid_typing.Report.t
+(** A report on the generated module of the signals (a signal named after an installed object,
+    §13) moved to where the I/O configuration names that signal; any other report as it is.
+    [load] and [load_modules] apply it. *)
+
 val connect_signals : Rapid_controller.Io_config.t -> Ir.program -> Ir.program
 (** Each signal object of the generated module gets the handle of its signal in the run's
     world. *)

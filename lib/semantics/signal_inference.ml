@@ -157,7 +157,7 @@ let infer ~installed modules =
 let extend (io : Io.t) inferred =
   let have n = List.exists (fun (s : Io.signal) -> lower s.name = lower n) io.signals in
   let extra = List.filter_map (fun (name, kind) ->
-      if have name then None else Some { Io.name; kind; initial = 0. }) inferred in
+      if have name then None else Some { Io.name; kind; initial = 0.; line = 0; col = 0 }) inferred in
   { io with signals = io.signals @ extra }
 
 let for_run ~allow_unknown ~stub_unmodelled modules io =
