@@ -123,6 +123,36 @@ let forget_same () =
   let pieces = List.length (MM.Planner.pieces forget) in
   if pieces > 50 then Alcotest.failf "%d pieces kept after forgetting" pieces
 
+let count_sub s w =
+  let n = String.length w in
+  let rec go i acc = if i + n > String.length s then acc else go (i + 1) (if String.sub s i n = w then acc + 1 else acc) in
+  go 0 0
+
+(* A point passed again and again is named once in each view (stacking its name at every pass
+   took time cubic in the passes); a long path's CSV has at most Path_output.csv_max_rows rows. *)
+let output_bounded () =
+  let kin = MM.Kinematics.create MM.Robot.irb120 in
+  let p = MM.Planner.create ~joints:[| 0.; 20.; 10.; 0.; 60.; 0. |] kin in
+  let rt y = { MM.Frames.pose = { trans = { x = 350.; y; z = 300. }; rot = { q1 = 0.; q2 = 0.; q3 = 1.; q4 = 0. } };
+               conf = { cf1 = 0; cf4 = 0; cf6 = 0; cfx = 0 } } in
+  let find t n = Option.get (MM.Motion_data.find t n) in
+  (MM.Planner.settings p).conf_l <- false;
+  let now = ref 0. in
+  for i = 0 to 3999 do
+    let m = MM.Planner.move ~label:(if i mod 2 = 0 then "pA" else "pB") (find MM.Motion_data.speeddata "v1000")
+        (find MM.Motion_data.zonedata "fine") (Linear (rt (if i mod 2 = 0 then 100. else -100.))) in
+    match MM.Planner.plan p ~now:!now m with
+    | Ok r -> now := r.ready_time
+    | Error e -> Alcotest.fail (MM.Motion_error.name e)
+  done;
+  let svg = MM.Path_output.path_svg p in
+  Alcotest.(check int) "pA named once in each view" 2 (count_sub svg ">pA<");
+  let m = MM.Planner.move ~t:1e5 (find MM.Motion_data.speeddata "v1000") (find MM.Motion_data.zonedata "fine")
+      (Linear (rt 0.)) in
+  (match MM.Planner.plan p ~now:!now m with Ok _ -> () | Error e -> Alcotest.fail (MM.Motion_error.name e));
+  let rows = count_sub (MM.Path_output.csv p) "\n" in
+  if rows > MM.Path_output.csv_max_rows + 2 then Alcotest.failf "%d rows" rows
+
 let suite =
   ( "motion memory",
     [ Alcotest.test_case "200,000 fine moves: the live heap stays bounded" `Quick
@@ -130,4 +160,5 @@ let suite =
       Alcotest.test_case "z200 moves of 1 mm at vmax: the live heap stays bounded" `Quick
         (bounded ~zone:"z200" ~speed:"vmax" ~p2:"-249" ~moves:20_000);
       Alcotest.test_case "the history with samples is refused past its budget" `Quick history_budget;
-      Alcotest.test_case "forgetting changes no answer from the present on" `Quick forget_same ] )
+      Alcotest.test_case "forgetting changes no answer from the present on" `Quick forget_same;
+      Alcotest.test_case "a point passed often is named once; a long path's CSV is bounded" `Quick output_bounded ] )

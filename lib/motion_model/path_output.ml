@@ -8,6 +8,8 @@ let end_time p =
   else List.fold_left (fun acc (i : Planner.piece_info) ->
       if Float.is_finite i.t_to then Float.max acc i.t_to else acc) 0. (Planner.pieces p)
 
+let csv_max_rows = 1_000_000
+
 let csv ?(step = 0.01) p =
   let b = Buffer.create 4096 in
   (* A robot with external axes: a column for each, named as extjoint names it (law X-desc). *)
@@ -27,7 +29,10 @@ let csv ?(step = 0.01) p =
      | Ok e -> List.iter (fun (a : Ext_axes.axis) -> buf_printf b ",%.4f" e.(a.index)) ext
      | Error _ -> List.iter (fun _ -> Buffer.add_char b ',') ext);
     Buffer.add_char b '\n' in
-  let n = int_of_float (Float.floor (last /. step)) in
+  (* At most [csv_max_rows] rows (doc/motion.md, O-output): a longer path is sampled at a
+     coarser step, so that the file, and the memory that builds it, stay bounded. *)
+  let step = if Float.is_finite last && last /. step > float_of_int csv_max_rows then last /. float_of_int csv_max_rows else step in
+  let n = if Float.is_finite last then int_of_float (Float.floor (last /. step)) else 0 in
   for i = 0 to n do row (float_of_int i *. step) done;
   if float_of_int n *. step < last then row last;
   Buffer.contents b
@@ -106,7 +111,7 @@ let path_svg ?(title = "TCP path") p =
     buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"#333\">start</text>\n"
       (px start -. 4.) (py start -. 4.) (px start +. 7.) (py start +. 14.);
     (* Labels of points that fall together (a vertical move seen from above) are stacked. *)
-    let placed = ref [] in
+    let placed = ref [] and named = Hashtbl.create 64 in
     let place x y w =
       let rec go y = if List.exists (fun (x', y', w') -> Float.abs (y -. y') < 13. && x < x' +. w' && x' < x +. w) !placed
         then go (y +. 14.) else y in
@@ -116,7 +121,11 @@ let path_svg ?(title = "TCP path") p =
         let x = px sg.target and y = py sg.target in
         if sg.seg_fine then buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"#c0392b\"/>\n" x y
         else buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"white\" stroke=\"#c0392b\" stroke-width=\"1.5\"/>\n" x y;
-        if sg.seg_label <> "" then
+        (* A point passed again with its name (a loop) is named once: stacking the same name
+           at every pass was quadratic in the passes (and cubic to place). *)
+        let key = (Float.round (x *. 10.), Float.round (y *. 10.), sg.seg_label) in
+        if sg.seg_label <> "" && not (Hashtbl.mem named key) then
+          let () = Hashtbl.replace named key () in
           let ly = place (x +. 6.) (y -. 6.) (7. *. float_of_int (String.length sg.seg_label)) in
           buf_printf b "<text x=\"%.1f\" y=\"%.1f\" fill=\"#c0392b\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">%s</text>\n"
             (x +. 6.) ly (esc sg.seg_label)) segs;
