@@ -173,6 +173,9 @@ end
 
 (* ------------------------------------------------------------------ the planner *)
 
+(* A pause of the path, real time, and how long the pauses before it lasted. *)
+type pause = { ts : float; te : float; before : float }
+
 (* One path level: its queue, and its own clock of StopMove pauses. *)
 type level = {
   start_joints : float array;
@@ -181,7 +184,8 @@ type level = {
   mutable end_flange : pose;
   mutable end_time : float;  (* path time from which the robot stands at the end of the queue *)
   mutable open_seg : (segment * int) option;  (* the last segment if fly-by: its Part's index *)
-  mutable pauses : (float * float) list;  (* StopMove … StartMove, real time, oldest first *)
+  pauses : pause Vec.t;  (* StopMove … StartMove, real time, oldest first *)
+  mutable paused_before : float;  (* how long the pauses forgotten lasted *)
   mutable stopped_at : float option;
 }
 
@@ -200,7 +204,7 @@ type t = {
 
 let new_level kin joints ~from =
   { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
-    end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = [];
+    end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = Vec.create (); paused_before = 0.;
     stopped_at = None }
 
 let create ?(joints = Array.make 6 0.) kin =
@@ -214,13 +218,27 @@ let settings t = t.settings
 let kinematics t = t.kin
 let stopped t = t.cur.stopped_at <> None
 
+(* The last pause [starts] puts before [x], by bisection (the pauses are in time order), or -1. *)
+let last_pause (l : level) starts x =
+  let lo = ref (Vec.first l.pauses) and hi = ref (Vec.stop l.pauses - 1) and best = ref (-1) in
+  while !lo <= !hi do
+    let mid = (!lo + !hi) / 2 in
+    if starts (Vec.get l.pauses mid) < x then (best := mid; lo := mid + 1) else hi := mid - 1
+  done;
+  !best
+
 (* Virtual time less the time the robot stood by StopMove: the time the path runs on. *)
 let path_time (l : level) real =
-  let p = List.fold_left (fun acc (ts, te) -> acc -. Float.max 0. (Float.min real te -. ts)) real l.pauses in
+  let p = match last_pause l (fun pz -> pz.ts) real with
+    | -1 -> real -. l.paused_before
+    | k -> let pz = Vec.get l.pauses k in real -. pz.before -. Float.max 0. (Float.min real pz.te -. pz.ts) in
   match l.stopped_at with Some ts when real > ts -> p -. (real -. ts) | _ -> p
 
 let real_time (l : level) path =
-  let r = List.fold_left (fun r (ts, te) -> if path > path_time l ts then r +. (te -. ts) else r) path l.pauses in
+  (* A pause begins at path time ts - before; a later path time comes after all of it. *)
+  let r = match last_pause l (fun pz -> pz.ts -. pz.before) path with
+    | -1 -> path +. l.paused_before
+    | k -> let pz = Vec.get l.pauses k in path +. pz.before +. (pz.te -. pz.ts) in
   match l.stopped_at with
   | Some ts when path > path_time l ts +. 1e-12 -> infinity
   | _ -> r
@@ -526,7 +544,13 @@ let stop t ~at = if t.cur.stopped_at = None then t.cur.stopped_at <- Some at
 
 let start t ~at =
   match t.cur.stopped_at with
-  | Some ts -> t.cur.pauses <- t.cur.pauses @ [ (ts, Float.max ts at) ]; t.cur.stopped_at <- None
+  | Some ts ->
+      let before = match Vec.stop t.cur.pauses with
+        | 0 -> 0.
+        | n when n = Vec.first t.cur.pauses -> t.cur.paused_before
+        | n -> let pz = Vec.get t.cur.pauses (n - 1) in pz.before +. (pz.te -. pz.ts) in
+      Vec.push t.cur.pauses { ts; te = Float.max ts at; before };
+      t.cur.stopped_at <- None
   | None -> ()
 
 let clear t ~at =
@@ -708,9 +732,12 @@ let forget t ~before ~keep =
       end
     end in
   drop_moves ();
-  let ended, later = List.partition (fun (_, te) -> te < before) l.pauses in
-  match List.rev ended with
-  | (_, last) :: _ :: _ ->
-      let d = List.fold_left (fun acc (ts, te) -> acc +. (te -. ts)) 0. ended in
-      l.pauses <- (last -. d, last) :: later
-  | _ -> ()
+  let rec drop_pauses () =
+    let k = Vec.first l.pauses in
+    if k < Vec.stop l.pauses && (Vec.get l.pauses k).te < before then begin
+      let pz = Vec.get l.pauses k in
+      l.paused_before <- pz.before +. (pz.te -. pz.ts);
+      Vec.forget_before l.pauses (k + 1);
+      drop_pauses ()
+    end in
+  drop_pauses ()
