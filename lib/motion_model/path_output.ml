@@ -64,8 +64,9 @@ let tick span =
 let path_svg ?(title = "TCP path") p =
   let runs = sampled p in
   let segs = Planner.segments p in
-  let all = List.concat_map snd runs @ List.map (fun (s : Planner.segment_info) -> s.target) segs
-            @ [ (Planner.pose_at p 0.).trans ] in
+  (* For the ranges only, in no order: [@] and [List.map] overflowed the stack on long paths. *)
+  let all = List.rev_append (List.rev_map (fun (s : Planner.segment_info) -> s.target) segs)
+      ((Planner.pose_at p 0.).trans :: List.concat_map snd runs) in
   let range f = List.fold_left (fun (lo, hi) q -> (Float.min lo (f q), Float.max hi (f q))) (infinity, neg_infinity) all in
   let pad (lo, hi) = let m = Float.max 10. ((hi -. lo) *. 0.08) in (lo -. m, hi +. m) in
   let xr = pad (range (fun q -> q.x)) and yr = pad (range (fun q -> q.y)) and zr = pad (range (fun q -> q.z)) in
@@ -174,9 +175,17 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
       if label <> "" && x1 -. x0 > 7. *. float_of_int (String.length label) then
         buf_printf b "<text x=\"%.1f\" y=\"74\" text-anchor=\"middle\" fill=\"white\">%s</text>\n" ((x0 +. x1) /. 2.) (esc label))
     pieces;
+  (* Each move's own piece and the corner after it, found once (a search of the pieces for every
+     move was quadratic in the moves); the first, as a search from the start finds. *)
+  let own_piece = Hashtbl.create 64 and corner_after = Hashtbl.create 64 in
+  List.iter (fun (i : Planner.piece_info) ->
+      match i.kind with
+      | Planner.Segment id -> if not (Hashtbl.mem own_piece id) then Hashtbl.replace own_piece id i
+      | Planner.Corner (a, _) -> if not (Hashtbl.mem corner_after a) then Hashtbl.replace corner_after a i
+      | Planner.Still -> ()) pieces;
   List.iter (fun (s : Planner.segment_info) ->
       if s.seg_fine then
-        match List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces with
+        match Hashtbl.find_opt own_piece s.seg_id with
         | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"48\" x2=\"%.1f\" y2=\"88\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n"
                       (sx i.t_to) (sx i.t_to)
         | None -> ()) (Array.to_list segs);
@@ -184,9 +193,7 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
      the middle of its corner path at a fly-by point; labels in three staggered rows. *)
   let rows = Array.make 3 neg_infinity in
   Array.iter (fun (s : Planner.segment_info) ->
-      let own = List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces in
-      let corner = List.find_opt (fun (i : Planner.piece_info) ->
-          match i.kind with Planner.Corner (a, _) -> a = s.seg_id | _ -> false) pieces in
+      let own = Hashtbl.find_opt own_piece s.seg_id and corner = Hashtbl.find_opt corner_after s.seg_id in
       let at = match corner, own with
         | Some c, _ -> Some ((c.t_from +. c.t_to) /. 2.)
         | None, Some i -> Some i.t_to

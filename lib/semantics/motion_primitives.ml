@@ -337,8 +337,9 @@ exception History_exhausted of string
 
 (* With history (--samples, rapid-sem motion), each move kept counts [history_bytes] against
    the budget of --max-memory, apart from RAPID data: about what a move's segment and pieces of
-   path take (bench/motion_bench.ml's "planner's data"). *)
-let history_bytes = 1024
+   path take (bench/motion_bench.ml's "planner's data": 850 bytes), and what the drawings of
+   rapid-sem motion build from them (its samples of each piece, its marks). *)
+let history_bytes = 4096
 
 let charge_history st id =
   match st.history_budget with
