@@ -457,10 +457,12 @@ let in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) c
       | Ok () -> k loaded world motion
 
 (* [history]: the motion history is kept, within --max-memory (--samples, rapid-sem motion). *)
-let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth
+let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry (allow_unknown, stub_unmodelled)
+    max_depth
     retry_limit controller k =
   machine_gc ();
-  in_controller ?json ?robot ?history:(if history then Some (snd retry_limit) else None) files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
+  let history = if history then Some (snd retry_limit) else None in
+  in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   let retry_limit, max_memory = retry_limit in
   match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
           ~observe loaded.program ~entry with
@@ -546,7 +548,8 @@ let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
 let start_tasks ?(history = false) ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
     (retry_limit, max_memory) controller robot k =
   let history = if history then Some max_memory else None in
-  prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
+  prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot
+  @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ~observe:json ?seed ?motion_task ~world ~motion specs with
@@ -600,8 +603,8 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
 
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
-  start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth retry_limit
-    controller robot @@ fun ts names ->
+  start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth
+    retry_limit controller robot @@ fun ts names ->
       if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       (* --samples: the motion task's robot, as the one clock passes the samples; each
@@ -691,8 +694,8 @@ let run_cmd =
     else if engine = `Closure then
       run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth retry_limit
-      controller @@ fun cfg ->
+    start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth
+      retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -967,7 +970,8 @@ let trace_cmd =
     in
     if tasks <> [] then begin
         let module TS = Rapid_semantics.Task_set in
-        start_tasks ~history:(samples <> None && format = `Jsonl) ~tasks ~entries ~seed:schedule ~motion_task ~json:false
+        start_tasks ~history:(samples <> None && format = `Jsonl) ~tasks ~entries ~seed:schedule ~motion_task
+          ~json:false
           allow_unknown max_depth retry_limit controller robot
         @@ fun ts _ ->
         (* --samples: the motion task's robot. *)
@@ -1054,7 +1058,9 @@ let () =
   let argv = Array.of_list (join (Array.to_list Sys.argv)) in
   let status = Cmd.eval' ~argv (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
                                                  Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
-                                                     guard @@ fun () -> start_machine ~history:true ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                                     guard @@ fun () ->
+                                                     start_machine ~history:true ?robot files entry allow_unknown
+                                                       max_depth retry_limit controller k)
                                                    ~finish ~common_run_args ~controller_args;
                                                  Debug_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
                                                      guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)

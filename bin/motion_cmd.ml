@@ -45,7 +45,8 @@ let samples s motion ~until =
   go ();
   if s.next >= max_samples && not s.capped then begin
     s.capped <- true;
-    Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!" max_samples
+    Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!"
+      max_samples
   end;
   List.rev !out
 

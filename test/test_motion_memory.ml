@@ -104,7 +104,8 @@ let forget_same () =
     match MM.Planner.plan keep ~now:!now m, MM.Planner.plan forget ~now:!now m with
     | Ok a, Ok b ->
         (* Merged pauses round differently in the last bits; the clock counts microseconds. *)
-        if Float.abs (a.ready_time -. b.ready_time) > 1e-9 then Alcotest.failf "move %d: ready %.17g, forgetting %.17g (now %.17g)" i a.ready_time b.ready_time !now;
+        if Float.abs (a.ready_time -. b.ready_time) > 1e-9 then
+          Alcotest.failf "move %d: ready %.17g, forgetting %.17g (now %.17g)" i a.ready_time b.ready_time !now;
         for k = 0 to 4 do
           let t = !now +. float_of_int k *. 0.01 in
           let pa = MM.Planner.pose_at keep t and pb = MM.Planner.pose_at forget t in
@@ -125,7 +126,8 @@ let forget_same () =
 
 let count_sub s w =
   let n = String.length w in
-  let rec go i acc = if i + n > String.length s then acc else go (i + 1) (if String.sub s i n = w then acc + 1 else acc) in
+  let rec go i acc =
+    if i + n > String.length s then acc else go (i + 1) (if String.sub s i n = w then acc + 1 else acc) in
   go 0 0
 
 (* A point passed again and again is named once in each view (stacking its name at every pass

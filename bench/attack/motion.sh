@@ -63,7 +63,8 @@ def move(ts):
         ",".join(str(rng.uniform(-60, 60)) for _ in range(6)), v, z)
     if k < 0.92: return "MoveL %s, %s \\V:=%s, %s \\Z:=%s, tool0;" % (t, v, num(), z, num())
     if k < 0.95: return "MoveL %s, %s \\T:=%s, %s, tool0;" % (t, v, num(), z)
-    return rng.choice(["StopMove; StartMove;", "ClearPath;", "StorePath; %s RestoPath; StartMove;" % ("MoveL %s, v1000, fine, tool0;" % t),
+    stored = "StorePath; MoveL %s, v1000, fine, tool0; RestoPath; StartMove;" % t
+    return rng.choice(["StopMove; StartMove;", "ClearPath;", stored,
                        "WaitRob \\InPos;", "VelSet %s, %s;" % (num(), num()), "WaitTime \\InPos, 0.01;"])
 for i in range(n):
     ntg = rng.randint(1, 6)
@@ -85,7 +86,8 @@ for i in range(n):
 ENDMODULE
 """ % (i, decls, ts[0], iters, body, handler)
     mode = rng.choice(["closure", "machine", "samples", "motion"])
-    opts = "--max-time %s --max-steps %d" % (rng.choice(["10", "1000", "100000", "1E9"]), rng.choice([10**4, 10**5, 10**6]))
+    opts = "--max-time %s --max-steps %d" % (rng.choice(["10", "1000", "100000", "1E9"]),
+                                             rng.choice([10**4, 10**5, 10**6]))
     if mode == "samples": opts += " --max-memory %d" % rng.choice([10**5, 10**6, 10**7, 268435456])
     if mode == "motion": opts += " --max-memory %d" % rng.choice([10**5, 10**6, 10**7, 268435456])
     open("%s/%05d.mod" % (out, i), "w").write(prog)
@@ -102,7 +104,8 @@ run_one() {
     samples) cmd=(run --json --samples 50 $opts) ;;
     motion) cmd=(motion --svg "$TMP/out/$b.svg" --timeline "$TMP/out/$b-t.svg" --csv "$TMP/out/$b.csv" $opts) ;;
   esac
-  ( ulimit -v 1500000; cd "$TMP/out" && exec timeout -s KILL 20 "$BIN" "${cmd[@]}" "$f" ) > /dev/null 2> "$TMP/res/$b.err"
+  ( ulimit -v 1500000; cd "$TMP/out" && exec timeout -s KILL 20 "$BIN" "${cmd[@]}" "$f" ) \
+    > /dev/null 2> "$TMP/res/$b.err"
   rc=$?
   echo "$rc" > "$TMP/res/$b.rc"
   # The drawings may be large (a CSV of a million rows): given back at once.
@@ -126,7 +129,7 @@ for r in "$TMP"/res/*.rc; do
 done
 # Nothing written outside the campaign's folder: the folder of the inputs' neighbours and the
 # current directory stay as they were.
-outside=$(find "$(dirname "$TMP")" -maxdepth 1 -newer "$TMP/stamp" -name '*.svg' -o -maxdepth 1 -newer "$TMP/stamp" -name '*.csv' | wc -l)
+outside=$(find "$(dirname "$TMP")" -maxdepth 1 -newer "$TMP/stamp" \( -name '*.svg' -o -name '*.csv' \) | wc -l)
 outside=$((outside + $(find . -maxdepth 1 -newer "$TMP/stamp" \( -name '*.svg' -o -name '*.csv' \) | wc -l)))
 other=$((other + outside))
 echo "motion: $N inputs, $e125 exit 125, $e134 exit 134, $hangs hangs, $other other failures"

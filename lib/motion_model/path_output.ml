@@ -8,7 +8,7 @@ let end_time p =
   else List.fold_left (fun acc (i : Planner.piece_info) ->
       if Float.is_finite i.t_to then Float.max acc i.t_to else acc) 0. (Planner.pieces p)
 
-let csv_max_rows = 1_000_000
+let csv_max_rows = 200_000
 
 let csv ?(step = 0.01) p =
   let b = Buffer.create 4096 in
@@ -31,7 +31,8 @@ let csv ?(step = 0.01) p =
     Buffer.add_char b '\n' in
   (* At most [csv_max_rows] rows (doc/motion.md, O-output): a longer path is sampled at a
      coarser step, so that the file, and the memory that builds it, stay bounded. *)
-  let step = if Float.is_finite last && last /. step > float_of_int csv_max_rows then last /. float_of_int csv_max_rows else step in
+  let most = float_of_int csv_max_rows in
+  let step = if Float.is_finite last && last /. step > most then last /. most else step in
   let n = if Float.is_finite last then int_of_float (Float.floor (last /. step)) else 0 in
   for i = 0 to n do row (float_of_int i *. step) done;
   if float_of_int n *. step < last then row last;

@@ -618,11 +618,11 @@ let resto_path t ~at:_ =
   | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()
 
 let target_joints t id =
-  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_joints: unknown or forgotten move"
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_joints: unknown move"
   else arm (Vec.get t.moves id).seg.q_end
 
 let target_external t id =
-  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_external: unknown or forgotten move"
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_external: unknown move"
   else ext (Vec.get t.moves id).seg.q_end
 
 let base t e = Ext_axes.base (Kinematics.robot t.kin).externals e

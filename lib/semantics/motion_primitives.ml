@@ -80,7 +80,8 @@ let dummy = V.Bool false
 let create ?(robot = MM.Robot.irb120) ?history () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; tracks_back = []; outputs = []; fresh = [];
-    check_at = infinity; dirty = false; reshaped = false; history_budget = history; first_target = None; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
+    check_at = infinity; dirty = false; reshaped = false; history_budget = history; first_target = None;
+    tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None }
 
@@ -539,7 +540,8 @@ let collide st w =
 let drain st w =
   let now = W.now w in
   if st.outputs <> [] then place_outputs st w;
-  let seen = if not (no_tracks st) && (st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12)) then (st.dirty <- false; check st ~now) else [] in
+  let due = st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12) in
+  let seen = if not (no_tracks st) && due then (st.dirty <- false; check st ~now) else [] in
   if st.collisions <> Some [] then collide st w;
   let fresh = List.rev st.fresh in
   st.fresh <- [];
