@@ -440,7 +440,7 @@ let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
 
 (* The task buffer loaded, in the controller of the options (signals, stimulus, clock, services,
    robot), which both engines run it in; its warnings on standard error. *)
-let in_controller ?json ?robot files (allow_unknown, stub_unmodelled) controller k =
+let in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) controller k =
   match read_io controller.io, Motion_cmd.load_robot robot with
   | Error m, _ | _, Error m -> prerr_endline m; exit_static_error
   | Ok io, Ok robot ->
@@ -455,14 +455,18 @@ let in_controller ?json ?robot files (allow_unknown, stub_unmodelled) controller
       Option.iter prerr_endline loaded.unknown_summary;
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+      let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
       match Services_args.install controller.services world with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok () -> k loaded world motion
 
-let start_machine ?json ?(observe = false) ?robot files entry (allow_unknown, stub_unmodelled) max_depth retry_limit controller k =
+(* [history]: the motion history is kept, within --max-memory (--samples, rapid-sem motion). *)
+let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry (allow_unknown, stub_unmodelled)
+    max_depth
+    retry_limit controller k =
   machine_gc ();
-  in_controller ?json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
+  let history = if history then Some (snd retry_limit) else None in
+  in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   let retry_limit, max_memory = retry_limit in
   match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
           ~observe loaded.program ~entry with
@@ -504,7 +508,7 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
 
 (* rapid-sem run --task NAME=FILE,... (ch. 14): every task on one clock, turns of a statement
    (Task_set); each event of --json names its task. [start] loads them for one engine. *)
-let prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot start =
+let prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot start =
   machine_gc ();
   let parse_task s =
     match String.index_opt s '=' with
@@ -534,7 +538,7 @@ let prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller ro
       { Rapid_semantics.Task_set.name; files; entry }) tasks in
   let world = Rapid_controller.World.create ~statement_time:controller.statement_time
       ~max_time:controller.max_time ~epoch:controller.epoch io in
-  let motion = Rapid_semantics.Motion_primitives.create ~robot () in
+  let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
   match Services_args.install controller.services world with
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok () -> start ~io ~world ~motion specs names
@@ -544,9 +548,11 @@ let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
   | Load (name, f) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
   | Refused m -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
 
-let start_tasks ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
+let start_tasks ?(history = false) ~tasks ~entries ~seed ~motion_task ~json (allow_unknown, stub_unmodelled) max_depth
     (retry_limit, max_memory) controller robot k =
-  prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
+  let history = if history then Some max_memory else None in
+  prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot
+  @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
   match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ~observe:json ?seed ?motion_task ~world ~motion specs with
@@ -600,7 +606,8 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
 
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
-  start_tasks ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth retry_limit controller robot @@ fun ts names ->
+  start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth
+    retry_limit controller robot @@ fun ts names ->
       if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       (* --samples: the motion task's robot, as the one clock passes the samples; each
@@ -694,7 +701,8 @@ let run_cmd =
     else if engine = `Closure then
       run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
-    start_machine ~json ~observe:json ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth
+      retry_limit controller @@ fun cfg ->
     if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -968,7 +976,9 @@ let trace_cmd =
     in
     if tasks <> [] then begin
         let module TS = Rapid_semantics.Task_set in
-        start_tasks ~tasks ~entries ~seed:schedule ~motion_task ~json:false allow_unknown max_depth retry_limit controller robot
+        start_tasks ~history:(samples <> None && format = `Jsonl) ~tasks ~entries ~seed:schedule ~motion_task
+          ~json:false
+          allow_unknown max_depth retry_limit controller robot
         @@ fun ts _ ->
         (* --samples: the motion task's robot. *)
         let robot_task = List.find_map (fun (_, cfg) -> if Rapid_controller.World.motion_task (M.world cfg) then Some cfg else None)
@@ -980,7 +990,8 @@ let trace_cmd =
     end
     else
       single_task files entries schedule motion_task @@ fun entry ->
-      start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+      start_machine ~history:(samples <> None && format = `Jsonl) ?robot files entry allow_unknown max_depth retry_limit
+        controller @@ fun cfg ->
       body ~next:(fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None)
         ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg) ~single:(Some cfg)
         ~entry_at:(fun () -> entry_region (M.program cfg) entry)
@@ -1058,7 +1069,9 @@ let () =
   let argv = Array.of_list (join (Array.to_list Sys.argv)) in
   let status = Cmd.eval' ~argv (Cmd.group info [ parse_cmd; check_cmd; run_cmd; trace_cmd; spec_cmd;
                                                  Motion_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
-                                                     guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)
+                                                     guard @@ fun () ->
+                                                     start_machine ~history:true ?robot files entry allow_unknown
+                                                       max_depth retry_limit controller k)
                                                    ~finish ~common_run_args ~controller_args;
                                                  Debug_cmd.cmd ~start_machine:(fun ?robot files entry allow_unknown max_depth retry_limit controller k ->
                                                      guard @@ fun () -> start_machine ?robot files entry allow_unknown max_depth retry_limit controller k)

@@ -23,22 +23,31 @@ let check_samples = function
   | Some hz when not (hz > 0. && hz <= 10_000.) -> Error "rapid-sem: --samples takes a rate above 0 and at most 10000 Hz"
   | _ -> Ok ()
 
-(* TCP samples at k / HZ s, each once, as the clock passes them. *)
-type sampler = { hz : float; mutable next : int }
+(* TCP samples at k / HZ s, each once, as the clock passes them; at most [max_samples] in a run
+   (doc/motion.md, "Memory"): a step of the clock may pass many, and they are built before they
+   are written. *)
+let max_samples = 200_000
 
-let sampler hz = { hz; next = 0 }
+type sampler = { hz : float; mutable next : int; mutable capped : bool }
+
+let sampler hz = { hz; next = 0; capped = false }
 
 let samples s motion ~until =
   let p = MP.planner motion in
   let out = ref [] in
   let rec go () =
     let t = float_of_int s.next /. s.hz in
-    if t <= until +. 1e-9 && s.next < 100_000_000 then begin
+    if t <= until +. 1e-9 && s.next < max_samples then begin
       let joints = match MM.Planner.joints_at p t with Ok q -> Some q | Error _ -> None in
       out := Motion_json.sample t (MM.Planner.pose_at p t) joints :: !out;
       s.next <- s.next + 1; go ()
     end in
   go ();
+  if s.next >= max_samples && not s.capped then begin
+    s.capped <- true;
+    Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!"
+      max_samples
+  end;
   List.rev !out
 
 (* At the end of a run that ended: the samples until the robot stands still. *)

@@ -8,6 +8,8 @@ let end_time p =
   else List.fold_left (fun acc (i : Planner.piece_info) ->
       if Float.is_finite i.t_to then Float.max acc i.t_to else acc) 0. (Planner.pieces p)
 
+let csv_max_rows = 200_000
+
 let csv ?(step = 0.01) p =
   let b = Buffer.create 4096 in
   (* A robot with external axes: a column for each, named as extjoint names it (law X-desc). *)
@@ -27,7 +29,11 @@ let csv ?(step = 0.01) p =
      | Ok e -> List.iter (fun (a : Ext_axes.axis) -> buf_printf b ",%.4f" e.(a.index)) ext
      | Error _ -> List.iter (fun _ -> Buffer.add_char b ',') ext);
     Buffer.add_char b '\n' in
-  let n = int_of_float (Float.floor (last /. step)) in
+  (* At most [csv_max_rows] rows (doc/motion.md, O-output): a longer path is sampled at a
+     coarser step, so that the file, and the memory that builds it, stay bounded. *)
+  let most = float_of_int csv_max_rows in
+  let step = if Float.is_finite last && last /. step > most then last /. most else step in
+  let n = if Float.is_finite last then int_of_float (Float.floor (last /. step)) else 0 in
   for i = 0 to n do row (float_of_int i *. step) done;
   if float_of_int n *. step < last then row last;
   Buffer.contents b
@@ -59,8 +65,9 @@ let tick span =
 let path_svg ?(title = "TCP path") p =
   let runs = sampled p in
   let segs = Planner.segments p in
-  let all = List.concat_map snd runs @ List.map (fun (s : Planner.segment_info) -> s.target) segs
-            @ [ (Planner.pose_at p 0.).trans ] in
+  (* For the ranges only, in no order: [@] and [List.map] overflowed the stack on long paths. *)
+  let all = List.rev_append (List.rev_map (fun (s : Planner.segment_info) -> s.target) segs)
+      ((Planner.pose_at p 0.).trans :: List.concat_map snd runs) in
   let range f = List.fold_left (fun (lo, hi) q -> (Float.min lo (f q), Float.max hi (f q))) (infinity, neg_infinity) all in
   let pad (lo, hi) = let m = Float.max 10. ((hi -. lo) *. 0.08) in (lo -. m, hi +. m) in
   let xr = pad (range (fun q -> q.x)) and yr = pad (range (fun q -> q.y)) and zr = pad (range (fun q -> q.z)) in
@@ -106,7 +113,7 @@ let path_svg ?(title = "TCP path") p =
     buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"#333\">start</text>\n"
       (px start -. 4.) (py start -. 4.) (px start +. 7.) (py start +. 14.);
     (* Labels of points that fall together (a vertical move seen from above) are stacked. *)
-    let placed = ref [] in
+    let placed = ref [] and named = Hashtbl.create 64 in
     let place x y w =
       let rec go y = if List.exists (fun (x', y', w') -> Float.abs (y -. y') < 13. && x < x' +. w' && x' < x +. w) !placed
         then go (y +. 14.) else y in
@@ -116,7 +123,11 @@ let path_svg ?(title = "TCP path") p =
         let x = px sg.target and y = py sg.target in
         if sg.seg_fine then buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"#c0392b\"/>\n" x y
         else buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"white\" stroke=\"#c0392b\" stroke-width=\"1.5\"/>\n" x y;
-        if sg.seg_label <> "" then
+        (* A point passed again with its name (a loop) is named once: stacking the same name
+           at every pass was quadratic in the passes (and cubic to place). *)
+        let key = (Float.round (x *. 10.), Float.round (y *. 10.), sg.seg_label) in
+        if sg.seg_label <> "" && not (Hashtbl.mem named key) then
+          let () = Hashtbl.replace named key () in
           let ly = place (x +. 6.) (y -. 6.) (7. *. float_of_int (String.length sg.seg_label)) in
           buf_printf b "<text x=\"%.1f\" y=\"%.1f\" fill=\"#c0392b\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">%s</text>\n"
             (x +. 6.) ly (esc sg.seg_label)) segs;
@@ -165,9 +176,17 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
       if label <> "" && x1 -. x0 > 7. *. float_of_int (String.length label) then
         buf_printf b "<text x=\"%.1f\" y=\"74\" text-anchor=\"middle\" fill=\"white\">%s</text>\n" ((x0 +. x1) /. 2.) (esc label))
     pieces;
+  (* Each move's own piece and the corner after it, found once (a search of the pieces for every
+     move was quadratic in the moves); the first, as a search from the start finds. *)
+  let own_piece = Hashtbl.create 64 and corner_after = Hashtbl.create 64 in
+  List.iter (fun (i : Planner.piece_info) ->
+      match i.kind with
+      | Planner.Segment id -> if not (Hashtbl.mem own_piece id) then Hashtbl.replace own_piece id i
+      | Planner.Corner (a, _) -> if not (Hashtbl.mem corner_after a) then Hashtbl.replace corner_after a i
+      | Planner.Still -> ()) pieces;
   List.iter (fun (s : Planner.segment_info) ->
       if s.seg_fine then
-        match List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces with
+        match Hashtbl.find_opt own_piece s.seg_id with
         | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"48\" x2=\"%.1f\" y2=\"88\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n"
                       (sx i.t_to) (sx i.t_to)
         | None -> ()) (Array.to_list segs);
@@ -175,9 +194,7 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
      the middle of its corner path at a fly-by point; labels in three staggered rows. *)
   let rows = Array.make 3 neg_infinity in
   Array.iter (fun (s : Planner.segment_info) ->
-      let own = List.find_opt (fun (i : Planner.piece_info) -> i.kind = Planner.Segment s.seg_id) pieces in
-      let corner = List.find_opt (fun (i : Planner.piece_info) ->
-          match i.kind with Planner.Corner (a, _) -> a = s.seg_id | _ -> false) pieces in
+      let own = Hashtbl.find_opt own_piece s.seg_id and corner = Hashtbl.find_opt corner_after s.seg_id in
       let at = match corner, own with
         | Some c, _ -> Some ((c.t_from +. c.t_to) /. 2.)
         | None, Some i -> Some i.t_to

@@ -7,7 +7,10 @@ val csv : ?step:float -> Planner.t -> string
 (** One line per [step] seconds (default 0.01) from 0 to the end of the path, and one at the
     end: [t,x,y,z,q1,q2,q3,q4,j1,j2,j3,j4,j5,j6] (s, mm, quaternion, degrees), then a column per
     external axis of the robot, named eax_a … eax_f (mm or degrees; none for a robot without).
-    Axis angles that cannot be computed are left empty. *)
+    Axis angles that cannot be computed are left empty. A path longer than {!csv_max_rows}
+    steps is sampled at its length over {!csv_max_rows} instead. *)
+
+val csv_max_rows : int
 
 val path_svg : ?title:string -> Planner.t -> string
 (** The TCP path in the world frame (the base frame unless a track moves it), two views. *)

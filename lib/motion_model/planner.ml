@@ -141,22 +141,40 @@ let piece_joints k pc u =
 
 (* ------------------------------------------------------------------ growable arrays *)
 
+(* A growable array whose oldest elements can be forgotten: indices are absolute, from [first v]
+   (how many were forgotten) to [stop v - 1], so forgetting the front keeps the others' indices
+   (the open segment's piece, the move ids). What is forgotten is given back when it grows. *)
 module Vec = struct
-  type 'a t = { mutable data : 'a array; mutable len : int }
-  let create () = { data = [||]; len = 0 }
+  type 'a t = { mutable data : 'a array; mutable start : int; mutable len : int; mutable first : int }
+  let create () = { data = [||]; start = 0; len = 0; first = 0 }
+  let first v = v.first
+  let stop v = v.first + v.len
   let push v x =
-    if v.len = Array.length v.data then begin
+    if v.start + v.len = Array.length v.data then begin
       let d = Array.make (max 16 (2 * v.len)) x in
-      Array.blit v.data 0 d 0 v.len;
-      v.data <- d
+      Array.blit v.data v.start d 0 v.len;
+      v.data <- d;
+      v.start <- 0
     end;
-    v.data.(v.len) <- x;
+    v.data.(v.start + v.len) <- x;
     v.len <- v.len + 1
-  let get v i = v.data.(i)
-  let truncate v n = if n < v.len then v.len <- n
+  let get v i =
+    if i < v.first || i >= v.first + v.len then invalid_arg "Planner.Vec.get";
+    v.data.(v.start + i - v.first)
+  let truncate v n = if n < stop v then v.len <- max 0 (n - v.first)
+  let forget_before v n =
+    let k = min v.len (n - v.first) in
+    if k > 0 then begin
+      (* The slots forgotten hold the newest element, which is kept anyway. *)
+      Array.fill v.data v.start k v.data.(v.start + v.len - 1);
+      v.start <- v.start + k; v.len <- v.len - k; v.first <- v.first + k
+    end
 end
 
 (* ------------------------------------------------------------------ the planner *)
+
+(* A pause of the path, real time, and how long the pauses before it lasted. *)
+type pause = { ts : float; te : float; before : float }
 
 (* One path level: its queue, and its own clock of StopMove pauses. *)
 type level = {
@@ -166,24 +184,27 @@ type level = {
   mutable end_flange : pose;
   mutable end_time : float;  (* path time from which the robot stands at the end of the queue *)
   mutable open_seg : (segment * int) option;  (* the last segment if fly-by: its Part's index *)
-  mutable pauses : (float * float) list;  (* StopMove … StartMove, real time, oldest first *)
+  pauses : pause Vec.t;  (* StopMove … StartMove, real time, oldest first *)
+  mutable paused_before : float;  (* how long the pauses forgotten lasted *)
   mutable stopped_at : float option;
 }
+
+(* A move planned: its segment, the path time at which the program may leave it, the same as
+   answered by plan (for a move of a level dropped since), and the level it was planned on. *)
+type entry = { seg : segment; ready : float; ready_real : float; level : level }
 
 type t = {
   kin : Kinematics.t;
   settings : settings;
-  segs : segment Vec.t;
-  ready : float Vec.t;  (* path time at which the program may leave each move *)
-  ready_real : float Vec.t;  (* the same as answered by plan, for moves of a level dropped since *)
-  ready_level : level Vec.t;  (* the level each move was planned on *)
+  moves : entry Vec.t;  (* by move id; a run without history forgets the old ones (forget) *)
+  mutable forgotten_ready : float;  (* the latest ready time of a move forgotten *)
   mutable cur : level;
   mutable stored : level option;  (* path level 1, kept by StorePath while level 2 runs *)
 }
 
 let new_level kin joints ~from =
   { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
-    end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = [];
+    end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = Vec.create (); paused_before = 0.;
     stopped_at = None }
 
 let create ?(joints = Array.make 6 0.) kin =
@@ -191,20 +212,33 @@ let create ?(joints = Array.make 6 0.) kin =
   let cur = new_level kin joints ~from:0. in
   { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
                       sing_area_wrist = false; look_ahead = 0.1 };
-    segs = Vec.create (); ready = Vec.create (); ready_real = Vec.create ();
-    ready_level = Vec.create (); cur; stored = None }
+    moves = Vec.create (); forgotten_ready = neg_infinity; cur; stored = None }
 
 let settings t = t.settings
 let kinematics t = t.kin
 let stopped t = t.cur.stopped_at <> None
 
+(* The last pause [starts] puts before [x], by bisection (the pauses are in time order), or -1. *)
+let last_pause (l : level) starts x =
+  let lo = ref (Vec.first l.pauses) and hi = ref (Vec.stop l.pauses - 1) and best = ref (-1) in
+  while !lo <= !hi do
+    let mid = (!lo + !hi) / 2 in
+    if starts (Vec.get l.pauses mid) < x then (best := mid; lo := mid + 1) else hi := mid - 1
+  done;
+  !best
+
 (* Virtual time less the time the robot stood by StopMove: the time the path runs on. *)
 let path_time (l : level) real =
-  let p = List.fold_left (fun acc (ts, te) -> acc -. Float.max 0. (Float.min real te -. ts)) real l.pauses in
+  let p = match last_pause l (fun pz -> pz.ts) real with
+    | -1 -> real -. l.paused_before
+    | k -> let pz = Vec.get l.pauses k in real -. pz.before -. Float.max 0. (Float.min real pz.te -. pz.ts) in
   match l.stopped_at with Some ts when real > ts -> p -. (real -. ts) | _ -> p
 
 let real_time (l : level) path =
-  let r = List.fold_left (fun r (ts, te) -> if path > path_time l ts then r +. (te -. ts) else r) path l.pauses in
+  (* A pause begins at path time ts - before; a later path time comes after all of it. *)
+  let r = match last_pause l (fun pz -> pz.ts -. pz.before) path with
+    | -1 -> path +. l.paused_before
+    | k -> let pz = Vec.get l.pauses k in path +. pz.before +. (pz.te -. pz.ts) in
   match l.stopped_at with
   | Some ts when path > path_time l ts +. 1e-12 -> infinity
   | _ -> r
@@ -380,7 +414,7 @@ let push_piece t pc = if pc.tm.t1 > pc.tm.t0 || pc.tm.p1 <> pc.tm.p0 then Vec.pu
 
 let plan t ~now m =
   let now_p = path_time t.cur now in
-  let id = t.segs.len in
+  let id = Vec.stop t.moves in
   let* sg, f_end = build t ~now_p m id in
   let warnings = ref [] in
   (* Where the segment starts in time, and the corner into it (law Z-corner). *)
@@ -422,7 +456,7 @@ let plan t ~now m =
         end
   in
   let t_end = sg.f.t_start +. sg.f.duration in
-  let idx = t.cur.pieces.len in
+  let idx = Vec.stop t.cur.pieces in
   push_piece t { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
   let arrive_ready =
     match m.inpos with
@@ -442,25 +476,25 @@ let plan t ~now m =
   t.cur.end_joints <- sg.q_end;
   t.cur.end_flange <- f_end;
   t.cur.end_time <- (if sg.fine then Float.max t_end arrive_ready else t_end);
-  let idx = if t.cur.pieces.len > idx then idx else -1 in
+  let idx = if Vec.stop t.cur.pieces > idx then idx else -1 in
   t.cur.open_seg <- (if sg.fine then None else Some (sg, idx));
-  Vec.push t.segs sg;
-  Vec.push t.ready ready;
   let ready_time = real_time t.cur ready in
-  Vec.push t.ready_real ready_time;
-  Vec.push t.ready_level t.cur;
+  Vec.push t.moves { seg = sg; ready; ready_real = ready_time; level = t.cur };
   Ok { id; ready_time; warnings = !warnings }
 
 let ready_time t id =
-  if id < 0 || id >= t.ready.len then invalid_arg "Planner.ready_time: unknown move"
+  if id < 0 || id >= Vec.stop t.moves then invalid_arg "Planner.ready_time: unknown move"
+  else if id < Vec.first t.moves then t.forgotten_ready
   else
-    let l = Vec.get t.ready_level id in
-    let live = l == t.cur || (match t.stored with Some s -> l == s | None -> false) in
-    if live then real_time l (Vec.get t.ready id) else Vec.get t.ready_real id
+    let e = Vec.get t.moves id in
+    let live = e.level == t.cur || (match t.stored with Some s -> e.level == s | None -> false) in
+    if live then real_time e.level e.ready else e.ready_real
 
-(* The last piece that has begun by path time [tp], or -1. *)
+(* The last piece that has begun by path time [tp], or -1; the oldest kept if pieces were
+   forgotten (a time before them is not asked). *)
 let find t tp =
-  let lo = ref 0 and hi = ref (t.cur.pieces.len - 1) and best = ref (-1) in
+  let first = Vec.first t.cur.pieces in
+  let lo = ref first and hi = ref (Vec.stop t.cur.pieces - 1) and best = ref (if first > 0 then first else -1) in
   while !lo <= !hi do
     let mid = (!lo + !hi) / 2 in
     if (Vec.get t.cur.pieces mid).tm.t0 <= tp then (best := mid; lo := mid + 1) else hi := mid - 1
@@ -510,7 +544,13 @@ let stop t ~at = if t.cur.stopped_at = None then t.cur.stopped_at <- Some at
 
 let start t ~at =
   match t.cur.stopped_at with
-  | Some ts -> t.cur.pauses <- t.cur.pauses @ [ (ts, Float.max ts at) ]; t.cur.stopped_at <- None
+  | Some ts ->
+      let before = match Vec.stop t.cur.pauses with
+        | 0 -> 0.
+        | n when n = Vec.first t.cur.pauses -> t.cur.paused_before
+        | n -> let pz = Vec.get t.cur.pauses (n - 1) in pz.before +. (pz.te -. pz.ts) in
+      Vec.push t.cur.pauses { ts; te = Float.max ts at; before };
+      t.cur.stopped_at <- None
   | None -> ()
 
 let clear t ~at =
@@ -534,7 +574,7 @@ type piece_info = { t_from : float; t_to : float; kind : piece_kind }
 
 let pieces t =
   let out = ref [] and last = ref 0. in
-  for i = 0 to t.cur.pieces.len - 1 do
+  for i = Vec.first t.cur.pieces to Vec.stop t.cur.pieces - 1 do
     let pc = Vec.get t.cur.pieces i in
     if pc.tm.t0 > !last +. 1e-9 then
       out := { t_from = real_time t.cur !last; t_to = real_time t.cur pc.tm.t0; kind = Still } :: !out;
@@ -553,8 +593,9 @@ type segment_info = {
 }
 
 let segments t =
-  List.init t.segs.len (fun i ->
-      let s = Vec.get t.segs i in
+  let first = Vec.first t.moves in
+  List.init (Vec.stop t.moves - first) (fun i ->
+      let s = (Vec.get t.moves (first + i)).seg in
       { seg_id = s.id; seg_label = s.label; seg_kind = s.kind; target = s.end_tcp; seg_fine = s.fine;
         seg_length = s.f.length; seg_duration = s.f.duration })
 
@@ -577,34 +618,42 @@ let resto_path t ~at:_ =
   | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()
 
 let target_joints t id =
-  if id < 0 || id >= t.segs.len then invalid_arg "Planner.target_joints: unknown move"
-  else arm (Vec.get t.segs id).q_end
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_joints: unknown move"
+  else arm (Vec.get t.moves id).seg.q_end
 
 let target_external t id =
-  if id < 0 || id >= t.segs.len then invalid_arg "Planner.target_external: unknown move"
-  else ext (Vec.get t.segs id).q_end
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_external: unknown move"
+  else ext (Vec.get t.moves id).seg.q_end
 
 let base t e = Ext_axes.base (Kinematics.robot t.kin).externals e
 
-(* Pieces are in time order and segment ids grow with time: the pieces of a recent move are
-   found from the end of the queue. *)
+let piece_ids pc = match pc.shape with
+  | Part sg -> (sg.id, sg.id) | Blend b -> (b.a.id, b.b.id) | Joint_blend b -> (b.a.id, b.b.id)
+
+(* Pieces are in time order and segment ids grow with time: the first piece of a move is found by
+   bisection on the pieces' newest ids, and its pieces follow it. *)
 let segment_span t id =
+  let pcs = t.cur.pieces in
+  let lo_i = ref (Vec.first pcs) and hi_i = ref (Vec.stop pcs) in
+  while !lo_i < !hi_i do
+    let mid = (!lo_i + !hi_i) / 2 in
+    if snd (piece_ids (Vec.get pcs mid)) < id then lo_i := mid + 1 else hi_i := mid
+  done;
   let lo = ref infinity and hi = ref neg_infinity in
-  let rec back i =
-    if i >= 0 then begin
-      let pc = Vec.get t.cur.pieces i in
-      let ids = match pc.shape with
-        | Part sg -> [ sg.id ] | Blend b -> [ b.a.id; b.b.id ] | Joint_blend b -> [ b.a.id; b.b.id ] in
-      if List.mem id ids then begin
-        lo := Float.min !lo pc.tm.t0;
-        (* The corner after the move is not its own: it ends where its corner begins. *)
-        let ends_here = match pc.shape with Part _ -> true | Blend b -> b.b.id = id | Joint_blend b -> b.b.id = id in
-        if ends_here then hi := Float.max !hi pc.tm.t1
-        else hi := Float.max !hi pc.tm.t0
-      end;
-      if List.exists (fun j -> j >= id) ids then back (i - 1)
+  let rec forward i =
+    if i < Vec.stop pcs then begin
+      let pc = Vec.get pcs i in
+      let oldest, newest = piece_ids pc in
+      if oldest <= id then begin
+        if newest = id || oldest = id then begin
+          lo := Float.min !lo pc.tm.t0;
+          (* The corner after the move is not its own: it ends where its corner begins. *)
+          if newest = id then hi := Float.max !hi pc.tm.t1 else hi := Float.max !hi pc.tm.t0
+        end;
+        forward (i + 1)
+      end
     end in
-  back (t.cur.pieces.len - 1);
+  forward !lo_i;
   if !lo = infinity then None else Some (real_time t.cur !lo, real_time t.cur !hi)
 
 (* [segment_span] for several moves in one walk back through the queue: a check of the moves
@@ -616,7 +665,7 @@ let segment_spans t ids =
   List.iter (fun id -> Hashtbl.replace spans id (infinity, neg_infinity)) ids;
   let oldest = List.fold_left min max_int ids in
   let rec back i runmin =
-    if i >= 0 && runmin >= oldest then begin
+    if i >= Vec.first t.cur.pieces && runmin >= oldest then begin
       let pc = Vec.get t.cur.pieces i in
       let pids = match pc.shape with
         | Part sg -> [ sg.id ] | Blend b -> [ b.a.id; b.b.id ] | Joint_blend b -> [ b.a.id; b.b.id ] in
@@ -631,7 +680,7 @@ let segment_spans t ids =
             | None -> ()) (List.sort_uniq compare pids);
       back (i - 1) runmin
     end in
-  back (t.cur.pieces.len - 1) max_int;
+  back (Vec.stop t.cur.pieces - 1) max_int;
   fun id -> match Hashtbl.find_opt spans id with
     | Some (lo, hi) when lo <> infinity -> Some (real_time t.cur lo, real_time t.cur hi)
     | _ -> None
@@ -639,7 +688,7 @@ let segment_spans t ids =
 let point_time t id =
   let corner = ref None and own_end = ref None in
   let rec back i =
-    if i >= 0 then begin
+    if i >= Vec.first t.cur.pieces then begin
       let pc = Vec.get t.cur.pieces i in
       let newest = match pc.shape with
         | Part sg -> sg.id | Blend b -> b.b.id | Joint_blend b -> b.b.id in
@@ -649,10 +698,46 @@ let point_time t id =
        | _ -> ());
       if newest >= id then back (i - 1)
     end in
-  back (t.cur.pieces.len - 1);
+  back (Vec.stop t.cur.pieces - 1);
   match !corner, !own_end with
   | Some c, _ -> Some (real_time t.cur c)
   | None, Some e -> Some (real_time t.cur e)
   | None, None -> None
 
 let is_open t id = match t.cur.open_seg with Some (sg, _) -> sg.id = id | None -> false
+
+(* Without history (doc/motion.md, "Memory"): what lies wholly before [before] and concerns only
+   moves older than [keep] is given back. The newest piece stays (where the robot stands), and so
+   do the open segment's piece, the pieces that time [before] and later need, and every move whose
+   ready time has not passed. Pauses that have ended are merged into one, which answers the same
+   for every time after them. *)
+let forget t ~before ~keep =
+  let l = t.cur in
+  let hp = path_time l before in
+  let pcs = l.pieces in
+  let open_idx = match l.open_seg with Some (_, i) when i >= 0 -> i | _ -> max_int in
+  let rec drop i =
+    if i + 1 < Vec.stop pcs && i < open_idx && snd (piece_ids (Vec.get pcs i)) < keep
+       && (Vec.get pcs (i + 1)).tm.t0 <= hp then drop (i + 1)
+    else i in
+  Vec.forget_before pcs (drop (Vec.first pcs));
+  let rec drop_moves () =
+    let id = Vec.first t.moves in
+    if id < keep && id + 1 < Vec.stop t.moves then begin
+      let r = ready_time t id in
+      if r <= before then begin
+        t.forgotten_ready <- Float.max t.forgotten_ready r;
+        Vec.forget_before t.moves (id + 1);
+        drop_moves ()
+      end
+    end in
+  drop_moves ();
+  let rec drop_pauses () =
+    let k = Vec.first l.pauses in
+    if k < Vec.stop l.pauses && (Vec.get l.pauses k).te < before then begin
+      let pz = Vec.get l.pauses k in
+      l.paused_before <- pz.before +. (pz.te -. pz.ts);
+      Vec.forget_before l.pauses (k + 1);
+      drop_pauses ()
+    end in
+  drop_pauses ()

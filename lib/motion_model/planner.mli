@@ -149,6 +149,14 @@ val point_time : t -> int -> float option
 (** When the robot passes the move's programmed point: the middle of its corner path (MoveLDO,
     MoveJDO), or the end of its part; [None] when not in the queue. *)
 
+val forget : t -> before:float -> keep:int -> unit
+(** A run that keeps no history (doc/motion.md, "Memory") gives back what it no longer needs:
+    the pieces of path wholly before time [before] that concern only moves older than [keep], and
+    the moves older than [keep] whose ready time has passed by [before]. Afterwards [pose_at],
+    [joints_at] and [external_at] answer for times from [before] on only, [target_joints] and
+    [target_external] for moves from [keep] on, and [ready_time] of a forgotten move is a time
+    not after [before]. [pieces] and [segments] then list what is kept. *)
+
 val is_open : t -> int -> bool
 (** Whether the move is the last one, ending in a fly-by point whose corner waits for the next
     move. *)

@@ -2006,6 +2006,7 @@ let outcome_of_exception st = function
       M.Resource_exhausted
         (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth)
   | Out_of_memory -> M.Resource_exhausted "out of memory (resource exhaustion, §1.4)"
+  | Motion_primitives.History_exhausted m -> M.Resource_exhausted m
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 

@@ -615,9 +615,11 @@ let call_primitive cfg (cs : call_state) name =
   let ctx = { ctx with argument_label = argument_label cfg cs } in
   let before = if cfg.observe then Observation.references cs.primitive_args else [] in
   let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner cfg.motion) in
+  let exhausted = ref None in
   let result = match Task_primitives.call ~standstill ctx name cs.primitive_args with
     | Some r -> r
     | None -> match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
+    | exception Motion_primitives.History_exhausted m -> exhausted := Some m; Primitive.Returned None
     | Some r -> r
     | None -> match Io_primitives.call ctx name cs.primitive_args with
     | Some r -> r
@@ -632,6 +634,12 @@ let call_primitive cfg (cs : call_state) name =
   (match Motion_primitives.take_new_move cfg.motion with
    | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
    | None -> ());
+  match !exhausted with
+  | Some m ->
+      (* The history --samples or rapid-sem motion keeps, beyond its budget (doc/motion.md). *)
+      cfg.focus <- F_done (Resource_exhausted (Source.to_string cs.call.call_at ^ ": " ^ m));
+      ("motion-history-exhausted", List.rev !events)
+  | None ->
   match result with
   | Primitive.Wait wait ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)

@@ -48,11 +48,15 @@ type state = {
   robot : MM.Robot.t;
   kin : MM.Kinematics.t;
   planner : P.t;
-  mutable tracks : track list;                 (* moves not yet ended, oldest first *)
+  mutable tracks : track list;                 (* moves not yet ended, oldest first ... *)
+  mutable tracks_back : track list;            (* ... then these, newest first (added by add_track) *)
   mutable outputs : (int * int * float) list;  (* MoveLDO/MoveJDO: move, signal, value *)
   mutable fresh : event list;                  (* newest first *)
   mutable check_at : float;                    (* the next time a tracked move may change *)
   mutable dirty : bool;                        (* the queue changed since the last look *)
+  mutable reshaped : bool;                     (* ... by more than a plan (a path command, a stop) *)
+  history_budget : int option;                 (* None: the planner forgets (Planner.forget) *)
+  mutable first_target : float array option;   (* move 0's point, which the planner may forget *)
   mutable tool : V.t;                          (* the active tool and work object (CTool, CRobT) *)
   mutable wobj : V.t;
   mutable first_poll : float option;           (* WaitUntil \InPos: polls begin at standstill *)
@@ -73,10 +77,11 @@ type state = {
 
 let dummy = V.Bool false
 
-let create ?(robot = MM.Robot.irb120) () =
+let create ?(robot = MM.Robot.irb120) ?history () =
   let kin = MM.Kinematics.create robot in
-  { robot; kin; planner = P.create kin; tracks = []; outputs = []; fresh = []; check_at = infinity;
-    dirty = false; tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
+  { robot; kin; planner = P.create kin; tracks = []; tracks_back = []; outputs = []; fresh = [];
+    check_at = infinity; dirty = false; reshaped = false; history_budget = history; first_target = None;
+    tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None }
 
@@ -260,35 +265,90 @@ let standstill st () = P.finished_by st.planner
 
 (* ------------------------------------------------------------------ the motion events *)
 
+let all_tracks st =
+  if st.tracks_back <> [] then (st.tracks <- st.tracks @ List.rev st.tracks_back; st.tracks_back <- []);
+  st.tracks
+
+let add_track st tr = st.tracks_back <- tr :: st.tracks_back
+
+let no_tracks st = st.tracks = [] && st.tracks_back = []
+
+(* What the clock has passed of the tracked moves: their beginnings and ends, and the moves
+   dropped. After a plan alone the moves' times only grow with their ids (a move begins where the
+   one before it ends, or later), so the walk stops at the first move not ended: nothing later can
+   have passed; after a path command every move is looked at again. *)
 let check st ~now =
   (* The clock counts microseconds: a time is passed when its microsecond is. *)
   let passed t = t <= now || (t < 1e12 && now < 1e12 && W.seconds t <= W.seconds now) in
   let w_next = ref infinity in
   let events = ref [] in
   let level1 = P.path_level st.planner = 1 in
-  let span = P.segment_spans st.planner (List.map (fun tr -> tr.t_id) st.tracks) in
-  st.tracks <- List.filter (fun tr ->
-      match span tr.t_id with
-      | None ->
-          (* Dropped when ClearPath ran, not when an engine next looks: the machine looks a step
-             later than the closure engine, and both must write the same time. *)
-          let time = Option.value st.cleared_at ~default:now in
-          if level1 then (events := Segment_dropped { time; id = tr.t_id; label = tr.t_label } :: !events; false)
-          else true
-      | Some (s, e) ->
-          if not tr.started && passed s then begin
-            tr.started <- true; events := Segment_started { time = s; id = tr.t_id; label = tr.t_label } :: !events
-          end;
-          if not tr.ended && passed e then begin
-            tr.ended <- true; events := Segment_ended { time = e; id = tr.t_id; label = tr.t_label } :: !events
-          end;
-          if not tr.started then w_next := Float.min !w_next s;
-          if not tr.ended then w_next := Float.min !w_next e;
-          not tr.ended) st.tracks;
+  let look span tr =
+    match span with
+    | None ->
+        (* Dropped when ClearPath ran, not when an engine next looks: the machine looks a step
+           later than the closure engine, and both must write the same time. *)
+        let time = Option.value st.cleared_at ~default:now in
+        if level1 then (events := Segment_dropped { time; id = tr.t_id; label = tr.t_label } :: !events; false)
+        else true
+    | Some (s, e) ->
+        if not tr.started && passed s then begin
+          tr.started <- true; events := Segment_started { time = s; id = tr.t_id; label = tr.t_label } :: !events
+        end;
+        if not tr.ended && passed e then begin
+          tr.ended <- true; events := Segment_ended { time = e; id = tr.t_id; label = tr.t_label } :: !events
+        end;
+        if not tr.started then w_next := Float.min !w_next s;
+        if not tr.ended then w_next := Float.min !w_next e;
+        not tr.ended in
+  let full tracks =
+    let span = P.segment_spans st.planner (List.map (fun tr -> tr.t_id) tracks) in
+    List.filter (fun tr -> look (span tr.t_id) tr) tracks in
+  (* The moves not looked at stay in [tracks_back]: adding one costs nothing. *)
+  let rec ahead = function
+    | [] when st.tracks_back <> [] -> let back = List.rev st.tracks_back in st.tracks_back <- []; ahead back
+    | [] -> []
+    | tr :: rest as tracks -> (
+        match P.segment_span st.planner tr.t_id with
+        | None -> let back = List.rev st.tracks_back in st.tracks_back <- []; full (tracks @ back)
+        | span -> if look span tr then tracks else ahead rest) in
+  st.tracks <- (if st.reshaped || not level1 then full (all_tracks st) else ahead st.tracks);
+  st.reshaped <- false;
   (* Its drops are all made now: a later one has its own cause and time. *)
   st.cleared_at <- None;
   st.check_at <- !w_next;
   List.stable_sort (fun a b -> compare (event_time a) (event_time b)) (List.rev !events)
+
+(* ------------------------------------------------------------------ memory *)
+
+(* Without history the planner gives back what no move still tracked, no output to place, no
+   move an error was raised at and no later look needs (doc/motion.md, "Memory"): what a run
+   holds does not grow with the moves it has made. *)
+let forget st ~now =
+  if st.history_budget = None then begin
+    let keep = Option.value st.last_planned ~default:0 in
+    let keep = match st.tracks, List.rev st.tracks_back with
+      | tr :: _, _ | [], tr :: _ -> min keep tr.t_id | [], [] -> keep in
+    let keep = List.fold_left (fun k (id, _, _) -> min k id) keep st.outputs in
+    let keep = match st.interrupted with Some (id, _) -> min keep id | None -> keep in
+    P.forget st.planner ~before:now ~keep
+  end
+
+exception History_exhausted of string
+
+(* With history (--samples, rapid-sem motion), each move kept counts [history_bytes] against
+   the budget of --max-memory, apart from RAPID data: about what a move's segment and pieces of
+   path take (bench/motion_bench.ml's "planner's data": 850 bytes), and what the drawings of
+   rapid-sem motion build from them (its samples of each piece, its marks). *)
+let history_bytes = 4096
+
+let charge_history st id =
+  match st.history_budget with
+  | Some budget when (id + 1) > budget / history_bytes ->
+      raise (History_exhausted (Printf.sprintf
+        "the motion history of %d moves (%d bytes each, kept for --samples or rapid-sem motion) goes beyond the \
+         memory budget of %d bytes (--max-memory)" (id + 1) history_bytes budget))
+  | _ -> ()
 
 (* ------------------------------------------------------------------ moves *)
 
@@ -298,10 +358,17 @@ let max_conc = 5
 
 (* Where the arm will stand when it has done all it was given: the point of the last move
    still queued, or where it stands. *)
+(* Move 0's point (the planner may have forgotten it). *)
+let first_target st = match st.first_target with Some q -> q | None -> P.target_joints st.planner 0
+
+let planned st id =
+  if id = 0 then st.first_target <- Some (P.target_joints st.planner 0);
+  charge_history st id
+
 let arm_end_joints st now =
   match st.last_planned with
   | Some id when P.segment_span st.planner id <> None -> P.target_joints st.planner id
-  | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> P.target_joints st.planner 0)
+  | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> first_target st)
 
 let tool0_value () =
   V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
@@ -359,7 +426,7 @@ let move ctx st name args =
       (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
          the error handler (StorePath ... RestoPath), while its path is there. *)
       let interrupted = match st.interrupted with
-        | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) st.tracks -> st.interrupted <- None; None
+        | Some (id, _) when List.for_all (fun tr -> tr.t_id <> id) (all_tracks st) -> st.interrupted <- None; None
         | Some (_, k) as i when k = key -> st.interrupted <- None; i
         | _ -> None in
       (* At most five \Conc moves in a row (ABB, MoveL \Conc; installed-facts.md section 5): a
@@ -385,10 +452,12 @@ let move ctx st name args =
               ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label ?eax
               (speed_of speed) (zone_of zone) motion in
           (* What the robot did before this move is observed before it is planned. *)
-          if st.tracks <> [] then st.fresh <- List.rev_append (check st ~now) st.fresh;
+          if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
+          forget st ~now;
           match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
+              planned st id;
               (* MoveExtJ has no tool: the active tool and work object stay. *)
               if not ext then begin
                 st.tool <- V.copy tool;
@@ -407,7 +476,7 @@ let move ctx st name args =
               List.iter (fun (P.Corner_path_failure k) ->
                   let text = Printf.sprintf "corner path failure: move %d stops at its point" k in
                   ctx.log text; emit st (Motion_warning { time = now; text })) warnings;
-              st.tracks <- st.tracks @ [ { t_id = id; t_label = target_label; started = false; ended = false } ];
+              add_track st { t_id = id; t_label = target_label; started = false; ended = false };
               st.dirty <- true;
               (* MoveLDO, MoveJDO: the output changes where the robot passes the point. *)
               (match String.lowercase_ascii name with
@@ -442,7 +511,7 @@ let place_outputs st w =
 (* The move the robot executes at a time: the oldest one not yet ended; standing still, the last
    one planned. *)
 let motion_pointer st =
-  match List.find_opt (fun tr -> not tr.ended) st.tracks with
+  match List.find_opt (fun tr -> not tr.ended) (all_tracks st) with
   | Some tr -> Some tr.t_id
   | None -> st.last_planned
 
@@ -460,7 +529,7 @@ let collide st w =
       let moving = (not (P.stopped st.planner)) && P.finished_by st.planner > t +. 1e-9 in
       if moving then begin
         P.stop st.planner ~at:t;
-        st.dirty <- true;
+        st.dirty <- true; st.reshaped <- true;
         emit st (Path_command { time = t; command = "collision" });
         st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org;
                            a_handled = st.collision_handling }
@@ -471,7 +540,8 @@ let collide st w =
 let drain st w =
   let now = W.now w in
   if st.outputs <> [] then place_outputs st w;
-  let seen = if st.tracks <> [] && (st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12)) then (st.dirty <- false; check st ~now) else [] in
+  let due = st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12) in
+  let seen = if not (no_tracks st) && due then (st.dirty <- false; check st ~now) else [] in
   if st.collisions <> Some [] then collide st w;
   let fresh = List.rev st.fresh in
   st.fresh <- [];
@@ -480,7 +550,7 @@ let drain st w =
 let finish st =
   let fresh = List.rev st.fresh in
   st.fresh <- [];
-  fresh @ (if st.tracks = [] then [] else check st ~now:infinity)
+  fresh @ (if no_tracks st then [] else check st ~now:infinity)
 
 (* §7.2: "an active Movex instruction clears part of its path": the move instruction whose wait
    is left by an error or a long jump is cancelled, and the robot stands where it is (ClearPath). *)
@@ -489,7 +559,7 @@ let wait_abandoned st w ~now =
     st.move_waits <- List.filter (fun m -> m != w) st.move_waits;
     P.clear st.planner ~at:now;
     st.cleared_at <- Some now;
-    st.dirty <- true;
+    st.dirty <- true; st.reshaped <- true;
     emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
   end
 
@@ -537,6 +607,7 @@ let search ctx st name args =
       match P.plan st.planner ~now m with
       | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
+          planned st move;
           st.conc_run <- 0;
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
@@ -545,7 +616,7 @@ let search ctx st name args =
           emit st (Segment_planned { time = now; id = move; instruction = name; label = target_label;
                                      zone = "fine"; target = G.pmult (world_flange st move joints) tool_d.tframe;
                                      joints; ready_time; start_time; end_time });
-          st.tracks <- st.tracks @ [ { t_id = move; t_label = target_label; started = false; ended = false } ];
+          add_track st { t_id = move; t_label = target_label; started = false; ended = false };
           st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
           let previous = ref (W.read w id) and found = ref false and asked = ref nan in
           let record () =
@@ -557,7 +628,7 @@ let search ctx st name args =
                  | Ok r -> box.(i) <- robtarget_value ~extax:(eax_value e) r
                  | Error _ -> ())
              | _ -> ());
-            if stops then (P.clear st.planner ~at:t; st.cleared_at <- Some t; st.dirty <- true;
+            if stops then (P.clear st.planner ~at:t; st.cleared_at <- Some t; st.dirty <- true; st.reshaped <- true;
                            emit st (Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
@@ -618,7 +689,9 @@ let base_for ctx st eax =
 let path_command ctx st command f =
   let now = W.now ctx.world in
   match f now with
-  | Ok () -> st.dirty <- true; emit st (Path_command { time = now; command }); Returned None
+  | Ok () ->
+      st.dirty <- true; st.reshaped <- true; emit st (Path_command { time = now; command });
+      forget st ~now; Returned None
   | Error e -> fail ctx command e
 
 let call_unguarded (ctx : context) st name args =
@@ -662,7 +735,7 @@ let call_unguarded (ctx : context) st name args =
   | "stopmovereset" -> Some (Returned None)
   | "startmoveretry" ->
       (* StartMove and RETRY in one (ABB: for error handlers; outside one, RETRY's own rule). *)
-      P.start st.planner ~at:now; st.dirty <- true;
+      P.start st.planner ~at:now; st.dirty <- true; st.reshaped <- true;
       emit st (Path_command { time = now; command = "StartMove" });
       Some Retry_requested
   | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
@@ -674,7 +747,7 @@ let call_unguarded (ctx : context) st name args =
          that made the robot's path (\SyncOrgMoveInst, also without a switch: R-7.4-a). *)
       P.stop st.planner ~at:now;
       emit st (Path_command { time = now; command = "ProcerrRecovery" });
-      st.dirty <- true;
+      st.dirty <- true; st.reshaped <- true;
       let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
       st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode; a_handled = true };
       Some (Returned None)

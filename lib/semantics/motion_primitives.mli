@@ -34,8 +34,19 @@ val event_time : event -> float
 type state
 (** The motion of one run: the robot, its planner, the active tool and work object. *)
 
-val create : ?robot:Rapid_motion_model.Robot.t -> unit -> state
-(** The robot (default the IRB 120) standing at axis angles 0 from time 0. *)
+val create : ?robot:Rapid_motion_model.Robot.t -> ?history:int -> unit -> state
+(** The robot (default the IRB 120) standing at axis angles 0 from time 0. Without [history] the
+    planner forgets what the run no longer needs (doc/motion.md, "Memory"): its memory does not
+    grow with the moves made, and the planner answers for the present and the future only. With
+    [history] (a budget in bytes, --max-memory's) the whole path is kept, for samples and
+    drawings, each move counting {!history_bytes}; the move beyond the budget raises
+    {!History_exhausted}. *)
+
+exception History_exhausted of string
+(** The motion history goes beyond its budget: the message says so; the engine ends the run as a
+    resource exhausted (§1.4). *)
+
+val history_bytes : int
 
 val robot_data : state -> Ir.program -> Ir.program
 (** The installed data that depend on the robot: vmax's v_tcp is its maximum TCP speed. *)
