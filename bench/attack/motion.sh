@@ -13,8 +13,9 @@
 # and rapid-sem motion --svg --timeline --csv writing into the campaign's folder.
 #
 # Counted: exit 125 (internal error), exit 134 (the runtime's abort, "Fatal error: out of
-# memory"), hangs (the timeout struck), and other failures, which the motion surface must never
-# show: death by another signal (exit above 128), "internal error" or "Fatal error" on standard
+# memory"), hangs (20 s of processor time, or 120 s of wall-clock time, struck), and other
+# failures, which the motion surface must never show: death by another signal (exit above 128),
+# "internal error" or "Fatal error" on standard
 # error, the machine's memory running out ("out of memory": the motion history is bounded by
 # --max-memory, a run without history does not grow), a file written outside the campaign's
 # folder. The generated inputs go to a temporary folder, removed at the end. The last line:
@@ -104,7 +105,9 @@ run_one() {
     samples) cmd=(run --json --samples 50 $opts) ;;
     motion) cmd=(motion --svg "$TMP/out/$b.svg" --timeline "$TMP/out/$b-t.svg" --csv "$TMP/out/$b.csv" $opts) ;;
   esac
-  ( ulimit -v 1500000; cd "$TMP/out" && exec timeout -s KILL 20 "$BIN" "${cmd[@]}" "$f" ) \
+  # A hang is 20 s of processor time (ulimit -t: SIGXCPU, then SIGKILL), not of wall-clock time,
+  # so that a loaded machine does not make a slow run a hang; the wall-clock bound stays, wider.
+  ( ulimit -v 1500000; ulimit -t 20; cd "$TMP/out" && exec timeout -s KILL 120 "$BIN" "${cmd[@]}" "$f" ) \
     > /dev/null 2> "$TMP/res/$b.err"
   rc=$?
   echo "$rc" > "$TMP/res/$b.rc"
@@ -120,7 +123,7 @@ for r in "$TMP"/res/*.rc; do
   case $rc in
     125) e125=$((e125 + 1)); echo "exit 125: $b: $(head -c 300 "$err")" >&2 ;;
     134) e134=$((e134 + 1)); echo "exit 134: $b: $(head -c 300 "$err")" >&2 ;;
-    137) hangs=$((hangs + 1)); echo "hang: $b" >&2 ;;
+    137|152) hangs=$((hangs + 1)); echo "hang: $b" >&2 ;;
     *)
       if [ "$rc" -gt 128 ] || grep -q -e "internal error" -e "Fatal error" -e "out of memory" "$err"; then
         other=$((other + 1)); echo "other failure (exit $rc): $b: $(head -c 300 "$err")" >&2
