@@ -202,6 +202,26 @@ let latin1_that_would_turn_utf8 () =
       Alcotest.(check bool) "p" true (value_of data "p" = Some (V.String "abc"));
       Alcotest.(check bool) "q as before" true (value_of data "q" = Some (V.String "\xC3\x83\xC2\xA9"))
 
+(* A save is linear in the persistents: each declaration looked its value up in the whole list,
+   N * N / 2 comparisons (minutes for 50,000). The bound is wide: linear takes about a second. *)
+let many_persistents () =
+  with_dir @@ fun dir ->
+  let n = 50_000 in
+  let source = Filename.concat dir "big.mod" and out = Filename.concat dir "out" in
+  let b = Buffer.create (n * 24) in
+  Buffer.add_string b "MODULE big\n";
+  for i = 0 to n - 1 do Buffer.add_string b (Printf.sprintf "PERS num p%d := %d;\n" i i) done;
+  Buffer.add_string b "ENDMODULE\n";
+  write_file source (Buffer.contents b);
+  let data = List.init n (fun i -> ("BIG", Printf.sprintf "P%d" i, V.num (float_of_int (if i = 0 then 1 else i)))) in
+  let t0 = Unix.gettimeofday () in
+  (match P.save_modules ~dir:out ~files:[ source ] data with Ok _ -> () | Error e -> Alcotest.fail e);
+  let took = Unix.gettimeofday () -. t0 in
+  Alcotest.(check bool) (Printf.sprintf "50,000 persistents saved in %.1f s (bound 20 s)" took) true (took < 20.);
+  let saved = read_file (Filename.concat out "big.mod") in
+  let expected = Str.replace_first (Str.regexp_string "p0 := 0;") "p0 := 1;" (Buffer.contents b) in
+  Alcotest.(check bool) "only p0 changed" true (saved = expected)
+
 let refusals () =
   with_dir @@ fun dir ->
   let a = Filename.concat dir "m.mod" and sub = Filename.concat dir "b" in
@@ -261,6 +281,7 @@ let suite = ("save", [
     Alcotest.test_case "--save: random values read back, a second save changes nothing" `Quick property;
     Alcotest.test_case "--save: bytes above 0x7F saved twice" `Quick high_bytes_twice;
     Alcotest.test_case "--save: a Latin-1 module that would read as UTF-8" `Quick latin1_that_would_turn_utf8;
+    Alcotest.test_case "--save: 50,000 persistents, linear" `Quick many_persistents;
     Alcotest.test_case "--save: empty folder, one base name twice" `Quick refusals;
     Alcotest.test_case "--save: temporary files of killed saves" `Quick stale_parts;
   ])
