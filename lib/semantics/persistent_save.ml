@@ -139,6 +139,16 @@ let apply text at literal edits =
 
 let bom = "\xEF\xBB\xBF"
 
+(* A literal's bytes as the characters a file of that encoding reads them as, in UTF-8: the
+   Latin-1 byte c is U+00c. *)
+let as_characters ~latin1 s =
+  if not latin1 then s
+  else begin
+    let b = Buffer.create (String.length s) in
+    String.iter (fun c -> Buffer.add_utf_8_uchar b (Uchar.of_char c)) s;
+    Buffer.contents b
+  end
+
 let splice ~original m current =
   let d = Decode.decode original in
   let offsets = text_offsets d in
@@ -147,14 +157,18 @@ let splice ~original m current =
   (* The same characters measured in the file's own unit: a byte of a Latin-1 file is one
      character, a UTF-8 file is the decoded text itself. *)
   let raw_at c = skip + (if d.latin1 then c else offsets.(c)) in
-  let spliced = apply original raw_at (literal_in ~latin1:d.latin1) es in
-  let meant = apply d.text (fun c -> offsets.(c)) literal es in
-  if (Decode.decode spliced).text = meant then spliced
+  let in_file = literal_in ~latin1:d.latin1 in
+  let spliced = apply original raw_at in_file es in
+  (* What the spliced file must read as: the old text with these very literals, as characters.
+     Comparing with the UTF-8 literals instead would call a Latin-1 file changed whenever a
+     value holds a character beyond U+00FF, which its literal spells as \HH (R-2.23-save2n). *)
+  let expected = apply d.text (fun c -> offsets.(c)) (fun v -> as_characters ~latin1:d.latin1 (in_file v)) es in
+  if (Decode.decode spliced).text = expected then spliced
   else
     (* A Latin-1 file whose only bytes that are not UTF-8 stood in the replaced values would
        now read as UTF-8, and any other character above U+007F would change: the module is
        written as UTF-8 (chapter 16), every character as it was (R-2.23-save1). *)
-    (if d.byte_order_mark then bom else "") ^ meant
+    (if d.byte_order_mark then bom else "") ^ apply d.text (fun c -> offsets.(c)) literal es
 
 (* -------------------------------------------------------------------------------- writing *)
 
