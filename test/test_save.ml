@@ -136,6 +136,13 @@ let round_trip (f, decl, v) =
         | Some w -> QCheck.Test.fail_reportf "read back as %s\n%S" (show w) once
         | None -> QCheck.Test.fail_reportf "p is missing\n%S" once);
        if value_of data "q" <> Some (V.String "q") then QCheck.Test.fail_reportf "q changed\n%S" once);
+  (* Everything but the value stays byte for byte (doc/services.md), in a Latin-1 module too:
+     every Latin-1 comment here holds a byte that is not UTF-8, so the module stays Latin-1. *)
+  let lines t =
+    Str.split (Str.regexp "[\r\n]") t
+    |> List.filter (fun l -> not (Str.string_match (Str.regexp ".*PERS [a-z]+ p[^a-z]") l 0)) in
+  if lines once <> lines original then
+    QCheck.Test.fail_reportf "a byte outside the value changed:\n%S\n%S" original once;
   let twice = save once in
   if twice <> once then QCheck.Test.fail_reportf "a second save changed the module:\n%S\n%S" once twice;
   true
@@ -202,6 +209,45 @@ let latin1_that_would_turn_utf8 () =
       Alcotest.(check bool) "p" true (value_of data "p" = Some (V.String "abc"));
       Alcotest.(check bool) "q as before" true (value_of data "q" = Some (V.String "\xC3\x83\xC2\xA9"))
 
+(* A Latin-1 module (its comment's byte E9 is not UTF-8) whose string is set to é€ (bytes C3 A9
+   E2 82 AC): é is its one Latin-1 byte, € has none and is written \E2\82\AC; every other byte
+   stays as it was, and the value reads back (R-2.23-save2n). It was rewritten as UTF-8. *)
+let latin1_beyond_latin1 () =
+  with_dir @@ fun dir ->
+  let source = Filename.concat dir "m.mod" and out = Filename.concat dir "out" in
+  let module_with value =
+    "MODULE m\n  ! caf\xE9\n  PERS string s1 := " ^ value
+    ^ ";\n  PROC main()\n    s1 := \"\\C3\\A9\\E2\\82\\AC\";\n  ENDPROC\nENDMODULE\n" in
+  write_file source (module_with "\"\"");
+  Alcotest.(check int) "saved" 0 (fst (run_quietly [ "run"; "--save"; out; source ]));
+  let saved = read_file (Filename.concat out "m.mod") in
+  Alcotest.(check string) "only the value changed, Latin-1 where it can be"
+    (module_with "\"\xE9\\E2\\82\\AC\"") saved;
+  match load saved with
+  | Error e -> Alcotest.fail e
+  | Ok (_, data) ->
+      Alcotest.(check bool) "s1 reads back" true (value_of data "s1" = Some (V.String "\xC3\xA9\xE2\x82\xAC"))
+
+(* A save is linear in the persistents: each declaration looked its value up in the whole list,
+   N * N / 2 comparisons (minutes for 50,000). The bound is wide: linear takes about a second. *)
+let many_persistents () =
+  with_dir @@ fun dir ->
+  let n = 50_000 in
+  let source = Filename.concat dir "big.mod" and out = Filename.concat dir "out" in
+  let b = Buffer.create (n * 24) in
+  Buffer.add_string b "MODULE big\n";
+  for i = 0 to n - 1 do Buffer.add_string b (Printf.sprintf "PERS num p%d := %d;\n" i i) done;
+  Buffer.add_string b "ENDMODULE\n";
+  write_file source (Buffer.contents b);
+  let data = List.init n (fun i -> ("BIG", Printf.sprintf "P%d" i, V.num (float_of_int (if i = 0 then 1 else i)))) in
+  let t0 = Unix.gettimeofday () in
+  (match P.save_modules ~dir:out ~files:[ source ] data with Ok _ -> () | Error e -> Alcotest.fail e);
+  let took = Unix.gettimeofday () -. t0 in
+  Alcotest.(check bool) (Printf.sprintf "50,000 persistents saved in %.1f s (bound 20 s)" took) true (took < 20.);
+  let saved = read_file (Filename.concat out "big.mod") in
+  let expected = Str.replace_first (Str.regexp_string "p0 := 0;") "p0 := 1;" (Buffer.contents b) in
+  Alcotest.(check bool) "only p0 changed" true (saved = expected)
+
 let refusals () =
   with_dir @@ fun dir ->
   let a = Filename.concat dir "m.mod" and sub = Filename.concat dir "b" in
@@ -261,6 +307,8 @@ let suite = ("save", [
     Alcotest.test_case "--save: random values read back, a second save changes nothing" `Quick property;
     Alcotest.test_case "--save: bytes above 0x7F saved twice" `Quick high_bytes_twice;
     Alcotest.test_case "--save: a Latin-1 module that would read as UTF-8" `Quick latin1_that_would_turn_utf8;
+    Alcotest.test_case "--save: a Latin-1 module given characters beyond Latin-1" `Quick latin1_beyond_latin1;
+    Alcotest.test_case "--save: 50,000 persistents, linear" `Quick many_persistents;
     Alcotest.test_case "--save: empty folder, one base name twice" `Quick refusals;
     Alcotest.test_case "--save: temporary files of killed saves" `Quick stale_parts;
   ])

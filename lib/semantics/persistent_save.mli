@@ -19,8 +19,10 @@ val splice :
 (** The module's text (the file's bytes) with each module-level PERS declaration's initial
     value replaced by the value the function gives for its name ([None]: unchanged); a PERS
     declared without an initial value gets [:= value]. The regions are measured in characters
-    and replaced in the file's bytes, in its encoding; a Latin-1 file that would then read as
-    UTF-8 with other characters is written as UTF-8 instead (doc/rulings.md R-2.23-save1). *)
+    and replaced in the file's bytes, in its encoding (a character beyond U+00FF in a Latin-1
+    file's value as [\HH] codes, the file staying Latin-1, R-2.23-save2n); only a Latin-1 file
+    that would then read as UTF-8 with other characters is written as UTF-8 instead
+    (doc/rulings.md R-2.23-save1). *)
 
 val write_atomically : string -> string -> (unit, string) result
 (** [write_atomically path text]: the text goes to the temporary file [path.PID.rapid-sem.part]
