@@ -1,3 +1,4 @@
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
 module Stream = Rapid_oracle.Event_stream
 
 type result = { case : Spec_case.t; passed : bool; skipped : bool; detail : string }
@@ -263,7 +264,7 @@ let run ?(verbose = false) ?timeout ?reference ?ignore ?junit ?json ~template ou
   Format.fprintf out "@.%-10s %7s %7s@." "section" "passed" "failed";
   List.iter (fun s -> let p, f = Hashtbl.find by_section s in Format.fprintf out "%-10s %7d %7d@." s p f) sections;
   Option.iter (fun path -> write path (junit_xml results)) junit;
-  Option.iter (fun path -> write path (Yojson.Safe.pretty_to_string (json_report results) ^ "\n")) json;
+  Option.iter (fun path -> write path (Json_text.pretty_to_string (json_report results) ^ "\n")) json;
   let passed = List.length (List.filter (fun r -> r.passed) results) in
   let failed = List.length (List.filter (fun r -> not r.passed && not r.skipped) results) + List.length errors in
   let skipped = List.length (List.filter (fun r -> r.skipped) results) in
