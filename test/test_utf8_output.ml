@@ -64,6 +64,10 @@ let case_run =
 let case_refused =
   "! @section 2.5\n! @expect syntax-error 3:5\nMODULE m\n  PROC main()\n    x := ;\n  ENDPROC\nENDMODULE\n"
 
+let rec xml_parse input =
+  match Xmlm.input input with
+  | `Dtd _ | `El_start _ | `El_end | `Data _ -> if Xmlm.eoi input then () else xml_parse input
+
 (* The spec run once for both reports' tests: its two files' texts. *)
 let reports = lazy (
   let dir = temp_dir () in
@@ -87,6 +91,15 @@ let report_json () =
   ignore (Yojson.Safe.from_string json);
   if not (contains json "RED") then Alcotest.failf "the output is not reported: %s" json
 
+let junit_xml () =
+  let _, xml = Lazy.force reports in
+  strict_utf8 "j.xml" xml;
+  (match xml_parse (Xmlm.make_input (`String (0, xml))) with
+   | () -> ()
+   | exception Xmlm.Error ((l, c), e) -> Alcotest.failf "j.xml:%d:%d: %s\n%s" l c (Xmlm.error_message e) xml);
+  if not (contains xml "RED") then Alcotest.failf "the output is not reported: %s" xml;
+  if not (contains xml "\\1B") then Alcotest.failf "j.xml: ESC is not written as \\1B: %s" xml
+
 let suite =
   ( "utf8 output",
     List.concat_map (fun (what, program, commands) ->
@@ -95,4 +108,5 @@ let suite =
               (file_name_refused program c)) commands)
       [ ("syntax error", syntax_error, commands @ [ ("verdict --stage parse", true) ]);
         ("semantic error", semantic_error, commands) ]
-    @ [ Alcotest.test_case "spec --impl writing 0xFF and ESC: --report-json is UTF-8 JSON" `Quick report_json ] )
+    @ [ Alcotest.test_case "spec --impl writing 0xFF and ESC: --report-json is UTF-8 JSON" `Quick report_json;
+        Alcotest.test_case "spec --impl writing 0xFF and ESC: --junit is well-formed XML" `Quick junit_xml ] )
