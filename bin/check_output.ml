@@ -4,6 +4,7 @@
    the static semantics are first made one kind of item, so that every format carries the same
    fields: file, region, class, rule, sections, message, hint. *)
 
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
 open Rapid_syntax
 module Report = Rapid_typing.Report
 
@@ -101,5 +102,5 @@ type format = Text | Json | Sarif
 let print ~version format items =
   match format with
   | Text -> List.iter (fun i -> prerr_endline i.text) items
-  | Json -> print_endline (Yojson.Safe.pretty_to_string (json items))
-  | Sarif -> print_endline (Yojson.Safe.pretty_to_string (sarif ~version items))
+  | Json -> print_endline (Json_text.pretty_to_string (json items))
+  | Sarif -> print_endline (Json_text.pretty_to_string (sarif ~version items))

@@ -2,6 +2,7 @@
    (doc/user-guide.md): 0 success, 2 a static error (lexical, syntax, fatal), 1 a failing
    conformance suite, 125 an internal error of rapid-sem. *)
 
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
 open Cmdliner
 open Rapid_syntax
 
@@ -264,7 +265,7 @@ let exit_unsupported = 4
 let report_load_failure ?(json = false) failure =
   (* With --json, a program refused before it runs still gives an event stream: the start line
      and an end object naming the first error (doc/oracle.md). *)
-  if json then Option.iter (fun j -> List.iter (fun l -> print_endline (Yojson.Safe.to_string l)) j)
+  if json then Option.iter (fun j -> List.iter (fun l -> print_endline (Json_text.to_string l)) j)
       (Verdict.stream_of_failure failure);
   match failure with
   | Rapid_semantics.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
@@ -472,7 +473,7 @@ let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry
           ~observe loaded.program ~entry with
   | Error m ->
       if json = Some true then
-        List.iter (fun j -> print_endline (Yojson.Safe.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
+        List.iter (fun j -> print_endline (Json_text.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok cfg -> k cfg
 
@@ -481,7 +482,7 @@ let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry
 let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodelled) max_depth (retry_limit, max_memory) json
     controller print_event =
   in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
-  if json then print_endline (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+  if json then print_endline (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
   let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
   let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
@@ -490,11 +491,11 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
   match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
           ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
   | Error m ->
-      if json then print_endline (Yojson.Safe.to_string (refused_entry_json files entry));
+      if json then print_endline (Json_text.to_string (refused_entry_json files entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok { outcome; fuel_used } ->
       report_stubbed (List.rev !stubbed);
-      if json then print_endline (Yojson.Safe.to_string
+      if json then print_endline (Json_text.to_string
                                     (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
       (* --save: as the machine's run writes them (Persistent_save). *)
       let saved = match save with
@@ -569,7 +570,7 @@ let with_task name = function
 (* One task-end object per task (as the end object of one task), before the run's end. *)
 let task_ends ts =
   List.iter (fun (name, cfg) ->
-      print_line (Yojson.Safe.to_string
+      print_line (Json_text.to_string
                     (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
                      | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
                      | j -> j))) (Rapid_semantics.Task_set.tasks ts)
@@ -585,21 +586,21 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
   | Error f -> refused_tasks ~json f
   | Ok (ct, warnings) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
-      if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
+      if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       let on_event name (e : M.event) =
         report_stubbed [ e ];
-        if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
+        if json then print_line (Json_text.to_string (with_task name (event_json e)))
         else match e with Output s -> print_line s | _ -> () in
       let r = CT.run ~fuel:max_steps ~all_events:(json || stub_unmodelled) ~observe:json ~on_event ct in
       let steps = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
       if json then begin
         List.iter (fun (t : CT.task_result) ->
-            print_line (Yojson.Safe.to_string
+            print_line (Json_text.to_string
                           (match outcome_json t.task_outcome t.fuel_used with
                            | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String t.name) :: rest)
                            | j -> j))) r.tasks;
-        print_line (Yojson.Safe.to_string (outcome_json r.outcome steps))
+        print_line (Json_text.to_string (outcome_json r.outcome steps))
       end;
       flush_output ();
       finish r.outcome steps ~max_steps
@@ -608,14 +609,14 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
   let module TS = Rapid_semantics.Task_set in
   start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth
     retry_limit controller robot @@ fun ts names ->
-      if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
+      if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       (* --samples: the motion task's robot, as the one clock passes the samples; each
          tcp-sample names the motion task. *)
       let robot_task = List.find_opt (fun (_, cfg) -> Rapid_controller.World.motion_task (M.world cfg)) (TS.tasks ts) in
       let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
       let print_samples l =
-        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Yojson.Safe.to_string (with_task name j))) l) robot_task in
+        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
@@ -625,7 +626,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
               Option.iter (fun s -> Option.iter (fun (_, cfg) ->
                   print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
               List.iter (fun (e : M.event) ->
-                  if json then print_line (Yojson.Safe.to_string (with_task name (event_json e)))
+                  if json then print_line (Json_text.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
@@ -634,7 +635,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
-        print_line (Yojson.Safe.to_string (outcome_json outcome (TS.steps ts)))
+        print_line (Json_text.to_string (outcome_json outcome (TS.steps ts)))
       end;
       flush_output ();
       finish outcome (TS.steps ts) ~max_steps
@@ -694,7 +695,7 @@ let run_cmd =
     | _ ->
     single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
-      if json then print_line (Yojson.Safe.to_string (event_json e))
+      if json then print_line (Json_text.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
     if engine = `Closure && samples <> None then
       (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
@@ -703,10 +704,10 @@ let run_cmd =
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth
       retry_limit controller @@ fun cfg ->
-    if json then print_line (Yojson.Safe.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
+    if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
-    let print_samples l = List.iter (fun j -> print_line (Yojson.Safe.to_string j)) l in
+    let print_samples l = List.iter (fun j -> print_line (Json_text.to_string j)) l in
     let rec loop () =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
@@ -714,14 +715,14 @@ let run_cmd =
         Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
                                                ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
         List.iter (fun (e : M.event) ->
-            if json then print_line (Yojson.Safe.to_string (event_json e))
+            if json then print_line (Json_text.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
         loop ()
       end
     in
     loop ();
     Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
-    if json then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
+    if json then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
                                                       (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     let saved = match save with
@@ -842,7 +843,7 @@ let trace_cmd =
           let v = TV.create ~read:(fun name -> if name = Parse.stdin_name then Some (Parse.source_text "-") else None) () in
           Hashtbl.replace views task v; v in
     let view = view_of None in
-    let json j = print_line (Yojson.Safe.to_string j) in
+    let json j = print_line (Json_text.to_string j) in
     if format = `Jsonl then
       json (`Assoc [ ("schema", `String schema); ("kind", `String "trace");
                      ("level", `String (match level with `Reduction -> "reduction" | `Statement -> "statement")) ]);
@@ -966,9 +967,9 @@ let trace_cmd =
     in
     loop ();
     flush ();
-    Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Yojson.Safe.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
+    Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
     let outcome = outcome () and steps = steps () in
-    if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
+    if format = `Jsonl then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") steps;

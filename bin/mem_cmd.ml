@@ -1,5 +1,6 @@
 (* rapid-sem mem: program memory by chapter 16 (doc/memory.md). *)
 
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
 open Cmdliner
 open Rapid_syntax
 module P = Rapid_memory.Program_memory
@@ -26,7 +27,7 @@ let cmd =
         List.iter (fun m ->
             let item = P.module_memory ~records:(modules @ installed) m in
             total := !total + item.bytes;
-            if json then print_endline (Yojson.Safe.to_string (item_json item)) else print_item 0 item) modules;
+            if json then print_endline (Json_text.to_string (item_json item)) else print_item 0 item) modules;
         if not json && List.length modules > 1 then Printf.printf "%-48s %8d\n" "task buffer" !total;
         0
   in

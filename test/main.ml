@@ -37,4 +37,5 @@ let () =
       Test_tasks.suite;
       Test_observation.suite;
       Test_realprog2.suite;
+      Test_utf8_output.suite;
     ]

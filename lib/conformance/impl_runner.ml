@@ -1,3 +1,4 @@
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
 module Stream = Rapid_oracle.Event_stream
 
 type result = { case : Spec_case.t; passed : bool; skipped : bool; detail : string }
@@ -189,13 +190,27 @@ let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) 
             | _ -> { case; passed = true; skipped = false; detail = "" })
         | Error m -> { case; passed = false; skipped = false; detail = m })
 
+(* XML 1.0 text (§2.2): the bytes made UTF-8 as JSON's are (an implementation's output may be
+   anything), the markup characters as entities, the characters XML forbids (C0 controls but
+   tab, newline and carriage return; U+FFFE, U+FFFF) as \HH or U+FFFD, the three it allows as
+   references, which an attribute would otherwise turn into spaces. *)
 let xml_escape s =
+  let s = Rapid_semantics.Utf8_text.of_bytes s in
   let b = Buffer.create (String.length s) in
-  String.iter (function
-      | '<' -> Buffer.add_string b "&lt;" | '>' -> Buffer.add_string b "&gt;"
-      | '&' -> Buffer.add_string b "&amp;" | '"' -> Buffer.add_string b "&quot;"
-      | c when Char.code c < 32 && c <> '\n' && c <> '\t' -> Buffer.add_char b ' '
-      | c -> Buffer.add_char b c) s;
+  let n = String.length s in
+  let rec go i =
+    if i < n then
+      match s.[i] with
+      | '<' -> Buffer.add_string b "&lt;"; go (i + 1)
+      | '>' -> Buffer.add_string b "&gt;"; go (i + 1)
+      | '&' -> Buffer.add_string b "&amp;"; go (i + 1)
+      | '"' -> Buffer.add_string b "&quot;"; go (i + 1)
+      | ('\n' | '\t' | '\r') as c -> Printf.bprintf b "&#%d;" (Char.code c); go (i + 1)
+      | c when Char.code c < 32 -> Printf.bprintf b "\\%02X" (Char.code c); go (i + 1)
+      | '\xEF' when i + 2 < n && s.[i + 1] = '\xBF' && (s.[i + 2] = '\xBE' || s.[i + 2] = '\xBF') ->
+          Buffer.add_string b "\xEF\xBF\xBD"; go (i + 3)
+      | c -> Buffer.add_char b c; go (i + 1) in
+  go 0;
   Buffer.contents b
 
 let write path text =
@@ -263,7 +278,7 @@ let run ?(verbose = false) ?timeout ?reference ?ignore ?junit ?json ~template ou
   Format.fprintf out "@.%-10s %7s %7s@." "section" "passed" "failed";
   List.iter (fun s -> let p, f = Hashtbl.find by_section s in Format.fprintf out "%-10s %7d %7d@." s p f) sections;
   Option.iter (fun path -> write path (junit_xml results)) junit;
-  Option.iter (fun path -> write path (Yojson.Safe.pretty_to_string (json_report results) ^ "\n")) json;
+  Option.iter (fun path -> write path (Json_text.pretty_to_string (json_report results) ^ "\n")) json;
   let passed = List.length (List.filter (fun r -> r.passed) results) in
   let failed = List.length (List.filter (fun r -> not r.passed && not r.skipped) results) + List.length errors in
   let skipped = List.length (List.filter (fun r -> r.skipped) results) in

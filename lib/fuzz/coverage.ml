@@ -1,3 +1,5 @@
+module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+
 (* done and stuck are in the machine's list but are not rules (doc/semantics.md, "Not rules"):
    done is the answer after the end, stuck a bug. *)
 let rule_names =
@@ -81,7 +83,7 @@ let write_file path text =
 
 let write ~dir t =
   if not (Sys.file_exists dir) then Sys.mkdir dir 0o755;
-  write_file (Filename.concat dir "coverage.json") (Yojson.Safe.pretty_to_string (to_json t) ^ "\n");
+  write_file (Filename.concat dir "coverage.json") (Json_text.pretty_to_string (to_json t) ^ "\n");
   write_file (Filename.concat dir "coverage.md") (to_markdown t)
 
 let read path =
