@@ -44,8 +44,10 @@ val show : event -> string
 (** [to_string], clipped for a report ({!clip}). *)
 
 val clip : string -> string
-(** Text of another implementation made fit for a report: on one line, and when longer than
-    300 bytes its first 300 followed by [... (N bytes)]. *)
+(** Text of another implementation made fit for a report: on one line (a line break shown as a
+    space), each control character (C0, DEL, C1) and each byte of invalid UTF-8 shown as [\XX]
+    (hexadecimal), and when longer than 300 bytes its first characters within 300 bytes
+    followed by [... (N bytes)]: the result is valid UTF-8 and drives no terminal. *)
 
 val canonical : event -> event
 (** Fields sorted by name, recursively: how [parse] gives each event. *)
