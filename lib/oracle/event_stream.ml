@@ -105,8 +105,8 @@ let reader () = { first = None; rest = []; count = 0; values = 0 }
 
 let is_blank line = String.trim line = ""
 
-let add_line r n line =
-  if is_blank line then Ok ()
+let read_line r n line =
+  if is_blank line then Ok None
   else if r.count >= max_events then
     Error (Printf.sprintf "line %d: more than %d events" n max_events)
   else
@@ -117,13 +117,19 @@ let add_line r n line =
     | Some v -> (
         match Yojson.Safe.from_string line with
         | `Assoc _ as obj ->
-            let e = canonical obj in
-            (match r.first with None -> r.first <- Some e | Some _ -> r.rest <- e :: r.rest);
             r.count <- r.count + 1;
             r.values <- r.values + v;
-            Ok ()
+            Ok (Some (canonical obj))
         | _ -> Error (Printf.sprintf "line %d: not a JSON object" n)
         | exception Yojson.Json_error m -> Error (Printf.sprintf "line %d: not JSON (%s)" n (clip m)))
+
+let add_line r n line =
+  match read_line r n line with
+  | Ok (Some e) ->
+      (match r.first with None -> r.first <- Some e | Some _ -> r.rest <- e :: r.rest);
+      Ok ()
+  | Ok None -> Ok ()
+  | Error m -> Error m
 
 let contents r =
   let rest = List.rev r.rest in

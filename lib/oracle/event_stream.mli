@@ -28,6 +28,11 @@ val add_line : reader -> int -> string -> (unit, string) result
     that is not a JSON object, nests deeper than {!max_depth}, or comes after {!max_events}
     objects or {!max_values} values is an [Error] naming its line number, its text clipped ({!clip}). *)
 
+val read_line : reader -> int -> string -> (event option, string) result
+(** [add_line] without keeping the event: [Some] the line's event ({!canonical}), [None] for a
+    blank line; the bounds are counted all the same. What the oracle uses to compare an
+    implementation's events as they come, holding none of them. *)
+
 val contents : reader -> t
 (** What the lines read so far make. *)
 
