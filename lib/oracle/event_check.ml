@@ -74,7 +74,8 @@ let divergence t index actual =
   let expected = if index - 1 < Array.length t.expected then Some (event (index - 1)) else None in
   let first = max 0 (index - 1 - t.context) in
   let before = List.init (index - 1 - first) (fun k -> event (first + k)) in
-  let rec nearest i = if i < 0 then None else match region_of (event i) with Some r -> Some r | None -> nearest (i - 1) in
+  let rec nearest i =
+    if i < 0 then None else match region_of (event i) with Some r -> Some r | None -> nearest (i - 1) in
   let at = match Option.bind expected region_of with Some r -> Some r | None -> nearest (index - 2) in
   { Event_diff.index; expected; actual = Option.map Yojson.Safe.from_string actual; before; at }
 
