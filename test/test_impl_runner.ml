@@ -171,6 +171,11 @@ let compare_task_streams () =
   check_verdict "a task rapid-sem did not run"
     {|task C, event 1: expected (no more events), got {"event":"output","task":"C","text":"c"}|}
     (TS.compare ~expected:reference ~actual:(v2 [ out "A" "a1"; out "B" "b1"; out "A" "a2"; out "B" "b2"; out "C" "c"; the_end ]) ());
+  (* The task's name is the implementation's text: escaped like the rest (R-1-oracle2n). *)
+  check_verdict "a task name of control bytes, escaped"
+    ({|task \1B[2J, event 1: expected (no more events), got {"event":"output","task":"\u001b[2J","text":"c"}|})
+    (TS.compare ~expected:reference
+       ~actual:(v2 [ out "A" "a1"; out "B" "b1"; out "A" "a2"; out "B" "b2"; out "\027[2J" "c"; the_end ]) ());
   check_verdict "the end object, its steps not compared" "agree 5"
     (TS.compare ~expected:reference
        ~actual:(v2 [ out "A" "a1"; out "B" "b1"; out "A" "a2"; out "B" "b2"; {|{"event":"end","outcome":"ended","at":null}|} ]) ());

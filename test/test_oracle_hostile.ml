@@ -91,6 +91,46 @@ let stderr_drained () =
   Alcotest.(check (pair int string)) "agrees" (0, "oracle-program.mod: agree (29 events)\n1 agree, 0 diverge\n")
     (status, text)
 
+(* The implementation's text in a report is valid UTF-8, cut between characters, and its
+   control bytes are shown escaped: written as they are, ESC and its friends drive the
+   terminal of whoever reads the verdict (issue 21). *)
+let text_escaped () =
+  let pairs = String.concat "" (List.init 1000 (fun _ -> "\xc3\xa9\xe2\x82\xac")) in
+  let r = verdict (start ^ "\necho '{\"event\":\"routine-entered\",\"routine\":\"main\"}'\n"
+                   ^ "echo '{\"event\":\"output\",\"text\":\"" ^ pairs ^ "\"}'\n") in
+  says "cut between characters" r "\xe2\x82\xac\xc3\xa9... (5028 bytes)";
+  let r = verdict "printf '\\377\\376\\033[2J{}\\n'\n" in
+  says "escaped" r {|Invalid token '\FF\FE\1B[2J{}'|};
+  Alcotest.(check bool) (Printf.sprintf "no raw control byte in %S" r) false
+    (String.exists (fun c -> c = '\027' || Char.code c >= 0x80) r);
+  Alcotest.(check string) "C1 control, DEL and tab escaped, a valid character kept" {|a\C2\9B\7F\09\C3(é|}
+    (Rapid_oracle.Event_stream.clip "a\xc2\x9b\x7f\t\xc3(\xc3\xa9")
+
+(* The oracle's memory is bounded by a line, not by what the implementation writes: 16 MB of
+   values within every bound, and a million events, under 300 MB of address space (they took
+   500 MB and a stack overflow when every event was kept). *)
+let memory_bounded () =
+  let file name body times =
+    let path = Filename.concat (Lazy.force folder) name in
+    let oc = open_out_bin path in
+    output_string oc "{\"event\":\"start\",\"schema\":\"rapid-sem/2\"}\n";
+    for _ = 1 to times do output_string oc body done;
+    close_out oc; path in
+  let zeros = "{\"event\":\"output\",\"a\":[0" ^ String.concat "" (List.init 79_989 (fun _ -> ",0")) ^ "]}\n" in
+  let out = Filename.concat (Lazy.force folder) "memory.out" in
+  List.iter (fun (what, path) ->
+      let impl = "cat " ^ Filename.quote path ^ " # {file}" in
+      let cmd = Printf.sprintf "ulimit -v 300000; exec %s oracle --impl %s %s > %s 2>&1" (Filename.quote binary)
+          (Filename.quote impl) program (Filename.quote out) in
+      let status = Sys.command (Printf.sprintf "sh -c %s" (Filename.quote cmd)) in
+      let ic = open_in_bin out in
+      let text = really_input_string ic (in_channel_length ic) in
+      close_in ic;
+      Alcotest.(check int) (what ^ ": the verdict, not a death: " ^ Rapid_oracle.Event_stream.clip text) 1 status;
+      says what text "diverges at event 1")
+    [ ("16 MB of values", file "values.txt" zeros 100);
+      ("1,000,000 events", file "events.txt" "{\"event\":\"x\"}\n" 999_999) ]
+
 let background_child_ended () =
   let pids = pid_file "background" in
   let r = verdict (Printf.sprintf "sleep 60 & echo $! > %s\nexec \"$RAPID_SEM\" run --json \"$1\"\n"
@@ -132,6 +172,8 @@ let suite =
       Alcotest.test_case "a line longer than 1 MiB" `Quick long_line;
       Alcotest.test_case "endless events: at most 1,000,000" `Quick endless_events;
       Alcotest.test_case "a long event clipped in the report" `Quick long_event_clipped;
+      Alcotest.test_case "the implementation's text escaped in a report" `Quick text_escaped;
+      Alcotest.test_case "memory bounded by a line" `Quick memory_bounded;
       Alcotest.test_case "standard error drained, not held" `Quick stderr_drained;
       Alcotest.test_case "a background child killed at the end" `Quick background_child_ended;
       Alcotest.test_case "the group killed at the timeout" `Quick timed_out_group_ended;

@@ -22,7 +22,8 @@ let last n l =
 
 let compare ?(ignore = []) ?(context = 3) ~expected ~actual () =
   let keep e = not (List.mem (Event_stream.kind e) ignore) in
-  let prepare l = List.map strip (List.filter keep l) in
+  (* rev_map: List.map is not tail recursive, and a stream may hold a million events. *)
+  let prepare l = List.rev (List.rev_map strip (List.filter keep l)) in
   let expected = prepare expected and actual = prepare actual in
   (* [seen] holds the agreed events, newest first. *)
   let rec go i seen es as_ =

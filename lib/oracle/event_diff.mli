@@ -13,6 +13,9 @@ val implementation_specific : string list
 (** Fields no other implementation is asked to reproduce: ["steps"], the reduction count of
     rapid-sem's machine. They are removed before comparing. *)
 
+val strip : Event_stream.event -> Event_stream.event
+(** The event without its {!implementation_specific} fields. *)
+
 val compare :
   ?ignore:string list -> ?context:int -> expected:Event_stream.event list ->
   actual:Event_stream.event list -> unit -> divergence option

@@ -28,6 +28,11 @@ val add_line : reader -> int -> string -> (unit, string) result
     that is not a JSON object, nests deeper than {!max_depth}, or comes after {!max_events}
     objects or {!max_values} values is an [Error] naming its line number, its text clipped ({!clip}). *)
 
+val read_line : reader -> int -> string -> (event option, string) result
+(** [add_line] without keeping the event: [Some] the line's event ({!canonical}), [None] for a
+    blank line; the bounds are counted all the same. What the oracle uses to compare an
+    implementation's events as they come, holding none of them. *)
+
 val contents : reader -> t
 (** What the lines read so far make. *)
 
@@ -44,8 +49,10 @@ val show : event -> string
 (** [to_string], clipped for a report ({!clip}). *)
 
 val clip : string -> string
-(** Text of another implementation made fit for a report: on one line, and when longer than
-    300 bytes its first 300 followed by [... (N bytes)]. *)
+(** Text of another implementation made fit for a report: on one line (a line break shown as a
+    space), each control character (C0, DEL, C1) and each byte of invalid UTF-8 shown as [\XX]
+    (hexadecimal), and when longer than 300 bytes its first characters within 300 bytes
+    followed by [... (N bytes)]: the result is valid UTF-8 and drives no terminal. *)
 
 val canonical : event -> event
 (** Fields sorted by name, recursively: how [parse] gives each event. *)

@@ -52,4 +52,6 @@ let compare ?(ignore = []) ~(expected : Event_stream.t) ~(actual : Event_stream.
 
 let report { stream; divergence = d } =
   let show = function Some e -> Event_stream.show e | None -> "(no more events)" in
-  Printf.sprintf "%s, event %d: expected %s, got %s" stream d.index (show d.expected) (show d.actual)
+  (* A stream's name holds a task's name, which may be the implementation's text. *)
+  Printf.sprintf "%s, event %d: expected %s, got %s" (Event_stream.clip stream) d.index (show d.expected)
+    (show d.actual)
