@@ -398,7 +398,10 @@ let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
       base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
                         ("chain", `List (List.map text (bound_chain chain))) ]
                       @ (match about with Some a -> [ ("about", text a) ] | None -> []))
-  | Resource_exhausted m -> base "exhausted" [ ("reason", text m) ]
+  | Resource_exhausted (m, at) ->
+      (* At the declaration or the move beyond the memory budget; no place explains a limit of
+         depth or time (R-1.4-small2). *)
+      base "exhausted" ([ ("reason", text m) ] @ (match at with Some r -> [ ("at", region_json r) ] | None -> []))
   | Unsupported { name; reason; at } ->
       base "unsupported" [ ("name", text name); ("reason", text reason); ("at", region_json at) ]
   | Stuck m -> base "stuck" [ ("reason", text m) ]
@@ -412,7 +415,7 @@ let finish (o : M.outcome) steps ~max_steps =
         (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
         (chain_text chain);
       exit_stopped
-  | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
+  | Resource_exhausted (m, _) -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported { reason; at; _ } ->
       Printf.eprintf "%s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n"
@@ -1004,7 +1007,8 @@ let trace_cmd =
     if format = `Jsonl then print_line (Yojson.Safe.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") steps;
+        | Resource_exhausted (m, _) | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m
+        | Running -> "step limit") steps;
     finish outcome steps ~max_steps
     in
     if tasks <> [] then begin
