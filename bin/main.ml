@@ -354,6 +354,39 @@ let entry_region (program : Rapid_semantics.Ir.program) entry =
       | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
     None program.routines
 
+(* A call chain as the end of a run shows it. A recursion as deep as --max-call-depth made the
+   message one line of hundreds of kilobytes (issue 21): a chain of more than [chain_shown]
+   items keeps its first and last [chain_shown / 2], with "... N more ..." between, N the calls
+   left out: a marker no routine name can be (R-7.1-small1). *)
+let chain_shown = 20
+
+let more_marker k = Printf.sprintf "... %d more ..." k
+
+(* [items] as (text, calls it stands for). *)
+let bound_items items =
+  let n = List.length items and keep = chain_shown / 2 in
+  if n <= chain_shown then List.map fst items
+  else
+    let left = List.filteri (fun i _ -> i >= keep && i < n - keep) items in
+    let outer = List.filteri (fun i _ -> i < keep || i >= n - keep) items |> List.map fst in
+    List.filteri (fun i _ -> i < keep) outer
+    @ (more_marker (List.fold_left (fun s (_, k) -> s + k) 0 left) :: List.filteri (fun i _ -> i >= keep) outer)
+
+(* The --json chain: one routine an item, bounded as above. *)
+let bound_chain chain = bound_items (List.map (fun r -> (r, 1)) chain)
+
+(* The text of a chain: a long one writes a run of one routine called K times in a row as
+   "NAME xK" (the common case, a recursion), then is bounded as above. A chain of at most
+   [chain_shown] routines is written in full. *)
+let chain_text chain =
+  if List.length chain <= chain_shown then String.concat " <- " chain
+  else
+    let runs = List.fold_left (fun acc name -> match acc with
+        | (n, k) :: rest when n = name -> (n, k + 1) :: rest
+        | _ -> (name, 1) :: acc) [] chain |> List.rev in
+    let item (n, k) = ((if k = 1 then n else Printf.sprintf "%s x%d" n k), k) in
+    String.concat " <- " (bound_items (List.map item runs))
+
 let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
   let nowhere = ("at", `Null) in
   let base kind extra =
@@ -364,9 +397,12 @@ let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
   | Ended -> base "ended" (match entry_at with Some r -> [ ("at", region_json r) ] | None -> [])
   | Stopped { name; number; at; chain; about } ->
       base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
-                        ("chain", `List (List.map text chain)) ]
+                        ("chain", `List (List.map text (bound_chain chain))) ]
                       @ (match about with Some a -> [ ("about", text a) ] | None -> []))
-  | Resource_exhausted m -> base "exhausted" [ ("reason", text m) ]
+  | Resource_exhausted (m, at) ->
+      (* At the declaration or the move beyond the memory budget; no place explains a limit of
+         depth or time (R-1.4-small2). *)
+      base "exhausted" ([ ("reason", text m) ] @ (match at with Some r -> [ ("at", region_json r) ] | None -> []))
   | Unsupported { name; reason; at } ->
       base "unsupported" [ ("name", text name); ("reason", text reason); ("at", region_json at) ]
   | Stuck m -> base "stuck" [ ("reason", text m) ]
@@ -378,9 +414,9 @@ let finish (o : M.outcome) steps ~max_steps =
   | Stopped { name; at; chain; about; _ } ->
       Printf.eprintf "%s: execution error: %s%s: the system error handler stopped the task (%s)\n"
         (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
-        (String.concat " <- " chain);
+        (chain_text chain);
       exit_stopped
-  | Resource_exhausted m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
+  | Resource_exhausted (m, _) -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported { reason; at; _ } ->
       Printf.eprintf "%s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n"
@@ -972,7 +1008,8 @@ let trace_cmd =
     if format = `Jsonl then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
-        | Resource_exhausted m | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m | Running -> "step limit") steps;
+        | Resource_exhausted (m, _) | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m
+        | Running -> "step limit") steps;
     finish outcome steps ~max_steps
     in
     if tasks <> [] then begin

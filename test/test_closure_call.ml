@@ -67,7 +67,7 @@ let outcome_text = function
   | M.Running -> "fuel"
   | Ended -> "ended"
   | Stopped { name; at; _ } -> Printf.sprintf "stopped %s %s" name (Source.to_string at)
-  | Resource_exhausted m -> "exhausted: " ^ m
+  | Resource_exhausted (m, _) -> "exhausted: " ^ m
   | Unsupported { reason; _ } -> "unsupported: " ^ reason
   | Deadlock m -> "deadlock: " ^ m
   | Stuck m -> "stuck: " ^ m

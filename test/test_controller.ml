@@ -193,6 +193,46 @@ let eio_numbers () =
       Alcotest.(check (list (float 0.))) "defaults" [ 15.; -4.5 ]
         (List.map (fun (s : Io.signal) -> s.initial) c.signals)
 
+(* What the attacker of issue 21 found after the numbers' fix (R-8-small3): a repeated
+   attribute, an overlapping -DeviceMap, an empty one, -Default without a value, and num's
+   largest value as --save writes it. *)
+let eio_small () =
+  let check name expected text = Alcotest.(check string) name expected (error_of ("EIO_SIGNAL:\n" ^ text)) in
+  check "-Default twice, at the second"
+    "t.io:2:43: io error: -Default is given twice in this EIO_SIGNAL entry"
+    "  -Name \"ai1\" -SignalType \"AI\" -Default 1 -Default 1e300\n";
+  check "-Name twice, case aside"
+    "t.io:2:30: io error: -name is given twice in this EIO_SIGNAL entry"
+    "  -Name \"a\" -SignalType \"AI\" -name \"b\"\n";
+  check "overlapping ranges count their bits once"
+    "t.io:2:60: io error: 255 does not fit in the group signal's 6 bits (at most 63)"
+    "  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-3,2-5\" -Default 255\n";
+  check "-DeviceMap \"\"" "t.io:2:41: io error: -DeviceMap has no value"
+    "  -Name \"g\" -SignalType \"GI\" -DeviceMap \"\" -Default 1\n";
+  check "-Default without a value" "t.io:2:30: io error: -Default has no value"
+    "  -Name \"a\" -SignalType \"AI\" -Default\n";
+  check "-Default without a value, another key after"
+    "t.io:2:30: io error: -Default has no value"
+    "  -Name \"a\" -SignalType \"AI\" -Default -MinLog 0\n";
+  (match parse "EIO_SIGNAL:\n  -Name \"g\" -SignalType \"GI\" -DeviceMap \"0-3,2-5\" -Default 63\n\
+               \  -Name \"h\" -SignalType \"GO\" -DeviceMap \"4-7,0-31,3\" -Default 4294967295\n" with
+   | Error m -> Alcotest.fail m
+   | Ok c -> Alcotest.(check (list (float 0.))) "within the distinct bits" [ 63.; 4294967295. ]
+               (List.map (fun (s : Io.signal) -> s.initial) c.signals));
+  (* num's largest value, 3.40282347E+38, has the shortest literal 3.4028235E+38, above it as a
+     decimal but rounded to it as a RAPID literal is; half a unit of its last place above is not. *)
+  let flt_max = Int32.float_of_bits 0x7f7fffffl in
+  (match parse "signal ai1 ai 3.4028235E+38\nsignal ai2 ai -3.4028235E+38\nat 1 ai1 3.40282356E+38\n" with
+   | Error m -> Alcotest.fail m
+   | Ok c ->
+       Alcotest.(check (list (float 0.))) "initial values" [ flt_max; -. flt_max ]
+         (List.map (fun (s : Io.signal) -> s.initial) c.signals);
+       Alcotest.(check (list (float 0.))) "the value" [ flt_max ]
+         (List.map (fun (s : Io.stimulus) -> s.value) c.stimuli));
+  Alcotest.(check string) "half a unit above"
+    "t.io:1:15: io error: 3.4028236E+38 is beyond the range of num (IEEE 754 single precision, at most \
+     3.40282347E+38 in magnitude; §2.13)" (error_of "signal ai1 ai 3.4028236E+38")
+
 (* A UTF-8 byte order mark first is not an entry; the columns of line 1 count after it. *)
 let byte_order_mark () =
   (match parse "\xEF\xBB\xBFsignal di1 di\nat 1 di1 1\n" with
@@ -241,6 +281,8 @@ let suite =
       Alcotest.test_case "the io reader never raises" `Quick never_raises;
       Alcotest.test_case "numbers checked against what they feed (R-8-numbers1)" `Quick numbers_checked;
       Alcotest.test_case "EIO.cfg numbers: -DeviceMap, -MinLog/-MaxLog, at the word" `Quick eio_numbers;
+      Alcotest.test_case "EIO.cfg: a repeated attribute, overlapping or empty maps, values missing; num's largest"
+        `Quick eio_small;
       Alcotest.test_case "a UTF-8 byte order mark" `Quick byte_order_mark;
       Alcotest.test_case "a signal named after an installed object, at its line" `Quick installed_name_clash;
       Alcotest.test_case "100,000 signals in linear time" `Quick many_signals;

@@ -847,7 +847,7 @@ let controller_runs () =
       let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits looping ~entry:"main" ~max_steps:10_000_000) in
       let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits looping ~entry:"main" ~fuel:10_000_000) in
       (match m_outcome, c_outcome with
-       | Resource_exhausted m, Resource_exhausted c -> Alcotest.(check string) "the time limit" m c
+       | Resource_exhausted (m, _), Resource_exhausted (c, _) -> Alcotest.(check string) "the time limit" m c
        | _ -> Alcotest.failf "time limit: %s / %s" (outcome_text m_outcome) (outcome_text c_outcome));
       (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "time limit %g: %s" max_time d);
       Alcotest.(check bool) "some output" true (List.exists (function M.Output _ -> true | _ -> false) c_events))
@@ -951,7 +951,7 @@ let native_stack () =
   let limits = { M.default_limits with max_call_depth = max_int } in
   match C.run ~limits program ~entry:"main" with
   | Error m -> Alcotest.fail m
-  | Ok { outcome = Resource_exhausted m; _ } ->
+  | Ok { outcome = Resource_exhausted (m, _); _ } ->
       Alcotest.(check bool) ("the reason names the native stack: " ^ m) true
         (Str.string_match (Str.regexp ".*native stack") m 0)
   | Ok { outcome; _ } -> Alcotest.failf "expected exhaustion, got %s" (outcome_text outcome)

@@ -836,7 +836,8 @@ let programs_run () =
                 match M.outcome cfg with
                 | Stuck m -> Alcotest.failf "stuck (%s) after %d steps:\n%s" m (M.steps cfg) text
                 | o -> if Sys.getenv_opt "FUZZ_STATS" <> None then prerr_endline (match o with
-                    | Stopped { name; _ } -> "stopped " ^ name | Ended -> "ended" | Resource_exhausted m -> "exhausted " ^ m
+                    | Stopped { name; _ } -> "stopped " ^ name | Ended -> "ended"
+                    | Resource_exhausted (m, _) -> "exhausted " ^ m
                     | Running -> "running" | Unsupported { name; _ } -> "unsupported " ^ name | Deadlock m -> "deadlock " ^ m | Stuck _ -> "")))
   done;
   (* The generator is meant to make checked programs: the property must not hold vacuously. *)

@@ -63,7 +63,12 @@ let history_budget () =
   let cfg = start ~history:budget (loop ~moves:1000 ~zone:"fine" ~speed:"v1000" ~p2:"250") in
   run_until cfg (ref 0) max_int;
   (match M.outcome cfg with
-   | M.Resource_exhausted m ->
+   | M.Resource_exhausted (m, at) ->
+       (* At the move beyond the budget, the 101st: MoveL p1 (R-1.4-small2). *)
+       (match at with
+        | Some r -> let p = Rapid_syntax.Source.start r in
+            Alcotest.(check (pair int int)) "at the move beyond" (8, 7) (p.line, p.col)
+        | None -> Alcotest.fail "the history's exhaustion has no place");
        let has w = let n = String.length w in
          let rec go i = i + n <= String.length m && (String.sub m i n = w || go (i + 1)) in go 0 in
        if not (has "motion history" && has "--max-memory" && has (string_of_int budget) && has "memloop") then

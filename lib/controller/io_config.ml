@@ -144,7 +144,8 @@ let parse_stimulus ~file lines =
   { file; signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions }
 
 (* -DeviceMap of a group signal: bits "0-7", or a list of them "0-3,8-11"; its width is the
-   number of bits it maps. *)
+   number of distinct bits it maps: "0-3,2-5" maps bits 0 to 5, six bits (R-8-small3; no ABB
+   text at hand refuses a map whose ranges overlap). *)
 let device_map_bits ln col map =
   let bad () =
     raise (Bad (ln, col, Printf.sprintf "-DeviceMap %S: expected bits such as \"0-7\" or \"0-3,8-11\""
@@ -152,13 +153,18 @@ let device_map_bits ln col map =
   let bit w = match int_of_string_opt (String.trim w) with
     | Some b when b >= 0 && b < 100_000 && String.for_all (fun c -> c = ' ' || (c >= '0' && c <= '9')) w -> b
     | _ -> bad () in
-  let width = List.fold_left (fun acc part ->
+  let ranges = List.map (fun part ->
       match String.split_on_char '-' part with
-      | [ b ] -> ignore (bit b); acc + 1
-      | [ a; b ] -> acc + abs (bit b - bit a) + 1
-      | _ -> bad ()) 0 (String.split_on_char ',' map) in
+      | [ b ] -> let b = bit b in (b, b)
+      | [ a; b ] -> let a = bit a and b = bit b in (min a b, max a b)
+      | _ -> bad ()) (String.split_on_char ',' map) in
+  (* The ranges sorted and merged: each bit counted once. *)
+  let width, _ = List.fold_left (fun (n, upto) (lo, hi) ->
+      let lo = max lo (upto + 1) in
+      if hi < lo then (n, upto) else (n + hi - lo + 1, hi)) (0, -1) (List.sort compare ranges) in
   if width > 32 then
-    raise (Bad (ln, col, Printf.sprintf "-DeviceMap %S maps %d bits: a group signal has at most 32" map width));
+    raise (Bad (ln, col, Printf.sprintf "-DeviceMap %S maps %d bits: a group signal has at most 32"
+                           (Rapid_syntax.Decimal.shown map) width));
   width
 
 (* EIO.cfg: sections start with a line "NAME:"; an instance is a list of "-Key value" pairs and
@@ -186,16 +192,30 @@ let eio_words ln text first_col =
 let eio_signal ~seen signals ln words =
   (* A bare word that starts with '-' is the next key, unless it is a number (-Default -5). *)
   let is_key w = String.length w > 1 && w.[0] = '-' && not (Rapid_syntax.Decimal.is_decimal w) in
+  (* An attribute given twice is refused at the second (R-8-small3): the first was kept and the
+     second never checked. A key with no value stands at its own place, so that a refusal of
+     a missing value names the key. *)
+  let given = Hashtbl.create 8 in
   let rec pairs = function
-    | (`Bare key, _, _) :: rest when is_key key -> (
-        let key = String.lowercase_ascii (String.sub key 1 (String.length key - 1)) in
+    | (`Bare word, kl, kc) :: rest when is_key word -> (
+        let key = String.lowercase_ascii (String.sub word 1 (String.length word - 1)) in
+        if Hashtbl.mem given key then
+          raise (Bad (kl, kc, Printf.sprintf "%s is given twice in this EIO_SIGNAL entry"
+                                (Rapid_syntax.Decimal.shown word)));
+        Hashtbl.replace given key ();
         match rest with
         | (`Quoted v, l, c) :: rest -> (key, (v, l, c)) :: pairs rest
         | (`Bare v, l, c) :: rest when not (is_key v) -> (key, (v, l, c)) :: pairs rest
-        | _ -> (key, ("", ln, 1)) :: pairs rest)
+        | _ -> (key, ("", kl, kc)) :: pairs rest)
     | _ :: rest -> pairs rest
     | [] -> [] in
   let pairs = pairs words in
+  (* A number or a device map with no value (-Default alone, -DeviceMap "") was read as 0 or
+     as no map: refused (R-8-small3). *)
+  List.iter (fun (key, (v, l, c)) ->
+      if v = "" && List.mem key [ "default"; "minlog"; "maxlog"; "devicemap" ] then
+        raise (Bad (l, c, Printf.sprintf "-%s has no value" (match key with
+            | "default" -> "Default" | "minlog" -> "MinLog" | "maxlog" -> "MaxLog" | _ -> "DeviceMap")))) pairs;
   let get k = List.assoc_opt k pairs in
   let num k = match get k with
     | None | Some ("", _, _) -> None
@@ -206,7 +226,7 @@ let eio_signal ~seen signals ln words =
       let kind = match kind_of_word ty with
         | Some k -> k | None -> raise (Bad (tl, tc, Printf.sprintf "unknown -SignalType %S" ty)) in
       let bits = match kind, get "devicemap" with
-        | (GI | GO), Some (map, l, c) when map <> "" -> device_map_bits l c map
+        | (GI | GO), Some (map, l, c) -> device_map_bits l c map
         | _ -> default_limits.bits in
       let low = Option.map (fun (v, _, _) -> v) (num "minlog")
       and high = Option.map (fun (v, _, _) -> v) (num "maxlog") in

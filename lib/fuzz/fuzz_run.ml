@@ -56,7 +56,7 @@ let outcome_text (o : M.outcome) =
   | Stopped { name; number; at; chain; about } ->
       Printf.sprintf "stopped %s %d %s [%s]%s" name number (place at) (String.concat " " chain)
         (match about with Some a -> " about " ^ a | None -> "")
-  | Resource_exhausted m -> "exhausted " ^ m
+  | Resource_exhausted (m, _) -> "exhausted " ^ m
   | Unsupported { name; at; _ } -> Printf.sprintf "unsupported %s %s" name (place at)
   | Deadlock m -> "deadlock " ^ m
   | Stuck m -> "stuck " ^ m

@@ -5,7 +5,7 @@ module W = Rapid_controller.World
 module V = Value
 
 let time_limit w =
-  Machine.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time w))
+  Machine.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time w), None)
 
 let is_signal (v : V.t) =
   match v with

@@ -207,7 +207,8 @@ let relocate st (c : act) e ~at =
    the run before the stack overflows; the machine keeps its continuations on the heap. *)
 let native_stack_exhausted level =
   M.Resource_exhausted
-    (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4; a larger ulimit -s, or --engine machine)" level)
+    (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4; a larger ulimit -s, \
+                     or --engine machine)" level, None)
 
 (* ------------------------------------------------------------------ the memory budget *)
 
@@ -2004,9 +2005,9 @@ let outcome_of_exception st = function
   | Halt o -> o
   | Stack_overflow ->
       M.Resource_exhausted
-        (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth)
-  | Out_of_memory -> M.Resource_exhausted "out of memory (resource exhaustion, §1.4)"
-  | Motion_primitives.History_exhausted m -> M.Resource_exhausted m
+        (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth, None)
+  | Out_of_memory -> M.Resource_exhausted ("out of memory (resource exhaustion, §1.4)", None)
+  | Motion_primitives.History_exhausted m -> M.Resource_exhausted (m, None)
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 

@@ -41,7 +41,7 @@ type outcome =
   | Ended
   | Stopped of { name : string; number : int; at : Source.region; chain : string list;
                  about : string option }
-  | Resource_exhausted of string
+  | Resource_exhausted of string * Source.region option
   | Unsupported of { name : string; reason : string; at : Source.region }
   | Deadlock of string
   | Stuck of string
@@ -343,13 +343,13 @@ let activation ~routine ~slots ~present ~kinds ~module_data ~caller ~return_to ~
 let memory_exhausted_by limits what at =
   Resource_exhausted
     (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
-       (Source.to_string at) what limits.max_memory)
+       (Source.to_string at) what limits.max_memory, Some at)
 
 let memory_exhausted cfg what at = memory_exhausted_by cfg.limits what at
 
 let call_depth_exceeded limits =
   Resource_exhausted
-    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4; --max-call-depth)" limits.max_call_depth)
+    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4; --max-call-depth)" limits.max_call_depth, None)
 
 (* Charges [bytes] of RAPID data to the activation, or says the budget does not hold them. *)
 let charge cfg (act : activation) bytes =
@@ -637,7 +637,7 @@ let call_primitive cfg (cs : call_state) name =
   match !exhausted with
   | Some m ->
       (* The history --samples or rapid-sem motion keeps, beyond its budget (doc/motion.md). *)
-      cfg.focus <- F_done (Resource_exhausted (Source.to_string cs.call.call_at ^ ": " ^ m));
+      cfg.focus <- F_done (Resource_exhausted (Source.to_string cs.call.call_at ^ ": " ^ m, Some cs.call.call_at));
       ("motion-history-exhausted", List.rev !events)
   | None ->
   match result with
@@ -1326,7 +1326,8 @@ let serve_async_error cfg =
 
 let time_exhausted cfg rule =
   cfg.focus <- F_done (Resource_exhausted
-                         (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world)));
+                         (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world),
+                          None));
   (rule, [])
 
 (* A waiting instruction, one step at a time (doc/controller.md): interrupts come in; the wait

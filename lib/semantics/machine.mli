@@ -57,8 +57,10 @@ type outcome =
           chain at that point, innermost first, and the name the error is about (the unknown
           data object or routine of ERR_REFUNKDAT, ERR_REFUNKFUN, ERR_REFUNKPRC, the procedure
           name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
-  | Resource_exhausted of string
-      (** call depth beyond the limit, or RAPID data beyond the memory budget (with the place) *)
+  | Resource_exhausted of string * Rapid_syntax.Source.region option
+      (** call depth beyond the limit, or RAPID data or the motion history beyond the memory
+          budget: the reason, and the place when one explains it (the declaration or the
+          move beyond the budget; doc/observable.md, R-1.4-small2) *)
   | Unsupported of { name : string; reason : string; at : Rapid_syntax.Source.region }
       (** an installed routine rapid-sem does not model yet was called ([name] is the routine,
           [at] the call) *)

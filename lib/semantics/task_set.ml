@@ -232,7 +232,8 @@ let every_task_waits world waits =
                           "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
                           (W.now world) (String.concat "; " waiting)))
   | t :: _ when t > W.max_time world ->
-      Some (M.Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time world)))
+      Some (M.Resource_exhausted
+              (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time world), None))
   | t :: _ -> W.advance_to world t; None
 
 let all_wait s =

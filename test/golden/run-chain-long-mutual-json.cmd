@@ -1,0 +1,1 @@
+run --json chain-long-mutual.mod

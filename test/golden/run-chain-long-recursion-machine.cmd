@@ -1,0 +1,1 @@
+run --engine machine chain-long-recursion.mod

@@ -1,0 +1,1 @@
+run chain-long-recursion.mod
