@@ -75,11 +75,16 @@ let io_arg =
   Arg.(value & opt (some string) None & info [ "io" ] ~docv:"FILE"
          ~doc:"The I/O configuration and the stimulus of the inputs (doc/controller.md): a stimulus file, or a RobotWare EIO.cfg file whose EIO_SIGNAL entries declare the signals.")
 
-(* --epoch YYYY-MM-DDTHH:MM:SS, read as seconds since 1970 (UTC, no leap seconds). *)
+(* --epoch YYYY-MM-DDTHH:MM:SS, read as seconds since 1970 (UTC, no leap seconds). A date that
+   does not exist (February 30, a year before 0001) is refused rather than carried over. *)
 let epoch_conv =
+  let days_in_month y m =
+    if m = 2 then (if (y mod 4 = 0 && y mod 100 <> 0) || y mod 400 = 0 then 29 else 28)
+    else if m = 4 || m = 6 || m = 9 || m = 11 then 30 else 31 in
   let parse s =
-    try Scanf.sscanf s "%4d-%2d-%2dT%2d:%2d:%2d%!" (fun y m d hh mm ss ->
-        if m < 1 || m > 12 || d < 1 || d > 31 || hh > 23 || mm > 59 || ss > 59 then Error (`Msg "a date and time out of range")
+    try Scanf.sscanf s "%4u-%2u-%2uT%2u:%2u:%2u%!" (fun y m d hh mm ss ->
+        if y < 1 || m < 1 || m > 12 || d < 1 || d > days_in_month y m || hh > 23 || mm > 59 || ss > 59 then
+          Error (`Msg "a date and time that does not exist")
         else
           let y' = if m <= 2 then y - 1 else y in
           let era = (if y' >= 0 then y' else y' - 399) / 400 in
@@ -94,12 +99,31 @@ let epoch_conv =
     Format.fprintf ppf "%04d-%02d-%02dT%02d:%02d:%02d" y m d hh mm ss in
   Arg.conv (parse, print)
 
+(* A number of seconds of virtual time: never NaN (it compares false with every time, so a limit of
+   NaN would be no limit and a statement of NaN would stop the clock), never negative, and at most
+   [most] (a statement time of 1e308 would take the clock past every time it can represent). *)
+let seconds_conv ~most =
+  let parse s =
+    match float_of_string_opt (String.trim s) with
+    | None -> Error (`Msg (Printf.sprintf "%S is not a number of seconds" s))
+    | Some v when Float.is_nan v -> Error (`Msg "not a number (nan) is not a time")
+    | Some v when v < 0. -> Error (`Msg "a time is not negative")
+    | Some v when v > most -> Error (`Msg (Printf.sprintf "at most %g s" most))
+    | Some v -> Ok v in
+  Arg.conv (parse, fun ppf v -> Format.fprintf ppf "%g" v)
+
+(* The longest statement: a day of virtual time. *)
+let most_statement_time = 86400.
+
 let controller_args =
   let module W = Rapid_controller.World in
-  let statement_time = Arg.(value & opt float W.default_statement_time & info [ "statement-time" ] ~docv:"SECONDS"
-                              ~doc:"Virtual time each executed statement (and each round of a loop) takes.") in
-  let max_time = Arg.(value & opt float W.default_max_time & info [ "max-time" ] ~docv:"SECONDS"
-                        ~doc:"Stop the run when its virtual time goes beyond SECONDS (exit status 3).") in
+  let statement_time =
+    Arg.(value & opt (seconds_conv ~most:most_statement_time) W.default_statement_time
+         & info [ "statement-time" ] ~docv:"SECONDS"
+             ~doc:"Virtual time each executed statement (and each round of a loop) takes (at most 86400).") in
+  let max_time = Arg.(value & opt (seconds_conv ~most:infinity) W.default_max_time & info [ "max-time" ]
+                        ~docv:"SECONDS"
+                        ~doc:"Stop the run when its virtual time goes beyond SECONDS (exit status 3; inf: never).") in
   let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default 2024-01-01T00:00:00).") in
   Term.(const (fun io statement_time max_time epoch services -> { io; statement_time; max_time; epoch; services })
@@ -729,6 +753,10 @@ let run_cmd =
     match Option.map (fun dir -> Rapid_semantics.Persistent_save.check ~dir ~files:saved_files) save with
     | Some (Error m) -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
     | _ ->
+    (* A module read from standard input has no file to write back: say so rather than drop it. *)
+    if save <> None && List.mem "-" files then
+      prerr_endline "rapid-sem: --save: warning: the module read from standard input (-) is not saved: \
+                     it has no file to write back to";
     single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
       if json then print_line (Json_text.to_string (event_json e))

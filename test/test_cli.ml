@@ -57,4 +57,21 @@ let debugger_prompt () =
       (* One before each command: step, quit. *)
       Alcotest.(check int) ("terminal: a prompt before each command: " ^ String.escaped on_terminal) 2 (prompts on_terminal))
 
-let suite = ("cli", List.map case (cases ()) @ [ Alcotest.test_case "the debugger prompts on a terminal" `Quick debugger_prompt ])
+(* --save with a module read from standard input: the run goes on, and a warning says that module
+   is not saved (it has no file), rather than nothing at all. *)
+let save_from_stdin () =
+  let dir = Filename.temp_file "rapid-sem" ".save" in
+  Sys.remove dir;
+  let err = Filename.temp_file "rapid-sem" ".err" in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command ("rm -rf " ^ Filename.quote dir)); Sys.remove err) (fun () ->
+      let status = Sys.command (Printf.sprintf
+          "printf 'MODULE S\\n  PERS num p := 1;\\n  PROC main()\\n    p := p + 1;\\n  ENDPROC\\nENDMODULE\\n' | \
+           %s run --save %s - 2> %s" (Filename.quote binary) (Filename.quote dir) (Filename.quote err)) in
+      Alcotest.(check int) "exit 0" 0 status;
+      let text = read_file err in
+      Alcotest.(check bool) ("warned: " ^ text) true
+        (Str.string_match (Str.regexp ".*standard input (-) is not saved") text 0))
+
+let suite = ("cli", List.map case (cases ()) @ [ Alcotest.test_case "the debugger prompts on a terminal" `Quick debugger_prompt;
+                                                 Alcotest.test_case "--save warns of a module from standard input" `Quick
+                                                   save_from_stdin ])

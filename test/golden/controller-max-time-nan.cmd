@@ -1,0 +1,1 @@
+run --max-time=nan controller-date.mod

@@ -1,0 +1,1 @@
+run --statement-time=1e308 controller-date.mod
