@@ -267,6 +267,45 @@ let refusals () =
   let status, _ = run_quietly [ "run"; "--save"; a; a ] in
   Alcotest.(check int) "--save onto a file: exit 2" 2 status
 
+(* Several modules are saved all or nothing: b.mod's destination is a folder, so the save fails,
+   and a.mod's, whether it was not there or held an older module, is as it was. a.mod was
+   renamed into place before b.mod's rename failed (exit 2, "Is a directory"). *)
+let all_or_nothing () =
+  with_dir @@ fun dir ->
+  let a = Filename.concat dir "a.mod" and b = Filename.concat dir "b.mod" and out = Filename.concat dir "out" in
+  write_file a "MODULE A\nPERS num pa := 1;\nPROC main()\npa := pa + 1;\nENDPROC\nENDMODULE\n";
+  write_file b "MODULE B\nPERS num pb := 1;\nENDMODULE\n";
+  Unix.mkdir out 0o755;
+  Unix.mkdir (Filename.concat out "b.mod") 0o755;
+  let saved_a = Filename.concat out "a.mod" in
+  let no_parts what =
+    Alcotest.(check (list string)) (what ^ ": no temporary file left") []
+      (List.filter (fun f -> Filename.check_suffix f ".part") (Array.to_list (Sys.readdir out))) in
+  let status, message = run_quietly [ "run"; "--save"; out; a; b ] in
+  Alcotest.(check int) "b.mod's destination is a folder: exit 2" 2 status;
+  Alcotest.(check string) "... said" (Printf.sprintf "rapid-sem: --save: %s: Is a directory\n" (Filename.concat out "b.mod")) message;
+  Alcotest.(check bool) "a.mod not saved" false (Sys.file_exists saved_a);
+  no_parts "first";
+  let older = "MODULE A\n! older\nPERS num pa := 7;\nPROC main()\nENDPROC\nENDMODULE\n" in
+  write_file saved_a older;
+  let status, _ = run_quietly [ "run"; "--save"; out; a; b ] in
+  Alcotest.(check int) "again, over an older a.mod: exit 2" 2 status;
+  Alcotest.(check string) "the older a.mod byte for byte" older (read_file saved_a);
+  no_parts "second";
+  (* Once b.mod can be saved, both are. *)
+  Unix.rmdir (Filename.concat out "b.mod");
+  Alcotest.(check int) "saved" 0 (fst (run_quietly [ "run"; "--save"; out; a; b ]));
+  Alcotest.(check bool) "a.mod saved" true
+    (Str.string_match (Str.regexp ".*pa := 2;") (String.concat " " (String.split_on_char '\n' (read_file saved_a))) 0);
+  Alcotest.(check bool) "b.mod saved" true (Sys.file_exists (Filename.concat out "b.mod"));
+  no_parts "third";
+  (* A save folder it made itself is removed again when nothing is saved. *)
+  let fresh = Filename.concat dir "fresh" in
+  (match P.save_modules ~dir:fresh ~files:[ a; Filename.concat dir "missing.mod" ] [] with
+   | Ok _ -> Alcotest.fail "a missing module saved"
+   | Error _ -> ());
+  Alcotest.(check bool) "the folder it made is gone" false (Sys.file_exists fresh)
+
 (* The temporary file of a save killed before its rename is removed by the next save of that
    module, whatever process has its id now; one another save is writing (it holds its lock) is
    left to it, as is a file of another program's naming. *)
@@ -311,4 +350,5 @@ let suite = ("save", [
     Alcotest.test_case "--save: 50,000 persistents, linear" `Quick many_persistents;
     Alcotest.test_case "--save: empty folder, one base name twice" `Quick refusals;
     Alcotest.test_case "--save: temporary files of killed saves" `Quick stale_parts;
+    Alcotest.test_case "--save: several modules, all or nothing" `Quick all_or_nothing;
   ])

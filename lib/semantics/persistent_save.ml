@@ -224,25 +224,85 @@ let rec create_locked tmp tries =
     if tries <= 1 then raise (Unix.Unix_error (Unix.EAGAIN, "lockf", tmp)) else create_locked tmp (tries - 1)
   end
 
+(* A module's temporary file, written, flushed and still locked (its fd open), waiting for its
+   rename over [target]. *)
+type staged = { target : string; tmp : string; fd : Unix.file_descr }
+
+(* Unlinked while we hold its lock, then closed. *)
+let discard s =
+  (try Unix.unlink s.tmp with Unix.Unix_error _ -> ());
+  (try Unix.close s.fd with Unix.Unix_error _ -> ())
+
+(* Whether a file could be renamed over [target]: not a folder (rename would fail with EISDIR
+   after the files before it were renamed), and its folder one we may write in. A symbolic link
+   is replaced itself, whatever it points to. *)
+let replaceable target =
+  let dir = Filename.dirname target in
+  let dir_writable () =
+    match Unix.access dir [ Unix.W_OK; Unix.X_OK ] with
+    | () -> Ok ()
+    | exception Unix.Unix_error (e, _, _) -> Error (dir ^ ": " ^ Unix.error_message e) in
+  match Unix.lstat target with
+  | { Unix.st_kind = Unix.S_DIR; _ } -> Error (Unix.error_message Unix.EISDIR)
+  | _ -> dir_writable ()
+  | exception Unix.Unix_error (Unix.ENOENT, _, _) -> dir_writable ()
+  | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
+
+(* Phase 1 for one file: [text] in its temporary file, created and locked (R-2.23-save3),
+   flushed to the disk, with the permissions of the file it will replace. Nothing is renamed. *)
+let stage target text =
+  match replaceable target with
+  | Error e -> Error e
+  | Ok () -> (
+      remove_stale_parts target;
+      let tmp = Filename.concat (Filename.dirname target) (part_name (Filename.basename target) (Unix.getpid ())) in
+      match create_locked tmp 5 with
+      | exception Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
+      | fd -> (
+          let s = { target; tmp; fd } in
+          try
+            let n = String.length text in
+            let rec write off = if off < n then write (off + Unix.write_substring fd text off (n - off)) in
+            write 0;
+            Unix.fsync fd;
+            (* Keep the permissions of the file it replaces. *)
+            (match Unix.stat target with st -> Unix.fchmod fd st.Unix.st_perm | exception Unix.Unix_error _ -> ());
+            Ok s
+          with Unix.Unix_error (e, _, _) -> discard s; Error (Unix.error_message e)))
+
+(* Phase 1 for all: every temporary file, or none (those already written are removed) and the
+   first problem, named by its destination. *)
+let stage_all targets =
+  let rec go acc = function
+    | [] -> Ok (List.rev acc)
+    | (target, text) :: rest -> (
+        match stage target text with
+        | Ok s -> go (s :: acc) rest
+        | Error e -> List.iter discard acc; Error (target ^ ": " ^ e)) in
+  go [] targets
+
+(* Phase 2: every rename, in order, each atomic; then the folders flushed. A rename that fails
+   (phase 1 checked what it could) stops the others: their temporary files are removed, and the
+   message says which modules were saved and which were not. *)
+let commit staged =
+  let rec go saved = function
+    | [] -> Ok (List.rev saved)
+    | s :: rest -> (
+        match Unix.rename s.tmp s.target with
+        | () -> (try Unix.close s.fd with Unix.Unix_error _ -> ()); go (s.target :: saved) rest
+        | exception Unix.Unix_error (e, _, _) ->
+            List.iter discard (s :: rest);
+            let names = function [] -> "none" | l -> String.concat ", " l in
+            Error (Printf.sprintf "%s: %s (while renaming: saved %s; not saved %s)" s.target (Unix.error_message e)
+                     (names (List.rev saved)) (names (List.map (fun s -> s.target) (s :: rest))))) in
+  let result = go [] staged in
+  List.iter fsync_dir (List.sort_uniq compare (List.map (fun s -> Filename.dirname s.target) staged));
+  result
+
 let write_atomically path text =
-  let dir = Filename.dirname path in
-  remove_stale_parts path;
-  let tmp = Filename.concat dir (part_name (Filename.basename path) (Unix.getpid ())) in
-  try
-    let fd = create_locked tmp 5 in
-    Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
-        try
-          let n = String.length text in
-          let rec write off = if off < n then write (off + Unix.write_substring fd text off (n - off)) in
-          write 0;
-          Unix.fsync fd;
-          (* Keep the permissions of the file it replaces. *)
-          (match Unix.stat path with st -> Unix.fchmod fd st.Unix.st_perm | exception Unix.Unix_error _ -> ());
-          Unix.rename tmp path;
-          fsync_dir dir;
-          Ok ()
-        with Unix.Unix_error _ as e -> (try Unix.unlink tmp with Unix.Unix_error _ -> ()); raise e)
-  with Unix.Unix_error (e, _, _) -> Error (Unix.error_message e)
+  match stage_all [ (path, text) ] with
+  | Error e -> Error e
+  | Ok staged -> Result.map (fun _ -> ()) (commit staged)
 
 let read_bytes path =
   match open_in_bin path with
@@ -272,13 +332,14 @@ let check ~dir ~files =
                  a b (Filename.concat dir base))
     | None -> Ok ()
 
+(* Whether it made [dir]. *)
 let prepare_dir ~dir ~files =
   match check ~dir ~files with
   | Error m -> Error m
-  | Ok () when Sys.file_exists dir -> Ok ()
+  | Ok () when Sys.file_exists dir -> Ok false
   | Ok () -> (
       match Unix.mkdir dir 0o755 with
-      | () -> Ok ()
+      | () -> Ok true
       | exception Unix.Unix_error (e, _, _) -> Error (dir ^ ": " ^ Unix.error_message e))
 
 (* One table for all the files: looking every declaration up in the list made a save of N
@@ -308,8 +369,9 @@ let saved_text lookup file =
 let save_modules ~dir ~files data =
   match prepare_dir ~dir ~files with
   | Error m -> Error m
-  | Ok () -> (
-      (* Every text first, so that a module that cannot be saved leaves every file as it was. *)
+  | Ok made -> (
+      (* Every text first, then every temporary file, and only then the renames, so that a module
+         that cannot be saved leaves every file as it was (doc/services.md, "--save DIR"). *)
       let lookup = index data in
       let rec texts acc = function
         | [] -> Ok (List.rev acc)
@@ -317,13 +379,10 @@ let save_modules ~dir ~files data =
             match saved_text lookup file with
             | Ok t -> texts ((Filename.concat dir (Filename.basename file), t) :: acc) rest
             | Error e -> Error (file ^ ": " ^ e)) in
-      match texts [] files with
-      | Error e -> Error e
-      | Ok ts ->
-          let rec write written = function
-            | [] -> Ok (List.rev written)
-            | (target, text) :: rest -> (
-                match write_atomically target text with
-                | Ok () -> write (target :: written) rest
-                | Error e -> Error (target ^ ": " ^ e)) in
-          write [] ts)
+      let staged = match texts [] files with Error e -> Error e | Ok ts -> stage_all ts in
+      match staged with
+      | Ok staged -> commit staged
+      | Error e ->
+          (* The folder this save made goes too, when nothing else is in it. *)
+          if made then (try Unix.rmdir dir with Unix.Unix_error _ -> ());
+          Error e)

@@ -26,9 +26,11 @@ val splice :
 
 val write_atomically : string -> string -> (unit, string) result
 (** [write_atomically path text]: the text goes to the temporary file [path.PID.rapid-sem.part]
-    in the same folder, is flushed to the disk, and is renamed to [path], so that a run stopped
-    at any moment leaves either the old file or the new one. The temporary files of [path]
-    that an earlier save left (its process is gone) are removed first. *)
+    in the same folder (locked by this process until its rename, R-2.23-save3), is flushed to
+    the disk, and is renamed to [path], so that a run stopped at any moment leaves either the
+    old file or the new one. The temporary files of [path] that an earlier save left (its
+    process is gone) are removed first. A [path] that is a folder is refused before anything is
+    written. *)
 
 val check : dir:string -> files:string list -> (unit, string) result
 (** What [save_modules] refuses before it reads anything, to be asked before the run: an empty
@@ -38,6 +40,10 @@ val check : dir:string -> files:string list -> (unit, string) result
 val save_modules :
   dir:string -> files:string list -> (string * string * Value.t) list -> (string list, string) result
 (** At the end of a run: each module file, spliced with the current values of its module's
-    data (module, name, value), written atomically to [dir] (made if missing) under its own base
-    name. The names written, or the first problem: one of {!check}'s, a module that cannot be
-    read or whose saved text would not read back; then no file is written. *)
+    data (module, name, value), written to [dir] (made if missing) under its own base name, in
+    two phases. First every text and every temporary file (as {!write_atomically}), with a check
+    that each destination can be replaced; a problem there (one of {!check}'s, a module that
+    cannot be read or whose saved text would not read back, a destination that is a folder, a
+    write that fails) removes them all, and a [dir] this call made, and changes no module. Then
+    the renames, each atomic; one that fails stops the rest (their temporary files removed), and
+    the message names the modules saved and those not. The names written, or the problem. *)
