@@ -96,7 +96,8 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
           tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
       let order = Task_set.order_of_seed seed in
       Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = ref 0; ended = None; cut = false;
-            aborting = false; ran = false; limits = Some (Task_set.limits ts); stub_unmodelled; clock = world; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
+            aborting = false; ran = false; limits = Some (Task_set.limits ts); stub_unmodelled; clock = world;
+            over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
           warnings)
 
 (* The shared data objects: a task's slots hold the same values as the others' while it runs

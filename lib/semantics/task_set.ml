@@ -194,8 +194,8 @@ let start ?limits ?(stub_unmodelled = false) ?(allow_unknown = false) ?(observe 
               let tasks = Array.of_list (List.map (fun (n, cfg, _, _) -> { t_name = n; cfg; idle = false }) started) in
               let order = order_of_seed seed in
               let warnings = List.concat_map (fun (_, _, _, (l : Session.loaded)) -> l.warnings) started in
-              Ok ({ tasks; order; cursor = ref 0; current = None; turn_steps = 0; ended = None; world; links = List.rev !links;
-                   limits }, warnings))
+              Ok ({ tasks; order; cursor = ref 0; current = None; turn_steps = 0; ended = None; world;
+                    links = List.rev !links; limits }, warnings))
 
 let running task = M.outcome task.cfg = M.Running
 let limits t = t.limits
