@@ -23,21 +23,22 @@ let documented_backward_rules () =
   in
   collect 0 []
 
-(* A session of FILEs fed the lines of a script; its transcript and rules. *)
-let session ?(entry = "main") files lines =
+(* The machine at the start of FILEs' entry routine; the test fails when they do not load. *)
+let started ?(entry = "main") files =
   match Rapid_semantics.Session.load files with
   | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
-  | Ok loaded -> (
-      match M.start loaded.program ~entry with
-      | Error m -> Alcotest.fail m
-      | Ok cfg ->
-          let out = Buffer.create 256 in
-          let d = D.create ~max_steps:1_000_000 ~out:(fun l -> Buffer.add_string out l; Buffer.add_char out '\n') cfg in
-          let rec go = function
-            | [] -> ()
-            | l :: more -> (match D.command d l with `Quit -> () | `Go_on -> go more) in
-          go lines;
-          (Buffer.contents out, D.rules d, cfg))
+  | Ok loaded -> (match M.start loaded.program ~entry with Error m -> Alcotest.fail m | Ok cfg -> cfg)
+
+(* A session of FILEs fed the lines of a script; its transcript and rules. *)
+let session ?entry files lines =
+  let cfg = started ?entry files in
+  let out = Buffer.create 256 in
+  let d = D.create ~max_steps:1_000_000 ~out:(fun l -> Buffer.add_string out l; Buffer.add_char out '\n') cfg in
+  let rec go = function
+    | [] -> ()
+    | l :: more -> (match D.command d l with `Quit -> () | `Go_on -> go more) in
+  go lines;
+  (Buffer.contents out, D.rules d, cfg)
 
 (* The debugger sessions of test/golden: "debug --script SCRIPT FILE...". *)
 let golden_sessions () =
@@ -123,16 +124,11 @@ let step_limit () =
   ENDPROC
 ENDMODULE
 |} in
-  match Rapid_semantics.Session.load [ file ] with
-  | Error _ -> Alcotest.fail "load"
-  | Ok loaded -> (
-      match M.start loaded.program ~entry:"main" with
-      | Error m -> Alcotest.fail m
-      | Ok cfg ->
-          let lines = ref [] in
-          let d = D.create ~max_steps:500 ~out:(fun l -> lines := l :: !lines) cfg in
-          ignore (D.command d "continue");
-          Alcotest.(check bool) "step limit" true (List.mem "the step limit (500) is exhausted" !lines))
+  let cfg = started [ file ] in
+  let lines = ref [] in
+  let d = D.create ~max_steps:500 ~out:(fun l -> lines := l :: !lines) cfg in
+  ignore (D.command d "continue");
+  Alcotest.(check bool) "step limit" true (List.mem "the step limit (500) is exhausted" !lines)
 
 
 (* Commands that cannot do what they ask say what exists or what the command expects, and change
@@ -149,44 +145,39 @@ let malformed_commands () =
   ENDPROC
 ENDMODULE
 |} in
-  match Rapid_semantics.Session.load [ file ] with
-  | Error _ -> Alcotest.fail "load"
-  | Ok loaded -> (
-      match M.start loaded.program ~entry:"main" with
-      | Error m -> Alcotest.fail m
-      | Ok cfg ->
-          let lines = ref [] in
-          let d = D.create ~files:[ file ] ~out:(fun l -> lines := l :: !lines) cfg in
-          let answer command = lines := []; ignore (D.command d command); List.rev !lines in
-          let base = Filename.basename file in
-          Alcotest.(check (list string)) "a line past the end"
-            [ Printf.sprintf "break: no statement begins on line 40 of %s; statements begin on lines 4, 6-7" file ]
-            (answer (Printf.sprintf "break %s:40" base));
-          Alcotest.(check (list string)) "an empty line"
-            [ Printf.sprintf "break: no statement begins on line 5 of %s; statements begin on lines 4, 6-7" file ]
-            (answer (Printf.sprintf "break %s:5" file));
-          Alcotest.(check (list string)) "a file not in the task"
-            [ Printf.sprintf "break: no file other.mod in the task (its files: %s)" file ] (answer "break other.mod:4");
-          Alcotest.(check (list string)) "a statement's line" [ Printf.sprintf "breakpoint 1 at %s:6" base ]
-            (answer (Printf.sprintf "break %s:6" base));
-          Alcotest.(check (list string)) "print alone" [ "print: print EXPR" ] (answer "print");
-          Alcotest.(check (list string)) "p alone" [ "print: print EXPR" ] (answer "p  ");
-          Alcotest.(check (list string)) "set without a target" [ "set: set REF := EXPR" ] (answer "set := 5");
-          Alcotest.(check (list string)) "set alone" [ "set: set REF := EXPR" ] (answer "set");
-          Alcotest.(check (list string)) "set of a literal"
-            [ "set: set REF := EXPR: 3 is not a data object, an element or a component (§4.5)" ] (answer "set 3 := 4");
-          (* An index beyond int's range is not wrapped round into the array. *)
-          Alcotest.(check (list string)) "a huge index"
-            [ "print: ERR_OUTOFBND: index 1.00000002e+20 is outside the array (§3.6)" ]
-            (answer "print a{99999999999999999999}");
-          (* tooldata has three components, as a pos: its negation is refused, not a crash. *)
-          Alcotest.(check (list string)) "the negation of a tooldata"
-            [ "print: no operator of §3.12 takes an operand of this type" ] (answer "print -tool0");
-          Alcotest.(check (list string)) "set to the negation of a tooldata"
-            [ "set: no operator of §3.12 takes an operand of this type" ] (answer "set x := -tool0");
-          Alcotest.(check (list string)) "nothing changed" [ "x = 0" ] (answer "print x");
-          (* The refused breakpoints took no number; the one set stops continue. *)
-          Alcotest.(check (list string)) "continue" [ "m:6  x := 2;" ] (answer "continue"))
+  let cfg = started [ file ] in
+  let lines = ref [] in
+  let d = D.create ~files:[ file ] ~out:(fun l -> lines := l :: !lines) cfg in
+  let answer command = lines := []; ignore (D.command d command); List.rev !lines in
+  let base = Filename.basename file in
+  Alcotest.(check (list string)) "a line past the end"
+    [ Printf.sprintf "break: no statement begins on line 40 of %s; statements begin on lines 4, 6-7" file ]
+    (answer (Printf.sprintf "break %s:40" base));
+  Alcotest.(check (list string)) "an empty line"
+    [ Printf.sprintf "break: no statement begins on line 5 of %s; statements begin on lines 4, 6-7" file ]
+    (answer (Printf.sprintf "break %s:5" file));
+  Alcotest.(check (list string)) "a file not in the task"
+    [ Printf.sprintf "break: no file other.mod in the task (its files: %s)" file ] (answer "break other.mod:4");
+  Alcotest.(check (list string)) "a statement's line" [ Printf.sprintf "breakpoint 1 at %s:6" base ]
+    (answer (Printf.sprintf "break %s:6" base));
+  Alcotest.(check (list string)) "print alone" [ "print: print EXPR" ] (answer "print");
+  Alcotest.(check (list string)) "p alone" [ "print: print EXPR" ] (answer "p  ");
+  Alcotest.(check (list string)) "set without a target" [ "set: set REF := EXPR" ] (answer "set := 5");
+  Alcotest.(check (list string)) "set alone" [ "set: set REF := EXPR" ] (answer "set");
+  Alcotest.(check (list string)) "set of a literal"
+    [ "set: set REF := EXPR: 3 is not a data object, an element or a component (§4.5)" ] (answer "set 3 := 4");
+  (* An index beyond int's range is not wrapped round into the array. *)
+  Alcotest.(check (list string)) "a huge index"
+    [ "print: ERR_OUTOFBND: index 1.00000002e+20 is outside the array (§3.6)" ]
+    (answer "print a{99999999999999999999}");
+  (* tooldata has three components, as a pos: its negation is refused, not a crash. *)
+  Alcotest.(check (list string)) "the negation of a tooldata"
+    [ "print: no operator of §3.12 takes an operand of this type" ] (answer "print -tool0");
+  Alcotest.(check (list string)) "set to the negation of a tooldata"
+    [ "set: no operator of §3.12 takes an operand of this type" ] (answer "set x := -tool0");
+  Alcotest.(check (list string)) "nothing changed" [ "x = 0" ] (answer "print x");
+  (* The refused breakpoints took no number; the one set stops continue. *)
+  Alcotest.(check (list string)) "continue" [ "m:6  x := 2;" ] (answer "continue")
 
 let suite =
   ("debugger",

@@ -104,6 +104,16 @@ let test_ik_errors () =
 
 (* ------------------------------------------------------------------ the description file *)
 
+(* The built-in IRB 120 description with line [n] (from 0) replaced by [l]. *)
+let replace_line n l =
+  String.concat "\n" (List.mapi (fun i x -> if i = n then l else x) (String.split_on_char '\n' Robot.irb120_text))
+
+(* A description refused with exactly the message [expected]. *)
+let err text expected =
+  match Robot.parse ~file:"r.robot" text with
+  | Ok _ -> Alcotest.failf "accepted, expected %s" expected
+  | Error e -> Alcotest.(check string) expected expected (Robot.error_to_string e)
+
 let test_description () =
   (match Robot.parse ~file:"irb120.robot" Robot.irb120_text with
    | Ok r -> Alcotest.(check bool) "the built-in text is the built-in robot" true (r = Robot.irb120)
@@ -111,12 +121,6 @@ let test_description () =
   Alcotest.(check string) "name" "ABB IRB 120" Robot.irb120.name;
   close "axis 6 speed" Robot.irb120.axes.(5).speed 420.;
   close "axis 3 min" Robot.irb120.axes.(2).min (-110.);
-  let replace_line n l =
-    String.concat "\n" (List.mapi (fun i x -> if i = n then l else x) (String.split_on_char '\n' Robot.irb120_text)) in
-  let err text expected =
-    match Robot.parse ~file:"r.robot" text with
-    | Ok _ -> Alcotest.failf "accepted, expected %s" expected
-    | Error e -> Alcotest.(check string) expected expected (Robot.error_to_string e) in
   err (replace_line 4 "axis 2      270        0          0     -90          -110   x110      250")
     "r.robot:5:61: robot description error: axis 2 max: expected a number, found \"x110\"";
   err (replace_line 4 "axes 2") "r.robot:5:1: robot description error: unknown keyword \"axes\" (expected name, axis, external or max_tcp_speed)";
@@ -150,12 +154,6 @@ let test_description () =
    (R-2.13-numbers2), at the offending word; before, a length of 1e300 reached the run and
    ended in an internal error. *)
 let test_description_numbers () =
-  let replace_line n l =
-    String.concat "\n" (List.mapi (fun i x -> if i = n then l else x) (String.split_on_char '\n' Robot.irb120_text)) in
-  let err text expected =
-    match Robot.parse ~file:"r.robot" text with
-    | Ok _ -> Alcotest.failf "accepted, expected %s" expected
-    | Error e -> Alcotest.(check string) expected expected (Robot.error_to_string e) in
   let axis2 a alpha d offset min max speed =
     replace_line 4 (Printf.sprintf "axis 2 %s %s %s %s %s %s %s" a alpha d offset min max speed) in
   let pre = "r.robot:5:" and model = ", the range of the model (doc/motion.md)" in

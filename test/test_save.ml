@@ -153,19 +153,11 @@ let property () =
 
 (* The case of issue 21: a string with bytes above 0x7F, saved twice by the command, loads and
    holds its value. *)
-let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe"
-
-let temp_dir () =
-  let d = Filename.temp_file "rapid-sem-save" "" in
-  Sys.remove d; Unix.mkdir d 0o700; d
-
-let read_file path =
-  let ic = open_in_bin path in
-  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
-
-let write_file path text =
-  let oc = open_out_bin path in
-  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
+(* The command line's binary and the file helpers, as the services' tests have them. *)
+let binary = Test_services.binary
+let temp_dir = Test_services.temp_dir
+let read_file = Test_services.read_file
+let write_file = Test_services.write_file
 
 let run_quietly args =
   let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in

@@ -5,19 +5,11 @@
    report and the JUnit XML. Each document is decoded strictly: UTF-8 by Utf8_text.is_utf8, JSON
    by Yojson, XML by xmlm. *)
 
-let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe"
-
-let read_file path =
-  let ic = open_in_bin path in
-  Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic))
-
-let write_file path text =
-  let oc = open_out_bin path in
-  Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text)
-
-let temp_dir () =
-  let d = Filename.temp_file "rapid-sem-utf8" "" in
-  Sys.remove d; Sys.mkdir d 0o755; d
+(* The command line's binary and the file helpers, as the services' tests have them. *)
+let binary = Test_services.binary
+let temp_dir = Test_services.temp_dir
+let read_file = Test_services.read_file
+let write_file = Test_services.write_file
 
 (* Runs rapid-sem in [dir]; its standard output. *)
 let run_in dir args =

@@ -39,8 +39,27 @@ cleanup() {
 }
 trap cleanup EXIT
 
+# What a folder holds, entry by entry (a link by its target, a file by its digest): the outside
+# folders are compared by it before and after each case.
+cat > "$WORK/digest.py" <<'PY'
+import hashlib, os
+
+def digest(folder):
+    out = {}
+    for dirpath, dirnames, filenames in os.walk(folder):
+        for name in dirnames + filenames:
+            full = os.path.join(dirpath, name)
+            rel = os.path.relpath(full, folder)
+            if os.path.islink(full): out[rel] = "link:" + os.readlink(full)
+            elif os.path.isdir(full): out[rel] = "dir"
+            else:
+                with open(full, "rb") as f: out[rel] = hashlib.sha1(f.read()).hexdigest()
+    return out
+PY
+
 python3 - "$WORK" "$N" <<'PY'
 import hashlib, json, os, random, socket, sys
+sys.path.insert(0, sys.argv[1]); from digest import digest  # written once above, for both passes
 
 work, n = sys.argv[1], int(sys.argv[2])
 rng = random.Random(2121)
@@ -127,18 +146,6 @@ def module(statements, loop=1):
             f"  PROC Try(num what)\n    TEST what\n{cases}    ENDTEST\n    Close f;\n  ERROR\n    Close f;\n"
             f"    TPWrite \"error \" \\Num:=ERRNO;\n    RETURN;\n  ENDPROC\nENDMODULE\n")
 
-def digest(folder):
-    out = {}
-    for dirpath, dirnames, filenames in os.walk(folder):
-        for name in dirnames + filenames:
-            full = os.path.join(dirpath, name)
-            rel = os.path.relpath(full, folder)
-            if os.path.islink(full): out[rel] = "link:" + os.readlink(full)
-            elif os.path.isdir(full): out[rel] = "dir"
-            else:
-                with open(full, "rb") as f: out[rel] = hashlib.sha1(f.read()).hexdigest()
-    return out
-
 manifest = []
 for i in range(n):
     name = "c%05d" % i
@@ -200,21 +207,10 @@ ls -d "$WORK"/cases/c* | xargs -P 2 -I{} bash -c 'run_case "$1" "$2"' _ {} "$BIN
 
 python3 - "$WORK" "$N" <<'PY'
 import hashlib, json, os, sys
+sys.path.insert(0, sys.argv[1]); from digest import digest  # written once above, for both passes
 
 work, n = sys.argv[1], int(sys.argv[2])
 manifest = json.load(open(os.path.join(work, "manifest.json")))
-
-def digest(folder):
-    out = {}
-    for dirpath, dirnames, filenames in os.walk(folder):
-        for name in dirnames + filenames:
-            full = os.path.join(dirpath, name)
-            rel = os.path.relpath(full, folder)
-            if os.path.islink(full): out[rel] = "link:" + os.readlink(full)
-            elif os.path.isdir(full): out[rel] = "dir"
-            else:
-                with open(full, "rb") as f: out[rel] = hashlib.sha1(f.read()).hexdigest()
-    return out
 
 def written(folder):
     total = 0
@@ -247,7 +243,7 @@ for m in manifest:
         print(f"{m['name']}: " + "; ".join(problems) + f" (exit {rc})", file=sys.stderr)
     if rc in (124, 125, 134, 137):
         print(f"{m['name']}: exit {rc}: {err.strip()[:200]}", file=sys.stderr)
-higher = set(os.listdir(work)) - {"cases", "manifest.json"}
+higher = set(os.listdir(work)) - {"cases", "manifest.json", "digest.py", "__pycache__"}
 if higher:
     other += 1
     print("in the campaign's folder: " + ", ".join(sorted(higher)), file=sys.stderr)
