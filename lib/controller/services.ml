@@ -17,8 +17,6 @@ type t = {
 
 let max_file_size = 64 * 1024 * 1024
 let max_total_size = 256 * 1024 * 1024
-let file_limit t = t.file_limit
-let quota t = t.quota
 
 let create ?sandbox ?sockets ?(max_file_size = max_file_size) ?(max_total_size = max_total_size) () =
   { sandbox = (match sandbox with Some s -> s | None -> File_sandbox.create File_sandbox.default_root);
@@ -66,10 +64,6 @@ let is_open t id = Hashtbl.mem t.files id
 
 let input t id = match Hashtbl.find_opt t.files id with
   | Some { ic = Some ic; _ } -> Ok ic
-  | _ -> Error "ERR_FILEACC"
-
-let output t id = match Hashtbl.find_opt t.files id with
-  | Some { oc = Some oc; _ } -> Ok oc
   | _ -> Error "ERR_FILEACC"
 
 (* A full mass memory: ABB's pages of Write, WriteBin, WriteStrBin and CopyFile give

@@ -25,15 +25,10 @@ val new_object : t -> int
 val max_file_size : int
 (** 64 MiB: a write that would make a file longer raises ERR_FILESIZE (doc/rulings.md R-13-s). *)
 
-val file_limit : t -> int
-(** The run's bound on the size of a file. *)
-
 val max_total_size : int
 (** 256 MiB: the quota of the bytes a run writes into files (Write and the other writes,
     CopyFile); a write beyond it raises ERR_FILEACC, as on a full mass memory
     (doc/rulings.md R-13-sandbox1). *)
-
-val quota : t -> int
 
 (** {1 Files (iodev)} *)
 
@@ -47,8 +42,6 @@ val is_open : t -> int -> bool
 
 val input : t -> int -> (in_channel, string) result
 (** ERR_FILEACC: not open, or not open for reading. *)
-
-val output : t -> int -> (out_channel, string) result
 
 val write : t -> int -> string -> (unit, string) result
 (** Writes and flushes; ERR_FILESIZE beyond the file's bound, ERR_FILEACC beyond the quota or

@@ -139,11 +139,3 @@ let contents r =
       { schema; events = rest }
   | Some first -> { schema = None; events = first :: rest }
   | None -> { schema = None; events = [] }
-
-let parse text =
-  let r = reader () in
-  let rec go n = function
-    | [] -> Ok (contents r)
-    | line :: more -> (match add_line r n line with Ok () -> go (n + 1) more | Error m -> Error m)
-  in
-  go 1 (String.split_on_char '\n' text)

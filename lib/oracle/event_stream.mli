@@ -36,9 +36,6 @@ val read_line : reader -> int -> string -> (event option, string) result
 val contents : reader -> t
 (** What the lines read so far make. *)
 
-val parse : string -> (t, string) result
-(** The text an implementation wrote on standard output, read as {!add_line} reads each line. *)
-
 val kind : event -> string
 (** The ["event"] field, or [""]. *)
 
@@ -55,4 +52,4 @@ val clip : string -> string
     followed by [... (N bytes)]: the result is valid UTF-8 and drives no terminal. *)
 
 val canonical : event -> event
-(** Fields sorted by name, recursively: how [parse] gives each event. *)
+(** Fields sorted by name, recursively: how {!add_line} gives each event. *)
