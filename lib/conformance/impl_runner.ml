@@ -75,7 +75,7 @@ let command ?(fs = []) ~template (case : Spec_case.t) =
   else Rapid_oracle.Implementation.command_line ~template:with_mode ~files:case.files
 
 let field name = function `Assoc f -> List.assoc_opt name f | _ -> None
-(* The implementation's strings, clipped where a detail shows them (Stream.clip). *)
+(* The implementation's strings: compared as they are, clipped where a detail shows them (Stream.clip). *)
 let string_field name j = match field name j with Some (`String s) -> Some s | _ -> None
 let shown_field name j = Option.map Stream.clip (string_field name j)
 let int_field name j = match field name j with Some (`Int n) -> Some n | _ -> None
@@ -111,14 +111,15 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
       let outcome = Option.value (string_field "outcome" last) ~default:"" in
       match case.expectation, case.run with
       | Some (Refused { error_class; file; line; col }), _ ->
-          let got_class = Option.value (shown_field "class" last) ~default:"" in
+          let got_class = Option.value (string_field "class" last) ~default:"" in
           let got = place last in
           let file_ok = match file, got with Some f, Some (g, _, _) -> f = g | None, _ -> true | _ -> false in
           if outcome = "refused" && got_class = error_class && file_ok
              && (match got with Some (_, l, c) -> l = line && c = col | None -> false)
           then Ok ()
           else Error (Printf.sprintf "expected %s at %d:%d; got %s%s" error_class line col (Stream.clip outcome)
-                        (if outcome = "refused" then Printf.sprintf " %s at %s" got_class (show_place got) else ""))
+                        (if outcome = "refused" then Printf.sprintf " %s at %s" (Stream.clip got_class) (show_place got)
+                         else ""))
       | Some Accepted, None ->
           if outcome = "accepted" || outcome = "ended" then Ok ()
           else Error (Printf.sprintf "expected the case to be accepted; got %s %s"
@@ -135,11 +136,12 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
                  [ Printf.sprintf "exit %d (%s), expected %d" status (Stream.clip outcome) run.exit_status ] else [])
             @ (match run.error with
                | Some (name, l, c) -> (
-                   let got_name = Option.value (shown_field "name" last) ~default:"" in
+                   let got_name = Option.value (string_field "name" last) ~default:"" in
                    match place last with
                    | Some (f, gl, gc) when got_name = name && gl = l && gc = c
                                            && (match run.error_file with Some ef -> ef = f | None -> true) -> []
-                   | got -> [ Printf.sprintf "error %s at %s, expected %s %d:%d" got_name (show_place got) name l c ])
+                   | got ->
+                       [ Printf.sprintf "error %s at %s, expected %s %d:%d" (Stream.clip got_name) (show_place got) name l c ])
                | None -> [])
           in
           if problems = [] then Ok () else Error (String.concat "; " problems)
