@@ -29,29 +29,6 @@ let shortest precision ~max_digits f =
       if p >= max_digits || reads_as precision s = Some f then s else go (p + 1) in
     go 1
 
-(* The length of the valid UTF-8 sequence at [i] of [s] and its code point; (0, 0) when the
-   bytes there are not one (overlong forms, surrogates and code points beyond U+10FFFF are
-   not). *)
-let utf8_at s i =
-  let n = String.length s in
-  let byte k = if i + k < n then Char.code s.[i + k] else -1 in
-  let cont k = let b = byte k in if b >= 0x80 && b < 0xC0 then b land 0x3F else -1 in
-  let c = byte 0 in
-  if c < 0x80 then (1, c)
-  else if c < 0xC2 then (0, 0)
-  else if c < 0xE0 then (if cont 1 >= 0 then (2, ((c land 0x1F) lsl 6) lor cont 1) else (0, 0))
-  else if c < 0xF0 then
-    if cont 1 < 0 || cont 2 < 0 then (0, 0)
-    else
-      let u = ((c land 0x0F) lsl 12) lor (cont 1 lsl 6) lor cont 2 in
-      if u < 0x800 || (u >= 0xD800 && u <= 0xDFFF) then (0, 0) else (3, u)
-  else if c < 0xF5 then
-    if cont 1 < 0 || cont 2 < 0 || cont 3 < 0 then (0, 0)
-    else
-      let u = ((c land 0x07) lsl 18) lor (cont 1 lsl 12) lor (cont 2 lsl 6) lor cont 3 in
-      if u < 0x10000 || u > 0x10FFFF then (0, 0) else (4, u)
-  else (0, 0)
-
 (* §2.7: a string literal whose value is exactly the bytes of [s] when the literal stands in a
    file of this encoding. The lexer gives a literal's value as the UTF-8 of the characters the
    file decodes to, so a character is written as itself only when decoding it gives back the
@@ -70,9 +47,12 @@ let string_literal ~latin1 s =
       | c when Char.code c < 0x20 || Char.code c = 0x7F -> code i; go (i + 1)
       | c when Char.code c < 0x80 -> Buffer.add_char b c; go (i + 1)
       | _ -> (
-          match utf8_at s i with
-          | k, u when k > 0 && u >= 0xA0 && not latin1 -> Buffer.add_string b (String.sub s i k); go (i + k)
-          | 2, u when u >= 0xA0 && u <= 0xFF && latin1 -> Buffer.add_char b (Char.chr u); go (i + 2)
+          (* The code point of a sequence of two bytes (a longer one is beyond U+07FF). *)
+          let two () = ((Char.code s.[i] land 0x1F) lsl 6) lor (Char.code s.[i + 1] land 0x3F) in
+          match Utf8_text.sequence s i with
+          | k when k > 0 && not latin1 && (k > 2 || two () >= 0xA0) ->
+              Buffer.add_string b (String.sub s i k); go (i + k)
+          | 2 when latin1 && two () >= 0xA0 && two () <= 0xFF -> Buffer.add_char b (Char.chr (two ())); go (i + 2)
           | _ -> code i; go (i + 1)) in
   Buffer.add_char b '"';
   go 0;

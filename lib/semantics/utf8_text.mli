@@ -3,6 +3,10 @@
 
 val is_utf8 : string -> bool
 
+val sequence : string -> int -> int
+(** The length of the valid UTF-8 sequence at an index, or 0 (overlong forms, surrogates and code
+    points beyond U+10FFFF are not valid). *)
+
 val of_bytes : string -> string
 (** The string with its valid UTF-8 sequences kept and every other byte read as the Latin-1
     character of that code (so that 0xE9 becomes "é"). The result is valid UTF-8. *)
