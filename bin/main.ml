@@ -391,10 +391,9 @@ let bound_items items =
   let n = List.length items and keep = chain_shown / 2 in
   if n <= chain_shown then List.map fst items
   else
-    let left = List.filteri (fun i _ -> i >= keep && i < n - keep) items in
-    let outer = List.filteri (fun i _ -> i < keep || i >= n - keep) items |> List.map fst in
-    List.filteri (fun i _ -> i < keep) outer
-    @ (more_marker (List.fold_left (fun s (_, k) -> s + k) 0 left) :: List.filteri (fun i _ -> i >= keep) outer)
+    let part p = List.filteri (fun i _ -> p i) items in
+    let left_out = List.fold_left (fun s (_, k) -> s + k) 0 (part (fun i -> i >= keep && i < n - keep)) in
+    List.map fst (part (fun i -> i < keep)) @ (more_marker left_out :: List.map fst (part (fun i -> i >= n - keep)))
 
 (* The --json chain: one routine an item, bounded as above. *)
 let bound_chain chain = bound_items (List.map (fun r -> (r, 1)) chain)

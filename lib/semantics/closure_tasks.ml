@@ -49,7 +49,7 @@ type t = {
   mutable cut : bool;                      (* a task ran out of fuel: the run stopped *)
   mutable aborting : bool;
   mutable ran : bool;
-  limits : M.limits option;
+  limits : M.limits;
   stub_unmodelled : bool option;
   clock : W.t;
   mutable over : bool;                     (* the run is over: no more turns *)
@@ -96,7 +96,7 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
           tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
       let order = Task_set.order_of_seed seed in
       Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = ref 0; ended = None; cut = false;
-            aborting = false; ran = false; limits = Some (Task_set.limits ts); stub_unmodelled; clock = world;
+            aborting = false; ran = false; limits = Task_set.limits ts; stub_unmodelled; clock = world;
             over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
           warnings)
 
@@ -186,7 +186,7 @@ let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event ()
         yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
         native_budget = thread_budget () } in
       let on_event e = if not t.aborting then on_event task.name e in
-      match C.run ?limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
+      match C.run ~limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
               ~motion:task.motion ~cooperation task.program ~entry:task.entry with
       | r -> if task.globals <> [||] then publish t task; Finished r
       | exception e -> Crashed e

@@ -155,11 +155,14 @@ let running s =
   | M.Running -> true
   | o -> s.out ("the task is not running: " ^ outcome_text o); false
 
+(* A breakpoint's file names a file of the task as given or by its base name: one test, for the
+   stop at a breakpoint and for the refusal of one that names no file of the task. *)
+let same_file f file = f = file || Filename.basename f = Filename.basename file
+
 let at_breakpoint s =
   let r = M.focus_region s.cfg in
   let file = file_name r and line = (Source.start r).line in
-  List.exists (fun (_, f, l) ->
-      l = line && (f = file || Filename.basename f = Filename.basename file)) s.breakpoints
+  List.exists (fun (_, f, l) -> l = line && same_file f file) s.breakpoints
 
 (* --- data: the names an expression of print and set reads (doc/debugger.md) *)
 
@@ -266,8 +269,7 @@ let ranges lines =
 (* A breakpoint that could never stop the program pointer is refused, saying where one can:
    the task's files, or the lines of FILE a statement begins on (around LINE, for a long file). *)
 let breakable s file line =
-  let same (f, _) = f = file || Filename.basename f = Filename.basename file in
-  match List.filter same s.statement_lines with
+  match List.filter (fun (f, _) -> same_file f file) s.statement_lines with
   | [] ->
       Error (Printf.sprintf "no file %s in the task (its files: %s)" file
                (String.concat ", " (List.map fst s.statement_lines)))

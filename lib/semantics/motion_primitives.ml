@@ -327,8 +327,8 @@ let check st ~now =
 let forget st ~now =
   if st.history_budget = None then begin
     let keep = Option.value st.last_planned ~default:0 in
-    let keep = match st.tracks, List.rev st.tracks_back with
-      | tr :: _, _ | [], tr :: _ -> min keep tr.t_id | [], [] -> keep in
+    let oldest k tr = min k tr.t_id in
+    let keep = List.fold_left oldest (List.fold_left oldest keep st.tracks) st.tracks_back in
     let keep = List.fold_left (fun k (id, _, _) -> min k id) keep st.outputs in
     let keep = match st.interrupted with Some (id, _) -> min keep id | None -> keep in
     P.forget st.planner ~before:now ~keep
