@@ -72,8 +72,7 @@ let within line (col, w) what ~low ~high ~unit v =
     raise (Bad (line, col, Printf.sprintf "%s: %s is outside %g .. %g %s, the range of the model (doc/motion.md)"
                              what (Rapid_syntax.Decimal.shown w) low high unit))
 
-let length line cw what =
-  let v = number line cw what in
+let length line cw what v =
   within line cw what ~low:(-. max_length) ~high:max_length ~unit:"mm" v;
   if v <> 0. && Float.abs v < min_length then
     raise (Bad (line, fst cw, Printf.sprintf "%s: %s is below 0.001 mm, the model's resolution (0 or at least 0.001)"
@@ -191,7 +190,7 @@ let parse ~file text =
             let v = List.map2 (fun f w -> number ln w (Printf.sprintf "axis %d %s" k f)) fields rest in
             let get i = List.nth v i and word i = List.nth rest i in
             let what i = Printf.sprintf "axis %d %s" k (List.nth fields i) in
-            let len i = length ln (word i) (what i) in
+            let len i = length ln (word i) (what i) (get i) in
             let turn i = within ln (word i) (what i) ~low:(-. max_turn) ~high:max_turn ~unit:"degrees" (get i); get i in
             let limit i =
               within ln (word i) (what i) ~low:(-. max_limit) ~high:max_limit ~unit:"degrees" (get i); get i in
