@@ -2,7 +2,7 @@
    input or from a script file. *)
 
 open Cmdliner
-module D = Rapid_semantics.Debugger
+module D = Rapid_tools.Debugger
 
 let cmd ~start_machine ~finish ~common_run_args ~controller_args =
   let robot_arg = Motion_cmd.robot_arg in
@@ -32,7 +32,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
             | Procedure_declaration { name; body; _ } | Function_declaration { name; body; _ }
             | Trap_declaration { name; body; _ } -> named name body
             | Routine_comment _ | RDN_placeholder -> ()) m.routine_declarations) parsed;
-    let routine_data (r : Rapid_semantics.Ir.routine) =
+    let routine_data (r : Rapid_runtime.Ir.routine) =
       Option.value ~default:[]
         (Hashtbl.find_opt data_names (String.lowercase_ascii r.module_name, String.lowercase_ascii r.name)) in
     (* §9.2, §9.4: the modules stepping does not enter, from their attributes. *)
@@ -40,7 +40,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
         if List.exists (fun (a : Rapid_syntax.Ast.module_attribute) ->
             match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
         then [ ident m.module_name ] else []) parsed in
-    let type_of = Rapid_semantics.Debug_types.type_of parsed in
+    let type_of = Rapid_tools.Debug_types.type_of parsed in
     let files = List.map (fun f -> if f = "-" then Rapid_syntax.Parse.stdin_name else f) files in
     let session = D.create ~max_steps ~routine_data ~type_of ~files
         ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in

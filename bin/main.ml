@@ -2,7 +2,7 @@
    (doc/user-guide.md): 0 success, 2 a static error (lexical, syntax, fatal), 1 a failing
    conformance suite, 125 an internal error of rapid-sem. *)
 
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Cmdliner
 open Rapid_syntax
 
@@ -95,7 +95,7 @@ let epoch_conv =
           let days = (era * 146097) + doe - 719468 in
           Ok (float_of_int ((days * 86400) + (hh * 3600) + (mm * 60) + ss)))
     with _ -> Error (`Msg "expected YYYY-MM-DDTHH:MM:SS") in
-  let print ppf t = let y, m, d, hh, mm, ss, _ = Rapid_semantics.Io_primitives.date_time t in
+  let print ppf t = let y, m, d, hh, mm, ss, _ = Rapid_installed.Io_routines.date_time t in
     Format.fprintf ppf "%04d-%02d-%02dT%02d:%02d:%02d" y m d hh mm ss in
   Arg.conv (parse, print)
 
@@ -223,7 +223,7 @@ let check_cmd =
       exit_static_error
     end
     else
-      match Rapid_semantics.Session.installed ~io () with
+      match Rapid_load.Session.installed ~io () with
       | Error d ->
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
@@ -237,7 +237,7 @@ let check_cmd =
                 Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
               let reports =
                 if Rapid_typing.Check.errors result <> [] then result.reports
-                else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+                else match Rapid_load.Session.lower ~io ~installed ~modules result with
                   | Ok _ -> result.reports
                   | Error initial_value_errors -> result.reports @ initial_value_errors in
               (name, modules, result, reports)) parsed in
@@ -245,10 +245,10 @@ let check_cmd =
           (* ch. 14: the buffers together, once each is sound on its own. *)
           let across =
             if tasks = [] || List.exists (fun (_, _, _, reports) -> List.exists is_error reports) checked then []
-            else Rapid_semantics.Task_check.shared_persistents
+            else Rapid_load.Task_check.shared_persistents
                 (List.map (fun (name, modules, (result : Rapid_typing.Check.result), _) ->
-                     { Rapid_semantics.Task_check.name; modules; elaboration = result.elaboration }) checked) in
-          let reports = List.map (Rapid_semantics.Session.at_io_place io)
+                     { Rapid_load.Task_check.name; modules; elaboration = result.elaboration }) checked) in
+          let reports = List.map (Rapid_load.Session.at_io_place io)
               (List.concat_map (fun (_, _, _, reports) -> reports) checked @ across) in
           print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
@@ -292,13 +292,13 @@ let report_load_failure ?(json = false) failure =
   if json then Option.iter (fun j -> List.iter (fun l -> print_endline (Json_text.to_string l)) j)
       (Verdict.stream_of_failure failure);
   match failure with
-  | Rapid_semantics.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
+  | Rapid_load.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
   | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
 
 (* JSON text is UTF-8: RAPID strings and names are bytes, read as Latin-1 where they are not
    UTF-8 (doc/trace-format.md). *)
-let text s = `String (Rapid_semantics.Utf8_text.of_bytes s)
+let text s = `String (Rapid_runtime.Utf8_text.of_bytes s)
 
 let region_json r =
   let p = Source.start r and q = Source.stop r in
@@ -370,9 +370,9 @@ let refused_entry_json files entry : Yojson.Safe.t =
 
 (* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
    place both engines know; R-4.12-m); an end no source place explains has [null]. *)
-let entry_region (program : Rapid_semantics.Ir.program) entry =
+let entry_region (program : Rapid_runtime.Ir.program) entry =
   let lower = String.lowercase_ascii entry in
-  Array.fold_left (fun found (r : Rapid_semantics.Ir.routine) ->
+  Array.fold_left (fun found (r : Rapid_runtime.Ir.routine) ->
       match found with
       | Some _ -> found
       | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
@@ -492,7 +492,7 @@ let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
   if not (allow_unknown && stub_unmodelled) then io
   else
     let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
-    let io, added = Rapid_semantics.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
+    let io, added = Rapid_load.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
     List.iter (fun (s : Rapid_controller.Io_config.signal) ->
         Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n%!" s.name
           (Rapid_controller.Io_config.type_name s.kind)) added;
@@ -508,14 +508,14 @@ let in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) c
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
-  match Rapid_semantics.Session.load ~allow_unknown ~io files with
+  match Rapid_load.Session.load ~allow_unknown ~io files with
   | Error f -> report_load_failure ?json f
   | Ok loaded ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       Option.iter prerr_endline loaded.unknown_summary;
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
+      let motion = Rapid_installed.Motion_routines.create ~robot ?history () in
       match Services_args.install controller.services world with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok () -> k loaded world motion
@@ -547,7 +547,7 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
   let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
   let data = ref [] in
   let module_data = Option.map (fun _ d -> data := d) save in
-  match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
+  match Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
           ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
   | Error m ->
       if json then print_endline (Json_text.to_string (refused_entry_json files entry));
@@ -561,7 +561,7 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
         | None -> Ok []
         | Some dir ->
             flush_output ();
-            Rapid_semantics.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
+            Rapid_run.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
       match saved with
       | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
       | Ok _ -> finish outcome fuel_used ~max_steps
@@ -598,7 +598,7 @@ let prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) cont
       { Rapid_semantics.Task_set.name; files; entry }) tasks in
   let world = Rapid_controller.World.create ~statement_time:controller.statement_time
       ~max_time:controller.max_time ~epoch:controller.epoch io in
-  let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
+  let motion = Rapid_installed.Motion_routines.create ~robot ?history () in
   match Services_args.install controller.services world with
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok () -> start ~io ~world ~motion specs names
@@ -639,7 +639,7 @@ let task_ends ts =
 let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
     (retry_limit, max_memory) controller robot =
   prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
-  let module CT = Rapid_semantics.Closure_tasks in
+  let module CT = Rapid_closure.Closure_tasks in
   match CT.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
           ?seed ?motion_task ~world ~motion specs with
   | Error f -> refused_tasks ~json f
@@ -749,7 +749,7 @@ let run_cmd =
       run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
     else let saved_files = List.filter (( <> ) "-") files in
-    match Option.map (fun dir -> Rapid_semantics.Persistent_save.check ~dir ~files:saved_files) save with
+    match Option.map (fun dir -> Rapid_run.Persistent_save.check ~dir ~files:saved_files) save with
     | Some (Error m) -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
     | _ ->
     (* A module read from standard input has no file to write back: say so rather than drop it. *)
@@ -759,7 +759,7 @@ let run_cmd =
     single_task files entries schedule motion_task @@ fun entry ->
     let print_event (e : M.event) =
       if json then print_line (Json_text.to_string (event_json e))
-      else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
+      else match e with Output s -> print_line (Rapid_runtime.Text_format.display s) | _ -> () in
     if engine = `Closure && samples <> None then
       (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
     else if engine = `Closure then
@@ -791,7 +791,7 @@ let run_cmd =
     let saved = match save with
       | None -> Ok []
       | Some dir ->
-          Rapid_semantics.Persistent_save.save_modules ~dir
+          Rapid_run.Persistent_save.save_modules ~dir
             ~files:(List.filter (( <> ) "-") files) (M.module_data cfg) in
     match saved with
     | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
@@ -809,7 +809,7 @@ let run_cmd =
     Term.(const run $ tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
           $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine)
 
-module TV = Rapid_semantics.Trace_view
+module TV = Rapid_tools.Trace_view
 
 let write_json (w : TV.change) =
   match w with
@@ -843,11 +843,11 @@ let controller_text (e : M.event) =
       Some (Printf.sprintf "%.6f s: interrupt %d discarded (%s)" time number reason)
   | Trap_entered { time; number; trap } -> Some (Printf.sprintf "%.6f s: trap %s serves interrupt %d" time trap number)
   | Trap_left { time; trap } -> Some (Printf.sprintf "%.6f s: trap %s left" time trap)
-  | Motion m -> Some (Rapid_semantics.Motion_primitives.event_to_string m)
+  | Motion m -> Some (Rapid_installed.Motion_routines.event_to_string m)
   | _ -> None
 
 (* An entry of the event log other than ErrWrite's (§7.5), as the debugger shows it. *)
-let event_log_text : Rapid_semantics.Primitive.log_entry -> string = function
+let event_log_text : Rapid_installed.Primitive.log_entry -> string = function
   | Err_log { id; kind; arguments } -> Printf.sprintf "%s %d: %s" kind id (String.concat " | " arguments)
   | Skip_warning -> "SkipWarn"
 
@@ -918,7 +918,7 @@ let trace_cmd =
        nested statement printed (the store of [x := f(y)] after f's statements) continues its
        statement on a line of its own. *)
     (* A line is a statement's, or, before a routine's first statement, its routine data's. *)
-    let module Ir = Rapid_semantics.Ir in
+    let module Ir = Rapid_runtime.Ir in
     let line : (int * Ir.routine * Ir.stmt option * int * TV.change list) option ref = ref None in
     (* With several tasks: the task of the line being built; a step of another task ends it. *)
     let line_task : string option ref = ref None in
@@ -939,8 +939,8 @@ let trace_cmd =
                 let shown = List.filter_map change_text changes in
                 let place = match !line_task with Some t -> t ^ " " ^ place | None -> place in
                 print_line @@ Printf.sprintf "%s%s%s%s%s" place (String.make (max 2 (20 - String.length place)) ' ')
-                  (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_semantics.Format.display text)
-                  (if shown = [] then "" else "   " ^ Rapid_semantics.Format.display (String.concat "; " shown))
+                  (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_runtime.Text_format.display text)
+                  (if shown = [] then "" else "   " ^ Rapid_runtime.Text_format.display (String.concat "; " shown))
             | `Jsonl ->
                 json (`Assoc ((match !line_task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                     ("statement", `String place);
@@ -986,12 +986,12 @@ let trace_cmd =
               | Some s when Some s <> !last_state -> last_state := st.state; "   | " ^ s
               | Some _ -> ""
               | None -> last_state := None; "" in
-            let step = Rapid_semantics.Format.display step and state = Rapid_semantics.Format.display state in
+            let step = Rapid_runtime.Text_format.display step and state = Rapid_runtime.Text_format.display state in
             let number = match task with Some t -> Printf.sprintf "%s %d" t st.number | None -> Printf.sprintf "%6d" st.number in
             if state = "" then print_line (Printf.sprintf "%s %-22s %-24s %s" number st.rule (Source.to_string st.at) step)
             else print_line (Printf.sprintf "%s %-22s %-24s %-44s%s" number st.rule (Source.to_string st.at) step state);
             List.iter (fun c -> match change_line c with
-                | Some l -> print_line ("       " ^ Rapid_semantics.Format.display l) | None -> ()) st.changes
+                | Some l -> print_line ("       " ^ Rapid_runtime.Text_format.display l) | None -> ()) st.changes
         | `Jsonl ->
             json (`Assoc ((match task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                 ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);

@@ -3,7 +3,7 @@
 
 open Cmdliner
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
 let robot_arg =

@@ -1,6 +1,6 @@
 (* The motion events of a run as JSON (doc/trace-format.md, "Motion events"). *)
 
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 
 (* Virtual times to the microsecond, lengths to the micrometre, angles to the microdegree. *)
 let fixed digits x =

@@ -6,7 +6,7 @@
 
 open Rapid_syntax
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 (* Every folder of spec/: the run cases among them are compared, the controller's, the
    motion's and the services' included. *)
@@ -35,11 +35,11 @@ let event_text (e : M.event) =
       Printf.sprintf "%.6f interrupt %d discarded: %s" time number reason
   | Trap_entered { trap; number; time } -> Printf.sprintf "%.6f trap entered %s %d" time trap number
   | Trap_left { trap; time } -> Printf.sprintf "%.6f trap left %s" time trap
-  | Motion m -> "motion " ^ Rapid_semantics.Motion_primitives.event_to_string m
+  | Motion m -> "motion " ^ Rapid_installed.Motion_routines.event_to_string m
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
   | Event_log Skip_warning -> "skipwarn"
-  | Observed o -> Rapid_semantics.Observation.to_string o
+  | Observed o -> Rapid_runtime.Observation.to_string o
 
 (* The outcome as the two engines must agree on it. A run cut short by the machine's step limit
    and one cut short by the closure engine's fuel are both "exhausted": what a step and a unit
@@ -63,7 +63,7 @@ let io_of (case : Rapid_conformance.Spec_case.t) =
 
 let load (case : Rapid_conformance.Spec_case.t) =
   let modules = List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) case.files in
-  match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io:(io_of case) modules with
+  match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io:(io_of case) modules with
   | Ok loaded -> Some loaded.program
   | Error _ -> None
 
@@ -171,7 +171,7 @@ let run_cases () =
 (* ------------------------------------------------------------------ several tasks (ch. 14) *)
 
 module TS = Rapid_semantics.Task_set
-module CT = Rapid_semantics.Closure_tasks
+module CT = Rapid_closure.Closure_tasks
 
 type tasks_run = {
   events : (string * M.event) list;          (* each with its task, in order *)
@@ -192,7 +192,7 @@ let tasks_world (run : Rapid_conformance.Spec_case.run) f =
   let robot = match run.robot with
     | Some file -> (match Rapid_motion_model.Robot.load file with Ok r -> Some r | Error _ -> Alcotest.fail file)
     | None -> None in
-  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  let motion = Rapid_installed.Motion_routines.create ?robot () in
   Fun.protect (fun () -> f ~io ~world ~motion)
     ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
 
@@ -317,7 +317,7 @@ let random_tasks () =
     let run engine =
       let world = Rapid_controller.World.create ~statement_time:0.001 Rapid_controller.Io_config.empty in
       engine ?seed ~stub_unmodelled:false ~allow_unknown:false ~max_steps:1_000_000 ~io:Rapid_controller.Io_config.empty
-        ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) ?motion_task:None specs in
+        ~world ~motion:(Rapid_installed.Motion_routines.create ()) ?motion_task:None specs in
     match run machine_tasks, run closure_tasks with
     | None, None -> true
     | Some m, Some c -> (
@@ -793,7 +793,7 @@ let load_text ?(allow_unknown = false) ?io name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules ~allow_unknown ?io [ m ] with
+      match Rapid_load.Session.load_modules ~allow_unknown ?io [ m ] with
       | Ok l -> l.program
       | Error _ -> Alcotest.failf "%s does not check" name)
 
@@ -1001,7 +1001,7 @@ let random_programs () =
     match Parse.parse_string ~name:"generated.mod" text with
     | Error d -> QCheck.Test.fail_reportf "does not parse: %s" (Diagnostic.to_string d)
     | Ok m -> (
-        match Rapid_semantics.Session.load_modules [ m ] with
+        match Rapid_load.Session.load_modules [ m ] with
         | Error _ -> QCheck.Test.fail_reportf "does not check"
         | Ok l ->
             let budget = 1_000_000 and limits = M.default_limits in

@@ -12,7 +12,7 @@ let load ?io texts =
       match Rapid_syntax.Parse.parse_string ~name:(name ^ ".mod") text with
       | Ok m -> m
       | Error d -> Alcotest.failf "%s" (Rapid_syntax.Diagnostic.to_string d)) texts in
-  match Rapid_semantics.Session.load_modules ?io modules with
+  match Rapid_load.Session.load_modules ?io modules with
   | Ok l -> l.program
   | Error _ -> Alcotest.fail "does not check"
 

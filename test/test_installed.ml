@@ -49,7 +49,7 @@ let errors_stay_per_use () =
 let stubbed_record_result () =
   let m = parse "r.mod"
       "MODULE r\n  VAR symnum m;\n  PROC main()\n    m := OpMode();\n    TPWrite \"m=\" \\Num:=m;\n  ENDPROC\nENDMODULE\n" in
-  match Rapid_semantics.Session.load_modules [ m ] with
+  match Rapid_load.Session.load_modules [ m ] with
   | Error _ -> Alcotest.fail "does not load"
   | Ok loaded -> (
       let module M = Rapid_semantics.Machine in

@@ -2,7 +2,7 @@
    the moves made; with history (--samples, rapid-sem motion) it is charged against its budget. *)
 
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
 let loop ~moves ~zone ~speed ~p2 =
@@ -24,7 +24,7 @@ let start ?history text =
   let f = Filename.temp_file "memloop" ".mod" in
   let oc = open_out_bin f in
   output_string oc text; close_out oc;
-  match Rapid_semantics.Session.load ~io:Rapid_controller.Io_config.empty [ f ] with
+  match Rapid_load.Session.load ~io:Rapid_controller.Io_config.empty [ f ] with
   | Error _ -> Sys.remove f; Alcotest.fail "the loop does not load"
   | Ok loaded -> (
       Sys.remove f;

@@ -2,7 +2,7 @@
    motion events of a run, and real programs of test/realworld that only lacked motion. *)
 
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
 type run = { outcome : M.outcome; output : string list; motion : MP.event list; cfg : M.config }
@@ -14,7 +14,7 @@ let run ?robot ?io ?(allow_unknown = false) ?(max_time = 3600.) ?(statement_time
   let robot = match robot with
     | None -> MM.Robot.irb120
     | Some f -> (match MM.Robot.load f with Ok r -> r | Error e -> Alcotest.fail (MM.Robot.error_to_string e)) in
-  match Rapid_semantics.Session.load ~allow_unknown ~io files with
+  match Rapid_load.Session.load ~allow_unknown ~io files with
   | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
   | Ok loaded -> (
       let world = Rapid_controller.World.create ~statement_time ~max_time io in

@@ -94,7 +94,7 @@ let only_signals_unknown (name, files) =
    unknown here and raises ERR_REFUNKDAT when reached. *)
 let run_polishing ~stub_unmodelled =
   let module M = Rapid_semantics.Machine in
-  match Rapid_semantics.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
+  match Rapid_load.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
   | Error _ -> Alcotest.fail "the polishing cell does not load"
   | Ok loaded -> (
       match M.start ~stub_unmodelled loaded.program ~entry:"main" with

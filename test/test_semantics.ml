@@ -48,7 +48,7 @@ let rules_in_spec () =
           let io = match run.io with
             | Some f -> Result.value (Rapid_controller.Io_config.read_file f) ~default:Rapid_controller.Io_config.empty
             | None -> Rapid_controller.Io_config.empty in
-          match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
+          match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
           | Error _ -> ()
           | Ok { program; _ } ->
             let limits = { M.default_limits with
@@ -68,7 +68,7 @@ let rules_in_spec () =
           let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time
               Rapid_controller.Io_config.empty in
           let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
-          match TS.start ?seed:run.schedule ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs with
+          match TS.start ?seed:run.schedule ~world ~motion:(Rapid_installed.Motion_routines.create ()) specs with
           | Error _ -> ()
           | Ok (ts, _) ->
               let rec loop n = if n > 0 then match TS.step ts with
@@ -94,7 +94,7 @@ let long_routine () =
   match Parse.parse_string ~name:"long.mod" (Buffer.contents b) with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the long routine does not check"
       | Ok loaded -> (
           match M.start loaded.program ~entry:"main" with
@@ -111,7 +111,7 @@ let machine_of text =
   match Parse.parse_string ~name:"t.mod" text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the program does not check"
       | Ok loaded -> (
           match M.start loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
@@ -149,8 +149,8 @@ let settled_steps () =
 
 (* Values in RAPID's syntax, numbers with enough digits to read back to the same number. *)
 let value_text () =
-  let module V = Rapid_semantics.Value in
-  let text = Rapid_semantics.Trace_view.value in
+  let module V = Rapid_runtime.Value in
+  let text = Rapid_tools.Trace_view.value in
   Alcotest.(check string) "integer" "16777216" (text (V.num 16777216.));
   Alcotest.(check string) "0.1" "0.1" (text (V.num 0.1));
   Alcotest.(check string) "largest single" "3.4028235E+38" (text (V.num 3.4028235e38));

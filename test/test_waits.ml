@@ -4,7 +4,7 @@
    count against the step limit. *)
 
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 (* p raises at every level and its handler calls p again, [depth] levels deep (§7.1, §4.11). *)
 let handler_recursion depth =

@@ -9,7 +9,7 @@
 
 open Rapid_syntax
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 let programs = [
   ("fib(25), recursive",
@@ -37,7 +37,7 @@ let best_of n f =
 
 let load text =
   let m = match Parse.parse_string ~name:"bench.mod" text with Ok m -> m | Error d -> failwith (Diagnostic.to_string d) in
-  match Rapid_semantics.Session.load_modules [ m ] with
+  match Rapid_load.Session.load_modules [ m ] with
   | Ok l -> l.program
   | Error _ -> failwith "the benchmark program does not check"
 

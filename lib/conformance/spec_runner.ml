@@ -62,7 +62,7 @@ let execute engine case (run : Spec_case.run) ~io program =
   match engine with
   | Machine -> (
       match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+          let motion = Rapid_installed.Motion_routines.create ?robot () in
           M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled ~motion program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok cfg ->
@@ -73,8 +73,8 @@ let execute engine case (run : Spec_case.run) ~io program =
           Ok (List.rev !output, M.outcome cfg))
   | Closure -> (
       match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
-          Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
+          let motion = Rapid_installed.Motion_routines.create ?robot () in
+          Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
             ~all_events:false ~world ~motion ~on_event:collect program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok r -> release (); Ok (List.rev !output, r.outcome))
@@ -134,7 +134,7 @@ let compare_static case expected reports =
 let run_tasks engine case expected (run : Spec_case.run) =
   let module M = Rapid_semantics.Machine in
   let module TS = Rapid_semantics.Task_set in
-  let module CT = Rapid_semantics.Closure_tasks in
+  let module CT = Rapid_closure.Closure_tasks in
   let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
@@ -142,7 +142,7 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let io =
     let modules = List.concat_map (fun (_, files) ->
         List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
-    fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+    fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
            ~stub_unmodelled:case.stub_unmodelled modules io) in
   let limits = { M.default_limits with retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
@@ -156,7 +156,7 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
     | Some (_, r) -> r | None -> run.entry in
   let specs = List.map (fun (name, files) -> { TS.name; files; entry = entry_of name }) run.tasks in
-  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  let motion = Rapid_installed.Motion_routines.create ?robot () in
   let stub_unmodelled = case.Spec_case.stub_unmodelled and allow_unknown = case.allow_unknown in
   let seed = run.schedule and motion_task = run.motion_task in
   (* The run's output and outcome, by the chosen engine. *)
@@ -212,10 +212,10 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
         match io with
         | Error m -> fail case m
         | Ok io ->
-        let io = fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+        let io = fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
                         ~stub_unmodelled:case.stub_unmodelled modules io) in
         (* The whole static semantics, the initial values known before the run included. *)
-        match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
+        match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
         | Error (Internal m) -> fail case m
         | Error (Front_end (d :: _)) -> compare_refusal case expected d
         | Error (Front_end []) -> fail case "refused without a diagnostic"

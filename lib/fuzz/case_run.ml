@@ -70,7 +70,7 @@ let tasks_refused : TS.failure -> F.failure = function
   | Refused m -> F.Refused m
 
 let tasks_world (c : Fuzz_case.t) io =
-  (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_semantics.Motion_primitives.create ())
+  (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_installed.Motion_routines.create ())
 
 let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
   let world, motion = tasks_world c io in
@@ -95,14 +95,14 @@ let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
    each task's there, the whole run's for the machine: runs cut short are not compared. *)
 let run_tasks_closure ~max_steps (c : Fuzz_case.t) io specs ~seed =
   let world, motion = tasks_world c io in
-  match Rapid_semantics.Closure_tasks.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
+  match Rapid_closure.Closure_tasks.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
           ~allow_unknown:c.options.allow_unknown ~io ?seed ~world ~motion specs with
   | Error f -> Error (tasks_refused f)
   | Ok (ct, _) ->
       let add, events = streams () in
-      let r = Rapid_semantics.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
+      let r = Rapid_closure.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
       Ok (observed (events ()) r.outcome
-            (List.map (fun (t : Rapid_semantics.Closure_tasks.task_result) -> (t.name, t.task_outcome)) r.tasks))
+            (List.map (fun (t : Rapid_closure.Closure_tasks.task_result) -> (t.name, t.task_outcome)) r.tasks))
 
 let check_tasks ~max_steps (c : Fuzz_case.t) io =
   with_files c @@ fun specs ->

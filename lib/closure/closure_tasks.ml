@@ -25,7 +25,7 @@ type task = {
   program : Ir.program;
   entry : string;
   world : W.t;
-  motion : Motion_primitives.state;
+  motion : Motion_routines.state;
   mutable globals : Value.t array;         (* its module data, once initialised *)
   mutable links : (int * int) list;        (* a slot of [globals] and the shared object it is *)
   mutable reply : reply option;

@@ -3,8 +3,8 @@
 
     It shares with the machine only the checked, lowered program ({!Ir}), the primitives on
     values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}) and the interfaces of
-    the world around the program: the controller ({!Rapid_controller.World}, {!Io_primitives},
-    {!Service_primitives}) and the motion ({!Motion_primitives}); {!Closure_controller} carries
+    the world around the program: the controller ({!Rapid_controller.World}, {!Io_routines},
+    {!Service_routines}) and the motion ({!Motion_routines}); {!Closure_controller} carries
     out waits, signals and the time limit. Each routine is
     compiled once, when it is first called, to OCaml closures: an expression to a function from
     the activation to a value, a place to a function giving its location (a container and an
@@ -54,7 +54,7 @@ type cooperation = {
 val run :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
   ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
-  ?motion:Motion_primitives.state -> ?cooperation:cooperation ->
+  ?motion:Motion_routines.state -> ?cooperation:cooperation ->
   ?module_data:((string * string * Value.t) list -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
@@ -82,6 +82,6 @@ val run :
 
 val events :
   ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  ?world:Rapid_controller.World.t -> ?motion:Motion_primitives.state -> Ir.program -> entry:string ->
+  ?world:Rapid_controller.World.t -> ?motion:Motion_routines.state -> Ir.program -> entry:string ->
   (Machine.event list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)

@@ -1,38 +1,6 @@
-module V = Value
-
-type argument =
-  | Value of V.t
-  | Location of V.t array * int * Ir.reference_kind
-  | Switch
-  | Missing
-
-(* An entry of the event log other than ErrWrite's line (§7.5; ABB's ErrLog and SkipWarn). *)
-type log_entry =
-  | Err_log of { id : int; kind : string; arguments : string list }
-      (* ErrLog ErrorId [\W]|[\I] Argument1..Argument5: [kind] "error", "warning" (\W) or
-         "information" (\I) *)
-  | Skip_warning                                     (* SkipWarn (§7.5) *)
-
-type context = {
-  output : string -> unit;
-  erase : unit -> unit;
-  log : string -> unit;
-  event_log : log_entry -> unit;                     (* ErrLog, SkipWarn (§7.5) *)
-  book_error : unit -> int;
-  error_number : string -> int;
-  world : Rapid_controller.World.t;
-  parameters : string array;
-  argument_label : string -> string option;
-}
-
-type outcome =
-  | Returned of V.t option
-  | Failed of string
-  | Call_by_name of string
-  | Stop_requested
-  | Not_modelled
-  | Wait of Rapid_controller.World.wait
-  | Retry_requested
+module V = Rapid_runtime.Value
+module Arith = Rapid_runtime.Arith
+open Primitive
 
 (* The shape of a value, for StrToVal, whose target's type is only known by its value. *)
 let rec shape_of_value : V.t -> V.shape = function
@@ -43,29 +11,6 @@ let rec shape_of_value : V.t -> V.shape = function
   | V.Record cs -> S_record (Array.map shape_of_value cs)
   | V.Array es -> S_array (Array.length es, if Array.length es = 0 then S_num else shape_of_value es.(0))
   | V.Handle _ -> S_handle "handle"
-
-(* The argument of the parameter of this name (letter case aside, §2.3): installed routines
-   whose behaviour lives outside this module find their arguments by name. *)
-let named_argument (ctx : context) args name =
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
-  let rec find i =
-    if i >= Array.length ctx.parameters || i >= Array.length args then Missing
-    else if same ctx.parameters.(i) name then args.(i)
-    else find (i + 1) in
-  find 0
-
-let named_present ctx args name = named_argument ctx args name <> Missing
-
-(* The number an argument holds, given by value or by reference. *)
-let named_num ctx args name =
-  match named_argument ctx args name with
-  | Value (V.Num f | V.Dnum f) -> Some f
-  | Location (box, i, _) -> (match box.(i) with V.Num f | V.Dnum f -> Some f | _ -> None)
-  | _ -> None
-
-(* A VAR, INOUT or PERS argument written: nothing for an argument not passed by reference. *)
-let named_store ctx args name v =
-  match named_argument ctx args name with Location (box, i, _) -> box.(i) <- v | _ -> ()
 
 let value_of = function
   | Value v -> Some v
@@ -127,7 +72,7 @@ let call ctx name args =
   match String.lowercase_ascii name with
   | "tpwrite" ->
       (* TPWrite TPText [\Num]|[\Bool]|[\Pos]|[\Orient]|[\Dnum]: the value follows the text. *)
-      ctx.output (Format.tpwrite (string_arg args.(0)) (first_present args 1));
+      ctx.output (Text_format.tpwrite (string_arg args.(0)) (first_present args 1));
       Returned None
   | "tperase" -> ctx.erase (); Returned None
   | "errwrite" ->

@@ -30,7 +30,7 @@ let rec value (v : V.t) =
   | Num f -> shortest ~max_digits:9 ~same:(fun g -> V.to_single g = f) f
   | Dnum f -> shortest ~max_digits:17 ~same:(fun g -> g = f) f
   | Bool b -> if b then "TRUE" else "FALSE"
-  | String s -> Format.string_literal s
+  | String s -> Text_format.string_literal s
   | Record cs | Array cs -> "[" ^ String.concat "," (Array.to_list (Array.map value cs)) ^ "]"
   | Handle h -> Printf.sprintf "<%s #%d>" (V.handle_kind h) (V.handle_id h)
 
@@ -156,8 +156,8 @@ let to_string = function
   | Retried r -> "retry " ^ r
   | Tried_next r -> "trynext " ^ r
 
-let references (args : Primitive.argument array) =
-  Array.fold_right (fun (a : Primitive.argument) acc ->
+let references (args : Argument.t array) =
+  Array.fold_right (fun (a : Argument.t) acc ->
       match a with
       | Location (box, j, _) when j < Array.length box -> (box, j, V.copy box.(j)) :: acc
       | _ -> acc) args []

@@ -15,7 +15,7 @@ type t
 val start :
   ?limits:Machine.limits -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
-  world:Rapid_controller.World.t -> motion:Motion_primitives.state -> Task_set.spec list ->
+  world:Rapid_controller.World.t -> motion:Motion_routines.state -> Task_set.spec list ->
   (t * Rapid_typing.Report.t list, Task_set.failure) result
 (** As {!Task_set.start}; nothing runs yet. *)
 
@@ -50,7 +50,7 @@ val names : t -> string list
 val world : t -> Rapid_controller.World.t
 (** The clock of the run (the first task's world). *)
 
-val motion_task : t -> (string * Motion_primitives.state) option
+val motion_task : t -> (string * Motion_routines.state) option
 (** The task that has the robot, and its motion. *)
 
 val thread_budget : unit -> int

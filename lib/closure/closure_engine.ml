@@ -119,7 +119,7 @@ type state = {
   stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
   world : W.t;                        (* the controller around the run (doc/controller.md) *)
-  motion : Motion_primitives.state;   (* the robot and its planner (doc/motion.md) *)
+  motion : Motion_routines.state;   (* the robot and its planner (doc/motion.md) *)
   mutable in_trap : bool;             (* a trap runs, or a routine it called: no interrupt is served *)
   mutable interrupts : bool;          (* some CONNECT ran: interrupts may occur *)
   mutable observing : bool;           (* the world may have something to report *)
@@ -305,7 +305,7 @@ and observe_world st =
 
 and observe_motion st =
   if st.moving then
-    match Motion_primitives.drain st.motion st.world with
+    match Motion_routines.drain st.motion st.world with
     | [] -> ()
     | moved -> if st.all_events then List.iter (fun m -> st.emit (M.Motion m)) moved
 
@@ -860,11 +860,11 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       let n = Array.length args in
       (* The controller's, the motion's and the services' routines find their arguments by
          parameter name, and the motion names its targets (as the machine's call-primitive). *)
-      let motion = Motion_primitives.modelled name in
+      let motion = Motion_routines.modelled name in
       (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let tasks = Task_primitives.modelled name
-                  || List.exists (fun m -> String.lowercase_ascii m = String.lowercase_ascii name) Task_primitives.motion_instructions in
-      let controller = motion || tasks || Io_primitives.modelled name || Service_primitives.modelled name
+      let tasks = Task_routines.modelled name
+                  || List.exists (fun m -> String.lowercase_ascii m = String.lowercase_ascii name) Task_routines.motion_instructions in
+      let controller = motion || tasks || Io_routines.modelled name || Service_routines.modelled name
                        || String.lowercase_ascii name = "errwrite" in
       (* What the world observes during the call is reported before what the routine itself
          writes, as the machine reports a step's events (its output waits meanwhile). *)
@@ -875,7 +875,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         else { st.prim_ctx with
                parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
                argument_label = CC.argument_label st.program callee arguments;
-               output = (fun line -> hold (M.Output (Format.display line)));
+               output = (fun line -> hold (M.Output (Text_format.display line)));
                erase = (fun () -> hold M.Erase);
                log = (fun line -> hold (M.Log line));
                event_log = (fun entry -> if st.all_events then hold (M.Event_log entry)) } in
@@ -897,16 +897,16 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           let task_call () =
             if not tasks then None
             else
-              let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner st.motion) in
-              Task_primitives.call ~standstill ctx name values in
+              let standstill () = Rapid_motion_model.Planner.finished_by (Motion_routines.planner st.motion) in
+              Task_routines.call ~standstill ctx name values in
           match task_call () with
           | Some r -> r
           | None ->
-          match Motion_primitives.call ctx st.motion name values with
+          match Motion_routines.call ctx st.motion name values with
           | Some r -> r
-          | None -> match Io_primitives.call ctx name values with
+          | None -> match Io_routines.call ctx name values with
             | Some r -> r
-            | None -> match Service_primitives.call ctx name values with
+            | None -> match Service_routines.call ctx name values with
               | Some r -> r
               | None -> Primitive.call ctx name values
         end in
@@ -926,7 +926,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         let stores () = if st.observe then List.iter (observe_store st a) (Observation.changed before) in
         if controller then begin
           (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4). *)
-          (match Motion_primitives.take_new_move st.motion with
+          (match Motion_routines.take_new_move st.motion with
            | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < 63) st.move_owners
            | None -> ());
           (* The machine's order within a step: the world, the routine's own events, the motion. *)
@@ -1160,7 +1160,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
 and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
-  | Failed error when Motion_primitives.take_async_raised st.motion -> async_at_move st ~at error
+  | Failed error when Motion_routines.take_async_raised st.motion -> async_at_move st ~at error
   | Failed error -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
@@ -1193,7 +1193,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
    asynchronous error of the motion is raised at it (§7.4, §7.6). A wait that an error or a long
    jump leaves is abandoned: a move instruction's move is cancelled (M-abandon). *)
 and wait st (a : act) ~at (wt : W.wait) ~condition =
-  let first_poll = Motion_primitives.take_first_poll st.motion in
+  let first_poll = Motion_routines.take_first_poll st.motion in
   let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
   let serve () =
     if st.in_trap then false
@@ -1201,7 +1201,7 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
       match (if st.interrupts then W.take st.world else None) with
       | Some (number, trap) -> observe st; st.serve_trap a number trap; true
       | None -> (
-          match Motion_primitives.take_org_error st.motion with
+          match Motion_routines.take_org_error st.motion with
           | None -> false
           | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
   in
@@ -1209,11 +1209,11 @@ and wait st (a : act) ~at (wt : W.wait) ~condition =
   let spend () = tick st in
   match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
   | Finished None -> ()
-  | Finished (Some name) when Motion_primitives.take_async_raised st.motion -> ignore (async_at_move st ~at name)
+  | Finished (Some name) when Motion_routines.take_async_raised st.motion -> ignore (async_at_move st ~at name)
   | Finished (Some name) -> fail st ~at name
   | Halted o -> raise (Halt o)
   | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task | Kept_leave _) as left) ->
-      Motion_primitives.wait_abandoned st.motion wt ~now:(W.now st.world);
+      Motion_routines.wait_abandoned st.motion wt ~now:(W.now st.world);
       raise left
 
 (* §7.4 (\SyncLastMoveInst): the error raised at the move instruction, as any error there, but
@@ -1990,8 +1990,8 @@ let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unm
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st.prim_ctx <- {
-    (* The pendant shows a control character as its character code (Format.display). *)
-    output = (fun s -> emit (M.Output (Format.display s)));
+    (* The pendant shows a control character as its character code (Text_format.display). *)
+    output = (fun s -> emit (M.Output (Text_format.display s)));
     erase = (fun () -> emit M.Erase);
     log = (fun s -> emit (M.Log s));
     book_error = (fun () ->
@@ -2007,21 +2007,21 @@ let outcome_of_exception st = function
       M.Resource_exhausted
         (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth, None)
   | Out_of_memory -> M.Resource_exhausted ("out of memory (resource exhaustion, §1.4)", None)
-  | Motion_primitives.History_exhausted m -> M.Resource_exhausted (m, None)
+  | Motion_routines.History_exhausted m -> M.Resource_exhausted (m, None)
   | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
   | e -> M.Stuck (Printexc.to_string e)
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
     ?cooperation ?module_data (program : program) ~entry =
   let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
-  let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
+  let motion = match motion with Some m -> m | None -> Motion_routines.create () in
   try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
 and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion
     (program : program) ~entry =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
-  let program = Motion_primitives.robot_data motion program in
+  let program = Motion_routines.robot_data motion program in
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
@@ -2091,7 +2091,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
          observe_world st;
          observe_motion st;
          if outcome = M.Ended && all_events then
-           List.iter (fun m -> on_event (M.Motion m)) (Motion_primitives.finish st.motion)
+           List.iter (fun m -> on_event (M.Motion m)) (Motion_routines.finish st.motion)
        with _ -> ());
       (* --save (Persistent_save): the module data as the run left it. *)
       Option.iter (fun f ->

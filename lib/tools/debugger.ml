@@ -47,7 +47,7 @@ let line_text s region =
   let line = (Source.start region).line in
   let lines = source_lines s (file_name region) in
   if line >= 1 && line <= Array.length lines then
-    String.trim (Format.display (String.trim lines.(line - 1)))
+    String.trim (Text_format.display (String.trim lines.(line - 1)))
   else ""
 
 let place s (r : Ir.routine) region =
@@ -71,10 +71,10 @@ let outcome_text = function
 
 let show_events s events =
   List.iter (function
-      | M.Output line -> s.out ("tp> " ^ Format.display line)
-      | Log line -> s.out ("log> " ^ Format.display line)
+      | M.Output line -> s.out ("tp> " ^ Text_format.display line)
+      | Log line -> s.out ("log> " ^ Text_format.display line)
       | Event_log (Err_log { id; kind; arguments }) ->
-          s.out (Printf.sprintf "log> %s %d: %s" kind id (String.concat " | " (List.map Format.display arguments)))
+          s.out (Printf.sprintf "log> %s %d: %s" kind id (String.concat " | " (List.map Text_format.display arguments)))
       | Event_log Skip_warning -> s.out "log> SkipWarn"
       | Error_raised { name; number; at } ->
           s.out (Printf.sprintf "error> %s (%d) at %s" name number (Source.to_string at))
@@ -188,7 +188,7 @@ let find_data s name =
     | _ -> None in
   match local with Some slot -> Some slot | None -> M.global_slot cfg n
 
-let value_text v = try Format.value_text v with Value.Type_mismatch _ -> "<object>"
+let value_text v = try Text_format.value_text v with Value.Type_mismatch _ -> "<object>"
 
 (* The data objects an expression names (Debug_expr): found as [find_data] finds them, typed by
    the session's [type_of] for their components. *)

@@ -110,7 +110,7 @@ let to_str v dec ~exp =
   (* Every result has at least d + 2 characters: refuse before building a huge one. *)
   if d > 80 then Error "ERR_STRTOOLNG"
   else if not (Float.is_finite x) then Error "ERR_OVERFLOW"   (* R-3.12-c: none is infinite *)
-  else string_result (if exp then Format.scientific x ~decimals:d else Format.fixed x ~decimals:d)
+  else string_result (if exp then Text_format.scientific x ~decimals:d else Text_format.fixed x ~decimals:d)
 
 let num_to_str v dec ~exp =
   (match v with Num _ -> () | _ -> type_mismatch "a num");
@@ -120,7 +120,7 @@ let dnum_to_str v dec ~exp =
   (match v with Dnum _ -> () | _ -> type_mismatch "a dnum");
   to_str v dec ~exp
 
-let val_to_str v = string_result (Format.value_text v)
+let val_to_str v = string_result (Text_format.value_text v)
 
 (* StrToVal reads what ValToStr writes, with the literal syntax of §2.5-§2.7. *)
 exception No_value
@@ -316,14 +316,14 @@ let atan2_num y x = like y (no_negative_zero (degrees (Float.atan2 (num_value y)
 let round_with rounding v dec =
   let* d = match dec with None -> Ok 0 | Some dec -> decimals dec in
   let d = min d 1100 in
-  let scale = Format.pow10 d in
+  let scale = Text_format.pow10 d in
   let q = Q.div (Q.of_bigint (rounding (Q.mul (Q.of_float (num_value v)) scale))) scale in
   match v with
   | Num _ -> Arith.exact_single q
   | Dnum _ -> Ok (Dnum (double_of_q q))
   | _ -> type_mismatch "a num or dnum"
 
-let round_num v ~dec = round_with Format.round_half_away v dec
+let round_num v ~dec = round_with Text_format.round_half_away v dec
 let trunc_num v ~dec = round_with (fun q -> Z.div (Q.num q) (Q.den q)) v dec
 
 let max_num a b = if num_value a >= num_value b then Ok a else Ok b

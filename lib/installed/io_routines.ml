@@ -45,7 +45,7 @@ let timed_wait ctx args ~what ~satisfied =
     | Some m -> Result.map (fun m -> Some (W.now w +. m)) (duration (Some m)) in
   let finish ~timed_out =
     if flag then (store ctx args "TimeFlag" (V.Bool timed_out); None)
-    else if timed_out then Some "ERR_WAIT_MAXTIME" else None in
+    else if timed_out then Rapid_observable.Wait.error "ERR_WAIT_MAXTIME" else None in
   if satisfied () then (ignore (finish ~timed_out:false); done_)
   else Wait { W.what; satisfied; deadline; finish; poll = None }
 
@@ -170,7 +170,7 @@ let call (ctx : context) name args =
   let value f = Returned (Some (V.num f)) in
   match String.lowercase_ascii name with
   | "waittime" ->
-      (* WaitTime \InPos is Motion_primitives', which is called first (R-8-n). *)
+      (* WaitTime \InPos is Motion_routines', which is called first (R-8-n). *)
       Some (let* t = duration (num ctx args "Time") in
             Wait { W.what = "time"; satisfied = (fun () -> false); deadline = Some (W.now w +. t);
                    finish = (fun ~timed_out:_ -> None); poll = None })
@@ -292,7 +292,7 @@ let call (ctx : context) name args =
   | "errwrite" ->
       (* The entry goes to the event log, where IError sees it (R-8-l): written first, so that
          the interrupts it makes occur come after it. *)
-      let r = Primitive.call ctx name args in
+      let r = Basic_routines.call ctx name args in
       W.post_error w (err_write_datum ctx args); Some r
   | "gettrapdata" ->
       store ctx args "TrapEvent" (V.Handle (V.make_handle ~kind:"trapdata" (W.trap_data w)));

@@ -1,6 +1,6 @@
 (** What the closure engine ({!Closure_engine}) asks of the controller around the program, through
     the same interfaces as the machine: the run's {!Rapid_controller.World} (virtual clock,
-    signals, interrupts) and its motion ({!Motion_primitives}). Nothing here knows the engine's
+    signals, interrupts) and its motion ({!Motion_routines}). Nothing here knows the engine's
     activations: where the engine must act (serve an interrupt, evaluate WaitUntil's condition,
     raise an error) it is called back (doc/controller.md, doc/semantics.md "The second engine"). *)
 

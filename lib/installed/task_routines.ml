@@ -55,7 +55,7 @@ let meet ~standstill ctx args ~instruction ~tasks ~in_pos ~timeout_error ~met =
         else
           Some (Wait { W.what = Printf.sprintf "the tasks %s at %s (%s)" (String.concat ", " tasks) point instruction;
                        satisfied; deadline; poll = None;
-                       finish = (fun ~timed_out -> if timed_out then Some timeout_error else (met (); None)) })
+                       finish = (fun ~timed_out -> if timed_out then Rapid_observable.Wait.error timeout_error else (met (); None)) })
 
 let call ?(standstill = fun () -> neg_infinity) ctx name args =
   let w = ctx.world in

@@ -10,29 +10,7 @@ module D = MM.Motion_data
 module P = MM.Planner
 open Primitive
 
-type event =
-  | Segment_planned of {
-      time : float; id : int; instruction : string; label : string; zone : string;
-      target : G.pose; joints : float array; ready_time : float; start_time : float; end_time : float }
-  | Segment_started of { time : float; id : int; label : string }
-  | Segment_ended of { time : float; id : int; label : string }
-  | Segment_dropped of { time : float; id : int; label : string }
-  | Path_command of { time : float; command : string }
-  | Motion_warning of { time : float; text : string }
-
-let event_to_string = function
-  | Segment_planned { time; id; instruction; label; zone; target; ready_time; start_time; end_time; _ } ->
-      Printf.sprintf "%.6f s: move %d planned: %s %s %s to [%.2f,%.2f,%.2f], from %.6f s to %.6f s, program pointer at %.6f s"
-        time id instruction label zone target.trans.x target.trans.y target.trans.z start_time end_time ready_time
-  | Segment_started { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) begins" time id label
-  | Segment_ended { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) ends" time id label
-  | Segment_dropped { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) dropped" time id label
-  | Path_command { time; command } -> Printf.sprintf "%.6f s: %s" time command
-  | Motion_warning { time; text } -> Printf.sprintf "%.6f s: %s" time text
-
-let event_time = function
-  | Segment_planned { time; _ } | Segment_started { time; _ } | Segment_ended { time; _ }
-  | Segment_dropped { time; _ } | Path_command { time; _ } | Motion_warning { time; _ } -> time
+module E = Rapid_observable.Motion_event
 
 type track = { t_id : int; t_label : string; mutable started : bool; mutable ended : bool }
 
@@ -51,7 +29,7 @@ type state = {
   mutable tracks : track list;                 (* moves not yet ended, oldest first ... *)
   mutable tracks_back : track list;            (* ... then these, newest first (added by add_track) *)
   mutable outputs : (int * int * float) list;  (* MoveLDO/MoveJDO: move, signal, value *)
-  mutable fresh : event list;                  (* newest first *)
+  mutable fresh : E.t list;                  (* newest first *)
   mutable check_at : float;                    (* the next time a tracked move may change *)
   mutable dirty : bool;                        (* the queue changed since the last look *)
   mutable reshaped : bool;                     (* ... by more than a plan (a path command, a stop) *)
@@ -224,6 +202,12 @@ let reached w t = Float.is_finite t && t <= W.max_time w +. 1. && W.seconds (W.n
 
 (* The program pointer waits until a time the planner computes, and asks again at every look:
    a StopMove or StartMove in a trap moves it. *)
+
+(* A wait's error at once: a \SyncLastMoveInst error is the call's, at the move (§7.4). *)
+let raised st (e : Rapid_observable.Wait.raised) =
+  if e.at_move then st.async_raised <- true;
+  Failed e.error
+
 let until ?move ctx ~what time =
   let w = ctx.world in
   let asked = ref nan in
@@ -243,7 +227,7 @@ let until ?move ctx ~what time =
     match move with
     | Some (st, (id, key)) when async_here () ->
         let a = Option.get st.async in
-        st.async <- None; st.interrupted <- Some (id, key); st.async_raised <- true; Some a.a_name
+        st.async <- None; st.interrupted <- Some (id, key); Some { Rapid_observable.Wait.error = a.a_name; at_move = true }
     | _ -> None in
   let self = ref None in
   let finish ~timed_out =
@@ -252,7 +236,11 @@ let until ?move ctx ~what time =
          (match !self with Some me -> st.move_waits <- List.filter (fun w -> w != me) st.move_waits | None -> ())
      | None -> ());
     finish ~timed_out in
-  if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+  if satisfied () then
+    (match finish ~timed_out:false, move with
+     | None, _ -> Returned None
+     | Some e, Some (st, _) -> raised st e
+     | Some e, None -> Failed e.error)
   else begin
     let wait = { W.what; satisfied; deadline = None; finish; poll = None } in
     (match move with
@@ -289,14 +277,14 @@ let check st ~now =
         (* Dropped when ClearPath ran, not when an engine next looks: the machine looks a step
            later than the closure engine, and both must write the same time. *)
         let time = Option.value st.cleared_at ~default:now in
-        if level1 then (events := Segment_dropped { time; id = tr.t_id; label = tr.t_label } :: !events; false)
+        if level1 then (events := E.Segment_dropped { time; id = tr.t_id; label = tr.t_label } :: !events; false)
         else true
     | Some (s, e) ->
         if not tr.started && passed s then begin
-          tr.started <- true; events := Segment_started { time = s; id = tr.t_id; label = tr.t_label } :: !events
+          tr.started <- true; events := E.Segment_started { time = s; id = tr.t_id; label = tr.t_label } :: !events
         end;
         if not tr.ended && passed e then begin
-          tr.ended <- true; events := Segment_ended { time = e; id = tr.t_id; label = tr.t_label } :: !events
+          tr.ended <- true; events := E.Segment_ended { time = e; id = tr.t_id; label = tr.t_label } :: !events
         end;
         if not tr.started then w_next := Float.min !w_next s;
         if not tr.ended then w_next := Float.min !w_next e;
@@ -317,7 +305,7 @@ let check st ~now =
   (* Its drops are all made now: a later one has its own cause and time. *)
   st.cleared_at <- None;
   st.check_at <- !w_next;
-  List.stable_sort (fun a b -> compare (event_time a) (event_time b)) (List.rev !events)
+  List.stable_sort (fun a b -> compare (E.time a) (E.time b)) (List.rev !events)
 
 (* ------------------------------------------------------------------ memory *)
 
@@ -471,11 +459,11 @@ let move ctx st name args =
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
               let zone_name = if (zone_of zone).finep then "fine" else label ctx "Zone" in
-              emit st (Segment_planned { time = now; id; instruction = name; label = target_label;
+              emit st (E.Segment_planned { time = now; id; instruction = name; label = target_label;
                                          zone = zone_name; target; joints; ready_time; start_time; end_time });
               List.iter (fun (P.Corner_path_failure k) ->
                   let text = Printf.sprintf "corner path failure: move %d stops at its point" k in
-                  ctx.log text; emit st (Motion_warning { time = now; text })) warnings;
+                  ctx.log text; emit st (E.Motion_warning { time = now; text })) warnings;
               add_track st { t_id = id; t_label = target_label; started = false; ended = false };
               st.dirty <- true;
               (* MoveLDO, MoveJDO: the output changes where the robot passes the point. *)
@@ -530,11 +518,11 @@ let collide st w =
       if moving then begin
         P.stop st.planner ~at:t;
         st.dirty <- true; st.reshaped <- true;
-        emit st (Path_command { time = t; command = "collision" });
+        emit st (E.Path_command { time = t; command = "collision" });
         st.async <- Some { a_name = "ERR_COLL_STOP"; a_move = motion_pointer st; a_mode = Sync_org;
                            a_handled = st.collision_handling }
       end
-      else emit st (Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
+      else emit st (E.Motion_warning { time = t; text = "collision while the robot stands still: nothing happens" }))
     due
 
 let drain st w =
@@ -560,12 +548,11 @@ let wait_abandoned st w ~now =
     P.clear st.planner ~at:now;
     st.cleared_at <- Some now;
     st.dirty <- true; st.reshaped <- true;
-    emit st (Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
+    emit st (E.Path_command { time = now; command = "ClearPath (a move instruction left by an error)" })
   end
 
 let move_waits_in_progress st = List.length st.move_waits
 
-let take_first_poll st = let f = st.first_poll in st.first_poll <- None; f
 
 (* SearchL (ABB, RAPID Instructions): a linear move to ToPoint, a stop point, during which the
    signal is watched; at the first hit (a positive flank by default, \NegFlank, \Flanks, or a
@@ -613,7 +600,7 @@ let search ctx st name args =
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
-          emit st (Segment_planned { time = now; id = move; instruction = name; label = target_label;
+          emit st (E.Segment_planned { time = now; id = move; instruction = name; label = target_label;
                                      zone = "fine"; target = G.pmult (world_flange st move joints) tool_d.tframe;
                                      joints; ready_time; start_time; end_time });
           add_track st { t_id = move; t_label = target_label; started = false; ended = false };
@@ -629,7 +616,7 @@ let search ctx st name args =
                  | Error _ -> ())
              | _ -> ());
             if stops then (P.clear st.planner ~at:t; st.cleared_at <- Some t; st.dirty <- true; st.reshaped <- true;
-                           emit st (Path_command { time = t; command = name ^ " stop" })) in
+                           emit st (E.Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
             let v = W.read w id in
@@ -641,8 +628,8 @@ let search ctx st name args =
               if r <> !asked then (W.wake_at w (Float.min r (W.max_time w +. 1.)); asked := r);
               false
             end in
-          let finish ~timed_out:_ = if !found then None else Some "ERR_WHLSEARCH" in
-          if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> Failed e)
+          let finish ~timed_out:_ = if !found then None else Rapid_observable.Wait.error "ERR_WHLSEARCH" in
+          if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> raised st e)
           else Wait { W.what = "the robot (" ^ name ^ " " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
   | _ -> Failed "ERR_ARGVALERR"
 
@@ -668,9 +655,6 @@ let take_org_error st =
       st.async <- None; Some (a_name, a_move, a_handled)
   | _ -> None
 
-let take_async_raised st = let r = st.async_raised in st.async_raised <- false; r
-
-let take_new_move st = let l = st.new_move in st.new_move <- None; l
 
 let result_pose ctx what = function
   | Ok v -> Returned (Some v)
@@ -690,7 +674,7 @@ let path_command ctx st command f =
   let now = W.now ctx.world in
   match f now with
   | Ok () ->
-      st.dirty <- true; st.reshaped <- true; emit st (Path_command { time = now; command });
+      st.dirty <- true; st.reshaped <- true; emit st (E.Path_command { time = now; command });
       forget st ~now; Returned None
   | Error e -> fail ctx command e
 
@@ -725,7 +709,7 @@ let call_unguarded (ctx : context) st name args =
         if Float.is_finite s then st.first_poll <- Some s;
         let finish ~timed_out =
           if flag then ((match arg ctx args "TimeFlag" with Location (box, i, _) -> box.(i) <- V.Bool timed_out | _ -> ()); None)
-          else if timed_out then Some "ERR_WAIT_MAXTIME" else None in
+          else if timed_out then Rapid_observable.Wait.error "ERR_WAIT_MAXTIME" else None in
         Some (Wait { W.what = "a condition (WaitUntil \\InPos)"; satisfied = (fun () -> false);
                      deadline = Option.map (fun m -> now +. m) max_time; finish; poll = Some rate })
       end
@@ -736,7 +720,7 @@ let call_unguarded (ctx : context) st name args =
   | "startmoveretry" ->
       (* StartMove and RETRY in one (ABB: for error handlers; outside one, RETRY's own rule). *)
       P.start st.planner ~at:now; st.dirty <- true; st.reshaped <- true;
-      emit st (Path_command { time = now; command = "StartMove" });
+      emit st (E.Path_command { time = now; command = "StartMove" });
       Some Retry_requested
   | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
@@ -746,7 +730,7 @@ let call_unguarded (ctx : context) st name args =
          pointer is in or comes to next (\SyncLastMoveInst), or to the routine of the move
          that made the robot's path (\SyncOrgMoveInst, also without a switch: R-7.4-a). *)
       P.stop st.planner ~at:now;
-      emit st (Path_command { time = now; command = "ProcerrRecovery" });
+      emit st (E.Path_command { time = now; command = "ProcerrRecovery" });
       st.dirty <- true; st.reshaped <- true;
       let mode = if present ctx args "SyncLastMoveInst" then Sync_last else Sync_org in
       st.async <- Some { a_name = "ERR_PATH_STOP"; a_move = motion_pointer st; a_mode = mode; a_handled = true };
@@ -861,5 +845,16 @@ let call_unguarded (ctx : context) st name args =
       | _ -> Some (Failed "ERR_ARGVALERR"))
   | _ -> None
 
+type effects = { at_move : bool; new_move : int option; first_poll : float option }
+
+let no_effects = { at_move = false; new_move = None; first_poll = None }
+
+(* What a call did besides its outcome is read here, once, right after it: the routine's body
+   leaves it in the state. *)
 let call ctx st name args =
-  try call_unguarded ctx st name args with Illegal_quaternion -> Some (Failed "ERR_ILLQUAT")
+  st.async_raised <- false; st.new_move <- None; st.first_poll <- None;
+  let outcome = try call_unguarded ctx st name args with Illegal_quaternion -> Some (Failed "ERR_ILLQUAT") in
+  let effects =
+    if not st.async_raised && st.new_move = None && st.first_poll = None then no_effects
+    else { at_move = st.async_raised; new_move = st.new_move; first_poll = st.first_poll } in
+  Option.map (fun o -> (o, effects)) outcome

@@ -71,7 +71,7 @@ val place_of : Ir.program -> Ir.routine -> Value.t array * int -> roots -> strin
 val to_string : t -> string
 (** One line, for the engines' comparisons and the fuzzer's reports. *)
 
-val references : Primitive.argument array -> (Value.t array * int * Value.t) list
+val references : Argument.t array -> (Value.t array * int * Value.t) list
 (** The locations an installed routine's reference arguments denote, with a copy of their values
     before the call (Incr, Add, Clear and the like write through them, §5.2). *)
 

@@ -269,9 +269,9 @@ let blocking ctx ~what id ~timeout (call : timeout:float -> outcome) =
                end;
                ready);
            finish = (fun ~timed_out ->
-               if timed_out then Some "ERR_SOCK_TIMEOUT"
+               if timed_out then Rapid_observable.Wait.error "ERR_SOCK_TIMEOUT"
                else match call ~timeout:(Float.max socket_slice (deadline -. W.now w)) with
-                 | Failed e -> Some e
+                 | Failed e -> Rapid_observable.Wait.error e
                  | _ -> None) }
   end
 
@@ -366,7 +366,7 @@ let call (ctx : context) name args =
       Some (
         let text = Option.value (str ctx args "String") ~default:"" in
         let v = List.find_map (fun n -> value ctx args n) [ "Num"; "Bool"; "Pos"; "Orient"; "Dnum" ] in
-        let line = Format.tpwrite text v in
+        let line = Text_format.tpwrite text v in
         write_text ctx args (if present ctx args "NoNewLine" then line else line ^ "\n"))
   | "writestrbin" -> Some (write_text ctx args (Option.value (str ctx args "Str") ~default:""))
   | "writebin" ->

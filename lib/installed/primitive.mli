@@ -1,21 +1,17 @@
-(** The bodies of installed routines (ch. 11, 13): the routines declared in
-    lib/typing/installed are bound by name to the OCaml functions here when a program runs. The
-    pure functions come from {!Library}; this module adds the routines that need more than values:
-    output (TPWrite), the locations of their arguments (Incr, Dim, IsVar), the machine (BookErrNo,
-    CallByVar, Stop). *)
+(** The interface of the bodies of installed routines inside lib/installed: the context a body
+    is given (the world of its task, where its events go) and what it returns. {!Registry}
+    turns each body into an entry of the engines' {!Rapid_runtime.Installed_routine}. *)
 
-(** An argument, one per parameter of the routine's declaration in order (alternatives each in
-    their own place). *)
-type argument =
-  | Value of Value.t                                 (** an in parameter *)
-  | Location of Value.t array * int * Ir.reference_kind
+type argument = Rapid_runtime.Argument.t =
+  | Value of Rapid_runtime.Value.t                                 (** an in parameter *)
+  | Location of Rapid_runtime.Value.t array * int * Rapid_runtime.Ir.reference_kind
       (** an alias parameter: the container and index of the argument's location, and what it
           denotes (a variable, a persistent, ...) for IsVar and IsPers *)
   | Switch                                           (** a present switch *)
   | Missing                                          (** an absent optional parameter *)
 
 (** An entry of the event log other than ErrWrite's line (§7.5; ABB's ErrLog and SkipWarn). *)
-type log_entry =
+type log_entry = Rapid_runtime.Event.log_entry =
   | Err_log of { id : int; kind : string; arguments : string list }
       (** ErrLog ErrorId [\W]|[\I] Argument1..Argument5: [kind] "error", "warning" (\W) or
          "information" (\I) *)
@@ -26,28 +22,23 @@ type context = {
   erase : unit -> unit;                              (** TPErase *)
   log : string -> unit;                              (** the event log (ErrWrite) *)
   event_log : log_entry -> unit;                     (** ErrLog, SkipWarn (§7.5) *)
-  book_error : unit -> int;                          (** BookErrNo: a new error number *)
-  error_number : string -> int;
+  mutable book_error : unit -> int;                          (** BookErrNo: a new error number *)
+  mutable error_number : string -> int;
   world : Rapid_controller.World.t;                  (** the controller around the run *)
-  parameters : string array;                         (** the routine's parameter names, in order *)
-  argument_label : string -> string option;
+  mutable parameters : string array;                         (** the routine's parameter names, in order *)
+  mutable argument_label : string -> string option;
       (** the name of the data object given for a parameter (by the parameter's name), for the
           motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
 }
 
 type outcome =
-  | Returned of Value.t option                       (** a function's value, or a procedure's end *)
+  | Returned of Rapid_runtime.Value.t option                       (** a function's value, or a procedure's end *)
   | Failed of string                                 (** an execution error, by its ERR_ name *)
   | Call_by_name of string                           (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                                   (** Stop: the task stops *)
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
   | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
-
-val call : context -> string -> argument array -> outcome
-
-val modelled : string -> bool
-(** Whether rapid-sem gives this installed routine a body. *)
 
 val named_argument : context -> argument array -> string -> argument
 (** The argument of the callee's parameter of this name ([context.parameters]), letter case

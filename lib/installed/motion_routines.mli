@@ -4,33 +4,6 @@
     clock and open to interrupts, until the planner's ready time; the position functions read the
     robot where it is at the current virtual time (doc/motion.md, "Moves in the machine"). *)
 
-(** What the motion of a run makes observable, each with its virtual time (seconds). *)
-type event =
-  | Segment_planned of {
-      time : float;                      (** when the move instruction ran *)
-      id : int;
-      instruction : string;              (** MoveL, MoveJ, MoveC, MoveAbsJ, MoveLDO, MoveJDO, SearchL *)
-      label : string;                    (** the target's data object, or [*] *)
-      zone : string;                     (** [fine], or the zonedata's object, or [*] *)
-      target : Rapid_motion_model.Geom.pose;  (** the programmed TCP pose, base frame *)
-      joints : float array;              (** the axis angles there, degrees *)
-      ready_time : float;                (** when the program pointer may go on *)
-      start_time : float;                (** when the robot begins the move, as planned now *)
-      end_time : float;                  (** when it leaves it (the corner's start for a fly-by) *)
-    }
-  | Segment_started of { time : float; id : int; label : string }
-  | Segment_ended of { time : float; id : int; label : string }
-  | Segment_dropped of { time : float; id : int; label : string }  (** ClearPath *)
-  | Path_command of { time : float; command : string }
-      (** StopMove, StartMove, ClearPath, StorePath, RestoPath, ProcerrRecovery, collision,
-          SearchL stop *)
-  | Motion_warning of { time : float; text : string }  (** corner path failure *)
-
-val event_to_string : event -> string
-(** One line, for the trace and test messages. *)
-
-val event_time : event -> float
-
 type state
 (** The motion of one run: the robot, its planner, the active tool and work object. *)
 
@@ -54,29 +27,35 @@ val robot_data : state -> Ir.program -> Ir.program
 val planner : state -> Rapid_motion_model.Planner.t
 val robot : state -> Rapid_motion_model.Robot.t
 
-val call : Primitive.context -> state -> string -> Primitive.argument array -> Primitive.outcome option
-(** [None]: not a routine of motion (WaitTime and WaitUntil without \InPos included). *)
+type effects = {
+  at_move : bool;
+      (** the failure is a \SyncLastMoveInst error (§7.4): its handler's TRYNEXT executes as
+          RETRY *)
+  new_move : int option;
+      (** the move the call planned: the engine records which routine activation executed it,
+          to raise its asynchronous errors there (§7.4, §7.6) *)
+  first_poll : float option;
+      (** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot
+          moves *)
+}
+
+val call :
+  Primitive.context -> state -> string -> Primitive.argument array -> (Primitive.outcome * effects) option
+(** [None]: not a routine of motion (WaitTime and WaitUntil without \InPos included). The
+    effects are those of this call. *)
 
 val modelled : string -> bool
 
-val drain : state -> Rapid_controller.World.t -> event list
+val drain : state -> Rapid_controller.World.t -> Rapid_observable.Motion_event.t list
 (** What happened since the last call: moves planned, moves the clock has seen begin and end;
     outputs of MoveLDO/MoveJDO are scheduled in the world once their point's time is known. *)
 
-val finish : state -> event list
+val finish : state -> Rapid_observable.Motion_event.t list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
 val set_backward : state -> bool -> unit
 (** A BACKWARD handler begins (true) or ends (false) its run (ch. 6): its move instructions
     retrace the forward moves, the newest first (§6.3). *)
-
-val take_async_raised : state -> bool
-(** Whether the failure a move instruction just gave is a \SyncLastMoveInst error (§7.4), once:
-    its handler's TRYNEXT executes as RETRY. *)
-
-val take_new_move : state -> int option
-(** The move the last primitive planned, once: the machine records which routine activation
-    executed it, to raise its asynchronous errors there (§7.4, §7.6). *)
 
 val take_org_error : state -> (string * int option * bool) option
 (** An asynchronous error to raise now in the routine of a move (ProcerrRecovery
@@ -92,7 +71,3 @@ val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
 val move_waits_in_progress : state -> int
 (** How many move instructions the program pointer waits in (a trap's move above the main one's
     makes two); 0 when the task has ended. *)
-
-val take_first_poll : state -> float option
-(** WaitUntil \InPos: the time of the first evaluation of the condition, when the robot moves
-    (once). *)
