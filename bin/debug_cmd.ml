@@ -60,7 +60,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     flush stdout;
     let cfg = D.config session in
     match Rapid_semantics.Machine.outcome cfg with
-    | Rapid_semantics.Machine.Running -> 0
+    | Rapid_runtime.Outcome.Running -> 0
     | o -> finish o (Rapid_semantics.Machine.steps cfg) ~max_steps
   in
   let doc = "step through a task as on the FlexPendant: forward, backward (ch. 6), by statement" in

@@ -313,12 +313,12 @@ let time_json t = `Intlit (Printf.sprintf "%.6f" t)
    value ERRNO takes (schema rapid-sem/2). *)
 let error_in_flight = ref 0
 
-let note_error (e : M.event) =
+let note_error (e : Rapid_runtime.Event.t) =
   match e with
   | Error_raised { number; _ } | Observed (Propagated { number; _ }) -> error_in_flight := number
   | _ -> ()
 
-let event_json (e : M.event) : Yojson.Safe.t =
+let event_json (e : Rapid_runtime.Event.t) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
   | Erase -> `Assoc [ ("event", `String "erase") ]
@@ -410,7 +410,7 @@ let chain_text chain =
     let item (n, k) = ((if k = 1 then n else Printf.sprintf "%s x%d" n k), k) in
     String.concat " <- " (bound_items (List.map item runs))
 
-let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
+let outcome_json ?entry_at (o : Rapid_runtime.Outcome.t) steps : Yojson.Safe.t =
   let nowhere = ("at", `Null) in
   let base kind extra =
     let extra = if List.mem_assoc "at" extra then extra else extra @ [ nowhere ] in
@@ -431,7 +431,7 @@ let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
   | Stuck m -> base "stuck" [ ("reason", text m) ]
   | Deadlock m -> base "deadlock" [ ("reason", text m) ]
 
-let finish (o : M.outcome) steps ~max_steps =
+let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
   match o with
   | Ended -> exit_ok
   | Stopped { name; at; chain; about; _ } ->
@@ -465,9 +465,9 @@ let common_run_args =
   let entry = Arg.(value & opt string "main" & info [ "entry" ] ~docv:"NAME" ~doc:"The entry routine (default main).") in
   let max_steps = Arg.(value & opt (count ~what:"--max-steps") 100_000_000 & info [ "max-steps" ] ~docv:"N" ~doc:"Stop after N reduction steps (exit status 3).") in
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
-  let max_depth = Arg.(value & opt (count ~what:"--max-call-depth") M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
-  let retry_limit = Arg.(value & opt (count ~what:"--retry-limit") M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
-  let max_memory = Arg.(value & opt (count ~what:"--max-memory") M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
+  let max_depth = Arg.(value & opt (count ~what:"--max-call-depth") Rapid_runtime.Limits.default.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
+  let retry_limit = Arg.(value & opt (count ~what:"--retry-limit") Rapid_runtime.Limits.default.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
+  let max_memory = Arg.(value & opt (count ~what:"--max-memory") Rapid_runtime.Limits.default.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
   let stub = Arg.(value & flag & info [ "stub-unmodelled" ] ~doc:"Run an installed routine whose behaviour rapid-sem does not model as a no-op (a function returns its type's initial value; VAR and INOUT arguments are left as they are), with one warning per routine, instead of ending the run with exit status 4.") in
   (files, entry, max_steps, Term.(const (fun a b -> (a, b)) $ allow_unknown $ stub), max_depth,
    Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
@@ -481,7 +481,7 @@ let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 (* --stub-unmodelled: each stubbed routine once, at its first call. *)
 let report_stubbed events =
   List.iter (function
-      | M.Stubbed { routine; at } ->
+      | Rapid_runtime.Event.Stubbed { routine; at } ->
           Printf.eprintf "%s: warning: %s is not modelled; --stub-unmodelled ran it as a no-op\n%!"
             (Source.to_string at) routine
       | _ -> ()) events
@@ -544,7 +544,7 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
   if json then print_endline (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
   let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
-  let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+  let on_event e = (match e with Rapid_runtime.Event.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
   let data = ref [] in
   let module_data = Option.map (fun _ d -> data := d) save in
   match Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
@@ -647,7 +647,7 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
       if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
-      let on_event name (e : M.event) =
+      let on_event name (e : Rapid_runtime.Event.t) =
         report_stubbed [ e ];
         if json then print_line (Json_text.to_string (with_task name (event_json e)))
         else match e with Output s -> print_line s | _ -> () in
@@ -684,7 +684,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
               report_stubbed events;
               Option.iter (fun s -> Option.iter (fun (_, cfg) ->
                   print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
-              List.iter (fun (e : M.event) ->
+              List.iter (fun (e : Rapid_runtime.Event.t) ->
                   if json then print_line (Json_text.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
@@ -757,7 +757,7 @@ let run_cmd =
       prerr_endline "rapid-sem: --save: warning: the module read from standard input (-) is not saved: \
                      it has no file to write back to";
     single_task files entries schedule motion_task @@ fun entry ->
-    let print_event (e : M.event) =
+    let print_event (e : Rapid_runtime.Event.t) =
       if json then print_line (Json_text.to_string (event_json e))
       else match e with Output s -> print_line (Rapid_runtime.Text_format.display s) | _ -> () in
     if engine = `Closure && samples <> None then
@@ -777,7 +777,7 @@ let run_cmd =
         report_stubbed events;
         Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
                                                ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
-        List.iter (fun (e : M.event) ->
+        List.iter (fun (e : Rapid_runtime.Event.t) ->
             if json then print_line (Json_text.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
         loop ()
@@ -818,7 +818,7 @@ let write_json (w : TV.change) =
 
 (* The changes other than writes, as the events of run --json, with two more kinds. *)
 let change_json (c : TV.change) : Yojson.Safe.t option =
-  let ev (e : M.event) = Some (event_json e) in
+  let ev (e : Rapid_runtime.Event.t) = Some (event_json e) in
   match c with
   | Write _ -> None
   | Output s -> ev (Output s)
@@ -835,7 +835,7 @@ let change_json (c : TV.change) : Yojson.Safe.t option =
   | Controller_event e -> ev e
 
 (* What the controller and the motion did, as the human trace writes it after "~ ". *)
-let controller_text (e : M.event) =
+let controller_text (e : Rapid_runtime.Event.t) =
   match e with
   | Controller (Signal_changed { time; signal; value }) -> Some (Printf.sprintf "%.6f s: %s = %g" time signal value)
   | Controller (Interrupt_occurred { time; number }) -> Some (Printf.sprintf "%.6f s: interrupt %d occurred" time number)

@@ -57,7 +57,7 @@ let final_samples s cfg =
   let now = Rapid_controller.World.now (M.world cfg) in
   (* Not beyond --max-time: a move of 1E30 s is planned, not sampled. *)
   let stop = Float.min stop (Rapid_controller.World.max_time (M.world cfg)) in
-  if M.outcome cfg = M.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
+  if M.outcome cfg = Rapid_runtime.Outcome.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
   else samples s motion ~until:now
 
 (* ------------------------------------------------------------------ rapid-sem motion *)
@@ -84,17 +84,17 @@ let collect cfg =
          | None -> ())
      | _ -> ());
     List.iter (function
-        | M.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
-        | M.Trap_left { trap; time } -> (
+        | Rapid_runtime.Event.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
+        | Rapid_runtime.Event.Trap_left { trap; time } -> (
             match !traps with
             | (name, t0) :: rest when name = trap ->
                 traps := rest; marks := { lane = Traps; m_from = t0; m_to = time; m_label = trap } :: !marks
             | _ -> ())
-        | M.Controller (Signal_changed { time; signal; value }) ->
+        | Rapid_runtime.Event.Controller (Signal_changed { time; signal; value }) ->
             marks := { lane = Signals; m_from = time; m_to = time; m_label = Printf.sprintf "%s=%g" signal value } :: !marks
-        | M.Motion (MP.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
+        | Rapid_runtime.Event.Motion (MP.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
         | _ -> ()) events;
-    if rule = "wait-start" && not (List.exists (function M.Motion (MP.Segment_planned _) -> true | _ -> false) events) then
+    if rule = "wait-start" && not (List.exists (function Rapid_runtime.Event.Motion (MP.Segment_planned _) -> true | _ -> false) events) then
       label := "wait"
   in
   (observe, fun () -> List.rev !marks)
@@ -112,10 +112,10 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
     let observe, marks = collect cfg in
     let rec loop () =
-      if M.outcome cfg = M.Running && M.steps cfg < max_steps then begin
+      if M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < max_steps then begin
         let rule, events = M.step cfg in
         observe rule events;
-        List.iter (function M.Output s -> print_endline s | _ -> ()) events;
+        List.iter (function Rapid_runtime.Event.Output s -> print_endline s | _ -> ()) events;
         loop ()
       end in
     loop ();

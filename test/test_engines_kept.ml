@@ -20,12 +20,12 @@ let both ?(io = Rapid_controller.Io_config.empty) texts =
   let program = load ~io texts in
   let run f = f (Rapid_controller.World.create io) in
   let m_events, m_outcome =
-    run (fun world -> E.machine_run ~world M.default_limits program ~entry:"main" ~max_steps:1_000_000) in
+    run (fun world -> E.machine_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~max_steps:1_000_000) in
   let c_events, c_outcome =
-    run (fun world -> E.closure_run ~world M.default_limits program ~entry:"main" ~fuel:1_000_000) in
+    run (fun world -> E.closure_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~fuel:1_000_000) in
   Alcotest.(check string) "outcome" (E.outcome_text m_outcome) (E.outcome_text c_outcome);
   (match E.difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d);
-  List.filter_map (function M.Output s -> Some s | _ -> None) c_events
+  List.filter_map (function Rapid_runtime.Event.Output s -> Some s | _ -> None) c_events
 
 let user_text = {rapid|MODULE user
   VAR num count := 0;

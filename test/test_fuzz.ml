@@ -826,7 +826,7 @@ let programs_run () =
         | Error _ -> ()
         | Ok loaded -> (
             incr checked;
-            let limits = { M.default_limits with max_memory = 1_000_000 } in
+            let limits = { Rapid_runtime.Limits.default with max_memory = 1_000_000 } in
             match M.start ~limits loaded.program ~entry:"main" with
             | Error e -> Alcotest.failf "cannot start: %s\n%s" e text
             | Ok cfg ->

@@ -59,8 +59,8 @@ let stubbed_record_result () =
           let out = ref [] and stubbed = ref [] in
           while M.outcome cfg = Running do
             List.iter (function
-                | M.Output s -> out := s :: !out
-                | M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed
+                | Rapid_runtime.Event.Output s -> out := s :: !out
+                | Rapid_runtime.Event.Stubbed { routine; _ } -> stubbed := routine :: !stubbed
                 | _ -> ()) (snd (M.step cfg))
           done;
           Alcotest.(check bool) "ended" true (M.outcome cfg = Ended);

@@ -5,7 +5,7 @@ module M = Rapid_semantics.Machine
 module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
-type run = { outcome : M.outcome; output : string list; motion : MP.event list; cfg : M.config }
+type run = { outcome : Rapid_runtime.Outcome.t; output : string list; motion : MP.event list; cfg : M.config }
 
 let run ?robot ?io ?(allow_unknown = false) ?(max_time = 3600.) ?(statement_time = 0.) files =
   let io = match io with
@@ -23,11 +23,11 @@ let run ?robot ?io ?(allow_unknown = false) ?(max_time = 3600.) ?(statement_time
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           let output = ref [] and moves = ref [] in
-          while M.outcome cfg = M.Running && M.steps cfg < 5_000_000 do
+          while M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < 5_000_000 do
             let _, events = M.step cfg in
             List.iter (function
-                | M.Output s -> output := s :: !output
-                | M.Motion e -> moves := e :: !moves
+                | Rapid_runtime.Event.Output s -> output := s :: !output
+                | Rapid_runtime.Event.Motion e -> moves := e :: !moves
                 | _ -> ()) events
           done;
           { outcome = M.outcome cfg; output = List.rev !output; motion = List.rev !moves; cfg })
@@ -76,7 +76,7 @@ ENDMODULE
 
 let events_of_a_run () =
   let r = run [ write_temp cell ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
   Alcotest.(check int) "moves planned" 22 (List.length (planned r));
   let started, ended = lifecycle r in
   (* Moves follow each other: each begins where (or before: its corner) the one before ends. *)
@@ -102,7 +102,7 @@ let program_pointer_at_stop_points () =
 let deburring_runs () =
   let d = Filename.concat "realworld" in
   let r = run ~robot:(d "large-arm.robot") ~io:(d "deburring.io") [ d "CadDeburrFrame.mod" ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
   Alcotest.(check int) "moves" 693 (List.length (planned r));
   ignore (lifecycle r)
 
@@ -112,7 +112,7 @@ let palletiser_runs () =
   let r = run ~robot:(d "large-arm.robot") ~io:(d "palletiser.io") ~allow_unknown:true ~max_time:300.
       [ d "Palletizer.mod" ] in
   (match r.outcome with
-   | M.Resource_exhausted _ -> ()
+   | Rapid_runtime.Outcome.Resource_exhausted _ -> ()
    | _ -> Alcotest.fail "expected the virtual time to run out");
   if List.length (planned r) < 100 then Alcotest.failf "only %d moves" (List.length (planned r));
   Alcotest.(check bool) "both pallets filled" true (List.mem "Both pallets full, waiting for exchange" r.output)
@@ -154,7 +154,7 @@ let waits_forgotten () =
 ENDMODULE
 |} in
   let r = run [ write_temp text ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
   Alcotest.(check int) "move waits in progress" 0 (MP.move_waits_in_progress (M.motion r.cfg))
 
 let suite = (fst suite, snd suite @ [ Alcotest.test_case "move waits are forgotten when they end" `Quick waits_forgotten ])

@@ -102,7 +102,7 @@ let run_polishing ~stub_unmodelled =
       | Ok cfg ->
           let stubbed = ref [] in
           while M.outcome cfg = Running && M.steps cfg < 1_000_000 do
-            List.iter (function M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed | _ -> ())
+            List.iter (function Rapid_runtime.Event.Stubbed { routine; _ } -> stubbed := routine :: !stubbed | _ -> ())
               (snd (M.step cfg))
           done;
           (M.outcome cfg, List.rev !stubbed))

@@ -36,7 +36,7 @@ let run ?(max_steps = 20_000_000) name program =
       let output = ref [] in
       while M.outcome cfg = Running && M.steps cfg < max_steps do
         let _, events = M.step cfg in
-        List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
+        List.iter (function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) events
       done;
       (match M.outcome cfg with
        | Ended -> ()

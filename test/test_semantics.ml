@@ -51,8 +51,8 @@ let rules_in_spec () =
           match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
           | Error _ -> ()
           | Ok { program; _ } ->
-            let limits = { M.default_limits with
-                           retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+            let limits = { Rapid_runtime.Limits.default with
+                           retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
             let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
             match M.start ~limits ~world ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
             | Ok cfg ->
@@ -102,7 +102,7 @@ let long_routine () =
           | Ok cfg ->
               let out = ref [] in
               while M.outcome cfg = Running do
-                List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+                List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
               done;
               Alcotest.(check (list string)) "output" [ "x=500000" ] !out))
 
@@ -128,7 +128,7 @@ let settled_steps () =
   Alcotest.(check (list string)) "x := x + 1; then x := 2;"
     [ "assign"; "binary-operands"; "read"; "binary"; "store"; "assign"; "store"; "return-entry" ]
     (rules_of cfg ~skip:0 ~count:8);
-  Alcotest.(check bool) "ended" true (M.outcome cfg = M.Ended);
+  Alcotest.(check bool) "ended" true (M.outcome cfg = Rapid_runtime.Outcome.Ended);
   (* Literal arguments and absent optional parameters are bound without steps of their own. *)
   let cfg = machine_of "MODULE t\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nENDMODULE\n" in
   Alcotest.(check (list string)) "TPWrite \"a\";" [ "call-arguments"; "call-primitive"; "return-entry" ]
@@ -143,7 +143,7 @@ let settled_steps () =
     (rules_of cfg ~skip:0 ~count:13);
   let out = ref [] in
   while M.outcome cfg = Running do
-    List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+    List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
   done;
   Alcotest.(check (list string)) "the component of the element written" [ "7" ] !out
 

@@ -210,7 +210,7 @@ let run_with services text =
           | Ok cfg ->
               let out = ref [] in
               while M.outcome cfg = Running && M.steps cfg < 100_000 do
-                List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+                List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
               done;
               List.rev !out))
 

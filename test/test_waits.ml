@@ -13,7 +13,7 @@ let handler_recursion depth =
     \    IF k < %d p k + 1;\n    RETURN;\n  ENDPROC\n  PROC main()\n    p 1;\n\
     \    TPWrite \"n \" \\Num:=n;\n  ENDPROC\nENDMODULE\n" depth
 
-let limits = { M.default_limits with max_call_depth = 30_000 }
+let limits = { Rapid_runtime.Limits.default with max_call_depth = 30_000 }
 
 (* Bytes allocated by [f], minor and major heaps together. *)
 let allocated f =
@@ -54,7 +54,7 @@ let per_level_bounded () =
 let engines_agree () =
   let events, outcome = Test_engines.agree ~limits (Test_engines.load_text "rec" (handler_recursion 5_000)) in
   Alcotest.(check string) "outcome" "ended" (Test_engines.outcome_text outcome);
-  Alcotest.(check bool) "n 5000" true (List.mem (M.Output "n 5000") events)
+  Alcotest.(check bool) "n 5000" true (List.mem (Rapid_runtime.Event.Output "n 5000") events)
 
 (* Item 8: each poll of a WaitUntil and each move of the clock in a wait is a unit of work, as
    it is a step of the machine, so that --max-steps ends a wait that --max-time would let run

@@ -47,13 +47,13 @@ let machine program =
   | Ok cfg ->
       let out = ref [] in
       while M.outcome cfg = Running do
-        List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+        List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
       done;
       (String.concat "" !out, M.steps cfg)
 
 let closure ?all_events program =
   let out = ref [] in
-  match C.run ?all_events ~on_event:(function M.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
+  match C.run ?all_events ~on_event:(function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
   | Error m -> failwith m
   | Ok r -> (String.concat "" !out, r.fuel_used)
 

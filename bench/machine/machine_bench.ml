@@ -41,7 +41,7 @@ let child index =
   match Rapid_load.Session.load_modules [ m ] with
   | Error _ -> failwith "the benchmark program does not check"
   | Ok loaded ->
-      let limits = { M.default_limits with max_call_depth = max depth M.default_limits.max_call_depth } in
+      let limits = { Rapid_runtime.Limits.default with max_call_depth = max depth Rapid_runtime.Limits.default.max_call_depth } in
       let cfg = match M.start ~limits loaded.program ~entry:"main" with Ok c -> c | Error m -> failwith m in
       let t0 = Unix.gettimeofday () in
       while M.outcome cfg = Running do ignore (M.step cfg) done;

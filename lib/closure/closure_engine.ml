@@ -5,13 +5,12 @@
 
 open Ir
 module V = Value
-module M = Machine
-module W = Rapid_controller.World
 module CC = Closure_controller
+module IR = Installed_routine
 
 let default_fuel = 100_000_000
 
-type result = { outcome : M.outcome; fuel_used : int }
+type result = { outcome : Outcome.t; fuel_used : int }
 
 (* Several tasks (Closure_tasks): the run hands the turn over at each statement and wait. *)
 type cooperation = {
@@ -44,7 +43,7 @@ exception Observer_failed of exn        (* raised by the caller's on_event *)
 exception Retry_signal                 (* §4.13 *)
 exception Trynext_signal               (* §4.14 *)
 exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
-exception Halt of M.outcome            (* the task ends where it is: system error handler, Stop, limits *)
+exception Halt of Outcome.t            (* the task ends where it is: system error handler, Stop, limits *)
 exception Kept_leave of int * error option
 exception Continued_leave of int * [ `Return | `Raise of error | `Exit ]
     (* §7.3, R-7.3-p: the user level's handler that RaiseToUser \Continue ran ended otherwise
@@ -100,8 +99,8 @@ type compiled = {
 type state = {
   program : program;
   globals : V.t array;
-  limits : M.limits;
-  emit : M.event -> unit;
+  limits : Limits.t;
+  emit : Event.t -> unit;
   all_events : bool;                  (* false: only output, erase and log are wanted *)
   observe : bool;                     (* schema rapid-sem/2: stores, arguments, returned values *)
   mutable fuel : int;
@@ -109,17 +108,13 @@ type state = {
   mutable depth : int;
   mutable native : int;               (* the nests of the active routines *)
   native_budget : int;
-  mutable booked : int list;          (* BookErrNo numbers (R-4.11-b) *)
-  mutable next_booked : int;
   mutable next_interrupt : int;
   numbers : (string, int) Hashtbl.t;  (* ERR_ names, upper case *)
   mutable compiled : compiled Lazy.t array;
-  mutable prim_ctx : Primitive.context;
   mutable memory : int;               (* bytes of RAPID data: module data and activations *)
   stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
-  world : W.t;                        (* the controller around the run (doc/controller.md) *)
-  motion : Motion_routines.state;   (* the robot and its planner (doc/motion.md) *)
+  host : Host.t;                      (* the world around the run: controller and motion *)
   mutable in_trap : bool;             (* a trap runs, or a routine it called: no interrupt is served *)
   mutable interrupts : bool;          (* some CONNECT ran: interrupts may occur *)
   mutable observing : bool;           (* the world may have something to report *)
@@ -159,7 +154,7 @@ let caught (a : act) e = (match e.chain with None -> e.chain <- Some (lazy (chai
 let chain e = match e.chain with Some l -> Lazy.force l | None -> []
 
 let emit_raised st e =
-  if st.all_events then st.emit (M.Error_raised { name = e.name; number = e.number; at = e.at })
+  if st.all_events then st.emit (Event.Error_raised { name = e.name; number = e.number; at = e.at })
 
 (* An execution error where [at] is the statement in progress. *)
 let fail ?about st ~at name =
@@ -167,7 +162,7 @@ let fail ?about st ~at name =
   emit_raised st e;
   raise (Raised e)
 
-let stopped e = M.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
+let stopped e = Outcome.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
 
 (* §7.3: the user level of an activation of a NOSTEPIN routine: the first routine above it that
    is not one (none across a trap: its caller is no call), with the statement of its call. *)
@@ -206,7 +201,7 @@ let relocate st (c : act) e ~at =
 (* This engine recurses on the native stack (doc/semantics.md): a call beyond its budget ends
    the run before the stack overflows; the machine keeps its continuations on the heap. *)
 let native_stack_exhausted level =
-  M.Resource_exhausted
+  Outcome.Resource_exhausted
     (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4; a larger ulimit -s, \
                      or --engine machine)" level, None)
 
@@ -215,7 +210,7 @@ let native_stack_exhausted level =
 (* The budget of RAPID data (§1.4, doc/user-guide.md "Resources"), by the model of Value.bytes:
    beyond it the run ends as a resource exhausted at the place, before anything is built. *)
 let memory_exhausted st what at =
-  raise (Halt (M.memory_exhausted_by st.limits what at))
+  raise (Halt (Limits.memory_exhausted_by st.limits what at))
 
 (* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
 let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
@@ -252,7 +247,7 @@ let release st (c : act) =
 (* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
 let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v [@@inline]
 
-let fuel_out () = raise (Halt M.Running)
+let fuel_out () = raise (Halt Outcome.Running)
 
 let tick st =
   let f = st.fuel - 1 in
@@ -292,6 +287,14 @@ let own_step own (source : Closure_call.source) =
       Some (i, op, v, q)
   | _ -> None
 
+(* An event of a call as the run wants it: all of them, or only what [rapid-sem run] without
+   --json shows (output, erase, log). *)
+let emit_wanted st (e : Event.t) =
+  if st.all_events then st.emit e
+  else match e with Output _ | Erase | Log _ -> st.emit e | _ -> ()
+
+let not_modelled = { IR.result = Not_modelled; events = []; new_move = None }
+
 (* ------------------------------------------------------------------ the controller *)
 
 (* What the world and the motion did since last asked, as the machine reports it after each
@@ -299,15 +302,15 @@ let own_step own (source : Closure_call.source) =
 let rec observe st = observe_world st; observe_motion st
 
 and observe_world st =
-  match W.drain st.world with
+  match st.host.observations () with
   | [] -> ()
-  | seen -> if st.all_events then List.iter (fun o -> st.emit (M.Controller o)) seen
+  | seen -> if st.all_events then List.iter (fun o -> st.emit (Event.Controller o)) seen
 
 and observe_motion st =
   if st.moving then
-    match Motion_routines.drain st.motion st.world with
+    match st.host.motion_events () with
     | [] -> ()
-    | moved -> if st.all_events then List.iter (fun m -> st.emit (M.Motion m)) moved
+    | moved -> if st.all_events then List.iter (fun m -> st.emit (Event.Motion m)) moved
 
 (* While the world has nothing scheduled and the program has not yet touched it (no stimulus,
    no signal, no controller routine), nothing but the time limit can happen at a statement:
@@ -315,7 +318,7 @@ and observe_motion st =
    anything looks at it ([sync]). *)
 let sync st =
   let uncharged = st.quiet_base - st.quiet in
-  if uncharged > 0 then begin W.statements st.world uncharged; st.quiet_base <- st.quiet end
+  if uncharged > 0 then begin st.host.statements uncharged; st.quiet_base <- st.quiet end
 
 let watch st =
   if not st.observing then begin sync st; st.observing <- true; st.quiet <- 0; st.quiet_base <- 0 end
@@ -326,16 +329,16 @@ let watch st =
    Past --max-time the run ends (time-limit). *)
 let rec at_point st a =
   sync st;
-  if not (W.statement_within st.world) then raise (Halt (CC.time_limit st.world));
+  if not (st.host.statement_within ()) then raise (Halt (Outcome.time_limit st.host.max_time));
   if st.observing then begin
     observe st;
     if st.interrupts && not st.in_trap then
-      match W.take st.world with
+      match st.host.take_interrupt () with
       | Some (number, trap) -> observe st; st.serve_trap a number trap; at_point st a
       | None -> ()
   end
   else begin
-    let left = W.statements_left st.world in
+    let left = st.host.statements_left () in
     st.quiet <- left; st.quiet_base <- left
   end
 
@@ -363,7 +366,7 @@ let pass_turn st = match st.cooperation with Some c -> c.turn (); observe st | N
 (* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
    time. *)
 let rec serve_at_end st a =
-  match W.take st.world with
+  match st.host.take_interrupt () with
   | Some (number, trap) -> observe st; st.serve_trap a number trap; if not st.in_trap then serve_at_end st a
   | None -> ()
 
@@ -385,7 +388,7 @@ let observe_store st (a : act) (box, i) =
   let globals = st.globals in
   let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
                 global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
-  st.emit (M.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
+  st.emit (Event.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
                                 value = Observation.value box.(i) }))
 
 (* How a local slot is reached, known when the routine is compiled. *)
@@ -470,7 +473,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Read_signal p ->
       (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
       let f = read st r ~at p in
-      fun a -> let v = f a in watch st; check st ~at (CC.read_signal st.world v)
+      fun a -> let v = f a in watch st; check st ~at (st.host.read_signal v)
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
@@ -716,16 +719,16 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
 
 (* An argument of an installed routine with a body in OCaml (Primitive). *)
 and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
-  : act -> Primitive.argument =
+  : act -> Argument.t =
   let p = callee.parameters.(i) in
   let location place kind =
     let l = locate st caller ~at place and kind = effective_kind caller place kind in
-    fun a -> let box, j = l a in Primitive.Location (box, j, kind a)
+    fun a -> let box, j = l a in Argument.Location (box, j, kind a)
   in
   match arg with
-  | Absent -> fun _ -> Primitive.Missing
-  | Present_switch -> fun _ -> Primitive.Switch
-  | By_value e -> let f = expr st caller ~at e in fun a -> Primitive.Value (f a)
+  | Absent -> fun _ -> Argument.Missing
+  | Present_switch -> fun _ -> Argument.Switch
+  | By_value e -> let f = expr st caller ~at e in fun a -> Argument.Value (f a)
   | By_reference (place, kind) ->
       if is_alias p then begin
         (* §5.2, the execution-error cells of the access table, for an installed routine's
@@ -738,15 +741,15 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
             | Ref_variable | Ref_other -> fail st ~at "ERR_ARGNOTPER" | _ -> l a)
         | _ -> l
       end
-      else let f = read st caller ~at place in fun a -> Primitive.Value (f a)
+      else let f = read st caller ~at place in fun a -> Argument.Value (f a)
   | Pass_on s ->
       let present = slot_present caller s in
       let pass =
-        if p.p_switch then fun _ -> Primitive.Switch
+        if p.p_switch then fun _ -> Argument.Switch
         else if is_alias p then location (Whole s) Ref_variable
-        else let f = read st caller ~at (Whole s) in fun a -> Primitive.Value (f a)
+        else let f = read st caller ~at (Whole s) in fun a -> Argument.Value (f a)
       in
-      fun a -> if present a then pass a else Primitive.Missing
+      fun a -> if present a then pass a else Argument.Missing
 
 (* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
    call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
@@ -794,14 +797,14 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
     !found in
   let errornumber = index "errornumber" and breakoff = index "breakoff" in
   fun a ->
-    let arg = function Some i -> args.(i) a | None -> Primitive.Missing in
+    let arg = function Some i -> args.(i) a | None -> Argument.Missing in
     match a.ext.current with
     | Some e when a.routine.nostepin && a.routine.kind <> Trap -> (
         let number = match arg errornumber with
-          | Primitive.Missing -> Some e.number
+          | Argument.Missing -> Some e.number
           | Value (V.Num x) when Float.is_integer x ->
               let n = int_of_float x in
-              if (n >= 1 && n <= 90) || List.mem n st.booked
+              if (n >= 1 && n <= 90) || st.host.booked n
                  || List.exists (fun (_, m) -> m = n) st.program.error_numbers then Some n else None
           | _ -> None in
         match number with
@@ -817,7 +820,7 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
                 let free = user.routine.error <> None && user.ext.current = None
                            && not (List.memq user st.undoing) in
                 if not free then raise (stop st a e')
-                else if arg breakoff <> Primitive.Missing then begin
+                else if arg breakoff <> Argument.Missing then begin
                   st.skip_undo <- a :: st.skip_undo;
                   raise (Long_jump (user.level, e'))
                 end
@@ -838,7 +841,7 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
     | _ ->
         (* A call the checker cannot see (late binding): no error of a NOSTEPIN routine to hand
            on (R-7.3-n). *)
-        raise (Halt (M.Stopped { name = "ERR_ILLRAISE"; number = number_of st "ERR_ILLRAISE"; at = call_at;
+        raise (Halt (Outcome.Stopped { name = "ERR_ILLRAISE"; number = number_of st "ERR_ILLRAISE"; at = call_at;
                                  chain = chain_of a; about = Some "RaiseToUser" }))
 
 and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
@@ -852,67 +855,36 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           let p = callee.parameters.(i) in
           let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
           match arg with
-          | By_value _ -> fun (v : Primitive.argument) ->
-              (match v with Primitive.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
+          | By_value _ -> fun (v : Argument.t) ->
+              (match v with Argument.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
           | Absent -> fun _ -> absent
-          | Pass_on _ -> (function Primitive.Missing -> absent | _ -> ("", 0))
+          | Pass_on _ -> (function Argument.Missing -> absent | _ -> ("", 0))
           | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
       let n = Array.length args in
-      (* The controller's, the motion's and the services' routines find their arguments by
-         parameter name, and the motion names its targets (as the machine's call-primitive). *)
-      let motion = Motion_routines.modelled name in
-      (* ErrWrite is Primitive's, but its entry also goes to the world's event log (IError, R-8-l). *)
-      let tasks = Task_routines.modelled name
-                  || List.exists (fun m -> String.lowercase_ascii m = String.lowercase_ascii name) Task_routines.motion_instructions in
-      let controller = motion || tasks || Io_routines.modelled name || Service_routines.modelled name
-                       || String.lowercase_ascii name = "errwrite" in
-      (* What the world observes during the call is reported before what the routine itself
-         writes, as the machine reports a step's events (its output waits meanwhile). *)
-      let held = ref [] in
-      let hold e = held := e :: !held in
-      let ctx =
-        if not controller then st.prim_ctx
-        else { st.prim_ctx with
-               parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
-               argument_label = CC.argument_label st.program callee arguments;
-               output = (fun line -> hold (M.Output (Text_format.display line)));
-               erase = (fun () -> hold M.Erase);
-               log = (fun line -> hold (M.Log line));
-               event_log = (fun entry -> if st.all_events then hold (M.Event_log entry)) } in
+      let entry = st.host.routine name in
+      let reach = match entry with Some e -> e.reach | None -> IR.Values in
+      (* Every installed routine finds its arguments by parameter name, and the motion names its
+         targets (as the machine's call-primitive). *)
+      let site : IR.context = {
+        parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
+        argument_label = IR.argument_label st.program callee arguments;
+        book_error = st.host.book_error;
+        error_number = number_of st } in
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
-      let condition =
-        let found = ref None in
-        Array.iteri (fun i (p : parameter) ->
-            if controller && String.lowercase_ascii p.p_name = "cond" && i < Array.length arguments then
-              match arguments.(i) with
-              | By_value e -> let f = expr st caller ~at e in found := Some (fun a -> match f a with V.Bool b -> b | _ -> false)
-              | _ -> ()) callee.parameters;
-        !found in
+      let condition = match entry with
+        | None -> None
+        | Some e ->
+            Option.map (fun c -> let f = expr st caller ~at c in fun a -> match f a with V.Bool b -> b | _ -> false)
+              (IR.condition_argument e callee arguments) in
       let invoke values =
-        if not controller then Primitive.call ctx name values
-        else begin
-          watch st;
-          if motion then st.moving <- true;
-          (* GetTaskName and WaitSyncTask (ch. 14) in the one task of a run, as the machine's. *)
-          let task_call () =
-            if not tasks then None
-            else
-              let standstill () = Rapid_motion_model.Planner.finished_by (Motion_routines.planner st.motion) in
-              Task_routines.call ~standstill ctx name values in
-          match task_call () with
-          | Some r -> r
-          | None ->
-          match Motion_routines.call ctx st.motion name values with
-          | Some r -> r
-          | None -> match Io_routines.call ctx name values with
-            | Some r -> r
-            | None -> match Service_routines.call ctx name values with
-              | Some r -> r
-              | None -> Primitive.call ctx name values
-        end in
+        match entry with
+        | None -> not_modelled
+        | Some e ->
+            if reach <> Values then begin watch st; if reach = Moves then st.moving <- true end;
+            e.call site values in
       fun a ->
         let pending = ref 0 in
-        let values = Array.make n Primitive.Missing in
+        let values = Array.make n Argument.Missing in
         for i = 0 to n - 1 do
           let v = args.(i) a in
           let what, bytes = cost.(i) v in
@@ -921,26 +893,26 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           values.(i) <- v
         done;
         let before = if st.observe then Observation.references values else [] in
-        let result = invoke values in
+        let o = invoke values in
         (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
         let stores () = if st.observe then List.iter (observe_store st a) (Observation.changed before) in
-        if controller then begin
+        if reach <> Values then begin
           (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4). *)
-          (match Motion_routines.take_new_move st.motion with
-           | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < 63) st.move_owners
+          (match o.new_move with
+           | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < Limits.move_owners - 1) st.move_owners
            | None -> ());
           (* The machine's order within a step: the world, the routine's own events, the motion. *)
+          List.iter (function Event.Controller _ as e -> if st.all_events then st.emit e | _ -> ()) o.events;
           observe_world st;
-          if !held <> [] then begin
-            let written = List.rev !held in
-            held := [];
-            List.iter st.emit written
-          end;
+          List.iter (function Event.Controller _ -> () | e -> emit_wanted st e) o.events;
           stores ();
           observe_motion st
         end
-        else stores ();
-        primitive_outcome st caller a ~at ~call_at ~condition callee name result
+        else begin
+          List.iter (emit_wanted st) o.events;
+          stores ()
+        end;
+        primitive_outcome st caller a ~at ~call_at ~condition callee name o.result
   | None when Closure_call.direct callee arguments <> None ->
       direct_call st caller ~at ~r_index:k callee (Option.get (Closure_call.direct callee arguments))
   | None ->
@@ -1004,7 +976,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   let start (a : act) store pending =
     let level = a.level + 1 in
     if level >= limits.max_call_depth then
-      raise (Halt (M.call_depth_exceeded limits));
+      raise (Halt (Limits.call_depth_exceeded limits));
     if act_bytes > limits.max_memory - st.memory - pending then memory_exhausted st call_of at;
     tick st;
     let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
@@ -1021,7 +993,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   (* A run that observes nothing (schema rapid-sem/2) needs of [entered] only the routine's
      entry and exit, built once here: when every budget has room, the call is made here with
      one test each; otherwise [start] takes it, to stop at the budget that runs out first. *)
-  let entered_event = M.Routine_entered callee.name and left_event = M.Routine_left callee.name in
+  let entered_event = Event.Routine_entered callee.name and left_event = Event.Routine_left callee.name in
   let events = st.all_events and observe = st.observe in
   (* A valued body's call, once its code is known ([fast]), with the budgets' bounds computed
      once: [quick]'s tests, in a form that needs fewer loads. *)
@@ -1157,31 +1129,30 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       done;
       quick a store !pending
 
-and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name : Primitive.outcome -> V.t = function
+and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name
+  : IR.result -> V.t = function
   | Returned (Some v) -> v
   | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
-  | Failed error when Motion_routines.take_async_raised st.motion -> async_at_move st ~at error
-  | Failed error -> fail st ~at error
+  | Failed { error; at_move = true } -> async_at_move st ~at error
+  | Failed { error; at_move = false } -> fail st ~at error
   | Call_by_name target -> (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
-  | Stop_requested -> if st.all_events then st.emit M.Task_ended; raise (Halt M.Ended)
+  | Stop_requested -> if st.all_events then st.emit Event.Task_ended; raise (Halt Outcome.Ended)
   | Not_modelled when st.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22). *)
       let key = String.lowercase_ascii name in
       if not (Hashtbl.mem st.stubbed key) then begin
         Hashtbl.replace st.stubbed key ();
-        if st.all_events then st.emit (M.Stubbed { routine = callee.name; at = call_at })
+        if st.all_events then st.emit (Event.Stubbed { routine = callee.name; at = call_at })
       end;
       (match callee.kind with
        | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
        | Procedure | Trap -> no_value)
-  | Not_modelled ->
-      raise (Halt (M.Unsupported
-                     { name = callee.name; at = call_at;
-                       reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" callee.name }))
-  | Wait wt -> wait st caller_act ~at wt ~condition; no_value
+  | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
+  | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
+  | History_exhausted m -> raise (Halt (Outcome.motion_history_exhausted m call_at))
   | Retry_requested ->
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          StartMove alone (R-7.6-b). *)
@@ -1192,28 +1163,27 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
 (* A waiting instruction (doc/controller.md): interrupts are served while it waits, and an
    asynchronous error of the motion is raised at it (§7.4, §7.6). A wait that an error or a long
    jump leaves is abandoned: a move instruction's move is cancelled (M-abandon). *)
-and wait st (a : act) ~at (wt : W.wait) ~condition =
-  let first_poll = Motion_routines.take_first_poll st.motion in
+and wait st (a : act) ~at (wt : Rapid_observable.Wait.t) ~first_poll ~condition =
   let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
   let serve () =
     if st.in_trap then false
     else
-      match (if st.interrupts then W.take st.world else None) with
+      match (if st.interrupts then st.host.take_interrupt () else None) with
       | Some (number, trap) -> observe st; st.serve_trap a number trap; true
       | None -> (
-          match Motion_routines.take_org_error st.motion with
+          match st.host.motion_error () with
           | None -> false
-          | Some (name, move, handled) -> kept_async_error st a ~at name move handled)
+          | Some { error; move; handled } -> kept_async_error st a ~at error move handled)
   in
   let yield = Option.map (fun c -> c.yield) st.cooperation in
   let spend () = tick st in
-  match CC.wait ?yield st.world wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
+  match CC.wait ?yield st.host wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
   | Finished None -> ()
-  | Finished (Some name) when Motion_routines.take_async_raised st.motion -> ignore (async_at_move st ~at name)
-  | Finished (Some name) -> fail st ~at name
+  | Finished (Some { error; at_move = true }) -> ignore (async_at_move st ~at error)
+  | Finished (Some { error; at_move = false }) -> fail st ~at error
   | Halted o -> raise (Halt o)
   | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task | Kept_leave _) as left) ->
-      Motion_routines.wait_abandoned st.motion wt ~now:(W.now st.world);
+      st.host.wait_abandoned wt;
       raise left
 
 (* §7.4 (\SyncLastMoveInst): the error raised at the move instruction, as any error there, but
@@ -1342,7 +1312,7 @@ and pop st (c : act) =
    return-function, function-no-return, call-depth-exceeded). *)
 and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
   if c.level >= st.limits.max_call_depth then
-    raise (Halt (M.call_depth_exceeded st.limits));
+    raise (Halt (Limits.call_depth_exceeded st.limits));
   let bytes = activation_bytes r in
   if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st ("the call of " ^ r.name) at;
   tick st;
@@ -1360,9 +1330,9 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
 
 (* The activation is counted: it runs. *)
 and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
-  if st.all_events then st.emit (M.Routine_entered r.name);
+  if st.all_events then st.emit (Event.Routine_entered r.name);
   if st.observe && Array.length r.parameters > 0 then
-    st.emit (M.Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
+    st.emit (Event.Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
         (List.mapi (fun i (p : parameter) ->
              if p.p_optional && i < Array.length c.ext.present && not c.ext.present.(i) then None
              else if p.p_switch then Some (p.p_name, None)
@@ -1372,14 +1342,14 @@ and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
   match if has_init then code.c_init at c; code.c_body c with
   | true ->
       pop st c;
-      if st.all_events then st.emit (M.Routine_left r.name);
+      if st.all_events then st.emit (Event.Routine_left r.name);
       (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
       if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
   | false ->
       pop st c;
       if st.observe && is_function then
-        st.emit (M.Observed (Returned { routine = r.name; value = Observation.value c.result }));
-      if st.all_events then st.emit (M.Routine_left r.name); c.result
+        st.emit (Event.Observed (Returned { routine = r.name; value = Observation.value c.result }));
+      if st.all_events then st.emit (Event.Routine_left r.name); c.result
   | exception (Raised e | Leaving e) -> leave_with_error ~call:at st code c (caught c e)
   | exception Long_jump (j, e) when j = c.level ->
       (* An asynchronous error carried to the routine of its move, which has no error handler
@@ -1408,15 +1378,15 @@ and abandon st code (c : act) =
    | Some _ when skip -> ()
    | None -> ()
    | Some undo -> (
-       if st.all_events then st.emit (M.Undo_run c.routine.name);
+       if st.all_events then st.emit (Event.Undo_run c.routine.name);
        st.undoing <- c :: st.undoing;
        match undo c with
        | _ -> st.undoing <- List.tl st.undoing
        | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (stop st c e)));
   pop st c;
   if st.all_events then begin
-    st.emit (M.Routine_left c.routine.name);
-    if c.routine.kind = Trap then st.emit (M.Trap_left { trap = c.routine.name; time = W.now st.world })
+    st.emit (Event.Routine_left c.routine.name);
+    if c.routine.kind = Trap then st.emit (Event.Trap_left { trap = c.routine.name; time = st.host.now () })
   end
 
 (* ch. 8 (interrupt-serve, trap-end): the trap of an interrupt runs as a routine called from the
@@ -1428,8 +1398,8 @@ and serve_trap st (a : act) number k =
   let r = st.program.routines.(k) in
   st.globals.(st.program.intno) <- V.num (float_of_int number);
   if st.all_events then begin
-    st.emit (M.Trap_entered { number; trap = r.name; time = W.now st.world });
-    st.emit (M.Routine_entered r.name)
+    st.emit (Event.Trap_entered { number; trap = r.name; time = st.host.now () });
+    st.emit (Event.Routine_entered r.name)
   end;
   let code = Lazy.force st.compiled.(k) in
   let c = new_act (activation_shape r) r a in
@@ -1443,8 +1413,8 @@ and serve_trap st (a : act) number k =
       pop st c;
       resume ();
       if st.all_events then begin
-        st.emit (M.Routine_left r.name);
-        st.emit (M.Trap_left { trap = r.name; time = W.now st.world })
+        st.emit (Event.Routine_left r.name);
+        st.emit (Event.Trap_left { trap = r.name; time = st.host.now () })
       end
   | exception (Raised e | Leaving e) -> (
       let e = caught c e in
@@ -1473,7 +1443,7 @@ and leave_with_error ?call st code (c : act) e =
   | None ->
       (* Schema rapid-sem/2: raised again at the call point, said as a propagation (§7.1). *)
       if st.all_events then
-        st.emit (M.Observed (Propagated { name = e.name; number = e.number; routine = c.routine.name;
+        st.emit (Event.Observed (Propagated { name = e.name; number = e.number; routine = c.routine.name;
                                           caller = c.parent.routine.name }));
       raise (Raised e)
 
@@ -1496,7 +1466,7 @@ and recovers st (a : act) number =
    by reaching its end, which calls the system error handler (handler-end). An error inside it
    goes to the system error handler (raise-in-handler). *)
 and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
-  if st.all_events then st.emit (M.Error_handled { name = e.name; routine = a.routine.name });
+  if st.all_events then st.emit (Event.Error_handled { name = e.name; routine = a.routine.name });
   st.globals.(st.program.errno) <- V.num (float_of_int e.number);
   let previous = a.ext.current in
   a.ext.current <- Some e;
@@ -1530,8 +1500,8 @@ and guarded st handler (core : act -> bool) : act -> bool =
           match left with `Return -> false | `Raise e -> raise (Leaving e) | `Exit -> raise Exit_task)
     and handle e =
       match run_handler st handler a e with
-      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); pass_turn st; attempt true
-      | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); true
+      | `Retry -> if st.all_events then st.emit (Event.Observed (Retried a.routine.name)); pass_turn st; attempt true
+      | `Trynext -> if st.all_events then st.emit (Event.Observed (Tried_next a.routine.name)); true
       | `Return -> false
     in
     attempt false
@@ -1567,9 +1537,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           | _ -> false (* an initial value, a FOR variable: never a signal's *) in
       let store_signal box i v =
         watch st;
-        match CC.write_signal st.world box.(i) v with
+        match st.host.write_signal box.(i) v with
         | Ok () -> ()
-        | Error "" -> raise (Halt (M.Stuck "a signal assigned a value that is not a num"))
+        | Error "" -> raise (Halt (Outcome.Stuck "a signal assigned a value that is not a num"))
         | Error name -> fail st ~at name in
       match place with
       | _ when st.observe ->
@@ -1614,7 +1584,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let f = number e in
       fun a ->
         let x = f a in
-        let booked = Float.is_integer x && List.mem (int_of_float x) st.booked in
+        let booked = Float.is_integer x && st.host.booked (int_of_float x) in
         if Float.is_integer x && ((x >= 1. && x <= 90.) || booked) then
           let n = int_of_float x in
           let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
@@ -1659,10 +1629,10 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let box, i = l a in
         if kind a = Ref_persistent || not (module_data a) then fail st ~at "ERR_CNTNOTVAR";
         (match box.(i) with
-         | V.Num n when n <> 0. && Float.is_integer n && Rapid_controller.World.connected st.world (int_of_float n) ->
+         | V.Num n when n <> 0. && Float.is_integer n && st.host.connected (int_of_float n) ->
              fail st ~at "ERR_ALRDYCNT"
          | _ -> ());
-        (match W.connect st.world ~trap with
+        (match st.host.connect ~trap with
          | Ok n ->
              box.(i) <- V.num (float_of_int n); watch st; st.interrupts <- true;
              if st.observe then observe_store st a (box, i)
@@ -1784,8 +1754,8 @@ and between st h (a : act) point =
   | exception Long_jump (j, e) when j = a.level -> (
       emit_raised st e;
       match run_handler st h a e with
-      | `Retry -> if st.all_events then st.emit (M.Observed (Retried a.routine.name)); between st h a point
-      | `Trynext -> if st.all_events then st.emit (M.Observed (Tried_next a.routine.name)); between st h a point
+      | `Retry -> if st.all_events then st.emit (Event.Observed (Retried a.routine.name)); between st h a point
+      | `Trynext -> if st.all_events then st.emit (Event.Observed (Tried_next a.routine.name)); between st h a point
       | `Return -> false)
 
 (* ------------------------------------------------------------------ routines *)
@@ -1964,64 +1934,48 @@ let error_number_table error_numbers =
 
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
 
-let initial_state ?(limits = M.default_limits) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
-    ?cooperation ~all_events ~emit ~world ~motion (program : program) =
+let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
+    ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
   let numbers = error_number_table program.error_numbers in
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;
     fuel; fuel_limit = fuel; depth = 0; native = 0;
-    native_budget = (match cooperation with Some (c : cooperation) -> c.native_budget | None -> Native_stack.budget ()); booked = []; next_booked = 2001;
+    native_budget = (match cooperation with Some (c : cooperation) -> c.native_budget | None -> Native_stack.budget ());
     next_interrupt = 0; numbers; compiled = [||];
     memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
-    world; motion; in_trap = false; interrupts = false;
+    host; in_trap = false; interrupts = false;
     (* A stimulus, or collisions, make the world report without the program asking. *)
-    observing = W.next_event world <> None || W.collisions world <> [] || cooperation <> None;
+    observing = host.next_event () <> None || host.collisions || cooperation <> None;
     quiet = 0; quiet_base = 0;
-    moving = W.collisions world <> [];
-    max_time = W.max_time world; move_owners = [];
+    moving = host.collisions;
+    max_time = host.max_time; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
-    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation;
-    prim_ctx = { output = (fun _ -> ()); erase = ignore; log = ignore; book_error = (fun () -> 0);
-                 error_number = (fun _ -> 0); world = Rapid_controller.World.create Rapid_controller.Io_config.empty;
-                 parameters = [||]; argument_label = (fun _ -> None); event_log = ignore } } in
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
   st.compiled <- Array.make (Array.length program.routines) not_compiled;
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
-  st.prim_ctx <- {
-    (* The pendant shows a control character as its character code (Text_format.display). *)
-    output = (fun s -> emit (M.Output (Text_format.display s)));
-    erase = (fun () -> emit M.Erase);
-    log = (fun s -> emit (M.Log s));
-    book_error = (fun () ->
-        let n = st.next_booked in
-        st.next_booked <- n + 1; st.booked <- n :: st.booked; n);
-    error_number = number_of st; world; parameters = [||]; argument_label = (fun _ -> None);
-    event_log = (fun e -> if st.all_events then emit (M.Event_log e)) };
   st
 
 let outcome_of_exception st = function
   | Halt o -> o
   | Stack_overflow ->
-      M.Resource_exhausted
+      Outcome.Resource_exhausted
         (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth, None)
-  | Out_of_memory -> M.Resource_exhausted ("out of memory (resource exhaustion, §1.4)", None)
-  | Motion_routines.History_exhausted m -> M.Resource_exhausted (m, None)
-  | V.Type_mismatch what -> M.Stuck ("a value of the wrong type: " ^ what)
-  | e -> M.Stuck (Printexc.to_string e)
+  | Out_of_memory -> Outcome.Resource_exhausted ("out of memory (resource exhaustion, §1.4)", None)
+  | V.Type_mismatch what -> Outcome.Stuck ("a value of the wrong type: " ^ what)
+  | e -> Outcome.Stuck (Printexc.to_string e)
 
-let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?world ?motion
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ~host
     ?cooperation ?module_data (program : program) ~entry =
-  let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
-  let motion = match motion with Some m -> m | None -> Motion_routines.create () in
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion program ~entry
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
-and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~world ~motion
-    (program : program) ~entry =
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event
+    ~(host : Host.t) (program : program) ~entry =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
-  let program = Motion_routines.robot_data motion program in
+  let program = host.prepare program in
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
@@ -2029,7 +1983,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~world ~motion program in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~host program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -2063,22 +2017,22 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
           st.native <- code.c_nest;
           st.depth <- 1;
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
-          if all_events then on_event (M.Routine_entered r.name);
+          if all_events then on_event (Event.Routine_entered r.name);
           match code.c_init r.at a; code.c_body a with
           | _ ->
-              if all_events then begin on_event (M.Routine_left r.name); on_event M.Task_ended end;
-              M.Ended
+              if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
+              Outcome.Ended
           | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
           | exception Exit_task ->
               (match code.c_undo with
                | Some undo ->
-                   if all_events then on_event (M.Undo_run r.name);
+                   if all_events then on_event (Event.Undo_run r.name);
                    (match undo a with
                     | _ -> ()
                     | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
                | None -> ());
-              if all_events then on_event M.Task_ended;
-              M.Ended
+              if all_events then on_event Event.Task_ended;
+              Outcome.Ended
         with
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
         | Observer_failed ex -> raise ex
@@ -2090,8 +2044,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
          sync st;
          observe_world st;
          observe_motion st;
-         if outcome = M.Ended && all_events then
-           List.iter (fun m -> on_event (M.Motion m)) (Motion_routines.finish st.motion)
+         if outcome = Outcome.Ended && all_events then
+           List.iter (fun m -> on_event (Event.Motion m)) (st.host.motion_finish ())
        with _ -> ());
       (* --save (Persistent_save): the module data as the run left it. *)
       Option.iter (fun f ->
@@ -2099,8 +2053,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
         module_data;
       Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
 
-let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion program ~entry =
+let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ?world ?motion ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host ~on_event:(fun e -> acc := e :: !acc) program ~entry with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

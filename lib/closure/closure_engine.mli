@@ -1,11 +1,11 @@
 (** The second evaluator of RAPID's dynamic semantics: a definitional interpreter written from
     doc/semantics.md and the manual, independent of the small-step {!Machine}.
 
-    It shares with the machine only the checked, lowered program ({!Ir}), the primitives on
-    values ({!Value}, {!Arith}, {!Library}, {!Primitive}, {!Late_binding}) and the interfaces of
-    the world around the program: the controller ({!Rapid_controller.World}, {!Io_routines},
-    {!Service_routines}) and the motion ({!Motion_routines}); {!Closure_controller} carries
-    out waits, signals and the time limit. Each routine is
+    It shares with the machine only what lib/runtime holds: the checked, lowered program
+    ({!Ir}), values and their operators ({!Value}, {!Arith}, {!Late_binding}), the observable
+    events and outcomes, and the host through which both reach the world ({!Host}: the
+    controller, the motion and the installed routines' registry); {!Closure_controller} carries
+    out waits. Its library cannot name the machine (test/test_layers.ml). Each routine is
     compiled once, when it is first called, to OCaml closures: an expression to a function from
     the activation to a value, a place to a function giving its location (a container and an
     index), a statement to a function from the activation that says whether execution goes on
@@ -14,7 +14,7 @@
     exception caught where the manual sends it.
 
     It is the machine's first differential partner: on every program both must make the same
-    observable {!Machine.event}s in the same order and end with the same {!Machine.outcome}
+    observable {!Event.t}s in the same order and end with the same {!Outcome.t}
     (doc/semantics.md, "The second engine"). It is also the fast path of
     [rapid-sem run --engine closure]. *)
 
@@ -22,7 +22,7 @@ val default_fuel : int
 (** 100,000,000, the default of [--max-steps]. *)
 
 type result = {
-  outcome : Machine.outcome;
+  outcome : Outcome.t;
       (** as the machine's; [Running] when the fuel ran out (the machine's "step limit") *)
   fuel_used : int;
       (** units of fuel spent: one per statement started, per loop iteration (each test of a
@@ -52,9 +52,8 @@ type cooperation = {
     hands the turn over where the machine's scheduler ends a turn. *)
 
 val run :
-  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  ?on_event:(Machine.event -> unit) -> ?world:Rapid_controller.World.t ->
-  ?motion:Motion_routines.state -> ?cooperation:cooperation ->
+  ?limits:Limits.t -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
+  ?on_event:(Event.t -> unit) -> host:Host.t -> ?cooperation:cooperation ->
   ?module_data:((string * string * Value.t) list -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
@@ -65,8 +64,7 @@ val run :
     their texts are built only then). [Error] when there is no procedure
     [entry] without parameters (nothing runs).
 
-    The program runs in [world] (default: no signals, default timing, the default sandbox) with
-    the robot of [motion] (default the IRB 120), as {!Machine.start} runs it: virtual time, the
+    The program runs in the world of [host] (its controller and robot), as the machine runs it: virtual time, the
     time limit ([Resource_exhausted]), deadlocks of waits ([Deadlock]), interrupts and traps,
     the asynchronous errors of moves with the program pointer kept (§7.4, §7.6), and the user
     level of NOSTEPIN routines (§7.3, RaiseToUser). One task; with [cooperation], one of several
@@ -81,7 +79,6 @@ val run :
     exception escapes: one that is not part of the semantics ends the run as [Stuck]. *)
 
 val events :
-  ?limits:Machine.limits -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  ?world:Rapid_controller.World.t -> ?motion:Motion_routines.state -> Ir.program -> entry:string ->
-  (Machine.event list * result, string) Stdlib.result
+  ?limits:Limits.t -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
+  host:Host.t -> Ir.program -> entry:string -> (Event.t list * result, string) Stdlib.result
 (** [run], collecting the events in order. *)

@@ -5,8 +5,6 @@
    turn back where the machine's turn ends, so that both engines make the same events in the
    same order for every schedule. *)
 
-module M = Machine
-module W = Rapid_controller.World
 module C = Closure_engine
 
 (* How a task's turn ended. *)
@@ -24,8 +22,7 @@ type task = {
   name : string;
   program : Ir.program;
   entry : string;
-  world : W.t;
-  motion : Motion_routines.state;
+  host : Host.t;
   mutable globals : Value.t array;         (* its module data, once initialised *)
   mutable links : (int * int) list;        (* a slot of [globals] and the shared object it is *)
   mutable reply : reply option;
@@ -43,23 +40,23 @@ type task = {
 type t = {
   members : task array;
   shared : Value.t array;                  (* each shared data object's value *)
-  order : Task_set.order;
+  order : Task_rules.order;
   cursor : int ref;
-  mutable ended : M.outcome option;        (* a deadlock or the time limit of the whole run *)
+  mutable ended : Outcome.t option;        (* a deadlock or the time limit of the whole run *)
   mutable cut : bool;                      (* a task ran out of fuel: the run stopped *)
   mutable aborting : bool;
   mutable ran : bool;
-  limits : M.limits;
+  limits : Limits.t;
   stub_unmodelled : bool option;
-  clock : W.t;
+  clock : Host.t;
   mutable over : bool;                     (* the run is over: no more turns *)
   mutable crashed : exn option;            (* what a caller's on_event raised *)
   lock : Mutex.t;
   done_ : Condition.t;                     (* the run is over *)
 }
 
-type task_result = { name : string; task_outcome : M.outcome; fuel_used : int; module_data : (string * string * Value.t) list }
-type result = { outcome : M.outcome; tasks : task_result list }
+type task_result = { name : string; task_outcome : Outcome.t; fuel_used : int; module_data : (string * string * Value.t) list }
+type result = { outcome : Outcome.t; tasks : task_result list }
 
 (* A thread's stack is the C library's default: the soft limit when there is one (glibc), 2 MB
    on x86-64 when it is unlimited (Native_stack reports 1 GB then); at most 8 MB counted. *)
@@ -68,17 +65,14 @@ let thread_budget () =
   let stack = if limit >= 1024 * 1024 * 1024 then 2 * 1024 * 1024 else min limit (8 * 1024 * 1024) in
   min (Native_stack.budget ()) (stack / Native_stack.bytes_per_nest)
 
-let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion (specs : Task_set.spec list) =
-  match Task_set.start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world ~motion specs with
-  | Error f -> Error f
-  | Ok (ts, warnings) ->
-      (* The machines Task_set made are not run: they give the loaded programs, the worlds, the
-         robot, and the values of the shared data objects as ch. 14 initialises them. *)
-      let machines = Array.of_list (List.map snd (Task_set.tasks ts)) in
-      let tasks = Array.of_list (List.map2 (fun (s : Task_set.spec) cfg ->
-          { name = s.name; program = M.program cfg; entry = s.entry; world = M.world cfg; motion = M.motion cfg;
+let start ?limits ?stub_unmodelled ?seed (loaded : Task_rules.task list) (links : Task_rules.link list) =
+  match loaded with
+  | [] -> Error "no task to run"
+  | first :: _ ->
+      let tasks = Array.of_list (List.map (fun (l : Task_rules.task) ->
+          { name = l.name; program = l.program; entry = l.entry; host = l.host;
             globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
-            finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) specs (Array.to_list machines)) in
+            finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) loaded) in
       let objects = Hashtbl.create 64 in
       let shared = ref [] in
       let object_of k j =
@@ -87,18 +81,18 @@ let start ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~world 
         | None ->
             let n = Hashtbl.length objects in
             Hashtbl.replace objects (k, j) n;
-            let v = match M.read_data machines.(k) (Ir.Global j) with Some v -> Value.copy v | None -> Value.Bool false in
+            let v = match Task_rules.initial_value tasks.(k).program j with
+              | Some v -> Value.copy v | None -> Value.Bool false in
             shared := v :: !shared;
             tasks.(k).links <- (j, n) :: tasks.(k).links;
             n in
-      List.iter (fun (k, i, k', j) ->
-          let n = object_of k' j in
-          tasks.(k).links <- (i, n) :: tasks.(k).links) (Task_set.shared ts);
-      let order = Task_set.order_of_seed seed in
-      Ok ({ members = tasks; shared = Array.of_list (List.rev !shared); order; cursor = ref 0; ended = None; cut = false;
-            aborting = false; ran = false; limits = Task_set.limits ts; stub_unmodelled; clock = world;
-            over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () },
-          warnings)
+      List.iter (fun (l : Task_rules.link) ->
+          let n = object_of l.owner l.owner_slot in
+          tasks.(l.task).links <- (l.slot, n) :: tasks.(l.task).links) links;
+      let limits = Limits.for_tasks (Option.value limits ~default:Limits.default) ~count:(Array.length tasks) in
+      Ok { members = tasks; shared = Array.of_list (List.rev !shared); order = Task_rules.order_of_seed seed;
+           cursor = ref 0; ended = None; cut = false; aborting = false; ran = false; limits; stub_unmodelled;
+           clock = first.host; over = false; crashed = None; lock = Mutex.create (); done_ = Condition.create () }
 
 (* The shared data objects: a task's slots hold the same values as the others' while it runs
    (only one runs at a time); a value written whole is taken over when the turn passes. *)
@@ -108,14 +102,14 @@ let take_over t task = List.iter (fun (slot, n) -> task.globals.(slot) <- t.shar
 let running task = task.finished = None
 
 let same_rules_choose t =
-  Task_set.next_turn t.order ~cursor:t.cursor ~count:(Array.length t.members)
+  Task_rules.next_turn t.order ~cursor:t.cursor ~count:(Array.length t.members)
     (fun k -> running t.members.(k) && not t.members.(k).idle)
   |> Option.map (fun k -> t.members.(k))
 
 (* Every running task waits: Task_set's rule. *)
 let all_wait t =
   let waits = Array.to_list t.members |> List.filter running |> List.map (fun (task : task) -> (task.name, task.what, task.wake)) in
-  match Task_set.every_task_waits t.clock waits with
+  match Task_rules.every_task_waits t.clock waits with
   | Some ended -> t.ended <- Some ended
   | None -> Array.iter (fun task -> task.idle <- false) t.members
 
@@ -142,11 +136,11 @@ let turn_ended t task reply =
    | Finished (Ok r) ->
        wake_all t;
        task.finished <- Some r; task.fuel_used <- r.fuel_used;
-       if r.outcome = M.Running then t.cut <- true
+       if r.outcome = Outcome.Running then t.cut <- true
    | Finished (Error m) ->
        wake_all t;
-       task.finished <- Some { C.outcome = M.Stuck m; fuel_used = 0 }
-   | Crashed e -> t.crashed <- Some e; task.finished <- Some { C.outcome = M.Running; fuel_used = 0 });
+       task.finished <- Some { C.outcome = Outcome.Stuck m; fuel_used = 0 }
+   | Crashed e -> t.crashed <- Some e; task.finished <- Some { C.outcome = Outcome.Running; fuel_used = 0 });
   pick t
 
 (* On the task's thread (lock held): wait for its turn. *)
@@ -186,8 +180,8 @@ let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event ()
         yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
         native_budget = thread_budget () } in
       let on_event e = if not t.aborting then on_event task.name e in
-      match C.run ~limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~world:task.world
-              ~motion:task.motion ~cooperation task.program ~entry:task.entry with
+      match C.run ~limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~host:task.host
+              ~cooperation task.program ~entry:task.entry with
       | r -> if task.globals <> [||] then publish t task; Finished r
       | exception e -> Crashed e
   in
@@ -217,18 +211,18 @@ let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_ev
   let task_outcome (task : task) =
     match task.finished, t.ended with
     | Some r, _ -> r.C.outcome
-    | None, Some (M.Deadlock _) ->
-        M.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, and no task or event can end the wait"
-                      (W.now t.clock) (Option.value task.what ~default:"a wait"))
+    | None, Some (Outcome.Deadlock _) ->
+        Outcome.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, and no task or event can end the wait"
+                      (t.clock.now ()) (Option.value task.what ~default:"a wait"))
     | None, Some o -> o
-    | None, None -> M.Running in
+    | None, None -> Outcome.Running in
   let outcome =
     match t.ended with
     | Some o -> o
     | None -> (
-        match Array.to_list t.members |> List.map task_outcome |> List.find_opt (fun o -> o <> M.Ended) with
+        match Array.to_list t.members |> List.map task_outcome |> List.find_opt (fun o -> o <> Outcome.Ended) with
         | Some o -> o
-        | None -> M.Ended) in
+        | None -> Outcome.Ended) in
   { outcome;
     tasks = Array.to_list (Array.map (fun (task : task) ->
         { name = task.name; task_outcome = task_outcome task;
@@ -238,8 +232,5 @@ let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_ev
               task.program.globals) }) t.members) }
 
 let names t = Array.to_list (Array.map (fun (task : task) -> task.name) t.members)
-let world t = t.clock
 
-let motion_task t =
-  Array.to_list t.members |> List.find_opt (fun (task : task) -> W.motion_task task.world)
-  |> Option.map (fun (task : task) -> (task.name, task.motion))
+let clock t = t.clock

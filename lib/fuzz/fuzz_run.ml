@@ -25,7 +25,7 @@ type engine = { engine_name : string; run : Rapid_runtime.Ir.program -> max_step
 
 let place at = Source.to_string at
 
-let event_text (e : M.event) =
+let event_text (e : Rapid_runtime.Event.t) =
   match e with
   | Output s -> "output " ^ String.escaped s
   | Erase -> "erase"
@@ -46,10 +46,10 @@ let event_text (e : M.event) =
   | Trap_entered { number; trap; time } -> Printf.sprintf "trap-entered %s %d at %g" trap number time
   | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
   | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (place at)
-  | Motion m -> Rapid_installed.Motion_routines.event_to_string m
+  | Motion m -> Rapid_observable.Motion_event.to_string m
   | Observed o -> Rapid_runtime.Observation.to_string o
 
-let outcome_text (o : M.outcome) =
+let outcome_text (o : Rapid_runtime.Outcome.t) =
   match o with
   | Running -> "running"
   | Ended -> "ended"
@@ -108,14 +108,15 @@ let new_world () =
    a step (doc/semantics.md, "What is compared"); each stream must be the same. *)
 let streams () =
   let program = ref [] and world = ref [] in
-  let add e = if M.world_event e then world := event_text e :: !world else program := event_text e :: !program in
+  let add e = if Rapid_runtime.Event.world_event e then world := event_text e :: !world else program := event_text e :: !program in
   let result () = List.rev_append !program ("-- the world's events --" :: List.rev !world) in
   (add, result)
 
 let machine =
   let run program ~max_steps =
     let world = new_world () and o = !setting.s_options in
-    match M.start ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled ~world ~observe:true
+    let host = (Rapid_run.Run.setup ~controller:world ()).host in
+    match M.start ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled ~host ~observe:true
             program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok cfg ->
@@ -138,7 +139,7 @@ let closure =
     let add, events = streams () in
     let world = new_world () and o = !setting.s_options in
     match Rapid_closure.Closure_engine.run ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled
-            ~fuel:max_steps ~observe:true ~world ~on_event:add
+            ~fuel:max_steps ~observe:true ~host:(Rapid_run.Run.setup ~controller:world ()).host ~on_event:add
             program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok r ->

@@ -52,8 +52,8 @@ val with_run_options : io:Rapid_controller.Io_config.t -> Fuzz_case.options -> (
 (** [f ()] with {!machine} and {!closure} running in a world of [io] with the case's limits and
     options (max time, memory, call depth, stubs); afterwards as before. *)
 
-val event_text : Rapid_semantics.Machine.event -> string
-val outcome_text : Rapid_semantics.Machine.outcome -> string
+val event_text : Rapid_runtime.Event.t -> string
+val outcome_text : Rapid_runtime.Outcome.t -> string
 (** An event and an outcome as {!observed} holds them. *)
 
 val note_rule : string -> unit

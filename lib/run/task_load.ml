@@ -21,14 +21,6 @@ type task = {
 
 type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
 
-(* The value of a module data object before the run, when the program knows it: a literal
-   (Initial_values computed it) or its type's initial value. *)
-let initial_value (program : Ir.program) j =
-  match program.globals.(j).g_init with
-  | Init_expr { e = Literal v; _ } -> Some v
-  | Init_default shape -> Some (Value.default_of shape)
-  | Init_expr _ -> None
-
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
 (* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
@@ -73,7 +65,7 @@ let share_persistents ~link (programs : Ir.program array) (tasks : (int * string
                     | Value.Array es, n when n > 0 ->
                         Array.length es :: (if Array.length es > 0 then sizes es.(0) (n - 1) else [])
                     | _ -> [] in
-                  let type_text = match initial_value program j with
+                  let type_text = match Task_rules.initial_value program j with
                     | Some v when ndims > 0 ->
                         type_name ^ "{" ^ String.concat ", " (List.map string_of_int (sizes v ndims)) ^ "}"
                     | _ -> type_name in

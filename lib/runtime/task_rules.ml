@@ -61,3 +61,9 @@ let entry_routine (program : Ir.program) entry =
       if r.kind <> Procedure || Array.length r.parameters > 0 then
         Error (Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" entry)
       else Ok i
+
+let initial_value (program : Ir.program) j =
+  match program.globals.(j).g_init with
+  | Init_expr { e = Literal v; _ } -> Some v
+  | Init_default shape -> Some (Value.default_of shape)
+  | Init_expr _ -> None

@@ -41,3 +41,8 @@ val entry_routine : Ir.program -> string -> (int, string) result
 (** The entry routine of this name (letter case aside): the first routine so named, which must
     be a procedure without parameters (§9.1); [Error] says why there is none, in the words both
     engines give. *)
+
+val initial_value : Ir.program -> int -> Value.t option
+(** The value module data object [j] has before the run, when the program knows it: a literal
+    (computed by {!Initial_values}) or its type's initial value; [None] for an expression left to
+    the run (a placeholder, an unknown name), which fails when the task starts. *)

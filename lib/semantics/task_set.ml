@@ -17,7 +17,7 @@ type t = {
   mutable ended : M.outcome option;     (* a deadlock or the time limit of the whole run *)
   clock : Host.t;                       (* the first task's: the clock is everyone's *)
   links : Task_rules.link list;         (* the shared data objects *)
-  limits : M.limits;                    (* each task's: its share of the run's memory budget *)
+  limits : Limits.t;                    (* each task's: its share of the run's memory budget *)
 }
 
 let start ?limits ?(stub_unmodelled = false) ?(observe = false) ?seed (tasks : Task_rules.task list)

@@ -27,7 +27,7 @@ val next : t -> (string * Machine.config) option
 (** The task whose turn it is (its name and machine), which {!step} steps next; [None] when the
     run is over. Choosing a task may move the clock (every task waited). *)
 
-val step : t -> (string * string * Machine.event list) option
+val step : t -> (string * string * Event.t list) option
 (** One reduction step of the task whose turn it is: its name, the rule, the events. [None]
     when the run is over (every task ended, or {!outcome} says why not). *)
 

@@ -55,11 +55,11 @@ let place s (r : Ir.routine) region =
 
 let show_pointer s =
   match M.outcome s.cfg with
-  | M.Running -> s.out (place s (M.current_routine s.cfg) (M.focus_region s.cfg))
+  | Outcome.Running -> s.out (place s (M.current_routine s.cfg) (M.focus_region s.cfg))
   | _ -> ()
 
 let outcome_text = function
-  | M.Running -> "running"
+  | Outcome.Running -> "running"
   | Ended -> "the task ended"
   | Stopped { name; at; about; _ } ->
       Printf.sprintf "%s: execution error: %s%s: the system error handler stopped the task"
@@ -71,7 +71,7 @@ let outcome_text = function
 
 let show_events s events =
   List.iter (function
-      | M.Output line -> s.out ("tp> " ^ Text_format.display line)
+      | Event.Output line -> s.out ("tp> " ^ Text_format.display line)
       | Log line -> s.out ("log> " ^ Text_format.display line)
       | Event_log (Err_log { id; kind; arguments }) ->
           s.out (Printf.sprintf "log> %s %d: %s" kind id (String.concat " | " (List.map Text_format.display arguments)))
@@ -94,8 +94,8 @@ let visible s = not (s.hidden (M.current_routine s.cfg).module_name)
 let run_until s stop =
   let rec go first =
     match M.outcome s.cfg with
-    | M.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
-    | M.Running ->
+    | Outcome.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
+    | Outcome.Running ->
         if (not first) && M.pointer_statement s.cfg <> None && visible s && stop () then ()
         else begin
           let rule, events = M.step s.cfg in
@@ -103,7 +103,7 @@ let run_until s stop =
           (* What happens to errors inside NOSTEPIN code is not shown (§9.4): the user sees them
              when they reach the user level, at the call (§7.3, R-7.3-o). What it writes is. *)
           let events = if visible s then events
-            else List.filter (function M.Error_raised _ | M.Error_handled _ -> false | _ -> true) events in
+            else List.filter (function Event.Error_raised _ | Event.Error_handled _ -> false | _ -> true) events in
           show_events s events;
           go false
         end
@@ -152,7 +152,7 @@ let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data 
 
 let running s =
   match M.outcome s.cfg with
-  | M.Running -> true
+  | Outcome.Running -> true
   | o -> s.out ("the task is not running: " ^ outcome_text o); false
 
 (* A breakpoint's file names a file of the task as given or by its base name: one test, for the

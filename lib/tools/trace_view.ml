@@ -178,7 +178,7 @@ type change =
   | Routine_entered of string
   | Routine_left of string
   | Task_ended
-  | Controller_event of M.event
+  | Controller_event of Event.t
 
 type step = {
   number : int;
@@ -314,7 +314,7 @@ let statement_state t cfg =
       if now = text_with ~limit:100 t (statement_region s) [] then None else Some now
   | _ -> None
 
-let event_change (e : M.event) =
+let event_change (e : Event.t) =
   match e with
   | Output s -> Output s
   | Erase -> Erase
@@ -399,7 +399,7 @@ let after t (b : before) cfg (rule, events) =
   let statement = match b.focus with Statement s -> Some s | _ -> None in
   (* An interrupt is served where the program pointer is (ch. 8): the step says which, and
      which trap runs, rather than the frame it was served at. *)
-  let redex, result = match rule, List.find_map (function M.Trap_entered { number; trap; _ } -> Some (number, trap) | _ -> None) events with
+  let redex, result = match rule, List.find_map (function Event.Trap_entered { number; trap; _ } -> Some (number, trap) | _ -> None) events with
     | "interrupt-serve", Some (number, trap) ->
         (Printf.sprintf "interrupt %d" number, Some ("the trap " ^ trap ^ " runs"))
     | _ -> (b.b_redex, result) in

@@ -24,7 +24,7 @@ type change =
   | Routine_entered of string
   | Routine_left of string
   | Task_ended
-  | Controller_event of Machine.event
+  | Controller_event of Event.t
       (** what the controller around the program did (a signal changed, an interrupt occurred,
           a trap entered or left, a routine stubbed) and the motion: as [Machine.step] said it *)
 
@@ -57,7 +57,7 @@ type before
 
 val before : t -> Machine.config -> before
 
-val after : t -> before -> Machine.config -> string * Machine.event list -> step
+val after : t -> before -> Machine.config -> string * Event.t list -> step
 (** The step, from the view before it, the configuration after it and what [Machine.step]
     answered. *)
 
