@@ -16,7 +16,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     match input with
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg _ ->
     let echo = script <> None in
     let parsed = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
     let ident (i : Rapid_syntax.Ast.identifier) = match i.it with Ident n -> String.lowercase_ascii n | ID_placeholder -> "" in

@@ -528,13 +528,14 @@ let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry
   let history = if history then Some (snd retry_limit) else None in
   in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   let retry_limit, max_memory = retry_limit in
-  match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
+  let w = Rapid_run.Run.setup ~controller:world ~motion () in
+  match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~host:w.host ~stub_unmodelled
           ~observe loaded.program ~entry with
   | Error m ->
       if json = Some true then
         List.iter (fun j -> print_endline (Json_text.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-  | Ok cfg -> k cfg
+  | Ok cfg -> k cfg w
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
    controller (signals, stimulus, clock, services, robot) as the machine's. *)
@@ -542,13 +543,14 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
     controller print_event =
   in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   if json then print_endline (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
-  let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
+  let limits = { Rapid_runtime.Limits.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
   let on_event e = (match e with Rapid_runtime.Event.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
   let data = ref [] in
   let module_data = Option.map (fun _ d -> data := d) save in
   match Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-          ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
+          ~observe:json ~on_event ~host:(Rapid_run.Run.setup ~controller:world ~motion ()).host ?module_data
+          loaded.program ~entry with
   | Error m ->
       if json then print_endline (Json_text.to_string (refused_entry_json files entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -595,7 +597,7 @@ let prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) cont
   let io = with_inferred_signals (allow_unknown, stub_unmodelled) (List.concat_map snd tasks) io in
   let specs = List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
-      { Rapid_semantics.Task_set.name; files; entry }) tasks in
+      { Rapid_run.Task_load.name; files; entry }) tasks in
   let world = Rapid_controller.World.create ~statement_time:controller.statement_time
       ~max_time:controller.max_time ~epoch:controller.epoch io in
   let motion = Rapid_installed.Motion_routines.create ~robot ?history () in
@@ -603,7 +605,7 @@ let prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) cont
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok () -> start ~io ~world ~motion specs names
 
-let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
+let refused_tasks ~json (failure : Rapid_run.Task_load.failure) =
   match failure with
   | Load (name, f) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
   | Refused m -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
@@ -614,12 +616,12 @@ let start_tasks ?(history = false) ~tasks ~entries ~seed ~motion_task ~json (all
   prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot
   @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
-  match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
-          ~observe:json ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.machine_tasks ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled
+          ~allow_unknown ~io ~observe:json ?seed ?motion_task ~controller:world ~motion specs with
   | Error f -> refused_tasks ~json f
-  | Ok (ts, warnings) ->
-      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
-      k ts names
+  | Ok (ts, loaded) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      k ts names loaded
 
 (* The event object of a run of several tasks: its task's name second. *)
 let with_task name = function
@@ -640,11 +642,11 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
     (retry_limit, max_memory) controller robot =
   prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
   let module CT = Rapid_closure.Closure_tasks in
-  match CT.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
-          ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.closure_tasks ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled
+          ~allow_unknown ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error f -> refused_tasks ~json f
-  | Ok (ct, warnings) ->
-      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+  | Ok (ct, loaded) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       let on_event name (e : Rapid_runtime.Event.t) =
@@ -667,30 +669,32 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
   start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth
-    retry_limit controller robot @@ fun ts names ->
+    retry_limit controller robot @@ fun ts names loaded ->
       if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       (* --samples: the motion task's robot, as the one clock passes the samples; each
          tcp-sample names the motion task. *)
-      let robot_task = List.find_opt (fun (_, cfg) -> Rapid_controller.World.motion_task (M.world cfg)) (TS.tasks ts) in
+      let robot_task = Option.map (fun (t : Rapid_run.Task_load.task) ->
+          (t.rules.name, List.assoc t.rules.name (TS.tasks ts), Rapid_run.Run.task_world t)) (Rapid_run.Run.motion_task loaded) in
       let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
       let print_samples l =
-        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
+        Option.iter (fun (name, _, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
           | None -> ()
           | Some (name, _, events) ->
               report_stubbed events;
-              Option.iter (fun s -> Option.iter (fun (_, cfg) ->
-                  print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
+              Option.iter (fun s -> Option.iter (fun (_, _, (w : Rapid_run.Run.world)) ->
+                  print_samples (Motion_cmd.samples s w.motion ~until:((TS.clock ts).now ()))) robot_task) sampler;
               List.iter (fun (e : Rapid_runtime.Event.t) ->
                   if json then print_line (Json_text.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
       loop ();
-      Option.iter (fun s -> Option.iter (fun (_, cfg) -> print_samples (Motion_cmd.final_samples s cfg)) robot_task) sampler;
+      Option.iter (fun s -> Option.iter (fun (_, cfg, w) -> print_samples (Motion_cmd.final_samples s cfg w)) robot_task)
+        sampler;
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
@@ -766,7 +770,7 @@ let run_cmd =
       run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth
-      retry_limit controller @@ fun cfg ->
+      retry_limit controller @@ fun cfg w ->
     if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -775,8 +779,8 @@ let run_cmd =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
         report_stubbed events;
-        Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
-                                               ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
+        Option.iter (fun s -> print_samples (Motion_cmd.samples s w.motion
+                                               ~until:(Rapid_controller.World.now w.controller))) sampler;
         List.iter (fun (e : Rapid_runtime.Event.t) ->
             if json then print_line (Json_text.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
@@ -784,7 +788,7 @@ let run_cmd =
       end
     in
     loop ();
-    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
+    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg w)) sampler;
     if json then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
                                                       (M.outcome cfg) (M.steps cfg)));
     flush_output ();
@@ -843,7 +847,7 @@ let controller_text (e : Rapid_runtime.Event.t) =
       Some (Printf.sprintf "%.6f s: interrupt %d discarded (%s)" time number reason)
   | Trap_entered { time; number; trap } -> Some (Printf.sprintf "%.6f s: trap %s serves interrupt %d" time trap number)
   | Trap_left { time; trap } -> Some (Printf.sprintf "%.6f s: trap %s left" time trap)
-  | Motion m -> Some (Rapid_installed.Motion_routines.event_to_string m)
+  | Motion m -> Some (Rapid_observable.Motion_event.to_string m)
   | _ -> None
 
 (* An entry of the event log other than ErrWrite's (§7.5), as the debugger shows it. *)
@@ -1018,7 +1022,7 @@ let trace_cmd =
         let st = TV.after view before cfg answer in
         (* The robot sampled is [single]'s: the one task's, or with several the motion task's. *)
         let samples () = match sampler, single with
-          | Some s, Some robot -> Motion_cmd.samples s (M.motion robot) ~until:(Rapid_controller.World.now (M.world robot))
+          | Some s, Some (_, (w : Rapid_run.Run.world)) -> Motion_cmd.samples s w.motion ~until:(Rapid_controller.World.now w.controller)
           | _ -> [] in
         (match level with
          | `Reduction -> reduction_step task st region kind stack samples
@@ -1030,7 +1034,8 @@ let trace_cmd =
     in
     loop ();
     flush ();
-    Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
+    Option.iter (fun s -> Option.iter (fun (cfg, w) ->
+        List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg w)) single) sampler;
     let outcome = outcome () and steps = steps () in
     if format = `Jsonl then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
@@ -1044,10 +1049,10 @@ let trace_cmd =
         start_tasks ~history:(samples <> None && format = `Jsonl) ~tasks ~entries ~seed:schedule ~motion_task
           ~json:false
           allow_unknown max_depth retry_limit controller robot
-        @@ fun ts _ ->
+        @@ fun ts _ loaded ->
         (* --samples: the motion task's robot. *)
-        let robot_task = List.find_map (fun (_, cfg) -> if Rapid_controller.World.motion_task (M.world cfg) then Some cfg else None)
-            (TS.tasks ts) in
+        let robot_task = Option.map (fun (t : Rapid_run.Task_load.task) ->
+            (List.assoc t.rules.name (TS.tasks ts), Rapid_run.Run.task_world t)) (Rapid_run.Run.motion_task loaded) in
         body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
           ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
           ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:robot_task
@@ -1056,9 +1061,10 @@ let trace_cmd =
     else
       single_task files entries schedule motion_task @@ fun entry ->
       start_machine ~history:(samples <> None && format = `Jsonl) ?robot files entry allow_unknown max_depth retry_limit
-        controller @@ fun cfg ->
+        controller @@ fun cfg w ->
       body ~next:(fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None)
-        ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg) ~single:(Some cfg)
+        ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg)
+        ~single:(Some (cfg, w))
         ~entry_at:(fun () -> entry_region (M.program cfg) entry)
   in
   let doc = "print the reductions of a run one by one, or the statements it executes" in

@@ -6,9 +6,11 @@
    than the observations must be the same, at every point where a budget runs out. *)
 
 open Rapid_syntax
+open Rapid_runtime
+open Rapid_load
 open Rapid_semantics
 module M = Machine
-module C = Closure_engine
+module C = Rapid_closure.Closure_engine
 
 let load name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
@@ -46,7 +48,7 @@ let decisions () =
   PROC main() ENDPROC
 ENDMODULE
 |rapid} in
-  let direct name = Closure_call.direct (routine p name) (values (routine p name)) <> None in
+  let direct name = Rapid_closure.Closure_call.direct (routine p name) (values (routine p name)) <> None in
   Alcotest.(check bool) "in parameters" true (direct "plain");
   Alcotest.(check bool) "no parameters" true (direct "p_none");
   Alcotest.(check bool) "a VAR parameter" false (direct "p_var");
@@ -58,9 +60,9 @@ ENDMODULE
   Alcotest.(check bool) "an installed routine" false (direct "abs");
   let plain = routine p "plain" in
   Alcotest.(check bool) "an absent argument" false
-    (Closure_call.direct plain [| Ir.Absent; Ir.Absent |] <> None);
+    (Rapid_closure.Closure_call.direct plain [| Ir.Absent; Ir.Absent |] <> None);
   Alcotest.(check bool) "a data reference for an in parameter" true
-    (Closure_call.direct plain [| Ir.By_reference (Whole (Global 0), Ref_variable);
+    (Rapid_closure.Closure_call.direct plain [| Ir.By_reference (Whole (Global 0), Ref_variable);
                                   Ir.By_reference (Whole (Global 0), Ref_variable) |] <> None)
 
 let outcome_text = function
@@ -77,7 +79,7 @@ let unobserved = List.filter (function Rapid_runtime.Event.Observed _ -> false |
 (* The three runs agree; the outcome of the direct path is returned. *)
 let same ?limits ?fuel program entry =
   let run ~all_events ~observe =
-    match C.events ?limits ?fuel ~all_events ~observe program ~entry with
+    match C.events ~host:(Rapid_run.Run.setup ()).host ?limits ?fuel ~all_events ~observe program ~entry with
     | Error m -> Alcotest.fail m
     | Ok (events, r) -> (unobserved events, outcome_text r.outcome, r.fuel_used) in
   let g_events, g_outcome, g_fuel = run ~all_events:true ~observe:true in

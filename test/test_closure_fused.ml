@@ -25,7 +25,7 @@ let with_machine ?case ?(lines = 12) () =
 let at_every_fuel ?case () =
   let program = Test_closure_call.load "guards" (text ?case ()) in
   Alcotest.(check string) "the whole run" "ended" (Test_closure_call.same program "main");
-  let used = match Rapid_closure.Closure_engine.run ~all_events:false program ~entry:"main" with
+  let used = match Rapid_closure.Closure_engine.run ~host:(Rapid_run.Run.setup ()).host ~all_events:false program ~entry:"main" with
     | Ok r -> r.fuel_used
     | Error m -> Alcotest.fail m in
   for fuel = 1 to used do ignore (Test_closure_call.same ~fuel program "main") done
@@ -84,7 +84,7 @@ ENDMODULE
   Alcotest.(check (list string)) "output" [ "fib(16)=987"; "ticks>0=TRUE" ] output;
   let program = Test_closure_call.load "trapfib" text in
   Alcotest.(check string) "the whole run" "ended" (Test_closure_call.same program "main");
-  let used = match Rapid_closure.Closure_engine.run ~all_events:false program ~entry:"main" with
+  let used = match Rapid_closure.Closure_engine.run ~host:(Rapid_run.Run.setup ()).host ~all_events:false program ~entry:"main" with
     | Ok r -> r.fuel_used
     | Error m -> Alcotest.fail m in
   let fuel = ref 1 in

@@ -27,7 +27,7 @@ let documented_backward_rules () =
 let started ?(entry = "main") files =
   match Rapid_load.Session.load files with
   | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
-  | Ok loaded -> (match M.start loaded.program ~entry with Error m -> Alcotest.fail m | Ok cfg -> cfg)
+  | Ok loaded -> (match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry with Error m -> Alcotest.fail m | Ok cfg -> cfg)
 
 (* A session of FILEs fed the lines of a script; its transcript and rules. *)
 let session ?entry files lines =

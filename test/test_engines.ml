@@ -35,7 +35,7 @@ let event_text (e : Rapid_runtime.Event.t) =
       Printf.sprintf "%.6f interrupt %d discarded: %s" time number reason
   | Trap_entered { trap; number; time } -> Printf.sprintf "%.6f trap entered %s %d" time trap number
   | Trap_left { trap; time } -> Printf.sprintf "%.6f trap left %s" time trap
-  | Motion m -> "motion " ^ Rapid_installed.Motion_routines.event_to_string m
+  | Motion m -> "motion " ^ Rapid_observable.Motion_event.to_string m
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
   | Event_log Skip_warning -> "skipwarn"
@@ -82,7 +82,7 @@ let with_world (case : Rapid_conformance.Spec_case.t) f =
 
 let machine_run ?stub_unmodelled ?world limits program ~entry ~max_steps =
   (* Observed: the store writes, arguments and returned values of schema rapid-sem/2 too. *)
-  match M.start ?stub_unmodelled ?world ~observe:true ~limits program ~entry with
+  match M.start ~host:(Rapid_run.Run.setup ?controller:world ()).host ?stub_unmodelled ~observe:true ~limits program ~entry with
   | Error m -> Alcotest.failf "machine: %s" m
   | Ok cfg ->
       let events = ref [] in
@@ -92,7 +92,7 @@ let machine_run ?stub_unmodelled ?world limits program ~entry ~max_steps =
       (List.rev !events, M.outcome cfg)
 
 let closure_run ?stub_unmodelled ?world limits program ~entry ~fuel =
-  match C.events ?stub_unmodelled ?world ~observe:true ~limits ~fuel program ~entry with
+  match C.events ~host:(Rapid_run.Run.setup ?controller:world ()).host ?stub_unmodelled ~observe:true ~limits ~fuel program ~entry with
   | Error m -> Alcotest.failf "closure engine: %s" m
   | Ok (events, r) -> (events, r.outcome)
 
@@ -136,7 +136,7 @@ let compare_case path () =
       Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
       (* Making only the output events (as rapid-sem run does) changes nothing else. *)
       (match with_world case (fun world ->
-           C.events ~stub_unmodelled ~world ~limits ~fuel:budget ~all_events:false program ~entry:run.entry) with
+           C.events ~host:(Rapid_run.Run.setup ~controller:world ()).host ~stub_unmodelled ~limits ~fuel:budget ~all_events:false program ~entry:run.entry) with
        | Ok (quiet, r) ->
            let outputs = List.filter (function Rapid_runtime.Event.Output _ | Rapid_runtime.Event.Erase | Rapid_runtime.Event.Log _ -> true | _ -> false) in
            Alcotest.(check (list string)) "output-only events" (List.map event_text (outputs c_events))
@@ -201,12 +201,11 @@ let specs_of (run : Rapid_conformance.Spec_case.run) =
   List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
         | Some (_, r) -> r | None -> run.entry in
-      { TS.name; files; entry }) run.tasks
+      { Rapid_run.Task_load.name; files; entry }) run.tasks
 
-(* [None] when the tasks are refused (both engines load them alike: Closure_tasks.start is
-   Task_set.start). *)
+(* [None] when the tasks are refused (both engines load them alike: Task_load). *)
 let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
-  match TS.start ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.machine_tasks ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error _ -> None
   | Ok (ts, _) ->
       let events = ref [] in
@@ -221,7 +220,7 @@ let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~m
              task_outcomes = List.map (fun (n, cfg) -> (n, TS.task_outcome ts cfg)) (TS.tasks ts) }
 
 let closure_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
-  match CT.start ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.closure_tasks ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error _ -> None
   | Ok (ct, _) ->
       let events = ref [] in
@@ -312,8 +311,8 @@ let random_tasks () =
     output_string oc text; close_out oc; path in
   let compared = ref 0 and ended = ref 0 in
   let agree_on (a, b, seed) =
-    let specs = [ { TS.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
-                  { TS.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
+    let specs = [ { Rapid_run.Task_load.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
+                  { Rapid_run.Task_load.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
     let run engine =
       let world = Rapid_controller.World.create ~statement_time:0.001 Rapid_controller.Io_config.empty in
       engine ?seed ~stub_unmodelled:false ~allow_unknown:false ~max_steps:1_000_000 ~io:Rapid_controller.Io_config.empty
@@ -924,7 +923,7 @@ ENDMODULE
 |rapid} in
   List.iter (fun (entry, line) ->
       let expected = Printf.sprintf "stopped ERR_OUTOFBND 1020 idx.mod:%d:5 (%s)" line entry in
-      (match C.events program ~entry with
+      (match C.events ~host:(Rapid_run.Run.setup ()).host program ~entry with
        | Error m -> Alcotest.fail m
        | Ok (_, r) -> Alcotest.(check string) ("closure " ^ entry) expected (outcome_text r.outcome));
       (* The machine agrees since its integers have no bound of their own (R-3.6). *)
@@ -949,7 +948,7 @@ let deep_recursion () =
 let native_stack () =
   let program = load_text "unbounded" (recursion 100_000_000) in
   let limits = { Rapid_runtime.Limits.default with max_call_depth = max_int } in
-  match C.run ~limits program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~limits program ~entry:"main" with
   | Error m -> Alcotest.fail m
   | Ok { outcome = Resource_exhausted (m, _); _ } ->
       Alcotest.(check bool) ("the reason names the native stack: " ^ m) true
@@ -960,12 +959,12 @@ let native_stack () =
 let fuel () =
   let program = load_text "fuel"
       "MODULE fuel\n  PROC p()\n  ENDPROC\n  PROC main()\n    VAR num i;\n    WHILE i < 3 DO\n      i := i + 1;\n      p;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n" in
-  (match C.run program ~entry:"main" with
+  (match C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
    | Ok { outcome = Ended; fuel_used } ->
        (* the WHILE statement, 4 tests of its condition, 3 x (2 statements and 1 routine) *)
        Alcotest.(check int) "fuel used" 14 fuel_used
    | _ -> Alcotest.fail "the program did not end");
-  match C.run ~fuel:13 program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~fuel:13 program ~entry:"main" with
   | Ok { outcome = Running; _ } -> ()
   | _ -> Alcotest.fail "13 units of fuel do not suffice"
 
@@ -992,8 +991,8 @@ ENDMODULE
 
 let no_entry () =
   let program = load_text "entry" "MODULE e\n  PROC p(num x)\n  ENDPROC\nENDMODULE\n" in
-  Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run program ~entry:"main"));
-  Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run program ~entry:"p"))
+  Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"main"));
+  Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"p"))
 
 (* Random programs (gen_programs.ml): the engines agree on each. *)
 let random_programs () =

@@ -827,7 +827,7 @@ let programs_run () =
         | Ok loaded -> (
             incr checked;
             let limits = { Rapid_runtime.Limits.default with max_memory = 1_000_000 } in
-            match M.start ~limits loaded.program ~entry:"main" with
+            match M.start ~host:(Rapid_run.Run.setup ()).host ~limits loaded.program ~entry:"main" with
             | Error e -> Alcotest.failf "cannot start: %s\n%s" e text
             | Ok cfg ->
                 (try
@@ -855,7 +855,7 @@ let recursion_through_handlers () =
       match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the program does not pass the check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               Gc.compact ();

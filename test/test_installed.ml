@@ -53,7 +53,7 @@ let stubbed_record_result () =
   | Error _ -> Alcotest.fail "does not load"
   | Ok loaded -> (
       let module M = Rapid_semantics.Machine in
-      match M.start ~stub_unmodelled:true loaded.program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ()).host ~stub_unmodelled:true loaded.program ~entry:"main" with
       | Error e -> Alcotest.fail e
       | Ok cfg ->
           let out = ref [] and stubbed = ref [] in

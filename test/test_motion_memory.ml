@@ -20,6 +20,9 @@ let loop ~moves ~zone ~speed ~p2 =
 ENDMODULE
 |} p2 (moves / 2) speed zone speed zone
 
+(* The robot of the run [start] made last. *)
+let last_motion = ref None
+
 let start ?history text =
   let f = Filename.temp_file "memloop" ".mod" in
   let oc = open_out_bin f in
@@ -29,14 +32,15 @@ let start ?history text =
   | Ok loaded -> (
       Sys.remove f;
       let world = Rapid_controller.World.create ~statement_time:0. ~max_time:1e9 Rapid_controller.Io_config.empty in
-      match M.start ~world ~motion:(MP.create ?history ()) loaded.program ~entry:"main" with
+      let motion = MP.create ?history () in
+      match M.start ~host:(Rapid_run.Run.setup ~controller:world ~motion ()).host loaded.program ~entry:"main" with
       | Error m -> Alcotest.fail m
-      | Ok cfg -> cfg)
+      | Ok cfg -> last_motion := Some motion; cfg)
 
 (* Steps until [n] moves are planned or the run ends; the events are not kept. *)
 let run_until cfg planned n =
   while M.outcome cfg = Rapid_runtime.Outcome.Running && !planned < n do
-    List.iter (function Rapid_runtime.Event.Motion (MP.Segment_planned _) -> incr planned | _ -> ()) (snd (M.step cfg))
+    List.iter (function Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned _) -> incr planned | _ -> ()) (snd (M.step cfg))
   done
 
 let live_words () = Gc.full_major (); (Gc.stat ()).live_words
@@ -78,7 +82,7 @@ let history_budget () =
   run_until cfg (ref 0) max_int;
   Alcotest.(check bool) "within the budget, the run ends" true (M.outcome cfg = Rapid_runtime.Outcome.Ended);
   (* The history is there: the path's pieces from the first move on. *)
-  let segments = MM.Planner.segments (MP.planner (M.motion cfg)) in
+  let segments = MM.Planner.segments (MP.planner (Option.get !last_motion)) in
   Alcotest.(check int) "every segment kept" 1001 (List.length segments)
 
 (* Forgetting changes no answer from the present on: a planner that forgets at every plan answers

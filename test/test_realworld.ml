@@ -97,7 +97,7 @@ let run_polishing ~stub_unmodelled =
   match Rapid_load.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
   | Error _ -> Alcotest.fail "the polishing cell does not load"
   | Ok loaded -> (
-      match M.start ~stub_unmodelled loaded.program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ()).host ~stub_unmodelled loaded.program ~entry:"main" with
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           let stubbed = ref [] in

@@ -30,7 +30,7 @@ let load name m =
 
 (* Runs main; the output lines, or a failure unless the task ends. *)
 let run ?(max_steps = 20_000_000) name program =
-  match M.start program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
   | Error m -> Alcotest.failf "%s: cannot run: %s" name m
   | Ok cfg ->
       let output = ref [] in
@@ -296,7 +296,7 @@ let answer text =
           true
       | Error (Front_end _ | Internal _) -> QCheck.Test.fail_report "refused by the front end"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error m -> QCheck.Test.fail_reportf "cannot start: %s" m
           | Ok cfg -> (
               match

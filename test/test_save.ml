@@ -34,7 +34,7 @@ let load text =
       | Error _ -> Error "the module does not load"
       | Ok loaded -> (
           let world = Rapid_controller.World.create Rapid_controller.Io_config.empty in
-          match M.start ~world loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host loaded.program ~entry:"main" with
           | Error e -> Error e
           | Ok cfg -> Ok (m, M.module_data cfg)))
 

@@ -54,7 +54,7 @@ let rules_in_spec () =
             let limits = { Rapid_runtime.Limits.default with
                            retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
             let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-            match M.start ~limits ~world ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
+            match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host ~limits ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
             | Ok cfg ->
                 let max = Option.value run.max_steps ~default:1_000_000 in
                 while M.outcome cfg = Running && M.steps cfg < max do
@@ -67,8 +67,9 @@ let rules_in_spec () =
           let module TS = Rapid_semantics.Task_set in
           let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time
               Rapid_controller.Io_config.empty in
-          let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
-          match TS.start ?seed:run.schedule ~world ~motion:(Rapid_installed.Motion_routines.create ()) specs with
+          let specs = List.map (fun (name, files) -> { Rapid_run.Task_load.name; files; entry = run.entry }) run.tasks in
+          match Rapid_run.Run.machine_tasks ?seed:run.schedule ~controller:world
+                  ~motion:(Rapid_installed.Motion_routines.create ()) specs with
           | Error _ -> ()
           | Ok (ts, _) ->
               let rec loop n = if n > 0 then match TS.step ts with
@@ -97,7 +98,7 @@ let long_routine () =
       match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the long routine does not check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               let out = ref [] in
@@ -114,7 +115,7 @@ let machine_of text =
       match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the program does not check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
 
 (* The rules of the steps from the [from]th on, up to [count] of them. *)
 let rules_of cfg ~skip ~count =

@@ -205,7 +205,7 @@ let run_with services text =
       | Ok loaded -> (
           let world = Rapid_controller.World.create Rapid_controller.Io_config.empty in
           Rapid_controller.World.set_services world services;
-          match M.start ~world loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               let out = ref [] in

@@ -23,13 +23,13 @@ let allocated f =
   Gc.allocated_bytes () -. before
 
 let closure program () =
-  match C.run ~limits ~all_events:false program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~limits ~all_events:false program ~entry:"main" with
   | Ok { outcome = Ended; _ } -> ()
   | Ok { outcome; _ } -> Alcotest.failf "closure: %s" (Test_engines.outcome_text outcome)
   | Error m -> Alcotest.fail m
 
 let machine program () =
-  match M.start ~limits program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host ~limits program ~entry:"main" with
   | Error m -> Alcotest.fail m
   | Ok cfg ->
       while M.outcome cfg = Running do ignore (M.step cfg) done;
@@ -68,12 +68,12 @@ let waits_spend_fuel () =
                                 \    TPWrite \"end\";\n  ENDPROC\nENDMODULE\n" body in
       let program = Test_engines.load_text "w" text in
       let world () = Rapid_controller.World.create ~max_time:2000. Rapid_controller.Io_config.empty in
-      (match C.run ~world:(world ()) ~fuel:200 ~all_events:false program ~entry:"main" with
+      (match C.run ~host:(Rapid_run.Run.setup ~controller:(world ()) ()).host ~fuel:200 ~all_events:false program ~entry:"main" with
        | Ok { outcome = Running; fuel_used } ->
            Alcotest.(check bool) "within the fuel" true (fuel_used <= 200)
        | Ok { outcome; _ } -> Alcotest.failf "closure, %s: %s" body (Test_engines.outcome_text outcome)
        | Error m -> Alcotest.fail m);
-      match M.start ~world:(world ()) program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ~controller:(world ()) ()).host program ~entry:"main" with
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           while M.outcome cfg = Running && M.steps cfg < 200 do ignore (M.step cfg) done;

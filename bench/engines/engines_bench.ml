@@ -42,7 +42,7 @@ let load text =
   | Error _ -> failwith "the benchmark program does not check"
 
 let machine program =
-  match M.start program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
   | Error m -> failwith m
   | Ok cfg ->
       let out = ref [] in
@@ -53,7 +53,7 @@ let machine program =
 
 let closure ?all_events program =
   let out = ref [] in
-  match C.run ?all_events ~on_event:(function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ?all_events ~on_event:(function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
   | Error m -> failwith m
   | Ok r -> (String.concat "" !out, r.fuel_used)
 

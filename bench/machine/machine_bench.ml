@@ -42,7 +42,7 @@ let child index =
   | Error _ -> failwith "the benchmark program does not check"
   | Ok loaded ->
       let limits = { Rapid_runtime.Limits.default with max_call_depth = max depth Rapid_runtime.Limits.default.max_call_depth } in
-      let cfg = match M.start ~limits loaded.program ~entry:"main" with Ok c -> c | Error m -> failwith m in
+      let cfg = match M.start ~host:(Rapid_run.Run.setup ()).host ~limits loaded.program ~entry:"main" with Ok c -> c | Error m -> failwith m in
       let t0 = Unix.gettimeofday () in
       while M.outcome cfg = Running do ignore (M.step cfg) done;
       let t = Unix.gettimeofday () -. t0 in

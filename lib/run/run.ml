@@ -50,3 +50,24 @@ module Closure = struct
 end
 
 let engine = function `Machine -> (module Machine : ENGINE) | `Closure -> (module Closure : ENGINE)
+
+let started start loaded =
+  match loaded with
+  | Error f -> Error f
+  | Ok (l : Task_load.loaded) -> (
+      match start (List.map (fun (t : Task_load.task) -> t.rules) l.tasks) l.links with
+      | Error m -> Error (Task_load.Refused m)
+      | Ok t -> Ok (t, l))
+
+let machine_tasks ?limits ?stub_unmodelled ?allow_unknown ?observe ?io ?seed ?motion_task ~controller ~motion specs =
+  started (Rapid_semantics.Task_set.start ?limits ?stub_unmodelled ?observe ?seed)
+    (Task_load.load ?allow_unknown ?io ?motion_task ~world:controller ~motion specs)
+
+let closure_tasks ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ~controller ~motion specs =
+  started (Rapid_closure.Closure_tasks.start ?limits ?stub_unmodelled ?seed)
+    (Task_load.load ?allow_unknown ?io ?motion_task ~world:controller ~motion specs)
+
+let motion_task (l : Task_load.loaded) =
+  List.find_opt (fun (t : Task_load.task) -> Rapid_controller.World.motion_task t.world) l.tasks
+
+let task_world (t : Task_load.task) = { controller = t.world; motion = t.motion; host = t.rules.host }

@@ -39,3 +39,26 @@ module Machine : ENGINE
 module Closure : ENGINE
 
 val engine : [ `Machine | `Closure ] -> (module ENGINE)
+
+(** {1 Several tasks (ch. 14)} *)
+
+val machine_tasks :
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
+  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
+  (Rapid_semantics.Task_set.t * Task_load.loaded, Task_load.failure) Stdlib.result
+(** The tasks loaded ({!Task_load.load}) and started as machines ({!Rapid_semantics.Task_set});
+    a task that cannot start is [Refused]. *)
+
+val closure_tasks :
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
+  (Rapid_closure.Closure_tasks.t * Task_load.loaded, Task_load.failure) Stdlib.result
+(** The same tasks for the closure engine ({!Rapid_closure.Closure_tasks}). *)
+
+val motion_task : Task_load.loaded -> Task_load.task option
+(** The task that has the robot. *)
+
+val task_world : Task_load.task -> world
+(** A task's world. *)
