@@ -23,6 +23,7 @@ type task = {
   program : Ir.program;
   entry : string;
   host : Host.t;
+  entry_taken : bool;                      (* its start took its first statement's time *)
   mutable globals : Value.t array;         (* its module data, once initialised *)
   mutable links : (int * int) list;        (* a slot of [globals] and the shared object it is *)
   mutable reply : reply option;
@@ -69,8 +70,19 @@ let start ?limits ?stub_unmodelled ?seed (loaded : Task_rules.task list) (links 
   match loaded with
   | [] -> Error "no task to run"
   | first :: _ ->
+      (* Each task's start takes its first statement's time on the one clock, in the order of
+         the tasks, as the machine's start settles into it: when the entry routine's data has no
+         initial value to compute and its body a statement (doc/semantics.md, "Settling"). *)
+      let take_entry (l : Task_rules.task) =
+        match Task_rules.entry_routine l.program l.entry with
+        | Error _ -> false
+        | Ok k ->
+            let r = l.program.routines.(k) in
+            let quiet = List.for_all (function (_, Ir.Init_default _) -> true | _ -> false) r.local_inits in
+            if quiet && Array.length r.body.body > 0 then (l.host.statement (); true) else false in
       let tasks = Array.of_list (List.map (fun (l : Task_rules.task) ->
-          { name = l.name; program = l.program; entry = l.entry; host = l.host;
+          let entry_taken = take_entry l in
+          { name = l.name; program = l.program; entry = l.entry; host = l.host; entry_taken;
             globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
             finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) loaded) in
       let objects = Hashtbl.create 64 in
@@ -175,7 +187,7 @@ let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event ()
     else
       let cooperation = {
         C.share = (fun globals -> task.globals <- globals; take_over t task);
-        entered = false;
+        entered = not task.entry_taken;
         turn = (fun () -> hand_over t task Boundary);
         yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
         native_budget = thread_budget () } in

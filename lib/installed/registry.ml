@@ -23,11 +23,14 @@ let create world motion = { world; motion; entries = Hashtbl.create 64 }
 
 let same = Rapid_typing.Types.same_name
 
+(* WaitTime and WaitUntil with \InPos are the motion's (R-8-n), without it the controller's;
+   ErrWrite's entry goes to the controller's event log, then to Basic_routines' log line. *)
 let claimants world name =
   let task = Task_routines.modelled name
              || ((not (W.motion_task world)) && List.exists (same name) Task_routines.motion_instructions) in
+  let motion = Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil" in
   List.filter_map (fun (claims, c) -> if claims then Some c else None)
-    [ (task, Task); (Motion_routines.modelled name, Motion); (Io_routines.modelled name, Io);
+    [ (task, Task); (motion, Motion); (Io_routines.modelled name || same name "ErrWrite", Io);
       (Service_routines.modelled name, Service); (Basic_routines.modelled name, Basic) ]
 
 let modelled name =
@@ -37,8 +40,8 @@ let modelled name =
 (* The routines that reach the world: the clock, signals, interrupts, services, other tasks.
    ErrWrite's entry goes to the world's event log too (IError, R-8-l). *)
 let reach_of claimants name : IR.reach =
-  if List.mem Motion claimants then Moves
-  else if List.exists (fun c -> c <> Basic) claimants || same name "ErrWrite" then World
+  if Motion_routines.modelled name then Moves
+  else if List.exists (fun c -> c <> Basic) claimants then World
   else Values
 
 let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) : IR.result =
