@@ -4,7 +4,7 @@
    the static semantics are first made one kind of item, so that every format carries the same
    fields: file, region, class, rule, sections, message, hint. *)
 
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Rapid_syntax
 module Report = Rapid_typing.Report
 

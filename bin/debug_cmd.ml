@@ -2,7 +2,7 @@
    input or from a script file. *)
 
 open Cmdliner
-module D = Rapid_semantics.Debugger
+module D = Rapid_tools.Debugger
 
 let cmd ~start_machine ~finish ~common_run_args ~controller_args =
   let robot_arg = Motion_cmd.robot_arg in
@@ -16,7 +16,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     match input with
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg _ ->
     let echo = script <> None in
     let parsed = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
     let ident (i : Rapid_syntax.Ast.identifier) = match i.it with Ident n -> String.lowercase_ascii n | ID_placeholder -> "" in
@@ -32,7 +32,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
             | Procedure_declaration { name; body; _ } | Function_declaration { name; body; _ }
             | Trap_declaration { name; body; _ } -> named name body
             | Routine_comment _ | RDN_placeholder -> ()) m.routine_declarations) parsed;
-    let routine_data (r : Rapid_semantics.Ir.routine) =
+    let routine_data (r : Rapid_runtime.Ir.routine) =
       Option.value ~default:[]
         (Hashtbl.find_opt data_names (String.lowercase_ascii r.module_name, String.lowercase_ascii r.name)) in
     (* §9.2, §9.4: the modules stepping does not enter, from their attributes. *)
@@ -40,7 +40,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
         if List.exists (fun (a : Rapid_syntax.Ast.module_attribute) ->
             match a.it with NOSTEPIN | NOVIEW -> true | _ -> false) m.attributes
         then [ ident m.module_name ] else []) parsed in
-    let type_of = Rapid_semantics.Debug_types.type_of parsed in
+    let type_of = Rapid_tools.Debug_types.type_of parsed in
     let files = List.map (fun f -> if f = "-" then Rapid_syntax.Parse.stdin_name else f) files in
     let session = D.create ~max_steps ~routine_data ~type_of ~files
         ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
@@ -60,7 +60,7 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     flush stdout;
     let cfg = D.config session in
     match Rapid_semantics.Machine.outcome cfg with
-    | Rapid_semantics.Machine.Running -> 0
+    | Rapid_runtime.Outcome.Running -> 0
     | o -> finish o (Rapid_semantics.Machine.steps cfg) ~max_steps
   in
   let doc = "step through a task as on the FlexPendant: forward, backward (ch. 6), by statement" in

@@ -2,7 +2,7 @@
    (doc/user-guide.md): 0 success, 2 a static error (lexical, syntax, fatal), 1 a failing
    conformance suite, 125 an internal error of rapid-sem. *)
 
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Cmdliner
 open Rapid_syntax
 
@@ -95,7 +95,7 @@ let epoch_conv =
           let days = (era * 146097) + doe - 719468 in
           Ok (float_of_int ((days * 86400) + (hh * 3600) + (mm * 60) + ss)))
     with _ -> Error (`Msg "expected YYYY-MM-DDTHH:MM:SS") in
-  let print ppf t = let y, m, d, hh, mm, ss, _ = Rapid_semantics.Io_primitives.date_time t in
+  let print ppf t = let y, m, d, hh, mm, ss, _ = Rapid_installed.Io_routines.date_time t in
     Format.fprintf ppf "%04d-%02d-%02dT%02d:%02d:%02d" y m d hh mm ss in
   Arg.conv (parse, print)
 
@@ -223,7 +223,7 @@ let check_cmd =
       exit_static_error
     end
     else
-      match Rapid_semantics.Session.installed ~io () with
+      match Rapid_load.Session.installed ~io () with
       | Error d ->
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
@@ -237,7 +237,7 @@ let check_cmd =
                 Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
               let reports =
                 if Rapid_typing.Check.errors result <> [] then result.reports
-                else match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+                else match Rapid_load.Session.lower ~io ~installed ~modules result with
                   | Ok _ -> result.reports
                   | Error initial_value_errors -> result.reports @ initial_value_errors in
               (name, modules, result, reports)) parsed in
@@ -245,10 +245,10 @@ let check_cmd =
           (* ch. 14: the buffers together, once each is sound on its own. *)
           let across =
             if tasks = [] || List.exists (fun (_, _, _, reports) -> List.exists is_error reports) checked then []
-            else Rapid_semantics.Task_check.shared_persistents
+            else Rapid_load.Task_check.shared_persistents
                 (List.map (fun (name, modules, (result : Rapid_typing.Check.result), _) ->
-                     { Rapid_semantics.Task_check.name; modules; elaboration = result.elaboration }) checked) in
-          let reports = List.map (Rapid_semantics.Session.at_io_place io)
+                     { Rapid_load.Task_check.name; modules; elaboration = result.elaboration }) checked) in
+          let reports = List.map (Rapid_load.Session.at_io_place io)
               (List.concat_map (fun (_, _, _, reports) -> reports) checked @ across) in
           print (List.map Check_output.of_report reports);
           (* JSON and SARIF carry the warnings themselves: the summary is for people. *)
@@ -292,13 +292,13 @@ let report_load_failure ?(json = false) failure =
   if json then Option.iter (fun j -> List.iter (fun l -> print_endline (Json_text.to_string l)) j)
       (Verdict.stream_of_failure failure);
   match failure with
-  | Rapid_semantics.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
+  | Rapid_load.Session.Front_end ds -> List.iter (fun d -> prerr_endline (Diagnostic.to_string d)) ds; exit_static_error
   | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
 
 (* JSON text is UTF-8: RAPID strings and names are bytes, read as Latin-1 where they are not
    UTF-8 (doc/trace-format.md). *)
-let text s = `String (Rapid_semantics.Utf8_text.of_bytes s)
+let text s = `String (Rapid_runtime.Utf8_text.of_bytes s)
 
 let region_json r =
   let p = Source.start r and q = Source.stop r in
@@ -313,12 +313,12 @@ let time_json t = `Intlit (Printf.sprintf "%.6f" t)
    value ERRNO takes (schema rapid-sem/2). *)
 let error_in_flight = ref 0
 
-let note_error (e : M.event) =
+let note_error (e : Rapid_runtime.Event.t) =
   match e with
   | Error_raised { number; _ } | Observed (Propagated { number; _ }) -> error_in_flight := number
   | _ -> ()
 
-let event_json (e : M.event) : Yojson.Safe.t =
+let event_json (e : Rapid_runtime.Event.t) : Yojson.Safe.t =
   match e with
   | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
   | Erase -> `Assoc [ ("event", `String "erase") ]
@@ -370,9 +370,9 @@ let refused_entry_json files entry : Yojson.Safe.t =
 
 (* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
    place both engines know; R-4.12-m); an end no source place explains has [null]. *)
-let entry_region (program : Rapid_semantics.Ir.program) entry =
+let entry_region (program : Rapid_runtime.Ir.program) entry =
   let lower = String.lowercase_ascii entry in
-  Array.fold_left (fun found (r : Rapid_semantics.Ir.routine) ->
+  Array.fold_left (fun found (r : Rapid_runtime.Ir.routine) ->
       match found with
       | Some _ -> found
       | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
@@ -410,7 +410,7 @@ let chain_text chain =
     let item (n, k) = ((if k = 1 then n else Printf.sprintf "%s x%d" n k), k) in
     String.concat " <- " (bound_items (List.map item runs))
 
-let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
+let outcome_json ?entry_at (o : Rapid_runtime.Outcome.t) steps : Yojson.Safe.t =
   let nowhere = ("at", `Null) in
   let base kind extra =
     let extra = if List.mem_assoc "at" extra then extra else extra @ [ nowhere ] in
@@ -431,7 +431,7 @@ let outcome_json ?entry_at (o : M.outcome) steps : Yojson.Safe.t =
   | Stuck m -> base "stuck" [ ("reason", text m) ]
   | Deadlock m -> base "deadlock" [ ("reason", text m) ]
 
-let finish (o : M.outcome) steps ~max_steps =
+let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
   match o with
   | Ended -> exit_ok
   | Stopped { name; at; chain; about; _ } ->
@@ -465,9 +465,9 @@ let common_run_args =
   let entry = Arg.(value & opt string "main" & info [ "entry" ] ~docv:"NAME" ~doc:"The entry routine (default main).") in
   let max_steps = Arg.(value & opt (count ~what:"--max-steps") 100_000_000 & info [ "max-steps" ] ~docv:"N" ~doc:"Stop after N reduction steps (exit status 3).") in
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Names neither declared nor installed are warnings; reaching one is an execution error.") in
-  let max_depth = Arg.(value & opt (count ~what:"--max-call-depth") M.default_limits.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
-  let retry_limit = Arg.(value & opt (count ~what:"--retry-limit") M.default_limits.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
-  let max_memory = Arg.(value & opt (count ~what:"--max-memory") M.default_limits.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
+  let max_depth = Arg.(value & opt (count ~what:"--max-call-depth") Rapid_runtime.Limits.default.max_call_depth & info [ "max-call-depth" ] ~docv:"N" ~doc:"The deepest call chain (resource exhaustion beyond).") in
+  let retry_limit = Arg.(value & opt (count ~what:"--retry-limit") Rapid_runtime.Limits.default.retry_limit & info [ "retry-limit" ] ~docv:"N" ~doc:"\"No Of Retry\": RETRYs of one error before ERR_EXCRTYMAX (§7.1).") in
+  let max_memory = Arg.(value & opt (count ~what:"--max-memory") Rapid_runtime.Limits.default.max_memory & info [ "max-memory" ] ~docv:"BYTES" ~doc:"The memory budget of RAPID data (default 256 MiB; doc/user-guide.md): data beyond it ends the run with exit status 3.") in
   let stub = Arg.(value & flag & info [ "stub-unmodelled" ] ~doc:"Run an installed routine whose behaviour rapid-sem does not model as a no-op (a function returns its type's initial value; VAR and INOUT arguments are left as they are), with one warning per routine, instead of ending the run with exit status 4.") in
   (files, entry, max_steps, Term.(const (fun a b -> (a, b)) $ allow_unknown $ stub), max_depth,
    Term.(const (fun r m -> (r, m)) $ retry_limit $ max_memory))
@@ -481,7 +481,7 @@ let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
 (* --stub-unmodelled: each stubbed routine once, at its first call. *)
 let report_stubbed events =
   List.iter (function
-      | M.Stubbed { routine; at } ->
+      | Rapid_runtime.Event.Stubbed { routine; at } ->
           Printf.eprintf "%s: warning: %s is not modelled; --stub-unmodelled ran it as a no-op\n%!"
             (Source.to_string at) routine
       | _ -> ()) events
@@ -492,7 +492,7 @@ let with_inferred_signals (allow_unknown, stub_unmodelled) files io =
   if not (allow_unknown && stub_unmodelled) then io
   else
     let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
-    let io, added = Rapid_semantics.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
+    let io, added = Rapid_load.Signal_inference.for_run ~allow_unknown ~stub_unmodelled modules io in
     List.iter (fun (s : Rapid_controller.Io_config.signal) ->
         Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n%!" s.name
           (Rapid_controller.Io_config.type_name s.kind)) added;
@@ -508,14 +508,14 @@ let in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) c
   if controller.statement_time < 0. || controller.max_time < 0. then
     (prerr_endline "rapid-sem: --statement-time and --max-time are not negative"; exit_static_error)
   else
-  match Rapid_semantics.Session.load ~allow_unknown ~io files with
+  match Rapid_load.Session.load ~allow_unknown ~io files with
   | Error f -> report_load_failure ?json f
   | Ok loaded ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       Option.iter prerr_endline loaded.unknown_summary;
       let world = Rapid_controller.World.create ~statement_time:controller.statement_time
           ~max_time:controller.max_time ~epoch:controller.epoch io in
-      let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
+      let motion = Rapid_installed.Motion_routines.create ~robot ?history () in
       match Services_args.install controller.services world with
       | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
       | Ok () -> k loaded world motion
@@ -528,13 +528,14 @@ let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry
   let history = if history then Some (snd retry_limit) else None in
   in_controller ?json ?robot ?history files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   let retry_limit, max_memory = retry_limit in
-  match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~world ~stub_unmodelled ~motion
+  let w = Rapid_run.Run.setup ~controller:world ~motion () in
+  match M.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~host:w.host ~stub_unmodelled
           ~observe loaded.program ~entry with
   | Error m ->
       if json = Some true then
         List.iter (fun j -> print_endline (Json_text.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
-  | Ok cfg -> k cfg
+  | Ok cfg -> k cfg w
 
 (* rapid-sem run --engine closure: the same events and outcome by the closure engine, in the same
    controller (signals, stimulus, clock, services, robot) as the machine's. *)
@@ -542,13 +543,14 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
     controller print_event =
   in_controller ~json ?robot files (allow_unknown, stub_unmodelled) controller @@ fun loaded world motion ->
   if json then print_endline (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
-  let limits = { M.max_call_depth = max_depth; retry_limit; max_memory } in
+  let limits = { Rapid_runtime.Limits.max_call_depth = max_depth; retry_limit; max_memory } in
   let stubbed = ref [] in
-  let on_event e = (match e with M.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
+  let on_event e = (match e with Rapid_runtime.Event.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); print_event e in
   let data = ref [] in
   let module_data = Option.map (fun _ d -> data := d) save in
-  match Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
-          ~observe:json ~on_event ~world ~motion ?module_data loaded.program ~entry with
+  match Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled ~all_events:(json || stub_unmodelled)
+          ~observe:json ~on_event ~host:(Rapid_run.Run.setup ~controller:world ~motion ()).host ?module_data
+          loaded.program ~entry with
   | Error m ->
       if json then print_endline (Json_text.to_string (refused_entry_json files entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
@@ -561,7 +563,7 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
         | None -> Ok []
         | Some dir ->
             flush_output ();
-            Rapid_semantics.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
+            Rapid_run.Persistent_save.save_modules ~dir ~files:(List.filter (( <> ) "-") files) !data in
       match saved with
       | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
       | Ok _ -> finish outcome fuel_used ~max_steps
@@ -595,15 +597,15 @@ let prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) cont
   let io = with_inferred_signals (allow_unknown, stub_unmodelled) (List.concat_map snd tasks) io in
   let specs = List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
-      { Rapid_semantics.Task_set.name; files; entry }) tasks in
+      { Rapid_run.Task_load.name; files; entry }) tasks in
   let world = Rapid_controller.World.create ~statement_time:controller.statement_time
       ~max_time:controller.max_time ~epoch:controller.epoch io in
-  let motion = Rapid_semantics.Motion_primitives.create ~robot ?history () in
+  let motion = Rapid_installed.Motion_routines.create ~robot ?history () in
   match Services_args.install controller.services world with
   | Error m -> Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok () -> start ~io ~world ~motion specs names
 
-let refused_tasks ~json (failure : Rapid_semantics.Task_set.failure) =
+let refused_tasks ~json (failure : Rapid_run.Task_load.failure) =
   match failure with
   | Load (name, f) -> Printf.eprintf "rapid-sem: task %s is refused:\n%!" name; report_load_failure ~json f
   | Refused m -> prerr_endline ("rapid-sem: " ^ m); exit_static_error
@@ -614,12 +616,12 @@ let start_tasks ?(history = false) ~tasks ~entries ~seed ~motion_task ~json (all
   prepare_tasks ?history ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot
   @@ fun ~io ~world ~motion specs names ->
   let module TS = Rapid_semantics.Task_set in
-  match TS.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
-          ~observe:json ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.machine_tasks ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled
+          ~allow_unknown ~io ~observe:json ?seed ?motion_task ~controller:world ~motion specs with
   | Error f -> refused_tasks ~json f
-  | Ok (ts, warnings) ->
-      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
-      k ts names
+  | Ok (ts, loaded) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
+      k ts names loaded
 
 (* The event object of a run of several tasks: its task's name second. *)
 let with_task name = function
@@ -639,15 +641,15 @@ let task_ends ts =
 let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow_unknown, stub_unmodelled) max_depth
     (retry_limit, max_memory) controller robot =
   prepare_tasks ~tasks ~entries (allow_unknown, stub_unmodelled) controller robot @@ fun ~io ~world ~motion specs names ->
-  let module CT = Rapid_semantics.Closure_tasks in
-  match CT.start ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled ~allow_unknown ~io
-          ?seed ?motion_task ~world ~motion specs with
+  let module CT = Rapid_closure.Closure_tasks in
+  match Rapid_run.Run.closure_tasks ~limits:{ max_call_depth = max_depth; retry_limit; max_memory } ~stub_unmodelled
+          ~allow_unknown ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error f -> refused_tasks ~json f
-  | Ok (ct, warnings) ->
-      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) warnings;
+  | Ok (ct, loaded) ->
+      List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
-      let on_event name (e : M.event) =
+      let on_event name (e : Rapid_runtime.Event.t) =
         report_stubbed [ e ];
         if json then print_line (Json_text.to_string (with_task name (event_json e)))
         else match e with Output s -> print_line s | _ -> () in
@@ -667,30 +669,32 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
 let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot =
   let module TS = Rapid_semantics.Task_set in
   start_tasks ~history:(samples <> None && json) ~tasks ~entries ~seed ~motion_task ~json allow_unknown max_depth
-    retry_limit controller robot @@ fun ts names ->
+    retry_limit controller robot @@ fun ts names loaded ->
       if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema);
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       (* --samples: the motion task's robot, as the one clock passes the samples; each
          tcp-sample names the motion task. *)
-      let robot_task = List.find_opt (fun (_, cfg) -> Rapid_controller.World.motion_task (M.world cfg)) (TS.tasks ts) in
+      let robot_task = Option.map (fun (t : Rapid_run.Task_load.task) ->
+          (t.rules.name, List.assoc t.rules.name (TS.tasks ts), Rapid_run.Run.task_world t)) (Rapid_run.Run.motion_task loaded) in
       let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
       let print_samples l =
-        Option.iter (fun (name, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
+        Option.iter (fun (name, _, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
           | None -> ()
           | Some (name, _, events) ->
               report_stubbed events;
-              Option.iter (fun s -> Option.iter (fun (_, cfg) ->
-                  print_samples (Motion_cmd.samples s (M.motion cfg) ~until:(Rapid_controller.World.now (TS.world ts)))) robot_task) sampler;
-              List.iter (fun (e : M.event) ->
+              Option.iter (fun s -> Option.iter (fun (_, _, (w : Rapid_run.Run.world)) ->
+                  print_samples (Motion_cmd.samples s w.motion ~until:((TS.clock ts).now ()))) robot_task) sampler;
+              List.iter (fun (e : Rapid_runtime.Event.t) ->
                   if json then print_line (Json_text.to_string (with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
       loop ();
-      Option.iter (fun s -> Option.iter (fun (_, cfg) -> print_samples (Motion_cmd.final_samples s cfg)) robot_task) sampler;
+      Option.iter (fun s -> Option.iter (fun (_, cfg, w) -> print_samples (Motion_cmd.final_samples s cfg w)) robot_task)
+        sampler;
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
@@ -749,7 +753,7 @@ let run_cmd =
       run_tasks ?samples ~tasks ~entries ~seed:schedule ~motion_task ~json ~max_steps allow_unknown max_depth retry_limit controller robot
     end
     else let saved_files = List.filter (( <> ) "-") files in
-    match Option.map (fun dir -> Rapid_semantics.Persistent_save.check ~dir ~files:saved_files) save with
+    match Option.map (fun dir -> Rapid_run.Persistent_save.check ~dir ~files:saved_files) save with
     | Some (Error m) -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
     | _ ->
     (* A module read from standard input has no file to write back: say so rather than drop it. *)
@@ -757,16 +761,16 @@ let run_cmd =
       prerr_endline "rapid-sem: --save: warning: the module read from standard input (-) is not saved: \
                      it has no file to write back to";
     single_task files entries schedule motion_task @@ fun entry ->
-    let print_event (e : M.event) =
+    let print_event (e : Rapid_runtime.Event.t) =
       if json then print_line (Json_text.to_string (event_json e))
-      else match e with Output s -> print_line (Rapid_semantics.Format.display s) | _ -> () in
+      else match e with Output s -> print_line (Rapid_runtime.Text_format.display s) | _ -> () in
     if engine = `Closure && samples <> None then
       (prerr_endline "rapid-sem: --samples runs on the machine only: use --engine machine"; exit_static_error)
     else if engine = `Closure then
       run_closure ?robot ?save files entry max_steps allow_unknown max_depth retry_limit json controller print_event else
     match Motion_cmd.check_samples samples with Error m -> prerr_endline m; exit_static_error | Ok () ->
     start_machine ~json ~observe:json ~history:(samples <> None && json) ?robot files entry allow_unknown max_depth
-      retry_limit controller @@ fun cfg ->
+      retry_limit controller @@ fun cfg w ->
     if json then print_line (Json_text.to_string (`Assoc [ ("event", `String "start"); ("schema", `String schema) ]));
     (* --samples: TCP samples as the clock passes them (JSON only). *)
     let sampler = match samples with Some hz when json -> Some (Motion_cmd.sampler hz) | _ -> None in
@@ -775,23 +779,23 @@ let run_cmd =
       if M.outcome cfg = Running && M.steps cfg < max_steps then begin
         let _, events = M.step cfg in
         report_stubbed events;
-        Option.iter (fun s -> print_samples (Motion_cmd.samples s (M.motion cfg)
-                                               ~until:(Rapid_controller.World.now (M.world cfg)))) sampler;
-        List.iter (fun (e : M.event) ->
+        Option.iter (fun s -> print_samples (Motion_cmd.samples s w.motion
+                                               ~until:(Rapid_controller.World.now w.controller))) sampler;
+        List.iter (fun (e : Rapid_runtime.Event.t) ->
             if json then print_line (Json_text.to_string (event_json e))
             else match e with Output s -> print_line s | _ -> ()) events;
         loop ()
       end
     in
     loop ();
-    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg)) sampler;
+    Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg w)) sampler;
     if json then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
                                                       (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     let saved = match save with
       | None -> Ok []
       | Some dir ->
-          Rapid_semantics.Persistent_save.save_modules ~dir
+          Rapid_run.Persistent_save.save_modules ~dir
             ~files:(List.filter (( <> ) "-") files) (M.module_data cfg) in
     match saved with
     | Error m -> Printf.eprintf "rapid-sem: --save: %s\n%!" m; exit_static_error
@@ -809,7 +813,7 @@ let run_cmd =
     Term.(const run $ tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json $ controller_args
           $ Motion_cmd.robot_arg $ Motion_cmd.samples_arg $ save $ engine)
 
-module TV = Rapid_semantics.Trace_view
+module TV = Rapid_tools.Trace_view
 
 let write_json (w : TV.change) =
   match w with
@@ -818,7 +822,7 @@ let write_json (w : TV.change) =
 
 (* The changes other than writes, as the events of run --json, with two more kinds. *)
 let change_json (c : TV.change) : Yojson.Safe.t option =
-  let ev (e : M.event) = Some (event_json e) in
+  let ev (e : Rapid_runtime.Event.t) = Some (event_json e) in
   match c with
   | Write _ -> None
   | Output s -> ev (Output s)
@@ -835,7 +839,7 @@ let change_json (c : TV.change) : Yojson.Safe.t option =
   | Controller_event e -> ev e
 
 (* What the controller and the motion did, as the human trace writes it after "~ ". *)
-let controller_text (e : M.event) =
+let controller_text (e : Rapid_runtime.Event.t) =
   match e with
   | Controller (Signal_changed { time; signal; value }) -> Some (Printf.sprintf "%.6f s: %s = %g" time signal value)
   | Controller (Interrupt_occurred { time; number }) -> Some (Printf.sprintf "%.6f s: interrupt %d occurred" time number)
@@ -843,11 +847,11 @@ let controller_text (e : M.event) =
       Some (Printf.sprintf "%.6f s: interrupt %d discarded (%s)" time number reason)
   | Trap_entered { time; number; trap } -> Some (Printf.sprintf "%.6f s: trap %s serves interrupt %d" time trap number)
   | Trap_left { time; trap } -> Some (Printf.sprintf "%.6f s: trap %s left" time trap)
-  | Motion m -> Some (Rapid_semantics.Motion_primitives.event_to_string m)
+  | Motion m -> Some (Rapid_observable.Motion_event.to_string m)
   | _ -> None
 
 (* An entry of the event log other than ErrWrite's (§7.5), as the debugger shows it. *)
-let event_log_text : Rapid_semantics.Primitive.log_entry -> string = function
+let event_log_text : Rapid_installed.Primitive.log_entry -> string = function
   | Err_log { id; kind; arguments } -> Printf.sprintf "%s %d: %s" kind id (String.concat " | " arguments)
   | Skip_warning -> "SkipWarn"
 
@@ -918,7 +922,7 @@ let trace_cmd =
        nested statement printed (the store of [x := f(y)] after f's statements) continues its
        statement on a line of its own. *)
     (* A line is a statement's, or, before a routine's first statement, its routine data's. *)
-    let module Ir = Rapid_semantics.Ir in
+    let module Ir = Rapid_runtime.Ir in
     let line : (int * Ir.routine * Ir.stmt option * int * TV.change list) option ref = ref None in
     (* With several tasks: the task of the line being built; a step of another task ends it. *)
     let line_task : string option ref = ref None in
@@ -939,8 +943,8 @@ let trace_cmd =
                 let shown = List.filter_map change_text changes in
                 let place = match !line_task with Some t -> t ^ " " ^ place | None -> place in
                 print_line @@ Printf.sprintf "%s%s%s%s%s" place (String.make (max 2 (20 - String.length place)) ' ')
-                  (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_semantics.Format.display text)
-                  (if shown = [] then "" else "   " ^ Rapid_semantics.Format.display (String.concat "; " shown))
+                  (String.make (2 * min 10 (depth - 1)) ' ') (Rapid_runtime.Text_format.display text)
+                  (if shown = [] then "" else "   " ^ Rapid_runtime.Text_format.display (String.concat "; " shown))
             | `Jsonl ->
                 json (`Assoc ((match !line_task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                     ("statement", `String place);
@@ -986,12 +990,12 @@ let trace_cmd =
               | Some s when Some s <> !last_state -> last_state := st.state; "   | " ^ s
               | Some _ -> ""
               | None -> last_state := None; "" in
-            let step = Rapid_semantics.Format.display step and state = Rapid_semantics.Format.display state in
+            let step = Rapid_runtime.Text_format.display step and state = Rapid_runtime.Text_format.display state in
             let number = match task with Some t -> Printf.sprintf "%s %d" t st.number | None -> Printf.sprintf "%6d" st.number in
             if state = "" then print_line (Printf.sprintf "%s %-22s %-24s %s" number st.rule (Source.to_string st.at) step)
             else print_line (Printf.sprintf "%s %-22s %-24s %-44s%s" number st.rule (Source.to_string st.at) step state);
             List.iter (fun c -> match change_line c with
-                | Some l -> print_line ("       " ^ Rapid_semantics.Format.display l) | None -> ()) st.changes
+                | Some l -> print_line ("       " ^ Rapid_runtime.Text_format.display l) | None -> ()) st.changes
         | `Jsonl ->
             json (`Assoc ((match task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                 ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);
@@ -1018,7 +1022,7 @@ let trace_cmd =
         let st = TV.after view before cfg answer in
         (* The robot sampled is [single]'s: the one task's, or with several the motion task's. *)
         let samples () = match sampler, single with
-          | Some s, Some robot -> Motion_cmd.samples s (M.motion robot) ~until:(Rapid_controller.World.now (M.world robot))
+          | Some s, Some (_, (w : Rapid_run.Run.world)) -> Motion_cmd.samples s w.motion ~until:(Rapid_controller.World.now w.controller)
           | _ -> [] in
         (match level with
          | `Reduction -> reduction_step task st region kind stack samples
@@ -1030,7 +1034,8 @@ let trace_cmd =
     in
     loop ();
     flush ();
-    Option.iter (fun s -> Option.iter (fun cfg -> List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg)) single) sampler;
+    Option.iter (fun s -> Option.iter (fun (cfg, w) ->
+        List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg w)) single) sampler;
     let outcome = outcome () and steps = steps () in
     if format = `Jsonl then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
@@ -1044,10 +1049,10 @@ let trace_cmd =
         start_tasks ~history:(samples <> None && format = `Jsonl) ~tasks ~entries ~seed:schedule ~motion_task
           ~json:false
           allow_unknown max_depth retry_limit controller robot
-        @@ fun ts _ ->
+        @@ fun ts _ loaded ->
         (* --samples: the motion task's robot. *)
-        let robot_task = List.find_map (fun (_, cfg) -> if Rapid_controller.World.motion_task (M.world cfg) then Some cfg else None)
-            (TS.tasks ts) in
+        let robot_task = Option.map (fun (t : Rapid_run.Task_load.task) ->
+            (List.assoc t.rules.name (TS.tasks ts), Rapid_run.Run.task_world t)) (Rapid_run.Run.motion_task loaded) in
         body ~next:(fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None)
           ~do_step:(fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []))
           ~outcome:(fun () -> TS.outcome ts) ~steps:(fun () -> TS.steps ts) ~single:robot_task
@@ -1056,9 +1061,10 @@ let trace_cmd =
     else
       single_task files entries schedule motion_task @@ fun entry ->
       start_machine ~history:(samples <> None && format = `Jsonl) ?robot files entry allow_unknown max_depth retry_limit
-        controller @@ fun cfg ->
+        controller @@ fun cfg w ->
       body ~next:(fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None)
-        ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg) ~single:(Some cfg)
+        ~do_step:(fun () -> M.step cfg) ~outcome:(fun () -> M.outcome cfg) ~steps:(fun () -> M.steps cfg)
+        ~single:(Some (cfg, w))
         ~entry_at:(fun () -> entry_region (M.program cfg) entry)
   in
   let doc = "print the reductions of a run one by one, or the statements it executes" in

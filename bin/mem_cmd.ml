@@ -1,6 +1,6 @@
 (* rapid-sem mem: program memory by chapter 16 (doc/memory.md). *)
 
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Cmdliner
 open Rapid_syntax
 module P = Rapid_memory.Program_memory

@@ -3,7 +3,7 @@
 
 open Cmdliner
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
 let robot_arg =
@@ -51,13 +51,13 @@ let samples s motion ~until =
   List.rev !out
 
 (* At the end of a run that ended: the samples until the robot stands still. *)
-let final_samples s cfg =
-  let motion = M.motion cfg in
+let final_samples s cfg (w : Rapid_run.Run.world) =
+  let motion = w.motion in
   let stop = MM.Planner.finished_by (MP.planner motion) in
-  let now = Rapid_controller.World.now (M.world cfg) in
+  let now = Rapid_controller.World.now w.controller in
   (* Not beyond --max-time: a move of 1E30 s is planned, not sampled. *)
-  let stop = Float.min stop (Rapid_controller.World.max_time (M.world cfg)) in
-  if M.outcome cfg = M.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
+  let stop = Float.min stop (Rapid_controller.World.max_time w.controller) in
+  if M.outcome cfg = Rapid_runtime.Outcome.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
   else samples s motion ~until:now
 
 (* ------------------------------------------------------------------ rapid-sem motion *)
@@ -70,9 +70,9 @@ let write_file path text =
 
 (* The program's side of the timeline: waits (from the rule that starts a wait to the one that
    ends it), traps, signal changes. *)
-let collect cfg =
+let collect (w : Rapid_run.Run.world) =
   let marks = ref [] and wait_from = ref None and traps = ref [] in
-  let now () = Rapid_controller.World.now (M.world cfg) in
+  let now () = Rapid_controller.World.now w.controller in
   let label = ref "" in
   let observe rule events =
     let open MM.Path_output in
@@ -84,17 +84,17 @@ let collect cfg =
          | None -> ())
      | _ -> ());
     List.iter (function
-        | M.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
-        | M.Trap_left { trap; time } -> (
+        | Rapid_runtime.Event.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
+        | Rapid_runtime.Event.Trap_left { trap; time } -> (
             match !traps with
             | (name, t0) :: rest when name = trap ->
                 traps := rest; marks := { lane = Traps; m_from = t0; m_to = time; m_label = trap } :: !marks
             | _ -> ())
-        | M.Controller (Signal_changed { time; signal; value }) ->
+        | Rapid_runtime.Event.Controller (Signal_changed { time; signal; value }) ->
             marks := { lane = Signals; m_from = time; m_to = time; m_label = Printf.sprintf "%s=%g" signal value } :: !marks
-        | M.Motion (MP.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
+        | Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
         | _ -> ()) events;
-    if rule = "wait-start" && not (List.exists (function M.Motion (MP.Segment_planned _) -> true | _ -> false) events) then
+    if rule = "wait-start" && not (List.exists (function Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned _) -> true | _ -> false) events) then
       label := "wait"
   in
   (observe, fun () -> List.rev !marks)
@@ -109,17 +109,17 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
   let run files entry max_steps allow_unknown max_depth retry_limit controller robot svg timeline csv csv_step =
     if not (csv_step > 0. && csv_step <= 1000.) then (prerr_endline "rapid-sem: --csv-step takes a step above 0 and at most 1000 s"; 2)
     else
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg ->
-    let observe, marks = collect cfg in
+    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg w ->
+    let observe, marks = collect w in
     let rec loop () =
-      if M.outcome cfg = M.Running && M.steps cfg < max_steps then begin
+      if M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < max_steps then begin
         let rule, events = M.step cfg in
         observe rule events;
-        List.iter (function M.Output s -> print_endline s | _ -> ()) events;
+        List.iter (function Rapid_runtime.Event.Output s -> print_endline s | _ -> ()) events;
         loop ()
       end in
     loop ();
-    let p = MP.planner (M.motion cfg) in
+    let p = MP.planner w.motion in
     let title = String.concat " " (List.map Filename.basename files) in
     let written = List.filter_map (fun (target, text) ->
         match target with

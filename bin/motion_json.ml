@@ -1,6 +1,6 @@
 (* The motion events of a run as JSON (doc/trace-format.md, "Motion events"). *)
 
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 
 (* Virtual times to the microsecond, lengths to the micrometre, angles to the microdegree. *)
 let fixed digits x =
@@ -16,7 +16,7 @@ let pose (p : Rapid_motion_model.Geom.pose) =
   `Assoc [ ("trans", `List [ fixed 3 p.trans.x; fixed 3 p.trans.y; fixed 3 p.trans.z ]);
            ("rot", `List [ fixed 6 p.rot.q1; fixed 6 p.rot.q2; fixed 6 p.rot.q3; fixed 6 p.rot.q4 ]) ]
 
-let event (e : MP.event) : Yojson.Safe.t =
+let event (e : Rapid_observable.Motion_event.t) : Yojson.Safe.t =
   match e with
   | Segment_planned { time = t; id; instruction; label; zone; target; joints; ready_time; start_time; end_time } ->
       `Assoc [ ("event", `String "move-planned"); ("time", time t); ("move", `Int id);

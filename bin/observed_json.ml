@@ -1,4 +1,4 @@
-module O = Rapid_semantics.Observation
+module O = Rapid_runtime.Observation
 
 let event ~text (o : O.t) : Yojson.Safe.t =
   let obj kind fields = `Assoc (("event", `String kind) :: fields) in

@@ -2,7 +2,7 @@
    written as an event stream like run --json's, so that a conformance runner can ask any
    implementation the same question for cases of formats 1 and 2. *)
 
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Rapid_syntax
 
 let schema = "rapid-sem/2"
@@ -25,7 +25,7 @@ let region_json r : Yojson.Safe.t =
 let refused (d : Diagnostic.t) : Yojson.Safe.t =
   `Assoc [ ("event", `String "end"); ("outcome", `String "refused");
            ("class", `String (class_word d.error_class)); ("at", region_json d.region);
-           ("message", `String (Rapid_semantics.Utf8_text.of_bytes d.message)) ]
+           ("message", `String (Rapid_runtime.Utf8_text.of_bytes d.message)) ]
 
 let accepted : Yojson.Safe.t = `Assoc [ ("event", `String "end"); ("outcome", `String "accepted") ]
 
@@ -33,7 +33,7 @@ let first_error (reports : Rapid_typing.Report.t list) =
   List.find_opt (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports
 
 (* The stream of a task buffer refused before it runs: the first error. *)
-let stream_of_failure : Rapid_semantics.Session.failure -> Yojson.Safe.t list option = function
+let stream_of_failure : Rapid_load.Session.failure -> Yojson.Safe.t list option = function
   | Front_end (d :: _) -> Some [ start_line; refused d ]
   | Static reports -> (
       match first_error reports with
@@ -66,7 +66,7 @@ let cmd ~read_io ~io_arg =
             | Some d -> print [ start_line; refused d ]; 2
             | None -> print [ start_line; accepted ]; 0)
         | `Check -> (
-            match Rapid_semantics.Session.load ~strict ~allow_unknown ~io files with
+            match Rapid_load.Session.load ~strict ~allow_unknown ~io files with
             | Ok _ -> print [ start_line; accepted ]; 0
             | Error f -> (
                 match stream_of_failure f with

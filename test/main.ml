@@ -38,4 +38,5 @@ let () =
       Test_observation.suite;
       Test_realprog2.suite;
       Test_utf8_output.suite;
+      Test_layers.suite;
     ]

@@ -103,10 +103,10 @@ let mutation_identity () =
   match Rapid_fuzz.Fuzz_run.load (Result.get_ok (Rapid_syntax.Parse.parse_string ~name:"fuzz.mod" (with_trynext 0))) with
   | Error _ -> Alcotest.fail "the program does not load"
   | Ok loaded ->
-      let count_trynext (p : Rapid_semantics.Ir.program) =
+      let count_trynext (p : Rapid_runtime.Ir.program) =
         let n = ref 0 in
-        let rec block (b : Rapid_semantics.Ir.block) = Array.iter stmt b.body
-        and stmt (s : Rapid_semantics.Ir.stmt) = match s.s with
+        let rec block (b : Rapid_runtime.Ir.block) = Array.iter stmt b.body
+        and stmt (s : Rapid_runtime.Ir.stmt) = match s.s with
           | Trynext -> incr n
           | If (_, a, b) | Elseif (_, a, b) -> block a; block b
           | For f -> block f.loop_body
@@ -114,8 +114,8 @@ let mutation_identity () =
           | Compact_if (_, s) -> stmt s
           | Test (_, cs, d) -> Array.iter (fun (_, b) -> block b) cs; block d
           | _ -> () in
-        Array.iter (fun (r : Rapid_semantics.Ir.routine) ->
-            block r.body; Option.iter (fun (h : Rapid_semantics.Ir.error_handler) -> block h.handler) r.error) p.routines;
+        Array.iter (fun (r : Rapid_runtime.Ir.routine) ->
+            block r.body; Option.iter (fun (h : Rapid_runtime.Ir.error_handler) -> block h.handler) r.error) p.routines;
         !n in
       let before = count_trynext loaded.program in
       Alcotest.(check bool) "the program has TRYNEXT" true (before > 0);

@@ -6,9 +6,11 @@
    than the observations must be the same, at every point where a budget runs out. *)
 
 open Rapid_syntax
+open Rapid_runtime
+open Rapid_load
 open Rapid_semantics
 module M = Machine
-module C = Closure_engine
+module C = Rapid_closure.Closure_engine
 
 let load name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
@@ -46,7 +48,7 @@ let decisions () =
   PROC main() ENDPROC
 ENDMODULE
 |rapid} in
-  let direct name = Closure_call.direct (routine p name) (values (routine p name)) <> None in
+  let direct name = Rapid_closure.Closure_call.direct (routine p name) (values (routine p name)) <> None in
   Alcotest.(check bool) "in parameters" true (direct "plain");
   Alcotest.(check bool) "no parameters" true (direct "p_none");
   Alcotest.(check bool) "a VAR parameter" false (direct "p_var");
@@ -58,13 +60,13 @@ ENDMODULE
   Alcotest.(check bool) "an installed routine" false (direct "abs");
   let plain = routine p "plain" in
   Alcotest.(check bool) "an absent argument" false
-    (Closure_call.direct plain [| Ir.Absent; Ir.Absent |] <> None);
+    (Rapid_closure.Closure_call.direct plain [| Ir.Absent; Ir.Absent |] <> None);
   Alcotest.(check bool) "a data reference for an in parameter" true
-    (Closure_call.direct plain [| Ir.By_reference (Whole (Global 0), Ref_variable);
+    (Rapid_closure.Closure_call.direct plain [| Ir.By_reference (Whole (Global 0), Ref_variable);
                                   Ir.By_reference (Whole (Global 0), Ref_variable) |] <> None)
 
 let outcome_text = function
-  | M.Running -> "fuel"
+  | Rapid_runtime.Outcome.Running -> "fuel"
   | Ended -> "ended"
   | Stopped { name; at; _ } -> Printf.sprintf "stopped %s %s" name (Source.to_string at)
   | Resource_exhausted (m, _) -> "exhausted: " ^ m
@@ -72,12 +74,12 @@ let outcome_text = function
   | Deadlock m -> "deadlock: " ^ m
   | Stuck m -> "stuck: " ^ m
 
-let unobserved = List.filter (function M.Observed _ -> false | _ -> true)
+let unobserved = List.filter (function Rapid_runtime.Event.Observed _ -> false | _ -> true)
 
 (* The three runs agree; the outcome of the direct path is returned. *)
 let same ?limits ?fuel program entry =
   let run ~all_events ~observe =
-    match C.events ?limits ?fuel ~all_events ~observe program ~entry with
+    match C.events ~host:(Rapid_run.Run.setup ()).host ?limits ?fuel ~all_events ~observe program ~entry with
     | Error m -> Alcotest.fail m
     | Ok (events, r) -> (unobserved events, outcome_text r.outcome, r.fuel_used) in
   let g_events, g_outcome, g_fuel = run ~all_events:true ~observe:true in
@@ -88,7 +90,7 @@ let same ?limits ?fuel program entry =
   Alcotest.(check int) "fuel, every event" g_fuel d_fuel;
   Alcotest.(check int) "fuel, output only" g_fuel o_fuel;
   Alcotest.(check bool) "the events" true (g_events = d_events);
-  let output = List.filter (function M.Output _ | M.Erase | M.Log _ -> true | _ -> false) in
+  let output = List.filter (function Rapid_runtime.Event.Output _ | Rapid_runtime.Event.Erase | Rapid_runtime.Event.Log _ -> true | _ -> false) in
   Alcotest.(check bool) "the output" true (output g_events = o_events);
   d_outcome
 
@@ -172,7 +174,7 @@ let budgets () =
   (* The default limits: the depth of down(100000) is beyond them. *)
   let o = same p "main" in
   Alcotest.(check bool) ("call depth: " ^ o) true (contains o "call depth beyond");
-  let deep = { M.default_limits with max_call_depth = max_int } in
+  let deep = { Rapid_runtime.Limits.default with max_call_depth = max_int } in
   let o = same ~limits:deep p "main" in
   Alcotest.(check bool) ("native stack: " ^ o) true (contains o "native stack");
   Alcotest.(check string) "an error in a directly called function" "stopped ERR_FNCNORET direct.mod:56:5"
@@ -181,7 +183,7 @@ let budgets () =
   (* The memory budget: the smallest that lets down() reach the call depth of 40 is found (the
      installed data count too); below it, every budget down to one that does not hold the
      first activation, in steps that meet each place in a call. *)
-  let shallow max_memory = { M.default_limits with max_memory; max_call_depth = 40 } in
+  let shallow max_memory = { Rapid_runtime.Limits.default with max_memory; max_call_depth = 40 } in
   let deep_enough m = contains (same ~limits:(shallow m) p "main4") "call depth beyond" in
   let rec least lo hi = if lo >= hi then lo else let mid = (lo + hi) / 2 in
       if deep_enough mid then least lo mid else least (mid + 1) hi in

@@ -19,13 +19,13 @@ let with_machine ?case ?(lines = 12) () =
   let program = Test_engines.load_text "guards" (text ?case ()) in
   let events, outcome = Test_engines.agree program in
   Alcotest.(check string) "ended" "ended" (Test_engines.outcome_text outcome);
-  let output = List.filter_map (function Rapid_semantics.Machine.Output s -> Some s | _ -> None) events in
+  let output = List.filter_map (function Rapid_runtime.Event.Output s -> Some s | _ -> None) events in
   Alcotest.(check int) "every line written" lines (List.length output)
 
 let at_every_fuel ?case () =
   let program = Test_closure_call.load "guards" (text ?case ()) in
   Alcotest.(check string) "the whole run" "ended" (Test_closure_call.same program "main");
-  let used = match Rapid_semantics.Closure_engine.run ~all_events:false program ~entry:"main" with
+  let used = match Rapid_closure.Closure_engine.run ~host:(Rapid_run.Run.setup ()).host ~all_events:false program ~entry:"main" with
     | Ok r -> r.fuel_used
     | Error m -> Alcotest.fail m in
   for fuel = 1 to used do ignore (Test_closure_call.same ~fuel program "main") done
@@ -35,7 +35,7 @@ let at_every_fuel ?case () =
    are tried, in steps that meet each place in a call. *)
 let memory ?case () =
   let program = Test_closure_call.load "guards" (text ?case ()) in
-  let limits max_memory = { Rapid_semantics.Machine.default_limits with max_memory } in
+  let limits max_memory = { Rapid_runtime.Limits.default with max_memory } in
   let ends m = Test_closure_call.same ~limits:(limits m) program "main" = "ended" in
   let rec least lo hi = if lo >= hi then lo else let mid = (lo + hi) / 2 in
       if ends mid then least lo mid else least (mid + 1) hi in
@@ -80,11 +80,11 @@ let traps () =
 ENDMODULE
 |rapid} in
   let events, _ = Test_engines.agree (Test_engines.load_text "trapfib" text) in
-  let output = List.filter_map (function Rapid_semantics.Machine.Output s -> Some s | _ -> None) events in
+  let output = List.filter_map (function Rapid_runtime.Event.Output s -> Some s | _ -> None) events in
   Alcotest.(check (list string)) "output" [ "fib(16)=987"; "ticks>0=TRUE" ] output;
   let program = Test_closure_call.load "trapfib" text in
   Alcotest.(check string) "the whole run" "ended" (Test_closure_call.same program "main");
-  let used = match Rapid_semantics.Closure_engine.run ~all_events:false program ~entry:"main" with
+  let used = match Rapid_closure.Closure_engine.run ~host:(Rapid_run.Run.setup ()).host ~all_events:false program ~entry:"main" with
     | Ok r -> r.fuel_used
     | Error m -> Alcotest.fail m in
   let fuel = ref 1 in

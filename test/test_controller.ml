@@ -106,7 +106,7 @@ let delete_safe_never () =
   Alcotest.(check bool) "not due" true (match W.next_event w with Some t -> t >= 1e12 | None -> false)
 
 let wall_clock () =
-  let show t = let y, m, d, h, mi, s, wd = Rapid_semantics.Io_primitives.date_time t in
+  let show t = let y, m, d, h, mi, s, wd = Rapid_installed.Io_routines.date_time t in
     Printf.sprintf "%04d-%02d-%02d %02d:%02d:%02d %d" y m d h mi s wd in
   Alcotest.(check string) "epoch" "2024-01-01 00:00:00 1" (show W.default_epoch);
   Alcotest.(check string) "1970" "1970-01-01 00:00:00 4" (show 0.);
@@ -248,7 +248,7 @@ let installed_name_clash () =
   match parse "# the cell\nsignal di1 di\n  signal tool0 do\n" with
   | Error m -> Alcotest.fail m
   | Ok io -> (
-      match Rapid_semantics.Session.load_modules ~io [] with
+      match Rapid_load.Session.load_modules ~io [] with
       | Error (Static reports) ->
           let errors = List.filter (fun (r : Rapid_typing.Report.t) -> r.severity = Error) reports in
           Alcotest.(check (list string)) "at the stimulus line"
@@ -267,7 +267,7 @@ let many_signals () =
   let io = match parse text with Ok io -> io | Error m -> Alcotest.fail m in
   let read = Sys.time () -. t0 in
   Alcotest.(check int) "signals" n (List.length io.signals);
-  (match Rapid_semantics.Session.load_modules ~io [] with
+  (match Rapid_load.Session.load_modules ~io [] with
    | Ok _ -> () | Error _ -> Alcotest.fail "refused");
   let loaded = Sys.time () -. t0 in
   Alcotest.(check bool) (Printf.sprintf "read in %.1f s (under 5 s)" read) true (read < 5.);

@@ -4,7 +4,7 @@
    cases the golden transcripts do not show. *)
 
 module M = Rapid_semantics.Machine
-module D = Rapid_semantics.Debugger
+module D = Rapid_tools.Debugger
 
 let read_file path =
   let ic = open_in_bin path in
@@ -25,9 +25,9 @@ let documented_backward_rules () =
 
 (* The machine at the start of FILEs' entry routine; the test fails when they do not load. *)
 let started ?(entry = "main") files =
-  match Rapid_semantics.Session.load files with
+  match Rapid_load.Session.load files with
   | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
-  | Ok loaded -> (match M.start loaded.program ~entry with Error m -> Alcotest.fail m | Ok cfg -> cfg)
+  | Ok loaded -> (match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry with Error m -> Alcotest.fail m | Ok cfg -> cfg)
 
 (* A session of FILEs fed the lines of a script; its transcript and rules. *)
 let session ?entry files lines =

@@ -6,7 +6,7 @@
 
 open Rapid_syntax
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 (* Every folder of spec/: the run cases among them are compared, the controller's, the
    motion's and the services' included. *)
@@ -15,7 +15,7 @@ let folders =
   |> List.filter (fun f -> Sys.is_directory (Filename.concat "../spec" f))
   |> List.sort compare
 
-let event_text (e : M.event) =
+let event_text (e : Rapid_runtime.Event.t) =
   let region r = Source.to_string r ^ "-" ^ (let q = Source.stop r in Printf.sprintf "%d:%d" q.line q.col) in
   match e with
   | Output s -> "output " ^ s
@@ -35,16 +35,16 @@ let event_text (e : M.event) =
       Printf.sprintf "%.6f interrupt %d discarded: %s" time number reason
   | Trap_entered { trap; number; time } -> Printf.sprintf "%.6f trap entered %s %d" time trap number
   | Trap_left { trap; time } -> Printf.sprintf "%.6f trap left %s" time trap
-  | Motion m -> "motion " ^ Rapid_semantics.Motion_primitives.event_to_string m
+  | Motion m -> "motion " ^ Rapid_observable.Motion_event.to_string m
   | Event_log (Err_log { id; kind; arguments }) ->
       Printf.sprintf "errlog %d %s %s" id kind (String.concat "|" arguments)
   | Event_log Skip_warning -> "skipwarn"
-  | Observed o -> Rapid_semantics.Observation.to_string o
+  | Observed o -> Rapid_runtime.Observation.to_string o
 
 (* The outcome as the two engines must agree on it. A run cut short by the machine's step limit
    and one cut short by the closure engine's fuel are both "exhausted": what a step and a unit
    of fuel are differs. *)
-let outcome_text (o : M.outcome) =
+let outcome_text (o : Rapid_runtime.Outcome.t) =
   match o with
   | Ended -> "ended"
   | Stopped { name; number; at; chain; about } ->
@@ -63,7 +63,7 @@ let io_of (case : Rapid_conformance.Spec_case.t) =
 
 let load (case : Rapid_conformance.Spec_case.t) =
   let modules = List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) case.files in
-  match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io:(io_of case) modules with
+  match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io:(io_of case) modules with
   | Ok loaded -> Some loaded.program
   | Error _ -> None
 
@@ -82,7 +82,7 @@ let with_world (case : Rapid_conformance.Spec_case.t) f =
 
 let machine_run ?stub_unmodelled ?world limits program ~entry ~max_steps =
   (* Observed: the store writes, arguments and returned values of schema rapid-sem/2 too. *)
-  match M.start ?stub_unmodelled ?world ~observe:true ~limits program ~entry with
+  match M.start ~host:(Rapid_run.Run.setup ?controller:world ()).host ?stub_unmodelled ~observe:true ~limits program ~entry with
   | Error m -> Alcotest.failf "machine: %s" m
   | Ok cfg ->
       let events = ref [] in
@@ -92,7 +92,7 @@ let machine_run ?stub_unmodelled ?world limits program ~entry ~max_steps =
       (List.rev !events, M.outcome cfg)
 
 let closure_run ?stub_unmodelled ?world limits program ~entry ~fuel =
-  match C.events ?stub_unmodelled ?world ~observe:true ~limits ~fuel program ~entry with
+  match C.events ~host:(Rapid_run.Run.setup ?controller:world ()).host ?stub_unmodelled ~observe:true ~limits ~fuel program ~entry with
   | Error m -> Alcotest.failf "closure engine: %s" m
   | Ok (events, r) -> (events, r.outcome)
 
@@ -100,7 +100,7 @@ let closure_run ?stub_unmodelled ?world limits program ~entry ~fuel =
    errors, traps) and the world's (signal changes, interrupts, moves), which carry their virtual
    times. Between the two the engines may differ: the machine reports what the world did during
    a step before the step's own events, and a step may run on into the next statement's entry. *)
-let streams events = List.partition (fun e -> not (M.world_event e)) events
+let streams events = List.partition (fun e -> not (Rapid_runtime.Event.world_event e)) events
 
 let is_prefix a b =
   let rec prefix a b = match a, b with [], _ -> true | x :: a, y :: b -> x = y && prefix a b | _ :: _, [] -> false in
@@ -124,8 +124,8 @@ let compare_case path () =
   let case = Rapid_conformance.Spec_case.read path in
   match case.run, load case with
   | Some run, Some program ->
-      let limits = { M.default_limits with
-                     retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+      let limits = { Rapid_runtime.Limits.default with
+                     retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
       let budget = Option.value run.max_steps ~default:10_000_000 in
       let stub_unmodelled = case.stub_unmodelled in
       let m_events, m_outcome =
@@ -136,9 +136,9 @@ let compare_case path () =
       Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
       (* Making only the output events (as rapid-sem run does) changes nothing else. *)
       (match with_world case (fun world ->
-           C.events ~stub_unmodelled ~world ~limits ~fuel:budget ~all_events:false program ~entry:run.entry) with
+           C.events ~host:(Rapid_run.Run.setup ~controller:world ()).host ~stub_unmodelled ~limits ~fuel:budget ~all_events:false program ~entry:run.entry) with
        | Ok (quiet, r) ->
-           let outputs = List.filter (function M.Output _ | M.Erase | M.Log _ -> true | _ -> false) in
+           let outputs = List.filter (function Rapid_runtime.Event.Output _ | Rapid_runtime.Event.Erase | Rapid_runtime.Event.Log _ -> true | _ -> false) in
            Alcotest.(check (list string)) "output-only events" (List.map event_text (outputs c_events))
              (List.map event_text quiet);
            Alcotest.(check string) "output-only outcome" (outcome_text c_outcome) (outcome_text r.outcome)
@@ -171,12 +171,12 @@ let run_cases () =
 (* ------------------------------------------------------------------ several tasks (ch. 14) *)
 
 module TS = Rapid_semantics.Task_set
-module CT = Rapid_semantics.Closure_tasks
+module CT = Rapid_closure.Closure_tasks
 
 type tasks_run = {
-  events : (string * M.event) list;          (* each with its task, in order *)
-  outcome : M.outcome;
-  task_outcomes : (string * M.outcome) list;
+  events : (string * Rapid_runtime.Event.t) list;          (* each with its task, in order *)
+  outcome : Rapid_runtime.Outcome.t;
+  task_outcomes : (string * Rapid_runtime.Outcome.t) list;
 }
 
 (* The same controller for each engine: the case's signals, stimulus, clock and mass memory. *)
@@ -192,7 +192,7 @@ let tasks_world (run : Rapid_conformance.Spec_case.run) f =
   let robot = match run.robot with
     | Some file -> (match Rapid_motion_model.Robot.load file with Ok r -> Some r | Error _ -> Alcotest.fail file)
     | None -> None in
-  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  let motion = Rapid_installed.Motion_routines.create ?robot () in
   Fun.protect (fun () -> f ~io ~world ~motion)
     ~finally:(fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
 
@@ -201,12 +201,11 @@ let specs_of (run : Rapid_conformance.Spec_case.run) =
   List.map (fun (name, files) ->
       let entry = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
         | Some (_, r) -> r | None -> run.entry in
-      { TS.name; files; entry }) run.tasks
+      { Rapid_run.Task_load.name; files; entry }) run.tasks
 
-(* [None] when the tasks are refused (both engines load them alike: Closure_tasks.start is
-   Task_set.start). *)
+(* [None] when the tasks are refused (both engines load them alike: Task_load). *)
 let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
-  match TS.start ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.machine_tasks ~stub_unmodelled ~allow_unknown ~observe:true ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error _ -> None
   | Ok (ts, _) ->
       let events = ref [] in
@@ -221,7 +220,7 @@ let machine_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~m
              task_outcomes = List.map (fun (n, cfg) -> (n, TS.task_outcome ts cfg)) (TS.tasks ts) }
 
 let closure_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~motion ?motion_task specs =
-  match CT.start ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs with
+  match Rapid_run.Run.closure_tasks ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~controller:world ~motion specs with
   | Error _ -> None
   | Ok (ct, _) ->
       let events = ref [] in
@@ -235,7 +234,7 @@ let closure_tasks ?seed ~stub_unmodelled ~allow_unknown ~max_steps ~io ~world ~m
 let tasks_agree what (m : tasks_run) (c : tasks_run) =
   Alcotest.(check string) (what ^ ": outcome") (outcome_text m.outcome) (outcome_text c.outcome);
   (* A deadlock's message names each task and what it waits for, so whole messages. *)
-  let full (o : M.outcome) = match o with Deadlock m -> "deadlock: " ^ m | o -> outcome_text o in
+  let full (o : Rapid_runtime.Outcome.t) = match o with Deadlock m -> "deadlock: " ^ m | o -> outcome_text o in
   Alcotest.(check (list (pair string string))) (what ^ ": each task's outcome")
     (List.map (fun (n, o) -> (n, full o)) m.task_outcomes) (List.map (fun (n, o) -> (n, full o)) c.task_outcomes);
   let text (n, e) = n ^ " " ^ event_text e in
@@ -246,7 +245,7 @@ let tasks_agree what (m : tasks_run) (c : tasks_run) =
     | _ ->
         let show = function [] -> "(nothing)" | e :: _ -> text e in
         Alcotest.failf "%s: %s %d: machine %s, closure %s" what stream i (show m) (show c) in
-  let split = List.partition (fun (_, e) -> not (M.world_event e)) in
+  let split = List.partition (fun (_, e) -> not (Rapid_runtime.Event.world_event e)) in
   let mp, mw = split m.events and cp, cw = split c.events in
   go "event" 0 mp cp;
   go "world event" 0 mw cw
@@ -312,17 +311,17 @@ let random_tasks () =
     output_string oc text; close_out oc; path in
   let compared = ref 0 and ended = ref 0 in
   let agree_on (a, b, seed) =
-    let specs = [ { TS.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
-                  { TS.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
+    let specs = [ { Rapid_run.Task_load.name = "T_ROB1"; files = [ write "a.mod" a ]; entry = "main" };
+                  { Rapid_run.Task_load.name = "T_B"; files = [ write "b.mod" b ]; entry = "main" } ] in
     let run engine =
       let world = Rapid_controller.World.create ~statement_time:0.001 Rapid_controller.Io_config.empty in
       engine ?seed ~stub_unmodelled:false ~allow_unknown:false ~max_steps:1_000_000 ~io:Rapid_controller.Io_config.empty
-        ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) ?motion_task:None specs in
+        ~world ~motion:(Rapid_installed.Motion_routines.create ()) ?motion_task:None specs in
     match run machine_tasks, run closure_tasks with
     | None, None -> true
     | Some m, Some c -> (
         incr compared;
-        if m.outcome = M.Ended then incr ended;
+        if m.outcome = Rapid_runtime.Outcome.Ended then incr ended;
         match tasks_agree "random tasks" m c with
         | () -> true
         | exception e -> QCheck.Test.fail_reportf "%s" (Printexc.to_string e))
@@ -793,11 +792,11 @@ let load_text ?(allow_unknown = false) ?io name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules ~allow_unknown ?io [ m ] with
+      match Rapid_load.Session.load_modules ~allow_unknown ?io [ m ] with
       | Ok l -> l.program
       | Error _ -> Alcotest.failf "%s does not check" name)
 
-let agree ?(limits = M.default_limits) ?(budget = 10_000_000) program =
+let agree ?(limits = Rapid_runtime.Limits.default) ?(budget = 10_000_000) program =
   let m_events, m_outcome = machine_run limits program ~entry:"main" ~max_steps:budget in
   let c_events, c_outcome = closure_run limits program ~entry:"main" ~fuel:budget in
   begin
@@ -809,7 +808,7 @@ let agree ?(limits = M.default_limits) ?(budget = 10_000_000) program =
 let program_agrees (name, text) () =
   let events, _ = agree (load_text "program" text) in
   Alcotest.(check bool) (name ^ ": something was written") true
-    (List.exists (function M.Output _ -> true | _ -> false) events)
+    (List.exists (function Rapid_runtime.Event.Output _ -> true | _ -> false) events)
 
 (* The controller under both engines (doc/controller.md): waits, signals with a stimulus,
    interrupts and their traps, clocks, motion, a long jump from a trap between statements
@@ -821,16 +820,16 @@ let controller_runs () =
   let both text =
     let program = load_text ~io "ctl" text in
     let run f = let w = Rapid_controller.World.create ~statement_time:0.01 io in f w in
-    let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits program ~entry:"main" ~max_steps:1_000_000) in
-    let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits program ~entry:"main" ~fuel:1_000_000) in
+    let m_events, m_outcome = run (fun world -> machine_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~max_steps:1_000_000) in
+    let c_events, c_outcome = run (fun world -> closure_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~fuel:1_000_000) in
     Alcotest.(check string) "outcome" (outcome_text m_outcome) (outcome_text c_outcome);
     (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d);
     Alcotest.(check bool) "the controller was seen" true
-      (List.exists (function M.Controller _ | M.Trap_entered _ | M.Motion _ -> true | _ -> false) c_events);
+      (List.exists (function Rapid_runtime.Event.Controller _ | Rapid_runtime.Event.Trap_entered _ | Rapid_runtime.Event.Motion _ -> true | _ -> false) c_events);
     c_events
   in
   let program body = "MODULE ctl\n  VAR intnum i1;\n  VAR intnum i2;\n  VAR clock c1;\n  VAR num n := 0;\n  PROC main()\n    VAR num x;\n    TPWrite \"a\";\n" ^ body ^ "\n    TPWrite \"b\" \\Num:=n;\n  ERROR (40)\n    TPWrite \"recovered\";\n    TRYNEXT;\n  ENDPROC\n  TRAP t1\n    n := n + 1;\n    SetDO do1, 1 - do1;\n  ENDTRAP\n  TRAP t2\n    RAISE 40;\n  ENDTRAP\nENDMODULE\n" in
-  let outputs events = List.filter_map (function M.Output s -> Some s | _ -> None) events in
+  let outputs events = List.filter_map (function Rapid_runtime.Event.Output s -> Some s | _ -> None) events in
   ignore (both (program "    WaitDI di1, 1;\n    x := di1;\n    TPWrite \"di1 \" \\Num:=x;"));
   ignore (both (program "    CONNECT i1 WITH t1;\n    ISignalDI di1, 1, i1;\n    WaitTime 1;\n    n := n + do1;"));
   ignore (both (program "    CONNECT i1 WITH t1;\n    ITimer 0.1, i1;\n    ClkStart c1;\n    WaitUntil ai1 > 4 \\PollRate:=0.05;\n    x := ClkRead(c1);\n    TPWrite \"t \" \\Num:=x;\n    IDelete i1;"));
@@ -844,13 +843,13 @@ let controller_runs () =
   let looping = load_text "loop" "MODULE l\n  PROC main()\n    VAR num i;\n    WHILE TRUE DO\n      i := i + 1;\n      IF i MOD 7 = 0 TPWrite \"i \" \\Num:=i;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n" in
   List.iter (fun (statement_time, max_time) ->
       let run f = f (Rapid_controller.World.create ~statement_time ~max_time Rapid_controller.Io_config.empty) in
-      let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits looping ~entry:"main" ~max_steps:10_000_000) in
-      let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits looping ~entry:"main" ~fuel:10_000_000) in
+      let m_events, m_outcome = run (fun world -> machine_run ~world Rapid_runtime.Limits.default looping ~entry:"main" ~max_steps:10_000_000) in
+      let c_events, c_outcome = run (fun world -> closure_run ~world Rapid_runtime.Limits.default looping ~entry:"main" ~fuel:10_000_000) in
       (match m_outcome, c_outcome with
        | Resource_exhausted (m, _), Resource_exhausted (c, _) -> Alcotest.(check string) "the time limit" m c
        | _ -> Alcotest.failf "time limit: %s / %s" (outcome_text m_outcome) (outcome_text c_outcome));
       (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "time limit %g: %s" max_time d);
-      Alcotest.(check bool) "some output" true (List.exists (function M.Output _ -> true | _ -> false) c_events))
+      Alcotest.(check bool) "some output" true (List.exists (function Rapid_runtime.Event.Output _ -> true | _ -> false) c_events))
     [ (0.01, 5.); (0.003, 1.); (0.0001, 0.05); (0.25, 10.) ];
   (* A deadlock, and the virtual time limit, end both alike. *)
   ignore (both (program "    WaitDO do1, 1;"));
@@ -892,7 +891,7 @@ ENDMODULE
   let program = load_text "mem" text in
   List.iter (fun max_memory ->
       List.iter (fun entry ->
-          let limits = { M.default_limits with max_memory } in
+          let limits = { Rapid_runtime.Limits.default with max_memory } in
           let m_events, m_outcome = machine_run limits program ~entry ~max_steps:10_000_000 in
           let c_events, c_outcome = closure_run limits program ~entry ~fuel:10_000_000 in
           (match m_outcome, c_outcome with
@@ -924,11 +923,11 @@ ENDMODULE
 |rapid} in
   List.iter (fun (entry, line) ->
       let expected = Printf.sprintf "stopped ERR_OUTOFBND 1020 idx.mod:%d:5 (%s)" line entry in
-      (match C.events program ~entry with
+      (match C.events ~host:(Rapid_run.Run.setup ()).host program ~entry with
        | Error m -> Alcotest.fail m
        | Ok (_, r) -> Alcotest.(check string) ("closure " ^ entry) expected (outcome_text r.outcome));
       (* The machine agrees since its integers have no bound of their own (R-3.6). *)
-      let _, o = machine_run M.default_limits program ~entry ~max_steps:10_000 in
+      let _, o = machine_run Rapid_runtime.Limits.default program ~entry ~max_steps:10_000 in
       Alcotest.(check string) ("machine " ^ entry) expected (outcome_text o))
     [ ("main", 7); ("main2", 10) ]
 
@@ -941,15 +940,15 @@ let deep_recursion () =
   (* main and 10,000 - 1 activations of down: the deepest chain the default limit allows. *)
   let events, outcome = agree (load_text "deep" (recursion 9998)) in
   Alcotest.(check string) "outcome" "ended" (outcome_text outcome);
-  Alcotest.(check bool) "d=9998" true (List.mem (M.Output "d=9998") events);
+  Alcotest.(check bool) "d=9998" true (List.mem (Rapid_runtime.Event.Output "d=9998") events);
   let _, outcome = agree (load_text "deeper" (recursion 9999)) in
   Alcotest.(check string) "one call more" "exhausted" (outcome_text outcome)
 
 (* A call chain deeper than the native stack holds ends as resource exhaustion, cleanly. *)
 let native_stack () =
   let program = load_text "unbounded" (recursion 100_000_000) in
-  let limits = { M.default_limits with max_call_depth = max_int } in
-  match C.run ~limits program ~entry:"main" with
+  let limits = { Rapid_runtime.Limits.default with max_call_depth = max_int } in
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~limits program ~entry:"main" with
   | Error m -> Alcotest.fail m
   | Ok { outcome = Resource_exhausted (m, _); _ } ->
       Alcotest.(check bool) ("the reason names the native stack: " ^ m) true
@@ -960,12 +959,12 @@ let native_stack () =
 let fuel () =
   let program = load_text "fuel"
       "MODULE fuel\n  PROC p()\n  ENDPROC\n  PROC main()\n    VAR num i;\n    WHILE i < 3 DO\n      i := i + 1;\n      p;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n" in
-  (match C.run program ~entry:"main" with
+  (match C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
    | Ok { outcome = Ended; fuel_used } ->
        (* the WHILE statement, 4 tests of its condition, 3 x (2 statements and 1 routine) *)
        Alcotest.(check int) "fuel used" 14 fuel_used
    | _ -> Alcotest.fail "the program did not end");
-  match C.run ~fuel:13 program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~fuel:13 program ~entry:"main" with
   | Ok { outcome = Running; _ } -> ()
   | _ -> Alcotest.fail "13 units of fuel do not suffice"
 
@@ -987,13 +986,13 @@ let unknown_names () =
   ENDPROC
 ENDMODULE
 |rapid}) in
-  let raised = List.filter_map (function M.Error_raised { name; _ } -> Some name | _ -> None) events in
+  let raised = List.filter_map (function Rapid_runtime.Event.Error_raised { name; _ } -> Some name | _ -> None) events in
   Alcotest.(check (list string)) "errors" [ "ERR_REFUNKPRC"; "ERR_REFUNKFUN"; "ERR_REFUNKDAT" ] raised
 
 let no_entry () =
   let program = load_text "entry" "MODULE e\n  PROC p(num x)\n  ENDPROC\nENDMODULE\n" in
-  Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run program ~entry:"main"));
-  Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run program ~entry:"p"))
+  Alcotest.(check bool) "no entry routine" true (Result.is_error (C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"main"));
+  Alcotest.(check bool) "an entry routine needs no parameters" true (Result.is_error (C.run ~host:(Rapid_run.Run.setup ()).host program ~entry:"p"))
 
 (* Random programs (gen_programs.ml): the engines agree on each. *)
 let random_programs () =
@@ -1001,10 +1000,10 @@ let random_programs () =
     match Parse.parse_string ~name:"generated.mod" text with
     | Error d -> QCheck.Test.fail_reportf "does not parse: %s" (Diagnostic.to_string d)
     | Ok m -> (
-        match Rapid_semantics.Session.load_modules [ m ] with
+        match Rapid_load.Session.load_modules [ m ] with
         | Error _ -> QCheck.Test.fail_reportf "does not check"
         | Ok l ->
-            let budget = 1_000_000 and limits = M.default_limits in
+            let budget = 1_000_000 and limits = Rapid_runtime.Limits.default in
             let m_events, m_outcome = machine_run limits l.program ~entry:"main" ~max_steps:budget in
             let c_events, c_outcome = closure_run limits l.program ~entry:"main" ~fuel:budget in
             if outcome_text m_outcome <> outcome_text c_outcome then
@@ -1034,7 +1033,7 @@ let fuzz_programs_observed () =
         | Error _ -> ()
         | Ok l ->
             incr compared;
-            let budget = 200_000 and limits = M.default_limits in
+            let budget = 200_000 and limits = Rapid_runtime.Limits.default in
             let world () = Rapid_controller.World.create Rapid_fuzz.Fuzz_run.io in
             let m_events, m_outcome = machine_run ~world:(world ()) limits l.program ~entry:"main" ~max_steps:budget in
             let c_events, c_outcome = closure_run ~world:(world ()) limits l.program ~entry:"main" ~fuel:budget in
@@ -1126,8 +1125,8 @@ ENDMODULE
     let program = load_text "rc" text in
     let run f = f (Rapid_controller.World.create ~statement_time ~max_time:20. Rapid_controller.Io_config.empty) in
     let budget = 200_000 in
-    let m_events, m_outcome = run (fun world -> machine_run ~world M.default_limits program ~entry:"main" ~max_steps:budget) in
-    let c_events, c_outcome = run (fun world -> closure_run ~world M.default_limits program ~entry:"main" ~fuel:budget) in
+    let m_events, m_outcome = run (fun world -> machine_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~max_steps:budget) in
+    let c_events, c_outcome = run (fun world -> closure_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~fuel:budget) in
     match m_outcome, c_outcome with
     | Running, _ | _, Running -> is_prefix m_events c_events || is_prefix c_events m_events
     | _ ->

@@ -12,7 +12,7 @@ let load ?io texts =
       match Rapid_syntax.Parse.parse_string ~name:(name ^ ".mod") text with
       | Ok m -> m
       | Error d -> Alcotest.failf "%s" (Rapid_syntax.Diagnostic.to_string d)) texts in
-  match Rapid_semantics.Session.load_modules ?io modules with
+  match Rapid_load.Session.load_modules ?io modules with
   | Ok l -> l.program
   | Error _ -> Alcotest.fail "does not check"
 
@@ -20,12 +20,12 @@ let both ?(io = Rapid_controller.Io_config.empty) texts =
   let program = load ~io texts in
   let run f = f (Rapid_controller.World.create io) in
   let m_events, m_outcome =
-    run (fun world -> E.machine_run ~world M.default_limits program ~entry:"main" ~max_steps:1_000_000) in
+    run (fun world -> E.machine_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~max_steps:1_000_000) in
   let c_events, c_outcome =
-    run (fun world -> E.closure_run ~world M.default_limits program ~entry:"main" ~fuel:1_000_000) in
+    run (fun world -> E.closure_run ~world Rapid_runtime.Limits.default program ~entry:"main" ~fuel:1_000_000) in
   Alcotest.(check string) "outcome" (E.outcome_text m_outcome) (E.outcome_text c_outcome);
   (match E.difference m_events c_events with None -> () | Some d -> Alcotest.failf "%s" d);
-  List.filter_map (function M.Output s -> Some s | _ -> None) c_events
+  List.filter_map (function Rapid_runtime.Event.Output s -> Some s | _ -> None) c_events
 
 let user_text = {rapid|MODULE user
   VAR num count := 0;

@@ -822,12 +822,12 @@ let programs_run () =
     match Parse.parse_string ~name:file_name text with
     | Error d -> Alcotest.failf "a generated program does not parse: %s\n%s" (Diagnostic.to_string d) text
     | Ok m -> (
-        match Rapid_semantics.Session.load_modules [ m ] with
+        match Rapid_load.Session.load_modules [ m ] with
         | Error _ -> ()
         | Ok loaded -> (
             incr checked;
-            let limits = { M.default_limits with max_memory = 1_000_000 } in
-            match M.start ~limits loaded.program ~entry:"main" with
+            let limits = { Rapid_runtime.Limits.default with max_memory = 1_000_000 } in
+            match M.start ~host:(Rapid_run.Run.setup ()).host ~limits loaded.program ~entry:"main" with
             | Error e -> Alcotest.failf "cannot start: %s\n%s" e text
             | Ok cfg ->
                 (try
@@ -852,10 +852,10 @@ let recursion_through_handlers () =
   match Parse.parse_string ~name:file_name text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the program does not pass the check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               Gc.compact ();
@@ -873,7 +873,7 @@ let recursion_through_handlers () =
 (* JSON text is valid UTF-8 whatever the bytes (doc/trace-format.md, "Text"): valid UTF-8 is kept,
    any other byte becomes its Latin-1 character. *)
 let json_text () =
-  let module U = Rapid_semantics.Utf8_text in
+  let module U = Rapid_runtime.Utf8_text in
   let valid = [ ""; "abc"; "café"; "é😀"; "\xEF\xBB\xBF"; "\xF4\x8F\xBF\xBF" ] in
   List.iter (fun s -> Alcotest.(check string) "valid UTF-8 is kept" s (U.of_bytes s)) valid;
   List.iter (fun (s, expected) -> Alcotest.(check string) (Printf.sprintf "%S" s) expected (U.of_bytes s))

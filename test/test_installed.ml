@@ -49,18 +49,18 @@ let errors_stay_per_use () =
 let stubbed_record_result () =
   let m = parse "r.mod"
       "MODULE r\n  VAR symnum m;\n  PROC main()\n    m := OpMode();\n    TPWrite \"m=\" \\Num:=m;\n  ENDPROC\nENDMODULE\n" in
-  match Rapid_semantics.Session.load_modules [ m ] with
+  match Rapid_load.Session.load_modules [ m ] with
   | Error _ -> Alcotest.fail "does not load"
   | Ok loaded -> (
       let module M = Rapid_semantics.Machine in
-      match M.start ~stub_unmodelled:true loaded.program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ()).host ~stub_unmodelled:true loaded.program ~entry:"main" with
       | Error e -> Alcotest.fail e
       | Ok cfg ->
           let out = ref [] and stubbed = ref [] in
           while M.outcome cfg = Running do
             List.iter (function
-                | M.Output s -> out := s :: !out
-                | M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed
+                | Rapid_runtime.Event.Output s -> out := s :: !out
+                | Rapid_runtime.Event.Stubbed { routine; _ } -> stubbed := routine :: !stubbed
                 | _ -> ()) (snd (M.step cfg))
           done;
           Alcotest.(check bool) "ended" true (M.outcome cfg = Ended);

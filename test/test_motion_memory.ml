@@ -2,7 +2,7 @@
    the moves made; with history (--samples, rapid-sem motion) it is charged against its budget. *)
 
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
 let loop ~moves ~zone ~speed ~p2 =
@@ -20,23 +20,27 @@ let loop ~moves ~zone ~speed ~p2 =
 ENDMODULE
 |} p2 (moves / 2) speed zone speed zone
 
+(* The robot of the run [start] made last. *)
+let last_motion = ref None
+
 let start ?history text =
   let f = Filename.temp_file "memloop" ".mod" in
   let oc = open_out_bin f in
   output_string oc text; close_out oc;
-  match Rapid_semantics.Session.load ~io:Rapid_controller.Io_config.empty [ f ] with
+  match Rapid_load.Session.load ~io:Rapid_controller.Io_config.empty [ f ] with
   | Error _ -> Sys.remove f; Alcotest.fail "the loop does not load"
   | Ok loaded -> (
       Sys.remove f;
       let world = Rapid_controller.World.create ~statement_time:0. ~max_time:1e9 Rapid_controller.Io_config.empty in
-      match M.start ~world ~motion:(MP.create ?history ()) loaded.program ~entry:"main" with
+      let motion = MP.create ?history () in
+      match M.start ~host:(Rapid_run.Run.setup ~controller:world ~motion ()).host loaded.program ~entry:"main" with
       | Error m -> Alcotest.fail m
-      | Ok cfg -> cfg)
+      | Ok cfg -> last_motion := Some motion; cfg)
 
 (* Steps until [n] moves are planned or the run ends; the events are not kept. *)
 let run_until cfg planned n =
-  while M.outcome cfg = M.Running && !planned < n do
-    List.iter (function M.Motion (MP.Segment_planned _) -> incr planned | _ -> ()) (snd (M.step cfg))
+  while M.outcome cfg = Rapid_runtime.Outcome.Running && !planned < n do
+    List.iter (function Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned _) -> incr planned | _ -> ()) (snd (M.step cfg))
   done
 
 let live_words () = Gc.full_major (); (Gc.stat ()).live_words
@@ -51,7 +55,7 @@ let bounded ~zone ~speed ~p2 ~moves () =
   run_until cfg planned max_int;
   let late = live_words () in
   Alcotest.(check int) "every move planned" (moves + 1) !planned;
-  Alcotest.(check bool) "the run ended" true (M.outcome cfg = M.Ended);
+  Alcotest.(check bool) "the run ended" true (M.outcome cfg = Rapid_runtime.Outcome.Ended);
   let grown = (late - early) * (Sys.word_size / 8) in
   if grown > 2_000_000 then
     Alcotest.failf "the live heap grew by %d bytes over %d moves" grown (moves - moves / 10)
@@ -63,7 +67,7 @@ let history_budget () =
   let cfg = start ~history:budget (loop ~moves:1000 ~zone:"fine" ~speed:"v1000" ~p2:"250") in
   run_until cfg (ref 0) max_int;
   (match M.outcome cfg with
-   | M.Resource_exhausted (m, at) ->
+   | Rapid_runtime.Outcome.Resource_exhausted (m, at) ->
        (* At the move beyond the budget, the 101st: MoveL p1 (R-1.4-small2). *)
        (match at with
         | Some r -> let p = Rapid_syntax.Source.start r in
@@ -76,9 +80,9 @@ let history_budget () =
    | _ -> Alcotest.fail "a history beyond its budget did not end the run");
   let cfg = start ~history:(2000 * MP.history_bytes) (loop ~moves:1000 ~zone:"fine" ~speed:"v1000" ~p2:"250") in
   run_until cfg (ref 0) max_int;
-  Alcotest.(check bool) "within the budget, the run ends" true (M.outcome cfg = M.Ended);
+  Alcotest.(check bool) "within the budget, the run ends" true (M.outcome cfg = Rapid_runtime.Outcome.Ended);
   (* The history is there: the path's pieces from the first move on. *)
-  let segments = MM.Planner.segments (MP.planner (M.motion cfg)) in
+  let segments = MM.Planner.segments (MP.planner (Option.get !last_motion)) in
   Alcotest.(check int) "every segment kept" 1001 (List.length segments)
 
 (* Forgetting changes no answer from the present on: a planner that forgets at every plan answers

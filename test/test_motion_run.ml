@@ -2,10 +2,11 @@
    motion events of a run, and real programs of test/realworld that only lacked motion. *)
 
 module M = Rapid_semantics.Machine
-module MP = Rapid_semantics.Motion_primitives
+module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
 
-type run = { outcome : M.outcome; output : string list; motion : MP.event list; cfg : M.config }
+type run = { outcome : Rapid_runtime.Outcome.t; output : string list; motion : Rapid_observable.Motion_event.t list; cfg : M.config;
+             robot : MP.state }
 
 let run ?robot ?io ?(allow_unknown = false) ?(max_time = 3600.) ?(statement_time = 0.) files =
   let io = match io with
@@ -14,30 +15,30 @@ let run ?robot ?io ?(allow_unknown = false) ?(max_time = 3600.) ?(statement_time
   let robot = match robot with
     | None -> MM.Robot.irb120
     | Some f -> (match MM.Robot.load f with Ok r -> r | Error e -> Alcotest.fail (MM.Robot.error_to_string e)) in
-  match Rapid_semantics.Session.load ~allow_unknown ~io files with
+  match Rapid_load.Session.load ~allow_unknown ~io files with
   | Error _ -> Alcotest.failf "%s does not load" (String.concat " " files)
   | Ok loaded -> (
       let world = Rapid_controller.World.create ~statement_time ~max_time io in
       let motion = MP.create ~robot () in
-      match M.start ~world ~motion loaded.program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ~controller:world ~motion:motion ()).host loaded.program ~entry:"main" with
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           let output = ref [] and moves = ref [] in
-          while M.outcome cfg = M.Running && M.steps cfg < 5_000_000 do
+          while M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < 5_000_000 do
             let _, events = M.step cfg in
             List.iter (function
-                | M.Output s -> output := s :: !output
-                | M.Motion e -> moves := e :: !moves
+                | Rapid_runtime.Event.Output s -> output := s :: !output
+                | Rapid_runtime.Event.Motion e -> moves := e :: !moves
                 | _ -> ()) events
           done;
-          { outcome = M.outcome cfg; output = List.rev !output; motion = List.rev !moves; cfg })
+          { outcome = M.outcome cfg; output = List.rev !output; motion = List.rev !moves; cfg; robot = motion })
 
 let write_temp text =
   let f = Filename.temp_file "motion" ".mod" in
   let oc = open_out_bin f in
   output_string oc text; close_out oc; f
 
-let planned r = List.filter (function MP.Segment_planned _ -> true | _ -> false) r.motion
+let planned r = List.filter (function Rapid_observable.Motion_event.Segment_planned _ -> true | _ -> false) r.motion
 
 (* Every move planned begins before it ends, and is seen to end exactly once, at the time it was
    seen to (a task that ends lets the robot finish). *)
@@ -45,10 +46,10 @@ let lifecycle r =
   let n = List.length (planned r) in
   let started = Array.make n nan and ended = Array.make n nan in
   List.iter (function
-      | MP.Segment_started { id; time; _ } ->
+      | Rapid_observable.Motion_event.Segment_started { id; time; _ } ->
           if not (Float.is_nan started.(id)) then Alcotest.failf "move %d started twice" id;
           started.(id) <- time
-      | MP.Segment_ended { id; time; _ } ->
+      | Rapid_observable.Motion_event.Segment_ended { id; time; _ } ->
           if not (Float.is_nan ended.(id)) then Alcotest.failf "move %d ended twice" id;
           ended.(id) <- time
       | _ -> ()) r.motion;
@@ -76,7 +77,7 @@ ENDMODULE
 
 let events_of_a_run () =
   let r = run [ write_temp cell ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
   Alcotest.(check int) "moves planned" 22 (List.length (planned r));
   let started, ended = lifecycle r in
   (* Moves follow each other: each begins where (or before: its corner) the one before ends. *)
@@ -85,7 +86,7 @@ let events_of_a_run () =
       Alcotest.failf "move %d begins at %g, after move %d ended at %g" id started.(id) (id - 1) ended.(id - 1)
   done;
   (* The last move, \Conc, ends after the task did: the robot finishes its path (R-4.1-h). *)
-  let p = MP.planner (M.motion r.cfg) in
+  let p = MP.planner r.robot in
   Alcotest.(check (float 1e-6)) "the last move ends when the robot stands still"
     (MM.Planner.finished_by p) ended.(Array.length ended - 1)
 
@@ -93,7 +94,7 @@ let events_of_a_run () =
 let program_pointer_at_stop_points () =
   let r = run [ write_temp cell ] in
   List.iter (function
-      | MP.Segment_planned { zone = "fine"; ready_time; end_time; id; _ } ->
+      | Rapid_observable.Motion_event.Segment_planned { zone = "fine"; ready_time; end_time; id; _ } ->
           if ready_time < end_time -. 1e-9 then Alcotest.failf "move %d: ready %g before the end %g" id ready_time end_time
       | _ -> ()) r.motion
 
@@ -102,7 +103,7 @@ let program_pointer_at_stop_points () =
 let deburring_runs () =
   let d = Filename.concat "realworld" in
   let r = run ~robot:(d "large-arm.robot") ~io:(d "deburring.io") [ d "CadDeburrFrame.mod" ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
   Alcotest.(check int) "moves" 693 (List.length (planned r));
   ignore (lifecycle r)
 
@@ -112,7 +113,7 @@ let palletiser_runs () =
   let r = run ~robot:(d "large-arm.robot") ~io:(d "palletiser.io") ~allow_unknown:true ~max_time:300.
       [ d "Palletizer.mod" ] in
   (match r.outcome with
-   | M.Resource_exhausted _ -> ()
+   | Rapid_runtime.Outcome.Resource_exhausted _ -> ()
    | _ -> Alcotest.fail "expected the virtual time to run out");
   if List.length (planned r) < 100 then Alcotest.failf "only %d moves" (List.length (planned r));
   Alcotest.(check bool) "both pallets filled" true (List.mem "Both pallets full, waiting for exchange" r.output)
@@ -154,7 +155,7 @@ let waits_forgotten () =
 ENDMODULE
 |} in
   let r = run [ write_temp text ] in
-  Alcotest.(check bool) "ended" true (r.outcome = M.Ended);
-  Alcotest.(check int) "move waits in progress" 0 (MP.move_waits_in_progress (M.motion r.cfg))
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
+  Alcotest.(check int) "move waits in progress" 0 (MP.move_waits_in_progress r.robot)
 
 let suite = (fst suite, snd suite @ [ Alcotest.test_case "move waits are forgotten when they end" `Quick waits_forgotten ])

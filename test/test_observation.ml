@@ -2,8 +2,8 @@
    the examples users met, and as properties: the text reads back to the same value, and no
    text with fewer significant digits does. *)
 
-module O = Rapid_semantics.Observation
-module V = Rapid_semantics.Value
+module O = Rapid_runtime.Observation
+module V = Rapid_runtime.Value
 
 let single x = V.Num (V.to_single x)
 

@@ -6,9 +6,10 @@
    refused with the same words by both. *)
 
 open Rapid_syntax
+open Rapid_load
 open Rapid_semantics
 module M = Machine
-module C = Closure_engine
+module C = Rapid_closure.Closure_engine
 
 let load name text =
   match Parse.parse_string ~name:(name ^ ".mod") text with
@@ -19,10 +20,10 @@ let load name text =
       | Error _ -> Alcotest.failf "%s does not check with --allow-unknown" name)
 
 let machine_refusal p ~entry =
-  match M.start p ~entry with Ok _ -> "(runs)" | Error m -> m
+  match M.start ~host:(Rapid_run.Run.setup ()).host p ~entry with Ok _ -> "(runs)" | Error m -> m
 
 let closure_refusal p ~entry =
-  match C.events p ~entry with Ok _ -> "(runs)" | Error m -> m
+  match C.events ~host:(Rapid_run.Run.setup ()).host p ~entry with Ok _ -> "(runs)" | Error m -> m
 
 let check_both what p ~entry expected =
   Alcotest.(check string) (what ^ ": machine") expected (machine_refusal p ~entry);

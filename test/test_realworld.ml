@@ -94,15 +94,15 @@ let only_signals_unknown (name, files) =
    unknown here and raises ERR_REFUNKDAT when reached. *)
 let run_polishing ~stub_unmodelled =
   let module M = Rapid_semantics.Machine in
-  match Rapid_semantics.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
+  match Rapid_load.Session.load_modules ~allow_unknown:true [ parse "CadPolishCover.mod" ] with
   | Error _ -> Alcotest.fail "the polishing cell does not load"
   | Ok loaded -> (
-      match M.start ~stub_unmodelled loaded.program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ()).host ~stub_unmodelled loaded.program ~entry:"main" with
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           let stubbed = ref [] in
           while M.outcome cfg = Running && M.steps cfg < 1_000_000 do
-            List.iter (function M.Stubbed { routine; _ } -> stubbed := routine :: !stubbed | _ -> ())
+            List.iter (function Rapid_runtime.Event.Stubbed { routine; _ } -> stubbed := routine :: !stubbed | _ -> ())
               (snd (M.step cfg))
           done;
           (M.outcome cfg, List.rev !stubbed))

@@ -7,7 +7,7 @@
 
 open Rapid_syntax
 module M = Rapid_semantics.Machine
-module S = Rapid_semantics.Session
+module S = Rapid_load.Session
 
 let repeat n f =
   let b = Buffer.create (n * 24) in
@@ -30,13 +30,13 @@ let load name m =
 
 (* Runs main; the output lines, or a failure unless the task ends. *)
 let run ?(max_steps = 20_000_000) name program =
-  match M.start program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
   | Error m -> Alcotest.failf "%s: cannot run: %s" name m
   | Ok cfg ->
       let output = ref [] in
       while M.outcome cfg = Running && M.steps cfg < max_steps do
         let _, events = M.step cfg in
-        List.iter (function M.Output s -> output := s :: !output | _ -> ()) events
+        List.iter (function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) events
       done;
       (match M.outcome cfg with
        | Ended -> ()
@@ -296,7 +296,7 @@ let answer text =
           true
       | Error (Front_end _ | Internal _) -> QCheck.Test.fail_report "refused by the front end"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error m -> QCheck.Test.fail_reportf "cannot start: %s" m
           | Ok cfg -> (
               match
@@ -324,14 +324,14 @@ let generated_constants () =
 
 (* R-3.12-c: no operator and no installed function makes an infinity or a NaN out of finite
    arguments, at the edges of num and dnum either: each gives a finite value or an error. *)
-let rec finite (v : Rapid_semantics.Value.t) =
+let rec finite (v : Rapid_runtime.Value.t) =
   match v with
   | Num x | Dnum x -> Float.is_finite x
   | Record a | Array a -> Array.for_all finite a
   | Bool _ | String _ | Handle _ -> true
 
 let no_infinity () =
-  let module V = Rapid_semantics.Value in
+  let module V = Rapid_runtime.Value in
   let max_single = Int32.float_of_bits 0x7f7fffffl and min_single = Int32.float_of_bits 1l in
   let singles = [ 0.; -0.; 1.; -1.; 0.5; 90.; 360.; 8388608.; 16777216.; 1e30; -1e30;
                   max_single; -.max_single; min_single ] in
@@ -356,18 +356,18 @@ let no_infinity () =
               f (Array.of_list (given @ List.init (arity - List.length given) (fun _ -> None))))
         else List.iter (fun v -> args (k - 1) (v :: acc)) (if arity > 2 then List.filteri (fun i _ -> i mod 3 = 0) values else values)
       in
-      args (min arity 3) []) Rapid_semantics.Library.functions;
-  let ops = Rapid_semantics.Arith.[ Num_add; Num_sub; Num_mul; Num_div; Num_intdiv; Num_mod;
+      args (min arity 3) []) Rapid_installed.Library.functions;
+  let ops = Rapid_runtime.Arith.[ Num_add; Num_sub; Num_mul; Num_div; Num_intdiv; Num_mod;
                                     Dnum_add; Dnum_sub; Dnum_mul; Dnum_div; Dnum_intdiv; Dnum_mod;
                                     Pos_add; Pos_sub; Num_pos_mul; Pos_num_mul; Pos_cross; Pos_num_div; Orient_mul ] in
   List.iter (fun op -> List.iter (fun a -> List.iter (fun b ->
-      apply (Rapid_semantics.Arith.binary_name op) (fun () -> Rapid_semantics.Arith.binary op a b)) values) values) ops;
+      apply (Rapid_runtime.Arith.binary_name op) (fun () -> Rapid_runtime.Arith.binary op a b)) values) values) ops;
   (* Were an infinity to reach the formatting, it would be refused, not loop. *)
-  (match Rapid_semantics.Format.num_text infinity with
+  (match Rapid_runtime.Text_format.num_text infinity with
    | exception V.Type_mismatch _ -> ()
    | s -> Alcotest.failf "an infinity written as %s" s);
   Alcotest.(check bool) "NumToStr of an infinity" true
-    (Rapid_semantics.Library.num_to_str (V.Num infinity) (V.Num 2.) ~exp:false = Error "ERR_OVERFLOW")
+    (Rapid_installed.Library.num_to_str (V.Num infinity) (V.Num 2.) ~exp:false = Error "ERR_OVERFLOW")
 
 (* ---------------------------------------------------------------- the conformance runner *)
 

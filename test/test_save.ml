@@ -2,8 +2,8 @@
    modules of every encoding, and saving again changes nothing; what --save refuses; its
    temporary files. *)
 
-module P = Rapid_semantics.Persistent_save
-module V = Rapid_semantics.Value
+module P = Rapid_run.Persistent_save
+module V = Rapid_runtime.Value
 module M = Rapid_semantics.Machine
 
 (* Numbers compared by their bits: -0 is not 0, and a value that reads back "nearly" is wrong. *)
@@ -30,11 +30,11 @@ let load text =
   match Rapid_syntax.Parse.parse_string ~name:"m.mod" text with
   | Error d -> Error (Rapid_syntax.Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules ~allow_unknown:false ~io:Rapid_controller.Io_config.empty [ m ] with
+      match Rapid_load.Session.load_modules ~allow_unknown:false ~io:Rapid_controller.Io_config.empty [ m ] with
       | Error _ -> Error "the module does not load"
       | Ok loaded -> (
           let world = Rapid_controller.World.create Rapid_controller.Io_config.empty in
-          match M.start ~world loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host loaded.program ~entry:"main" with
           | Error e -> Error e
           | Ok cfg -> Ok (m, M.module_data cfg)))
 

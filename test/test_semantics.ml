@@ -48,13 +48,13 @@ let rules_in_spec () =
           let io = match run.io with
             | Some f -> Result.value (Rapid_controller.Io_config.read_file f) ~default:Rapid_controller.Io_config.empty
             | None -> Rapid_controller.Io_config.empty in
-          match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
+          match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
           | Error _ -> ()
           | Ok { program; _ } ->
-            let limits = { M.default_limits with
-                           retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+            let limits = { Rapid_runtime.Limits.default with
+                           retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
             let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-            match M.start ~limits ~world ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
+            match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host ~limits ~stub_unmodelled:case.Rapid_conformance.Spec_case.stub_unmodelled program ~entry:run.entry with
             | Ok cfg ->
                 let max = Option.value run.max_steps ~default:1_000_000 in
                 while M.outcome cfg = Running && M.steps cfg < max do
@@ -67,8 +67,9 @@ let rules_in_spec () =
           let module TS = Rapid_semantics.Task_set in
           let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time
               Rapid_controller.Io_config.empty in
-          let specs = List.map (fun (name, files) -> { TS.name; files; entry = run.entry }) run.tasks in
-          match TS.start ?seed:run.schedule ~world ~motion:(Rapid_semantics.Motion_primitives.create ()) specs with
+          let specs = List.map (fun (name, files) -> { Rapid_run.Task_load.name; files; entry = run.entry }) run.tasks in
+          match Rapid_run.Run.machine_tasks ?seed:run.schedule ~controller:world
+                  ~motion:(Rapid_installed.Motion_routines.create ()) specs with
           | Error _ -> ()
           | Ok (ts, _) ->
               let rec loop n = if n > 0 then match TS.step ts with
@@ -94,15 +95,15 @@ let long_routine () =
   match Parse.parse_string ~name:"long.mod" (Buffer.contents b) with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the long routine does not check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               let out = ref [] in
               while M.outcome cfg = Running do
-                List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+                List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
               done;
               Alcotest.(check (list string)) "output" [ "x=500000" ] !out))
 
@@ -111,10 +112,10 @@ let machine_of text =
   match Parse.parse_string ~name:"t.mod" text with
   | Error d -> Alcotest.failf "%s" (Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules [ m ] with
+      match Rapid_load.Session.load_modules [ m ] with
       | Error _ -> Alcotest.fail "the program does not check"
       | Ok loaded -> (
-          match M.start loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
+          match M.start ~host:(Rapid_run.Run.setup ()).host loaded.program ~entry:"main" with Error e -> Alcotest.fail e | Ok cfg -> cfg))
 
 (* The rules of the steps from the [from]th on, up to [count] of them. *)
 let rules_of cfg ~skip ~count =
@@ -128,7 +129,7 @@ let settled_steps () =
   Alcotest.(check (list string)) "x := x + 1; then x := 2;"
     [ "assign"; "binary-operands"; "read"; "binary"; "store"; "assign"; "store"; "return-entry" ]
     (rules_of cfg ~skip:0 ~count:8);
-  Alcotest.(check bool) "ended" true (M.outcome cfg = M.Ended);
+  Alcotest.(check bool) "ended" true (M.outcome cfg = Rapid_runtime.Outcome.Ended);
   (* Literal arguments and absent optional parameters are bound without steps of their own. *)
   let cfg = machine_of "MODULE t\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nENDMODULE\n" in
   Alcotest.(check (list string)) "TPWrite \"a\";" [ "call-arguments"; "call-primitive"; "return-entry" ]
@@ -143,14 +144,14 @@ let settled_steps () =
     (rules_of cfg ~skip:0 ~count:13);
   let out = ref [] in
   while M.outcome cfg = Running do
-    List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+    List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
   done;
   Alcotest.(check (list string)) "the component of the element written" [ "7" ] !out
 
 (* Values in RAPID's syntax, numbers with enough digits to read back to the same number. *)
 let value_text () =
-  let module V = Rapid_semantics.Value in
-  let text = Rapid_semantics.Trace_view.value in
+  let module V = Rapid_runtime.Value in
+  let text = Rapid_tools.Trace_view.value in
   Alcotest.(check string) "integer" "16777216" (text (V.num 16777216.));
   Alcotest.(check string) "0.1" "0.1" (text (V.num 0.1));
   Alcotest.(check string) "largest single" "3.4028235E+38" (text (V.num 3.4028235e38));

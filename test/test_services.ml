@@ -181,8 +181,8 @@ let address_policy () =
 
 (* Values written by --save read back as the same values. *)
 let literals () =
-  let module P = Rapid_semantics.Persistent_save in
-  let module V = Rapid_semantics.Value in
+  let module P = Rapid_run.Persistent_save in
+  let module V = Rapid_runtime.Value in
   List.iter (fun (v, text) -> Alcotest.(check string) text text (P.literal v))
     [ (V.num (1. /. 3.), "0.33333334"); (V.num 0.1, "0.1"); (V.num (-2.5), "-2.5"); (V.num 1e30, "1E+30");
       (V.dnum (1. /. 3.), "0.3333333333333333"); (V.dnum 12345678901234., "12345678901234");
@@ -200,17 +200,17 @@ let run_with services text =
   match Rapid_syntax.Parse.parse_string ~name:"t.mod" text with
   | Error d -> Alcotest.fail (Rapid_syntax.Diagnostic.to_string d)
   | Ok m -> (
-      match Rapid_semantics.Session.load_modules ~allow_unknown:false ~io:Rapid_controller.Io_config.empty [ m ] with
+      match Rapid_load.Session.load_modules ~allow_unknown:false ~io:Rapid_controller.Io_config.empty [ m ] with
       | Error _ -> Alcotest.fail "the module does not load"
       | Ok loaded -> (
           let world = Rapid_controller.World.create Rapid_controller.Io_config.empty in
           Rapid_controller.World.set_services world services;
-          match M.start ~world loaded.program ~entry:"main" with
+          match M.start ~host:(Rapid_run.Run.setup ~controller:world ()).host loaded.program ~entry:"main" with
           | Error e -> Alcotest.fail e
           | Ok cfg ->
               let out = ref [] in
               while M.outcome cfg = Running && M.steps cfg < 100_000 do
-                List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+                List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
               done;
               List.rev !out))
 

@@ -151,8 +151,8 @@ let test_schedule () =
 (* SplitMix64's reference output from state 0. *)
 let test_splitmix () =
   let s = ref 0L in
-  let a = Rapid_semantics.Task_set.splitmix s in
-  let b = Rapid_semantics.Task_set.splitmix s in
+  let a = Rapid_runtime.Task_rules.splitmix s in
+  let b = Rapid_runtime.Task_rules.splitmix s in
   Alcotest.(check string) "first" "e220a8397b1dcdaf" (Printf.sprintf "%Lx" a);
   Alcotest.(check string) "second" "6e789e6aa1b965f4" (Printf.sprintf "%Lx" b)
 
@@ -403,9 +403,9 @@ let test_task_budget () =
       let out, status = run ([ "run" ] @ budget @ [ "--task"; "A=" ^ file; "--task"; "B=" ^ file ]) in
       Alcotest.(check (pair string int)) (engine ^ ": two tasks exhaust the budget") ("", 3) (out, status);
       let tasks n = List.concat (List.init n (fun i -> [ "--task"; Printf.sprintf "T%d=%s" i file ])) in
-      let out, status = run ([ "run"; "--engine"; engine ] @ tasks Rapid_semantics.Task_set.max_tasks) in
+      let out, status = run ([ "run"; "--engine"; engine ] @ tasks Rapid_runtime.Task_rules.max_tasks) in
       Alcotest.(check int) (engine ^ ": 20 tasks run") 0 status;
-      Alcotest.(check int) (engine ^ ": each writes") Rapid_semantics.Task_set.max_tasks (List.length (lines out));
+      Alcotest.(check int) (engine ^ ": each writes") Rapid_runtime.Task_rules.max_tasks (List.length (lines out));
       let err = Filename.concat dir "err.txt" in
       let status = Sys.command (Printf.sprintf "%s run --engine %s %s > /dev/null 2> %s" (Filename.quote binary) engine
                                   (String.concat " " (List.map Filename.quote (tasks 300))) (Filename.quote err)) in

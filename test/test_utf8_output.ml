@@ -20,7 +20,7 @@ let run_in dir args =
   Sys.remove out; text
 
 let strict_utf8 what text =
-  if not (Rapid_semantics.Utf8_text.is_utf8 text) then
+  if not (Rapid_runtime.Utf8_text.is_utf8 text) then
     Alcotest.failf "%s: not valid UTF-8: %S" what text
 
 let json_lines what text =

@@ -6,10 +6,10 @@
 
    Every random test has a fixed seed. *)
 
-module V = Rapid_semantics.Value
-module A = Rapid_semantics.Arith
-module F = Rapid_semantics.Format
-module L = Rapid_semantics.Library
+module V = Rapid_runtime.Value
+module A = Rapid_runtime.Arith
+module F = Rapid_runtime.Text_format
+module L = Rapid_installed.Library
 module NL = Rapid_syntax.Num_literal
 
 (* ---------------------------------------------------------------- helpers *)

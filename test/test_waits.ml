@@ -4,7 +4,7 @@
    count against the step limit. *)
 
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 (* p raises at every level and its handler calls p again, [depth] levels deep (§7.1, §4.11). *)
 let handler_recursion depth =
@@ -13,7 +13,7 @@ let handler_recursion depth =
     \    IF k < %d p k + 1;\n    RETURN;\n  ENDPROC\n  PROC main()\n    p 1;\n\
     \    TPWrite \"n \" \\Num:=n;\n  ENDPROC\nENDMODULE\n" depth
 
-let limits = { M.default_limits with max_call_depth = 30_000 }
+let limits = { Rapid_runtime.Limits.default with max_call_depth = 30_000 }
 
 (* Bytes allocated by [f], minor and major heaps together. *)
 let allocated f =
@@ -23,13 +23,13 @@ let allocated f =
   Gc.allocated_bytes () -. before
 
 let closure program () =
-  match C.run ~limits ~all_events:false program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~limits ~all_events:false program ~entry:"main" with
   | Ok { outcome = Ended; _ } -> ()
   | Ok { outcome; _ } -> Alcotest.failf "closure: %s" (Test_engines.outcome_text outcome)
   | Error m -> Alcotest.fail m
 
 let machine program () =
-  match M.start ~limits program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host ~limits program ~entry:"main" with
   | Error m -> Alcotest.fail m
   | Ok cfg ->
       while M.outcome cfg = Running do ignore (M.step cfg) done;
@@ -54,7 +54,7 @@ let per_level_bounded () =
 let engines_agree () =
   let events, outcome = Test_engines.agree ~limits (Test_engines.load_text "rec" (handler_recursion 5_000)) in
   Alcotest.(check string) "outcome" "ended" (Test_engines.outcome_text outcome);
-  Alcotest.(check bool) "n 5000" true (List.mem (M.Output "n 5000") events)
+  Alcotest.(check bool) "n 5000" true (List.mem (Rapid_runtime.Event.Output "n 5000") events)
 
 (* Item 8: each poll of a WaitUntil and each move of the clock in a wait is a unit of work, as
    it is a step of the machine, so that --max-steps ends a wait that --max-time would let run
@@ -68,12 +68,12 @@ let waits_spend_fuel () =
                                 \    TPWrite \"end\";\n  ENDPROC\nENDMODULE\n" body in
       let program = Test_engines.load_text "w" text in
       let world () = Rapid_controller.World.create ~max_time:2000. Rapid_controller.Io_config.empty in
-      (match C.run ~world:(world ()) ~fuel:200 ~all_events:false program ~entry:"main" with
+      (match C.run ~host:(Rapid_run.Run.setup ~controller:(world ()) ()).host ~fuel:200 ~all_events:false program ~entry:"main" with
        | Ok { outcome = Running; fuel_used } ->
            Alcotest.(check bool) "within the fuel" true (fuel_used <= 200)
        | Ok { outcome; _ } -> Alcotest.failf "closure, %s: %s" body (Test_engines.outcome_text outcome)
        | Error m -> Alcotest.fail m);
-      match M.start ~world:(world ()) program ~entry:"main" with
+      match M.start ~host:(Rapid_run.Run.setup ~controller:(world ()) ()).host program ~entry:"main" with
       | Error m -> Alcotest.fail m
       | Ok cfg ->
           while M.outcome cfg = Running && M.steps cfg < 200 do ignore (M.step cfg) done;

@@ -9,7 +9,7 @@
 
 open Rapid_syntax
 module M = Rapid_semantics.Machine
-module C = Rapid_semantics.Closure_engine
+module C = Rapid_closure.Closure_engine
 
 let programs = [
   ("fib(25), recursive",
@@ -37,23 +37,23 @@ let best_of n f =
 
 let load text =
   let m = match Parse.parse_string ~name:"bench.mod" text with Ok m -> m | Error d -> failwith (Diagnostic.to_string d) in
-  match Rapid_semantics.Session.load_modules [ m ] with
+  match Rapid_load.Session.load_modules [ m ] with
   | Ok l -> l.program
   | Error _ -> failwith "the benchmark program does not check"
 
 let machine program =
-  match M.start program ~entry:"main" with
+  match M.start ~host:(Rapid_run.Run.setup ()).host program ~entry:"main" with
   | Error m -> failwith m
   | Ok cfg ->
       let out = ref [] in
       while M.outcome cfg = Running do
-        List.iter (function M.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
+        List.iter (function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) (snd (M.step cfg))
       done;
       (String.concat "" !out, M.steps cfg)
 
 let closure ?all_events program =
   let out = ref [] in
-  match C.run ?all_events ~on_event:(function M.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ?all_events ~on_event:(function Rapid_runtime.Event.Output s -> out := s :: !out | _ -> ()) program ~entry:"main" with
   | Error m -> failwith m
   | Ok r -> (String.concat "" !out, r.fuel_used)
 

@@ -45,7 +45,7 @@ let () =
   (* the signals the generated programs use, in one installed list for every program, as
      Fuzz_run.load has it *)
   let io = F.io in
-  let installed = match Rapid_semantics.Session.installed ~io () with Ok i -> i | Error _ -> failwith "installed" in
+  let installed = match Rapid_load.Session.installed ~io () with Ok i -> i | Error _ -> failwith "installed" in
   let checked, _ = time "check" n (fun () ->
       List.map (fun m ->
           let r = Rapid_typing.Check.check_task ~installed [ m ] in
@@ -53,10 +53,10 @@ let () =
           (m, r)) trees) in
   let lowered, _ = time "lower" n (fun () ->
       List.map (fun (m, (r : Rapid_typing.Check.result)) ->
-          Rapid_semantics.Lower.program ~installed ~modules:[ m ] r.elaboration) checked) in
-  let _ = time "initial values" n (fun () -> List.iter (fun p -> ignore (Rapid_semantics.Initial_values.evaluate p)) lowered) in
+          Rapid_runtime.Lower.program ~installed ~modules:[ m ] r.elaboration) checked) in
+  let _ = time "initial values" n (fun () -> List.iter (fun p -> ignore (Rapid_runtime.Initial_values.evaluate p)) lowered) in
   let loaded, _ = time "lower + initial values" n (fun () ->
-      List.map (fun (m, r) -> match Rapid_semantics.Session.lower ~io ~installed ~modules:[ m ] r with
+      List.map (fun (m, r) -> match Rapid_load.Session.lower ~io ~installed ~modules:[ m ] r with
         | Ok p -> p | Error _ -> failwith "lower") checked) in
   let _ = time "machine run" n (fun () -> List.iter (fun p -> ignore (F.machine.run p ~max_steps:200_000)) loaded) in
   let _ = time "closure run" n (fun () -> List.iter (fun p -> ignore (F.closure.run p ~max_steps:200_000)) loaded) in

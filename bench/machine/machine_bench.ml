@@ -38,11 +38,11 @@ let child index =
   Gc.set { (Gc.get ()) with space_overhead = 400 };
   let _, text, depth = List.nth programs index in
   let m = match Parse.parse_string ~name:"bench.mod" text with Ok m -> m | Error d -> failwith (Diagnostic.to_string d) in
-  match Rapid_semantics.Session.load_modules [ m ] with
+  match Rapid_load.Session.load_modules [ m ] with
   | Error _ -> failwith "the benchmark program does not check"
   | Ok loaded ->
-      let limits = { M.default_limits with max_call_depth = max depth M.default_limits.max_call_depth } in
-      let cfg = match M.start ~limits loaded.program ~entry:"main" with Ok c -> c | Error m -> failwith m in
+      let limits = { Rapid_runtime.Limits.default with max_call_depth = max depth Rapid_runtime.Limits.default.max_call_depth } in
+      let cfg = match M.start ~host:(Rapid_run.Run.setup ()).host ~limits loaded.program ~entry:"main" with Ok c -> c | Error m -> failwith m in
       let t0 = Unix.gettimeofday () in
       while M.outcome cfg = Running do ignore (M.step cfg) done;
       let t = Unix.gettimeofday () -. t0 in

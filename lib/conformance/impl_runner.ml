@@ -1,4 +1,4 @@
-module Json_text = Rapid_semantics.Json_text  (* every JSON written is valid UTF-8 *)
+module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 module Stream = Rapid_oracle.Event_stream
 
 type result = { case : Spec_case.t; passed : bool; skipped : bool; detail : string }
@@ -197,7 +197,7 @@ let run_case ?(timeout = 60.) ?reference ?ignore ~template (case : Spec_case.t) 
    tab, newline and carriage return; U+FFFE, U+FFFF) as \HH or U+FFFD, the three it allows as
    references, which an attribute would otherwise turn into spaces. *)
 let xml_escape s =
-  let s = Rapid_semantics.Utf8_text.of_bytes s in
+  let s = Rapid_runtime.Utf8_text.of_bytes s in
   let b = Buffer.create (String.length s) in
   let n = String.length s in
   let rec go i =

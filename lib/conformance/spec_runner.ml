@@ -47,11 +47,11 @@ let robot_of (run : Spec_case.run) =
 (* The run's output lines and outcome, by the chosen engine. *)
 let execute engine case (run : Spec_case.run) ~io program =
   let module M = Rapid_semantics.Machine in
-  let limits = { M.default_limits with
-                 retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+  let limits = { Rapid_runtime.Limits.default with
+                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let output = ref [] in
-  let collect = function M.Output s -> output := s :: !output | _ -> () in
+  let collect = function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> () in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
   (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
   let sandbox = Rapid_controller.File_sandbox.temporary () in
@@ -62,8 +62,9 @@ let execute engine case (run : Spec_case.run) ~io program =
   match engine with
   | Machine -> (
       match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
-          M.start ~limits ~world ~stub_unmodelled:case.Spec_case.stub_unmodelled ~motion program ~entry:run.entry) with
+          let motion = Rapid_installed.Motion_routines.create ?robot () in
+          let host = (Rapid_run.Run.setup ~controller:world ~motion ()).host in
+          M.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~host program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok cfg ->
           while M.outcome cfg = Running && M.steps cfg < max_steps do
@@ -73,9 +74,10 @@ let execute engine case (run : Spec_case.run) ~io program =
           Ok (List.rev !output, M.outcome cfg))
   | Closure -> (
       match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_semantics.Motion_primitives.create ?robot () in
-          Rapid_semantics.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
-            ~all_events:false ~world ~motion ~on_event:collect program ~entry:run.entry) with
+          let motion = Rapid_installed.Motion_routines.create ?robot () in
+          let host = (Rapid_run.Run.setup ~controller:world ~motion ()).host in
+          Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
+            ~all_events:false ~host ~on_event:collect program ~entry:run.entry) with
       | Error m -> release (); Error m
       | Ok r -> release (); Ok (List.rev !output, r.outcome))
 
@@ -88,7 +90,7 @@ let rec run_program engine case (run : Spec_case.run) ~io program =
 and judge case (run : Spec_case.run) (output, outcome) =
       let file_of at = match Source.file_of at with Some f -> Some (Filename.basename (Source.name f)) | None -> None in
       let status, error, error_file =
-        match (outcome : Rapid_semantics.Machine.outcome) with
+        match (outcome : Rapid_runtime.Outcome.t) with
         | Ended -> (0, None, None)
         | Stopped { name; at; _ } -> let p = Source.start at in (1, Some (name, p.line, p.col), file_of at)
         | Running | Resource_exhausted _ | Deadlock _ -> (3, None, None)
@@ -134,7 +136,8 @@ let compare_static case expected reports =
 let run_tasks engine case expected (run : Spec_case.run) =
   let module M = Rapid_semantics.Machine in
   let module TS = Rapid_semantics.Task_set in
-  let module CT = Rapid_semantics.Closure_tasks in
+  let module CT = Rapid_closure.Closure_tasks in
+  let module TL = Rapid_run.Task_load in
   let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
@@ -142,9 +145,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let io =
     let modules = List.concat_map (fun (_, files) ->
         List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
-    fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+    fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
            ~stub_unmodelled:case.stub_unmodelled modules io) in
-  let limits = { M.default_limits with retry_limit = Option.value run.retry_limit ~default:M.default_limits.retry_limit } in
+  let limits = { Rapid_runtime.Limits.default with retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
   let sandbox = Rapid_controller.File_sandbox.temporary () in
@@ -155,11 +158,18 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
     | Some (_, r) -> r | None -> run.entry in
-  let specs = List.map (fun (name, files) -> { TS.name; files; entry = entry_of name }) run.tasks in
-  let motion = Rapid_semantics.Motion_primitives.create ?robot () in
+  let specs = List.map (fun (name, files) -> { TL.name; files; entry = entry_of name }) run.tasks in
+  let motion = Rapid_installed.Motion_routines.create ?robot () in
   let stub_unmodelled = case.Spec_case.stub_unmodelled and allow_unknown = case.allow_unknown in
   let seed = run.schedule and motion_task = run.motion_task in
   (* The run's output and outcome, by the chosen engine. *)
+  let loaded = TL.load ~allow_unknown ~io ?motion_task ~world ~motion specs in
+  let started start =
+    match loaded with
+    | Error f -> Error f
+    | Ok (l : TL.loaded) ->
+        Result.map_error (fun m -> TL.Refused m)
+          (Result.map (fun t -> (t, l.warnings)) (start (List.map (fun (t : TL.task) -> t.rules) l.tasks) l.links)) in
   let result = match engine with
     | Machine ->
         Result.map (fun (ts, w) -> ((fun () ->
@@ -168,16 +178,16 @@ let run_tasks engine case expected (run : Spec_case.run) =
               if TS.steps ts < max_steps then
                 match TS.step ts with
                 | None -> ()
-                | Some (_, _, events) -> List.iter (function M.Output s -> output := s :: !output | _ -> ()) events; loop ()
+                | Some (_, _, events) -> List.iter (function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) events; loop ()
             in
             loop ();
-            (List.rev !output, TS.outcome ts)), w)) (TS.start ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs)
+            (List.rev !output, TS.outcome ts)), w)) (started (TS.start ~limits ~stub_unmodelled ?seed))
     | Closure ->
         Result.map (fun (ct, w) -> ((fun () ->
             let output = ref [] in
             let r = CT.run ~fuel:max_steps ~all_events:false
-                ~on_event:(fun _ -> function M.Output s -> output := s :: !output | _ -> ()) ct in
-            (List.rev !output, r.outcome)), w)) (CT.start ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task ~world ~motion specs) in
+                ~on_event:(fun _ -> function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) ct in
+            (List.rev !output, r.outcome)), w)) (started (CT.start ~limits ~stub_unmodelled ?seed)) in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
@@ -212,10 +222,10 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
         match io with
         | Error m -> fail case m
         | Ok io ->
-        let io = fst (Rapid_semantics.Signal_inference.for_run ~allow_unknown:case.allow_unknown
+        let io = fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
                         ~stub_unmodelled:case.stub_unmodelled modules io) in
         (* The whole static semantics, the initial values known before the run included. *)
-        match Rapid_semantics.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
+        match Rapid_load.Session.load_modules ~allow_unknown:case.allow_unknown ~io modules with
         | Error (Internal m) -> fail case m
         | Error (Front_end (d :: _)) -> compare_refusal case expected d
         | Error (Front_end []) -> fail case "refused without a diagnostic"

@@ -2,7 +2,7 @@
    list sorted by time and then by the order they were scheduled in, so that equal times
    happen in a reproducible order. *)
 
-type observation =
+type observation = Rapid_observable.Controller_observation.t = 
   | Signal_changed of { time : float; signal : string; value : float }
   | Interrupt_occurred of { time : float; number : int }
   | Interrupt_discarded of { time : float; number : int; reason : string }
@@ -10,7 +10,7 @@ type observation =
 let default_statement_time = 0.0001
 let default_max_time = 3600.
 let default_epoch = 1704067200.   (* 2024-01-01 00:00:00 UTC, a Monday *)
-let default_poll_rate = 0.1
+let default_poll_rate = Rapid_observable.Wait.default_poll_rate
 let min_poll_rate = 0.04
 let min_timer_single = 0.01
 let min_timer_cyclic = 0.1
@@ -50,11 +50,11 @@ type interrupt = {
 
 type clock = { mutable since : int option; mutable total : int }
 
-type wait = {
+type wait = Rapid_observable.Wait.t = {
   what : string;
   satisfied : unit -> bool;
   deadline : float option;
-  finish : timed_out:bool -> string option;
+  finish : timed_out:bool -> Rapid_observable.Wait.raised option;
   poll : float option;
 }
 

@@ -15,12 +15,10 @@
 type t
 
 (** What the world makes observable, each with its virtual time (seconds). *)
-type observation =
+type observation = Rapid_observable.Controller_observation.t = 
   | Signal_changed of { time : float; signal : string; value : float }
   | Interrupt_occurred of { time : float; number : int }
-      (** the interrupt is queued for its trap *)
   | Interrupt_discarded of { time : float; number : int; reason : string }
-      (** sleeping (ISleep), deleted, or the queue was full *)
 
 val default_statement_time : float
 (** 0.0001 s of virtual time for each statement executed (and each new round of a loop). *)
@@ -125,12 +123,12 @@ val write_later : t -> int -> float -> delay:float -> unit
 (** A wait of a waiting instruction, engine-neutral: the engine checks [satisfied] and the
     deadline at every step of the wait, lets interrupts in, and moves the clock on to the next
     event, the deadline or the next poll. *)
-type wait = {
-  what : string;                              (** for the deadlock message *)
-  satisfied : unit -> bool;                   (** unused when [poll] is set *)
-  deadline : float option;                    (** absolute virtual time *)
-  finish : timed_out:bool -> string option;   (** at the end: an error (ERR_ name) to raise *)
-  poll : float option;                        (** WaitUntil: the engine re-evaluates a condition *)
+type wait = Rapid_observable.Wait.t = {
+  what : string;
+  satisfied : unit -> bool;
+  deadline : float option;
+  finish : timed_out:bool -> Rapid_observable.Wait.raised option;
+  poll : float option;
 }
 
 (** {1 Interrupts} *)

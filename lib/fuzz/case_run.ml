@@ -1,6 +1,7 @@
 open Rapid_syntax
 module M = Rapid_semantics.Machine
 module TS = Rapid_semantics.Task_set
+module TL = Rapid_run.Task_load
 module F = Fuzz_run
 
 let several_tasks_closure = ref true
@@ -40,7 +41,7 @@ let with_files (c : Fuzz_case.t) f =
           let oc = open_out_bin path in
           output_string oc source; close_out oc;
           written := path :: !written; path) (sources t) in
-      { TS.name = t.task_name; files; entry = "main" }) c.tasks in
+      { TL.name = t.task_name; files; entry = "main" }) c.tasks in
   f specs
 
 (* The events of several tasks, each prefixed by its task, as two streams each in its order
@@ -50,13 +51,13 @@ let streams () =
   let program = ref [] and world = ref [] in
   let add name e =
     let text = name ^ ": " ^ F.event_text e in
-    if M.world_event e then world := text :: !world else program := text :: !program in
+    if Rapid_runtime.Event.world_event e then world := text :: !world else program := text :: !program in
   (add, fun () -> List.rev_append !program ("-- the world's events --" :: List.rev !world))
 
-let observed events (o : M.outcome) task_outcomes =
+let observed events (o : Rapid_runtime.Outcome.t) task_outcomes =
   let outcomes = List.map (fun (name, o) -> name ^ " " ^ F.outcome_text o) task_outcomes in
-  let finished = match o with M.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
-  let stuck = List.exists (fun (_, o) -> match o with M.Stuck _ -> true | _ -> false) task_outcomes in
+  let finished = match o with Rapid_runtime.Outcome.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
+  let stuck = List.exists (fun (_, o) -> match o with Rapid_runtime.Outcome.Stuck _ -> true | _ -> false) task_outcomes in
   let outcome = F.outcome_text o in
   { F.events = events @ outcomes;
     outcome = (if stuck && not (String.length outcome >= 5 && String.sub outcome 0 5 = "stuck")
@@ -65,19 +66,28 @@ let observed events (o : M.outcome) task_outcomes =
 
 (* Both engines load several tasks as Task_set.start does: its refusals, as the fuzzer reports
    them; each run has a world and a motion of its own. *)
-let tasks_refused : TS.failure -> F.failure = function
+let tasks_refused : TL.failure -> F.failure = function
   | Load (name, f) -> (match F.refused f with F.Refused m -> F.Refused (name ^ ": " ^ m) | e -> e)
   | Refused m -> F.Refused m
 
 let tasks_world (c : Fuzz_case.t) io =
-  (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_semantics.Motion_primitives.create ())
+  (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_installed.Motion_routines.create ())
+
+(* Loaded as for either engine, and started by one. *)
+let start_tasks (c : Fuzz_case.t) io specs start =
+  let world, motion = tasks_world c io in
+  match TL.load ~allow_unknown:c.options.allow_unknown ~io ~world ~motion specs with
+  | Error f -> Error (tasks_refused f)
+  | Ok l -> (
+      match start (List.map (fun (t : TL.task) -> t.rules) l.tasks) l.links with
+      | Error m -> Error (F.Refused m)
+      | Ok t -> Ok t)
 
 let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  let world, motion = tasks_world c io in
-  match TS.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
-          ~allow_unknown:c.options.allow_unknown ~io ~observe:true ?seed ~world ~motion specs with
-  | Error f -> Error (tasks_refused f)
-  | Ok (ts, _) ->
+  match start_tasks c io specs (TS.start ~limits:(Fuzz_case.limits c.options)
+                                  ~stub_unmodelled:c.options.stub_unmodelled ~observe:true ?seed) with
+  | Error f -> Error f
+  | Ok ts ->
       let add, events = streams () in
       let rec loop () =
         if TS.steps ts < max_steps then
@@ -94,15 +104,14 @@ let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
 (* The same tasks by the closure engine (Closure_tasks), in the same kind of world. [fuel] is
    each task's there, the whole run's for the machine: runs cut short are not compared. *)
 let run_tasks_closure ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  let world, motion = tasks_world c io in
-  match Rapid_semantics.Closure_tasks.start ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
-          ~allow_unknown:c.options.allow_unknown ~io ?seed ~world ~motion specs with
-  | Error f -> Error (tasks_refused f)
-  | Ok (ct, _) ->
+  match start_tasks c io specs (Rapid_closure.Closure_tasks.start ~limits:(Fuzz_case.limits c.options)
+                                  ~stub_unmodelled:c.options.stub_unmodelled ?seed) with
+  | Error f -> Error f
+  | Ok ct ->
       let add, events = streams () in
-      let r = Rapid_semantics.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
+      let r = Rapid_closure.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
       Ok (observed (events ()) r.outcome
-            (List.map (fun (t : Rapid_semantics.Closure_tasks.task_result) -> (t.name, t.task_outcome)) r.tasks))
+            (List.map (fun (t : Rapid_closure.Closure_tasks.task_result) -> (t.name, t.task_outcome)) r.tasks))
 
 let check_tasks ~max_steps (c : Fuzz_case.t) io =
   with_files c @@ fun specs ->

@@ -6,7 +6,7 @@
 val several_tasks_closure : bool ref
 (** A case of several tasks is judged on the machine (round trip, progress, determinism for its
     schedule seed and for round robin) and, while this holds ([true] unless a caller turns it
-    off), compared with the closure engine's run of the same tasks ({!Rapid_semantics.Closure_tasks})
+    off), compared with the closure engine's run of the same tasks ({!Rapid_closure.Closure_tasks})
     for each of those schedules: the events of every task, each prefixed by its task's name, as
     two streams (the program's and the world's), and every task's outcome. *)
 

@@ -10,7 +10,7 @@ let default_options =
   { allow_unknown = false; stub_unmodelled = false; max_time = None; max_memory = None; max_call_depth = None }
 
 let limits o =
-  let d = Rapid_semantics.Machine.default_limits in
+  let d = Rapid_runtime.Limits.default in
   { d with max_call_depth = Option.value o.max_call_depth ~default:d.max_call_depth;
            max_memory = Option.value o.max_memory ~default:d.max_memory }
 

@@ -15,8 +15,8 @@ type options = {
 val default_options : options
 (** As [rapid-sem run] without options. *)
 
-val limits : options -> Rapid_semantics.Machine.limits
-(** The machine's limits the options ask for (the others as {!Rapid_semantics.Machine.default_limits}). *)
+val limits : options -> Rapid_runtime.Limits.t
+(** The machine's limits the options ask for (the others as {!Rapid_runtime.Limits.default}). *)
 
 val arguments : options -> string list
 (** The options as [rapid-sem run] takes them. *)

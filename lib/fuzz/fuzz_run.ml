@@ -21,11 +21,11 @@ let failure_to_string = function
   | Engines_differ m -> "the engines differ: " ^ m
   | Round_trip m -> "the printer's round trip fails: " ^ m
 
-type engine = { engine_name : string; run : Rapid_semantics.Ir.program -> max_steps:int -> observed }
+type engine = { engine_name : string; run : Rapid_runtime.Ir.program -> max_steps:int -> observed }
 
 let place at = Source.to_string at
 
-let event_text (e : M.event) =
+let event_text (e : Rapid_runtime.Event.t) =
   match e with
   | Output s -> "output " ^ String.escaped s
   | Erase -> "erase"
@@ -46,10 +46,10 @@ let event_text (e : M.event) =
   | Trap_entered { number; trap; time } -> Printf.sprintf "trap-entered %s %d at %g" trap number time
   | Trap_left { trap; time } -> Printf.sprintf "trap-left %s at %g" trap time
   | Stubbed { routine; at } -> Printf.sprintf "stubbed %s %s" routine (place at)
-  | Motion m -> Rapid_semantics.Motion_primitives.event_to_string m
-  | Observed o -> Rapid_semantics.Observation.to_string o
+  | Motion m -> Rapid_observable.Motion_event.to_string m
+  | Observed o -> Rapid_runtime.Observation.to_string o
 
-let outcome_text (o : M.outcome) =
+let outcome_text (o : Rapid_runtime.Outcome.t) =
   match o with
   | Running -> "running"
   | Ended -> "ended"
@@ -85,7 +85,7 @@ let mentions word text =
   let rec go i = i + n <= m && (String.sub text i n = word || go (i + 1)) in
   go 0
 
-let installed = lazy (Rapid_semantics.Session.installed ~io ())
+let installed = lazy (Rapid_load.Session.installed ~io ())
 
 (* What a scenario runs with (Fuzz_case): its stimulus, limits and options; the engines read it,
    so that their type stays that of one program. *)
@@ -108,14 +108,15 @@ let new_world () =
    a step (doc/semantics.md, "What is compared"); each stream must be the same. *)
 let streams () =
   let program = ref [] and world = ref [] in
-  let add e = if M.world_event e then world := event_text e :: !world else program := event_text e :: !program in
+  let add e = if Rapid_runtime.Event.world_event e then world := event_text e :: !world else program := event_text e :: !program in
   let result () = List.rev_append !program ("-- the world's events --" :: List.rev !world) in
   (add, result)
 
 let machine =
   let run program ~max_steps =
     let world = new_world () and o = !setting.s_options in
-    match M.start ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled ~world ~observe:true
+    let host = (Rapid_run.Run.setup ~controller:world ()).host in
+    match M.start ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled ~host ~observe:true
             program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok cfg ->
@@ -137,8 +138,8 @@ let closure =
   let run program ~max_steps =
     let add, events = streams () in
     let world = new_world () and o = !setting.s_options in
-    match Rapid_semantics.Closure_engine.run ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled
-            ~fuel:max_steps ~observe:true ~world ~on_event:add
+    match Rapid_closure.Closure_engine.run ~limits:(Fuzz_case.limits o) ~stub_unmodelled:o.stub_unmodelled
+            ~fuel:max_steps ~observe:true ~host:(Rapid_run.Run.setup ~controller:world ()).host ~on_event:add
             program ~entry:"main" with
     | Error m -> { events = []; outcome = "cannot start: " ^ m; finished = true }
     | Ok r ->
@@ -166,14 +167,14 @@ let compare_observed name (a : observed) (b : observed) =
 
 (* As Session.load_modules, over the fuzzer's installed environment (a scenario's stimulus
    declares the same signals, so the same environment serves it). *)
-let load_modules ?(allow_unknown = false) ?(io = io) modules : (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result =
+let load_modules ?(allow_unknown = false) ?(io = io) modules : (Rapid_load.Session.loaded, Rapid_load.Session.failure) result =
   match Lazy.force installed with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->
       let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
       if Rapid_typing.Check.errors result <> [] then Error (Static result.reports)
       else
-        match Rapid_semantics.Session.lower ~io ~installed ~modules result with
+        match Rapid_load.Session.lower ~io ~installed ~modules result with
         | Ok program -> Ok { program; warnings = result.reports; unknown_summary = None }
         | Error reports -> Error (Static (result.reports @ reports))
 
@@ -187,7 +188,7 @@ let round_trip ~name m =
   | Ok m' when not (Ast_erase.equal m m') -> Error (Round_trip (name ^ ": the printed module parses to another tree"))
   | Ok _ -> Ok ()
 
-let refused : Rapid_semantics.Session.failure -> failure = function
+let refused : Rapid_load.Session.failure -> failure = function
   | Front_end ds -> Refused (String.concat "; " (List.map Diagnostic.to_string ds))
   | Static rs ->
       Refused (String.concat "; " (List.map Rapid_typing.Report.to_string

@@ -20,7 +20,7 @@ val failure_to_string : failure -> string
 
 type engine = {
   engine_name : string;
-  run : Rapid_semantics.Ir.program -> max_steps:int -> observed;
+  run : Rapid_runtime.Ir.program -> max_steps:int -> observed;
 }
 
 val io : Rapid_controller.Io_config.t
@@ -38,13 +38,13 @@ val io_text_for : string -> string
     signals without the stimulus, whose changes such a program cannot react to and which only
     the machine makes (doc/fuzz-campaign.md). Saved beside each failure. *)
 
-val load : Rapid_syntax.Ast.module_declaration -> (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result
-(** As {!Rapid_semantics.Session.load_modules} with {!io}, over one installed environment made
+val load : Rapid_syntax.Ast.module_declaration -> (Rapid_load.Session.loaded, Rapid_load.Session.failure) result
+(** As {!Rapid_load.Session.load_modules} with {!io}, over one installed environment made
     once, so that the checker and the lowering share their work on it between programs. *)
 
 val load_modules :
   ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> Rapid_syntax.Ast.module_declaration list ->
-  (Rapid_semantics.Session.loaded, Rapid_semantics.Session.failure) result
+  (Rapid_load.Session.loaded, Rapid_load.Session.failure) result
 (** {!load} of several modules of one task buffer, with the checker's [--allow-unknown] and a
     stimulus of the same signals as {!io} (default {!io}). *)
 
@@ -52,8 +52,8 @@ val with_run_options : io:Rapid_controller.Io_config.t -> Fuzz_case.options -> (
 (** [f ()] with {!machine} and {!closure} running in a world of [io] with the case's limits and
     options (max time, memory, call depth, stubs); afterwards as before. *)
 
-val event_text : Rapid_semantics.Machine.event -> string
-val outcome_text : Rapid_semantics.Machine.outcome -> string
+val event_text : Rapid_runtime.Event.t -> string
+val outcome_text : Rapid_runtime.Outcome.t -> string
 (** An event and an outcome as {!observed} holds them. *)
 
 val note_rule : string -> unit
@@ -68,7 +68,7 @@ val machine : engine
 (** The small-step machine, the definition. *)
 
 val closure : engine
-(** The closure engine ({!Rapid_semantics.Closure_engine}), fuel [max_steps]. A run that
+(** The closure engine ({!Rapid_closure.Closure_engine}), fuel [max_steps]. A run that
     exhausts its fuel or a resource, or reaches the controller or motion (which it leaves to the
     machine), is not finished and so not compared. *)
 
@@ -76,12 +76,12 @@ val round_trip : name:string -> Rapid_syntax.Ast.module_declaration -> (unit, fa
 (** The printer's round trip of a parsed module: its printed text parses to the same tree,
     locations aside. *)
 
-val refused : Rapid_semantics.Session.failure -> failure
+val refused : Rapid_load.Session.failure -> failure
 (** A load's failure as the fuzzer reports it (static errors only, not warnings). *)
 
 val is_stuck : observed -> bool
 
-val judge_runs : engines:engine list -> max_steps:int -> Rapid_semantics.Ir.program -> (observed, failure) result
+val judge_runs : engines:engine list -> max_steps:int -> Rapid_runtime.Ir.program -> (observed, failure) result
 (** Progress, determinism (the machine runs it twice) and each engine's agreement with the
     machine (when both finished), on a loaded program; [Ok] with the machine's observation. *)
 

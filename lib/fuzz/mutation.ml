@@ -1,4 +1,4 @@
-module Ir = Rapid_semantics.Ir
+module Ir = Rapid_runtime.Ir
 
 type t = Trynext_as_retry | For_skips_last
 
@@ -14,7 +14,7 @@ let rec stmt m (s : Ir.stmt) : Ir.stmt =
     | For f, For_skips_last ->
         let step = match f.step with
           | Some e -> e
-          | None -> { e = Literal (Rapid_semantics.Value.Num 1.); at = f.to_.at } in
+          | None -> { e = Literal (Rapid_runtime.Value.Num 1.); at = f.to_.at } in
         For { f with to_ = { e = Binary (Num_sub, f.to_, step); at = f.to_.at }; loop_body = block m f.loop_body }
     | For f, _ -> For { f with loop_body = block m f.loop_body }
     | If (c, a, b), _ -> If (c, block m a, block m b)

@@ -16,7 +16,7 @@ val name : t -> string
 
 val of_string : string -> t option
 
-val apply : t -> Rapid_semantics.Ir.program -> Rapid_semantics.Ir.program
+val apply : t -> Rapid_runtime.Ir.program -> Rapid_runtime.Ir.program
 
 val engine : t -> Fuzz_run.engine -> Fuzz_run.engine
 (** The engine, broken: named [ENGINE+NAME]. *)

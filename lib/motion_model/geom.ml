@@ -1,6 +1,6 @@
-type pos = { x : float; y : float; z : float }
-type orient = { q1 : float; q2 : float; q3 : float; q4 : float }
-type pose = { trans : pos; rot : orient }
+type pos = Rapid_observable.Pose.pos = { x : float; y : float; z : float }
+type orient = Rapid_observable.Pose.orient = { q1 : float; q2 : float; q3 : float; q4 : float }
+type pose = Rapid_observable.Pose.t = { trans : pos; rot : orient }
 
 let origin = { x = 0.; y = 0.; z = 0. }
 let unit_orient = { q1 = 1.; q2 = 0.; q3 = 0.; q4 = 0. }

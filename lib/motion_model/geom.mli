@@ -3,9 +3,9 @@
     poses. The num-level RAPID functions PoseMult, PoseInv, PoseVect, OrientZYX, EulerZYX,
     NOrient and Distance live in lib/semantics/library.ml; these are the model's own, in floats. *)
 
-type pos = { x : float; y : float; z : float }
-type orient = { q1 : float; q2 : float; q3 : float; q4 : float }
-type pose = { trans : pos; rot : orient }
+type pos = Rapid_observable.Pose.pos = { x : float; y : float; z : float }
+type orient = Rapid_observable.Pose.orient = { q1 : float; q2 : float; q3 : float; q4 : float }
+type pose = Rapid_observable.Pose.t = { trans : pos; rot : orient }
 
 val origin : pos
 val unit_orient : orient

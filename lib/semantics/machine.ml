@@ -6,7 +6,6 @@
 
 open Rapid_syntax
 module V = Value
-module W = Rapid_controller.World
 
 type loc = { box : V.t array; idx : int }
 
@@ -18,37 +17,13 @@ type err = { name : string; number : int; err_at : Source.region; searched : boo
              chain : string list Lazy.t; about : string option;
              asynchronous : bool  (* §7.4: TRYNEXT executes as RETRY *) }
 
-type event =
-  | Output of string
-  | Erase
-  | Event_log of Primitive.log_entry
-  | Log of string
-  | Routine_entered of string
-  | Routine_left of string
-  | Error_raised of { name : string; number : int; at : Source.region }
-  | Error_handled of { name : string; routine : string }
-  | Undo_run of string
-  | Task_ended
-  | Controller of W.observation
-  | Trap_entered of { number : int; trap : string; time : float }
-  | Trap_left of { trap : string; time : float }
-  | Stubbed of { routine : string; at : Source.region }
-  | Motion of Motion_primitives.event
-  | Observed of Observation.t
+(* The neutral types of a run (lib/runtime), whose constructors the rules write unqualified. *)
+type event = Event.t
+type outcome = Outcome.t
+type limits = Limits.t
 
-type outcome =
-  | Running
-  | Ended
-  | Stopped of { name : string; number : int; at : Source.region; chain : string list;
-                 about : string option }
-  | Resource_exhausted of string * Source.region option
-  | Unsupported of { name : string; reason : string; at : Source.region }
-  | Deadlock of string
-  | Stuck of string
-
-type limits = { max_call_depth : int; retry_limit : int; max_memory : int }
-
-let default_limits = { max_call_depth = 10_000; retry_limit = 4; max_memory = 256 * 1024 * 1024 }
+open Event
+open Outcome
 
 type activation = {
   routine : Ir.routine;
@@ -126,7 +101,7 @@ and frame =
   | K_read_signal
   | K_backward_end                      (* the end of a BACKWARD handler's run (ch. 6) *)
 
-and wait_state = { wait : W.wait; cond : Ir.expr option; mutable next_poll : float }
+and wait_state = { wait : Rapid_observable.Wait.t; cond : Ir.expr option; mutable next_poll : float }
 
 and call_state = {
   call : Ir.call;
@@ -136,7 +111,7 @@ and call_state = {
   args_kinds : Ir.reference_kind array;
   args_module_data : bool array;
   mutable args_memory : int;            (* bytes of the in arguments' copies *)
-  primitive_args : Primitive.argument array;
+  primitive_args : Argument.t array;
   mutable next : int;
 }
 
@@ -166,16 +141,14 @@ type config = {
   mutable mark : frame list;            (* the stack at the innermost statement in progress *)
   mutable focus : focus;
   mutable count : int;
-  mutable booked : int;                 (* BookErrNo *)
   mutable memory : int;                 (* bytes of RAPID data: module data and activations *)
   by_name : (string, int list) Hashtbl.t;  (* routines by lower-case name, for late binding *)
   (* Later issues: the user execution level, the motion queue, other tasks. The trap level is
      the activation's; the interrupt numbers and queue are the world's. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)
-  world : W.t;                          (* the controller around the program *)
+  host : Host.t;                        (* the world around the program: its controller and motion *)
   stub_unmodelled : bool;               (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
-  motion : Motion_primitives.state;     (* the robot and its planner (doc/motion.md) *)
   mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
   mutable kept : kept list;             (* asynchronous errors in their handlers (§7.4) *)
   mutable backward_depth : int;         (* the call depth of a BACKWARD handler running, or -1 (ch. 6) *)
@@ -339,17 +312,9 @@ let activation ~routine ~slots ~present ~kinds ~module_data ~caller ~return_to ~
     memory = 0; handling = Body; retries = 0; retried = None; resume = None;
     trap_level = (match caller with None -> false | Some c -> c.trap_level) }
 
-(* The resource limits' outcomes (§1.4), each naming the option that sets its limit. *)
-let memory_exhausted_by limits what at =
-  Resource_exhausted
-    (Printf.sprintf "%s: %s goes beyond the memory budget of %d bytes for RAPID data (--max-memory)"
-       (Source.to_string at) what limits.max_memory, Some at)
+let memory_exhausted cfg what at = Limits.memory_exhausted_by cfg.limits what at
 
-let memory_exhausted cfg what at = memory_exhausted_by cfg.limits what at
-
-let call_depth_exceeded limits =
-  Resource_exhausted
-    (Printf.sprintf "call depth beyond %d (resource exhaustion, §1.4; --max-call-depth)" limits.max_call_depth, None)
+let call_depth_exceeded = Limits.call_depth_exceeded
 
 (* Charges [bytes] of RAPID data to the activation, or says the budget does not hold them. *)
 let charge cfg (act : activation) bytes =
@@ -371,13 +336,9 @@ let rec release cfg (act : activation) =
         end in
       up inner
 
-let world_event = function Controller _ | Motion _ -> true | _ -> false
-
-let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?(cooperative = false)
-    ?(observe = false) (program : Ir.program) ~entry =
-  let motion = match motion with Some m -> m | None -> Motion_primitives.create () in
-  let program = Motion_primitives.robot_data motion program in
-  let world = match world with Some w -> w | None -> W.create Rapid_controller.Io_config.empty in
+let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = false)
+    ?(observe = false) ~(host : Host.t) (program : Ir.program) ~entry =
+  let program = host.prepare program in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
   | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
@@ -452,8 +413,8 @@ let start ?(limits = default_limits) ?world ?(stub_unmodelled = false) ?motion ?
             ~return_to:[ K_task_end ] ~caller_mark:[] in
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
-          count = 0; booked = 0; memory = !memory; by_name; unmarked = false; world;
-          stub_unmodelled; stubbed = Hashtbl.create 8; motion; move_owners = []; kept = [];
+          count = 0; memory = !memory; by_name; unmarked = false; host;
+          stub_unmodelled; stubbed = Hashtbl.create 8; move_owners = []; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
           observe; entered = false; propagated = false;
         } in
@@ -517,7 +478,7 @@ let return_from cfg value =
       (* ch. 8: after ENDTRAP or RETURN, execution goes on where the interrupt came in. *)
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
       cfg.focus <- F_next;
-      ("trap-end", [ Routine_left act.routine.name; Trap_left { trap = act.routine.name; time = W.now cfg.world } ])
+      ("trap-end", [ Routine_left act.routine.name; Trap_left { trap = act.routine.name; time = cfg.host.now () } ])
   | Some caller ->
       release cfg act;
       cfg.act <- caller;
@@ -548,36 +509,16 @@ let reference_kind cfg (p : Ir.place) (k : Ir.reference_kind) =
    that an effect is never seen before its cause (ErrWrite's entry, then the IError interrupt it
    makes occur). *)
 let flush_world cfg events =
-  match W.drain cfg.world with
+  match cfg.host.observations () with
   | [] -> ()
   | seen -> List.iter (fun o -> events := Controller o :: !events) seen
 
-let primitive_context cfg events : Primitive.context =
-  let add e = flush_world cfg events; events := e :: !events in {
-  (* The pendant shows a control character as its character code (Format.display). *)
-  output = (fun line -> add (Output (Format.display line)));
-  erase = (fun () -> add Erase);
-  log = (fun line -> add (Log line));
-  event_log = (fun entry -> add (Event_log entry));
-  book_error = (fun () -> cfg.booked <- cfg.booked + 1; 2000 + cfg.booked);
+let call_context cfg (cs : call_state) : Installed_routine.context = {
+  parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters;
+  argument_label = Installed_routine.argument_label cfg.program cs.callee cs.call.arguments;
+  book_error = cfg.host.book_error;
   error_number = (fun name -> error_number cfg name);
-  world = cfg.world;
-  parameters = [||];
-  argument_label = (fun _ -> None);
 }
-
-(* The data object an argument names, for the motion's output (p10, z10), or the line of
-   another expression (an inline target, Offs(...)). *)
-let argument_label cfg (cs : call_state) name =
-  let found = ref None in
-  Array.iteri (fun i (p : Ir.parameter) ->
-      if String.lowercase_ascii p.p_name = String.lowercase_ascii name && i < Array.length cs.call.arguments then
-        match cs.call.arguments.(i) with
-        | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
-            found := Some cfg.program.globals.(g).g_name
-        | By_value { at; _ } -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line)
-        | _ -> ()) cs.callee.parameters;
-  !found
 
 let exec_ref : (config -> Ir.stmt -> string * event list) ref = ref (fun _ _ -> ("", []))
 
@@ -610,68 +551,54 @@ let raise_to_user_ref : (config -> call_state -> string * event list) ref = ref 
 let call_primitive cfg (cs : call_state) name =
   if String.length name = 11 && String.lowercase_ascii name = "raisetouser" then !raise_to_user_ref cfg cs else
   let events = ref [] in
-  let ctx = { (primitive_context cfg events) with
-              parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters } in
-  let ctx = { ctx with argument_label = argument_label cfg cs } in
   let before = if cfg.observe then Observation.references cs.primitive_args else [] in
-  let standstill () = Rapid_motion_model.Planner.finished_by (Motion_primitives.planner cfg.motion) in
-  let exhausted = ref None in
-  let result = match Task_primitives.call ~standstill ctx name cs.primitive_args with
-    | Some r -> r
-    | None -> match Motion_primitives.call ctx cfg.motion name cs.primitive_args with
-    | exception Motion_primitives.History_exhausted m -> exhausted := Some m; Primitive.Returned None
-    | Some r -> r
-    | None -> match Io_primitives.call ctx name cs.primitive_args with
-    | Some r -> r
-    | None -> match Service_primitives.call ctx name cs.primitive_args with
-      | Some r -> r
-      | None -> Primitive.call ctx name cs.primitive_args in
-  flush_world cfg events;
+  let entry = cfg.host.routine name in
+  let outcome = match entry with
+    | Some entry -> entry.call (call_context cfg cs) cs.primitive_args
+    | None -> { Installed_routine.result = Not_modelled; events = []; new_move = None } in
+  (* What the world observed before the call comes before what the call made observable (a
+     routine that reaches the world has its observations among its events already). *)
+  if outcome.events <> [] then begin
+    flush_world cfg events;
+    events := List.rev_append outcome.events !events
+  end;
   (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
   List.iter (fun (box, idx) ->
       events := List.rev_append (observed_store cfg { box; idx } box.(idx)) !events) (Observation.changed before);
   (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
-  (match Motion_primitives.take_new_move cfg.motion with
-   | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < 63) cfg.move_owners
+  (match outcome.new_move with
+   | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < Limits.move_owners - 1) cfg.move_owners
    | None -> ());
-  match !exhausted with
-  | Some m ->
+  match outcome.result with
+  | History_exhausted m ->
       (* The history --samples or rapid-sem motion keeps, beyond its budget (doc/motion.md). *)
-      cfg.focus <- F_done (Resource_exhausted (Source.to_string cs.call.call_at ^ ": " ^ m, Some cs.call.call_at));
+      cfg.focus <- F_done (Outcome.motion_history_exhausted m cs.call.call_at);
       ("motion-history-exhausted", List.rev !events)
-  | None ->
-  match result with
-  | Primitive.Wait wait ->
+  | Wait { wait; first_poll } ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
-      let cond =
-        if wait.poll = None then None
-        else
-          let found = ref None in
-          Array.iteri (fun i (p : Ir.parameter) ->
-              if String.lowercase_ascii p.p_name = "cond" then
-                match cs.call.arguments.(i) with Ir.By_value e -> found := Some e | _ -> ())
-            cs.callee.parameters;
-          !found in
-      let now = W.now cfg.world in
-      let next_poll = match Motion_primitives.take_first_poll cfg.motion with
+      let cond = match entry with
+        | Some entry when wait.poll <> None -> Installed_routine.condition_argument entry cs.callee cs.call.arguments
+        | _ -> None in
+      let now = cfg.host.now () in
+      let next_poll = match first_poll with
         | Some t -> Float.max t (now +. Option.value wait.poll ~default:0.)
         | None -> now +. Option.value wait.poll ~default:0. in
       push cfg (K_wait { wait; cond; next_poll });
       cfg.focus <- F_next;
       ("wait-start", List.rev !events)
-  | Primitive.Returned v ->
+  | Returned v ->
       (match cs.callee.kind, v with
        | Function, Some v -> cfg.focus <- F_value v
        | Function, None -> raise_ cfg "ERR_FNCNORET"
        | _ -> cfg.focus <- F_next);
       ("call-primitive", List.rev !events)
-  | Primitive.Failed name when Motion_primitives.take_async_raised cfg.motion ->
+  | Failed { error = name; at_move = true } ->
       (* §7.4: a \SyncLastMoveInst error, raised at the move instruction. *)
       cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
       ("async-error-at-move", List.rev !events)
-  | Primitive.Failed name -> raise_ cfg name; ("call-primitive-error", List.rev !events)
-  | Primitive.Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events @ [ Task_ended ])
-  | Primitive.Call_by_name target -> (
+  | Failed { error = name; at_move = false } -> raise_ cfg name; ("call-primitive-error", List.rev !events)
+  | Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events @ [ Task_ended ])
+  | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
       | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
@@ -683,7 +610,7 @@ let call_primitive cfg (cs : call_state) name =
           | Ok arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
               ignore rule; ("call-by-var", List.rev !events)))
-  | Primitive.Not_modelled when cfg.stub_unmodelled ->
+  | Not_modelled when cfg.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22); VAR and INOUT arguments keep their values. *)
       let key = String.lowercase_ascii name in
@@ -694,7 +621,7 @@ let call_primitive cfg (cs : call_state) name =
        | Procedure | Trap -> cfg.focus <- F_next);
       ("call-stubbed",
        List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
-  | Primitive.Retry_requested -> (
+  | Retry_requested -> (
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          there is nothing to retry: StartMove alone (R-7.6-b). *)
       match cfg.act.handling with
@@ -702,10 +629,8 @@ let call_primitive cfg (cs : call_state) name =
           let rule, more = !exec_ref cfg { Ir.s = Ir.Retry; sat = cs.call.call_at } in
           (rule, List.rev !events @ more)
       | _ -> cfg.focus <- F_next; ("call-primitive", List.rev !events))
-  | Primitive.Not_modelled ->
-      cfg.focus <- F_done (Unsupported
-                             { name = cs.callee.name; at = cs.call.call_at;
-                               reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" cs.callee.name });
+  | Not_modelled ->
+      cfg.focus <- F_done (Outcome.not_modelled cs.callee.name cs.call.call_at);
       ("call-not-modelled", List.rev !events)
 
 let begin_call cfg (call : Ir.call) =
@@ -717,7 +642,7 @@ let begin_call cfg (call : Ir.call) =
       push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                          args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
                          args_module_data = Array.make n false; args_memory = 0;
-                         primitive_args = Array.make n Primitive.Missing; next = 0 });
+                         primitive_args = Array.make n Argument.Missing; next = 0 });
       cfg.focus <- F_next;
       "call-arguments"
 
@@ -775,7 +700,7 @@ let bind_value cfg (cs : call_state) v =
     cs.args_memory <- cs.args_memory + bytes;
     cs.args_slots.(i) <- fresh_loc (V.copy v);
     cs.args_present.(i) <- true;
-    cs.primitive_args.(i) <- Primitive.Value v;
+    cs.primitive_args.(i) <- Argument.Value v;
     cs.next <- i + 1;
     true
   end
@@ -806,7 +731,7 @@ let rec settle_arguments cfg (cs : call_state) =
     | Present_switch ->
         cs.next <- i + 1;
         cs.args_present.(i) <- true;
-        cs.primitive_args.(i) <- Primitive.Switch;
+        cs.primitive_args.(i) <- Argument.Switch;
         settle_arguments cfg cs
     | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
         if not (duplicate_alternative cfg cs i) then begin
@@ -815,7 +740,7 @@ let rec settle_arguments cfg (cs : call_state) =
           cs.args_slots.(i) <- cfg.act.slots.(j);
           cs.args_kinds.(i) <- cfg.act.kinds.(j);
           cs.args_module_data.(i) <- j < Array.length cfg.act.module_data && cfg.act.module_data.(j);
-          cs.primitive_args.(i) <- Primitive.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
+          cs.primitive_args.(i) <- Argument.Location (cfg.act.slots.(j).box, cfg.act.slots.(j).idx, cfg.act.kinds.(j));
           settle_arguments cfg cs
         end
     | Pass_on _ -> absent ()
@@ -834,7 +759,7 @@ let bind_alias cfg (cs : call_state) rest l =
   | Ok () ->
       cs.args_slots.(i) <- l;
       cs.args_present.(i) <- true;
-      cs.primitive_args.(i) <- Primitive.Location (l.box, l.idx, cs.args_kinds.(i));
+      cs.primitive_args.(i) <- Argument.Location (l.box, l.idx, cs.args_kinds.(i));
       cs.next <- i + 1;
       cfg.focus <- F_next;
       ("argument-alias", [])
@@ -881,7 +806,7 @@ let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n
    the rest of its path (doc/motion.md, M-abandon). *)
 let waits_left cfg =
   List.iter (function
-      | K_wait ws -> Motion_primitives.wait_abandoned cfg.motion ws.wait ~now:(W.now cfg.world)
+      | K_wait ws -> cfg.host.wait_abandoned ws.wait
       | _ -> ()) cfg.stack
 
 let handle cfg (e : err) =
@@ -1193,7 +1118,7 @@ let leave_abandoned cfg after rule rule_entry =
        | Go_on_in_handler (s, target) ->
            if cfg.act == target then cfg.focus <- F_stmt s else cfg.focus <- F_abandon after);
       (rule, Routine_left act.routine.name
-             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = W.now cfg.world } ] else [])
+             :: (if act.routine.kind = Trap then [ Trap_left { trap = act.routine.name; time = cfg.host.now () } ] else [])
              @ (match after with
                  | Go_on_propagate e -> [ Observed (Propagated { name = e.name; number = e.number;
                                                                  routine = act.routine.name; caller = caller.routine.name }) ]
@@ -1250,7 +1175,7 @@ let next_frame cfg =
           cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
   | K_args cs :: rest -> next_argument cfg cs rest
   | K_backward_end :: rest ->
-      cfg.stack <- rest; cfg.backward_depth <- -1; Motion_primitives.set_backward cfg.motion false;
+      cfg.stack <- rest; cfg.backward_depth <- -1; cfg.host.set_backward false;
       ("backward-end", [])
   | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
   | f :: _ ->
@@ -1266,7 +1191,7 @@ let serve_interrupt cfg =
   else
     let taken = match cfg.held with
       | Some _ as h -> cfg.held <- None; h   (* taken by settling, which stopped here *)
-      | None -> W.take cfg.world in
+      | None -> cfg.host.take_interrupt () in
     match taken with
     | None -> None
     | Some (number, trap) ->
@@ -1279,7 +1204,7 @@ let serve_interrupt cfg =
         cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
         cfg.mark <- [];
         cfg.focus <- F_next;
-        Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = W.now cfg.world };
+        Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = cfg.host.now () };
                                    Routine_entered r.name ])
 
 (* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised when the program
@@ -1292,9 +1217,9 @@ let serve_interrupt cfg =
 let serve_async_error cfg =
   if cfg.act.trap_level then None
   else
-    match Motion_primitives.take_org_error cfg.motion with
+    match cfg.host.motion_error () with
     | None -> None
-    | Some (name, move, handled) ->
+    | Some { error = name; move; handled } ->
         let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true; asynchronous = true } in
         let raised = Error_raised { name = e.name; number = e.number; at = e.err_at } in
         let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
@@ -1325,9 +1250,7 @@ let serve_async_error cfg =
             Some ("async-error", [ raised; Error_handled { name = e.name; routine = h.routine.name } ])
 
 let time_exhausted cfg rule =
-  cfg.focus <- F_done (Resource_exhausted
-                         (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" (W.max_time cfg.world),
-                          None));
+  cfg.focus <- F_done (Outcome.time_limit cfg.host.max_time);
   (rule, [])
 
 (* A waiting instruction, one step at a time (doc/controller.md): interrupts come in; the wait
@@ -1341,18 +1264,18 @@ let wait_step cfg ws rest =
   match serve_async_error cfg with
   | Some r -> r
   | None -> (
-      let w = cfg.world in
-      let now = W.now w in
-      let reached t = W.seconds now >= W.seconds t in
+      let host = cfg.host in
+      let now = host.now () in
+      let reached = host.reached in
       let finish timed_out rule =
         cfg.stack <- rest;
         match ws.wait.finish ~timed_out with
         | None -> cfg.focus <- F_next; (rule, [])
-        | Some name when Motion_primitives.take_async_raised cfg.motion ->
+        | Some { error = name; at_move = true } ->
             (* §7.4: a \SyncLastMoveInst error at the move instruction the program pointer waits in. *)
             cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
             (rule, [])
-        | Some name -> raise_ cfg name; (rule, [])
+        | Some { error = name; at_move = false } -> raise_ cfg name; (rule, [])
       in
       match ws.cond with
       | Some e when reached ws.next_poll ->
@@ -1361,7 +1284,7 @@ let wait_step cfg ws rest =
       | _ when (match ws.wait.deadline with Some d -> reached d | None -> false) -> finish true "wait-timeout"
       | _ -> (
           let candidates = List.filter_map Fun.id
-              [ ws.wait.deadline; W.next_event w; (if ws.cond = None then None else Some ws.next_poll) ] in
+              [ ws.wait.deadline; host.next_event (); (if ws.cond = None then None else Some ws.next_poll) ] in
           match List.sort compare candidates with
           | l when cfg.cooperative ->
               (* ch. 14: another task may end the wait; the scheduler moves the clock when every
@@ -1372,8 +1295,8 @@ let wait_step cfg ws rest =
                                      (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
                                         now ws.wait.what));
               ("wait-deadlock", [])
-          | t :: _ when t > W.max_time w -> time_exhausted cfg "wait-time-limit"
-          | t :: _ -> W.advance_to w t; ("wait-advance", [])))
+          | t :: _ when t > host.max_time -> time_exhausted cfg "wait-time-limit"
+          | t :: _ -> host.advance_to t; ("wait-advance", [])))
 
 let next cfg =
   let statement_point = match cfg.stack with
@@ -1383,8 +1306,8 @@ let next cfg =
   if statement_point then begin
     (* Each statement entered, and each new round of a loop, takes the statement time; once:
        settling may have charged it already and stopped here (see [settle]). *)
-    if cfg.charged then cfg.charged <- false else W.statement cfg.world;
-    if W.now cfg.world > W.max_time cfg.world then time_exhausted cfg "time-limit"
+    if cfg.charged then cfg.charged <- false else cfg.host.statement ();
+    if cfg.host.now () > cfg.host.max_time then time_exhausted cfg "time-limit"
     else match serve_interrupt cfg with Some r -> r | None -> next_frame cfg
   end
   else match cfg.stack with
@@ -1410,12 +1333,10 @@ let value_step cfg v =
       | V.Handle h when String.length (V.handle_kind h) > 6 && String.sub (V.handle_kind h) 0 6 = "signal" -> (
           (* §2.16: assigning to an output signal sets it. *)
           cfg.stack <- rest;
-          let id = V.handle_id h in
-          match W.signal_kind cfg.world id, v with
-          | None, _ -> raise_ cfg "ERR_NO_ALIASIO_DEF"; ("store-signal", [])
-          | Some (DO | DI), V.Num f when f <> 0. && f <> 1. -> raise_ cfg "ERR_ARGVALERR"; ("store-signal", [])
-          | Some _, V.Num f -> W.write cfg.world id f; cfg.focus <- F_next; ("store-signal", [])
-          | _ -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", []))
+          match cfg.host.write_signal (V.Handle h) v with
+          | Ok () -> cfg.focus <- F_next; ("store-signal", [])
+          | Error "" -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", [])
+          | Error name -> raise_ cfg name; ("store-signal", []))
       | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", observed_store cfg l v))
   | K_poll ws :: K_wait _ :: rest -> (
       match bool_of v with
@@ -1423,10 +1344,10 @@ let value_step cfg v =
           cfg.stack <- rest;
           (match ws.wait.finish ~timed_out:false with
            | None -> cfg.focus <- F_next
-           | Some name -> raise_ cfg name);
+           | Some { error; _ } -> raise_ cfg error);
           ("wait-poll-true", [])
       | _ ->
-          ws.next_poll <- ws.next_poll +. Option.value ws.wait.poll ~default:W.default_poll_rate;
+          ws.next_poll <- ws.next_poll +. Option.value ws.wait.poll ~default:Rapid_observable.Wait.default_poll_rate;
           cfg.stack <- K_wait ws :: rest; cfg.focus <- F_next; ("wait-poll-false", []))
   | K_read :: _ -> cfg.focus <- F_done (Stuck "a value where a place was read"); ("stuck", [])
   | K_unary (op, _) :: rest -> (
@@ -1501,7 +1422,7 @@ let value_step cfg v =
       match num_of v with
       | Some f -> (
           match to_int f with
-          | Some n when (n >= 1 && n <= 90) || (n > 2000 && n <= 2000 + cfg.booked) ->
+          | Some n when (n >= 1 && n <= 90) || cfg.host.booked n ->
               cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); ("raise", [])
           | _ -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
       | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
@@ -1564,19 +1485,18 @@ let loc_step cfg l =
       match get l with
       | _ when reference_kind cfg target Ref_variable = Ref_persistent || not (denotes_module_data cfg target) ->
           raise_ cfg "ERR_CNTNOTVAR"; ("connect-not-variable", [])
-      | V.Num n when n <> 0. && Float.is_integer n && W.connected cfg.world (int_of_float n) ->
+      | V.Num n when n <> 0. && Float.is_integer n && cfg.host.connected (int_of_float n) ->
           raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
       | _ -> (
-          match W.connect cfg.world ~trap with
+          match cfg.host.connect ~trap with
           | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", observed_store cfg l (get l))
           | Error name -> raise_ cfg name; ("connect-inomax", [])))
   | K_read_signal :: rest -> (
       cfg.stack <- rest;
       (* §2.16: a signal in value context is its value. *)
-      match get l with
-      | V.Handle h when W.signal_kind cfg.world (V.handle_id h) <> None ->
-          cfg.focus <- F_value (V.num (W.read cfg.world (V.handle_id h))); ("signal-value", [])
-      | _ -> raise_ cfg "ERR_NO_ALIASIO_DEF"; ("signal-not-connected", []))
+      match cfg.host.read_signal (get l) with
+      | Ok v -> cfg.focus <- F_value v; ("signal-value", [])
+      | Error name -> raise_ cfg name; ("signal-not-connected", []))
   | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
 
 (* A place in focus between steps is one settling could not locate (see [settle]). *)
@@ -1655,19 +1575,19 @@ let search_step cfg (e : err) candidate =
 let raise_to_user cfg (cs : call_state) =
   let act = cfg.act in
   let arg name =
-    let found = ref Primitive.Missing in
+    let found = ref Argument.Missing in
     Array.iteri (fun i (p : Ir.parameter) ->
         if String.lowercase_ascii p.p_name = name && i < Array.length cs.primitive_args then
           found := cs.primitive_args.(i)) cs.callee.parameters;
     !found in
-  let present name = arg name <> Primitive.Missing in
+  let present name = arg name <> Argument.Missing in
   match act.handling with
   | In_handler (e, _) when act.routine.nostepin && act.routine.kind <> Trap -> (
       let number = match arg "errornumber" with
-        | Primitive.Missing -> Some e.number
+        | Argument.Missing -> Some e.number
         | Value v -> (
             match Option.bind (num_of v) to_int with
-            | Some n when (n >= 1 && n <= 90) || (n > 2000 && n <= 2000 + cfg.booked)
+            | Some n when (n >= 1 && n <= 90) || cfg.host.booked n
                           || List.exists (fun (_, m) -> m = n) cfg.program.error_numbers -> Some n
             | _ -> None)
         | _ -> None in
@@ -1743,7 +1663,7 @@ let step_unguarded cfg =
    interrupt is taken (time-limit, interrupt-serve). *)
 let interrupt_taken cfg =
   (not cfg.act.trap_level)
-  && (match W.take cfg.world with Some i -> cfg.held <- Some i; true | None -> false)
+  && (match cfg.host.take_interrupt () with Some i -> cfg.held <- Some i; true | None -> false)
 
 let rec settle cfg =
   match cfg.focus with
@@ -1802,8 +1722,8 @@ let rec settle cfg =
          limit, or the interrupt served (taken here, held for it). *)
       | K_seq (b, i) :: rest ->
           if i < Array.length b.body then begin
-            W.statement cfg.world;
-            if W.now cfg.world > W.max_time cfg.world || interrupt_taken cfg then cfg.charged <- true
+            cfg.host.statement ();
+            if cfg.host.now () > cfg.host.max_time || interrupt_taken cfg then cfg.charged <- true
             else (cfg.stack <- K_seq (b, i + 1) :: rest; cfg.focus <- F_stmt (Array.unsafe_get b.body i))
           end
           else if not (interrupt_taken cfg) then (cfg.stack <- rest; settle cfg)
@@ -1838,20 +1758,19 @@ let step cfg =
   let events = match entry with [] -> events | _ -> entry @ events in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
      while the clock moved on, at the start of the step, or as settling entered a statement. *)
-  let events = match W.drain cfg.world with
+  let events = match cfg.host.observations () with
     | [] -> events
     | seen -> List.map (fun o -> Controller o) seen @ events in
   (* The motion: moves planned, begun and ended as the clock passes them; at the end of the
      task, what the robot still does. *)
   let moved = match cfg.focus with
-    | F_done Ended -> Motion_primitives.drain cfg.motion cfg.world @ Motion_primitives.finish cfg.motion
-    | _ -> Motion_primitives.drain cfg.motion cfg.world in
+    | F_done Ended -> let rest = cfg.host.motion_finish () in cfg.host.motion_events () @ rest
+    | _ -> cfg.host.motion_events () in
   match moved with
   | [] -> (rule, events)
   | moved -> (rule, events @ List.map (fun e -> Motion e) moved)
 
-let world cfg = cfg.world
-let motion cfg = cfg.motion
+let host cfg = cfg.host
 let trap_level cfg = cfg.act.trap_level
 
 let outcome cfg = match cfg.focus with F_done o -> o | _ -> Running
@@ -2195,14 +2114,14 @@ let backward cfg =
                 push cfg (K_stmt (prev, cfg.mark)); cfg.mark <- cfg.stack;
                 push cfg K_backward_end;
                 cfg.backward_depth <- cfg.act.call_depth + 1;
-                Motion_primitives.set_backward cfg.motion true;
+                cfg.host.set_backward true;
                 cfg.focus <- F_next;
                 let callee = { r with body = handler } in
                 let n = Array.length callee.parameters in
                 push cfg (K_args { call; callee; args_slots = Array.make n (fresh_loc (V.Bool false));
                                    args_present = Array.make n false; args_kinds = Array.make n Ir.Ref_other;
                                    args_module_data = Array.make n false; args_memory = 0;
-                                   primitive_args = Array.make n Primitive.Missing; next = 0 });
+                                   primitive_args = Array.make n Argument.Missing; next = 0 });
                 settle cfg;
                 Ok "backward-call")
         | _ -> not_supported (statement_name prev ^ " cannot be executed backward")

@@ -22,71 +22,13 @@
 
 type config
 
-type event =
-  | Output of string                       (** a line written by TPWrite *)
-  | Erase                                  (** TPErase *)
-  | Event_log of Primitive.log_entry     (** ErrLog and SkipWarn: the event log (§7.5) *)
-  | Log of string                          (** ErrWrite and the like: the event log *)
-  | Routine_entered of string
-  | Routine_left of string
-  | Error_raised of { name : string; number : int; at : Rapid_syntax.Source.region }
-  | Error_handled of { name : string; routine : string }
-  | Undo_run of string
-  | Task_ended
-  | Controller of Rapid_controller.World.observation
-      (** a signal changed, an interrupt occurred or was discarded (doc/controller.md) *)
-  | Trap_entered of { number : int; trap : string; time : float }
-      (** an interrupt is served: its trap runs (ch. 8) *)
-  | Trap_left of { trap : string; time : float }
-  | Stubbed of { routine : string; at : Rapid_syntax.Source.region }
-      (** --stub-unmodelled ran an unmodelled installed routine as a no-op: once per routine,
-          at its first call *)
-  | Motion of Motion_primitives.event
-      (** a move planned, begun, ended; a path command (doc/motion.md, doc/trace-format.md) *)
-  | Observed of Observation.t
-      (** what schema rapid-sem/2 adds (doc/observable.md): errors propagated, RETRY, TRYNEXT,
-          and with [~observe] store writes, arguments and returned values *)
-
-(** How a run ends (doc/semantics.md). *)
-type outcome =
-  | Running
-  | Ended                                  (** end of the entry routine, RETURN in it, EXIT *)
-  | Stopped of { name : string; number : int; at : Rapid_syntax.Source.region;
-                 chain : string list; about : string option }
-      (** the system error handler stopped the task: the error, where it occurred, the call
-          chain at that point, innermost first, and the name the error is about (the unknown
-          data object or routine of ERR_REFUNKDAT, ERR_REFUNKFUN, ERR_REFUNKPRC, the procedure
-          name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
-  | Resource_exhausted of string * Rapid_syntax.Source.region option
-      (** call depth beyond the limit, or RAPID data or the motion history beyond the memory
-          budget: the reason, and the place when one explains it (the declaration or the
-          move beyond the budget; doc/observable.md, R-1.4-small2) *)
-  | Unsupported of { name : string; reason : string; at : Rapid_syntax.Source.region }
-      (** an installed routine rapid-sem does not model yet was called ([name] is the routine,
-          [at] the call) *)
-  | Deadlock of string                     (** a wait nothing can ever end (doc/controller.md) *)
-  | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
-
-type limits = {
-  max_call_depth : int;                    (** default 10,000 *)
-  retry_limit : int;                       (** "No Of Retry": default 4 (§7.1) *)
-  max_memory : int;
-      (** bytes of RAPID data (module data, routine data and in arguments of the active
-          routines, by the model of {!Value.bytes}): default 256 MiB *)
-}
-
-val default_limits : limits
-
-val call_depth_exceeded : limits -> outcome
-(** The outcome of a call beyond [max_call_depth] (§1.4), in the words both engines give. *)
-
-val memory_exhausted_by : limits -> string -> Rapid_syntax.Source.region -> outcome
-(** The outcome of RAPID data [what] at a place beyond [max_memory], in the words both engines
-    give. *)
+type event = Event.t
+type outcome = Outcome.t
+type limits = Limits.t
 
 val start :
-  ?limits:limits -> ?world:Rapid_controller.World.t -> ?stub_unmodelled:bool -> ?motion:Motion_primitives.state ->
-  ?cooperative:bool -> ?observe:bool -> Ir.program -> entry:string -> (config, string) result
+  ?limits:limits -> ?stub_unmodelled:bool -> ?cooperative:bool -> ?observe:bool -> host:Host.t ->
+  Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure.
     [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
@@ -99,22 +41,14 @@ val start :
     arguments of calls and the values functions return ({!Observation.t}: texts built only then,
     schema rapid-sem/2). *)
 
-val world_event : event -> bool
-(** An event of the world (signal changes, interrupts, motion) rather than of the program: the
-    two engines order each stream alike, but may interleave the two differently within a step
-    (doc/semantics.md, "What is compared"). *)
-
 val step : config -> string * event list
 (** One reduction: the name of the rule applied and what it made observable. Only valid while
     [outcome] is [Running]. *)
 
 val outcome : config -> outcome
 
-val world : config -> Rapid_controller.World.t
-(** The controller around the run: its clock, signals and interrupts. *)
-
-val motion : config -> Motion_primitives.state
-(** The robot of the run and its planner. *)
+val host : config -> Host.t
+(** The world around the run (its controller and motion), as the run was started with. *)
 
 val trap_level : config -> bool
 (** Whether the task executes at trap level (a trap, or a routine called from one; §7.2). *)

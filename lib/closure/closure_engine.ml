@@ -1,0 +1,2060 @@
+(* The second evaluator: routines compiled to closures; a statement completes by going on or by
+   RETURN, and every other transfer of control is an exception. Written from doc/semantics.md and
+   the manual; the machine is its differential partner, not its source. Where this file says
+   "rule", it names the rule of doc/semantics.md it implements. *)
+
+open Ir
+module V = Value
+module CC = Closure_controller
+module IR = Installed_routine
+
+let default_fuel = 100_000_000
+
+type result = { outcome : Outcome.t; fuel_used : int }
+
+(* Several tasks (Closure_tasks): the run hands the turn over at each statement and wait. *)
+type cooperation = {
+  share : V.t array -> unit;
+  mutable entered : bool;
+  turn : unit -> unit;
+  yield : wake:float option -> what:string -> pure:bool -> unit;
+  native_budget : int;
+}
+
+(* An error in flight (ch. 7): its name (ERR_... or the number of a user error), its number
+   (ERRNO's value), the statement where it occurred and the call chain there, innermost first. *)
+type error = {
+  name : string; number : int; at : Rapid_syntax.Source.region;
+  about : string option;              (* the unknown name, the procedure, the function (§7.1) *)
+  mutable chain : string list Lazy.t option;
+      (* filled in by the first activation that catches the error, the one it occurred in; lazy,
+         so that a raise costs the same at any depth: only a report reads the chain *)
+}
+
+(* What may happen to an activation while one of its statements runs. *)
+exception Raised of error              (* an error in this activation (§7.1) *)
+exception Leaving of error             (* RAISE; in a handler: the error leaves the routine (§4.11) *)
+exception Long_jump of int * error     (* to the error recovery point of this activation (§7.2) *)
+exception Break_loop                   (* §4.8 *)
+exception Continue_loop                (* §4.9 *)
+exception Goto_label of int * int      (* §4.7: the label's statement list and index *)
+exception Exit_task                    (* §4.12 *)
+exception Observer_failed of exn        (* raised by the caller's on_event *)
+exception Retry_signal                 (* §4.13 *)
+exception Trynext_signal               (* §4.14 *)
+exception Initial_value_failed of string * string  (* the data object, the error: nothing runs *)
+exception Halt of Outcome.t            (* the task ends where it is: system error handler, Stop, limits *)
+exception Kept_leave of int * error option
+exception Continued_leave of int * [ `Return | `Raise of error | `Exit ]
+    (* §7.3, R-7.3-p: the user level's handler that RaiseToUser \Continue ran ended otherwise
+       than by RETRY or TRYNEXT: the NOSTEPIN routines in between are dropped on the way to the
+       user routine (this level), without their UNDO handlers *)
+    (* §7.4, R-7.4-m: the handler of an asynchronous error, run while the program pointer was
+       kept in a routine the handler's activation (this level) called, ended by RETURN (None) or
+       RAISE (the error): the routines in between are abandoned on the way *)
+
+(* What only some activations need: routines with alias or optional parameters, or with an error
+   handler. Other activations share one that nothing writes. *)
+type extension = {
+  boxes : V.t array array;            (* an alias parameter's location: container ... *)
+  idx : int array;                    (* ... and index *)
+  present : bool array;               (* optional parameters present (§5.2) *)
+  bound : reference_kind array;       (* what an alias parameter is bound to *)
+  module_data : bool array;           (* whether it denotes module data (CONNECT, §4.15) *)
+  mutable retries : int;              (* RETRYs since the retried statement last completed *)
+  mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+}
+
+let shared_extension =
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None }
+
+(* The activation of a routine: its slots, and for alias parameters where their locations are. *)
+type act = {
+  routine : routine;
+  store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
+  ext : extension;
+  level : int;                        (* its place in the call chain: 0 is the entry routine *)
+  parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
+  mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
+  mutable nest : int;                 (* its share of the native stack (see native_budget) *)
+  mutable memory : int;               (* bytes of RAPID data it holds: in arguments, routine
+                                         data, itself (the memory budget) *)
+}
+
+type compiled = {
+  c_init : Rapid_syntax.Source.region -> act -> unit;  (* the call's statement, for the budget *)
+  c_body : act -> bool;
+  c_handler : (act -> bool) option;
+  c_undo : (act -> bool) option;
+  c_nest : int;                       (* the depth of its syntax tree, statements and expressions *)
+  c_value : (act -> V.t) option;
+      (* a function whose body ends in RETURN e, for the direct path: its body giving RETURN's
+         value itself, not through [result] (see [valued_body]) *)
+  c_guard : (Arith.binary * float * V.t option) option;
+      (* with [c_value], when its first statement is [IF slot1 op k RETURN e;], e the first slot
+         (None) or a literal: the comparison and k, for a call that can see it holds before the
+         activation is built (see [direct_call]) *)
+}
+
+type state = {
+  program : program;
+  globals : V.t array;
+  limits : Limits.t;
+  emit : Event.t -> unit;
+  all_events : bool;                  (* false: only output, erase and log are wanted *)
+  observe : bool;                     (* schema rapid-sem/2: stores, arguments, returned values *)
+  mutable fuel : int;
+  fuel_limit : int;
+  mutable depth : int;
+  mutable native : int;               (* the nests of the active routines *)
+  native_budget : int;
+  mutable next_interrupt : int;
+  numbers : (string, int) Hashtbl.t;  (* ERR_ names, upper case *)
+  mutable compiled : compiled Lazy.t array;
+  mutable memory : int;               (* bytes of RAPID data: module data and activations *)
+  stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
+  stubbed : (string, unit) Hashtbl.t; (* the routines stubbed so far (one event each) *)
+  host : Host.t;                      (* the world around the run: controller and motion *)
+  mutable in_trap : bool;             (* a trap runs, or a routine it called: no interrupt is served *)
+  mutable interrupts : bool;          (* some CONNECT ran: interrupts may occur *)
+  mutable observing : bool;           (* the world may have something to report *)
+  mutable quiet : int;                (* statements that may still pass uncharged (see [sync]) *)
+  mutable quiet_base : int;           (* [quiet] when the world's clock was last charged *)
+  mutable moving : bool;              (* the motion may have something to report *)
+  max_time : float;
+  mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
+  mutable serve_trap : act -> int -> int -> unit;  (* [serve_trap], tied below *)
+  mutable undoing : act list;         (* activations whose UNDO handler runs (§7.6's search) *)
+  mutable kept : act list;            (* activations in the handler of a kept asynchronous error *)
+  mutable async_errors : error list;  (* recent \SyncLastMoveInst errors: TRYNEXT as RETRY (§7.4) *)
+  mutable user_calls : (act * Rapid_syntax.Source.region) list;
+      (* §7.3: user-level activations in a call of a NOSTEPIN routine, and that call's statement *)
+  mutable resuming : (act * act) list;
+      (* §7.3: a user level's handler run by RaiseToUser \Continue, and the NOSTEPIN activation
+         its RETRY and TRYNEXT go on in *)
+  mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
+  cooperation : cooperation option;   (* one of several tasks (Closure_tasks) *)
+}
+
+(* ------------------------------------------------------------------ errors *)
+
+let number_of st name =
+  match Hashtbl.find_opt st.numbers (String.uppercase_ascii name) with
+  | Some n -> n
+  | None -> ( match int_of_string_opt name with Some n -> n | None -> 0)
+
+(* The call chain from an activation up, innermost first. *)
+let chain_of (a : act) =
+  let rec go (b : act) acc = if b.level < 0 then List.rev acc else go b.parent (b.routine.name :: acc) in
+  go a []
+
+(* The error as it was caught in activation [a]: where it occurred, if nothing caught it before. *)
+let caught (a : act) e = (match e.chain with None -> e.chain <- Some (lazy (chain_of a)) | Some _ -> ()); e
+
+let chain e = match e.chain with Some l -> Lazy.force l | None -> []
+
+let emit_raised st e =
+  if st.all_events then st.emit (Event.Error_raised { name = e.name; number = e.number; at = e.at })
+
+(* An execution error where [at] is the statement in progress. *)
+let fail ?about st ~at name =
+  let e = { name; number = number_of st name; at; about; chain = None } in
+  emit_raised st e;
+  raise (Raised e)
+
+let stopped e = Outcome.Stopped { name = e.name; number = e.number; at = e.at; chain = chain e; about = e.about }
+
+(* §7.3: the user level of an activation of a NOSTEPIN routine: the first routine above it that
+   is not one (none across a trap: its caller is no call), with the statement of its call. *)
+let user_call st (b : act) =
+  let rec go (b : act) =
+    if b.routine.kind = Trap then None
+    else
+      let c = b.parent in
+      if c.level < 0 then None
+      else if c.routine.nostepin then go c
+      else Option.map (fun at -> (c, at)) (List.assq_opt c st.user_calls) in
+  if b.routine.nostepin then go b else None
+
+(* R-7.3-o: an error the system error handler reports while NOSTEPIN routines are active is
+   reported at the call in user code, with the call chain from there. *)
+let at_user_level st (b : act) e =
+  match user_call st b with
+  | Some (u, at) -> { e with at; chain = Some (lazy (chain_of u)) }
+  | None -> e
+
+(* The system error handler stops the task (§7.1) with an error caught in activation [b]. *)
+let stop st (b : act) e = Halt (stopped (at_user_level st b (caught b e)))
+
+(* R-7.3-o: an error leaving the last NOSTEPIN routine [c] for its user-level caller is raised
+   again at the call ([at]), with the caller's call chain. *)
+let relocate st (c : act) e ~at =
+  if c.routine.nostepin && c.routine.kind <> Trap && c.parent.level >= 0 && not c.parent.routine.nostepin
+  then begin
+    let e' = { e with at; chain = Some (lazy (chain_of c.parent)) } in
+    (* Still the asynchronous error it was (§7.4: TRYNEXT as RETRY wherever it is handled). *)
+    if st.async_errors <> [] && List.memq e st.async_errors then st.async_errors <- e' :: st.async_errors;
+    e'
+  end
+  else e
+
+(* This engine recurses on the native stack (doc/semantics.md): a call beyond its budget ends
+   the run before the stack overflows; the machine keeps its continuations on the heap. *)
+let native_stack_exhausted level =
+  Outcome.Resource_exhausted
+    (Printf.sprintf "call depth %d: the native stack is exhausted (resource exhaustion, §1.4; a larger ulimit -s, \
+                     or --engine machine)" level, None)
+
+(* ------------------------------------------------------------------ the memory budget *)
+
+(* The budget of RAPID data (§1.4, doc/user-guide.md "Resources"), by the model of Value.bytes:
+   beyond it the run ends as a resource exhausted at the place, before anything is built. *)
+let memory_exhausted st what at =
+  raise (Halt (Limits.memory_exhausted_by st.limits what at))
+
+(* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
+let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
+
+(* An activation itself counts, so that a deep recursion stays within the budget too. *)
+let activation_bytes (r : routine) = 256 + 16 * r.locals
+
+(* While its arguments are bound the callee's bytes are pending, not yet in [st.memory]. *)
+let charge_pending st (c : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st what at
+  else c.memory <- c.memory + bytes
+
+(* Routine data of an active routine. *)
+let charge_active st (a : act) bytes what at =
+  if bytes > st.limits.max_memory - st.memory then memory_exhausted st what at
+  else begin a.memory <- a.memory + bytes; st.memory <- st.memory + bytes end
+
+(* For Value.to_single in the operators below: an integer of at most 24 bits is a single
+   already, and finite; it is recognised without the conversion's two calls (below 2^24 in
+   magnitude, adding and taking away 1.5 x 2^52 rounds x to an integer, exactly). *)
+let is_small_integer x = x <= 16777216. && x >= -16777216. && (x +. 0x1.8p52) -. 0x1.8p52 = x [@@inline]
+
+(* What a procedure gives back: no value. Recognised by identity. *)
+let no_value = V.String "(no value)"
+
+let v_true = V.Bool true
+let v_false = V.Bool false
+
+(* An activation's end: what it counted is given back ([pop], here to be inlined). *)
+let release st (c : act) =
+  st.depth <- c.level; st.native <- st.native - c.nest;
+  st.memory <- st.memory - c.memory; c.memory <- 0 [@@inline]
+
+(* Assignment and in parameters copy (§4.5, §5.2); only records and arrays have parts to copy. *)
+let copy (v : V.t) = match v with V.Record _ | V.Array _ -> V.copy v | _ -> v [@@inline]
+
+let fuel_out () = raise (Halt Outcome.Running)
+
+let tick st =
+  let f = st.fuel - 1 in
+  st.fuel <- f;
+  if f < 0 then fuel_out () [@@inline]
+
+let check st ~at = function Ok v -> v | Error name -> fail st ~at name
+
+(* [binary]'s num result, for the fused forms below: rounded to single (R-2.13-a), an integer
+   of at most 24 bits as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
+let single_num st ~at x =
+  if is_small_integer x then V.Num x
+  else
+    let y = Int32.float_of_bits (Int32.bits_of_float x) in
+    if Float.is_finite y then V.Num y else fail st ~at "ERR_OVERFLOW" [@@inline]
+
+(* [condition]'s comparison of two nums (§3.12). *)
+let compare_nums (op : Arith.binary) (p : float) (q : float) =
+  match op with
+  | Num_lt -> p < q
+  | Num_le -> p <= q
+  | Num_gt -> p > q
+  | Num_ge -> p >= q
+  | Equal -> p = q
+  | _ -> not (p = q) [@@inline]
+
+let is_num_comparison = function
+  | Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal -> true
+  | _ -> false
+
+(* An argument [own + k] or [own - k]: an own slot of the caller and a num literal (the step of
+   a recursion), computed in the call's closure, as [binary_literal] computes it. *)
+let own_step own (source : Closure_call.source) =
+  match source with
+  | Closure_call.Value { e = Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ },
+                                     { e = Literal (V.Num q as v); _ }); _ } when own i ->
+      Some (i, op, v, q)
+  | _ -> None
+
+(* An event of a call as the run wants it: all of them, or only what [rapid-sem run] without
+   --json shows (output, erase, log). *)
+let emit_wanted st (e : Event.t) =
+  if st.all_events then st.emit e
+  else match e with Output _ | Erase | Log _ -> st.emit e | _ -> ()
+
+let not_modelled = { IR.result = Not_modelled; events = []; new_move = None }
+
+(* ------------------------------------------------------------------ the controller *)
+
+(* What the world and the motion did since last asked, as the machine reports it after each
+   step: signal changes, interrupts, moves. *)
+let rec observe st = observe_world st; observe_motion st
+
+and observe_world st =
+  match st.host.observations () with
+  | [] -> ()
+  | seen -> if st.all_events then List.iter (fun o -> st.emit (Event.Controller o)) seen
+
+and observe_motion st =
+  if st.moving then
+    match st.host.motion_events () with
+    | [] -> ()
+    | moved -> if st.all_events then List.iter (fun m -> st.emit (Event.Motion m)) moved
+
+(* While the world has nothing scheduled and the program has not yet touched it (no stimulus,
+   no signal, no controller routine), nothing but the time limit can happen at a statement:
+   the statements are then counted here and charged to the world's clock at once, before
+   anything looks at it ([sync]). *)
+let sync st =
+  let uncharged = st.quiet_base - st.quiet in
+  if uncharged > 0 then begin st.host.statements uncharged; st.quiet_base <- st.quiet end
+
+let watch st =
+  if not st.observing then begin sync st; st.observing <- true; st.quiet <- 0; st.quiet_base <- 0 end
+
+(* ch. 8: the entry of a statement, and each new round of a loop, takes the statement time and
+   is a point of response: an interrupt queued is served there (not at trap level), then the
+   point is taken again, as the machine's settling enters the statement again after the trap.
+   Past --max-time the run ends (time-limit). *)
+let rec at_point st a =
+  sync st;
+  if not (st.host.statement_within ()) then raise (Halt (Outcome.time_limit st.host.max_time));
+  if st.observing then begin
+    observe st;
+    if st.interrupts && not st.in_trap then
+      match st.host.take_interrupt () with
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; at_point st a
+      | None -> ()
+  end
+  else begin
+    let left = st.host.statements_left () in
+    st.quiet <- left; st.quiet_base <- left
+  end
+
+(* ch. 14: where the machine's turn ends, a statement of a statement list in focus, after its
+   point of response; what happened in this task's world meanwhile is reported as the turn
+   comes back (the machine reports it after the turn's first step). The entry of the first
+   statement is the task's start's: the machine made for it took it (Closure_tasks). *)
+let entered st a =
+  match st.cooperation with
+  | None -> at_point st a
+  | Some c when not c.entered -> c.entered <- true
+  | Some c -> at_point st a; c.turn (); observe st
+
+(* [quiet] is 0 whenever the world is observed (always with several tasks). *)
+let at_statement st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else entered st a [@@inline]
+
+(* A new round of a loop: a point of response, not a statement (no turn ends there). *)
+let at_round st a = if st.quiet > 0 then st.quiet <- st.quiet - 1 else at_point st a [@@inline]
+
+(* With several tasks, where the machine's turn ends without a statement being entered: a new
+   round of a loop whose body has no statement (R-14-o), the statement RETRY runs again (in
+   focus again, its time not taken again). *)
+let pass_turn st = match st.cooperation with Some c -> c.turn (); observe st | None -> ()
+
+(* ch. 8: "after the last statement of a statement list" is a point of response too; it takes no
+   time. *)
+let rec serve_at_end st a =
+  match st.host.take_interrupt () with
+  | Some (number, trap) -> observe st; st.serve_trap a number trap; if not st.in_trap then serve_at_end st a
+  | None -> ()
+
+let at_end st a = if st.interrupts && not st.in_trap then serve_at_end st a [@@inline]
+
+(* ------------------------------------------------------------------ slots and places *)
+
+let is_alias (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
+
+(* Schema rapid-sem/2 (Observation): the texts are built only when the run observes them. The
+   roots are given as the machine gives its own, so that Observation.find names a place alike. *)
+let observe_store st (a : act) (box, i) =
+  let r = a.routine in
+  let local k =
+    if k < Array.length r.parameters && is_alias r.parameters.(k) then
+      ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
+       (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
+    else (a.store, k) in
+  let globals = st.globals in
+  let roots = { Observation.n_locals = r.locals; local; n_globals = Array.length globals;
+                global_box = (fun _ -> globals); global_idx = (fun g -> g) } in
+  st.emit (Event.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
+                                value = Observation.value box.(i) }))
+
+(* How a local slot is reached, known when the routine is compiled. *)
+type slot_access = Own | Alias | Optional_own | Optional_alias
+
+let local_access (r : routine) i =
+  if i < Array.length r.parameters then
+    let p = r.parameters.(i) in
+    match p.p_optional, is_alias p with
+    | false, false -> Own
+    | false, true -> Alias
+    | true, false -> Optional_own
+    | true, true -> Optional_alias
+  else Own
+
+(* §3.6: an index is an integer value within the declared dimension. *)
+let index st ~at (v : V.t) n =
+  match v with
+  | V.Num x | V.Dnum x ->
+      if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
+      else if x < 1. || x > float_of_int n then fail st ~at "ERR_OUTOFBND"
+      else int_of_float x - 1
+  | _ -> V.type_mismatch "index"
+
+(* The root slot of a place, for the binding of alias arguments. *)
+let rec root = function
+  | Whole s -> Some s
+  | Element (p, _) | Component (p, _) -> root p
+  | Unresolved _ -> None
+
+let rec read st (r : routine) ~at (p : place) : act -> V.t =
+  match p with
+  | Whole (Global i) -> let g = st.globals in fun _ -> g.(i)
+  | Whole (Local i) -> (
+      match local_access r i with
+      | Own -> fun a -> a.store.(i)
+      | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
+      | Optional_alias ->
+          fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Element _ | Component _ | Unresolved _ ->
+      let l = locate st r ~at p in
+      fun a -> let box, i = l a in box.(i)
+
+(* A place's location (rules place-global, place-local, place-absent, place-component,
+   place-element, index-out-of-bounds, index-not-integer, place-unknown). *)
+and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
+  match p with
+  | Whole (Global i) -> let g = st.globals in fun _ -> (g, i)
+  | Whole (Local i) -> (
+      match local_access r i with
+      | Own -> fun a -> (a.store, i)
+      | Alias -> fun a -> (a.ext.boxes.(i), a.ext.idx.(i))
+      | Optional_own -> fun a -> if a.ext.present.(i) then (a.store, i) else fail st ~at "ERR_NOTPRES"
+      | Optional_alias ->
+          fun a -> if a.ext.present.(i) then (a.ext.boxes.(i), a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Component (q, k) ->
+      let l = locate st r ~at q in
+      fun a -> let box, i = l a in (V.components box.(i), k)
+  | Element (q, indexes) ->
+      let l = locate st r ~at q in
+      let indexes = Array.map (expr st r ~at) indexes in
+      fun a ->
+        let box, i = l a in
+        let values = Array.map (fun e -> e a) indexes in
+        let n = Array.length values in
+        let rec down (container : V.t) k =
+          let elements = V.components container in
+          let j = index st ~at values.(k) (Array.length elements) in
+          if k = n - 1 then (elements, j) else down elements.(j) (k + 1)
+        in
+        down box.(i) 0
+  | Unresolved name -> fun _ -> fail ~about:name st ~at "ERR_REFUNKDAT"
+
+(* ------------------------------------------------------------------ expressions *)
+
+(* [at] is the statement evaluating the expression: where its errors occur (spec/README.md). *)
+and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
+  match e.e with
+  | Literal v -> fun _ -> v
+  | Read p -> read st r ~at p
+  | Read_signal p ->
+      (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
+      let f = read st r ~at p in
+      fun a -> let v = f a in watch st; check st ~at (st.host.read_signal v)
+  | Unary (op, x) ->
+      let x = expr st r ~at x in
+      fun a -> check st ~at (Arith.unary op (x a))
+  | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
+      let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+      binary_literal ?own st ~at op (expr st r ~at x) v q
+  | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
+  | And (x, y) ->
+      let x = expr st r ~at x and y = expr st r ~at y in
+      fun a -> if V.bool_value (x a) then y a else V.Bool false
+  | Or (x, y) ->
+      let x = expr st r ~at x and y = expr st r ~at y in
+      fun a -> if V.bool_value (x a) then V.Bool true else y a
+  | Aggregate (members, kind) ->
+      let members = Array.map (expr st r ~at) members in
+      let n = Array.length members in
+      fun a ->
+        let vs = Array.make n (V.Bool false) in
+        for k = 0 to n - 1 do vs.(k) <- members.(k) a done;
+        (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
+  | Call c -> (
+      let f = call st r ~at ~function_call:true c in
+      match c.callee with
+      | Routine k when st.program.routines.(k).primitive = None
+                       && st.program.routines.(k).kind = Function -> f  (* a RAPID function gives a value *)
+      | _ -> fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
+  | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
+  | Fitted (x, shape) ->
+      (* §3.10: an aggregate argument of a late-bound call takes its parameter's type when its
+         members fit it; otherwise the arguments do not fit the procedure. *)
+      let x = expr st r ~at x in
+      fun a -> match V.conform shape (x a) with Some v -> v | None -> fail st ~at "ERR_CALLPROC"
+
+(* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
+   programs) are computed here without building a result: the same rule as Arith's (one
+   operation in double precision rounded once to single, R-2.13-a; an infinite result is
+   ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO); every other operand goes to Arith.
+   The left operand is evaluated before the right (§3.1). *)
+and binary st ~at (op : Arith.binary) x y : act -> V.t =
+  let slow u v = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  (* An integer of at most 24 bits is a single already, and finite. *)
+  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
+  match op with
+  | Num_add -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> single (p +. q) | _ -> slow u v)
+  | Num_sub -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> single (p -. q) | _ -> slow u v)
+  | Num_mul -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> single (p *. q) | _ -> slow u v)
+  | Num_div -> fun a -> let u = x a in let v = y a in
+      (match u, v with
+       | V.Num p, V.Num q when q <> 0. -> single (p /. q)
+       | _ -> slow u v)
+  | Num_lt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p < q then v_true else v_false | _ -> slow u v)
+  | Num_le -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p <= q then v_true else v_false | _ -> slow u v)
+  | Num_gt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p > q then v_true else v_false | _ -> slow u v)
+  | Num_ge -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p >= q then v_true else v_false | _ -> slow u v)
+  | Equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_true else v_false | _ -> slow u v)
+  | Not_equal -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
+  | _ -> fun a -> let u = x a in let v = y a in slow u v
+
+(* The same with a num literal on the right, which then costs no call. *)
+and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
+  let slow u = check st ~at (Arith.binary op u v) in
+  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  (* An integer of at most 24 bits is a single already, and finite. *)
+  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
+  match op, own with
+  (* An own slot on the left is read without a call. *)
+  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p +. q) | u -> slow u)
+  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p -. q) | u -> slow u)
+  | _ ->
+  match op with
+  | Num_add -> fun a -> (match x a with V.Num p -> single (p +. q) | u -> slow u)
+  | Num_sub -> fun a -> (match x a with V.Num p -> single (p -. q) | u -> slow u)
+  | Num_mul -> fun a -> (match x a with V.Num p -> single (p *. q) | u -> slow u)
+  | _ -> binary st ~at op x (fun _ -> v)
+
+(* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
+   the comparisons of two nums, NOT, AND and OR. *)
+and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
+  let compare op x (y : Ir.expr) =
+    match op, y.e with
+    | (Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal), Literal (V.Num q as v) ->
+        (* A num literal on the right: compared without a call. *)
+        let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        let x = match own with
+          | Some i -> fun a -> a.store.(i)
+          | None -> expr st r ~at x in
+        let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op, own with
+            | Num_lt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p < q | u -> slow u)
+            | Num_gt, Some i -> fun a -> (match a.store.(i) with V.Num p -> p > q | u -> slow u)
+            | Equal, Some i -> fun a -> (match a.store.(i) with V.Num p -> p = q | u -> slow u)
+            | _ ->
+            match op with
+            | Num_lt -> fun a -> (match x a with V.Num p -> p < q | u -> slow u)
+            | Num_le -> fun a -> (match x a with V.Num p -> p <= q | u -> slow u)
+            | Num_gt -> fun a -> (match x a with V.Num p -> p > q | u -> slow u)
+            | Num_ge -> fun a -> (match x a with V.Num p -> p >= q | u -> slow u)
+            | Equal -> fun a -> (match x a with V.Num p -> p = q | u -> slow u)
+            | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
+    | _ ->
+    let x = expr st r ~at x and y = expr st r ~at y in
+    let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
+    match op with
+    | Arith.Num_lt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
+    | Num_le -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
+    | Num_gt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
+    | Num_ge -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v)
+    | Equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> p = q | _ -> slow u v)
+    | Not_equal -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Num p, V.Num q -> not (p = q) | _ -> slow u v)
+    | _ -> None
+  in
+  let general () = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
+  match e.e with
+  | Literal (V.Bool b) -> fun _ -> b
+  | Binary (op, x, y) -> (match compare op x y with Some f -> f | None -> general ())
+  | And (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a && y a
+  | Or (x, y) -> let x = condition st r ~at x and y = condition st r ~at y in fun a -> x a || y a
+  | Unary (Arith.Not, x) -> let x = condition st r ~at x in fun a -> not (x a)
+  | _ -> general ()
+
+(* ------------------------------------------------------------------ calls *)
+
+(* How the caller's slot [s] passes on to a conditional argument (§3.11): present or not. *)
+and slot_present (r : routine) s : act -> bool =
+  match s with
+  | Global _ -> fun _ -> false
+  | Local i when i >= Array.length r.parameters -> fun _ -> false
+  | Local i -> (
+      match local_access r i with
+      | Optional_own | Optional_alias -> fun a -> a.ext.present.(i)
+      | Own | Alias -> fun _ -> true)
+
+(* Whether an alias argument denotes module data, seen through the parameters it goes through
+   (§4.15: CONNECT's target). *)
+and denotes_module_data (r : routine) (p : place) : act -> bool =
+  match root p with
+  | Some (Global _) -> fun _ -> true
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.module_data.(i)
+  | _ -> fun _ -> false
+
+(* What the root of an alias argument is bound to: an alias parameter passes on its own
+   binding; anything else is what the lowering says it denotes. *)
+and effective_kind (r : routine) (p : place) (kind : reference_kind) : act -> reference_kind =
+  match root p with
+  | Some (Local i) when i < Array.length r.parameters && is_alias r.parameters.(i) -> fun a -> a.ext.bound.(i)
+  | _ -> fun _ -> kind
+
+(* One argument bound to one parameter of a RAPID routine (rules argument-value,
+   argument-bound, argument-reference, argument-alias, argument-alias-refused, argument-absent,
+   argument-switch, argument-pass-on-present, argument-pass-on-absent). *)
+and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : argument) : act -> act -> unit =
+  let p = callee.parameters.(i) in
+  (* §5.2: an in parameter is a copy of its argument, counted in the memory budget. *)
+  let what = "the copy for the parameter " ^ p.p_name in
+  let by_value f =
+    match is_alias p, p.p_optional with
+    | false, false -> fun a (c : act) ->
+        let v = f a in charge_pending st c (value_bytes v) what at; c.store.(i) <- copy v
+    | _ ->
+        fun a (c : act) ->
+          let v = f a in
+          charge_pending st c (value_bytes v) what at;
+          let v = copy v in
+          c.store.(i) <- v;
+          if is_alias p then begin
+            c.ext.boxes.(i) <- c.store; c.ext.idx.(i) <- i; c.ext.bound.(i) <- Ref_other;
+            c.ext.module_data.(i) <- false end;
+          if p.p_optional then c.ext.present.(i) <- true
+  in
+  (* An absent parameter still has storage of its type (§5.2). *)
+  let absent (c : act) =
+    charge_pending st c (V.shape_bytes p.p_default) ("the absent parameter " ^ p.p_name) at;
+    c.ext.present.(i) <- false; c.store.(i) <- V.default_of p.p_default
+  in
+  let by_reference place kind =
+    if not (is_alias p) then by_value (read st caller ~at place)
+    else
+      let l = locate st caller ~at place in
+      let kind = effective_kind caller place kind in
+      let module_data = denotes_module_data caller place in
+      (* §5.2, the execution-error cells of the access table: an INOUT parameter passes on
+         what it is bound to, which must suit the callee's mode. *)
+      let refused =
+        match root place with
+        | Some (Local s) when s < Array.length caller.parameters
+                              && caller.parameters.(s).p_mode = Rapid_typing.Tables.Mode_inout -> (
+            match p.p_mode with
+            | Mode_var -> fun (a : act) -> if a.ext.bound.(s) = Ref_persistent then Some "ERR_ARGNOTVAR" else None
+            | Mode_pers -> fun a -> if a.ext.bound.(s) = Ref_variable then Some "ERR_ARGNOTPER" else None
+            | _ -> fun _ -> None)
+        | _ -> fun _ -> None
+      in
+      fun a (c : act) ->
+        let box, j = l a in
+        (match refused a with Some name -> fail st ~at name | None -> ());
+        c.ext.boxes.(i) <- box; c.ext.idx.(i) <- j; c.ext.bound.(i) <- kind a;
+        c.ext.module_data.(i) <- module_data a;
+        if p.p_optional then c.ext.present.(i) <- true
+  in
+  match arg with
+  | Absent -> fun _ c -> absent c
+  | Present_switch -> fun _ c -> c.ext.present.(i) <- true
+  | By_value e -> by_value (expr st caller ~at e)
+  | By_reference (place, kind) -> by_reference place kind
+  | Pass_on s ->
+      let present = slot_present caller s in
+      let pass =
+        if p.p_switch then fun _ c -> c.ext.present.(i) <- true
+        else by_reference (Whole s) Ref_variable
+      in
+      (* §3.11, §5.2: of the alternatives of one optional parameter at most one is present;
+         a second made present by a conditional argument is ERR_ARGDUPCND (ch. 12). *)
+      let others = ref [] in
+      Array.iteri (fun j (q : parameter) ->
+          if j <> i && p.p_group >= 0 && q.p_group = p.p_group && j < Array.length c_arguments then
+            others := (match c_arguments.(j) with
+                | Present_switch | By_value _ | By_reference _ -> fun _ -> true
+                | Pass_on s' -> slot_present caller s'
+                | Absent -> fun _ -> false) :: !others) callee.parameters;
+      let others = !others in
+      fun a c ->
+        if present a then begin
+          if List.exists (fun f -> f a) others then fail st ~at "ERR_ARGDUPCND";
+          pass a c
+        end
+        else absent c
+
+(* An argument of an installed routine with a body in OCaml (Primitive). *)
+and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
+  : act -> Argument.t =
+  let p = callee.parameters.(i) in
+  let location place kind =
+    let l = locate st caller ~at place and kind = effective_kind caller place kind in
+    fun a -> let box, j = l a in Argument.Location (box, j, kind a)
+  in
+  match arg with
+  | Absent -> fun _ -> Argument.Missing
+  | Present_switch -> fun _ -> Argument.Switch
+  | By_value e -> let f = expr st caller ~at e in fun a -> Argument.Value (f a)
+  | By_reference (place, kind) ->
+      if is_alias p then begin
+        (* §5.2, the execution-error cells of the access table, for an installed routine's
+           parameter as for a RAPID one's: an INOUT parameter bound to a persistent passed on
+           to a VAR parameter (ITimer's interrupt), or to a variable passed on to a PERS one. *)
+        let l = location place kind and bound = effective_kind caller place kind in
+        match p.p_mode with
+        | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
+        | Mode_pers -> fun a -> (match bound a with
+            | Ref_variable | Ref_other -> fail st ~at "ERR_ARGNOTPER" | _ -> l a)
+        | _ -> l
+      end
+      else let f = read st caller ~at place in fun a -> Argument.Value (f a)
+  | Pass_on s ->
+      let present = slot_present caller s in
+      let pass =
+        if p.p_switch then fun _ -> Argument.Switch
+        else if is_alias p then location (Whole s) Ref_variable
+        else let f = read st caller ~at (Whole s) in fun a -> Argument.Value (f a)
+      in
+      fun a -> if present a then pass a else Argument.Missing
+
+(* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
+   call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
+   call-unknown-function). *)
+and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
+  match c.callee with
+  | Unknown_routine about ->
+      let name = if function_call then "ERR_REFUNKFUN" else "ERR_REFUNKPRC" in
+      fun _ -> fail ~about st ~at name
+  | Routine k -> call_routine st caller ~at ~call_at:c.call_at k c.arguments
+
+and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
+  let callee = st.program.routines.(k) in
+  match callee.primitive with
+  | Some name when String.lowercase_ascii name = "raisetouser" -> raise_to_user st caller ~at ~call_at callee arguments
+  | _ when callee.nostepin && not caller.nostepin -> user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
+  | _ -> call_routine_core st caller ~at ~call_at k arguments
+
+(* §7.3: a call from user code into a NOSTEPIN routine: the statement is remembered, for what
+   is reported at the user level (R-7.3-o). *)
+and user_level_call st ~at (f : act -> V.t) : act -> V.t =
+  fun a ->
+    st.user_calls <- (a, at) :: st.user_calls;
+    let restore () = match st.user_calls with (b, _) :: rest when b == a -> st.user_calls <- rest
+                                             | l -> st.user_calls <- List.filter (fun (b, _) -> b != a) l in
+    match f a with
+    | v -> restore (); v
+    | exception x -> restore (); raise x
+
+(* RaiseToUser (§7.3, R-7.3-m..q; rules raise-to-user-continue, raise-to-user-break-off,
+   raise-to-user-no-user-level, raise-to-user-unhandled, raise-to-user-illegal,
+   raise-to-user-misplaced): in the error handler of a NOSTEPIN routine, the error in hand (or
+   \ErrorNumber's) goes to the error handler of the user level. \BreakOff: this routine is left
+   without its UNDO handler, the NOSTEPIN routines above it run theirs, and the error jumps to
+   the user routine, raised at its call. \Continue (\Resume): the user's handler runs at once,
+   the NOSTEPIN routines kept; its RETRY and TRYNEXT go on in this routine as its own would; any
+   other end leaves the user routine, the NOSTEPIN routines dropped without UNDO. No user level,
+   or one without a free error handler: the system error handler. *)
+and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) arguments : act -> V.t =
+  let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
+  let index name =
+    let found = ref None in
+    Array.iteri (fun i (p : parameter) ->
+        if String.lowercase_ascii p.p_name = name && i < Array.length args then found := Some i) callee.parameters;
+    !found in
+  let errornumber = index "errornumber" and breakoff = index "breakoff" in
+  fun a ->
+    let arg = function Some i -> args.(i) a | None -> Argument.Missing in
+    match a.ext.current with
+    | Some e when a.routine.nostepin && a.routine.kind <> Trap -> (
+        let number = match arg errornumber with
+          | Argument.Missing -> Some e.number
+          | Value (V.Num x) when Float.is_integer x ->
+              let n = int_of_float x in
+              if (n >= 1 && n <= 90) || st.host.booked n
+                 || List.exists (fun (_, m) -> m = n) st.program.error_numbers then Some n else None
+          | _ -> None in
+        match number with
+        | None -> fail st ~at "ERR_ILLRAISE"
+        | Some n -> (
+            let name = match List.find_opt (fun (_, m) -> m = n) st.program.error_numbers with
+              | Some (name, _) -> name | None -> string_of_int n in
+            let e' = caught a { name; number = n; at = e.at; about = None; chain = None } in
+            match user_call st a with
+            | None -> raise (stop st a e')
+            | Some (user, user_at) -> (
+                let e' = { e' with at = user_at; chain = Some (lazy (chain_of user)) } in
+                let free = user.routine.error <> None && user.ext.current = None
+                           && not (List.memq user st.undoing) in
+                if not free then raise (stop st a e')
+                else if arg breakoff <> Argument.Missing then begin
+                  st.skip_undo <- a :: st.skip_undo;
+                  raise (Long_jump (user.level, e'))
+                end
+                else begin
+                  emit_raised st e';
+                  let rec index i = if st.program.routines.(i) == user.routine then i else index (i + 1) in
+                  let handler = Option.get (Lazy.force st.compiled.(index 0)).c_handler in
+                  st.resuming <- (user, a) :: st.resuming;
+                  let finish () = st.resuming <- List.filter (fun (u, _) -> u != user) st.resuming in
+                  match run_handler st handler user e' with
+                  | `Retry -> finish (); raise_notrace Retry_signal
+                  | `Trynext -> finish (); raise_notrace Trynext_signal
+                  | `Return -> finish (); raise (Continued_leave (user.level, `Return))
+                  | exception Leaving x -> finish (); raise (Continued_leave (user.level, `Raise x))
+                  | exception Exit_task -> finish (); raise (Continued_leave (user.level, `Exit))
+                  | exception x -> finish (); raise x
+                end)))
+    | _ ->
+        (* A call the checker cannot see (late binding): no error of a NOSTEPIN routine to hand
+           on (R-7.3-n). *)
+        raise (Halt (Outcome.Stopped { name = "ERR_ILLRAISE"; number = number_of st "ERR_ILLRAISE"; at = call_at;
+                                 chain = chain_of a; about = Some "RaiseToUser" }))
+
+and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
+  let callee = st.program.routines.(k) in
+  match callee.primitive with
+  | Some name ->
+      let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
+      (* The memory budget counts an installed routine's in arguments and absent parameters as
+         a RAPID routine's, while its arguments are bound. *)
+      let cost = Array.mapi (fun i arg ->
+          let p = callee.parameters.(i) in
+          let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
+          match arg with
+          | By_value _ -> fun (v : Argument.t) ->
+              (match v with Argument.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
+          | Absent -> fun _ -> absent
+          | Pass_on _ -> (function Argument.Missing -> absent | _ -> ("", 0))
+          | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
+      let n = Array.length args in
+      let entry = st.host.routine name in
+      let reach = match entry with Some e -> e.reach | None -> IR.Values in
+      (* Every installed routine finds its arguments by parameter name, and the motion names its
+         targets (as the machine's call-primitive). *)
+      let site : IR.context = {
+        parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
+        argument_label = IR.argument_label st.program callee arguments;
+        book_error = st.host.book_error;
+        error_number = number_of st } in
+      (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
+      let condition = match entry with
+        | None -> None
+        | Some e ->
+            Option.map (fun c -> let f = expr st caller ~at c in fun a -> match f a with V.Bool b -> b | _ -> false)
+              (IR.condition_argument e callee arguments) in
+      let invoke values =
+        match entry with
+        | None -> not_modelled
+        | Some e ->
+            if reach <> Values then begin watch st; if reach = Moves then st.moving <- true end;
+            e.call site values in
+      fun a ->
+        let pending = ref 0 in
+        let values = Array.make n Argument.Missing in
+        for i = 0 to n - 1 do
+          let v = args.(i) a in
+          let what, bytes = cost.(i) v in
+          if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st what at;
+          pending := !pending + bytes;
+          values.(i) <- v
+        done;
+        let before = if st.observe then Observation.references values else [] in
+        let o = invoke values in
+        (* Schema rapid-sem/2: the writes through its reference arguments, after its own events. *)
+        let stores () = if st.observe then List.iter (observe_store st a) (Observation.changed before) in
+        if reach <> Values then begin
+          (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4). *)
+          (match o.new_move with
+           | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < Limits.move_owners - 1) st.move_owners
+           | None -> ());
+          (* The machine's order within a step: the world, the routine's own events, the motion. *)
+          List.iter (function Event.Controller _ as e -> if st.all_events then st.emit e | _ -> ()) o.events;
+          observe_world st;
+          List.iter (function Event.Controller _ -> () | e -> emit_wanted st e) o.events;
+          stores ();
+          observe_motion st
+        end
+        else begin
+          List.iter (emit_wanted st) o.events;
+          stores ()
+        end;
+        primitive_outcome st caller a ~at ~call_at ~condition callee name o.result
+  | None when Closure_call.direct callee arguments <> None ->
+      direct_call st caller ~at ~r_index:k callee (Option.get (Closure_call.direct callee arguments))
+  | None ->
+      let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
+      let n = Array.length binders in
+      let shape = activation_shape callee in
+      let is_function = callee.kind = Function in
+      let code = ref None in
+      let has_init = callee.local_inits <> [] in
+      (* A plain in parameter (not optional): the argument's value is stored in its slot
+         without a binder of its own. *)
+      let plain i = match arguments.(i) with
+        | By_value e when not (is_alias callee.parameters.(i)) && not callee.parameters.(i).p_optional ->
+            Some (expr st caller ~at e)
+        | _ -> None in
+      (* The common numbers of arguments without a loop over the binders. *)
+      match binders, (if n = 1 then plain 0 else None) with
+      | [| _ |], Some f ->
+          let what = "the copy for the parameter " ^ callee.parameters.(0).p_name in
+          fun a ->
+          let v = f a in
+          let c = new_act shape callee a in
+          charge_pending st c (value_bytes v) what at;
+          c.store.(0) <- copy v;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | _ ->
+      match binders with
+      | [||] -> fun a -> enter st callee (new_act shape callee a) ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | _ ->
+          fun a ->
+            let c = new_act shape callee a in
+            for i = 0 to n - 1 do binders.(i) a c done;
+            enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+
+(* A call that needs no binder (Closure_call.direct): every argument a copy (§5.2) of a value,
+   the callee without an error handler or UNDO, so its activation shares the empty extension.
+   The call's fixed work (the copies counted in the memory budget, the call depth, the
+   activation's bytes, its unit of fuel, its share of the native stack) is done here in one
+   place, in the order [enter] does it, so that a budget runs out at the same point. *)
+and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources : Closure_call.source array) : act -> V.t =
+  let args = Array.map (function
+      | Closure_call.Value e -> expr st caller ~at e
+      | Closure_call.Read p -> read st caller ~at p) sources in
+  let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  let n = Array.length args in
+  let size = if callee.locals < 1 then 1 else callee.locals in
+  let act_bytes = activation_bytes callee in
+  let code = ref None in
+  let is_function = callee.kind = Function in
+  let has_init = callee.local_inits <> [] in
+  let limits = st.limits in
+  let call_of = "the call of " ^ callee.name in
+  let start (a : act) store pending =
+    let level = a.level + 1 in
+    if level >= limits.max_call_depth then
+      raise (Halt (Limits.call_depth_exceeded limits));
+    if act_bytes > limits.max_memory - st.memory - pending then memory_exhausted st call_of at;
+    tick st;
+    let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
+    let nest = code.c_nest in
+    if st.native + nest > st.native_budget then
+      raise (Halt (native_stack_exhausted level));
+    let memory = pending + act_bytes in
+    let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+    st.native <- st.native + nest;
+    st.memory <- st.memory + memory;
+    st.depth <- level + 1;
+    entered st callee c ~code ~at ~is_function ~has_init
+  in
+  (* A run that observes nothing (schema rapid-sem/2) needs of [entered] only the routine's
+     entry and exit, built once here: when every budget has room, the call is made here with
+     one test each; otherwise [start] takes it, to stop at the budget that runs out first. *)
+  let entered_event = Event.Routine_entered callee.name and left_event = Event.Routine_left callee.name in
+  let events = st.all_events and observe = st.observe in
+  (* A valued body's call, once its code is known ([fast]), with the budgets' bounds computed
+     once: [quick]'s tests, in a form that needs fewer loads. *)
+  let max_depth = limits.max_call_depth and room = limits.max_memory - act_bytes
+  and native_budget = st.native_budget in
+  let fast = ref None in
+  let leaf = ref None in   (* the callee's [c_guard], when [fast] is known *)
+  let valued (a : act) store pending code body =
+    let level = a.level + 1 and nest = code.c_nest in
+    if level < max_depth && st.memory + pending <= room && st.fuel > 0 && st.native + nest <= native_budget
+    then begin
+      st.fuel <- st.fuel - 1;
+      let memory = pending + act_bytes in
+      let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+      st.native <- st.native + nest;
+      st.memory <- st.memory + memory;
+      st.depth <- level + 1;
+      if events then st.emit entered_event;
+      match if has_init then code.c_init at c; body c with
+      | v -> release st c; if events then st.emit left_event; v
+      | exception left -> left_by st code c left
+    end
+    else start a store pending
+  in
+  let quick (a : act) store pending =
+      match !fast with
+      | Some (code, body) -> valued a store pending code body
+      | None ->
+      match !code with
+      | Some code when not observe ->
+          let level = a.level + 1 and nest = code.c_nest in
+          if level < limits.max_call_depth && act_bytes <= limits.max_memory - st.memory - pending
+             && st.fuel > 0 && st.native + nest <= st.native_budget then begin
+            st.fuel <- st.fuel - 1;
+            let memory = pending + act_bytes in
+            let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+            st.native <- st.native + nest;
+            st.memory <- st.memory + memory;
+            st.depth <- level + 1;
+            if events then st.emit entered_event;
+            match code.c_value with
+            | Some body -> (
+                fast := Some (code, body);
+                leaf := (if has_init then None else code.c_guard);
+                match if has_init then code.c_init at c; body c with
+                | v -> release st c; if events then st.emit left_event; v
+                | exception left -> left_by st code c left)
+            | _ ->
+            match if has_init then code.c_init at c; code.c_body c with
+            | true ->
+                release st c;
+                if events then st.emit left_event;
+                if is_function then fail ~about:callee.name st ~at "ERR_FNCNORET" else no_value
+            | false -> release st c; if events then st.emit left_event; c.result
+            | exception left -> left_by st code c left
+          end
+          else start a store pending
+      | _ -> start a store pending
+  in
+  let fresh () = match size with
+    | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+    | _ -> Array.make size v_false [@@inline] in
+  match args with
+  | [||] -> fun a -> quick a (fresh ()) 0
+  | [| _ |] when size = 1 && own_step (fun i -> local_access caller i = Own) sources.(0) <> None ->
+      let i, op, v, q = Option.get (own_step (fun i -> local_access caller i = Own) sources.(0)) in
+      let w0 = whats.(0) in
+      let slow u = check st ~at (Arith.binary op u v) in
+      let sub = op = Arith.Num_sub in
+      let stepped a v =
+        if 32 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+        quick a [| v |] 32 in
+      fun a -> (
+        match a.store.(i) with
+        | V.Num p -> (
+            (* a num: 32 bytes (value_bytes), its copy itself *)
+            let v = single_num st ~at (if sub then p -. q else p +. q) in
+            match !fast with
+            | Some (code, body) ->
+                (* [valued] here, the copy's bytes tested with the activation's: when any test
+                   fails, [stepped] makes them one by one, as the general path *)
+                let level = a.level + 1 and nest = code.c_nest in
+                if level < max_depth && st.memory + 32 <= room && st.fuel > 0 && st.native + nest <= native_budget
+                then begin
+                  match !leaf, v with
+                  | Some (op, k, w), V.Num x
+                    when (if op == Arith.Num_lt then x < k else compare_nums op x k) && st.fuel > 1 && st.quiet > 0 ->
+                      (* The callee's first statement returns (§4.17, §4.10): its unit of fuel and
+                         the call's, its entry (no point of response falls due, ch. 8: [quiet]),
+                         its value; what the activation would have counted is given back as it
+                         returns, so it is not built. *)
+                      st.fuel <- st.fuel - 1;
+                      if events then st.emit entered_event;
+                      tick st; at_statement st a;
+                      st.depth <- level;
+                      if events then st.emit left_event;
+                      (match w with None -> v | Some w -> w)
+                  | _ ->
+                  st.fuel <- st.fuel - 1;
+                  let memory = 32 + act_bytes in
+                  let c = { routine = callee; store = [| v |]; ext = shared_extension; level; parent = a;
+                            result = no_value; nest; memory } in
+                  st.native <- st.native + nest;
+                  st.memory <- st.memory + memory;
+                  st.depth <- level + 1;
+                  if events then st.emit entered_event;
+                  match if has_init then code.c_init at c; body c with
+                  | v -> release st c; if events then st.emit left_event; v
+                  | exception left -> left_by st code c left
+                end
+                else stepped a v
+            | None -> stepped a v)
+        | u ->
+            let v = slow u in
+            let b = value_bytes v in
+            if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
+            quick a [| copy v |] b)
+  | [| f0 |] -> let w0 = whats.(0) in fun a ->
+      let v = f0 a in
+      let b = value_bytes v in
+      if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
+      let store = match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
+      quick a store b
+  | _ -> fun a ->
+      let store = fresh () in
+      let pending = ref 0 in
+      for i = 0 to n - 1 do
+        let v = args.(i) a in
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
+        pending := !pending + b;
+        store.(i) <- copy v
+      done;
+      quick a store !pending
+
+and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (callee : routine) name
+  : IR.result -> V.t = function
+  | Returned (Some v) -> v
+  | Returned None -> (match callee.kind with Function -> fail st ~at "ERR_FNCNORET" | _ -> no_value)
+  | Failed { error; at_move = true } -> async_at_move st ~at error
+  | Failed { error; at_move = false } -> fail st ~at error
+  | Call_by_name target -> (
+      (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
+      late_target st caller ~at ~call_at target [||] caller_act)
+  | Stop_requested -> if st.all_events then st.emit Event.Task_ended; raise (Halt Outcome.Ended)
+  | Not_modelled when st.stub_unmodelled ->
+      (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
+         initial value of its type (§2.22). *)
+      let key = String.lowercase_ascii name in
+      if not (Hashtbl.mem st.stubbed key) then begin
+        Hashtbl.replace st.stubbed key ();
+        if st.all_events then st.emit (Event.Stubbed { routine = callee.name; at = call_at })
+      end;
+      (match callee.kind with
+       | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
+       | Procedure | Trap -> no_value)
+  | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
+  | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
+  | History_exhausted m -> raise (Halt (Outcome.motion_history_exhausted m call_at))
+  | Retry_requested ->
+      (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
+         StartMove alone (R-7.6-b). *)
+      if caller_act.ext.current = None then no_value
+      else if caller_act.ext.retries >= st.limits.retry_limit then fail st ~at:call_at "ERR_EXCRTYMAX"
+      else begin caller_act.ext.retries <- caller_act.ext.retries + 1; raise_notrace Retry_signal end
+
+(* A waiting instruction (doc/controller.md): interrupts are served while it waits, and an
+   asynchronous error of the motion is raised at it (§7.4, §7.6). A wait that an error or a long
+   jump leaves is abandoned: a move instruction's move is cancelled (M-abandon). *)
+and wait st (a : act) ~at (wt : Rapid_observable.Wait.t) ~first_poll ~condition =
+  let condition = if wt.poll = None then None else Option.map (fun f () -> f a) condition in
+  let serve () =
+    if st.in_trap then false
+    else
+      match (if st.interrupts then st.host.take_interrupt () else None) with
+      | Some (number, trap) -> observe st; st.serve_trap a number trap; true
+      | None -> (
+          match st.host.motion_error () with
+          | None -> false
+          | Some { error; move; handled } -> kept_async_error st a ~at error move handled)
+  in
+  let yield = Option.map (fun c -> c.yield) st.cooperation in
+  let spend () = tick st in
+  match CC.wait ?yield st.host wt ~first_poll ~condition ~serve ~observe:(fun () -> observe st) ~spend with
+  | Finished None -> ()
+  | Finished (Some { error; at_move = true }) -> ignore (async_at_move st ~at error)
+  | Finished (Some { error; at_move = false }) -> fail st ~at error
+  | Halted o -> raise (Halt o)
+  | exception ((Raised _ | Leaving _ | Long_jump _ | Exit_task | Kept_leave _) as left) ->
+      st.host.wait_abandoned wt;
+      raise left
+
+(* §7.4 (\SyncLastMoveInst): the error raised at the move instruction, as any error there, but
+   remembered as asynchronous: TRYNEXT in its handler executes as RETRY (R-7.4-m). *)
+and async_at_move : 'a. state -> at:Rapid_syntax.Source.region -> string -> 'a = fun st ~at name ->
+  let e = { name; number = number_of st name; at; about = None; chain = None } in
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
+  emit_raised st e;
+  raise (Raised e)
+
+(* §7.4 (\SyncOrgMoveInst), §7.6 (collisions), rules async-error, async-error-unhandled: the
+   error is raised at the statement the program pointer [a] waits in. Its handler is looked for
+   in §7.6's order (R-7.6-m): the routine whose move instruction made the path and up from it
+   (when that call has ended, a \SyncOrgMoveInst error starts at its nearest caller still in the
+   chain; a collision goes on to step 3), then the program pointer's routine and up; an
+   activation already in its error or UNDO handler does not take it. None: the system error
+   handler (step 5), at once, without UNDO handlers. Found: its handler runs while the program
+   pointer stays where it is (R-7.4-m); RETRY and TRYNEXT resume the wait ([true]: the wait
+   goes on, rules async-retry-resume, async-trynext-resume); RETURN and RAISE leave by
+   [Kept_leave] (async-handler-leave), EXIT by [Exit_task] (async-exit): the routines in
+   between are abandoned with their UNDO handlers on the way. *)
+and kept_async_error st (a : act) ~at name move handled =
+  let e = caught a { name; number = number_of st name; at; about = None; chain = None } in
+  (* Handled elsewhere than in the kept handler (propagated, carried by a long jump), TRYNEXT
+     executes as RETRY, as for any asynchronous error (R-7.4-m). *)
+  st.async_errors <- e :: List.filteri (fun i _ -> i < 15) st.async_errors;
+  emit_raised st e;
+  let rec in_chain (x : act) (b : act) = b.level >= 0 && (b == x || in_chain x b.parent) in
+  let rec up acc (b : act) = if b.level < 0 then List.rev acc else up (b :: acc) b.parent in
+  let rec live (b : act) = if b.level < 0 then [] else if in_chain b a then up [] b else live b.parent in
+  let owner = match move with Some id -> List.assoc_opt id st.move_owners | None -> None in
+  let from_motion = match owner with
+    | Some o when in_chain o a -> up [] o
+    | Some o when name <> "ERR_COLL_STOP" -> live o.parent
+    | _ -> [] in
+  let takes (b : act) =
+    b.routine.error <> None && b.ext.current = None && not (List.memq b st.undoing) in
+  match (if handled then List.find_opt takes (from_motion @ up [] a) else None) with
+  | None -> raise (stop st a e)
+  | Some h ->
+      let rec index i = if st.program.routines.(i) == h.routine then i else index (i + 1) in
+      let handler = Option.get (Lazy.force st.compiled.(index 0)).c_handler in
+      st.kept <- h :: st.kept;
+      let finish () = st.kept <- List.filter (fun k -> k != h) st.kept in
+      match run_handler st handler h e with
+      | `Retry | `Trynext -> finish (); true
+      | `Return -> finish (); raise (Kept_leave (h.level, None))
+      | exception Leaving e' -> finish (); raise (Kept_leave (h.level, Some e'))
+      | exception left -> finish (); raise left
+
+(* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
+   arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
+and late_target st (caller : routine) ~at ~call_at name (args : late_argument array) : act -> V.t =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let routines = st.program.routines in
+  let candidates =
+    match String.index_opt name ':' with
+    | Some i ->
+        let m = String.sub name 0 i and n = String.sub name (i + 1) (String.length name - i - 1) in
+        List.filter (fun k -> same routines.(k).module_name m && same routines.(k).name n)
+          (List.init (Array.length routines) Fun.id)
+    | None ->
+        let all = List.filter (fun k -> same routines.(k).name name) (List.init (Array.length routines) Fun.id) in
+        let own = List.filter (fun k -> same routines.(k).module_name caller.module_name) all in
+        let visible = List.filter (fun k -> not routines.(k).local) all in
+        own @ visible
+  in
+  let about = name in
+  match candidates with
+  | [] -> fun _ -> fail ~about st ~at "ERR_REFUNKPRC"
+  | k :: _ ->
+      let r = routines.(k) in
+      if r.kind <> Procedure then fun _ -> fail ~about st ~at "ERR_CALLPROC"
+      else
+        (* The arguments are checked as a direct call's (§4.6). A data reference through an alias
+           parameter of the caller denotes what the parameter is bound to (§5.2), known only
+           when the call runs: such a call is bound at each call, any other once. *)
+        let through_alias (la : late_argument) =
+          match la.late_value with
+          | Late_expr { e = Read p | Read_signal p; _ } -> (
+              match root p with
+              | Some (Local i) -> i < Array.length caller.parameters && is_alias caller.parameters.(i)
+              | _ -> false)
+          | _ -> false in
+        let bound kind =
+          match Late_binding.bind r ~kind args with
+          | Error error -> fun _ -> fail ~about st ~at error
+          | Ok arguments -> call_routine st caller ~at ~call_at k arguments in
+        if Array.exists through_alias args then
+          fun a ->
+            let kind p k =
+              match root p with
+              | Some (Local i) when i < Array.length caller.parameters && is_alias caller.parameters.(i) -> a.ext.bound.(i)
+              | _ -> k in
+            bound kind a
+        else bound (fun _ k -> k)
+
+(* A new activation: fresh routine data (§2.21). *)
+and activation_shape (r : routine) =
+  let n = Array.length r.parameters in
+  let aliases = Array.exists is_alias r.parameters in
+  let optional = Array.exists (fun (p : parameter) -> p.p_optional) r.parameters in
+  (n, aliases, optional, (if r.locals < 1 then 1 else r.locals),
+   aliases || optional || r.error <> None)
+
+and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
+  { routine = r;
+    store = (match size with
+        | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+        | _ -> Array.make size v_false);
+    ext = (if own_extension then
+             { boxes = (if aliases then Array.make n [||] else [||]);
+               idx = (if aliases then Array.make n 0 else [||]);
+               present = (if optional then Array.make n true else [||]);
+               bound = (if aliases then Array.make n Ref_other else [||]);
+               module_data = (if aliases then Array.make n false else [||]);
+               retries = 0; current = None }
+           else shared_extension);
+    level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
+
+and pop st (c : act) =
+  st.depth <- c.level; st.native <- st.native - c.nest;
+  st.memory <- st.memory - c.memory; c.memory <- 0
+
+(* A RAPID routine runs (rules call-enter, locals-initialised, return-procedure,
+   return-function, function-no-return, call-depth-exceeded). *)
+and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init : V.t =
+  if c.level >= st.limits.max_call_depth then
+    raise (Halt (Limits.call_depth_exceeded st.limits));
+  let bytes = activation_bytes r in
+  if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st ("the call of " ^ r.name) at;
+  tick st;
+  let code = match !code with Some c -> c | None -> let c = Lazy.force st.compiled.(r_index) in code := Some c; c in
+  (* Each activation costs the native stack in proportion to the nesting of its routine: beyond
+     the budget the run ends as the call-depth limit ends it, before the stack overflows. *)
+  if st.native + code.c_nest > st.native_budget then
+    raise (Halt (native_stack_exhausted c.level));
+  c.nest <- code.c_nest;
+  st.native <- st.native + code.c_nest;
+  c.memory <- c.memory + bytes;
+  st.memory <- st.memory + c.memory;
+  st.depth <- c.level + 1;
+  entered st r c ~code ~at ~is_function ~has_init
+
+(* The activation is counted: it runs. *)
+and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
+  if st.all_events then st.emit (Event.Routine_entered r.name);
+  if st.observe && Array.length r.parameters > 0 then
+    st.emit (Event.Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
+        (List.mapi (fun i (p : parameter) ->
+             if p.p_optional && i < Array.length c.ext.present && not c.ext.present.(i) then None
+             else if p.p_switch then Some (p.p_name, None)
+             else Some (p.p_name, Some (Observation.value
+                                          (if is_alias p then c.ext.boxes.(i).(c.ext.idx.(i)) else c.store.(i)))))
+           (Array.to_list r.parameters)) }));
+  match if has_init then code.c_init at c; code.c_body c with
+  | true ->
+      pop st c;
+      if st.all_events then st.emit (Event.Routine_left r.name);
+      (* R-5.5: a function that reaches its end raises ERR_FNCNORET at its call point. *)
+      if is_function then fail ~about:r.name st ~at "ERR_FNCNORET" else no_value
+  | false ->
+      pop st c;
+      if st.observe && is_function then
+        st.emit (Event.Observed (Returned { routine = r.name; value = Observation.value c.result }));
+      if st.all_events then st.emit (Event.Routine_left r.name); c.result
+  | exception (Raised e | Leaving e) -> leave_with_error ~call:at st code c (caught c e)
+  | exception Long_jump (j, e) when j = c.level ->
+      (* An asynchronous error carried to the routine of its move, which has no error handler
+         (§7.6): it is raised there, and propagated to the call point without a new search. *)
+      emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
+  | exception Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate st c e ~at))
+  | exception Exit_task -> abandon st code c; raise Exit_task
+  | exception (Kept_leave _ as left) -> abandon st code c; raise left
+  | exception (Continued_leave _ as left) -> pop st c; raise left
+
+(* What [entered] does when an exception leaves the routine's body. *)
+and left_by st code (c : act) left =
+  match left with
+  | Raised e | Leaving e -> leave_with_error st code c (caught c e)
+  | Long_jump (j, e) when j = c.level -> emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
+  | Long_jump _ | Exit_task -> abandon st code c; raise left
+  | _ -> raise left
+
+(* A routine left by a propagated error, a long jump or EXIT runs its UNDO handler, then its
+   activation is popped (rules abandon, undo-run, undo-done). An error in the UNDO handler goes
+   to the system error handler (raise-in-handler). *)
+and abandon st code (c : act) =
+  let skip = st.skip_undo <> [] && List.memq c st.skip_undo in
+  if skip then st.skip_undo <- List.filter (fun x -> x != c) st.skip_undo;
+  (match code.c_undo with
+   | Some _ when skip -> ()
+   | None -> ()
+   | Some undo -> (
+       if st.all_events then st.emit (Event.Undo_run c.routine.name);
+       st.undoing <- c :: st.undoing;
+       match undo c with
+       | _ -> st.undoing <- List.tl st.undoing
+       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (stop st c e)));
+  pop st c;
+  if st.all_events then begin
+    st.emit (Event.Routine_left c.routine.name);
+    if c.routine.kind = Trap then st.emit (Event.Trap_left { trap = c.routine.name; time = st.host.now () })
+  end
+
+(* ch. 8 (interrupt-serve, trap-end): the trap of an interrupt runs as a routine called from the
+   point of interruption, with INTNO set to the interrupt's number; at its end execution goes on
+   there. No interrupt is served while it runs. An error that leaves it is carried by a long
+   jump to an error recovery point of the routines it interrupted (§7.2), or, there being none,
+   goes to the system error handler: there is no call point to raise it at (R-8-e). *)
+and serve_trap st (a : act) number k =
+  let r = st.program.routines.(k) in
+  st.globals.(st.program.intno) <- V.num (float_of_int number);
+  if st.all_events then begin
+    st.emit (Event.Trap_entered { number; trap = r.name; time = st.host.now () });
+    st.emit (Event.Routine_entered r.name)
+  end;
+  let code = Lazy.force st.compiled.(k) in
+  let c = new_act (activation_shape r) r a in
+  c.nest <- code.c_nest;
+  st.native <- st.native + code.c_nest;
+  st.depth <- c.level + 1;
+  st.in_trap <- true;
+  let resume () = st.in_trap <- false; st.depth <- a.level + 1 in
+  match code.c_init r.at c; code.c_body c with
+  | _ ->
+      pop st c;
+      resume ();
+      if st.all_events then begin
+        st.emit (Event.Routine_left r.name);
+        st.emit (Event.Trap_left { trap = r.name; time = st.host.now () })
+      end
+  | exception (Raised e | Leaving e) -> (
+      let e = caught c e in
+      match recovery_search st c.parent e with
+      | None -> raise (Halt (stopped e))
+      | Some j -> abandon st code c; resume (); raise (Long_jump (j, e)))
+  | exception ((Long_jump _ | Exit_task) as left) -> abandon st code c; resume (); raise left
+
+and recovery_search st (b : act) e =
+  if b.level < 0 then None else if recovers st b e.number then Some b.level else recovery_search st b.parent e
+
+(* An error leaves routine [c] (R-7.1, R-7.2-a: rules longjump-search-start, longjump-search,
+   longjump-found, raise-propagate): after the routine is abandoned, the call chain is searched
+   from the caller up for an error recovery point naming the error; found, the error jumps there;
+   not found, it is raised again at the call point. *)
+and leave_with_error ?call st code (c : act) e =
+  abandon st code c;
+  let e = match call with Some at -> relocate st c e ~at | None -> e in
+  let rec search (b : act) =
+    if b.level < 0 then None
+    else if recovers st b e.number then Some b.level
+    else search b.parent
+  in
+  match search c.parent with
+  | Some j -> raise (Long_jump (j, e))
+  | None ->
+      (* Schema rapid-sem/2: raised again at the call point, said as a propagation (§7.1). *)
+      if st.all_events then
+        st.emit (Event.Observed (Propagated { name = e.name; number = e.number; routine = c.routine.name;
+                                          caller = c.parent.routine.name }));
+      raise (Raised e)
+
+(* §7.2: an error recovery point, ERROR (n, ...), names the error or LONG_JMP_ALL_ERR. *)
+and recovers st (a : act) number =
+  match a.routine.error with
+  | Some { recovery = Some numbers; all_errors; _ } ->
+      all_errors
+      || List.exists (function
+          | Number n -> n = number
+          | Object (Global g) -> ( match st.globals.(g) with V.Num x -> x = float_of_int number | _ -> false)
+          | Object (Local s) -> (
+              match a.store.(s) with V.Num x -> x = float_of_int number | _ -> false)) numbers
+  | _ -> false
+
+(* ------------------------------------------------------------------ the error handler *)
+
+(* The error handler takes an error (rule raise-handle): ERRNO is set and the handler runs. It
+   ends by RETRY (retry), TRYNEXT (trynext), RETURN, RAISE (the error leaves the routine), or
+   by reaching its end, which calls the system error handler (handler-end). An error inside it
+   goes to the system error handler (raise-in-handler). *)
+and run_handler st handler (a : act) e : [ `Retry | `Trynext | `Return ] =
+  if st.all_events then st.emit (Event.Error_handled { name = e.name; routine = a.routine.name });
+  st.globals.(st.program.errno) <- V.num (float_of_int e.number);
+  let previous = a.ext.current in
+  a.ext.current <- Some e;
+  match handler a with
+  | true -> raise (stop st a e)
+  | false -> `Return
+  | exception Retry_signal -> a.ext.current <- previous; `Retry
+  | exception Trynext_signal -> a.ext.current <- previous; `Trynext
+  | exception Raised e' -> raise (stop st a e')
+  | exception Long_jump (j, e') when j >= a.level ->
+      (* A long jump to this activation while it runs its handler arrives there, and is an
+         error in the handler. *)
+      emit_raised st e';
+      raise (stop st a e')
+
+(* A statement of a routine with an error handler: an error in it, or in a routine it calls
+   that reaches it, is handled here, this being the innermost statement in progress (§7.1, "the
+   statement that caused the error"). RETRY runs it again; TRYNEXT goes on after it. *)
+and guarded st handler (core : act -> bool) : act -> bool =
+  fun a ->
+    let rec attempt retried =
+      match core a with
+      | goes_on -> if retried then a.ext.retries <- 0; goes_on
+      | exception Raised e -> handle (caught a e)
+      | exception Long_jump (j, e) when j = a.level -> emit_raised st e; handle e
+      | exception Kept_leave (j, left) when j = a.level -> (
+          (* R-7.4-m: the kept handler's RETURN or RAISE, now that the routines the program
+             pointer was in are abandoned, acts here as in any handler. *)
+          match left with None -> false | Some e -> raise (Leaving e))
+      | exception Continued_leave (j, left) when j = a.level -> (
+          match left with `Return -> false | `Raise e -> raise (Leaving e) | `Exit -> raise Exit_task)
+    and handle e =
+      match run_handler st handler a e with
+      | `Retry -> if st.all_events then st.emit (Event.Observed (Retried a.routine.name)); pass_turn st; attempt true
+      | `Trynext -> if st.all_events then st.emit (Event.Observed (Tried_next a.routine.name)); true
+      | `Return -> false
+    in
+    attempt false
+
+(* ------------------------------------------------------------------ statements *)
+
+(* [handler]: the routine's error handler when the statement is in the routine's body. *)
+(* A statement runs to its completion: [true] when execution goes on after it, [false] when it
+   executed RETURN (the value, if any, is in the activation) and the routine returns. *)
+and stmt st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
+  let core = stmt_core st r ~handler ~gotos s in
+  match handler, s.s with
+  | Some _, Elseif _ -> core  (* §4.16, R-4.16: the IF it belongs to is the statement in progress *)
+  | Some h, _ -> guarded st h core
+  | None, _ -> core
+
+and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
+  let at = Option.value at ~default:s.sat in
+  let block b = block st r ~handler ~gotos b in
+  let truth e = condition st r ~at e in
+  let number e = let f = expr st r ~at e in fun a -> V.num_value (f a) in
+  match s.s with
+  | Assign (place, e) -> (
+      (* Rules assign, assign-target, store: the target is located before the value. *)
+      (* §2.16: assigning to an output signal sets it (store-signal). Module data and routine
+         data whose declared type is not a signal's are stored without looking. *)
+      let value = expr st r ~at e in
+      let signal_shape = function V.S_handle k -> CC.is_signal (V.default_of (V.S_handle k)) | _ -> false in
+      let own_signal i =
+        if i < Array.length r.parameters then signal_shape r.parameters.(i).p_default
+        else match List.assoc_opt i r.local_inits with
+          | Some (Init_default sh) -> signal_shape sh
+          | _ -> false (* an initial value, a FOR variable: never a signal's *) in
+      let store_signal box i v =
+        watch st;
+        match st.host.write_signal box.(i) v with
+        | Ok () -> ()
+        | Error "" -> raise (Halt (Outcome.Stuck "a signal assigned a value that is not a num"))
+        | Error name -> fail st ~at name in
+      match place with
+      | _ when st.observe ->
+          let l = locate st r ~at place in
+          fun a ->
+            let box, i = l a in
+            let v = value a in
+            if CC.is_signal box.(i) then store_signal box i v
+            else (box.(i) <- copy v; observe_store st a (box, i));
+            true
+      | Whole (Global i) when not (CC.is_signal st.globals.(i)) ->
+          let g = st.globals in fun a -> g.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
+          fun a -> a.store.(i) <- copy (value a); true
+      | _ ->
+          let l = locate st r ~at place in
+          fun a ->
+            let box, i = l a in
+            let v = value a in
+            if CC.is_signal box.(i) then store_signal box i v else box.(i) <- copy v;
+            true)
+  | Call_procedure c -> let f = call st r ~at ~function_call:false c in fun a -> ignore (f a); true
+  | Call_late (name, args) ->
+      let name = expr st r ~at name in
+      let cache = Hashtbl.create 1 in
+      fun a ->
+        let n = V.string_value (name a) in
+        let f = match Hashtbl.find_opt cache n with
+          | Some f -> f
+          | None -> let f = late_target st r ~at ~call_at:at n args in Hashtbl.replace cache n f; f in
+        ignore (f a); true
+  | Goto (b, i) -> fun _ -> raise_notrace (Goto_label (b, i))
+  | Break -> fun _ -> raise_notrace Break_loop
+  | Continue -> fun _ -> raise_notrace Continue_loop
+  | Return None -> fun _ -> false
+  | Return (Some e) -> let f = expr st r ~at e in fun a -> a.result <- f a; false
+  | Raise None -> (
+      (* raise-again: the error being handled leaves the routine. *)
+      fun a -> match a.ext.current with Some e -> raise (Leaving e) | None -> fail st ~at "ERR_ILLRAISE")
+  | Raise (Some e) ->
+      (* Rules raise-number, raise, raise-illegal (§4.11, R-4.11, R-4.11-b). *)
+      let f = number e in
+      fun a ->
+        let x = f a in
+        let booked = Float.is_integer x && st.host.booked (int_of_float x) in
+        if Float.is_integer x && ((x >= 1. && x <= 90.) || booked) then
+          let n = int_of_float x in
+          let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
+          emit_raised st e;
+          raise (Raised e)
+        else fail st ~at "ERR_ILLRAISE"
+  | Exit -> fun _ -> raise Exit_task
+  | Retry ->
+      (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
+         itself (in a compact IF too, where other errors are the IF's). *)
+      fun a ->
+        (* R-7.4-m: resuming a kept program pointer executes no statement again: not counted. *)
+        if st.kept <> [] && List.memq a st.kept then raise_notrace Retry_signal
+        else if st.resuming <> [] && List.mem_assq a st.resuming then begin
+          (* R-7.3-p: the NOSTEPIN routine's own RETRY, counted there (rule resume-retry). *)
+          let inner = List.assq a st.resuming in
+          if inner.ext.retries >= st.limits.retry_limit then begin
+            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None; chain = None } in
+            emit_raised st e;
+            raise (stop st inner e)
+          end
+          else begin inner.ext.retries <- inner.ext.retries + 1; raise_notrace Retry_signal end
+        end
+        else if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+        else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
+  | Trynext ->
+      fun a -> (
+        match a.ext.current with
+        | Some e when st.async_errors <> [] && not (List.memq a st.kept) && List.memq e st.async_errors ->
+            (* §7.4: "TRYNEXT executes as RETRY" for an asynchronous error (R-7.4-m). *)
+            if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+            else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
+        | _ -> raise_notrace Trynext_signal)
+  | Connect (place, trap) ->
+      (* §4.15: the target "must be (or denote) a module variable (not a routine variable)",
+         through parameters too (ERR_CNTNOTVAR); it gets a new interrupt number; one still
+         connected is ERR_ALRDYCNT (R-8-f); beyond the controller's numbers, ERR_INOMAX. The
+         interrupts themselves are the machine's (the trap never runs here). *)
+      let l = locate st r ~at place in
+      let kind = effective_kind r place Ref_variable and module_data = denotes_module_data r place in
+      fun a ->
+        let box, i = l a in
+        if kind a = Ref_persistent || not (module_data a) then fail st ~at "ERR_CNTNOTVAR";
+        (match box.(i) with
+         | V.Num n when n <> 0. && Float.is_integer n && st.host.connected (int_of_float n) ->
+             fail st ~at "ERR_ALRDYCNT"
+         | _ -> ());
+        (match st.host.connect ~trap with
+         | Ok n ->
+             box.(i) <- V.num (float_of_int n); watch st; st.interrupts <- true;
+             if st.observe then observe_store st a (box, i)
+         | Error name -> fail st ~at name);
+        true
+  | If (c, t, e) | Elseif (c, t, e) ->
+      let c = truth c and t = block t and e = block e in
+      fun a -> if c a then t a else e a
+  | Compact_if (c, { s = Return (Some e); _ }) ->
+      (* IF c RETURN e; in one closure. *)
+      let c = truth c and f = expr st r ~at e in
+      fun a -> if c a then begin a.result <- f a; false end else true
+  | Compact_if (c, s) ->
+      (* §4.17: the statement is part of the compact IF, which is the statement in progress. *)
+      let c = truth c and s = stmt_core ~at st r ~handler ~gotos s in
+      fun a -> if c a then s a else true
+  | While (c, b) ->
+      let c = truth c and body = block b in
+      let empty = Array.length b.body = 0 in
+      fun a ->
+        let continue = ref true and goes_on = ref true in
+        while !continue do
+          tick st;
+          if c a then (match body a with
+              | true -> at_round st a; if empty then pass_turn st  (* a new round (while-again) *)
+              | false -> continue := false; goes_on := false
+              | exception Continue_loop -> ()
+              | exception Break_loop -> continue := false)
+          else continue := false
+        done;
+        !goes_on
+  | For { variable; from_; to_; step; loop_body } ->
+      (* §4.18: FROM, TO and STEP once; the default step is 1, or -1 when FROM > TO. *)
+      let from_ = number from_ and to_ = number to_ in
+      let step = Option.map number step in
+      let body = block loop_body in
+      let empty = Array.length loop_body.body = 0 in
+      fun a ->
+        let lo = from_ a in
+        let hi = to_ a in
+        let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
+        let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
+        while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
+          tick st;
+          a.store.(variable) <- V.Num !v;
+          if st.observe then observe_store st a (a.store, variable);
+          (match body a with
+           | true ->
+               (* R-14-o: the turn ends after the variable stepped and the empty body passed
+                  (for-step), before the next round's point of response. *)
+               if empty then (if !round then pass_turn st else round := true);
+               at_round st a  (* a new round (for-step, for-done) *)
+           | false -> continue := false; goes_on := false
+           | exception Continue_loop -> at_round st a
+           | exception Break_loop -> continue := false);
+          if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
+        done;
+        !goes_on
+  | Test (subject, cases, default) ->
+      let subject = expr st r ~at subject in
+      let cases = Array.map (fun (values, b) -> (Array.map (expr st r ~at) values, block b)) cases in
+      let default = block default in
+      let n = Array.length cases in
+      fun a ->
+        let v = subject a in
+        let rec find k =
+          if k = n then default a
+          else
+            let values, b = cases.(k) in
+            if Array.exists (fun f -> V.equal v (f a)) values then b a else find (k + 1)
+        in
+        find 0
+  | Label -> fun _ -> true
+  | Placeholder_statement -> fun _ -> fail st ~at "ERR_EXECPHR"
+
+(* A statement list, one unit of fuel for each statement started; it stops at a RETURN. A list
+   holding a GOTO's label continues there (rule goto). *)
+and block ?top st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
+  let body = Array.map (stmt st r ~handler ~gotos) b.body in
+  let n = Array.length body in
+  let jumps = Hashtbl.mem gotos b.id in
+  let id = b.id in
+  match top with
+  | None ->
+      (* Each statement entered and the end of the list are points of response (ch. 8). *)
+      let rec from a k =
+        if k >= n then (at_end st a; true)
+        else (tick st; at_statement st a; body.(k) a && from a (k + 1)) in
+      if n = 0 then fun a -> at_end st a; true
+      else if n = 1 && not jumps then
+        (let s0 = body.(0) in fun a -> tick st; at_statement st a; s0 a && (at_end st a; true))
+      else if n = 2 && not jumps then
+        (let s0 = body.(0) and s1 = body.(1) in
+         fun a -> tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a) && (at_end st a; true))
+      else if jumps then
+        fun a ->
+          let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
+          go 0
+      else fun a -> from a 0
+  | Some h ->
+      (* The body of a routine with an error handler: a long jump that arrives between two of
+         its statements (from a trap served there) is handled there (doc/rulings.md R-7.2-m). *)
+      let rec from a k =
+        if k >= n then between st h a at_end
+        else (tick st; between st h a at_statement && body.(k) a && from a (k + 1)) in
+      if jumps then
+        fun a ->
+          let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
+          go 0
+      else fun a -> from a 0
+
+(* R-7.2-m: an error that a long jump brings to a routine between two statements of its body,
+   no statement of it being in progress, is handled by its error handler; RETRY and TRYNEXT
+   both go on from where the program pointer was (the point of response is taken again), RETURN
+   returns. *)
+and between st h (a : act) point =
+  match point st a with
+  | () -> true
+  | exception Long_jump (j, e) when j = a.level -> (
+      emit_raised st e;
+      match run_handler st h a e with
+      | `Retry -> if st.all_events then st.emit (Event.Observed (Retried a.routine.name)); between st h a point
+      | `Trynext -> if st.all_events then st.emit (Event.Observed (Tried_next a.routine.name)); between st h a point
+      | `Return -> false)
+
+(* ------------------------------------------------------------------ routines *)
+
+let rec goto_targets acc (b : block) = Array.iter (goto_stmt acc) b.body
+and goto_stmt acc (s : stmt) =
+  match s.s with
+  | Goto (b, _) -> Hashtbl.replace acc b ()
+  | If (_, t, e) | Elseif (_, t, e) -> goto_targets acc t; goto_targets acc e
+  | Compact_if (_, s) -> goto_stmt acc s
+  | For f -> goto_targets acc f.loop_body
+  | While (_, b) -> goto_targets acc b
+  | Test (_, cases, d) -> Array.iter (fun (_, b) -> goto_targets acc b) cases; goto_targets acc d
+  | _ -> ()
+
+(* A valued body of exactly two statements, [IF own op k RETURN e1; RETURN x op' y;], e1 an own
+   slot or a literal and op' one of +, -, * of two operands neither a num literal (the end of a
+   recursion, then its step): both statements in one closure, the comparison as [condition]
+   makes it (§4.17, §3.12) and the operator as [binary] computes it (§3.12, R-2.13-a; the left
+   operand first, §3.1), RETURN's value the function's (§4.10). Each statement is entered as
+   [block] enters it; the run is [valued_body]'s general form's, step for step. *)
+let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
+  let own i = local_access r i = Own in
+  match b.body with
+  | [| { s = Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
+                         { s = Return (Some e1); _ }); sat = at1; _ };
+       { s = Return (Some { e = Binary ((Num_add | Num_sub | Num_mul) as op', x, y); _ }); sat = at2; _ } |]
+    when is_num_comparison op && own i
+         && (match e1.e with Read (Whole (Local j)) -> own j | Literal _ -> true | _ -> false)
+         && (match y.e with Literal (V.Num _) -> false | _ -> true) ->
+      (* the first statement's value: an own slot ([j]), or else the literal [w] *)
+      let j, w = match e1.e with Read (Whole (Local j)) -> (j, no_value) | Literal w -> (-1, w) | _ -> assert false in
+      let slow_if u = V.bool_value (check st ~at:at1 (Arith.binary op u v)) in
+      let slow u' v' = check st ~at:at2 (Arith.binary op' u' v') in
+      let x = expr st r ~at:at2 x and y = expr st r ~at:at2 y in
+      let add = op' = Arith.Num_add and sub = op' = Arith.Num_sub in
+      (* the second statement, entered *)
+      let second a =
+        tick st; at_statement st a;
+        let u' = x a in
+        let v' = y a in
+        match u', v' with
+        | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
+        | _ -> slow u' v' in
+      begin match op with
+      | Num_lt ->
+          (* the usual end of a recursion, its comparison a branch of its own *)
+          Some (fun a ->
+              tick st; at_statement st a;
+              match a.store.(i) with
+              | V.Num p ->
+                  if p < q then (if j >= 0 then a.store.(j) else w)
+                  else begin
+                    tick st; at_statement st a;
+                    let u' = x a in
+                    let v' = y a in
+                    match u', v' with
+                    | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
+                    | _ -> slow u' v'
+                  end
+              | u -> if slow_if u then (if j >= 0 then a.store.(j) else w) else second a)
+      | _ ->
+          Some (fun a ->
+              tick st; at_statement st a;
+              if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow_if u)
+              then (if j >= 0 then a.store.(j) else w)
+              else second a)
+      end
+  | _ -> None
+
+(* The body of a function for the direct path (no handler, no UNDO, no label in its statement
+   list), when its last statement is RETURN e: it gives RETURN's value as its result, so that
+   the value is neither stored in the activation nor tested for. Each statement is entered as
+   [block] enters it (a unit of fuel, a point of response); the list's end is never reached. *)
+let valued_body st (r : routine) ~gotos : (act -> V.t) option =
+  let b = r.body in
+  let n = Array.length b.body in
+  let ends_in_return = n > 0 && (match b.body.(n - 1).s with Return (Some _) -> true | _ -> false) in
+  if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || not ends_in_return
+  then None
+  else
+    match guarded_return st r b with
+    | Some f -> Some f
+    | None ->
+    let rec from k : act -> V.t =
+      let s = b.body.(k) in
+      match s.s with
+      | Return (Some e) ->
+          let f = expr st r ~at:s.sat e in
+          fun a -> tick st; at_statement st a; f a
+      | Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
+                    { s = Return (Some e); _ })
+        when is_num_comparison op && local_access r i = Own -> (
+          (* IF own < k RETURN e; (the end of a recursion): the comparison in the statement's
+             closure, as [condition] makes it, and an own slot returned in place *)
+          let at = s.sat and rest = from (k + 1) in
+          let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+          match e.e with
+          | Read (Whole (Local j)) when local_access r j = Own ->
+              fun a -> tick st; at_statement st a;
+                if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow u) then a.store.(j)
+                else rest a
+          | _ ->
+              let f = expr st r ~at e in
+              fun a -> tick st; at_statement st a;
+                if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow u) then f a
+                else rest a)
+      | Compact_if (c, { s = Return (Some e); _ }) ->
+          let c = condition st r ~at:s.sat c and f = expr st r ~at:s.sat e and rest = from (k + 1) in
+          fun a -> tick st; at_statement st a; if c a then f a else rest a
+      | _ ->
+          let g = stmt st r ~handler:None ~gotos s and rest = from (k + 1) in
+          fun a -> tick st; at_statement st a; if g a then rest a else a.result
+    in
+    Some (from 0)
+
+(* [c_guard]: a body that [valued_body] compiles, of a routine with one slot and no routine
+   data, whose first statement is [IF slot1 op k RETURN e;], e the slot or a literal. *)
+let leading_guard (r : routine) ~gotos =
+  let b = r.body in
+  let n = Array.length b.body in
+  if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || n < 2
+     || r.locals > 1 || Array.length r.parameters <> 1 || r.local_inits <> []
+     || local_access r 0 <> Own
+     || (match b.body.(n - 1).s with Return (Some _) -> false | _ -> true) then None
+  else
+    match b.body.(0).s with
+    | Compact_if ({ e = Binary (op, { e = Read (Whole (Local 0)); _ }, { e = Literal (V.Num q); _ }); _ },
+                  { s = Return (Some e); _ }) when is_num_comparison op -> (
+        match e.e with
+        | Read (Whole (Local 0)) -> Some (op, q, None)
+        | Literal w -> Some (op, q, Some w)
+        | _ -> None)
+    | _ -> None
+
+let compile_routine st k =
+  let r = st.program.routines.(k) in
+  let gotos = Hashtbl.create 4 in
+  goto_targets gotos r.body;
+  Option.iter (fun (h : error_handler) -> goto_targets gotos h.handler) r.error;
+  Option.iter (goto_targets gotos) r.undo;
+  let c_handler = Option.map (fun (h : error_handler) -> block st r ~handler:None ~gotos h.handler) r.error in
+  let c_body = block ?top:c_handler st r ~handler:c_handler ~gotos r.body in
+  let c_undo = Option.map (block st r ~handler:None ~gotos) r.undo in
+  let inits = List.map (fun (slot, init) ->
+      match init with
+      | Init_default shape ->
+          (* Routine data counts in the memory budget while its routine is active: refused by
+             the budget, it is never built. *)
+          let bytes = V.shape_bytes shape in
+          fun at (a : act) ->
+            charge_active st a bytes ("the routine data of " ^ r.name) at;
+            a.store.(slot) <- V.default_of shape
+      | Init_expr e ->
+          let f = expr st r ~at:e.at e in
+          fun _ a -> a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
+  let c_init = match inits with
+    | [] -> fun _ _ -> ()
+    | _ -> fun at a -> List.iter (fun f -> f at a) inits in
+  { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
+    c_value = valued_body st r ~gotos;
+    c_guard = leading_guard r ~gotos }
+
+(* The ERR_ names by upper-case name, only read: the table of the last list (the installed
+   environment's, the same list physically for every program) is kept. *)
+let last_numbers : ((string * int) list * (string, int) Hashtbl.t) option ref = ref None
+
+let error_number_table error_numbers =
+  match !last_numbers with
+  | Some (l, t) when l == error_numbers -> t
+  | _ ->
+      let numbers = Hashtbl.create 128 in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      last_numbers := Some (error_numbers, numbers);
+      numbers
+
+let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
+
+let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
+    ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
+  let numbers = error_number_table program.error_numbers in
+  let st = {
+    program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
+    observe = observe && all_events;
+    fuel; fuel_limit = fuel; depth = 0; native = 0;
+    native_budget = (match cooperation with Some (c : cooperation) -> c.native_budget | None -> Native_stack.budget ());
+    next_interrupt = 0; numbers; compiled = [||];
+    memory = 0; stub_unmodelled; stubbed = Hashtbl.create 8;
+    host; in_trap = false; interrupts = false;
+    (* A stimulus, or collisions, make the world report without the program asking. *)
+    observing = host.next_event () <> None || host.collisions || cooperation <> None;
+    quiet = 0; quiet_base = 0;
+    moving = host.collisions;
+    max_time = host.max_time; move_owners = [];
+    serve_trap = (fun _ _ _ -> ());
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation } in
+  (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
+  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
+  st.serve_trap <- serve_trap st;
+  st
+
+let outcome_of_exception st = function
+  | Halt o -> o
+  | Stack_overflow ->
+      Outcome.Resource_exhausted
+        (Printf.sprintf "the native stack is exhausted at call depth %d (resource exhaustion, §1.4)" st.depth, None)
+  | Out_of_memory -> Outcome.Resource_exhausted ("out of memory (resource exhaustion, §1.4)", None)
+  | V.Type_mismatch what -> Outcome.Stuck ("a value of the wrong type: " ^ what)
+  | e -> Outcome.Stuck (Printexc.to_string e)
+
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ~host
+    ?cooperation ?module_data (program : program) ~entry =
+  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program ~entry
+  with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
+
+and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event
+    ~(host : Host.t) (program : program) ~entry =
+  (* The installed data that depend on the robot (vmax), as the machine has them. *)
+  let program = host.prepare program in
+  let lower = String.lowercase_ascii entry in
+  match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
+  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | Some (_, k) ->
+      (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
+         program's: it leaves the run as it came, instead of ending it as Stuck. *)
+      let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
+      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~host program in
+      let r = program.routines.(k) in
+      let outcome =
+        try
+          (* §2.21: module data is initialised when its module is loaded. *)
+          let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
+                               parent = sentinel; result = no_value; nest = 0; memory = 0 } in
+          let dummy = new_act (activation_shape r) r sentinel in
+          (* Module data first takes its type's initial value, within the memory budget; then
+             the initial values the static semantics left as expressions (a placeholder, an
+             unknown name) are evaluated, and fail as they would at run time. *)
+          Array.iteri (fun i (g : global) ->
+              match g.g_init with
+              | Init_default shape ->
+                  let bytes = V.shape_bytes shape in
+                  if bytes > st.limits.max_memory - st.memory then
+                    memory_exhausted st ("the initial value of " ^ g.g_name) g.g_at;
+                  st.memory <- st.memory + bytes;
+                  st.globals.(i) <- V.default_of shape
+              | Init_expr _ -> ()) program.globals;
+          Array.iteri (fun i (g : global) ->
+              match g.g_init with
+              | Init_expr e -> (
+                  match expr st r ~at:e.at e dummy with
+                  | v -> st.memory <- st.memory + V.bytes v; st.globals.(i) <- V.copy v
+                  | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
+              | Init_default _ -> ()) program.globals;
+          Option.iter (fun c -> c.share st.globals) cooperation;
+          let code = Lazy.force st.compiled.(k) in
+          let a = new_act (activation_shape r) r sentinel in
+          a.nest <- code.c_nest;
+          st.native <- code.c_nest;
+          st.depth <- 1;
+          (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
+          if all_events then on_event (Event.Routine_entered r.name);
+          match code.c_init r.at a; code.c_body a with
+          | _ ->
+              if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
+              Outcome.Ended
+          | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
+          | exception Exit_task ->
+              (match code.c_undo with
+               | Some undo ->
+                   if all_events then on_event (Event.Undo_run r.name);
+                   (match undo a with
+                    | _ -> ()
+                    | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
+               | None -> ());
+              if all_events then on_event Event.Task_ended;
+              Outcome.Ended
+        with
+        | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
+        | Observer_failed ex -> raise ex
+        | e -> outcome_of_exception st e
+      in
+      (* What the world and the motion did last; at the end of the task, what the robot still
+         does (as the machine's last step). *)
+      (try
+         sync st;
+         observe_world st;
+         observe_motion st;
+         if outcome = Outcome.Ended && all_events then
+           List.iter (fun m -> on_event (Event.Motion m)) (st.host.motion_finish ())
+       with _ -> ());
+      (* --save (Persistent_save): the module data as the run left it. *)
+      Option.iter (fun f ->
+          f (Array.to_list (Array.mapi (fun i (g : global) -> (g.g_module, g.g_name, st.globals.(i))) program.globals)))
+        module_data;
+      Ok { outcome; fuel_used = max 0 (min st.fuel_limit (st.fuel_limit - st.fuel)) }
+
+let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host program ~entry =
+  let acc = ref [] in
+  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  | Error m -> Error m
+  | Ok r -> Ok (List.rev !acc, r)

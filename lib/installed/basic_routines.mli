@@ -1,0 +1,15 @@
+(** The bodies of installed routines (ch. 11, 13): the routines declared in
+    lib/typing/installed are bound by name to the OCaml functions here when a program runs. The
+    pure functions come from {!Library}; this module adds the routines that need more than values:
+    output (TPWrite), the locations of their arguments (Incr, Dim, IsVar), the machine (BookErrNo,
+    CallByVar, Stop). *)
+
+(** An argument, one per parameter of the routine's declaration in order (alternatives each in
+    their own place). *)
+open Primitive
+
+val call : context -> string -> argument array -> outcome
+(** [Not_modelled]: not one of these routines. *)
+
+val modelled : string -> bool
+(** Whether this module gives the installed routine a body. *)

@@ -1,0 +1,123 @@
+(* Which module gives a routine its body, in one place: a name may be claimed by several, the
+   first that answers gives the outcome (WaitTime \InPos is the motion's, WaitTime the
+   controller's; ErrWrite the controller's, which logs through Basic_routines). The order is
+   that of the dispatch the engines once each wrote by hand. *)
+
+module W = Rapid_controller.World
+module IR = Installed_routine
+
+type claimant =
+  | Task
+  | Motion
+  | Io
+  | Service
+  | Basic
+
+type t = {
+  world : W.t;
+  motion : Motion_routines.state;
+  entries : (string, IR.entry option) Hashtbl.t;  (* by lower-case name *)
+}
+
+let create world motion = { world; motion; entries = Hashtbl.create 64 }
+
+let same = Rapid_typing.Types.same_name
+
+(* WaitTime and WaitUntil with \InPos are the motion's (R-8-n), without it the controller's;
+   ErrWrite's entry goes to the controller's event log, then to Basic_routines' log line. *)
+let claimants world name =
+  let task = Task_routines.modelled name
+             || ((not (W.motion_task world)) && List.exists (same name) Task_routines.motion_instructions) in
+  let motion = Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil" in
+  List.filter_map (fun (claims, c) -> if claims then Some c else None)
+    [ (task, Task); (motion, Motion); (Io_routines.modelled name || same name "ErrWrite", Io);
+      (Service_routines.modelled name, Service); (Basic_routines.modelled name, Basic) ]
+
+let modelled name =
+  Task_routines.modelled name || Motion_routines.modelled name || Io_routines.modelled name
+  || Service_routines.modelled name || Basic_routines.modelled name
+
+(* The routines that reach the world: the clock, signals, interrupts, services, other tasks.
+   ErrWrite's entry goes to the world's event log too (IError, R-8-l). *)
+let reach_of claimants name : IR.reach =
+  if Motion_routines.modelled name then Moves
+  else if List.exists (fun c -> c <> Basic) claimants then World
+  else Values
+
+let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) : IR.result =
+  match r with
+  | Returned v -> Returned v
+  | Failed error -> Failed { error; at_move = effects.at_move }
+  | Call_by_name n -> Call_by_name n
+  | Stop_requested -> Stop_requested
+  | Not_modelled -> Not_modelled
+  | Wait wait -> Wait { wait; first_poll = effects.first_poll }
+  | Retry_requested -> Retry_requested
+
+let no_effects = { Motion_routines.at_move = false; new_move = None; first_poll = None }
+
+let make t name claimants : IR.entry =
+  let reach = reach_of claimants name in
+  let events = ref [] in
+  (* What the world observed so far goes into the events before what the routine does next, so
+     that an effect is never seen before its cause (ErrWrite's entry, then the IError interrupt
+     it makes occur). A routine that does not reach the world leaves the world's observations
+     to the engine. *)
+  let drain () =
+    if reach <> Values then
+      List.iter (fun o -> events := Event.Controller o :: !events) (W.drain t.world) in
+  let add e = drain (); events := e :: !events in
+  (* One context per entry, its call's part set at each call: a call allocates nothing for it. *)
+  let ctx : Primitive.context = {
+    output = (fun line -> add (Output (Text_format.display line)));
+    erase = (fun () -> add Erase);
+    log = (fun line -> add (Log line));
+    event_log = (fun entry -> add (Event_log entry));
+    book_error = (fun () -> 0);
+    error_number = (fun _ -> 0);
+    world = t.world;
+    parameters = [||];
+    argument_label = (fun _ -> None);
+  } in
+  let standstill () = Rapid_motion_model.Planner.finished_by (Motion_routines.planner t.motion) in
+  let body args =
+    let rec first = function
+      | [] -> None
+      | c :: rest ->
+          let answer = match c with
+            | Task -> Option.map (fun r -> (r, no_effects)) (Task_routines.call ~standstill ctx name args)
+            | Motion -> Motion_routines.call ctx t.motion name args
+            | Io -> Option.map (fun r -> (r, no_effects)) (Io_routines.call ctx name args)
+            | Service -> Option.map (fun r -> (r, no_effects)) (Service_routines.call ctx name args)
+            | Basic -> Some (Basic_routines.call ctx name args, no_effects) in
+          match answer with Some a -> Some a | None -> first rest in
+    first claimants in
+  let call (site : IR.context) args : IR.outcome =
+    ctx.parameters <- site.parameters;
+    ctx.argument_label <- site.argument_label;
+    ctx.book_error <- site.book_error;
+    ctx.error_number <- site.error_number;
+    events := [];
+    let result, new_move = match body args with
+      | exception Motion_routines.History_exhausted m -> (IR.History_exhausted m, None)
+      | None -> (IR.Not_modelled, None)
+      | Some (r, effects) -> (convert_result r effects, effects.new_move) in
+    drain ();
+    let written = match !events with [] -> [] | e -> List.rev e in
+    events := [];
+    match result, written, new_move with
+    | Returned v, [], None -> IR.returned v
+    | _ -> { result; events = written; new_move } in
+  let condition = if same name "WaitUntil" then Some "Cond" else None in
+  { name; reach; condition; call }
+
+let find t name =
+  let key = String.lowercase_ascii name in
+  match Hashtbl.find_opt t.entries key with
+  | Some e -> e
+  | None ->
+      let e = match claimants t.world name with
+        | [] -> None
+        | cs -> Some (make t name cs) in
+      Hashtbl.replace t.entries key e;
+      e

@@ -1,0 +1,170 @@
+(* Several tasks loaded for one run (ch. 14; doc/semantics.md, "Several tasks"): each task
+   buffer read, checked and lowered as one task's; the worlds of the tasks share the clock, the
+   signals and the services; the data objects they share found, and the initial values those
+   take. Neutral: both engines' task sets start from what this gives. *)
+
+open Rapid_syntax
+module Session = Rapid_load.Session
+module W = Rapid_controller.World
+
+type spec = { name : string; files : string list; entry : string }
+
+type failure =
+  | Load of string * Session.failure
+  | Refused of string
+
+type task = {
+  rules : Task_rules.task;
+  world : Rapid_controller.World.t;
+  motion : Rapid_installed.Motion_routines.state;
+}
+
+type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
+
+let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+(* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
+   nor LOCAL: module, name, type (its name and dimensions), whether it has an initial value. *)
+let system_global_pers (modules : Ast.module_declaration list) =
+  List.concat_map (fun (m : Ast.module_declaration) ->
+      let module_name = match m.module_name.it with Ident s -> s | ID_placeholder -> "" in
+      List.filter_map (fun (d : Ast.data_declaration) ->
+          match d.it with
+          | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ }; dims; initial_value } ->
+              let type_name = match data_type.it with Ident s -> s | ID_placeholder -> "" in
+              Some (module_name, name, type_name, List.length dims, initial_value <> None, d.at)
+          | _ -> None) m.data_declarations) modules
+
+let global_index (program : Ir.program) ~module_name ~name =
+  let found = ref None in
+  Array.iteri (fun i (g : Ir.global) ->
+      if !found = None && same g.g_module module_name && same g.g_name name then found := Some i)
+    program.globals;
+  !found
+
+type shared_pers = { owner : int; slot : int; type_text : string; mutable has_init : bool; task_name : string }
+
+(* ch. 14: one value for every task declaring the persistent with the same name and type; the
+   initial value of the first declaration (in the order of the tasks) that has one, else the
+   type's initial value (R-14-b). A different type is refused (R-14-c). *)
+let share_persistents ~link (programs : Ir.program array) (tasks : (int * string * Ast.module_declaration list) list) =
+  let table = Hashtbl.create 16 in
+  let rec go = function
+    | [] -> Ok ()
+    | (k, task_name, modules) :: rest ->
+        let program = programs.(k) in
+        let rec each = function
+          | [] -> go rest
+          | (module_name, name, type_name, ndims, has_init, at) :: more -> (
+              match global_index program ~module_name ~name with
+              | None -> each more
+              | Some j -> (
+                  (* The type: its name and, for an array, the sizes its value has (a dimension
+                     may be written as a constant in one task and a literal in another). *)
+                  let rec sizes v n = match v, n with
+                    | Value.Array es, n when n > 0 ->
+                        Array.length es :: (if Array.length es > 0 then sizes es.(0) (n - 1) else [])
+                    | _ -> [] in
+                  let type_text = match Task_rules.initial_value program j with
+                    | Some v when ndims > 0 ->
+                        type_name ^ "{" ^ String.concat ", " (List.map string_of_int (sizes v ndims)) ^ "}"
+                    | _ -> type_name in
+                  let key = String.lowercase_ascii name in
+                  match Hashtbl.find_opt table key with
+                  | None ->
+                      Hashtbl.replace table key { owner = k; slot = j; type_text; has_init; task_name };
+                      each more
+                  | Some p when not (same p.type_text type_text) ->
+                      Error (Load (task_name, Session.Front_end [ Diagnostic.make Semantic_error at (Printf.sprintf
+                                        "the persistent %s is %s in task %s but %s here: a system-global persistent has one type in every task (ch. 14)"
+                                        name p.type_text p.task_name type_text) ]))
+                  | Some p ->
+                      if has_init && not p.has_init then begin
+                        (* The owner takes this task's initial value (a literal expression, §3.3). *)
+                        let owner = programs.(p.owner) in
+                        let globals = Array.copy owner.globals in
+                        globals.(p.slot) <- { globals.(p.slot) with g_init = program.globals.(j).g_init };
+                        programs.(p.owner) <- { owner with globals };
+                        p.has_init <- true
+                      end;
+                      link k j (p.owner, p.slot);
+                      each more))
+        in
+        each (system_global_pers modules)
+  in
+  go tasks
+
+(* ch. 14: an installed data object is one for every task ("所有其他数据对象与其他任务共享值"), except
+   ERRNO and INTNO, whose values are each task's (R-14-g). Installed: a global of a module that
+   is not one of the task's own. *)
+let share_installed ~link (programs : Ir.program array) (tasks : (int * string * Ast.module_declaration list) list) =
+  match tasks with
+  | [] -> ()
+  | (first, _, _) :: rest ->
+      let first_program = programs.(first) in
+      List.iter (fun (k, _, modules) ->
+          let own = List.filter_map (fun (m : Ast.module_declaration) ->
+              match m.module_name.it with Ident s -> Some (String.lowercase_ascii s) | ID_placeholder -> None) modules in
+          let program = programs.(k) in
+          Array.iteri (fun i (g : Ir.global) ->
+              if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then
+                match global_index first_program ~module_name:g.g_module ~name:g.g_name with
+                | Some j when j <> first_program.errno && j <> first_program.intno -> link k i (first, j)
+                | _ -> ()) program.globals) rest
+
+let parse_all files =
+  let parsed = List.map (Parse.parse_file ~options:Parse.default_options) files in
+  match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
+  | [] -> Ok (List.filter_map Result.to_option parsed)
+  | errors -> Error (Session.Front_end errors)
+
+let same = Rapid_typing.Types.same_name
+
+let load ?(allow_unknown = false) ?io ?motion_task ~world ~motion (specs : spec list) =
+  let motion_name = match motion_task, specs with
+    | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
+  let rec load acc = function
+    | [] -> Ok (List.rev acc)
+    | (s : spec) :: rest -> (
+        match parse_all s.files with
+        | Error f -> Error (Load (s.name, f))
+        | Ok modules -> (
+            match Session.load_modules ~allow_unknown ?io modules with
+            | Error f -> Error (Load (s.name, f))
+            | Ok loaded -> load ((s, modules, loaded) :: acc) rest))
+  in
+  let count = List.length specs in
+  if specs = [] then Error (Refused "no task to run")
+  else if count > Task_rules.max_tasks then
+    Error (Refused (Printf.sprintf "%d tasks: a run has at most %d tasks, as a controller with Multitasking (ch. 14)"
+                      count Task_rules.max_tasks))
+  else if not (List.exists (fun (s : spec) -> same s.name motion_name) specs) then
+    Error (Refused (Printf.sprintf "the motion task %s is not one of the tasks" motion_name))
+  else
+  match load [] specs with
+  | Error f -> Error f
+  | Ok loaded -> (
+      match List.find_map (fun ((s : spec), _, (l : Session.loaded)) ->
+          match Task_rules.entry_routine l.program s.entry with
+          | Error m -> Some (Printf.sprintf "task %s: %s" s.name m)
+          | Ok _ -> None) loaded with
+      | Some m -> Error (Refused m)
+      | None ->
+          let programs = Array.of_list (List.map (fun (_, _, (l : Session.loaded)) -> l.program) loaded) in
+          let indexed = List.mapi (fun k ((s : spec), modules, _) -> (k, s.name, modules)) loaded in
+          let links = ref [] in
+          let link task slot (owner, owner_slot) = links := { Task_rules.task; slot; owner; owner_slot } :: !links in
+          share_installed ~link programs indexed;
+          match share_persistents ~link programs indexed with
+          | Error f -> Error f
+          | Ok () ->
+              let tasks = List.mapi (fun k ((s : spec), _, _) ->
+                  let is_motion = same s.name motion_name in
+                  let w = if k = 0 then (W.name_task world ~name:s.name ~motion:is_motion; world)
+                    else W.add_task world ~name:s.name ~motion:is_motion in
+                  let motion = if is_motion then motion else Rapid_installed.Motion_routines.create () in
+                  let host = Rapid_installed.World_host.make w motion in
+                  { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host };
+                    world = w; motion }) loaded in
+              let warnings = List.concat_map (fun (_, _, (l : Session.loaded)) -> l.warnings) loaded in
+              Ok { tasks; links = List.rev !links; warnings })

@@ -1,0 +1,30 @@
+(** Several tasks loaded for one run (ch. 14; doc/semantics.md, "Several tasks"), for either
+    engine's task set: each task buffer read, checked and lowered; the worlds of the tasks made
+    to share the clock, the signals and the services ({!Rapid_controller.World.add_task}); the
+    data objects they share found (system-global persistents, PERS declared neither TASK nor
+    LOCAL, with the same name are one data object for every task that declares them; installed
+    data, but ERRNO and INTNO), with the initial values those take (R-14-b). *)
+
+type spec = { name : string; files : string list; entry : string }
+
+type failure =
+  | Load of string * Rapid_load.Session.failure
+      (** the task's name and why its buffer was refused; a system-global persistent declared
+          with another type than in an earlier task is a semantic error at its declaration *)
+  | Refused of string   (** no such entry routine, no such motion task, too many tasks *)
+
+type task = {
+  rules : Task_rules.task;                             (** what an engine runs *)
+  world : Rapid_controller.World.t;                    (** the task's controller *)
+  motion : Rapid_installed.Motion_routines.state;      (** the task's robot (the motion task's is the run's) *)
+}
+
+type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
+
+val load :
+  ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> ?motion_task:string ->
+  world:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> spec list ->
+  (loaded, failure) result
+(** The tasks in order, and the warnings of their checks. [world] becomes the first task's
+    world; [motion] the motion task's robot ([motion_task], default the first task). More than
+    {!Task_rules.max_tasks} tasks are [Refused]. *)

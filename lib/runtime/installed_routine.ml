@@ -1,0 +1,52 @@
+type context = {
+  parameters : string array;
+  argument_label : string -> string option;
+  book_error : unit -> int;
+  error_number : string -> int;
+}
+
+type result =
+  | Returned of Value.t option
+  | Failed of { error : string; at_move : bool }
+  | Call_by_name of string
+  | Stop_requested
+  | Not_modelled
+  | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
+  | Retry_requested
+  | History_exhausted of string
+
+type outcome = { result : result; events : Event.t list; new_move : int option }
+
+type reach = Values | World | Moves
+
+type entry = {
+  name : string;
+  reach : reach;
+  condition : string option;
+  call : context -> Argument.t array -> outcome;
+}
+
+let returned v = { result = Returned v; events = []; new_move = None }
+
+let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+let argument_label (program : Ir.program) (callee : Ir.routine) (arguments : Ir.argument array) name =
+  let found = ref None in
+  Array.iteri (fun i (p : Ir.parameter) ->
+      if same p.p_name name && i < Array.length arguments then
+        match arguments.(i) with
+        | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
+            found := Some program.globals.(g).g_name
+        | By_value { at; _ } -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line)
+        | _ -> ()) callee.parameters;
+  !found
+
+let condition_argument entry (callee : Ir.routine) (arguments : Ir.argument array) =
+  match entry.condition with
+  | None -> None
+  | Some name ->
+      let found = ref None in
+      Array.iteri (fun i (p : Ir.parameter) ->
+          if same p.p_name name && i < Array.length arguments then
+            match arguments.(i) with Ir.By_value e -> found := Some e | _ -> ()) callee.parameters;
+      !found

@@ -1,0 +1,66 @@
+(** An installed routine as an engine calls it (ch. 11, 13; lib/typing/installed): the entry the
+    host's registry gives for its name, the context of a call and the outcome that says
+    everything the call did. The bodies live in lib/installed; an engine knows only this. *)
+
+(** What an engine tells a call. *)
+type context = {
+  parameters : string array;                   (** the routine's parameter names, in order *)
+  argument_label : string -> string option;
+      (** the name of the data object given for a parameter (by the parameter's name), for the
+          motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
+  book_error : unit -> int;                    (** BookErrNo: the task's next error number *)
+  error_number : string -> int;                (** the number of an ERR_ name (§7.1) *)
+}
+
+(** What the call does to the program. *)
+type result =
+  | Returned of Value.t option                 (** a function's value, or a procedure's end *)
+  | Failed of { error : string; at_move : bool }
+      (** an execution error, by its ERR_ name; [at_move]: a \SyncLastMoveInst error of the
+          motion raised at the move instruction, asynchronous: TRYNEXT in its handler executes
+          as RETRY (§7.4) *)
+  | Call_by_name of string                     (** CallByVar: call this procedure (§4.6) *)
+  | Stop_requested                             (** Stop: the task stops *)
+  | Not_modelled                               (** rapid-sem does not model this routine yet *)
+  | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
+      (** a waiting instruction: the engine waits (doc/controller.md); [first_poll]: WaitUntil
+          \InPos's first evaluation of its condition, when the robot moves *)
+  | Retry_requested                            (** StartMoveRetry: RETRY, as the statement (§7.1) *)
+  | History_exhausted of string
+      (** the motion history beyond its budget (doc/motion.md): the run ends as a resource
+          exhausted (§1.4) at the call *)
+
+type outcome = {
+  result : result;
+  events : Event.t list;
+      (** what the call made observable, in order: its own events (TPWrite's line, ErrWrite's
+          entry) and what the world observed meanwhile, each after its cause *)
+  new_move : int option;
+      (** the move it planned: the engine remembers which routine activation executed it, to
+          raise the move's asynchronous errors there (§7.4, §7.6) *)
+}
+
+type reach =
+  | Values                 (** a function of its arguments and the context only *)
+  | World                  (** it reads or changes the controller (clock, signals, services) *)
+  | Moves                  (** it reads or changes the motion too *)
+
+type entry = {
+  name : string;                               (** as declared *)
+  reach : reach;
+  condition : string option;
+      (** the parameter whose expression the engine evaluates again at every poll of the wait
+          the call returns (WaitUntil's [Cond]) *)
+  call : context -> Argument.t array -> outcome;
+}
+
+val returned : Value.t option -> outcome
+(** A call that returned, with no event and no move. *)
+
+val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
+(** The data object the argument of a call gives for a parameter (by the parameter's name), for
+    the motion's output ([p10], [z10]), or [line N] for another expression (an inline target,
+    Offs(...)): the [argument_label] of a call's context. *)
+
+val condition_argument : entry -> Ir.routine -> Ir.argument array -> Ir.expr option
+(** The expression given for the entry's [condition] parameter, when it has one. *)

@@ -1,0 +1,21 @@
+module Source = Rapid_syntax.Source
+
+type t =
+  | Running
+  | Ended
+  | Stopped of { name : string; number : int; at : Source.region; chain : string list;
+                 about : string option }
+  | Resource_exhausted of string * Source.region option
+  | Unsupported of { name : string; reason : string; at : Source.region }
+  | Deadlock of string
+  | Stuck of string
+
+let not_modelled name at =
+  Unsupported
+    { name; at;
+      reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name }
+
+let time_limit max_time =
+  Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" max_time, None)
+
+let motion_history_exhausted reason at = Resource_exhausted (Source.to_string at ^ ": " ^ reason, Some at)

@@ -1,0 +1,30 @@
+(** How a run ends (doc/semantics.md), in the words both engines give. *)
+
+type t =
+  | Running
+  | Ended                                  (** end of the entry routine, RETURN in it, EXIT *)
+  | Stopped of { name : string; number : int; at : Rapid_syntax.Source.region;
+                 chain : string list; about : string option }
+      (** the system error handler stopped the task: the error, where it occurred, the call
+          chain at that point, innermost first, and the name the error is about (the unknown
+          data object or routine of ERR_REFUNKDAT, ERR_REFUNKFUN, ERR_REFUNKPRC, the procedure
+          name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
+  | Resource_exhausted of string * Rapid_syntax.Source.region option
+      (** call depth beyond the limit, or RAPID data or the motion history beyond the memory
+          budget, or virtual time beyond --max-time: the reason, and the place when one explains
+          it (the declaration or the move beyond the budget; doc/observable.md, R-1.4-small2) *)
+  | Unsupported of { name : string; reason : string; at : Rapid_syntax.Source.region }
+      (** an installed routine rapid-sem does not model yet was called ([name] is the routine,
+          [at] the call) *)
+  | Deadlock of string                     (** a wait nothing can ever end (doc/controller.md) *)
+  | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
+
+val not_modelled : string -> Rapid_syntax.Source.region -> t
+(** [Unsupported] for a call of this installed routine at this place. *)
+
+val time_limit : float -> t
+(** The end of a run whose virtual time passed [--max-time] (this many seconds). *)
+
+val motion_history_exhausted : string -> Rapid_syntax.Source.region -> t
+(** The history --samples or rapid-sem motion keeps, beyond its budget at the move of this
+    call (doc/motion.md): the motion's reason. *)

@@ -1,0 +1,69 @@
+(* Several tasks on one clock (ch. 14): what both engines' task sets share. *)
+
+type task = { name : string; program : Ir.program; entry : string; host : Host.t }
+
+type link = { task : int; slot : int; owner : int; owner_slot : int }
+
+let max_tasks = 20
+
+type order = Round_robin | Seeded of int64 ref   (* SplitMix64's state *)
+
+let order_of_seed = function Some s -> Seeded (ref (Int64.of_int s)) | None -> Round_robin
+
+(* SplitMix64 (Steele, Lea, Flood 2014): a small generator of our own, so that the order of a
+   seed never depends on the version of OCaml's Random. *)
+let splitmix state =
+  state := Int64.add !state 0x9E3779B97F4A7C15L;
+  let z = !state in
+  let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 30)) 0xBF58476D1CE4E5B9L in
+  let z = Int64.mul (Int64.logxor z (Int64.shift_right_logical z 27)) 0x94D049BB133111EBL in
+  Int64.logxor z (Int64.shift_right_logical z 31)
+
+(* The scheduler's rule, for both engines' task sets: among the [count] tasks, those [eligible]
+   (running, not waiting in vain), the next in round robin from [cursor], or SplitMix64's pick. *)
+let next_turn order ~cursor ~count eligible =
+  let candidates = List.filter eligible (List.init count Fun.id) in
+  match candidates, order with
+  | [], _ -> None
+  | _, Round_robin ->
+      let rec look i = if List.mem (i mod count) candidates then i mod count else look (i + 1) in
+      let k = look !cursor in
+      cursor := (k + 1) mod count; Some k
+  | _, Seeded state ->
+      let r = Int64.unsigned_rem (splitmix state) (Int64.of_int (List.length candidates)) in
+      Some (List.nth candidates (Int64.to_int r))
+
+(* Every running task waits (ch. 14, one clock): [waits] gives each running task's name, what it
+   waits for, and the time its wait gave. The clock moves on to the earliest such time ([None]);
+   with none, a deadlock; beyond --max-time, the time limit. For both engines' task sets. *)
+let every_task_waits (clock : Host.t) waits =
+  let times = List.filter_map (fun (_, _, wake) -> wake) waits in
+  match List.sort compare times with
+  | [] ->
+      let waiting = List.map (fun (name, what, _) ->
+          match what with Some what -> name ^ " for " ^ what | None -> name) waits in
+      Some (Outcome.Deadlock (Printf.sprintf
+                          "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
+                          (clock.now ()) (String.concat "; " waiting)))
+  | t :: _ when t > clock.max_time -> Some (Outcome.time_limit clock.max_time)
+  | t :: _ -> clock.advance_to t; None
+
+let entry_routine (program : Ir.program) entry =
+  let lower = String.lowercase_ascii entry in
+  let rec find i =
+    if i >= Array.length program.routines then None
+    else if String.lowercase_ascii program.routines.(i).name = lower then Some i
+    else find (i + 1) in
+  match find 0 with
+  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | Some i ->
+      let r = program.routines.(i) in
+      if r.kind <> Procedure || Array.length r.parameters > 0 then
+        Error (Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" entry)
+      else Ok i
+
+let initial_value (program : Ir.program) j =
+  match program.globals.(j).g_init with
+  | Init_expr { e = Literal v; _ } -> Some v
+  | Init_default shape -> Some (Value.default_of shape)
+  | Init_expr _ -> None

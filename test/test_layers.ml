@@ -1,0 +1,61 @@
+(* The layers of doc/architecture.md, checked from the dune files: the definition (lib/semantics)
+   links neither the controller, the motion model, unix nor threads, and the second engine
+   (lib/closure) cannot name the machine. A library's dependencies are read from its dune file's
+   (libraries ...) field, and followed through the project's own libraries. *)
+
+let read path =
+  let ic = open_in_bin path in
+  Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+(* The words of the (name ...) and (libraries ...) fields of a dune file. *)
+let fields text =
+  let words = String.split_on_char ' ' (String.map (function '(' | ')' | '\n' | '\t' -> ' ' | c -> c) text)
+              |> List.filter (( <> ) "") in
+  let rec go name libs mode = function
+    | [] -> (name, libs)
+    | "name" :: n :: rest -> go (Some n) libs `Other rest
+    | "libraries" :: rest -> go name libs `Libraries rest
+    | ("public_name" | "flags" | "foreign_stubs" | "preprocess" | "rule" | "menhir" | "library") :: rest ->
+        go name libs `Other rest
+    | w :: rest -> if mode = `Libraries then go name (w :: libs) mode rest else go name libs mode rest in
+  go None [] `Other words
+
+(* The libraries of lib/, by name: each one's direct dependencies. *)
+let libraries () =
+  let lib = "../lib" in
+  Sys.readdir lib |> Array.to_list |> List.filter_map (fun d ->
+      let f = Filename.concat (Filename.concat lib d) "dune" in
+      if Sys.file_exists f then
+        match fields (read f) with
+        | Some name, libs -> Some (name, libs)
+        | None, _ -> None
+      else None)
+
+let rec closure table seen = function
+  | [] -> seen
+  | l :: rest when List.mem l seen -> closure table seen rest
+  | l :: rest -> closure table (l :: seen) ((match List.assoc_opt l table with Some ds -> ds | None -> []) @ rest)
+
+let links table name = List.filter (( <> ) name) (closure table [] [ name ])
+
+let forbidden name words table =
+  let reached = links table name in
+  List.iter (fun w ->
+      Alcotest.(check bool) (Printf.sprintf "%s does not link %s" name w) false (List.mem w reached)) words
+
+let layers () =
+  let table = libraries () in
+  Alcotest.(check bool) "the dune files are read" true (List.mem_assoc "rapid_semantics" table);
+  Alcotest.(check bool) "the closure engine has a library" true (List.mem_assoc "rapid_closure" table);
+  forbidden "rapid_semantics"
+    [ "rapid_controller"; "rapid_motion_model"; "rapid_installed"; "unix"; "threads"; "threads.posix";
+      "rapid_closure" ] table;
+  forbidden "rapid_runtime"
+    [ "rapid_controller"; "rapid_motion_model"; "rapid_installed"; "unix"; "threads"; "threads.posix";
+      "rapid_semantics"; "rapid_closure" ] table;
+  forbidden "rapid_closure" [ "rapid_semantics"; "rapid_controller"; "rapid_motion_model"; "rapid_installed" ] table;
+  (* And the checker itself sees a dependency: the run library links both engines. *)
+  Alcotest.(check bool) "a link is seen through a library" true
+    (List.mem "rapid_controller" (links table "rapid_run") && List.mem "rapid_semantics" (links table "rapid_run"))
+
+let suite = ("layers", [ Alcotest.test_case "the libraries' dependencies (doc/architecture.md)" `Quick layers ])
