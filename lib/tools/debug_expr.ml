@@ -227,7 +227,8 @@ and assign_checked env (target : Ast.data_reference) (e : Ast.expression) =
     | Some w -> Ok w
     | None -> Error (root ^ " is read-only: a constant, a loop variable or a system variable (§4.5)") in
   let* whole = match datum.value with
-    | Some w -> Ok w | None -> Error (root ^ " is an absent optional parameter (ERR_NOTPRES, §5.2)") in
+    | Some w -> Ok w
+    | None -> Error (root ^ " is an absent optional parameter (ERR_NOTPRES, §5.2)") in
   match steps with
   | [] -> let* v = fit whole v in if write v then Ok v else Error (root ^ " cannot be written")
   | _ ->
