@@ -80,7 +80,11 @@ let make t name claimants : IR.entry =
     argument_label = (fun _ -> None);
   } in
   let standstill () = Rapid_motion_model.Planner.finished_by (Motion_routines.planner t.motion) in
+  let pure = match claimants with [ Basic ] -> Basic_routines.pure name | _ -> None in
   let body args =
+    match pure with
+    | Some f -> Some (f args, no_effects)
+    | None ->
     let rec first = function
       | [] -> None
       | c :: rest ->
@@ -108,6 +112,12 @@ let make t name claimants : IR.entry =
     match result, written, new_move with
     | Returned v, [], None -> IR.returned v
     | _ -> { result; events = written; new_move } in
+  let call = match pure with
+    | Some f -> (fun _ args ->
+        match f args with
+        | Primitive.Returned v -> IR.returned v
+        | r -> { IR.result = convert_result r no_effects; events = []; new_move = None })
+    | None -> call in
   let condition = if same name "WaitUntil" then Some "Cond" else None in
   { name; reach; condition; call }
 
