@@ -117,7 +117,8 @@ let call ctx name args =
       match value_of args.(0) with
       | Some (V.Num id) when Float.is_integer id ->
           ctx.event_log (Err_log { id = int_of_float id; kind;
-                                   arguments = List.map string_arg (List.filteri (fun i _ -> i >= 3) (Array.to_list args)) });
+                                   arguments =
+                                     List.map string_arg (List.filteri (fun i _ -> i >= 3) (Array.to_list args)) });
           Returned None
       | _ -> Failed "ERR_ARGVALERR")
   | "stop" -> Stop_requested
