@@ -12,7 +12,7 @@ module IR = Installed_routine
 type body = {
   module_name : string;
   claims : W.t -> string -> bool;
-  reach : IR.reach;
+  reach : string -> IR.reach;
   answer : standstill:(unit -> float) -> Primitive.context -> Motion_routines.state -> string ->
     Primitive.argument array -> (Primitive.outcome * Motion_routines.effects) option;
 }
@@ -28,19 +28,19 @@ let same = Rapid_typing.Types.same_name
    then to Basic_routines' log line; a motion instruction in a task without the robot is
    Task_routines' refusal (R-14-e). One line per module. *)
 let bodies = [
-  { module_name = "task"; reach = World;
+  { module_name = "task"; reach = (fun _ -> World);
     claims = (fun w name -> Task_routines.modelled name
                             || ((not (W.motion_task w)) && List.exists (same name) Task_routines.motion_instructions));
     answer = (fun ~standstill ctx _ name args ->
         Option.map (fun r -> (r, no_effects)) (Task_routines.call ~standstill ctx name args)) };
-  { module_name = "motion"; reach = Moves;
+  { module_name = "motion"; reach = (fun name -> if Motion_routines.modelled name then Moves else World);
     claims = (fun _ name -> Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil");
     answer = (fun ~standstill:_ ctx motion name args -> Motion_routines.call ctx motion name args) };
-  { module_name = "io"; reach = World; claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
+  { module_name = "io"; reach = (fun _ -> World); claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
     answer = plain Io_routines.call };
-  { module_name = "service"; reach = World; claims = (fun _ -> Service_routines.modelled);
+  { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
     answer = plain Service_routines.call };
-  { module_name = "basic"; reach = Values; claims = (fun _ -> Basic_routines.modelled);
+  { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
     answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
 ]
 
@@ -61,13 +61,12 @@ let a_motion_task = lazy (W.create Rapid_controller.Io_config.empty)
 
 let modelled name = List.exists (fun b -> b.claims (Lazy.force a_motion_task) name) bodies
 
-(* The routines that reach the world: the clock, signals, interrupts, services, other tasks;
-   the motion's only for the names the motion itself lists (WaitTime without \InPos is the
-   controller's). ErrWrite's entry goes to the world's event log too (IError, R-8-l). *)
+(* The most any claimant reaches: the motion, the world (the clock, signals, interrupts,
+   services, other tasks), or values only. ErrWrite's entry goes to the world's event log too
+   (IError, R-8-l). *)
 let reach_of claimants name : IR.reach =
-  if Motion_routines.modelled name then Moves
-  else if List.exists (fun b -> b.reach <> IR.Values) claimants then World
-  else Values
+  let reaches = List.map (fun b -> b.reach name) claimants in
+  if List.mem IR.Moves reaches then Moves else if List.mem IR.World reaches then World else Values
 
 let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) : IR.result =
   match r with
