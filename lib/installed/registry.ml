@@ -40,6 +40,8 @@ let bodies = [
     answer = plain Io_routines.call };
   { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
     answer = plain Service_routines.call };
+  { module_name = "rmq"; reach = (fun _ -> World); claims = (fun _ -> Rmq_routines.modelled);
+    answer = plain Rmq_routines.call };
   { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
     answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
 ]
