@@ -139,6 +139,19 @@ let rec fits a b =
 let number ctx args name =
   match named_num ctx args name with Some f when Float.is_integer f && f >= 1. -> Some (int_of_float f) | _ -> None
 
+(* The wait of RMQSendWait, told by its text: left by an error or a long jump (§7.2), it awaits
+   no answer any more, so that a later message of that type from that slot is not taken for
+   one. *)
+let send_wait = "(RMQSendWait)"
+
+let wait_abandoned w (wait : Rapid_observable.Wait.t) =
+  let n = String.length wait.what and k = String.length send_wait in
+  if n >= k && String.sub wait.what (n - k) k = send_wait then begin
+    let q = W.rmq w in
+    q.awaiting <- None;
+    q.answer <- None
+  end
+
 let call ctx name args =
   let w = ctx.world in
   match String.lowercase_ascii name with
@@ -174,7 +187,7 @@ let call ctx name args =
                 if t = Some 0. then (q.awaiting <- None; Failed "ERR_RMQ_TIMEOUT")
                 else
                   let from = Option.value (W.rmq_slot_name w target) ~default:"?" in
-                  Wait { W.what = Printf.sprintf "an answer of type %s from %s (RMQSendWait)" expected from;
+                  Wait { W.what = Printf.sprintf "an answer of type %s from %s %s" expected from send_wait;
                          satisfied = (fun () -> q.answer <> None);
                          deadline = Option.map (fun t -> W.now w +. t) t; poll = None; finish })
   | "irmqmessage" ->

@@ -18,3 +18,7 @@ val call : Primitive.context -> string -> Primitive.argument array -> Primitive.
     and letting the other tasks run. *)
 
 val modelled : string -> bool
+
+val wait_abandoned : Rapid_controller.World.t -> Rapid_observable.Wait.t -> unit
+(** A wait an error or a long jump leaves (§7.2; the host's [wait_abandoned]): when it is
+    RMQSendWait's, the task awaits no answer any more. *)
