@@ -7,7 +7,8 @@
       (the stimulus) and of outputs (SetDO \SDelay, PulseDO);
     - the interrupt numbers, their sources (timers, signal edges), the queue of interrupts that
       occurred and wait for their trap, IDisable/IEnable, ISleep/IWatch (ch. 8, §4.15);
-    - the clocks of ClkStart/ClkRead, and the wall clock of CDate/CTime/GetTime.
+    - the clocks of ClkStart/ClkRead, and the wall clock of CDate/CTime/GetTime;
+    - with several tasks, each task's RAPID Message Queue (ABB's RMQ), which the others send to.
 
     Times are seconds; inside, the clock counts whole microseconds, so that adding the time of
     a statement a million times gives exactly a million times it. *)
