@@ -518,17 +518,15 @@ let rmq_send w ~slot (m : rmq_message) =
               occur r n;
               Ok ()))
 
-(* A message an rmqmessage variable holds: in the one it held before when there is one, so that a
-   variable taking message after message keeps one; at most rmq_kept_limit are kept, the oldest
-   forgotten first (R-14-rmq3). *)
+(* A message an rmqmessage variable holds, under a new identity: the one the variable held before
+   is forgotten, so that a variable taking message after message holds one; of the others the
+   last rmq_kept_limit given out are kept, the oldest forgotten first (R-14-rmq3). *)
 let rmq_keep w ?into m =
   let c = w.c in
-  match into with
-  | Some k when Hashtbl.mem c.rmq_kept k -> Hashtbl.replace c.rmq_kept k m; k
-  | _ ->
-      c.rmq_last <- c.rmq_last + 1;
-      Hashtbl.replace c.rmq_kept c.rmq_last m;
-      Hashtbl.remove c.rmq_kept (c.rmq_last - rmq_kept_limit);
-      c.rmq_last
+  Option.iter (Hashtbl.remove c.rmq_kept) into;
+  c.rmq_last <- c.rmq_last + 1;
+  Hashtbl.replace c.rmq_kept c.rmq_last m;
+  Hashtbl.remove c.rmq_kept (c.rmq_last - rmq_kept_limit);
+  c.rmq_last
 
 let rmq_kept w k = Hashtbl.find_opt w.c.rmq_kept k

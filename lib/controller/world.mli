@@ -291,5 +291,6 @@ val rmq_send : t -> slot:int -> rmq_message -> (unit, string) result
 
 val rmq_keep : t -> ?into:int -> rmq_message -> int
 val rmq_kept : t -> int -> rmq_message option
-(** The messages rmqmessage variables hold, by an identity: [into], a variable's identity so far,
-    is reused; the last 1000 are kept (doc/rulings.md R-14-rmq3). *)
+(** The messages rmqmessage variables hold, each by a new identity: [into], the identity the
+    variable held so far, is forgotten; of the others the last 1000 given out are kept
+    (doc/rulings.md R-14-rmq3). *)

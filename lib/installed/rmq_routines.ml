@@ -98,7 +98,7 @@ let send ctx args =
                 data = Data (V.copy v) } in
       Result.map (fun () -> target) (W.rmq_send w ~slot:target m)
 
-(* A message into an rmqmessage variable; the message it held before is replaced (R-14-rmq3). *)
+(* A message into an rmqmessage variable, which gives back the one it held (R-14-rmq3). *)
 let store_message ctx args name m =
   match named_argument ctx args name with
   | Location (box, i, _) ->

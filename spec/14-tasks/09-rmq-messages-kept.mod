@@ -3,7 +3,7 @@ MODULE rmq_messages_kept
 ! @section 14
 ! @section 7
 ! @expect ok
-! @description ABB's rmqmessage and RMQGetMsgHeader (RAPID Message Queue): an rmqmessage variable that takes message after message holds the last; the controller keeps the messages of the last 1000 variables that took a new one, so that one of 1001 holds none any more: ERR_RMQ_INVMSG (doc/rulings.md R-14-rmq3).
+! @description ABB's rmqmessage and RMQGetMsgHeader (RAPID Message Queue): an rmqmessage variable that takes message after message holds the last; the controller keeps the last 1000 messages variables took, so that the first of 1001 variables holds none any more: ERR_RMQ_INVMSG (doc/rulings.md R-14-rmq3).
 ! @output reused: 1001
 ! @output ms{2}: 2
 ! @output ms{1}: ERR_RMQ_INVMSG
