@@ -200,9 +200,10 @@ let pack_bytes ctx args v =
         | _ -> Error "ERR_ARGVALERR")
     | Some _ -> Error "ERR_ARGVALERR"
     | None -> (
-        (* \ASCII, or no encoding named: a string is its characters, a byte one character. *)
+        (* \ASCII, or no encoding named: a string is its characters (none for "", R-13-raw1), a
+           byte one character. *)
         match v with
-        | V.String s when s <> "" -> Ok (Bytes.of_string s)
+        | V.String s -> Ok (Bytes.of_string s)
         | V.Num f when Float.is_integer f && f >= 0. && f <= 255. && present ctx args "ASCII" ->
             Ok (Bytes.make 1 (Char.chr (int_of_float f)))
         | _ -> Error "ERR_ARGVALERR")
@@ -226,8 +227,9 @@ let unpack ctx args b n start =
             match target with Some (V.Dnum _) -> V.dnum f | _ -> V.num f) (take (abs x))
     | Some _ -> Error "ERR_ARGVALERR"
     | None -> (
+        (* \ASCII:=0 reads no byte and gives "" (R-13-raw1). *)
         match integer (num ctx args "ASCII") with
-        | Some k when k >= 1 && k <= 80 -> Result.map (fun bs -> V.String (Bytes.to_string bs)) (take k)
+        | Some k when k >= 0 && k <= 80 -> Result.map (fun bs -> V.String (Bytes.to_string bs)) (take k)
         | _ -> Error "ERR_ARGVALERR")
 
 (* ---------------------------------------------------------------- sockets *)
@@ -409,8 +411,9 @@ let call (ctx : context) name args =
         let* ic = device_input ctx args in
         let id, b, _ = raw ctx args "RawData" in
         let got = try input ic b 0 S.rawbytes_capacity with Sys_error _ -> -1 in
+        (* Nothing left: ERR_RANYBIN_EOF, the rawbytes unchanged (R-13-raw2). *)
         if got < 0 then Failed "ERR_FILEACC"
-        else if got = 0 then Failed "ERR_FILEEOF"
+        else if got = 0 then Failed "ERR_RANYBIN_EOF"
         else (S.set_rawbytes_length (sv ()) id got; done_))
   | "readanybin" ->
       Some (
@@ -502,9 +505,11 @@ let call (ctx : context) name args =
       Some (
         let _, fb, fn = raw ctx args "FromRawData" in
         let tid, tb, tn = raw ctx args "ToRawData" in
+        (* FromIndex may stand right after the valid data: without \NoOfBytes nothing is copied
+           (R-13-raw3), an empty rawbytes from 1 too. *)
         let* from =
           match integer (num ctx args "FromIndex") with
-          | Some k when k >= 1 && k <= fn -> Ok k | _ -> Error "ERR_OUTOFBND" in
+          | Some k when k >= 1 && k <= fn + 1 -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* count = match integer (num ctx args "NoOfBytes") with
           | None when not (present ctx args "NoOfBytes") -> Ok (fn - from + 1)
           | Some k when k >= 1 && from + k - 1 <= fn -> Ok k
@@ -531,9 +536,11 @@ let call (ctx : context) name args =
   | "unpackrawbytes" ->
       Some (
         let _, b, n = raw ctx args "RawData" in
+        (* \ASCII:=0 reads nothing, so it may also start right after the valid data (R-13-raw1). *)
+        let nothing = integer (num ctx args "ASCII") = Some 0 in
         let* start =
           match integer (num ctx args "StartIndex") with
-          | Some k when k >= 1 && k <= n -> Ok k | _ -> Error "ERR_OUTOFBND" in
+          | Some k when k >= 1 && (k <= n || (nothing && k = n + 1)) -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* v = unpack ctx args b n start in
         match value ctx args "Value", v with
         | Some (V.String _), V.String _ | Some (V.Num _), V.Num _ | Some (V.Dnum _), V.Dnum _ ->
