@@ -436,12 +436,12 @@ let enter_routine cfg (cs : call_state) =
   let depth = cfg.act.call_depth + 1 in
   if depth > cfg.limits.max_call_depth then begin
     cfg.focus <- F_done (call_depth_exceeded cfg.limits);
-    ("call-depth-exceeded", [])
+    (Rule.Call_depth_exceeded, [])
   end
   else if activation_bytes r > cfg.limits.max_memory - cfg.memory - cs.args_memory then begin
     (* The activation itself counts: a very deep recursion stays within the budget too. *)
     cfg.focus <- F_done (memory_exhausted cfg ("the call of " ^ r.name) (region_of_focus_stmt cfg));
-    ("memory-exhausted", [])
+    (Rule.Memory_exhausted, [])
   end
   else begin
     let slots = Array.make r.locals { box = [||]; idx = 0 } in
@@ -457,7 +457,7 @@ let enter_routine cfg (cs : call_state) =
     cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
     cfg.mark <- [];
     cfg.focus <- F_next;
-    ("call-enter", Routine_entered r.name
+    (Rule.Call_enter, Routine_entered r.name
                    :: (if cfg.observe && Array.length r.parameters > 0 then
                          [ Observed (Called { routine = r.name; arguments = List.filter_map (fun x -> x)
                              (List.mapi (fun i (p : Ir.parameter) ->
@@ -473,12 +473,12 @@ let return_from cfg value =
   match act.caller with
   | None ->
       cfg.focus <- F_done Ended;
-      ("return-entry", [ Routine_left act.routine.name; Task_ended ])
+      (Rule.Return_entry, [ Routine_left act.routine.name; Task_ended ])
   | Some caller when act.routine.kind = Trap ->
       (* ch. 8: after ENDTRAP or RETURN, execution goes on where the interrupt came in. *)
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
       cfg.focus <- F_next;
-      ("trap-end", [ Routine_left act.routine.name; Trap_left { trap = act.routine.name; time = cfg.host.now () } ])
+      (Rule.Trap_end, [ Routine_left act.routine.name; Trap_left { trap = act.routine.name; time = cfg.host.now () } ])
   | Some caller ->
       release cfg act;
       cfg.act <- caller;
@@ -487,7 +487,7 @@ let return_from cfg value =
       (match act.routine.kind, value with
        | Function, Some v -> cfg.focus <- F_value v
        | _ -> cfg.focus <- F_next);
-      ((match act.routine.kind with Function -> "return-function" | _ -> "return-procedure"),
+      ((match act.routine.kind with Function -> Rule.Return_function | _ -> Rule.Return_procedure),
        (match value with
         | Some v when cfg.observe && act.routine.kind = Function ->
             [ Observed (Returned { routine = act.routine.name; value = Observation.value v }) ]
@@ -520,9 +520,9 @@ let call_context cfg (cs : call_state) : Installed_routine.context = {
   error_number = (fun name -> error_number cfg name);
 }
 
-let exec_ref : (config -> Ir.stmt -> string * event list) ref = ref (fun _ _ -> ("", []))
+let exec_ref : (config -> Ir.stmt -> Rule.t * event list) ref = ref (fun _ _ -> (Rule.Stuck, []))
 
-let begin_call_ref : (config -> Ir.call -> string) ref = ref (fun _ _ -> "")
+let begin_call_ref : (config -> Ir.call -> Rule.t) ref = ref (fun _ _ -> Rule.Stuck)
 
 (* The routine a late-bound name denotes (§4.6): "name1:name2" the routine name2 of module
    name1 (a LOCAL one too); a plain name by the scope rules of §5.3 from the calling module: its
@@ -546,7 +546,7 @@ let late_routine cfg name =
       | Some i -> Some i
       | None -> find (fun (r : Ir.routine) -> not r.local))
 
-let raise_to_user_ref : (config -> call_state -> string * event list) ref = ref (fun _ _ -> ("", []))
+let raise_to_user_ref : (config -> call_state -> Rule.t * event list) ref = ref (fun _ _ -> (Rule.Stuck, []))
 
 let call_primitive cfg (cs : call_state) name =
   if String.length name = 11 && String.lowercase_ascii name = "raisetouser" then !raise_to_user_ref cfg cs else
@@ -573,7 +573,7 @@ let call_primitive cfg (cs : call_state) name =
   | History_exhausted m ->
       (* The history --samples or rapid-sem motion keeps, beyond its budget (doc/motion.md). *)
       cfg.focus <- F_done (Outcome.motion_history_exhausted m cs.call.call_at);
-      ("motion-history-exhausted", List.rev !events)
+      (Rule.Motion_history_exhausted, List.rev !events)
   | Wait { wait; first_poll } ->
       (* WaitUntil evaluates its condition again at every poll: the argument's expression. *)
       let cond = match entry with
@@ -585,31 +585,31 @@ let call_primitive cfg (cs : call_state) name =
         | None -> now +. Option.value wait.poll ~default:0. in
       push cfg (K_wait { wait; cond; next_poll });
       cfg.focus <- F_next;
-      ("wait-start", List.rev !events)
+      (Rule.Wait_start, List.rev !events)
   | Returned v ->
       (match cs.callee.kind, v with
        | Function, Some v -> cfg.focus <- F_value v
        | Function, None -> raise_ cfg "ERR_FNCNORET"
        | _ -> cfg.focus <- F_next);
-      ("call-primitive", List.rev !events)
+      (Rule.Call_primitive, List.rev !events)
   | Failed { error = name; at_move = true } ->
       (* §7.4: a \SyncLastMoveInst error, raised at the move instruction. *)
       cfg.focus <- F_raise { (error cfg name (region_of_focus_stmt cfg)) with asynchronous = true };
-      ("async-error-at-move", List.rev !events)
-  | Failed { error = name; at_move = false } -> raise_ cfg name; ("call-primitive-error", List.rev !events)
-  | Stop_requested -> cfg.focus <- F_done Ended; ("call-primitive-stop", List.rev !events @ [ Task_ended ])
+      (Rule.Async_error_at_move, List.rev !events)
+  | Failed { error = name; at_move = false } -> raise_ cfg name; (Rule.Call_primitive_error, List.rev !events)
+  | Stop_requested -> cfg.focus <- F_done Ended; (Rule.Call_primitive_stop, List.rev !events @ [ Task_ended ])
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
-      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
+      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; (Rule.Call_by_var_unknown, List.rev !events)
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
-          raise_ ~about:target cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
+          raise_ ~about:target cfg "ERR_CALLPROC"; (Rule.Call_by_var_mismatch, List.rev !events)
       | Some i -> (
           match Late_binding.bind cfg.program.routines.(i) ~kind:(reference_kind cfg) [||] with
-          | Error name -> raise_ ~about:target cfg name; ("call-by-var-mismatch", List.rev !events)
+          | Error name -> raise_ ~about:target cfg name; (Rule.Call_by_var_mismatch, List.rev !events)
           | Ok arguments ->
               let rule = !begin_call_ref cfg { Ir.callee = Routine i; arguments; call_at = cs.call.call_at } in
-              ignore rule; ("call-by-var", List.rev !events)))
+              ignore rule; (Rule.Call_by_var, List.rev !events)))
   | Not_modelled when cfg.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22); VAR and INOUT arguments keep their values. *)
@@ -619,7 +619,7 @@ let call_primitive cfg (cs : call_state) name =
       (match cs.callee.kind with
        | Function -> cfg.focus <- F_value (V.default_of (Option.value cs.callee.stub_result ~default:V.S_num))
        | Procedure | Trap -> cfg.focus <- F_next);
-      ("call-stubbed",
+      (Rule.Call_stubbed,
        List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
   | Retry_requested -> (
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
@@ -628,14 +628,14 @@ let call_primitive cfg (cs : call_state) name =
       | In_handler _ ->
           let rule, more = !exec_ref cfg { Ir.s = Ir.Retry; sat = cs.call.call_at } in
           (rule, List.rev !events @ more)
-      | _ -> cfg.focus <- F_next; ("call-primitive", List.rev !events))
+      | _ -> cfg.focus <- F_next; (Rule.Call_primitive, List.rev !events))
   | Not_modelled ->
       cfg.focus <- F_done (Outcome.not_modelled cs.callee.name cs.call.call_at);
-      ("call-not-modelled", List.rev !events)
+      (Rule.Call_not_modelled, List.rev !events)
 
 let begin_call cfg (call : Ir.call) =
   match call.callee with
-  | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKPRC"; "call-unknown"
+  | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKPRC"; Rule.Call_unknown
   | Routine i ->
       let callee = cfg.program.routines.(i) in
       let n = Array.length callee.parameters in
@@ -644,7 +644,7 @@ let begin_call cfg (call : Ir.call) =
                          args_module_data = Array.make n false; args_memory = 0;
                          primitive_args = Array.make n Argument.Missing; next = 0 });
       cfg.focus <- F_next;
-      "call-arguments"
+      Rule.Call_arguments
 
 let () = begin_call_ref := begin_call
 
@@ -755,14 +755,14 @@ let bind_alias cfg (cs : call_state) rest l =
   let i = cs.next in
   let p = cs.callee.parameters.(i) in
   match alias_allowed p cs.args_kinds.(i) with
-  | Error name -> cfg.stack <- rest; raise_ cfg name; ("argument-alias-refused", [])
+  | Error name -> cfg.stack <- rest; raise_ cfg name; (Rule.Argument_alias_refused, [])
   | Ok () ->
       cs.args_slots.(i) <- l;
       cs.args_present.(i) <- true;
       cs.primitive_args.(i) <- Argument.Location (l.box, l.idx, cs.args_kinds.(i));
       cs.next <- i + 1;
       cfg.focus <- F_next;
-      ("argument-alias", [])
+      (Rule.Argument_alias, [])
 
 (* A reference argument, an argument that cannot be bound quietly (see [settle_arguments]), or
    the call itself when every argument is bound (§5.2). *)
@@ -778,23 +778,23 @@ let next_argument cfg (cs : call_state) rest =
     let i = cs.next in
     let p = cs.callee.parameters.(i) in
     let unsettled () =
-      cfg.focus <- F_done (Stuck "an argument left unsettled"); ("stuck", []) in
+      cfg.focus <- F_done (Stuck "an argument left unsettled"); (Rule.Stuck, []) in
     match cs.call.arguments.(i) with
     | By_reference (place, k) ->
         cs.args_kinds.(i) <- reference_kind cfg place k;
         cs.args_module_data.(i) <- denotes_module_data cfg place;
         let l = static_loc cfg place in
         if l != no_loc then bind_alias cfg cs rest l
-        else (cfg.focus <- F_place place; ("argument-reference", []))
+        else (cfg.focus <- F_place place; (Rule.Argument_reference, []))
     | Pass_on (Local j) when j < Array.length cfg.act.present && cfg.act.present.(j) ->
         if duplicate_alternative cfg cs i then begin
-          cfg.stack <- rest; raise_ cfg "ERR_ARGDUPCND"; ("argument-pass-on-duplicate", [])
+          cfg.stack <- rest; raise_ cfg "ERR_ARGDUPCND"; (Rule.Argument_pass_on_duplicate, [])
         end
         else unsettled ()
     | Absent | Pass_on _ when V.shape_bytes p.p_default > args_room cfg cs ->
         cfg.stack <- rest;
         cfg.focus <- F_done (memory_exhausted cfg ("the absent parameter " ^ p.p_name) (region_of_focus_stmt cfg));
-        ("memory-exhausted", [])
+        (Rule.Memory_exhausted, [])
     | Absent | Pass_on _ | Present_switch | By_value _ -> unsettled ()
 
 (* ------------------------------------------------------------------ errors *)
@@ -826,7 +826,7 @@ let handle cfg (e : err) =
       cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
       cfg.mark <- [];
       cfg.focus <- F_next;
-      ("raise-handle", [ Error_handled { name = e.name; routine = act.routine.name } ])
+      (Rule.Raise_handle, [ Error_handled { name = e.name; routine = act.routine.name } ])
 
 (* §7.3: the user level of a routine of a NOSTEPIN module: the first routine above it in the
    call chain that is not one (a trap's caller is no call: none across it), with the mark of its
@@ -859,21 +859,21 @@ let raise_step cfg (e : err) =
   match act.handling, act.routine.error with
   | _ when cfg.backward_depth >= 0 && act.call_depth >= cfg.backward_depth ->
       (* §6.1: an error while a BACKWARD handler runs cannot be handled by an error handler. *)
-      stop cfg e "raise-in-backward"
-  | (In_handler _ | In_undo), _ -> stop cfg e "raise-in-handler"
+      stop cfg e Rule.Raise_in_backward
+  | (In_handler _ | In_undo), _ -> stop cfg e Rule.Raise_in_handler
   | Body, Some _ when not (initialising cfg act) -> handle cfg e
   | Body, _ -> (
       match act.caller with
-      | None -> stop cfg e "raise-unhandled"
+      | None -> stop cfg e Rule.Raise_unhandled
       | Some _ when act.routine.kind = Trap && e.searched ->
           (* An error that leaves a trap goes to the system error handler: there is no call
              point to raise it at (installed-facts.md section 6, R-8-e). *)
-          stop cfg e "raise-in-trap"
+          stop cfg e Rule.Raise_in_trap
       | Some caller ->
           ignore caller;
           (* §7.2: only the routines with an error recovery point are searched. *)
-          if e.searched then (cfg.focus <- F_abandon (Go_on_propagate e); ("raise-propagate", []))
-          else (cfg.focus <- F_search (e, act.recovery_up); ("longjump-search-start", [])))
+          if e.searched then (cfg.focus <- F_abandon (Go_on_propagate e); (Rule.Raise_propagate, []))
+          else (cfg.focus <- F_search (e, act.recovery_up); (Rule.Longjump_search_start, [])))
 
 let recovery_point cfg (a : activation) (e : err) =
   match a.routine.error with
@@ -937,8 +937,8 @@ and kept_exit cfg (s : Ir.stmt) =
             k.handler.handling <- Body;
             restore ();
             cfg.focus <- F_next;
-            Some ((if s.s = Retry then "async-retry-resume" else "async-trynext-resume"), [])
-        | Exit -> restore (); cfg.focus <- F_abandon Go_on_exit; Some ("async-exit", [])
+            Some ((if s.s = Retry then Rule.Async_retry_resume else Rule.Async_trynext_resume), [])
+        | Exit -> restore (); cfg.focus <- F_abandon Go_on_exit; Some (Rule.Async_exit, [])
         | _ when k.pp_act == k.handler ->
             (* The program pointer's own routine: its statement in progress is left as by any
                error (a move instruction's path with it, §7.6 example 3). *)
@@ -946,7 +946,7 @@ and kept_exit cfg (s : Ir.stmt) =
         | _ ->
             restore ();
             cfg.focus <- F_abandon (Go_on_in_handler (s, k.handler));
-            Some ("async-handler-leave", []))
+            Some (Rule.Async_handler_leave, []))
     | Some _, _ -> None
 
 and exec_statement cfg (s : Ir.stmt) =
@@ -957,20 +957,20 @@ and exec_statement cfg (s : Ir.stmt) =
   let mark_here () =
     if not part_of_compact_if then (push cfg (K_stmt (s, cfg.mark)); cfg.mark <- cfg.stack) in
   match s.s with
-  | Label -> cfg.focus <- F_next; ("label", [])
-  | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; ("execute-placeholder", [])
+  | Label -> cfg.focus <- F_next; (Rule.Label, [])
+  | Placeholder_statement -> mark_here (); raise_ cfg "ERR_EXECPHR"; (Rule.Execute_placeholder, [])
   | Assign (p, e) ->
       mark_here ();
       let l = static_loc cfg p in
       if l != no_loc then (push cfg (K_assign_store l); cfg.focus <- F_expr e)
       else (push cfg (K_assign_value e); cfg.focus <- F_place p);
-      ("assign", [])
+      (Rule.Assign, [])
   | Call_procedure c -> mark_here (); (begin_call cfg c, [])
   | Call_late (e, args) ->
       mark_here ();
       push cfg (K_late_name (args, s.sat));
       cfg.focus <- F_expr e;
-      ("call-late", [])
+      (Rule.Call_late, [])
   | Goto (block, index) ->
       (* §4.7: the label's statement list is this one or one that encloses it: unwind to it. *)
       let rec unwind = function
@@ -981,7 +981,7 @@ and exec_statement cfg (s : Ir.stmt) =
         | [] -> cfg.focus <- F_done (Stuck "GOTO to a label not in an enclosing statement list")
       in
       unwind cfg.stack;
-      ("goto", [])
+      (Rule.Goto, [])
   | Break | Continue ->
       (* §4.8, §4.9: to the innermost loop of the routine. *)
       let rec unwind = function
@@ -996,23 +996,23 @@ and exec_statement cfg (s : Ir.stmt) =
         | [] -> cfg.focus <- F_done (Stuck "BREAK or CONTINUE outside a loop")
       in
       unwind cfg.stack;
-      ((if s.s = Break then "break" else "continue"), [])
+      ((if s.s = Break then Rule.Break else Rule.Continue), [])
   | Return None -> return_from cfg None
-  | Return (Some e) -> mark_here (); push cfg K_return_value; cfg.focus <- F_expr e; ("return-value", [])
+  | Return (Some e) -> mark_here (); push cfg K_return_value; cfg.focus <- F_expr e; (Rule.Return_value, [])
   | Raise None -> (
       match cfg.act.handling with
       | In_handler (e, _) -> (
           match cfg.act.caller with
-          | None -> stop cfg e "raise-again-unhandled"
+          | None -> stop cfg e Rule.Raise_again_unhandled
           | Some _ ->
               cfg.focus <- F_search ({ e with searched = false }, cfg.act.recovery_up);
-              ("raise-again", []))
-      | _ -> cfg.focus <- F_done (Stuck "RAISE without a number outside an error handler"); ("stuck", []))
-  | Raise (Some e) -> mark_here (); push cfg K_raise_value; cfg.focus <- F_expr e; ("raise-number", [])
-  | Exit -> cfg.focus <- F_abandon Go_on_exit; ("exit", [])
+              (Rule.Raise_again, []))
+      | _ -> cfg.focus <- F_done (Stuck "RAISE without a number outside an error handler"); (Rule.Stuck, []))
+  | Raise (Some e) -> mark_here (); push cfg K_raise_value; cfg.focus <- F_expr e; (Rule.Raise_number, [])
+  | Exit -> cfg.focus <- F_abandon Go_on_exit; (Rule.Exit, [])
   | Retry -> (
       let resumed = resume_nostepin cfg in
-      let named (rule, events) = ((if resumed && rule = "retry" then "resume-retry" else rule), events) in
+      let named (rule, events) = ((if resumed && rule = Rule.Retry then Rule.Resume_retry else rule), events) in
       named @@
       match cfg.act.handling with
       | In_handler (e, point) ->
@@ -1025,7 +1025,7 @@ and exec_statement cfg (s : Ir.stmt) =
                goes to the system error handler. *)
             cfg.focus <- F_raise { (error cfg "ERR_EXCRTYMAX" s.sat) with searched = true };
             act.handling <- In_handler (e, point);
-            ("retry-limit", [])
+            (Rule.Retry_limit, [])
           end
           else begin
             act.handling <- Body;
@@ -1038,12 +1038,12 @@ and exec_statement cfg (s : Ir.stmt) =
                  act.retried <- None;
                  cfg.stack <- point; cfg.mark <- []; cfg.focus <- F_next
              | _ -> cfg.focus <- F_done (Stuck "RETRY without a statement to retry"));
-            ("retry", [ Observed (Retried cfg.act.routine.name) ])
+            (Rule.Retry, [ Observed (Retried cfg.act.routine.name) ])
           end
-      | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); ("stuck", []))
+      | _ -> cfg.focus <- F_done (Stuck "RETRY outside an error handler"); (Rule.Stuck, []))
   | Trynext -> (
       let resumed = resume_nostepin cfg in
-      let named (rule, events) = ((if resumed && rule = "trynext" then "resume-trynext" else rule), events) in
+      let named (rule, events) = ((if resumed && rule = Rule.Trynext then Rule.Resume_trynext else rule), events) in
       named @@
       match cfg.act.handling with
       | In_handler ({ asynchronous = true; _ }, _) ->
@@ -1056,19 +1056,19 @@ and exec_statement cfg (s : Ir.stmt) =
            | K_stmt (_, prev) :: rest -> cfg.stack <- rest; cfg.mark <- prev; cfg.focus <- F_next
            | K_seq _ :: _ -> cfg.stack <- point; cfg.mark <- []; cfg.focus <- F_next  (* R-7.2-m *)
            | _ -> cfg.focus <- F_done (Stuck "TRYNEXT without a statement"));
-          ("trynext", [ Observed (Tried_next cfg.act.routine.name) ])
-      | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); ("stuck", []))
-  | Connect (p, trap) -> mark_here (); push cfg (K_connect_target (trap, p)); cfg.focus <- F_place p; ("connect", [])
-  | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("if", [])
+          (Rule.Trynext, [ Observed (Tried_next cfg.act.routine.name) ])
+      | _ -> cfg.focus <- F_done (Stuck "TRYNEXT outside an error handler"); (Rule.Stuck, []))
+  | Connect (p, trap) -> mark_here (); push cfg (K_connect_target (trap, p)); cfg.focus <- F_place p; (Rule.Connect, [])
+  | If (c, t, f) -> mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; (Rule.If, [])
   | Elseif (c, t, f) ->
       (* Marked for the error's place (the ELSEIF); RETRY and TRYNEXT go to its IF. *)
-      mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; ("elseif", [])
+      mark_here (); push cfg (K_if (t, f)); cfg.focus <- F_expr c; (Rule.Elseif, [])
   | Compact_if (c, inner) ->
-      mark_here (); push cfg (K_compact_if inner); cfg.focus <- F_expr c; ("compact-if", [])
-  | While (c, b) -> mark_here (); push cfg (K_while_test (c, b)); cfg.focus <- F_expr c; ("while", [])
-  | For f -> mark_here (); push cfg (K_for_from f); cfg.focus <- F_expr f.from_; ("for", [])
+      mark_here (); push cfg (K_compact_if inner); cfg.focus <- F_expr c; (Rule.Compact_if, [])
+  | While (c, b) -> mark_here (); push cfg (K_while_test (c, b)); cfg.focus <- F_expr c; (Rule.While, [])
+  | For f -> mark_here (); push cfg (K_for_from f); cfg.focus <- F_expr f.from_; (Rule.For, [])
   | Test (e, cases, default) ->
-      mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; ("test", [])
+      mark_here (); push cfg (K_test_subject (cases, default)); cfg.focus <- F_expr e; (Rule.Test, [])
 
 let () = exec_ref := exec
 
@@ -1129,17 +1129,17 @@ let next_frame cfg =
   match cfg.stack with
   | (K_stmt _ | K_seq _) :: _ ->
       cfg.focus <- F_done (Stuck "a configuration left unsettled (a completed statement or the next one of a list)");
-      ("stuck", [])
+      (Rule.Stuck, [])
   | K_while_body (c, b) :: rest ->
-      cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c; ("while-again", [])
+      cfg.stack <- K_while_test (c, b) :: rest; cfg.focus <- F_expr c; (Rule.While_again, [])
   | K_for_body (f, t, step) :: rest ->
       (* §4.18: the loop variable steps on; TO and STEP were evaluated once. *)
       let slot = cfg.act.slots.(f.variable) in
       let v = match get slot, step with
         | V.Num cur, V.Num d -> V.num (cur +. d) | other, _ -> other in
       set slot v;
-      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; ("for-step", observed_store cfg slot v))
-      else (cfg.stack <- rest; ("for-done", []))
+      if for_in_range v t step then (cfg.stack <- K_seq (f.loop_body, 0) :: cfg.stack; (Rule.For_step, observed_store cfg slot v))
+      else (cfg.stack <- rest; (Rule.For_done, []))
   | K_routine_end :: _ -> (
       match cfg.act.routine.kind with
       | Function ->
@@ -1152,36 +1152,36 @@ let next_frame cfg =
                release cfg act;
                cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;
                cfg.focus <- F_raise (error ~about:act.routine.name cfg "ERR_FNCNORET" (region_of_focus_stmt cfg)));
-          ("function-no-return", [ Routine_left act.routine.name ])
+          (Rule.Function_no_return, [ Routine_left act.routine.name ])
       | Procedure | Trap -> return_from cfg None)
   | K_handler_end :: _ -> (
       (* §7.1: reaching the end of an error handler calls the system error handler. *)
       match cfg.act.handling with
-      | In_handler (e, _) -> stop cfg e "handler-end"
-      | _ -> cfg.focus <- F_done (Stuck "end of a handler not in a handler"); ("stuck", []))
-  | K_undo_end after :: _ -> leave_abandoned cfg after "undo-done" "undo-done-entry"
+      | In_handler (e, _) -> stop cfg e Rule.Handler_end
+      | _ -> cfg.focus <- F_done (Stuck "end of a handler not in a handler"); (Rule.Stuck, []))
+  | K_undo_end after :: _ -> leave_abandoned cfg after Rule.Undo_done Rule.Undo_done_entry
   | K_local_init (act, inits) :: rest -> (
       match inits with
       | (_, Init_default shape) :: _ when V.shape_bytes shape > cfg.limits.max_memory - cfg.memory ->
           (* Settling initialises routine data the budget holds (see [settle]). *)
           cfg.focus <- F_done (memory_exhausted cfg ("the routine data of " ^ act.routine.name)
                                  (match act.caller_mark with K_stmt (s, _) :: _ -> s.sat | _ -> act.routine.at));
-          ("memory-exhausted", [])
+          (Rule.Memory_exhausted, [])
       | (slot, Init_expr e) :: more ->
           act.slots.(slot) <- fresh_loc (V.Bool false);
           cfg.stack <- K_assign_store act.slots.(slot) :: K_local_init (act, more) :: rest;
-          cfg.focus <- F_expr e; ("local-initial-value", [])
+          cfg.focus <- F_expr e; (Rule.Local_initial_value, [])
       | _ ->
-          cfg.focus <- F_done (Stuck "routine data left unsettled"); ("stuck", []))
+          cfg.focus <- F_done (Stuck "routine data left unsettled"); (Rule.Stuck, []))
   | K_args cs :: rest -> next_argument cfg cs rest
   | K_backward_end :: rest ->
       cfg.stack <- rest; cfg.backward_depth <- -1; cfg.host.set_backward false;
-      ("backward-end", [])
-  | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); ("stuck", [])
+      (Rule.Backward_end, [])
+  | K_task_end :: _ -> cfg.focus <- F_done (Stuck "the bottom of the stack reached"); (Rule.Stuck, [])
   | f :: _ ->
       cfg.focus <- F_done (Stuck ("a statement completed over the frame " ^ frame_kind f));
-      ("stuck", [])
-  | [] -> cfg.focus <- F_done (Stuck "empty stack"); ("stuck", [])
+      (Rule.Stuck, [])
+  | [] -> cfg.focus <- F_done (Stuck "empty stack"); (Rule.Stuck, [])
 
 (* ch. 8: an interrupt is served at the entry of the next statement, after the last statement
    of a statement list, and during waits; never at trap level, where it stays queued until the trap ends. The trap runs as a routine called
@@ -1204,7 +1204,7 @@ let serve_interrupt cfg =
         cfg.stack <- [ K_local_init (act, r.local_inits); K_seq (r.body, 0); K_routine_end ];
         cfg.mark <- [];
         cfg.focus <- F_next;
-        Some ("interrupt-serve", [ Trap_entered { number; trap = r.name; time = cfg.host.now () };
+        Some (Rule.Interrupt_serve, [ Trap_entered { number; trap = r.name; time = cfg.host.now () };
                                    Routine_entered r.name ])
 
 (* §7.4 (\SyncOrgMoveInst), §7.6 (collisions): an asynchronous error is raised when the program
@@ -1236,7 +1236,7 @@ let serve_async_error cfg =
           a.routine.error <> None && (match a.handling with Body -> true | In_handler _ | In_undo -> false) in
         match (if handled then List.find_opt takes (from_motion @ up [] (Some cfg.act)) else None) with
         | None ->
-            let rule, events = stop cfg e "async-error-unhandled" in
+            let rule, events = stop cfg e Rule.Async_error_unhandled in
             Some (rule, raised :: events)
         | Some h ->
             cfg.kept <- { handler = h; pp_act = cfg.act; pp_stack = cfg.stack; pp_mark = cfg.mark } :: cfg.kept;
@@ -1247,7 +1247,7 @@ let serve_async_error cfg =
             cfg.stack <- [ K_seq (hd.handler, 0); K_handler_end ];
             cfg.mark <- [];
             cfg.focus <- F_next;
-            Some ("async-error", [ raised; Error_handled { name = e.name; routine = h.routine.name } ])
+            Some (Rule.Async_error, [ raised; Error_handled { name = e.name; routine = h.routine.name } ])
 
 let time_exhausted cfg rule =
   cfg.focus <- F_done (Outcome.time_limit cfg.host.max_time);
@@ -1279,9 +1279,9 @@ let wait_step cfg ws rest =
       in
       match ws.cond with
       | Some e when reached ws.next_poll ->
-          cfg.stack <- K_poll ws :: cfg.stack; cfg.focus <- F_expr e; ("wait-poll", [])
-      | _ when ws.cond = None && ws.wait.satisfied () -> finish false "wait-done"
-      | _ when (match ws.wait.deadline with Some d -> reached d | None -> false) -> finish true "wait-timeout"
+          cfg.stack <- K_poll ws :: cfg.stack; cfg.focus <- F_expr e; (Rule.Wait_poll, [])
+      | _ when ws.cond = None && ws.wait.satisfied () -> finish false Rule.Wait_done
+      | _ when (match ws.wait.deadline with Some d -> reached d | None -> false) -> finish true Rule.Wait_timeout
       | _ -> (
           let candidates = List.filter_map Fun.id
               [ ws.wait.deadline; host.next_event (); (if ws.cond = None then None else Some ws.next_poll) ] in
@@ -1289,14 +1289,14 @@ let wait_step cfg ws rest =
           | l when cfg.cooperative ->
               (* ch. 14: another task may end the wait; the scheduler moves the clock when every
                  task waits (doc/semantics.md, "Several tasks"). *)
-              cfg.wake <- (match l with t :: _ -> Some t | [] -> None); ("wait-yield", [])
+              cfg.wake <- (match l with t :: _ -> Some t | [] -> None); (Rule.Wait_yield, [])
           | [] ->
               cfg.focus <- F_done (Deadlock
                                      (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
                                         now ws.wait.what));
-              ("wait-deadlock", [])
-          | t :: _ when t > host.max_time -> time_exhausted cfg "wait-time-limit"
-          | t :: _ -> host.advance_to t; ("wait-advance", [])))
+              (Rule.Wait_deadlock, [])
+          | t :: _ when t > host.max_time -> time_exhausted cfg Rule.Wait_time_limit
+          | t :: _ -> host.advance_to t; (Rule.Wait_advance, [])))
 
 let next cfg =
   let statement_point = match cfg.stack with
@@ -1307,7 +1307,7 @@ let next cfg =
     (* Each statement entered, and each new round of a loop, takes the statement time; once:
        settling may have charged it already and stopped here (see [settle]). *)
     if cfg.charged then cfg.charged <- false else cfg.host.statement ();
-    if cfg.host.now () > cfg.host.max_time then time_exhausted cfg "time-limit"
+    if cfg.host.now () > cfg.host.max_time then time_exhausted cfg Rule.Time_limit
     else match serve_interrupt cfg with Some r -> r | None -> next_frame cfg
   end
   else match cfg.stack with
@@ -1322,9 +1322,9 @@ let start_loop cfg (f : Ir.for_loop) from t step rest =
   cfg.focus <- F_next;
   if for_in_range from t step then begin
     cfg.stack <- K_seq (f.loop_body, 0) :: K_for_body (f, t, step) :: rest;
-    ("for-enter", observed_store cfg cfg.act.slots.(f.variable) from)
+    (Rule.For_enter, observed_store cfg cfg.act.slots.(f.variable) from)
   end
-  else (cfg.stack <- rest; ("for-empty", []))
+  else (cfg.stack <- rest; (Rule.For_empty, []))
 
 let value_step cfg v =
   match cfg.stack with
@@ -1334,10 +1334,10 @@ let value_step cfg v =
           (* §2.16: assigning to an output signal sets it. *)
           cfg.stack <- rest;
           match cfg.host.write_signal (V.Handle h) v with
-          | Ok () -> cfg.focus <- F_next; ("store-signal", [])
-          | Error "" -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); ("stuck", [])
-          | Error name -> raise_ cfg name; ("store-signal", []))
-      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; ("store", observed_store cfg l v))
+          | Ok () -> cfg.focus <- F_next; (Rule.Store_signal, [])
+          | Error "" -> cfg.focus <- F_done (Stuck "a signal assigned a value that is not a num"); (Rule.Stuck, [])
+          | Error name -> raise_ cfg name; (Rule.Store_signal, []))
+      | _ -> set l v; cfg.stack <- rest; cfg.focus <- F_next; (Rule.Store, observed_store cfg l v))
   | K_poll ws :: K_wait _ :: rest -> (
       match bool_of v with
       | Some true ->
@@ -1345,75 +1345,75 @@ let value_step cfg v =
           (match ws.wait.finish ~timed_out:false with
            | None -> cfg.focus <- F_next
            | Some { error; _ } -> raise_ cfg error);
-          ("wait-poll-true", [])
+          (Rule.Wait_poll_true, [])
       | _ ->
           ws.next_poll <- ws.next_poll +. Option.value ws.wait.poll ~default:Rapid_observable.Wait.default_poll_rate;
-          cfg.stack <- K_wait ws :: rest; cfg.focus <- F_next; ("wait-poll-false", []))
-  | K_read :: _ -> cfg.focus <- F_done (Stuck "a value where a place was read"); ("stuck", [])
+          cfg.stack <- K_wait ws :: rest; cfg.focus <- F_next; (Rule.Wait_poll_false, []))
+  | K_read :: _ -> cfg.focus <- F_done (Stuck "a value where a place was read"); (Rule.Stuck, [])
   | K_unary (op, _) :: rest -> (
       cfg.stack <- rest;
       match Arith.unary op v with
-      | Ok r -> cfg.focus <- F_value r; ("unary", [])
-      | Error name -> cfg.focus <- F_done (Stuck ("a unary operation failed: " ^ name)); ("stuck", []))
+      | Ok r -> cfg.focus <- F_value r; (Rule.Unary, [])
+      | Error name -> cfg.focus <- F_done (Stuck ("a unary operation failed: " ^ name)); (Rule.Stuck, []))
   | K_binary_right (op, a, _) :: rest -> (
       cfg.stack <- rest;
       match Arith.binary op a v with
-      | Ok r -> cfg.focus <- F_value r; ("binary", [])
-      | Error name -> raise_ cfg name; ("binary-error", []))
+      | Ok r -> cfg.focus <- F_value r; (Rule.Binary, [])
+      | Error name -> raise_ cfg name; (Rule.Binary_error, []))
   | K_and b :: rest -> (
       cfg.stack <- rest;
       match bool_of v with
-      | Some false -> cfg.focus <- F_value v; ("and-short", [])
-      | _ -> cfg.focus <- F_expr b; ("and-right", []))
+      | Some false -> cfg.focus <- F_value v; (Rule.And_short, [])
+      | _ -> cfg.focus <- F_expr b; (Rule.And_right, []))
   | K_or b :: rest -> (
       cfg.stack <- rest;
       match bool_of v with
-      | Some true -> cfg.focus <- F_value v; ("or-short", [])
-      | _ -> cfg.focus <- F_expr b; ("or-right", []))
+      | Some true -> cfg.focus <- F_value v; (Rule.Or_short, [])
+      | _ -> cfg.focus <- F_expr b; (Rule.Or_right, []))
   | K_aggregate (es, acc, i, kind) :: rest ->
       acc.(i) <- v;
       if i + 1 < Array.length es then begin
         cfg.stack <- K_aggregate (es, acc, i + 1, kind) :: rest; cfg.focus <- F_expr es.(i + 1);
-        ("aggregate-next", [])
+        (Rule.Aggregate_next, [])
       end
       else begin
         cfg.stack <- rest;
         cfg.focus <- F_value (match kind with Record_value -> V.Record acc | Array_value -> V.Array acc);
-        ("aggregate", [])
+        (Rule.Aggregate, [])
       end
   | K_if (t, f) :: rest -> (
       match bool_of v with
-      | Some true -> cfg.stack <- K_seq (t, 0) :: rest; cfg.focus <- F_next; ("if-true", [])
-      | _ -> cfg.stack <- K_seq (f, 0) :: rest; cfg.focus <- F_next; ("if-false", []))
+      | Some true -> cfg.stack <- K_seq (t, 0) :: rest; cfg.focus <- F_next; (Rule.If_true, [])
+      | _ -> cfg.stack <- K_seq (f, 0) :: rest; cfg.focus <- F_next; (Rule.If_false, []))
   | K_compact_if inner :: rest -> (
       cfg.stack <- rest;
       match bool_of v with
-      | Some true -> cfg.unmarked <- true; cfg.focus <- F_stmt inner; ("compact-if-true", [])
-      | _ -> cfg.focus <- F_next; ("compact-if-false", []))
+      | Some true -> cfg.unmarked <- true; cfg.focus <- F_stmt inner; (Rule.Compact_if_true, [])
+      | _ -> cfg.focus <- F_next; (Rule.Compact_if_false, []))
   | K_while_test (c, b) :: rest -> (
       match bool_of v with
-      | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; ("while-true", [])
-      | _ -> cfg.stack <- rest; cfg.focus <- F_next; ("while-false", []))
+      | Some true -> cfg.stack <- K_seq (b, 0) :: K_while_body (c, b) :: rest; cfg.focus <- F_next; (Rule.While_true, [])
+      | _ -> cfg.stack <- rest; cfg.focus <- F_next; (Rule.While_false, []))
   | K_for_to (f, from) :: rest -> (
       match f.step with
-      | Some _ -> cfg.focus <- F_done (Stuck "a FOR bound left unsettled"); ("stuck", [])
+      | Some _ -> cfg.focus <- F_done (Stuck "a FOR bound left unsettled"); (Rule.Stuck, [])
       | None ->
           (* §4.18: the default step is 1, or -1 when the range decreases. *)
           let step = match from, v with V.Num a, V.Num b when a > b -> V.num (-1.) | _ -> V.num 1. in
           start_loop cfg f from v step rest)
   | K_for_step (f, from, t) :: rest -> start_loop cfg f from t v rest
   | K_test_subject (cases, default) :: rest ->
-      if Array.length cases = 0 then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; ("test-default", []))
+      if Array.length cases = 0 then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; (Rule.Test_default, []))
       else (cfg.stack <- K_test_value (v, cases, default, 0, 0) :: rest;
-            cfg.focus <- F_expr (fst cases.(0)).(0); ("test-subject", []))
+            cfg.focus <- F_expr (fst cases.(0)).(0); (Rule.Test_subject, []))
   | K_test_value (subject, cases, default, ci, vi) :: rest ->
       (* §4.20: the first test value equal to the test expression selects its list. *)
-      if V.equal subject v then (cfg.stack <- K_seq (snd cases.(ci), 0) :: rest; cfg.focus <- F_next; ("test-match", []))
+      if V.equal subject v then (cfg.stack <- K_seq (snd cases.(ci), 0) :: rest; cfg.focus <- F_next; (Rule.Test_match, []))
       else begin
         let ci, vi = if vi + 1 < Array.length (fst cases.(ci)) then (ci, vi + 1) else (ci + 1, 0) in
-        if ci >= Array.length cases then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; ("test-default", []))
+        if ci >= Array.length cases then (cfg.stack <- K_seq (default, 0) :: rest; cfg.focus <- F_next; (Rule.Test_default, []))
         else (cfg.stack <- K_test_value (subject, cases, default, ci, vi) :: rest;
-              cfg.focus <- F_expr (fst cases.(ci)).(vi); ("test-next", []))
+              cfg.focus <- F_expr (fst cases.(ci)).(vi); (Rule.Test_next, []))
       end
   | K_return_value :: _ -> return_from cfg (Some v)
   | K_raise_value :: rest -> (
@@ -1423,39 +1423,39 @@ let value_step cfg v =
       | Some f -> (
           match to_int f with
           | Some n when (n >= 1 && n <= 90) || cfg.host.booked n ->
-              cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); ("raise", [])
-          | _ -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
-      | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
+              cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); (Rule.Raise, [])
+          | _ -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
+      | None -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
   | K_late_name (args, at) :: rest -> (
       cfg.stack <- rest;
       match v with
       | V.String name -> (
           let found = late_routine cfg name in
           match found with
-          | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
+          | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; (Rule.Call_late_unknown, [])
           | Some i when cfg.program.routines.(i).kind <> Procedure ->
               (* §4.6: late binding calls procedures only. *)
-              raise_ ~about:name cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
+              raise_ ~about:name cfg "ERR_CALLPROC"; (Rule.Call_late_mismatch, [])
           | Some i -> (
               let r = cfg.program.routines.(i) in
               match Late_binding.bind r ~kind:(reference_kind cfg) args with
-              | Error error_name -> raise_ ~about:name cfg error_name; ("call-late-mismatch", [])
+              | Error error_name -> raise_ ~about:name cfg error_name; (Rule.Call_late_mismatch, [])
               | Ok arguments ->
                   (begin_call cfg { Ir.callee = Routine i; arguments; call_at = at }, [])))
-      | _ -> raise_ cfg "ERR_CALLPROC"; ("call-late-mismatch", []))
+      | _ -> raise_ cfg "ERR_CALLPROC"; (Rule.Call_late_mismatch, []))
   | K_fit shape :: rest -> (
       cfg.stack <- rest;
       (* §3.10: an aggregate takes its parameter's type, when its members fit it. *)
       match V.conform shape v with
-      | Some v -> cfg.focus <- F_value v; ("argument-fit", [])
+      | Some v -> cfg.focus <- F_value v; (Rule.Argument_fit, [])
       | None -> (match rest with K_args _ :: r -> cfg.stack <- r | _ -> ());
-          raise_ cfg "ERR_CALLPROC"; ("argument-fit-refused", []))
+          raise_ cfg "ERR_CALLPROC"; (Rule.Argument_fit_refused, []))
   (* Settling binds a value argument the budget holds (see [settle]). *)
   | K_args cs :: rest when V.bytes v > args_room cfg cs ->
       cfg.stack <- rest;
       cfg.focus <- F_done (memory_exhausted cfg ("the copy for the parameter " ^ cs.callee.parameters.(cs.next).p_name)
                              (region_of_focus_stmt cfg));
-      ("memory-exhausted", [])
+      (Rule.Memory_exhausted, [])
   | K_element_index (l, idx, i, at) :: rest -> (
       (* §3.6: an index is an integer within the array's dimension (ERR_OUTOFBND). *)
       match get l, num_of v with
@@ -1465,13 +1465,13 @@ let value_step cfg v =
               let l' = { box = elems; idx = k - 1 } in
               if i + 1 < Array.length idx then begin
                 cfg.stack <- K_element_index (l', idx, i + 1, at) :: rest; cfg.focus <- F_expr idx.(i + 1);
-                ("index-next", [])
+                (Rule.Index_next, [])
               end
-              else (cfg.stack <- rest; cfg.focus <- F_loc l'; ("element", []))
-          | Some _ -> cfg.stack <- rest; raise_ cfg "ERR_OUTOFBND"; ("index-out-of-bounds", [])
-          | None -> cfg.stack <- rest; raise_ cfg "ERR_NOTINTVAL"; ("index-not-integer", []))
-      | _ -> cfg.stack <- rest; cfg.focus <- F_done (Stuck "an index into a value that is not an array"); ("stuck", []))
-  | _ -> cfg.focus <- F_done (Stuck "a value with no frame to take it"); ("stuck", [])
+              else (cfg.stack <- rest; cfg.focus <- F_loc l'; (Rule.Element, []))
+          | Some _ -> cfg.stack <- rest; raise_ cfg "ERR_OUTOFBND"; (Rule.Index_out_of_bounds, [])
+          | None -> cfg.stack <- rest; raise_ cfg "ERR_NOTINTVAL"; (Rule.Index_not_integer, []))
+      | _ -> cfg.stack <- rest; cfg.focus <- F_done (Stuck "an index into a value that is not an array"); (Rule.Stuck, []))
+  | _ -> cfg.focus <- F_done (Stuck "a value with no frame to take it"); (Rule.Stuck, [])
 
 let loc_step cfg l =
   match cfg.stack with
@@ -1484,20 +1484,20 @@ let loc_step cfg l =
          IDelete can (R-8-f). *)
       match get l with
       | _ when reference_kind cfg target Ref_variable = Ref_persistent || not (denotes_module_data cfg target) ->
-          raise_ cfg "ERR_CNTNOTVAR"; ("connect-not-variable", [])
+          raise_ cfg "ERR_CNTNOTVAR"; (Rule.Connect_not_variable, [])
       | V.Num n when n <> 0. && Float.is_integer n && cfg.host.connected (int_of_float n) ->
-          raise_ cfg "ERR_ALRDYCNT"; ("connect-again", [])
+          raise_ cfg "ERR_ALRDYCNT"; (Rule.Connect_again, [])
       | _ -> (
           match cfg.host.connect ~trap with
-          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; ("connect-allocate", observed_store cfg l (get l))
-          | Error name -> raise_ cfg name; ("connect-inomax", [])))
+          | Ok n -> set l (V.num (float_of_int n)); cfg.focus <- F_next; (Rule.Connect_allocate, observed_store cfg l (get l))
+          | Error name -> raise_ cfg name; (Rule.Connect_inomax, [])))
   | K_read_signal :: rest -> (
       cfg.stack <- rest;
       (* §2.16: a signal in value context is its value. *)
       match cfg.host.read_signal (get l) with
-      | Ok v -> cfg.focus <- F_value v; ("signal-value", [])
-      | Error name -> raise_ cfg name; ("signal-not-connected", []))
-  | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); ("stuck", [])
+      | Ok v -> cfg.focus <- F_value v; (Rule.Signal_value, [])
+      | Error name -> raise_ cfg name; (Rule.Signal_not_connected, []))
+  | _ -> cfg.focus <- F_done (Stuck "a location with no frame to take it"); (Rule.Stuck, [])
 
 (* A place in focus between steps is one settling could not locate (see [settle]). *)
 let place_step cfg (p : Ir.place) =
@@ -1505,36 +1505,36 @@ let place_step cfg (p : Ir.place) =
   | Whole (Local i) when i < Array.length cfg.act.present && not cfg.act.present.(i) ->
       (* §5.2: the value of an absent optional parameter cannot be used (ERR_NOTPRES). *)
       (match cfg.stack with _ :: rest -> cfg.stack <- rest | [] -> ());
-      raise_ cfg "ERR_NOTPRES"; ("place-absent", [])
-  | Unresolved name -> raise_ ~about:name cfg "ERR_REFUNKDAT"; ("place-unknown", [])
-  | _ -> cfg.focus <- F_done (Stuck "a place left unsettled"); ("stuck", [])
+      raise_ cfg "ERR_NOTPRES"; (Rule.Place_absent, [])
+  | Unresolved name -> raise_ ~about:name cfg "ERR_REFUNKDAT"; (Rule.Place_unknown, [])
+  | _ -> cfg.focus <- F_done (Stuck "a place left unsettled"); (Rule.Stuck, [])
 
 let expr_step cfg (e : Ir.expr) =
   match e.e with
-  | Literal _ -> cfg.focus <- F_done (Stuck "a literal left unsettled"); ("stuck", [])
+  | Literal _ -> cfg.focus <- F_done (Stuck "a literal left unsettled"); (Rule.Stuck, [])
   | Read p ->
       let l = static_loc cfg p in
-      if l != no_loc then (cfg.focus <- F_value (get l); ("read", []))
-      else (push cfg K_read; cfg.focus <- F_place p; ("read-place", []))
-  | Read_signal p -> push cfg K_read_signal; cfg.focus <- F_place p; ("read-signal", [])
-  | Unary (op, a) -> push cfg (K_unary (op, e)); cfg.focus <- F_expr a; ("unary-operand", [])
-  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e)); cfg.focus <- F_expr a; ("binary-operands", [])
-  | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; ("and", [])
-  | Or (a, b) -> push cfg (K_or b); cfg.focus <- F_expr a; ("or", [])
+      if l != no_loc then (cfg.focus <- F_value (get l); (Rule.Read, []))
+      else (push cfg K_read; cfg.focus <- F_place p; (Rule.Read_place, []))
+  | Read_signal p -> push cfg K_read_signal; cfg.focus <- F_place p; (Rule.Read_signal, [])
+  | Unary (op, a) -> push cfg (K_unary (op, e)); cfg.focus <- F_expr a; (Rule.Unary_operand, [])
+  | Binary (op, a, b) -> push cfg (K_binary_left (op, b, e)); cfg.focus <- F_expr a; (Rule.Binary_operands, [])
+  | And (a, b) -> push cfg (K_and b); cfg.focus <- F_expr a; (Rule.And, [])
+  | Or (a, b) -> push cfg (K_or b); cfg.focus <- F_expr a; (Rule.Or, [])
   | Aggregate (es, kind) ->
       push cfg (K_aggregate (es, Array.make (Array.length es) (V.Bool false), 0, kind));
-      cfg.focus <- F_expr es.(0); ("aggregate-first", [])
+      cfg.focus <- F_expr es.(0); (Rule.Aggregate_first, [])
   | Call c -> (
       match c.callee with
-      | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKFUN"; ("call-unknown-function", [])
+      | Unknown_routine name -> raise_ ~about:name cfg "ERR_REFUNKFUN"; (Rule.Call_unknown_function, [])
       | Routine _ -> (begin_call cfg c, []))
   | Placeholder ->
       (* In an initial value of routine data no statement is in progress: the placeholder's own
          place (R-7.1-w). *)
       if cfg.mark = [] && initialising cfg cfg.act then cfg.focus <- F_raise (error cfg "ERR_EXECPHR" e.at)
       else raise_ cfg "ERR_EXECPHR";
-      ("execute-placeholder", [])
-  | Fitted (a, shape) -> push cfg (K_fit shape); cfg.focus <- F_expr a; ("argument-aggregate", [])
+      (Rule.Execute_placeholder, [])
+  | Fitted (a, shape) -> push cfg (K_fit shape); cfg.focus <- F_expr a; (Rule.Argument_aggregate, [])
 
 (* Leaving the current activation because of EXIT, a propagated error or a long jump: its UNDO
    handler runs first (§7.2, §1.2). *)
@@ -1549,8 +1549,8 @@ let abandon_step cfg after =
       cfg.stack <- [ K_seq (undo, 0); K_undo_end after ];
       cfg.mark <- [];
       cfg.focus <- F_next;
-      ("undo-run", [ Undo_run act.routine.name ])
-  | _ -> leave_abandoned cfg after "abandon" "abandon-entry"
+      (Rule.Undo_run, [ Undo_run act.routine.name ])
+  | _ -> leave_abandoned cfg after Rule.Abandon Rule.Abandon_entry
 
 (* §7.2: the long jump looks for an error recovery point from the routine where the error
    arrives up the call chain; found, every routine in between is abandoned (UNDO first); not
@@ -1558,10 +1558,10 @@ let abandon_step cfg after =
 let search_step cfg (e : err) candidate =
   match candidate with
   | Some a when recovery_point cfg a e ->
-      cfg.focus <- F_abandon (Go_on_long_jump ({ e with searched = true }, a)); ("longjump-found", [])
-  | Some a -> cfg.focus <- F_search (e, a.recovery_up); ("longjump-search", [])
-  | None when cfg.act.routine.kind = Trap -> stop cfg e "raise-in-trap"
-  | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); ("raise-propagate", [])
+      cfg.focus <- F_abandon (Go_on_long_jump ({ e with searched = true }, a)); (Rule.Longjump_found, [])
+  | Some a -> cfg.focus <- F_search (e, a.recovery_up); (Rule.Longjump_search, [])
+  | None when cfg.act.routine.kind = Trap -> stop cfg e Rule.Raise_in_trap
+  | None -> cfg.focus <- F_abandon (Go_on_propagate { e with searched = true }); (Rule.Raise_propagate, [])
 
 (* ------------------------------------------------------------------ the user level *)
 
@@ -1592,17 +1592,17 @@ let raise_to_user cfg (cs : call_state) =
             | _ -> None)
         | _ -> None in
       match number with
-      | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-to-user-illegal", [])
+      | None -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_to_user_illegal, [])
       | Some n -> (
           let e' = { (error_of_number cfg n e.err_at) with searched = true } in
           match user_call act with
-          | None -> stop cfg e' "raise-to-user-no-user-level"
+          | None -> stop cfg e' Rule.Raise_to_user_no_user_level
           | Some (user, mark) -> (
               let e' = { e' with err_at = region_of_mark user mark; chain = lazy (call_chain user) } in
               match user.routine.error, user.handling with
               | Some h, Body when present "breakoff" ->
                   (* This routine is left without its UNDO handler; those above it run theirs. *)
-                  let rule, events = leave_abandoned cfg (Go_on_long_jump (e', user)) "raise-to-user-break-off" "raise-to-user-break-off" in
+                  let rule, events = leave_abandoned cfg (Go_on_long_jump (e', user)) Rule.Raise_to_user_break_off Rule.Raise_to_user_break_off in
                   ignore h;
                   (rule, events)
               | Some h, Body ->
@@ -1613,16 +1613,16 @@ let raise_to_user cfg (cs : call_state) =
                   cfg.stack <- [ K_seq (h.handler, 0); K_handler_end ];
                   cfg.mark <- [];
                   cfg.focus <- F_next;
-                  ("raise-to-user-continue",
+                  (Rule.Raise_to_user_continue,
                    [ Error_raised { name = e'.name; number = n; at = e'.err_at };
                      Error_handled { name = e'.name; routine = user.routine.name } ])
-              | _ -> stop cfg e' "raise-to-user-unhandled")))
+              | _ -> stop cfg e' Rule.Raise_to_user_unhandled)))
   | _ ->
       (* A call the checker cannot see (late binding): there is no error of a NOSTEPIN routine
          to hand on (R-7.3-n). *)
       cfg.focus <- F_done (Stopped { name = "ERR_ILLRAISE"; number = error_number cfg "ERR_ILLRAISE";
                                      at = cs.call.call_at; chain = call_chain act; about = Some "RaiseToUser" });
-      ("raise-to-user-misplaced", [])
+      (Rule.Raise_to_user_misplaced, [])
 
 let () = raise_to_user_ref := raise_to_user
 
@@ -1643,7 +1643,7 @@ let step_unguarded cfg =
       (rule, if again then events else Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
   | F_search (e, c) -> search_step cfg e c
   | F_abandon after -> abandon_step cfg after
-  | F_done _ -> ("done", [])
+  | F_done _ -> (Rule.Done, [])
 
 (* After every step, the administrative moves that neither inspect nor change anything a program
    can observe are made at once, so that the next step is a redex a programmer would name
@@ -1746,14 +1746,14 @@ let () = settle_ref := settle
 
 (* A value of the wrong type for an operation is excluded by the static semantics: meeting one
    is a bug of rapid-sem, reported as a stuck configuration. *)
-let step cfg =
+let step_rule cfg =
   cfg.count <- cfg.count + 1;
   (* The entry routine is entered with the first step (schema rapid-sem/2). *)
   let entry = if cfg.entered then [] else (cfg.entered <- true; [ Routine_entered cfg.act.routine.name ]) in
   let rule, events =
     try let r = step_unguarded cfg in settle cfg; r with
-    | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); ("stuck", [])
-    | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); ("stuck", [])
+    | Value.Type_mismatch m -> cfg.focus <- F_done (Stuck ("a value of the wrong type: " ^ m)); (Rule.Stuck, [])
+    | Invalid_argument m -> cfg.focus <- F_done (Stuck ("invalid argument: " ^ m)); (Rule.Stuck, [])
   in
   let events = match entry with [] -> events | _ -> entry @ events in
   (* What the world did during the step (signal changes, interrupts), with its times: mostly
@@ -1769,6 +1769,8 @@ let step cfg =
   match moved with
   | [] -> (rule, events)
   | moved -> (rule, events @ List.map (fun e -> Motion e) moved)
+
+let step cfg = let rule, events = step_rule cfg in (Rule.name rule, events)
 
 let host cfg = cfg.host
 let trap_level cfg = cfg.act.trap_level
@@ -1802,39 +1804,7 @@ let stack_view cfg =
   in
   take 8 cfg.stack
 
-let rule_names = [
-  "label"; "execute-placeholder"; "assign";
-  "store"; "call-arguments"; "argument-reference"; "argument-alias";
-  "argument-alias-refused"; "call-enter";
-  "argument-pass-on-duplicate"; "argument-aggregate"; "argument-fit"; "argument-fit-refused";
-  "elseif"; "connect-not-variable"; "memory-exhausted";
-  "call-primitive"; "call-primitive-error"; "call-primitive-stop"; "call-by-var";
-  "call-by-var-unknown"; "call-by-var-mismatch"; "call-not-modelled"; "call-stubbed"; "call-depth-exceeded"; "call-unknown";
-  "call-unknown-function"; "call-late"; "call-late-unknown"; "call-late-mismatch";
-  "return-procedure"; "return-function"; "return-entry"; "return-value"; "function-no-return";
-  "goto"; "break"; "continue"; "if"; "if-true"; "if-false"; "compact-if"; "compact-if-true"; "compact-if-false"; "while"; "while-true"; "while-false";
-  "while-again"; "for"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
-  "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
-  "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
-  "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
-  "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
-  "abandon-entry"; "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
-  "read-place"; "read"; "read-signal"; "place-absent"; "place-unknown";
-  "index-next"; "element"; "index-out-of-bounds"; "index-not-integer";
-  "unary-operand"; "unary"; "binary-operands"; "binary";
-  "binary-error"; "and"; "and-short"; "and-right"; "or"; "or-short"; "or-right";
-  "aggregate-first"; "aggregate-next"; "aggregate"; "local-initial-value";
-  "trap-end"; "interrupt-serve"; "time-limit"; "wait-start"; "wait-done"; "wait-timeout";
-  "wait-advance"; "wait-yield"; "wait-poll"; "wait-poll-true"; "wait-poll-false"; "wait-deadlock";
-  "wait-time-limit"; "async-error"; "signal-value"; "signal-not-connected"; "store-signal"; "connect-inomax";
-  "raise-in-trap"; "connect-not-variable";
-  "async-error-unhandled"; "async-retry-resume"; "async-trynext-resume"; "async-exit"; "async-handler-leave";
-  "async-error-at-move";
-  "raise-to-user-continue"; "raise-to-user-break-off"; "raise-to-user-no-user-level";
-  "raise-to-user-unhandled"; "raise-to-user-illegal"; "raise-to-user-misplaced";
-  "resume-retry"; "resume-trynext";
-  "done"; "stuck";
-]
+let rule_names = List.map Rule.name (List.filter Rule.listed Rule.all)
 
 (* ------------------------------------------------------------------ views, for the trace *)
 
@@ -2084,7 +2054,7 @@ let not_supported why = Stdlib.Error ("backward execution is not supported: " ^ 
 
 (* One statement backward from the program pointer (§6.1-§6.3): the statement before it in its
    statement list, which must be simple. The program pointer is then at that statement. *)
-let backward cfg =
+let backward_rule cfg =
   match cfg.focus, cfg.stack with
   | F_done _, _ -> Stdlib.Error "the task is not running"
   | F_stmt cur, K_seq (b, j) :: rest when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == cur ->
@@ -2100,7 +2070,7 @@ let backward cfg =
         match prev.s with
         | Label | Assign _ | Connect _ ->
             (* §6.1: comments, labels, assignments and CONNECT are no-operations backward. *)
-            moved (); Ok "backward-noop"
+            moved (); Ok Rule.Backward_noop
         | Call_procedure ({ callee = Routine i; _ } as call) -> (
             let r = cfg.program.routines.(i) in
             match r.backward with
@@ -2123,14 +2093,16 @@ let backward cfg =
                                    args_module_data = Array.make n false; args_memory = 0;
                                    primitive_args = Array.make n Argument.Missing; next = 0 });
                 settle cfg;
-                Ok "backward-call")
+                Ok Rule.Backward_call)
         | _ -> not_supported (statement_name prev ^ " cannot be executed backward")
       end
   | _ -> Stdlib.Error "the program pointer is not at a statement"
 
+let backward cfg = Result.map Rule.name (backward_rule cfg)
+
 let backward_running cfg = cfg.backward_depth >= 0
 
-let backward_rule_names = [ "backward-noop"; "backward-call"; "backward-end"; "raise-in-backward" ]
+let backward_rule_names = List.map Rule.name (List.filter Rule.backward Rule.all)
 
 let global_slot cfg name =
   let n = String.lowercase_ascii name in

@@ -45,6 +45,8 @@ type t =
   | Done | Stuck
   (* Backward execution *)
   | Backward_noop | Backward_call | Backward_end | Raise_in_backward
+  (* Not in doc/semantics.md *)
+  | Motion_history_exhausted
 
 let name = function
   | Label -> "label"
@@ -193,10 +195,12 @@ let name = function
   | Backward_call -> "backward-call"
   | Backward_end -> "backward-end"
   | Raise_in_backward -> "raise-in-backward"
+  | Motion_history_exhausted -> "motion-history-exhausted"
 
 (* Each rule and the one after it in [all]: those of the step in the order of the list
    Machine.rule_names has always had (the fuzzer's coverage reports list the rules in it), Done
-   and Stuck, then the rules of backward execution. A rule added to [t] needs its place here. *)
+   and Stuck, then the rules of backward execution and motion-history-exhausted. A rule added to
+   [t] needs its place here. *)
 let after = function
   | Label -> Some Execute_placeholder
   | Execute_placeholder -> Some Assign
@@ -343,7 +347,8 @@ let after = function
   | Backward_noop -> Some Backward_call
   | Backward_call -> Some Backward_end
   | Backward_end -> Some Raise_in_backward
-  | Raise_in_backward -> None
+  | Raise_in_backward -> Some Motion_history_exhausted
+  | Motion_history_exhausted -> None
 
 let all =
   let rec from r acc =
@@ -354,3 +359,7 @@ let all =
 let backward = function
   | Backward_noop | Backward_call | Backward_end | Raise_in_backward -> true
   | _ -> false
+
+let listed = function
+  | Backward_noop | Backward_call | Backward_end | Raise_in_backward | Motion_history_exhausted -> false
+  | _ -> true

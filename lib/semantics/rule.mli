@@ -165,16 +165,22 @@ type t =
   | Backward_call                   (** §6.1, §6.2 *)
   | Backward_end                    (** §6.2 *)
   | Raise_in_backward               (** §6.1 *)
+  (* Not in doc/semantics.md, nor in [Machine.rule_names]: a call whose motion history (kept for
+     --samples and rapid-sem motion) outgrows its budget ends the run (doc/motion.md) *)
+  | Motion_history_exhausted
 
 val name : t -> string
 (** The rule's name in doc/semantics.md: the constructor's, in lower case with hyphens. *)
 
 val all : t list
-(** Every rule, each once: those of the step in the order [Machine.rule_names] has always had
-    (the coverage reports of the fuzzer list them so), [Done] and [Stuck], then those of
-    backward execution. Derived from an exhaustive match on [t]: a constructor added to [t] and
-    not listed there does not compile. *)
+(** Every rule, each once: those of [Machine.rule_names] in the order it has always had (the
+    coverage reports of the fuzzer list them so), [Done] and [Stuck] last; then those of
+    backward execution, then [Motion_history_exhausted]. Derived from an exhaustive match on
+    [t]: a constructor added to [t] and not listed there does not compile. *)
 
 val backward : t -> bool
 (** A rule of backward execution (doc/semantics.md, "Backward execution"), which
     [Machine.rule_names] leaves to [Machine.backward_rule_names]. *)
+
+val listed : t -> bool
+(** In [Machine.rule_names]: not [backward], not [Motion_history_exhausted]. *)

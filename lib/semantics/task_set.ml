@@ -76,18 +76,18 @@ let step s =
     match s.current with
     | None -> None
     | Some task ->
-        let rule, events = M.step task.cfg in
+        let rule, events = M.step_rule task.cfg in
         s.turn_steps <- s.turn_steps + 1;
-        if rule = "wait-yield" then (task.idle <- true; s.current <- None)
+        if rule = Rule.Wait_yield then (task.idle <- true; s.current <- None)
         else begin
           Array.iter (fun t -> t.idle <- false) s.tasks;
           (* R-14-o: a new round of a loop without a statement ends the turn too, so that every
              turn ends (a loop waiting for another task with an empty body lets it run). *)
           if not (running task) || M.pointer_statement task.cfg <> None
-             || ((rule = "while-again" || rule = "for-step") && M.empty_loop_round task.cfg) then
+             || ((rule = Rule.While_again || rule = Rule.For_step) && M.empty_loop_round task.cfg) then
             s.current <- None
         end;
-        Some (task.t_name, rule, events)
+        Some (task.t_name, Rule.name rule, events)
 
 let tasks s = Array.to_list (Array.map (fun t -> (t.t_name, t.cfg)) s.tasks)
 
