@@ -170,7 +170,6 @@ val empty_loop_round : config -> bool
 (** After a step of rule while-again or for-step: whether the loop's body has no statement
     (where a turn of several tasks ends, doc/rulings.md R-14-o). *)
 
-
 val call_chain_view : config -> (Ir.routine * Rapid_syntax.Source.region) list
 (** The active routines, innermost first, each with where it stands: the innermost at the
     focus, a caller at its call. *)

@@ -46,7 +46,8 @@ let limits t = t.limits
 
 (* The next task to take a turn, among the running tasks that do not wait in vain. *)
 let choose s =
-  Task_rules.next_turn s.order ~cursor:s.cursor ~count:(Array.length s.tasks) (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
+  Task_rules.next_turn s.order ~cursor:s.cursor ~count:(Array.length s.tasks)
+    (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
   |> Option.map (fun k -> s.tasks.(k))
 
 let all_wait s =
