@@ -200,7 +200,8 @@ let name = function
 (* Each rule and the one after it in [all]: those of the step in the order of the list
    Machine.rule_names has always had (the fuzzer's coverage reports list the rules in it), Done
    and Stuck, then the rules of backward execution and motion-history-exhausted. A rule added to
-   [t] needs its place here. *)
+   [t] needs its arm here, or this does not compile; the arm before it must lead to it, or [all]
+   misses it (test/test_semantics.ml then finds the rule of doc/semantics.md the machine lacks). *)
 let after = function
   | Label -> Some Execute_placeholder
   | Execute_placeholder -> Some Assign
@@ -360,6 +361,4 @@ let backward = function
   | Backward_noop | Backward_call | Backward_end | Raise_in_backward -> true
   | _ -> false
 
-let listed = function
-  | Backward_noop | Backward_call | Backward_end | Raise_in_backward | Motion_history_exhausted -> false
-  | _ -> true
+let listed r = not (backward r || r = Motion_history_exhausted)
