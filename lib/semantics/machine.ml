@@ -186,8 +186,9 @@ let step_unguarded cfg =
   | F_done _ -> (Rule.Done, [])
 
 (* A value of the wrong type for an operation is excluded by the static semantics: meeting one
-   is a bug of rapid-sem, reported as a stuck configuration. *)
-let step_rule cfg =
+   is a bug of rapid-sem, reported as a stuck configuration. The rule is answered as [answer]
+   makes it: [step_rule] the constructor, [step] its name, with no second pair made a step. *)
+let step_as answer cfg =
   cfg.count <- cfg.count + 1;
   (* The entry routine is entered with the first step (schema rapid-sem/2). *)
   let entry = if cfg.entered then [] else (cfg.entered <- true; [ Routine_entered cfg.act.routine.name ]) in
@@ -208,10 +209,11 @@ let step_rule cfg =
     | F_done Ended -> let rest = cfg.host.motion_finish () in cfg.host.motion_events () @ rest
     | _ -> cfg.host.motion_events () in
   match moved with
-  | [] -> (rule, events)
-  | moved -> (rule, events @ List.map (fun e -> Motion e) moved)
+  | [] -> (answer rule, events)
+  | moved -> (answer rule, events @ List.map (fun e -> Motion e) moved)
 
-let step cfg = let rule, events = step_rule cfg in (Rule.name rule, events)
+let step_rule cfg = step_as Fun.id cfg
+let step cfg = step_as Rule.name cfg
 
 let host cfg = cfg.host
 let trap_level cfg = cfg.act.trap_level
