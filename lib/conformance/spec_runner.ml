@@ -138,7 +138,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let module TS = Rapid_semantics.Task_set in
   let module CT = Rapid_closure.Closure_tasks in
   let module TL = Rapid_run.Task_load in
-  let io = match run.io with Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
+  let io =
+    match run.io with
+    | Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
   | Ok io, Ok robot ->
@@ -147,7 +149,8 @@ let run_tasks engine case expected (run : Spec_case.run) =
         List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
     fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
            ~stub_unmodelled:case.stub_unmodelled modules io) in
-  let limits = { Rapid_runtime.Limits.default with retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
+  let limits = { Rapid_runtime.Limits.default with
+                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
   let sandbox = Rapid_controller.File_sandbox.temporary () in
@@ -178,7 +181,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
               if TS.steps ts < max_steps then
                 match TS.step ts with
                 | None -> ()
-                | Some (_, _, events) -> List.iter (function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) events; loop ()
+                | Some (_, _, events) ->
+                    List.iter (function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) events;
+                    loop ()
             in
             loop ();
             (List.rev !output, TS.outcome ts)), w)) (started (TS.start ~limits ~stub_unmodelled ?seed))

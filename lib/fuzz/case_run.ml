@@ -57,7 +57,8 @@ let streams () =
 let observed events (o : Rapid_runtime.Outcome.t) task_outcomes =
   let outcomes = List.map (fun (name, o) -> name ^ " " ^ F.outcome_text o) task_outcomes in
   let finished = match o with Rapid_runtime.Outcome.Running | Resource_exhausted _ | Deadlock _ -> false | _ -> true in
-  let stuck = List.exists (fun (_, o) -> match o with Rapid_runtime.Outcome.Stuck _ -> true | _ -> false) task_outcomes in
+  let stuck =
+    List.exists (fun (_, o) -> match o with Rapid_runtime.Outcome.Stuck _ -> true | _ -> false) task_outcomes in
   let outcome = F.outcome_text o in
   { F.events = events @ outcomes;
     outcome = (if stuck && not (String.length outcome >= 5 && String.sub outcome 0 5 = "stuck")
@@ -142,7 +143,8 @@ let check_tasks ~max_steps (c : Fuzz_case.t) io =
 let check_case ?(engines = []) ?(max_steps = 200_000) (c : Fuzz_case.t) =
   try
     Result.bind (io_of c) (fun io ->
-        let parsed = List.fold_left (fun acc t -> Result.bind acc (fun l -> Result.map (fun ms -> l @ [ ms ]) (parse_task t)))
+        let parsed =
+          List.fold_left (fun acc t -> Result.bind acc (fun l -> Result.map (fun ms -> l @ [ ms ]) (parse_task t)))
             (Ok []) c.tasks in
         Result.bind parsed (fun parsed ->
             match c.tasks, parsed with
