@@ -296,77 +296,14 @@ let report_load_failure ?(json = false) failure =
   | Static reports -> List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports; exit_static_error
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
 
-(* JSON text is UTF-8: RAPID strings and names are bytes, read as Latin-1 where they are not
-   UTF-8 (doc/trace-format.md). *)
-let text s = `String (Rapid_runtime.Utf8_text.of_bytes s)
+module EJ = Rapid_oracle.Event_json
 
-let region_json r =
-  let p = Source.start r and q = Source.stop r in
-  `Assoc [ ("file", text (match Source.file_of r with Some f -> Source.name f | None -> ""));
-           ("line", `Int p.line); ("col", `Int p.col); ("end_line", `Int q.line); ("end_col", `Int q.col) ]
+let schema = EJ.schema
 
-(* A virtual time: seconds to the microsecond, written as such (not as the nearest double). *)
-let time_json t = `Intlit (Printf.sprintf "%.6f" t)
+(* The events of the run this process makes (one a process). *)
+let encoder = EJ.create ()
 
-(* The number of the error in flight: the one last raised or propagated, which is the one an
-   error handler takes (an error in an UNDO handler stops the task). error-handled says it: the
-   value ERRNO takes (schema rapid-sem/2). *)
-let error_in_flight = ref 0
-
-let note_error (e : Rapid_runtime.Event.t) =
-  match e with
-  | Error_raised { number; _ } | Observed (Propagated { number; _ }) -> error_in_flight := number
-  | _ -> ()
-
-let event_json (e : Rapid_runtime.Event.t) : Yojson.Safe.t =
-  match e with
-  | Output s -> `Assoc [ ("event", `String "output"); ("text", text s) ]
-  | Erase -> `Assoc [ ("event", `String "erase") ]
-  | Log s -> `Assoc [ ("event", `String "log"); ("text", text s) ]
-  | Event_log (Err_log { id; kind; arguments }) ->
-      `Assoc [ ("event", `String "errlog"); ("id", `Int id); ("kind", `String kind);
-               ("arguments", `List (List.map text arguments)) ]
-  | Event_log Skip_warning -> `Assoc [ ("event", `String "skipwarn") ]
-  | Routine_entered r -> `Assoc [ ("event", `String "routine-entered"); ("routine", text r) ]
-  | Routine_left r -> `Assoc [ ("event", `String "routine-left"); ("routine", text r) ]
-  | Error_raised { name; number; at } ->
-      error_in_flight := number;
-      `Assoc [ ("event", `String "error-raised"); ("name", text name); ("number", `Int number);
-               ("at", region_json at) ]
-  | Error_handled { name; routine } ->
-      `Assoc [ ("event", `String "error-handled"); ("name", text name); ("number", `Int !error_in_flight);
-               ("routine", text routine) ]
-  | Undo_run r -> `Assoc [ ("event", `String "undo-run"); ("routine", text r) ]
-  | Task_ended -> `Assoc [ ("event", `String "task-ended") ]
-  | Controller (Signal_changed { time; signal; value }) ->
-      `Assoc [ ("event", `String "signal-changed"); ("time", time_json time); ("signal", `String signal);
-               ("value", `Float value) ]
-  | Controller (Interrupt_occurred { time; number }) ->
-      `Assoc [ ("event", `String "interrupt-occurred"); ("time", time_json time); ("number", `Int number) ]
-  | Controller (Interrupt_discarded { time; number; reason }) ->
-      `Assoc [ ("event", `String "interrupt-discarded"); ("time", time_json time); ("number", `Int number);
-               ("reason", `String reason) ]
-  | Trap_entered { number; trap; time } ->
-      `Assoc [ ("event", `String "trap-entered"); ("time", time_json time); ("number", `Int number);
-               ("trap", `String trap) ]
-  | Trap_left { trap; time } ->
-      `Assoc [ ("event", `String "trap-left"); ("time", time_json time); ("trap", `String trap) ]
-  | Stubbed { routine; at } ->
-      `Assoc [ ("event", `String "stubbed"); ("routine", `String routine); ("at", region_json at) ]
-  | Motion m -> Motion_json.event m
-  | Observed (Propagated { number; _ } as o) -> error_in_flight := number; Observed_json.event ~text o
-  | Observed o -> Observed_json.event ~text o
-
-let schema = Verdict.schema
-
-(* R-9.1-m: a task buffer without the entry procedure is refused before it runs; under --json
-   the stream says so as for any static error, the same from both engines. It has no place of
-   its own: the first file's beginning, as for a file error. *)
-let refused_entry_json files entry : Yojson.Safe.t =
-  let file = match files with f :: _ -> f | [] -> "" in
-  `Assoc [ ("event", `String "end"); ("outcome", `String "refused"); ("class", `String "semantic-error");
-           ("at", `Assoc [ ("file", text file); ("line", `Int 1); ("col", `Int 1); ("end_line", `Int 1); ("end_col", `Int 1) ]);
-           ("message", text (Printf.sprintf "there is no procedure %s without parameters to run: the task's entry routine (§9.1)" entry)) ]
+let event_json e = EJ.event encoder e
 
 (* Schema rapid-sem/2: every end object has [at]. An ended task is at its entry routine (the
    place both engines know; R-4.12-m); an end no source place explains has [null]. *)
@@ -378,66 +315,13 @@ let entry_region (program : Rapid_runtime.Ir.program) entry =
       | None -> if String.lowercase_ascii r.name = lower && r.kind = Procedure then Some r.at else None)
     None program.routines
 
-(* A call chain as the end of a run shows it. A recursion as deep as --max-call-depth made the
-   message one line of hundreds of kilobytes (issue 21): a chain of more than [chain_shown]
-   items keeps its first and last [chain_shown / 2], with "... N more ..." between, N the calls
-   left out: a marker no routine name can be (R-7.1-small1). *)
-let chain_shown = 20
-
-let more_marker k = Printf.sprintf "... %d more ..." k
-
-(* [items] as (text, calls it stands for). *)
-let bound_items items =
-  let n = List.length items and keep = chain_shown / 2 in
-  if n <= chain_shown then List.map fst items
-  else
-    let part p = List.filteri (fun i _ -> p i) items in
-    let left_out = List.fold_left (fun s (_, k) -> s + k) 0 (part (fun i -> i >= keep && i < n - keep)) in
-    List.map fst (part (fun i -> i < keep)) @ (more_marker left_out :: List.map fst (part (fun i -> i >= n - keep)))
-
-(* The --json chain: one routine an item, bounded as above. *)
-let bound_chain chain = bound_items (List.map (fun r -> (r, 1)) chain)
-
-(* The text of a chain: a long one writes a run of one routine called K times in a row as
-   "NAME xK" (the common case, a recursion), then is bounded as above. A chain of at most
-   [chain_shown] routines is written in full. *)
-let chain_text chain =
-  if List.length chain <= chain_shown then String.concat " <- " chain
-  else
-    let runs = List.fold_left (fun acc name -> match acc with
-        | (n, k) :: rest when n = name -> (n, k + 1) :: rest
-        | _ -> (name, 1) :: acc) [] chain |> List.rev in
-    let item (n, k) = ((if k = 1 then n else Printf.sprintf "%s x%d" n k), k) in
-    String.concat " <- " (bound_items (List.map item runs))
-
-let outcome_json ?entry_at (o : Rapid_runtime.Outcome.t) steps : Yojson.Safe.t =
-  let nowhere = ("at", `Null) in
-  let base kind extra =
-    let extra = if List.mem_assoc "at" extra then extra else extra @ [ nowhere ] in
-    `Assoc ([ ("event", `String "end"); ("outcome", `String kind); ("steps", `Int steps) ] @ extra) in
-  match o with
-  | Running -> base "running" []
-  | Ended -> base "ended" (match entry_at with Some r -> [ ("at", region_json r) ] | None -> [])
-  | Stopped { name; number; at; chain; about } ->
-      base "stopped" ([ ("name", text name); ("number", `Int number); ("at", region_json at);
-                        ("chain", `List (List.map text (bound_chain chain))) ]
-                      @ (match about with Some a -> [ ("about", text a) ] | None -> []))
-  | Resource_exhausted (m, at) ->
-      (* At the declaration or the move beyond the memory budget; no place explains a limit of
-         depth or time (R-1.4-small2). *)
-      base "exhausted" ([ ("reason", text m) ] @ (match at with Some r -> [ ("at", region_json r) ] | None -> []))
-  | Unsupported { name; reason; at } ->
-      base "unsupported" [ ("name", text name); ("reason", text reason); ("at", region_json at) ]
-  | Stuck m -> base "stuck" [ ("reason", text m) ]
-  | Deadlock m -> base "deadlock" [ ("reason", text m) ]
-
 let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
   match o with
   | Ended -> exit_ok
   | Stopped { name; at; chain; about; _ } ->
       Printf.eprintf "%s: execution error: %s%s: the system error handler stopped the task (%s)\n"
         (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
-        (chain_text chain);
+        (EJ.chain_text chain);
       exit_stopped
   | Resource_exhausted (m, _) -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
@@ -533,7 +417,7 @@ let start_machine ?json ?(observe = false) ?(history = false) ?robot files entry
           ~observe loaded.program ~entry with
   | Error m ->
       if json = Some true then
-        List.iter (fun j -> print_endline (Json_text.to_string j)) [ Verdict.start_line; refused_entry_json files entry ];
+        List.iter (fun j -> print_endline (Json_text.to_string j)) [ Verdict.start_line; EJ.refused_entry ~files ~entry ];
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok cfg -> k cfg w
 
@@ -552,12 +436,12 @@ let run_closure ?robot ?save files entry max_steps (allow_unknown, stub_unmodell
           ~observe:json ~on_event ~host:(Rapid_run.Run.setup ~controller:world ~motion ()).host ?module_data
           loaded.program ~entry with
   | Error m ->
-      if json then print_endline (Json_text.to_string (refused_entry_json files entry));
+      if json then print_endline (Json_text.to_string (EJ.refused_entry ~files ~entry));
       Printf.eprintf "rapid-sem: %s\n" m; exit_static_error
   | Ok { outcome; fuel_used } ->
       report_stubbed (List.rev !stubbed);
       if json then print_endline (Json_text.to_string
-                                    (outcome_json ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
+                                    (EJ.outcome ?entry_at:(entry_region loaded.program entry) outcome fuel_used));
       (* --save: as the machine's run writes them (Persistent_save). *)
       let saved = match save with
         | None -> Ok []
@@ -623,18 +507,11 @@ let start_tasks ?(history = false) ~tasks ~entries ~seed ~motion_task ~json (all
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) loaded.warnings;
       k ts names loaded
 
-(* The event object of a run of several tasks: its task's name second. *)
-let with_task name = function
-  | `Assoc fields -> `Assoc (List.hd fields :: ("task", `String name) :: List.tl fields)
-  | j -> j
-
 (* One task-end object per task (as the end object of one task), before the run's end. *)
 let task_ends ts =
   List.iter (fun (name, cfg) ->
-      print_line (Json_text.to_string
-                    (match outcome_json (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg) with
-                     | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
-                     | j -> j))) (Rapid_semantics.Task_set.tasks ts)
+      print_line (Json_text.to_string (EJ.task_end name (Rapid_semantics.Task_set.task_outcome ts cfg) (M.steps cfg))))
+    (Rapid_semantics.Task_set.tasks ts)
 
 (* run --task by the closure engine (Closure_tasks): the same events, in the same order, as
    run_tasks's; --max-steps is each task's fuel. *)
@@ -651,17 +528,15 @@ let run_tasks_closure ~tasks ~entries ~seed ~motion_task ~json ~max_steps (allow
                                                                  ("tasks", `List (List.map (fun n -> `String n) names)) ]));
       let on_event name (e : Rapid_runtime.Event.t) =
         report_stubbed [ e ];
-        if json then print_line (Json_text.to_string (with_task name (event_json e)))
+        if json then print_line (Json_text.to_string (EJ.with_task name (event_json e)))
         else match e with Output s -> print_line s | _ -> () in
       let r = CT.run ~fuel:max_steps ~all_events:(json || stub_unmodelled) ~observe:json ~on_event ct in
       let steps = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
       if json then begin
         List.iter (fun (t : CT.task_result) ->
             print_line (Json_text.to_string
-                          (match outcome_json t.task_outcome t.fuel_used with
-                           | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String t.name) :: rest)
-                           | j -> j))) r.tasks;
-        print_line (Json_text.to_string (outcome_json r.outcome steps))
+                          (EJ.task_end t.name t.task_outcome t.fuel_used))) r.tasks;
+        print_line (Json_text.to_string (EJ.outcome r.outcome steps))
       end;
       flush_output ();
       finish r.outcome steps ~max_steps
@@ -678,7 +553,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
           (t.rules.name, List.assoc t.rules.name (TS.tasks ts), Rapid_run.Run.task_world t)) (Rapid_run.Run.motion_task loaded) in
       let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (Motion_cmd.sampler hz) | _ -> None in
       let print_samples l =
-        Option.iter (fun (name, _, _) -> List.iter (fun j -> print_line (Json_text.to_string (with_task name j))) l) robot_task in
+        Option.iter (fun (name, _, _) -> List.iter (fun j -> print_line (Json_text.to_string (EJ.with_task name j))) l) robot_task in
       let rec loop () =
         if TS.steps ts < max_steps then
           match TS.step ts with
@@ -688,7 +563,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
               Option.iter (fun s -> Option.iter (fun (_, _, (w : Rapid_run.Run.world)) ->
                   print_samples (Motion_cmd.samples s w.motion ~until:((TS.clock ts).now ()))) robot_task) sampler;
               List.iter (fun (e : Rapid_runtime.Event.t) ->
-                  if json then print_line (Json_text.to_string (with_task name (event_json e)))
+                  if json then print_line (Json_text.to_string (EJ.with_task name (event_json e)))
                   else match e with Output s -> print_line s | _ -> ()) events;
               loop ()
       in
@@ -698,7 +573,7 @@ let run_tasks ?samples ~tasks ~entries ~seed ~motion_task ~json ~max_steps allow
       let outcome = TS.outcome ts in
       if json then begin
         task_ends ts;
-        print_line (Json_text.to_string (outcome_json outcome (TS.steps ts)))
+        print_line (Json_text.to_string (EJ.outcome outcome (TS.steps ts)))
       end;
       flush_output ();
       finish outcome (TS.steps ts) ~max_steps
@@ -789,7 +664,7 @@ let run_cmd =
     in
     loop ();
     Option.iter (fun s -> print_samples (Motion_cmd.final_samples s cfg w)) sampler;
-    if json then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_region (M.program cfg) entry)
+    if json then print_line (Json_text.to_string (EJ.outcome ?entry_at:(entry_region (M.program cfg) entry)
                                                       (M.outcome cfg) (M.steps cfg)));
     flush_output ();
     let saved = match save with
@@ -817,7 +692,7 @@ module TV = Rapid_tools.Trace_view
 
 let write_json (w : TV.change) =
   match w with
-  | Write { place; value } -> Some (`Assoc [ ("place", text place); ("value", text value) ])
+  | Write { place; value } -> Some (`Assoc [ ("place", EJ.text place); ("value", EJ.text value) ])
   | _ -> None
 
 (* The changes other than writes, as the events of run --json, with two more kinds. *)
@@ -915,7 +790,7 @@ let trace_cmd =
       json (`Assoc [ ("schema", `String schema); ("kind", `String "trace");
                      ("level", `String (match level with `Reduction -> "reduction" | `Statement -> "statement")) ]);
     (* Source text and values as JSON strings: valid UTF-8 whatever the file's encoding. *)
-    let text_json = text in
+    let text_json = EJ.text in
     let writes (st : TV.step) = List.filter_map write_json st.changes in
     let events (st : TV.step) = List.filter_map change_json st.changes in
     (* The statement level: one line per statement, its changes after it. A change made after a
@@ -949,7 +824,7 @@ let trace_cmd =
                 json (`Assoc ((match !line_task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                     ("statement", `String place);
                     ("step", `Int first); ("depth", `Int depth); ("routine", `String routine.name);
-                    ("at", region_json at); ("text", text_json text);
+                    ("at", EJ.region at); ("text", text_json text);
                     ("writes", `List (List.filter_map write_json changes));
                     ("events", `List (List.filter_map change_json changes)) ]))
           end
@@ -999,11 +874,11 @@ let trace_cmd =
         | `Jsonl ->
             json (`Assoc ((match task with Some t -> [ ("task", `String t) ] | None -> []) @ [
                 ("step", `Int st.number); ("rule", `String st.rule); ("depth", `Int st.depth);
-                ("at", region_json st.at); ("redex", text_json st.redex);
+                ("at", EJ.region st.at); ("redex", text_json st.redex);
                 ("result", (match st.result with Some r -> text_json r | None -> `Null));
                 ("writes", `List (writes st));
                 ("state", (match st.state with Some s -> text_json s | None -> `Null));
-                ("focus", `Assoc [ ("kind", `String kind); ("at", region_json region);
+                ("focus", `Assoc [ ("kind", `String kind); ("at", EJ.region region);
                                    ("text", text_json (TV.source_text view region)) ]);
                 ("stack", `List (List.map (fun s -> `String s) stack));
                 ("events", `List (events st @ samples ())) ]))
@@ -1018,7 +893,7 @@ let trace_cmd =
         let (_, events) as answer = do_step () in
         report_stubbed events;
         (* The error in flight, for error-handled, also from the steps --from and --to leave out. *)
-        List.iter note_error events;
+        List.iter (EJ.note encoder) events;
         let st = TV.after view before cfg answer in
         (* The robot sampled is [single]'s: the one task's, or with several the motion task's. *)
         let samples () = match sampler, single with
@@ -1037,7 +912,7 @@ let trace_cmd =
     Option.iter (fun s -> Option.iter (fun (cfg, w) ->
         List.iter (fun j -> print_line (Json_text.to_string j)) (Motion_cmd.final_samples s cfg w)) single) sampler;
     let outcome = outcome () and steps = steps () in
-    if format = `Jsonl then print_line (Json_text.to_string (outcome_json ?entry_at:(entry_at ()) outcome steps))
+    if format = `Jsonl then print_line (Json_text.to_string (EJ.outcome ?entry_at:(entry_at ()) outcome steps))
     else print_line @@ Printf.sprintf "end: %s after %d steps" (match outcome with
         | Ended -> "the task ended" | Stopped { name; _ } -> "stopped by the system error handler (" ^ name ^ ")"
         | Resource_exhausted (m, _) | Unsupported { reason = m; _ } | Stuck m | Deadlock m -> m

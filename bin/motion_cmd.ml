@@ -39,7 +39,7 @@ let samples s motion ~until =
     let t = float_of_int s.next /. s.hz in
     if t <= until +. 1e-9 && s.next < max_samples then begin
       let joints = match MM.Planner.joints_at p t with Ok q -> Some q | Error _ -> None in
-      out := Motion_json.sample t (MM.Planner.pose_at p t) joints :: !out;
+      out := Rapid_oracle.Event_json.sample t (MM.Planner.pose_at p t) joints :: !out;
       s.next <- s.next + 1; go ()
     end in
   go ();

@@ -5,9 +5,9 @@
 module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Rapid_syntax
 
-let schema = "rapid-sem/2"
+let schema = Rapid_oracle.Event_json.schema
 
-let start_line : Yojson.Safe.t = `Assoc [ ("event", `String "start"); ("schema", `String schema) ]
+let start_line : Yojson.Safe.t = Rapid_oracle.Event_json.start ()
 
 (* The class as spec/README.md's @expect spells it. *)
 let class_word = function
