@@ -55,7 +55,8 @@ let wait ?yield (host : Host.t) (wt : Rapid_observable.Wait.t) ~first_poll ~cond
               turn ()
           | [], None ->
               Halted (Outcome.Deadlock
-                        (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait (no stimulus event left, no interrupt to come)"
+                        (Printf.sprintf "deadlock at %g s: the task waits for %s, and nothing can end the wait \
+                                         (no stimulus event left, no interrupt to come)"
                            now wt.what))
           | t :: _, None when t > host.max_time -> Halted (Outcome.time_limit host.max_time)
           | t :: _, None -> spend (); host.advance_to t; observe (); turn ())

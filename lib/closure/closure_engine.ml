@@ -765,7 +765,8 @@ and call_routine st (caller : routine) ~at ~call_at k (arguments : argument arra
   let callee = st.program.routines.(k) in
   match callee.primitive with
   | Some name when String.lowercase_ascii name = "raisetouser" -> raise_to_user st caller ~at ~call_at callee arguments
-  | _ when callee.nostepin && not caller.nostepin -> user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
+  | _ when callee.nostepin && not caller.nostepin ->
+      user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
   | _ -> call_routine_core st caller ~at ~call_at k arguments
 
 (* §7.3: a call from user code into a NOSTEPIN routine: the statement is remembered, for what
@@ -960,7 +961,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
    The call's fixed work (the copies counted in the memory budget, the call depth, the
    activation's bytes, its unit of fuel, its share of the native stack) is done here in one
    place, in the order [enter] does it, so that a budget runs out at the same point. *)
-and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources : Closure_call.source array) : act -> V.t =
+and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources : Closure_call.source array)
+  : act -> V.t =
   let args = Array.map (function
       | Closure_call.Value e -> expr st caller ~at e
       | Closure_call.Read p -> read st caller ~at p) sources in
@@ -1029,7 +1031,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
              && st.fuel > 0 && st.native + nest <= st.native_budget then begin
             st.fuel <- st.fuel - 1;
             let memory = pending + act_bytes in
-            let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+            let c =
+              { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
             st.native <- st.native + nest;
             st.memory <- st.memory + memory;
             st.depth <- level + 1;
@@ -1115,7 +1118,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let v = f0 a in
       let b = value_bytes v in
       if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
-      let store = match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
+      let store =
+        match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
       quick a store b
   | _ -> fun a ->
       let store = fresh () in
@@ -1276,7 +1280,8 @@ and late_target st (caller : routine) ~at ~call_at name (args : late_argument ar
           fun a ->
             let kind p k =
               match root p with
-              | Some (Local i) when i < Array.length caller.parameters && is_alias caller.parameters.(i) -> a.ext.bound.(i)
+              | Some (Local i) when i < Array.length caller.parameters && is_alias caller.parameters.(i) ->
+                  a.ext.bound.(i)
               | _ -> k in
             bound kind a
         else bound (fun _ k -> k)
@@ -1602,7 +1607,8 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* R-7.3-p: the NOSTEPIN routine's own RETRY, counted there (rule resume-retry). *)
           let inner = List.assq a st.resuming in
           if inner.ext.retries >= st.limits.retry_limit then begin
-            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None; chain = None } in
+            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None;
+                      chain = None } in
             emit_raised st e;
             raise (stop st inner e)
           end
@@ -1813,7 +1819,8 @@ let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
                     let u' = x a in
                     let v' = y a in
                     match u', v' with
-                    | V.Num p, V.Num q' -> single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
+                    | V.Num p, V.Num q' ->
+                        single_num st ~at:at2 (if add then p +. q' else if sub then p -. q' else p *. q')
                     | _ -> slow u' v'
                   end
               | u -> if slow_if u then (if j >= 0 then a.store.(j) else w) else second a)
@@ -1911,7 +1918,8 @@ let compile_routine st k =
             a.store.(slot) <- V.default_of shape
       | Init_expr e ->
           let f = expr st r ~at:e.at e in
-          fun _ a -> a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
+          fun _ a ->
+            a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
   let c_init = match inits with
     | [] -> fun _ _ -> ()
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
@@ -1969,7 +1977,9 @@ let outcome_of_exception st = function
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ~host
     ?cooperation ?module_data (program : program) ~entry =
-  try run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program ~entry
+  try
+    run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program
+      ~entry
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
 and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event
@@ -1983,7 +1993,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
-      let st = initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~host program in
+      let st =
+        initial_state ?limits ?fuel ?stub_unmodelled ?observe ?cooperation ~all_events ~emit:on_event ~host program in
       let r = program.routines.(k) in
       let outcome =
         try
@@ -2055,6 +2066,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
 
 let events ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host program ~entry =
   let acc = ref [] in
-  match run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host ~on_event:(fun e -> acc := e :: !acc) program ~entry with
+  match
+    run ?limits ?fuel ?stub_unmodelled ?all_events ?observe ~host ~on_event:(fun e -> acc := e :: !acc) program ~entry
+  with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !acc, r)

@@ -56,7 +56,8 @@ type t = {
   done_ : Condition.t;                     (* the run is over *)
 }
 
-type task_result = { name : string; task_outcome : Outcome.t; fuel_used : int; module_data : (string * string * Value.t) list }
+type task_result =
+  { name : string; task_outcome : Outcome.t; fuel_used : int; module_data : (string * string * Value.t) list }
 type result = { outcome : Outcome.t; tasks : task_result list }
 
 (* A thread's stack is the C library's default: the soft limit when there is one (glibc), 2 MB
@@ -120,7 +121,9 @@ let same_rules_choose t =
 
 (* Every running task waits: Task_set's rule. *)
 let all_wait t =
-  let waits = Array.to_list t.members |> List.filter running |> List.map (fun (task : task) -> (task.name, task.what, task.wake)) in
+  let waits =
+    Array.to_list t.members |> List.filter running
+    |> List.map (fun (task : task) -> (task.name, task.what, task.wake)) in
   match Task_rules.every_task_waits t.clock waits with
   | Some ended -> t.ended <- Some ended
   | None -> Array.iter (fun task -> task.idle <- false) t.members
@@ -209,7 +212,8 @@ let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_ev
   if t.ran then invalid_arg "Closure_tasks.run: the tasks ran already";
   t.ran <- true;
   Array.iter (fun task ->
-      task.thread <- Some (Thread.create (body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event) ()))
+      task.thread <-
+        Some (Thread.create (body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event) ()))
     t.members;
   Mutex.lock t.lock;
   pick t;
@@ -224,7 +228,8 @@ let run ?(fuel = C.default_fuel) ?(all_events = true) ?(observe = false) ?(on_ev
     match task.finished, t.ended with
     | Some r, _ -> r.C.outcome
     | None, Some (Outcome.Deadlock _) ->
-        Outcome.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, and no task or event can end the wait"
+        Outcome.Deadlock (Printf.sprintf "deadlock at %g s: the task waits for %s, \
+                                          and no task or event can end the wait"
                       (t.clock.now ()) (Option.value task.what ~default:"a wait"))
     | None, Some o -> o
     | None, None -> Outcome.Running in

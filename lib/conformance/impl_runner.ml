@@ -37,7 +37,8 @@ let task_options (case : Spec_case.t) =
       let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
         | Some (_, r) -> r | None -> run.entry in
       List.concat [
-        List.concat_map (fun (name, files) -> [ "--task"; Filename.quote (name ^ "=" ^ String.concat "," files) ]) run.tasks;
+        List.concat_map (fun (name, files) -> [ "--task"; Filename.quote (name ^ "=" ^ String.concat "," files) ])
+          run.tasks;
         List.concat_map (fun (name, _) ->
             let e = entry_of name in
             if e = "main" then [] else [ "--entry"; Filename.quote (name ^ "=" ^ e) ]) run.tasks;
@@ -141,7 +142,8 @@ let judge (case : Spec_case.t) (events : Stream.event list) =
                    | Some (f, gl, gc) when got_name = name && gl = l && gc = c
                                            && (match run.error_file with Some ef -> ef = f | None -> true) -> []
                    | got ->
-                       [ Printf.sprintf "error %s at %s, expected %s %d:%d" (Stream.clip got_name) (show_place got) name l c ])
+                       [ Printf.sprintf "error %s at %s, expected %s %d:%d" (Stream.clip got_name) (show_place got)
+                           name l c ])
                | None -> [])
           in
           if problems = [] then Ok () else Error (String.concat "; " problems)
@@ -238,7 +240,8 @@ let junit_xml results =
       Printf.bprintf b "  <testsuite name=\"§%s\" tests=\"%d\" failures=\"%d\" skipped=\"%d\">\n" (xml_escape s)
         (List.length rs) (failed rs) (skipped rs);
       List.iter (fun r ->
-          Printf.bprintf b "    <testcase classname=\"spec.§%s\" name=\"%s\"" (xml_escape s) (xml_escape r.case.Spec_case.path);
+          Printf.bprintf b "    <testcase classname=\"spec.§%s\" name=\"%s\"" (xml_escape s)
+            (xml_escape r.case.Spec_case.path);
           if r.passed then Buffer.add_string b "/>\n"
           else if r.skipped then Printf.bprintf b "><skipped message=\"%s\"/></testcase>\n" (xml_escape r.detail)
           else Printf.bprintf b "><failure message=\"%s\"/></testcase>\n" (xml_escape r.detail)) rs;
@@ -286,7 +289,8 @@ let run ?(verbose = false) ?timeout ?reference ?ignore ?junit ?json ~template ou
   let skipped = List.length (List.filter (fun r -> r.skipped) results) in
   let without_tasks = List.length (List.filter (fun r -> r.skipped && r.detail = no_tasks_detail) results) in
   if without_tasks > 0 then
-    Format.fprintf out "@.%d case%s of several tasks skipped: the template has no {tasks} (doc/oracle.md, \"Several tasks\")@."
+    Format.fprintf out "@.%d case%s of several tasks skipped: the template has no {tasks} \
+                        (doc/oracle.md, \"Several tasks\")@."
       without_tasks (if without_tasks = 1 then "" else "s");
   if skipped = 0 then Format.fprintf out "@.%d passed, %d failed@." passed failed
   else Format.fprintf out "@.%d passed, %d failed, %d skipped@." passed failed skipped;

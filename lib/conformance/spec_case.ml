@@ -112,8 +112,8 @@ let read path =
       | exception Sys_error m -> listing_problem := Some m; []
     else [ path ]
   in
-  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false; stub_unmodelled = false; description = None;
-                problems = []; format = "1"; run = None } in
+  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false;
+                stub_unmodelled = false; description = None; problems = []; format = "1"; run = None } in
   let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
   (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
   let output_text line =
@@ -165,7 +165,10 @@ let read path =
                   (* Format 4: [@entry TASK=ROUTINE], the entry routine of one task. *)
                   match String.index_opt v '=' with
                   | Some i when i > 0 && i < String.length v - 1 ->
-                      with_run case (fun r -> { r with task_entries = r.task_entries @ [ (String.sub v 0 i, String.sub v (i + 1) (String.length v - i - 1)) ] })
+                      with_run case (fun r ->
+                          { r with task_entries = r.task_entries
+                                                  @ [ (String.sub v 0 i,
+                                                       String.sub v (i + 1) (String.length v - i - 1)) ] })
                   | Some _ -> add_problem case ("bad @entry " ^ v)
                   | None -> with_run case (fun r -> { r with entry = v }))
               | Some ("exit", v) -> (
@@ -227,10 +230,12 @@ let read path =
           else acc @ [ (t, [ f ]) ]) [] files in
       with_run case (fun r -> { r with tasks }) in
   let case = match case.run with
-    | Some { task_entries = (t, _) :: _; tasks; _ } when not (List.exists (fun (n, _) -> String.lowercase_ascii n = String.lowercase_ascii t) tasks) ->
+    | Some { task_entries = (t, _) :: _; tasks; _ }
+      when not (List.exists (fun (n, _) -> String.lowercase_ascii n = String.lowercase_ascii t) tasks) ->
         add_problem case (Printf.sprintf "@entry %s=...: no file names the task %s (@task)" t t)
     | _ -> case in
-  let case = if files = [] && !listing_problem = None then add_problem case "a .task folder without modules" else case in
+  let case =
+    if files = [] && !listing_problem = None then add_problem case "a .task folder without modules" else case in
   let case = if case.format = "3" && case.run = None then { case with run = Some no_run } else case in
   let case = if case.expectation = None then add_problem case "no @expect directive" else case in
   if case.sections = [] then add_problem case "no @section directive" else case

@@ -123,9 +123,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let module TS = Rapid_semantics.Task_set in
   let module CT = Rapid_closure.Closure_tasks in
   let module TL = Rapid_run.Task_load in
-  let io = match run.io with
-    | Some file -> Rapid_controller.Io_config.read_file file
-    | None -> Ok Rapid_controller.Io_config.empty in
+  let io =
+    match run.io with
+    | Some file -> Rapid_controller.Io_config.read_file file | None -> Ok Rapid_controller.Io_config.empty in
   match io, robot_of run with
   | Error m, _ | _, Error m -> fail case m
   | Ok io, Ok robot ->

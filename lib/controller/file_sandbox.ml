@@ -93,7 +93,8 @@ let follow_links ~roots ~root ~follow parts =
 let locate ?(follow = true) t path =
   let device, rest =
     match String.index_opt path ':' with
-    | Some i -> (String.uppercase_ascii (String.sub path 0 (i + 1)), String.sub path (i + 1) (String.length path - i - 1))
+    | Some i ->
+        (String.uppercase_ascii (String.sub path 0 (i + 1)), String.sub path (i + 1) (String.length path - i - 1))
     | None -> ("HOME:", path) in
   match List.assoc_opt device devices with
   | None -> Error (Printf.sprintf "no device %s" device)
@@ -182,7 +183,8 @@ let rec copy_tree src dst =
     Array.iter (fun n -> copy_tree (Filename.concat src n) (Filename.concat dst n)) (Sys.readdir src)
   end else begin
     let ic = open_in_bin src in
-    let data = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
+    let data =
+      Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
     let oc = open_out_bin dst in
     Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc data)
   end

@@ -258,7 +258,8 @@ let parse_eio ~file lines =
       let ends_continued = String.length line > 0 && line.[String.length line - 1] = '\\' in
       let body = if ends_continued then String.sub line 0 (String.length line - 1) else line in
       let is_section = String.length line > 1 && line.[String.length line - 1] = ':'
-                       && String.for_all (fun c -> c = '_' || c = ':' || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) line in
+                       && String.for_all
+                            (fun c -> c = '_' || c = ':' || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) line in
       match !pending with
       | Some (l, words, true) ->
           pending := Some (l, List.rev_append (eio_words ln body first_col) words, ends_continued)
@@ -273,7 +274,8 @@ let parse_eio ~file lines =
   { file; signals = List.rev !signals; stimuli = []; collisions = [] }
 
 let is_eio lines =
-  List.exists (fun l -> let l = String.trim l in l = "EIO_SIGNAL:" || (String.length l >= 8 && String.sub l 0 8 = "EIO:CFG_")) lines
+  List.exists (fun l ->
+      let l = String.trim l in l = "EIO_SIGNAL:" || (String.length l >= 8 && String.sub l 0 8 = "EIO:CFG_")) lines
 
 (* A UTF-8 byte order mark, which some editors write first: not part of the first line, whose
    columns count from after it. *)

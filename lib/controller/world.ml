@@ -112,10 +112,11 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4;
             sync_moves = Hashtbl.create 2 } in
-  let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true; statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
+  let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true;
+            statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             interrupts = Hashtbl.create 8; watching = false;
-            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4; observations = [];
-            collisions = config.collisions; services = None } in
+            queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4;
+            observations = []; collisions = config.collisions; services = None } in
   c.members <- [ w ];
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in

@@ -176,7 +176,8 @@ let save_case ~base f (c : Fuzz_case.t) =
   List.iter (fun (t : Fuzz_case.task) ->
       let sub = if several then Filename.concat folder t.task_name else folder in
       if not (Sys.file_exists sub) then Sys.mkdir sub 0o755;
-      List.iter (fun m -> write (Filename.concat sub (Fuzz_case.module_file m)) (Program_gen.to_source m)) t.modules) c.tasks;
+      List.iter (fun m -> write (Filename.concat sub (Fuzz_case.module_file m)) (Program_gen.to_source m)) t.modules)
+    c.tasks;
   write (Filename.concat folder "fuzz.io") c.io_text;
   let command =
     if several then
@@ -185,7 +186,9 @@ let save_case ~base f (c : Fuzz_case.t) =
                          @ (match c.schedule with Some s -> [ "--schedule"; string_of_int s ] | None -> [])
                          @ List.map (fun (t : Fuzz_case.task) ->
                              Printf.sprintf "--task %s=%s" t.task_name
-                               (String.concat "," (List.map (fun m -> t.task_name ^ "/" ^ Fuzz_case.module_file m) t.modules))) c.tasks)
+                               (String.concat ","
+                                  (List.map (fun m -> t.task_name ^ "/" ^ Fuzz_case.module_file m) t.modules)))
+                             c.tasks)
     else Fuzz_case.command c in
   write (Filename.concat folder "run.sh") ("#!/bin/sh\ncd \"$(dirname \"$0\")\"\n" ^ command ^ " \"$@\"\n");
   write (base ^ ".failure") (Fuzz_run.failure_to_string f.failure ^ "\n");

@@ -56,6 +56,7 @@ val run :
 val save : dir:string -> failure_found -> string
 (** A scenario's failure is written as a folder [fuzz-I.case] (its modules, [fuzz.io] and
     [run.sh], the command that runs it) with [fuzz-I.failure] and [fuzz-I.expected]; returns
-    the folder. Otherwise: writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals it may use, for
-    [rapid-sem run --io]), [fuzz-I.failure] (what went wrong) and [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if
-    missing; returns the .mod's path. *)
+    the folder. Otherwise: writes [fuzz-I.mod] (the minimal program), [fuzz-I.io] (the signals
+    it may use, for [rapid-sem run --io]), [fuzz-I.failure] (what went wrong) and
+    [fuzz-I.expected] (the machine's events and outcome for it) into [dir], created if missing;
+    returns the .mod's path. *)

@@ -10,7 +10,8 @@ val several_tasks_closure : bool ref
     for each of those schedules: the events of every task, each prefixed by its task's name, as
     two streams (the program's and the world's), and every task's outcome. *)
 
-val check_case : ?engines:Fuzz_run.engine list -> ?max_steps:int -> Fuzz_case.t -> (Fuzz_run.observed, Fuzz_run.failure) result
+val check_case :
+  ?engines:Fuzz_run.engine list -> ?max_steps:int -> Fuzz_case.t -> (Fuzz_run.observed, Fuzz_run.failure) result
 (** [Ok] with the machine's observation when every property holds. *)
 
 val observe : ?max_steps:int -> Fuzz_case.t -> (Fuzz_run.observed, string) result

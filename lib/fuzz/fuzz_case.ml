@@ -57,5 +57,6 @@ let to_text c =
   String.concat ""
     (Printf.sprintf "! %s\n" (command c)
      :: List.concat_map (fun t ->
-         List.map (fun m -> Printf.sprintf "! task %s, file %s\n%s" t.task_name (module_file m) (Program_gen.to_source m))
+         List.map (fun m ->
+             Printf.sprintf "! task %s, file %s\n%s" t.task_name (module_file m) (Program_gen.to_source m))
            t.modules) c.tasks)

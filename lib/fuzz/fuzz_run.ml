@@ -108,7 +108,9 @@ let new_world () =
    a step (doc/semantics.md, "What is compared"); each stream must be the same. *)
 let streams () =
   let program = ref [] and world = ref [] in
-  let add e = if Rapid_runtime.Event.world_event e then world := event_text e :: !world else program := event_text e :: !program in
+  let add e =
+    if Rapid_runtime.Event.world_event e then world := event_text e :: !world
+    else program := event_text e :: !program in
   let result () = List.rev_append !program ("-- the world's events --" :: List.rev !world) in
   (add, result)
 
@@ -167,7 +169,8 @@ let compare_observed name (a : observed) (b : observed) =
 
 (* As Session.load_modules, over the fuzzer's installed environment (a scenario's stimulus
    declares the same signals, so the same environment serves it). *)
-let load_modules ?(allow_unknown = false) ?(io = io) modules : (Rapid_load.Session.loaded, Rapid_load.Session.failure) result =
+let load_modules ?(allow_unknown = false) ?(io = io) modules
+  : (Rapid_load.Session.loaded, Rapid_load.Session.failure) result =
   match Lazy.force installed with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->

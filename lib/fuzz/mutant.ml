@@ -35,7 +35,10 @@ let keywords = [
   "ALIAS"; "MODULE"; "ENDMODULE"; "NOT"; "AND"; "OR"; "XOR"; "DIV"; "MOD"; "TRUE"; "FALSE";
 ]
 
-let type_names = [ "num"; "dnum"; "bool"; "string"; "pos"; "orient"; "pose"; "robtarget"; "intnum"; "signaldo"; "errnum"; "fzpoint"; "tooldata" ]
+let type_names = [
+  "num"; "dnum"; "bool"; "string"; "pos"; "orient"; "pose"; "robtarget"; "intnum"; "signaldo"; "errnum"; "fzpoint";
+  "tooldata";
+]
 
 let tokens = [
   ";"; ":="; ","; "("; ")"; "["; "]"; "{"; "}"; "\\"; "?"; "%"; "|"; ":"; "."; "+"; "-"; "*"; "/";
@@ -43,7 +46,9 @@ let tokens = [
   "9E+09"; "0x1F"; "2147483648"; "\"x\""; "[1, 2]"; "[]"; "TRUE"; "ERRNO"; "INTNO"; "main";
 ]
 
-let literal_swaps = [ "TRUE"; "FALSE"; "0"; "1.5"; "\"s\""; "[1, 2, 3]"; "[1, 0, 0, 0]"; "gpos1"; "gint"; "v100"; "<EXP>" ]
+let literal_swaps = [
+  "TRUE"; "FALSE"; "0"; "1.5"; "\"s\""; "[1, 2, 3]"; "[1, 0, 0, 0]"; "gpos1"; "gint"; "v100"; "<EXP>";
+]
 
 let lines text = String.split_on_char '\n' text
 let unlines l = String.concat "\n" l
@@ -93,7 +98,8 @@ let one_mutation rs text =
     | 9 ->
         (* a parameter mode, or a storage class, where it may or may not be allowed *)
         let off, w = pick rs ws in
-        replace_at text off 0 (pick rs [ "VAR "; "PERS "; "INOUT "; "REF "; "\\"; "LOCAL "; "CONST " ]) |> fun t -> ignore w; t
+        replace_at text off 0 (pick rs [ "VAR "; "PERS "; "INOUT "; "REF "; "\\"; "LOCAL "; "CONST " ])
+        |> fun t -> ignore w; t
     | 10 ->
         (* an operator for another *)
         let ops = [ ":="; "+"; "-"; "*"; "/"; "<"; ">"; "="; ";"; "," ] in
@@ -124,8 +130,9 @@ let hostile rs =
   | 3 -> let d = min 20_000 (depth ()) in in_main (repeat d "IF TRUE THEN\n" ^ repeat d "ENDIF\n")
   | 4 -> let d = depth () in in_main (Printf.sprintf "    VAR num %s;" (String.make d 'a'))
   | 5 -> in_main (Printf.sprintf "    TPWrite \"%s\";" (String.make (depth ()) 'x'))
-  | 6 -> in_main (Printf.sprintf "    x := %s;" (pick rs [ String.make 5000 '9'; "1E999999"; "1E-999999"; "0x" ^ String.make 100 'F';
-                                                          "0b" ^ String.make 200 '1'; "0o" ^ String.make 100 '7'; "1.E"; ".5E+" ]))
+  | 6 -> in_main (Printf.sprintf "    x := %s;"
+                   (pick rs [ String.make 5000 '9'; "1E999999"; "1E-999999"; "0x" ^ String.make 100 'F';
+                              "0b" ^ String.make 200 '1'; "0o" ^ String.make 100 '7'; "1.E"; ".5E+" ]))
   | 7 -> in_main "    TPWrite \"unterminated;\n" ^ pick rs [ "\""; ""; "\\" ]
   | 8 -> "\xEF\xBB\xBFMODULE m\r  PROC main()\r\r\n  ENDPROC\rENDMODULE" ^ pick rs [ ""; "\r"; "\x00"; "\xFF\xFE" ]
   | 9 -> in_main (repeat (depth ()) "    ;\n")
@@ -173,7 +180,8 @@ let check_text ?(max_steps = 20_000) text =
         | Error (Internal m) -> Error ("internal: " ^ m)
         | Ok loaded ->
             let o = Fuzz_run.machine.run loaded.program ~max_steps in
-            if String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck" then Error ("no rule applies: " ^ o.outcome)
+            if String.length o.outcome >= 5 && String.sub o.outcome 0 5 = "stuck" then
+              Error ("no rule applies: " ^ o.outcome)
             else Ok ())
   with
   | Stack_overflow -> Error "stack overflow"
@@ -199,7 +207,8 @@ let shrink_text fails text =
           let candidate = List.filteri (fun j _ -> j < i || j >= i + chunk) parts in
           if candidate <> [] && fails (join candidate) then try_at i candidate else try_at (i + step) parts in
       let parts' = try_at 0 parts in
-      let next = if chunk > 4 && chunk / 2 < 3 then 3 else if chunk = 4 then 3 else if chunk = 3 then 2 else chunk / 2 in
+      let next =
+        if chunk > 4 && chunk / 2 < 3 then 3 else if chunk = 4 then 3 else if chunk = 3 then 2 else chunk / 2 in
       if List.length parts' < n then by_chunks split join parts' chunk else by_chunks split join parts' next in
   let ls = by_chunks lines unlines (lines text) (max 1 (List.length (lines text) / 2)) in
   let t = unlines ls in

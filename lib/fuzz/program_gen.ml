@@ -77,7 +77,8 @@ let string_literals = [ "\"\""; "\"a\""; "\"rapid\""; "\"x y\""; "\"012345678901
 (* ------------------------------------------------------------------ expressions *)
 
 (* A data object of a record type, whose component an expression reads. *)
-let sub_place sc ty = match readable sc ty with [] -> (match ty with Pos -> "gpos1" | _ -> "gor1") | l -> (pick sc.rs l).name
+let sub_place sc ty =
+  match readable sc ty with [] -> (match ty with Pos -> "gpos1" | _ -> "gor1") | l -> (pick sc.rs l).name
 
 let rec expr sc ty depth =
   let rs = sc.rs in
@@ -121,7 +122,8 @@ let rec expr sc ty depth =
             (1, fun () -> Printf.sprintf "%s.%s" (sub_place sc Pos) (pick rs [ "x"; "y"; "z" ]));
             (1, fun () -> Printf.sprintf "%s.%s" (sub_place sc Orient) (pick rs [ "q1"; "q2"; "q3"; "q4" ]));
             (1, fun () ->
-                let index = if chance rs 0.8 then string_of_int (int_in rs 1 5) else Printf.sprintf "Trunc(%s)" (sub Num) in
+                let index =
+                  if chance rs 0.8 then string_of_int (int_in rs 1 5) else Printf.sprintf "Trunc(%s)" (sub Num) in
                 Printf.sprintf "%s{%s}" sc.array_ index);
             (1, fun () -> Printf.sprintf "%s.%s" sc.record_ (pick rs [ "x"; "y" ]));
             (1, fun () -> Printf.sprintf "Abs(%s)" (sub Num));
@@ -147,9 +149,11 @@ let rec expr sc ty depth =
             (1, fun () -> Printf.sprintf "(%s%s)" (pick rs [ "-"; "+" ]) (sub Pos)) ]
       | Orient -> [ (2, fun () -> Printf.sprintf "(%s * %s)" (sub Orient) (sub Orient)) ]
       | Bool ->
-          [ (2, fun () -> Printf.sprintf "(%s %s %s)" (sub Num) (pick rs [ "<"; "<="; "="; "<>"; ">"; ">=" ]) (sub Num));
+          [ (2, fun () ->
+                Printf.sprintf "(%s %s %s)" (sub Num) (pick rs [ "<"; "<="; "="; "<>"; ">"; ">=" ]) (sub Num));
             (1, fun () -> Printf.sprintf "(%s %s %s)" (sub Str) (pick rs [ "="; "<>" ]) (sub Str));
-            (1, fun () -> Printf.sprintf "(%s %s %s)" (sub Dnum) (pick rs [ "<"; "<="; "="; "<>"; ">"; ">=" ]) (sub Dnum));
+            (1, fun () ->
+                Printf.sprintf "(%s %s %s)" (sub Dnum) (pick rs [ "<"; "<="; "="; "<>"; ">"; ">=" ]) (sub Dnum));
             (1, fun () -> Printf.sprintf "(%s %s %s)" (sub Bool) (pick rs [ "="; "<>" ]) (sub Bool));
             (* = and <> on any value type (§3.12): pos, orient, a record, an array *)
             (1, fun () ->
@@ -202,7 +206,8 @@ and argument sc p depth =
   match p.p_mode with
   | In -> expr sc p.p_ty depth
   | Var_mode | Inout ->
-      let targets = List.filter (fun d -> d.kind = Variable || (p.p_mode = Inout && d.kind = Persistent)) (writable sc p.p_ty) in
+      let targets =
+        List.filter (fun d -> d.kind = Variable || (p.p_mode = Inout && d.kind = Persistent)) (writable sc p.p_ty) in
       (* an element of the module's array: located by the place rules (argument-reference) *)
       if p.p_ty = Num && chance sc.rs 0.25 then
         Printf.sprintf "%s{%s}" sc.array_ (if chance sc.rs 0.8 then string_of_int (int_in sc.rs 1 5) else "gn1")
@@ -230,20 +235,29 @@ let controller_statement sc =
     (fun () ->
         if sc.opts.signal_stores then Printf.sprintf "do1 := %s;" (pick rs [ "1"; "0"; "2"; "gn1" ])
         else Printf.sprintf "SetDO do1, %s;" (pick rs [ "1"; "0" ]));
-    (fun () -> pick rs ([ "SetDO gsig, 1;"; "TPWrite \"u \" \\Num:=gsig;" ] @ if sc.opts.signal_stores then [ "gsig := 1;" ] else []));
+    (fun () ->
+        pick rs ([ "SetDO gsig, 1;"; "TPWrite \"u \" \\Num:=gsig;" ]
+                 @ if sc.opts.signal_stores then [ "gsig := 1;" ] else []));
     (fun () -> Printf.sprintf "ITimer \\Single, %s, gint;" (pick rs [ "0.05"; "0.1"; "0.2" ]));
     (fun () -> Printf.sprintf "ITimer %s, gint;" (pick rs [ "0.1"; "0.25" ]));
     (fun () -> pick rs [ "ISleep gint;"; "IWatch gint;"; "IDelete gint;"; "IDisable;"; "IEnable;" ]);
-    (fun () -> Printf.sprintf "ISignalDI %sdi1, %d, gint;" (if chance rs 0.5 then "\\Single, " else "") (int_in rs 0 1));
+    (fun () ->
+        Printf.sprintf "ISignalDI %sdi1, %d, gint;" (if chance rs 0.5 then "\\Single, " else "") (int_in rs 0 1));
     (fun () -> Printf.sprintf "ISignalDO do1, %d, gint;" (int_in rs 0 1));
     (fun () -> Printf.sprintf "WaitTime %s;" (time ()));
-    (fun () -> Printf.sprintf "WaitUntil %s \\MaxTime:=%s;" (pick rs [ "di1 = 1"; "gb1"; "gn2 > 0" ]) (pick rs [ "0.1"; "0.5"; "2" ]));
+    (fun () ->
+        Printf.sprintf "WaitUntil %s \\MaxTime:=%s;" (pick rs [ "di1 = 1"; "gb1"; "gn2 > 0" ])
+          (pick rs [ "0.1"; "0.5"; "2" ]));
     (fun () -> Printf.sprintf "WaitDI di1, %d%s;" (int_in rs 0 1) (if chance rs 0.7 then " \\MaxTime:=0.5" else ""));
     (fun () -> Printf.sprintf "SetDO do1, %d;" (int_in rs 0 1));
     (fun () -> pick rs [ "Set do1;"; "Reset do1;"; "PulseDO \\PLength:=0.1, do1;" ]);
     (fun () -> Printf.sprintf "TPWrite \"di \" \\Num:=%s;" (pick rs [ "di1"; "DOutput(do1)" ]));
-    (fun () -> Printf.sprintf "MoveJ %s, v%d, %s, tool0;" (target ()) (pick rs [ 100; 500; 1000 ]) (pick rs [ "fine"; "z10" ]));
-    (fun () -> Printf.sprintf "MoveL %s, v%d, %s, tool0;" (target ()) (pick rs [ 100; 500 ]) (pick rs [ "fine"; "z10"; "z50" ]));
+    (fun () ->
+        Printf.sprintf "MoveJ %s, v%d, %s, tool0;" (target ()) (pick rs [ 100; 500; 1000 ])
+          (pick rs [ "fine"; "z10" ]));
+    (fun () ->
+        Printf.sprintf "MoveL %s, v%d, %s, tool0;" (target ()) (pick rs [ 100; 500 ])
+          (pick rs [ "fine"; "z10"; "z50" ]));
   ] ()
 
 (* Statement sequences that reach rules one statement rarely does. *)
@@ -315,7 +329,8 @@ and simple sc =
           | _ -> if chance rs 0.5 then Printf.sprintf "gor1 := %s;" (expr sc Orient 2)
                  else Printf.sprintf "gor1 := [%s, 0, 0, %s];" (expr sc Num 1) (expr sc Num 1));
       (2, fun () -> Printf.sprintf "TPWrite %s;" (expr sc Str 2));
-      (1, fun () -> Printf.sprintf "Incr %s;" (match writable sc Num with [] -> sc.array_ ^ "{1}" | l -> (pick rs l).name)) ]
+      (1, fun () ->
+          Printf.sprintf "Incr %s;" (match writable sc Num with [] -> sc.array_ ^ "{1}" | l -> (pick rs l).name)) ]
     @ (if procs <> [] then
          [ (3, fun () -> let s = pick rs procs in Printf.sprintf "%s%s;" s.r_name (procedure_arguments sc s));
            (1, fun () ->
@@ -331,20 +346,24 @@ and simple sc =
                Printf.sprintf "%% \"%s\" %%%s;" s.r_name
                  (pick rs [ " 1, 2, 3, 4, 5"; " \"text\""; " \\nosuch:=1"; "" ])) ]
        else [])
-    @ (let parameterless = List.filter (fun s -> s.result = None && (s.params = [] || sc.opts.mismatching)) sc.callable in
+    @ (let parameterless =
+         List.filter (fun s -> s.result = None && (s.params = [] || sc.opts.mismatching)) sc.callable in
        if parameterless <> [] then
          [ (1, fun () ->
                (* CallByVar "p", n calls the procedure p<n> (ch. 13). *)
                let s = pick rs parameterless in
                let digits = String.sub s.r_name 1 (String.length s.r_name - 1) in
-               Printf.sprintf "CallByVar \"p\", %s;" (if chance rs 0.8 then digits else string_of_int (int_in rs 0 9))) ]
+               Printf.sprintf "CallByVar \"p\", %s;"
+                 (if chance rs 0.8 then digits else string_of_int (int_in rs 0 9))) ]
        else [])
     @ (match sc.optionals with
        | [] -> []
        | l -> [ (1, fun () ->
              (* Using an absent optional parameter's value is ERR_NOTPRES (§5.2). *)
              let p = pick rs l in
-             Printf.sprintf "TPWrite \"opt \" \\%s:=%s;" (match p.p_ty with Num -> "Num" | Dnum -> "Dnum" | Bool -> "Bool" | Str -> "Num" | Pos -> "Pos" | Orient -> "Orient")
+             Printf.sprintf "TPWrite \"opt \" \\%s:=%s;"
+               (match p.p_ty with
+                | Num -> "Num" | Dnum -> "Dnum" | Bool -> "Bool" | Str -> "Num" | Pos -> "Pos" | Orient -> "Orient")
                (if p.p_ty = Str then Printf.sprintf "StrLen(%s)" p.p_name else p.p_name)) ])
     @ (if sc.controller then [ (3, fun () -> controller_statement sc) ] else [])
     @ [ (1, fun () ->
@@ -435,10 +454,13 @@ let gen_params rs sc_data =
       let name = Printf.sprintf "a%d" (i + 1) in
       let has_var = List.exists (fun d -> d.ty = ty && d.kind = Variable) sc_data in
       match Random.State.int rs 5 with
-      | 0 when has_var -> [ { p_name = name; p_ty = ty; p_mode = Var_mode; p_optional = false; p_switch = false; p_group = 0 } ]
-      | 1 when has_var -> [ { p_name = name; p_ty = ty; p_mode = Inout; p_optional = false; p_switch = false; p_group = 0 } ]
+      | 0 when has_var ->
+          [ { p_name = name; p_ty = ty; p_mode = Var_mode; p_optional = false; p_switch = false; p_group = 0 } ]
+      | 1 when has_var ->
+          [ { p_name = name; p_ty = ty; p_mode = Inout; p_optional = false; p_switch = false; p_group = 0 } ]
       | 2 -> [ { p_name = name; p_ty = ty; p_mode = In; p_optional = true; p_switch = false; p_group = 0 } ]
-      | 3 when chance rs 0.5 -> [ { p_name = name; p_ty = Num; p_mode = In; p_optional = true; p_switch = true; p_group = 0 } ]
+      | 3 when chance rs 0.5 ->
+          [ { p_name = name; p_ty = Num; p_mode = In; p_optional = true; p_switch = true; p_group = 0 } ]
       | 3 ->
           incr group;
           [ { p_name = name ^ "x"; p_ty = ty; p_mode = In; p_optional = true; p_switch = false; p_group = !group };
@@ -468,7 +490,8 @@ let routine rs opts ~controller ~module_data ~callable ~name ~result ~params =
       { name = Printf.sprintf "%s_l%d" name (i + 1); ty = pick rs [ Num; Bool; Str ]; kind = Variable }) in
   let initial = List.map (fun d ->
       if chance rs 0.5 then ""
-      else match d.ty with Num -> " := " ^ string_of_int (int_in rs 0 9) | Bool -> " := TRUE" | _ -> " := \"i\"") locals in
+      else match d.ty with
+        | Num -> " := " ^ string_of_int (int_in rs 0 9) | Bool -> " := TRUE" | _ -> " := \"i\"") locals in
   let sc = {
     rs; opts; data = params_data @ locals @ module_data; array_ = "garr"; record_ = "gpt"; callable;
     optionals = List.filter (fun p -> p.p_optional && not p.p_switch) params;
@@ -527,7 +550,8 @@ let generate ?(options = default_options) rs =
       build (i + 1) (callable @ [ s ]) (r :: acc)
   in
   let routines, callable = build 1 [] [] in
-  let main, _ = routine rs options ~controller ~module_data:module_data_objects ~callable ~name:"main" ~result:None ~params:[] in
+  let main, _ =
+    routine rs options ~controller ~module_data:module_data_objects ~callable ~name:"main" ~result:None ~params:[] in
   let main =
     if chance rs 0.2 then
       { main with body = Line "CONNECT gint WITH fztrap;" :: main.body }
@@ -609,7 +633,8 @@ let shrink (p : program) =
   let per_routine = List.mapi (fun i (r : routine) ->
       let with_routine r' = { p with routines = List.mapi (fun j x -> if i = j then r' else x) p.routines } in
       let bodies = Seq.map (fun body -> with_routine { r with body }) (shrink_list r.body) in
-      let no_error = match r.error with Some _ -> Seq.return (with_routine { r with error = None }) | None -> Seq.empty in
+      let no_error =
+        match r.error with Some _ -> Seq.return (with_routine { r with error = None }) | None -> Seq.empty in
       let no_undo = match r.undo with Some _ -> Seq.return (with_routine { r with undo = None }) | None -> Seq.empty in
       let data = Seq.map (fun k -> with_routine { r with data = without k r.data })
           (List.to_seq (List.init (List.length r.data) (fun k -> k))) in

@@ -14,7 +14,8 @@ let proc ?(params = "") ?(data = []) ?error ?undo name body =
   { header = Printf.sprintf "PROC %s(%s)" name params; data; body = lines body;
     error = Option.map (fun e -> ("ERROR", lines e)) error; undo = Option.map lines undo; footer = "ENDPROC" }
 
-let trap name body = { header = "TRAP " ^ name; data = []; body = lines body; error = None; undo = None; footer = "ENDTRAP" }
+let trap name body =
+  { header = "TRAP " ^ name; data = []; body = lines body; error = None; undo = None; footer = "ENDTRAP" }
 
 (* The stimulus: the signals of every generated program (Fuzz_run.io), the changes of di1 when
    the scenario keeps them, and its own events (a collision), in order of time. *)
@@ -36,10 +37,13 @@ let handler_ending rs endings = match pick rs endings with "" -> [] | e -> [ e ]
    ERR_REFUNKDAT, ERR_REFUNKPRC or ERR_REFUNKFUN (doc/semantics.md, place-unknown,
    call-unknown, call-unknown-function). *)
 let unknown rs =
-  let uses = [ "zn1 := fzunknown + 1;"; "fzunknownproc 1;"; "zn1 := fzunknownfun(2);"; "TPWrite \"u \" \\Num:=fzunknown;";
+  let uses = [ "zn1 := fzunknown + 1;"; "fzunknownproc 1;"; "zn1 := fzunknownfun(2);";
+               "TPWrite \"u \" \\Num:=fzunknown;";
                "fzunknown := 3;" ] in
   let body = List.init (int_in rs 1 3) (fun _ -> pick rs uses) @ [ "TPWrite \"end \" \\Num:=zn1;" ] in
-  let error = if chance rs 0.7 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETRY;"; "" ]) else None in
+  let error =
+    if chance rs 0.7 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETRY;"; "" ])
+    else None in
   one ~options:{ Fuzz_case.default_options with allow_unknown = true } ~data:[ "VAR num zn1 := 1;" ]
     [ proc ?error "main" body ]
 
@@ -61,13 +65,15 @@ let time_limit rs =
     | 0 -> (stimulus [], [ "WHILE zn1 < 1000000 DO"; ])
     | 1 -> (stimulus [], [ Printf.sprintf "WaitTime %s;" (pick rs [ "1"; "10" ]) ])
     | 2 -> (stimulus ~changes:false (if chance rs 0.5 then [] else [ (30., "di1 1") ]), [ "WaitDI di1, 1;" ])
-    | 3 -> (stimulus [], [ Printf.sprintf "WaitUntil zn1 < 0%s;" (pick rs [ ""; " \\PollRate:=0.05"; " \\MaxTime:=5" ]) ])
+    | 3 ->
+        (stimulus [], [ Printf.sprintf "WaitUntil zn1 < 0%s;" (pick rs [ ""; " \\PollRate:=0.05"; " \\MaxTime:=5" ]) ])
     | _ -> (stimulus [], [ "WaitTime 0.01;"; "WaitTime 0.02;" ]) in
   let body =
     match wait with
     | [ "WHILE zn1 < 1000000 DO" ] -> [ Compound ([ ("WHILE zn1 < 1000000 DO", lines [ "Incr zn1;" ]) ], "ENDWHILE") ]
     | l -> lines l in
-  let main = { (proc "main" []) with body = Line "TPWrite \"start\";" :: body @ [ Line "TPWrite \"end \" \\Num:=zn1;" ] } in
+  let main =
+    { (proc "main" []) with body = Line "TPWrite \"start\";" :: body @ [ Line "TPWrite \"end \" \\Num:=zn1;" ] } in
   one ~options:{ Fuzz_case.default_options with max_time = Some max_time } ~io ~data:[ "VAR num zn1;" ] [ main ]
 
 (* --max-memory with routine data that may not fit (Value.bytes: a num 32 bytes, an element 8
@@ -104,11 +110,15 @@ let conditional rs =
   let params = if value then "\\num a | num b" else "\\switch a | switch b" in
   let check = proc ~params "alt"
       [ "IF Present(a) TPWrite \"a\";"; "IF Present(b) TPWrite \"b\";" ] in
-  let pass = proc ~params:(if value then "\\num x, \\num y" else "\\switch x, \\switch y") "pass" [ "alt \\a?x \\b?y;" ] in
+  let pass =
+    proc ~params:(if value then "\\num x, \\num y" else "\\switch x, \\switch y") "pass" [ "alt \\a?x \\b?y;" ] in
   let argument p = if value then Printf.sprintf " \\%s:=%d" p (int_in rs 1 9) else " \\" ^ p in
   let call () =
-    Printf.sprintf "pass%s%s;" (if chance rs 0.6 then argument "x" else "") (if chance rs 0.6 then argument "y" else "") in
-  let error = if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ]) else None in
+    Printf.sprintf "pass%s%s;" (if chance rs 0.6 then argument "x" else "")
+      (if chance rs 0.6 then argument "y" else "") in
+  let error =
+    if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ])
+    else None in
   one [ check; pass; proc ?error "main" (List.init (int_in rs 1 4) (fun _ -> call ()) @ [ "TPWrite \"end\";" ]) ]
 
 (* ---------------------------------------------------------------- CONNECT *)
@@ -118,16 +128,22 @@ let conditional rs =
 let connect_parameter rs =
   let mode = pick rs [ "VAR"; "INOUT" ] in
   let target = pick rs ([ "zint"; "lint" ] @ if mode = "INOUT" then [ "pint" ] else []) in
-  let error = if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ]) else None in
-  let conn = proc ?error ~params:(mode ^ " intnum x") "conn" [ "CONNECT x WITH zztrap;"; "ITimer \\Single, 0.01, x;"; "WaitTime 0.05;" ] in
+  let error =
+    if chance rs 0.6 then Some ("TPWrite \"handler \" \\Num:=ERRNO;" :: handler_ending rs [ "TRYNEXT;"; "RETURN;"; "" ])
+    else None in
+  let conn =
+    proc ?error ~params:(mode ^ " intnum x") "conn"
+      [ "CONNECT x WITH zztrap;"; "ITimer \\Single, 0.01, x;"; "WaitTime 0.05;" ] in
   one ~data:[ "VAR intnum zint;"; "PERS intnum pint := 0;" ]
     [ conn; trap "zztrap" [ "TPWrite \"trap \" \\Num:=INTNO;" ];
-      proc ~data:[ "VAR intnum lint;" ] "main" [ Printf.sprintf "conn %s;" target; "IDelete zint;"; "TPWrite \"end\";" ] ]
+      proc ~data:[ "VAR intnum lint;" ] "main"
+        [ Printf.sprintf "conn %s;" target; "IDelete zint;"; "TPWrite \"end\";" ] ]
 
 (* ---------------------------------------------------------------- asynchronous errors *)
 
 let targets = [
-  "CONST robtarget fzq1 := [[300, -250, 300], [0, 0, 1, 0], [-1, 0, -1, 0], [9E+09, 9E+09, 9E+09, 9E+09, 9E+09, 9E+09]];";
+  "CONST robtarget fzq1 := [[300, -250, 300], [0, 0, 1, 0], [-1, 0, -1, 0], \
+   [9E+09, 9E+09, 9E+09, 9E+09, 9E+09, 9E+09]];";
   "CONST robtarget fzq2 := [[300, 250, 300], [0, 0, 1, 0], [0, 0, 0, 0], [9E+09, 9E+09, 9E+09, 9E+09, 9E+09, 9E+09]];";
   "CONST robtarget fzq3 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E+09, 9E+09, 9E+09, 9E+09, 9E+09, 9E+09]];";
 ]
@@ -138,7 +154,8 @@ let async_handler rs =
   if chance rs 0.15 then None
   else
     let restart = if chance rs 0.7 then [ "StartMove;" ] else [] in
-    Some (("TPWrite \"async \" \\Num:=ERRNO;" :: restart) @ handler_ending rs [ "RETRY;"; "TRYNEXT;"; "EXIT;"; "RAISE;"; "RETURN;"; "" ])
+    Some (("TPWrite \"async \" \\Num:=ERRNO;" :: restart)
+          @ handler_ending rs [ "RETRY;"; "TRYNEXT;"; "EXIT;"; "RAISE;"; "RETURN;"; "" ])
 
 (* A robot path made by [mover], a routine [waiter] the program pointer waits in, the error
    from a collision of the stimulus or ProcerrRecovery in a trap; handlers in each routine as
@@ -161,7 +178,9 @@ let async rs =
       "waiter" [ "TPWrite \"waiter\";"; wait ] in
   let mover = proc ?error:(if chance rs 0.6 then async_handler rs else None)
       ?undo:(if chance rs 0.3 then Some [ "TPWrite \"undo mover\";" ] else None) "mover"
-      ((if collision then [] else [ "CONNECT gfail WITH fzfail;"; Printf.sprintf "ITimer \\Single, %s, gfail;" (pick rs [ "0.3"; "0.8"; "1.5" ]) ])
+      ((if collision then []
+        else [ "CONNECT gfail WITH fzfail;";
+               Printf.sprintf "ITimer \\Single, %s, gfail;" (pick rs [ "0.3"; "0.8"; "1.5" ]) ])
        @ [ Printf.sprintf "MoveL fzq2, %s, %s, tool0;" speed zone; "waiter;";
            Printf.sprintf "MoveL fzq3, %s, fine, tool0;" speed; "TPWrite \"mover done\";" ]) in
   let fail = trap "fzfail"
@@ -169,7 +188,8 @@ let async rs =
   let main = proc ?error:(async_handler rs) "main"
       [ "MoveJ fzq1, v1000, fine, tool0;"; "mover;"; "TPWrite \"main done\";" ] in
   let io = stimulus (if collision then [ (pick rs [ 0.5; 1.; 1.5; 2.5 ], "collision") ] else []) in
-  one ~io ~data:(targets @ [ "VAR intnum gfail;"; "VAR num zn1;" ]) ([ waiter; mover ] @ (if collision then [] else [ fail ]) @ [ main ])
+  one ~io ~data:(targets @ [ "VAR intnum gfail;"; "VAR num zn1;" ])
+    ([ waiter; mover ] @ (if collision then [] else [ fail ]) @ [ main ])
 
 (* ---------------------------------------------------------------- the user level *)
 
@@ -190,7 +210,8 @@ let user_level rs =
      (spec/07-user-level/03-function-error-constant) *)
   let scaled = { header = "FUNC num scaled(num x)"; data = [];
                  body = lines [ "IF gdiv = 0 RAISE 5;"; "RETURN x * gdiv;" ];
-                 error = Some ("ERROR", lines [ "RaiseToUser" ^ switch ^ number ^ ";" ]); undo = None; footer = "ENDFUNC" } in
+                 error = Some ("ERROR", lines [ "RaiseToUser" ^ switch ^ number ^ ";" ]); undo = None;
+                 footer = "ENDFUNC" } in
   let outer = proc "outer"
       ?error:(if chance rs 0.3 then Some [ "TPWrite \"outer handler\";"; "RAISE;" ] else None)
       ?undo:(if chance rs 0.4 then Some [ "TPWrite \"outer undo\";" ] else None)
@@ -203,14 +224,18 @@ let user_level rs =
                @ (if chance rs 0.8 then [ "gdiv := 2;"; "gerr := 5;" ] else [])
                @ handler_ending rs [ "RETRY;"; "TRYNEXT;"; "RETRY;"; "TRYNEXT;"; "RETURN;"; "RAISE;"; "" ]) in
   let misplaced = if chance rs 0.1 then [ "% \"RaiseToUser\" % \\BreakOff;" ] else [] in
-  let user = proc ?error:user_error "work" (("TPWrite \"work\";" :: misplaced) @ [ "outer;"; "TPWrite \"work goes on\";" ]) in
+  let user =
+    proc ?error:user_error "work" (("TPWrite \"work\";" :: misplaced) @ [ "outer;"; "TPWrite \"work goes on\";" ]) in
   let data = [ "VAR num gdiv := 0;"; "VAR num zn1;"; Printf.sprintf "VAR num gerr := %d;" (pick rs [ 5; 95; 0 ]) ] in
   let below = chance rs 0.1 in
   let main_error = if chance rs 0.5 then Some [ "TPWrite \"main handler \" \\Num:=ERRNO;"; "TRYNEXT;" ] else None in
   let main = proc ?error:main_error "main" [ "work;"; "TPWrite \"main done\";" ] in
   (* an error recovery point above the user level: the long jump from below it is reported at
      the call (R-7.3-o) *)
-  let main = if chance rs 0.2 then { main with error = Some ("ERROR (56, LONG_JMP_ALL_ERR)", lines [ "TPWrite \"recovery point\";"; "TRYNEXT;" ]) } else main in
+  let main =
+    if chance rs 0.2 then
+      { main with error = Some ("ERROR (56, LONG_JMP_ALL_ERR)", lines [ "TPWrite \"recovery point\";"; "TRYNEXT;" ]) }
+    else main in
   (* a NOVIEW module is below the user level too (R-9.4-a) *)
   let attribute = if chance rs 0.2 then "NOVIEW" else "NOSTEPIN" in
   let lib = { name = Printf.sprintf "fzlib (%s)" attribute; module_data = [];
@@ -231,7 +256,8 @@ let tasks rs =
     match Random.State.int rs 6 with
     | 0 ->
         add_a [ Printf.sprintf "WaitTime %s;" (pick rs [ "0.1"; "0.5" ]); "fzflag := fzflag + 1;" ];
-        add_b [ Printf.sprintf "WaitUntil fzflag > %d%s;" (int_in rs 0 1) (pick rs [ ""; " \\MaxTime:=1"; " \\PollRate:=0.05" ]);
+        add_b [ Printf.sprintf "WaitUntil fzflag > %d%s;" (int_in rs 0 1)
+                  (pick rs [ ""; " \\MaxTime:=1"; " \\PollRate:=0.05" ]);
                 "TPWrite \"B sees \" \\Num:=fzflag;" ]
     | 1 -> add_a [ "WaitSyncTask fzmeet, fzboth;" ]; add_b [ "WaitSyncTask fzmeet, fzboth;" ]
     | 2 -> add_a [ "WaitSyncTask fzmeet, fzboth \\TimeOut:=0.5;" ]
@@ -239,15 +265,18 @@ let tasks rs =
            add_b [ "WaitTestAndSet fzlock;"; "TPWrite \"B holds\";"; "fzlock := FALSE;" ]
     | 4 ->
         (* a semaphore never given back: the second task waits for what no task can change *)
-        add_a [ "WaitTestAndSet fzlock;"; "TPWrite \"A keeps\";" ]; add_b [ "WaitTestAndSet fzlock;"; "TPWrite \"B keeps\";" ]
+        add_a [ "WaitTestAndSet fzlock;"; "TPWrite \"A keeps\";" ];
+        add_b [ "WaitTestAndSet fzlock;"; "TPWrite \"B keeps\";" ]
     | _ -> add_b [ Printf.sprintf "WaitTime %s;" (pick rs [ "0.05"; "0.2" ]); "fzflag := fzflag + 1;" ];
            add_a [ "WaitUntil fzflag > 0 \\MaxTime:=0.5;" ]
   done;
   let handler = if chance rs 0.5 then Some [ "TPWrite \"timeout \" \\Num:=ERRNO;"; "TRYNEXT;" ] else None in
-  let a = { name = "fuzz_a"; module_data = [ "PERS num fzflag := 0;"; "PERS bool fzlock := FALSE;"; "VAR syncident fzmeet;";
-                                             "PERS tasks fzboth{2} := [[\"T_ROB1\"], [\"T_B\"]];" ];
+  let a = { name = "fuzz_a";
+            module_data = [ "PERS num fzflag := 0;"; "PERS bool fzlock := FALSE;"; "VAR syncident fzmeet;";
+                            "PERS tasks fzboth{2} := [[\"T_ROB1\"], [\"T_B\"]];" ];
             routines = [ proc ?error:handler "main" (("TPWrite \"A\";" :: !a_steps) @ [ "TPWrite \"A ends\";" ]) ] } in
-  let b = { name = "fuzz_b"; module_data = [ "PERS num fzflag;"; "PERS bool fzlock;"; "VAR syncident fzmeet;"; "PERS tasks fzboth{2};" ];
+  let b = { name = "fuzz_b";
+            module_data = [ "PERS num fzflag;"; "PERS bool fzlock;"; "VAR syncident fzmeet;"; "PERS tasks fzboth{2};" ];
             routines = [ proc ?error:handler "main" (("TPWrite \"B\";" :: !b_steps) @ [ "TPWrite \"B ends\";" ]) ] } in
   { Fuzz_case.tasks = [ { task_name = "T_ROB1"; modules = [ a ] }; { task_name = "T_B"; modules = [ b ] } ];
     io_text = stimulus [];
@@ -257,7 +286,8 @@ let tasks rs =
 
 let table = [
   ("unknown", unknown); ("unmodelled", unmodelled); ("time-limit", time_limit); ("memory", memory);
-  ("call-depth", call_depth); ("conditional", conditional); ("connect-parameter", connect_parameter); ("async", async); ("async", async);
+  ("call-depth", call_depth); ("conditional", conditional); ("connect-parameter", connect_parameter);
+  ("async", async); ("async", async);
   ("user-level", user_level); ("user-level", user_level); ("user-level", user_level); ("tasks", tasks);
 ]
 
@@ -269,7 +299,8 @@ let kinds = List.sort_uniq compare (List.map fst table)
    from the program's (g..., p<n>, f<n>, fztrap, fzrec). *)
 let with_program rs (c : Fuzz_case.t) =
   match c.tasks with
-  | [ ({ modules = app :: rest; _ } as t) ] when List.exists (fun (r : routine) -> r.header = "PROC main()") app.routines ->
+  | [ ({ modules = app :: rest; _ } as t) ]
+    when List.exists (fun (r : routine) -> r.header = "PROC main()") app.routines ->
       let g = Program_gen.generate rs in
       let renamed = List.map (fun (r : routine) ->
           if r.header = "PROC main()" then { r with header = "PROC fzgen()" } else r) g.routines in

@@ -117,7 +117,8 @@ let call ctx name args =
       match value_of args.(0) with
       | Some (V.Num id) when Float.is_integer id ->
           ctx.event_log (Err_log { id = int_of_float id; kind;
-                                   arguments = List.map string_arg (List.filteri (fun i _ -> i >= 3) (Array.to_list args)) });
+                                   arguments =
+                                     List.map string_arg (List.filteri (fun i _ -> i >= 3) (Array.to_list args)) });
           Returned None
       | _ -> Failed "ERR_ARGVALERR")
   | "stop" -> Stop_requested
@@ -137,3 +138,9 @@ let call ctx name args =
       match Library.find name with
       | Some f -> result (f (Array.map value_of args))
       | None -> Not_modelled)
+
+(* A function of the library that no special case above takes: its body is the library's, on
+   the arguments' values, and a registry entry may call it without the name dispatch. *)
+let pure name =
+  if List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials then None
+  else Option.map (fun f args -> result (f (Array.map value_of args))) (Library.find name)

@@ -13,3 +13,7 @@ val call : context -> string -> argument array -> outcome
 
 val modelled : string -> bool
 (** Whether this module gives the installed routine a body. *)
+
+val pure : string -> (argument array -> outcome) option
+(** The body of a function of {!Library} by name, when no special case of {!call} takes it: what
+    {!call} does for it, without the look-up by name at each call. *)

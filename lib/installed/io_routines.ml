@@ -66,7 +66,8 @@ let wait_signal ctx args ~compare_with =
     | `Number -> (match num ctx args "Value" with Some v -> Ok v | None -> Error "ERR_ARGVALERR") in
   let op, words = if compare_with = `Digital then (( = ), "equal to") else comparison ctx args in
   let satisfied () = op (W.read w id) target in
-  let r = timed_wait ctx args ~what:(Printf.sprintf "%s %s %s" (W.signal_name w id) words (value_text target)) ~satisfied in
+  let r =
+    timed_wait ctx args ~what:(Printf.sprintf "%s %s %s" (W.signal_name w id) words (value_text target)) ~satisfied in
   (* \ValueAtTimeout: the signal's value when the time ran out. *)
   (match r with
    | Wait wt when present ctx args "ValueAtTimeout" ->
@@ -214,7 +215,8 @@ let call (ctx : context) name args =
             W.write w id during; W.write_later w id after ~delay:length; done_)
   | "setao" ->
       Some (let* id = signal ctx args "Signal" in
-            match num ctx args "Value" with Some v -> set_signal ctx id (V.num_value (V.num v)) | None -> Failed "ERR_ARGVALERR")
+            match num ctx args "Value" with
+            | Some v -> set_signal ctx id (V.num_value (V.num v)) | None -> Failed "ERR_ARGVALERR")
   | "setgo" ->
       Some (let* id = signal ctx args "Signal" in
             match num ctx args "Value" with
@@ -263,7 +265,8 @@ let call (ctx : context) name args =
       (* A group signal interrupts at every change of its value. *)
       Some (let* n = interrupt ctx args in
             let* id = signal ctx args "Signal" in
-            ordered ctx args n (W.order_signal w n ~signal:id ~trigger:(fun ~old ~now -> old <> now) ~single:(single ctx args)))
+            ordered ctx args n
+              (W.order_signal w n ~signal:id ~trigger:(fun ~old ~now -> old <> now) ~single:(single ctx args)))
   | "isignalai" | "isignalao" ->
       Some (let* n = interrupt ctx args in
             let* id = signal ctx args "Signal" in
@@ -338,8 +341,10 @@ let call (ctx : context) name args =
       let t = W.clock_read w (clock ctx args) in
       let t = if present ctx args "HighRes" then Float.round (t *. 1e6) /. 1e6 else Float.round (t *. 1e3) /. 1e3 in
       Some (value t)
-  | "cdate" -> let y, m, d, _, _, _, _ = wall ctx in Some (Returned (Some (V.String (Printf.sprintf "%04d-%02d-%02d" y m d))))
-  | "ctime" -> let _, _, _, h, mi, s, _ = wall ctx in Some (Returned (Some (V.String (Printf.sprintf "%02d:%02d:%02d" h mi s))))
+  | "cdate" ->
+      let y, m, d, _, _, _, _ = wall ctx in Some (Returned (Some (V.String (Printf.sprintf "%04d-%02d-%02d" y m d))))
+  | "ctime" ->
+      let _, _, _, h, mi, s, _ = wall ctx in Some (Returned (Some (V.String (Printf.sprintf "%02d:%02d:%02d" h mi s))))
   | "gettime" ->
       let _, _, _, h, mi, s, wd = wall ctx in
       Some (if present ctx args "WDay" then value (float_of_int wd)

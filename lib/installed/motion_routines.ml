@@ -227,7 +227,8 @@ let until ?move ctx ~what time =
     match move with
     | Some (st, (id, key)) when async_here () ->
         let a = Option.get st.async in
-        st.async <- None; st.interrupted <- Some (id, key); Some { Rapid_observable.Wait.error = a.a_name; at_move = true }
+        st.async <- None; st.interrupted <- Some (id, key);
+        Some { Rapid_observable.Wait.error = a.a_name; at_move = true }
     | _ -> None in
   let self = ref None in
   let finish ~timed_out =
@@ -453,7 +454,9 @@ let move ctx st name args =
               end;
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
-              let tframe = match MM.Frames.as_robot_held (tool_of tool) (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
+              let tframe =
+                match MM.Frames.as_robot_held (tool_of tool)
+                        (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
                 | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
               let target = G.pmult (world_flange st id joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
@@ -630,7 +633,9 @@ let search ctx st name args =
             end in
           let finish ~timed_out:_ = if !found then None else Rapid_observable.Wait.error "ERR_WHLSEARCH" in
           if satisfied () then (match finish ~timed_out:false with None -> Returned None | Some e -> raised st e)
-          else Wait { W.what = "the robot (" ^ name ^ " " ^ target_label ^ ")"; satisfied; deadline = None; finish; poll = None })
+          else
+            Wait { W.what = "the robot (" ^ name ^ " " ^ target_label ^ ")"; satisfied; deadline = None; finish;
+                   poll = None })
   | _ -> Failed "ERR_ARGVALERR"
 
 (* ------------------------------------------------------------------ the routines *)
@@ -638,7 +643,8 @@ let search ctx st name args =
 let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
-  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning"; "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
+  "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning";
+  "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
   "SetSysData";
@@ -708,7 +714,8 @@ let call_unguarded (ctx : context) st name args =
         let s = standstill st () in
         if Float.is_finite s then st.first_poll <- Some s;
         let finish ~timed_out =
-          if flag then ((match arg ctx args "TimeFlag" with Location (box, i, _) -> box.(i) <- V.Bool timed_out | _ -> ()); None)
+          if flag then
+            ((match arg ctx args "TimeFlag" with Location (box, i, _) -> box.(i) <- V.Bool timed_out | _ -> ()); None)
           else if timed_out then Rapid_observable.Wait.error "ERR_WAIT_MAXTIME" else None in
         Some (Wait { W.what = "a condition (WaitUntil \\InPos)"; satisfied = (fun () -> false);
                      deadline = Option.map (fun m -> now +. m) max_time; finish; poll = Some rate })
@@ -722,7 +729,8 @@ let call_unguarded (ctx : context) st name args =
       P.start st.planner ~at:now; st.dirty <- true; st.reshaped <- true;
       emit st (E.Path_command { time = now; command = "StartMove" });
       Some Retry_requested
-  | "clearpath" -> Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
+  | "clearpath" ->
+      Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
   | "procerrrecovery" ->
@@ -817,7 +825,8 @@ let call_unguarded (ctx : context) st name args =
               let e = current_external ctx st in
               let base = P.base st.planner e in
               if lname = "crobt" then
-                result_pose ctx name (Result.map (robtarget_value ~extax:(eax_value e)) (MM.Frames.c_rob_t ?base st.kin ~joints tool wobj))
+                result_pose ctx name
+                  (Result.map (robtarget_value ~extax:(eax_value e)) (MM.Frames.c_rob_t ?base st.kin ~joints tool wobj))
               else result_pose ctx name (Result.map pos_value (MM.Frames.c_pos ?base st.kin ~joints tool wobj))))
   | "calcrobt" -> (
       match get "Joint_target", get "Tool" with

@@ -3,7 +3,7 @@
     turns each body into an entry of the engines' {!Rapid_runtime.Installed_routine}. *)
 
 type argument = Rapid_runtime.Argument.t =
-  | Value of Rapid_runtime.Value.t                                 (** an in parameter *)
+  | Value of Rapid_runtime.Value.t                   (** an in parameter *)
   | Location of Rapid_runtime.Value.t array * int * Rapid_runtime.Ir.reference_kind
       (** an alias parameter: the container and index of the argument's location, and what it
           denotes (a variable, a persistent, ...) for IsVar and IsPers *)
@@ -14,7 +14,7 @@ type argument = Rapid_runtime.Argument.t =
 type log_entry = Rapid_runtime.Event.log_entry =
   | Err_log of { id : int; kind : string; arguments : string list }
       (** ErrLog ErrorId [\W]|[\I] Argument1..Argument5: [kind] "error", "warning" (\W) or
-         "information" (\I) *)
+          "information" (\I) *)
   | Skip_warning                                     (** SkipWarn (§7.5) *)
 
 type context = {
@@ -22,17 +22,17 @@ type context = {
   erase : unit -> unit;                              (** TPErase *)
   log : string -> unit;                              (** the event log (ErrWrite) *)
   event_log : log_entry -> unit;                     (** ErrLog, SkipWarn (§7.5) *)
-  mutable book_error : unit -> int;                          (** BookErrNo: a new error number *)
+  mutable book_error : unit -> int;                  (** BookErrNo: a new error number *)
   mutable error_number : string -> int;
   world : Rapid_controller.World.t;                  (** the controller around the run *)
-  mutable parameters : string array;                         (** the routine's parameter names, in order *)
+  mutable parameters : string array;                 (** the routine's parameter names, in order *)
   mutable argument_label : string -> string option;
       (** the name of the data object given for a parameter (by the parameter's name), for the
           motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
 }
 
 type outcome =
-  | Returned of Rapid_runtime.Value.t option                       (** a function's value, or a procedure's end *)
+  | Returned of Rapid_runtime.Value.t option         (** a function's value, or a procedure's end *)
   | Failed of string                                 (** an execution error, by its ERR_ name *)
   | Call_by_name of string                           (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                                   (** Stop: the task stops *)

@@ -6,12 +6,43 @@
 module W = Rapid_controller.World
 module IR = Installed_routine
 
-type claimant =
-  | Task
-  | Motion
-  | Io
-  | Service
-  | Basic
+(* A module of bodies: which names it claims (in a task's world), whether its routines reach
+   the world or the motion, and its answer ([None]: not this module's after all; the next one
+   in the order answers). *)
+type body = {
+  module_name : string;
+  claims : W.t -> string -> bool;
+  reach : string -> IR.reach;
+  answer : standstill:(unit -> float) -> Primitive.context -> Motion_routines.state -> string ->
+    Primitive.argument array -> (Primitive.outcome * Motion_routines.effects) option;
+}
+
+let no_effects = { Motion_routines.at_move = false; new_move = None; first_poll = None }
+
+let plain f = fun ~standstill:_ ctx _ name args -> Option.map (fun r -> (r, no_effects)) (f ctx name args)
+
+let same = Rapid_typing.Types.same_name
+
+(* The order in which the modules answer: WaitTime and WaitUntil with \InPos are the motion's
+   (R-8-n), without it the controller's; ErrWrite's entry goes to the controller's event log,
+   then to Basic_routines' log line; a motion instruction in a task without the robot is
+   Task_routines' refusal (R-14-e). One line per module. *)
+let bodies = [
+  { module_name = "task"; reach = (fun _ -> World);
+    claims = (fun w name -> Task_routines.modelled name
+                            || ((not (W.motion_task w)) && List.exists (same name) Task_routines.motion_instructions));
+    answer = (fun ~standstill ctx _ name args ->
+        Option.map (fun r -> (r, no_effects)) (Task_routines.call ~standstill ctx name args)) };
+  { module_name = "motion"; reach = (fun name -> if Motion_routines.modelled name then Moves else World);
+    claims = (fun _ name -> Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil");
+    answer = (fun ~standstill:_ ctx motion name args -> Motion_routines.call ctx motion name args) };
+  { module_name = "io"; reach = (fun _ -> World); claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
+    answer = plain Io_routines.call };
+  { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
+    answer = plain Service_routines.call };
+  { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
+    answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
+]
 
 type t = {
   world : W.t;
@@ -23,26 +54,19 @@ let create world motion = { world; motion; entries = Hashtbl.create 64 }
 
 let same = Rapid_typing.Types.same_name
 
-(* WaitTime and WaitUntil with \InPos are the motion's (R-8-n), without it the controller's;
-   ErrWrite's entry goes to the controller's event log, then to Basic_routines' log line. *)
-let claimants world name =
-  let task = Task_routines.modelled name
-             || ((not (W.motion_task world)) && List.exists (same name) Task_routines.motion_instructions) in
-  let motion = Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil" in
-  List.filter_map (fun (claims, c) -> if claims then Some c else None)
-    [ (task, Task); (motion, Motion); (Io_routines.modelled name || same name "ErrWrite", Io);
-      (Service_routines.modelled name, Service); (Basic_routines.modelled name, Basic) ]
+let claimants world name = List.filter (fun b -> b.claims world name) bodies
 
-let modelled name =
-  Task_routines.modelled name || Motion_routines.modelled name || Io_routines.modelled name
-  || Service_routines.modelled name || Basic_routines.modelled name
+(* The world of a motion task, for [modelled]: every name some task's registry answers. *)
+let a_motion_task = lazy (W.create Rapid_controller.Io_config.empty)
 
-(* The routines that reach the world: the clock, signals, interrupts, services, other tasks.
-   ErrWrite's entry goes to the world's event log too (IError, R-8-l). *)
+let modelled name = List.exists (fun b -> b.claims (Lazy.force a_motion_task) name) bodies
+
+(* The most any claimant reaches: the motion, the world (the clock, signals, interrupts,
+   services, other tasks), or values only. ErrWrite's entry goes to the world's event log too
+   (IError, R-8-l). *)
 let reach_of claimants name : IR.reach =
-  if Motion_routines.modelled name then Moves
-  else if List.exists (fun c -> c <> Basic) claimants then World
-  else Values
+  let reaches = List.map (fun b -> b.reach name) claimants in
+  if List.mem IR.Moves reaches then Moves else if List.mem IR.World reaches then World else Values
 
 let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) : IR.result =
   match r with
@@ -53,8 +77,6 @@ let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) :
   | Not_modelled -> Not_modelled
   | Wait wait -> Wait { wait; first_poll = effects.first_poll }
   | Retry_requested -> Retry_requested
-
-let no_effects = { Motion_routines.at_move = false; new_move = None; first_poll = None }
 
 let make t name claimants : IR.entry =
   let reach = reach_of claimants name in
@@ -80,17 +102,14 @@ let make t name claimants : IR.entry =
     argument_label = (fun _ -> None);
   } in
   let standstill () = Rapid_motion_model.Planner.finished_by (Motion_routines.planner t.motion) in
+  let pure = match claimants with [ { module_name = "basic"; _ } ] -> Basic_routines.pure name | _ -> None in
   let body args =
+    match pure with
+    | Some f -> Some (f args, no_effects)
+    | None ->
     let rec first = function
       | [] -> None
-      | c :: rest ->
-          let answer = match c with
-            | Task -> Option.map (fun r -> (r, no_effects)) (Task_routines.call ~standstill ctx name args)
-            | Motion -> Motion_routines.call ctx t.motion name args
-            | Io -> Option.map (fun r -> (r, no_effects)) (Io_routines.call ctx name args)
-            | Service -> Option.map (fun r -> (r, no_effects)) (Service_routines.call ctx name args)
-            | Basic -> Some (Basic_routines.call ctx name args, no_effects) in
-          match answer with Some a -> Some a | None -> first rest in
+      | b :: rest -> (match b.answer ~standstill ctx t.motion name args with Some a -> Some a | None -> first rest) in
     first claimants in
   let call (site : IR.context) args : IR.outcome =
     ctx.parameters <- site.parameters;
@@ -108,6 +127,12 @@ let make t name claimants : IR.entry =
     match result, written, new_move with
     | Returned v, [], None -> IR.returned v
     | _ -> { result; events = written; new_move } in
+  let call = match pure with
+    | Some f -> (fun _ args ->
+        match f args with
+        | Primitive.Returned v -> IR.returned v
+        | r -> { IR.result = convert_result r no_effects; events = []; new_move = None })
+    | None -> call in
   let condition = if same name "WaitUntil" then Some "Cond" else None in
   { name; reach; condition; call }
 

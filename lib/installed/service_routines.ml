@@ -114,7 +114,8 @@ let decode_any s off =
     | 'n' -> need 8 (p + 1); (V.Num (Int64.float_of_bits (String.get_int64_be s (p + 1))), p + 9)
     | 'd' -> need 8 (p + 1); (V.Dnum (Int64.float_of_bits (String.get_int64_be s (p + 1))), p + 9)
     | 'b' -> need 1 (p + 1); (V.Bool (s.[p + 1] <> '\000'), p + 2)
-    | 's' -> need 1 (p + 1); let l = Char.code s.[p + 1] in need l (p + 2); (V.String (String.sub s (p + 2) l), p + 2 + l)
+    | 's' ->
+        need 1 (p + 1); let l = Char.code s.[p + 1] in need l (p + 2); (V.String (String.sub s (p + 2) l), p + 2 + l)
     | 'r' | 'a' as tag ->
         need 4 (p + 1);
         let count = Int32.to_int (String.get_int32_be s (p + 1)) in
@@ -185,11 +186,16 @@ let pack_bytes ctx args v =
         match v with
         | V.Num f | V.Dnum f when Float.is_integer f ->
             let lo, hi =
-              if size = 8 then (if signed then (-9.223372036854775808e18, 9.223372036854775807e18) else (0., 1.8446744073709551615e19))
-              else let r = Float.pow 2. (float_of_int (8 * size)) in if signed then (-. r /. 2., r /. 2. -. 1.) else (0., r -. 1.) in
+              if size = 8 then
+                (if signed then (-9.223372036854775808e18, 9.223372036854775807e18) else (0., 1.8446744073709551615e19))
+              else
+                let r = Float.pow 2. (float_of_int (8 * size)) in
+                if signed then (-. r /. 2., r /. 2. -. 1.) else (0., r -. 1.) in
             if f < lo || f > hi then Error "ERR_ARGVALERR"
             else
-              let i = if f >= 9.223372036854775807e18 then Int64.of_float (f -. 1.8446744073709551616e19) else Int64.of_float f in
+              let i =
+                if f >= 9.223372036854775807e18 then Int64.of_float (f -. 1.8446744073709551616e19)
+                else Int64.of_float f in
               Ok (int_bytes ~size ~network i)
         | _ -> Error "ERR_ARGVALERR")
     | Some _ -> Error "ERR_ARGVALERR"
@@ -197,7 +203,8 @@ let pack_bytes ctx args v =
         (* \ASCII, or no encoding named: a string is its characters, a byte one character. *)
         match v with
         | V.String s when s <> "" -> Ok (Bytes.of_string s)
-        | V.Num f when Float.is_integer f && f >= 0. && f <= 255. && present ctx args "ASCII" -> Ok (Bytes.make 1 (Char.chr (int_of_float f)))
+        | V.Num f when Float.is_integer f && f >= 0. && f <= 255. && present ctx args "ASCII" ->
+            Ok (Bytes.make 1 (Char.chr (int_of_float f)))
         | _ -> Error "ERR_ARGVALERR")
 
 let unpack ctx args b n start =
@@ -213,7 +220,9 @@ let unpack ctx args b n start =
     | Some x when List.mem x [ 1; 2; 4; 8; -1; -2; -4; -8 ] ->
         Result.map (fun bs ->
             let i = bytes_int bs ~size:(abs x) ~network ~signed:(x < 0) in
-            let f = if x = 8 && Int64.compare i 0L < 0 then Int64.to_float i +. 1.8446744073709551616e19 else Int64.to_float i in
+            let f =
+              if x = 8 && Int64.compare i 0L < 0 then Int64.to_float i +. 1.8446744073709551616e19
+              else Int64.to_float i in
             match target with Some (V.Dnum _) -> V.dnum f | _ -> V.num f) (take (abs x))
     | Some _ -> Error "ERR_ARGVALERR"
     | None -> (
@@ -313,7 +322,8 @@ let deliver ctx args target data =
        match arg ctx args "Data" with
        | Location (box, i, _) -> (
            match box.(i) with
-           | V.Array es -> String.iteri (fun k c -> if k < Array.length es then es.(k) <- V.num (float_of_int (Char.code c))) data
+           | V.Array es ->
+               String.iteri (fun k c -> if k < Array.length es then es.(k) <- V.num (float_of_int (Char.code c))) data
            | _ -> ())
        | _ -> ()));
   store ctx args "NoRecBytes" (V.num (float_of_int (String.length data)))
@@ -347,7 +357,10 @@ let call (ctx : context) name args =
       Some (
         let obj = Option.value (str ctx args "Object") ~default:"" in
         let path = match str ctx args "File" with
-          | Some f -> if obj <> "" && obj.[String.length obj - 1] <> ':' && obj.[String.length obj - 1] <> '/' then obj ^ "/" ^ f else obj ^ f
+          | Some f ->
+              if obj <> "" && obj.[String.length obj - 1] <> ':' && obj.[String.length obj - 1] <> '/' then
+                obj ^ "/" ^ f
+              else obj ^ f
           | None -> obj in
         (* Without \Read, \Write or \Append: \Write for a character file, \Append with \Bin
            (R-13-s). *)
@@ -439,7 +452,8 @@ let call (ctx : context) name args =
         | Some k when k >= 1 && k <= 80 ->
             let b = Bytes.create k in
             let got = try input ic b 0 k with Sys_error _ -> 0 in
-            let rec more got = if got < k then match input ic b got (k - got) with 0 -> got | n -> more (got + n) else got in
+            let rec more got =
+              if got < k then match input ic b got (k - got) with 0 -> got | n -> more (got + n) else got in
             let got = if got = 0 then 0 else more got in
             if got = 0 then ret (V.String "EOF") else ret (V.String (Bytes.sub_string b 0 got))
         | _ -> Failed "ERR_ARGVALERR")
@@ -488,7 +502,9 @@ let call (ctx : context) name args =
       Some (
         let _, fb, fn = raw ctx args "FromRawData" in
         let tid, tb, tn = raw ctx args "ToRawData" in
-        let* from = match integer (num ctx args "FromIndex") with Some k when k >= 1 && k <= fn -> Ok k | _ -> Error "ERR_OUTOFBND" in
+        let* from =
+          match integer (num ctx args "FromIndex") with
+          | Some k when k >= 1 && k <= fn -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* count = match integer (num ctx args "NoOfBytes") with
           | None when not (present ctx args "NoOfBytes") -> Ok (fn - from + 1)
           | Some k when k >= 1 && from + k - 1 <= fn -> Ok k
@@ -515,10 +531,13 @@ let call (ctx : context) name args =
   | "unpackrawbytes" ->
       Some (
         let _, b, n = raw ctx args "RawData" in
-        let* start = match integer (num ctx args "StartIndex") with Some k when k >= 1 && k <= n -> Ok k | _ -> Error "ERR_OUTOFBND" in
+        let* start =
+          match integer (num ctx args "StartIndex") with
+          | Some k when k >= 1 && k <= n -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* v = unpack ctx args b n start in
         match value ctx args "Value", v with
-        | Some (V.String _), V.String _ | Some (V.Num _), V.Num _ | Some (V.Dnum _), V.Dnum _ -> store ctx args "Value" v; done_
+        | Some (V.String _), V.String _ | Some (V.Num _), V.Num _ | Some (V.Dnum _), V.Dnum _ ->
+            store ctx args "Value" v; done_
         | Some (V.Dnum _), V.Num f -> store ctx args "Value" (V.dnum f); done_
         | _ -> Failed "ERR_ARGVALERR")
   (* ------------------------------------------------------------ sockets *)
@@ -603,9 +622,11 @@ let call (ctx : context) name args =
         | Error _ -> Failed "ERR_FILEACC"
         | Ok table -> Rapid_controller.Text_tables.install (S.texts (sv ())) table; done_)
   | "texttabfreetouse" ->
-      Some (ret (V.Bool (Rapid_controller.Text_tables.free_to_use (S.texts (sv ())) (Option.value (str ctx args "TableName") ~default:""))))
+      Some (ret (V.Bool (Rapid_controller.Text_tables.free_to_use (S.texts (sv ()))
+                           (Option.value (str ctx args "TableName") ~default:""))))
   | "texttabget" ->
-      Some (match Rapid_controller.Text_tables.find (S.texts (sv ())) (Option.value (str ctx args "TableName") ~default:"") with
+      Some (match Rapid_controller.Text_tables.find (S.texts (sv ()))
+                    (Option.value (str ctx args "TableName") ~default:"") with
           | Some n -> ret (V.num (float_of_int n))
           | None -> Failed "ERR_TXTNOEXIST")
   | "textget" ->

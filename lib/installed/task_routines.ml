@@ -55,7 +55,8 @@ let meet ~standstill ctx args ~instruction ~tasks ~in_pos ~timeout_error ~met =
         else
           Some (Wait { W.what = Printf.sprintf "the tasks %s at %s (%s)" (String.concat ", " tasks) point instruction;
                        satisfied; deadline; poll = None;
-                       finish = (fun ~timed_out -> if timed_out then Rapid_observable.Wait.error timeout_error else (met (); None)) })
+                       finish = (fun ~timed_out ->
+                           if timed_out then Rapid_observable.Wait.error timeout_error else (met (); None)) })
 
 let call ?(standstill = fun () -> neg_infinity) ctx name args =
   let w = ctx.world in
@@ -69,7 +70,8 @@ let call ?(standstill = fun () -> neg_infinity) ctx name args =
     if named_present ctx args "MecTaskNo" then begin
       let members = List.mapi (fun i n -> (i + 1, n)) (W.task_names w) in
       let motion_name = if W.motion_task w then W.task_name w else
-          (match List.find_opt (fun (_, n) -> n <> W.task_name w) members with Some (_, n) -> n | None -> W.task_name w) in
+          (match List.find_opt (fun (_, n) -> n <> W.task_name w) members with
+           | Some (_, n) -> n | None -> W.task_name w) in
       let number = match List.find_opt (fun (_, n) -> n = motion_name) members with Some (k, _) -> k | None -> 1 in
       named_store ctx args "MecTaskNo" (V.num (float_of_int number));
       Some (Returned (Some (V.String motion_name)))

@@ -27,7 +27,8 @@ let shared_persistents tasks =
       List.iter (fun (m : Ast.module_declaration) ->
           List.iter (fun (d : Ast.data_declaration) ->
               match d.it with
-              | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ } as id; _ } -> (
+              | Data_declaration
+                  { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ } as id; _ } -> (
                   let written = match data_type.it with Ident s -> s | ID_placeholder -> "" in
                   let text = type_text t id written in
                   let key = String.lowercase_ascii name in
@@ -36,7 +37,9 @@ let shared_persistents tasks =
                   | Some (text0, task0) when String.lowercase_ascii text0 <> String.lowercase_ascii text ->
                       (* ch. 14: persistents "以同样的名称和类型进行声明" (declared with the same name and type) share one value. *)
                       R.error report ~rule:"pers-one-type" ~section:"14" d.at
-                        (Printf.sprintf "the persistent %s is %s in task %s but %s here: a system-global persistent has one type in every task" name text0 task0 text)
+                        (Printf.sprintf "the persistent %s is %s in task %s but %s here: \
+                                         a system-global persistent has one type in every task"
+                           name text0 task0 text)
                   | Some _ -> ())
               | _ -> ()) m.data_declarations) t.modules) tasks;
   R.all report

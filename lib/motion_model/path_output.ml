@@ -68,16 +68,20 @@ let path_svg ?(title = "TCP path") p =
   (* For the ranges only, in no order: [@] and [List.map] overflowed the stack on long paths. *)
   let all = List.rev_append (List.rev_map (fun (s : Planner.segment_info) -> s.target) segs)
       ((Planner.pose_at p 0.).trans :: List.concat_map snd runs) in
-  let range f = List.fold_left (fun (lo, hi) q -> (Float.min lo (f q), Float.max hi (f q))) (infinity, neg_infinity) all in
+  let range f =
+    List.fold_left (fun (lo, hi) q -> (Float.min lo (f q), Float.max hi (f q))) (infinity, neg_infinity) all in
   let pad (lo, hi) = let m = Float.max 10. ((hi -. lo) *. 0.08) in (lo -. m, hi +. m) in
   let xr = pad (range (fun q -> q.x)) and yr = pad (range (fun q -> q.y)) and zr = pad (range (fun q -> q.z)) in
   let panel = 440. in
   let b = Buffer.create 65536 in
-  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">\n"
+  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" \
+                font-family=\"sans-serif\" font-size=\"12\">\n"
     (2. *. panel +. 120.) (panel +. 110.);
   buf_printf b "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n";
   buf_printf b "<text x=\"20\" y=\"24\" font-size=\"16\" font-weight=\"bold\">%s</text>\n" (esc title);
-  buf_printf b "<text x=\"20\" y=\"%.0f\" fill=\"#555\">blue: programmed segments (moving), orange: corner paths of fly-by points, dots: programmed points (filled: stop point, ring: fly-by)</text>\n" (panel +. 100.);
+  buf_printf b "<text x=\"20\" y=\"%.0f\" fill=\"#555\">blue: programmed segments (moving), \
+                orange: corner paths of fly-by points, \
+                dots: programmed points (filled: stop point, ring: fly-by)</text>\n" (panel +. 100.);
   (* One view: [h] and [v] pick the horizontal and vertical coordinates; equal scales. *)
   let view ox name hname vname h v hr vr =
     let span = Float.max (snd hr -. fst hr) (snd vr -. fst vr) in
@@ -86,7 +90,8 @@ let path_svg ?(title = "TCP path") p =
     let oy = 50. in
     let px q = ox +. 50. +. (panel -. 60.) /. 2. +. (h q -. hc) *. s in
     let py q = oy +. (panel -. 60.) /. 2. -. (v q -. vc) *. s in
-    buf_printf b "<g>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\" font-weight=\"bold\">%s</text>\n" (ox +. 50.) (oy -. 10.) name;
+    buf_printf b "<g>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\" font-weight=\"bold\">%s</text>\n"
+      (ox +. 50.) (oy -. 10.) name;
     buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#999\"/>\n"
       (ox +. 50.) oy (panel -. 60.) (panel -. 60.);
     let t = tick span in
@@ -95,14 +100,18 @@ let path_svg ?(title = "TCP path") p =
     let rec ticks a hi f = if a <= hi then (f a; ticks (a +. t) hi f) in
     ticks (first lo_h) (lo_h +. span) (fun a ->
         let x = ox +. 50. +. (a -. lo_h) *. s in
-        buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#eee\"/><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" fill=\"#555\">%g</text>\n"
+        buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#eee\"/>\
+                      <text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" fill=\"#555\">%g</text>\n"
           x oy x (oy +. panel -. 60.) x (oy +. panel -. 45.) a);
     ticks (first lo_v) (lo_v +. span) (fun a ->
         let y = oy +. panel -. 60. -. (a -. lo_v) *. s in
-        buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#eee\"/><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">%g</text>\n"
+        buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#eee\"/>\
+                      <text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">%g</text>\n"
           (ox +. 50.) y (ox +. panel -. 10.) y (ox +. 45.) (y +. 4.) a);
-    buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s (mm)</text>\n" (ox +. 50. +. (panel -. 60.) /. 2.) (oy +. panel -. 28.) hname;
-    buf_printf b "<text x=\"%.1f\" y=\"%.1f\" transform=\"rotate(-90 %.1f %.1f)\" text-anchor=\"middle\">%s (mm)</text>\n"
+    buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s (mm)</text>\n"
+      (ox +. 50. +. (panel -. 60.) /. 2.) (oy +. panel -. 28.) hname;
+    buf_printf b "<text x=\"%.1f\" y=\"%.1f\" transform=\"rotate(-90 %.1f %.1f)\" \
+                  text-anchor=\"middle\">%s (mm)</text>\n"
       (ox +. 12.) (oy +. (panel -. 60.) /. 2.) (ox +. 12.) (oy +. (panel -. 60.) /. 2.) vname;
     List.iter (fun (corner, pts) ->
         buf_printf b "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"%s\" points=\""
@@ -110,26 +119,30 @@ let path_svg ?(title = "TCP path") p =
         List.iter (fun q -> buf_printf b "%.2f,%.2f " (px q) (py q)) pts;
         Buffer.add_string b "\"/>\n") runs;
     let start = (Planner.pose_at p 0.).trans in
-    buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/><text x=\"%.1f\" y=\"%.1f\" fill=\"#333\">start</text>\n"
+    buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/>\
+                  <text x=\"%.1f\" y=\"%.1f\" fill=\"#333\">start</text>\n"
       (px start -. 4.) (py start -. 4.) (px start +. 7.) (py start +. 14.);
     (* Labels of points that fall together (a vertical move seen from above) are stacked. *)
     let placed = ref [] and named = Hashtbl.create 64 in
     let place x y w =
-      let rec go y = if List.exists (fun (x', y', w') -> Float.abs (y -. y') < 13. && x < x' +. w' && x' < x +. w) !placed
+      let rec go y =
+        if List.exists (fun (x', y', w') -> Float.abs (y -. y') < 13. && x < x' +. w' && x' < x +. w) !placed
         then go (y +. 14.) else y in
       let y = go y in
       placed := (x, y, w) :: !placed; y in
     List.iter (fun (sg : Planner.segment_info) ->
         let x = px sg.target and y = py sg.target in
         if sg.seg_fine then buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"#c0392b\"/>\n" x y
-        else buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"white\" stroke=\"#c0392b\" stroke-width=\"1.5\"/>\n" x y;
+        else buf_printf b "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"white\" stroke=\"#c0392b\" \
+                           stroke-width=\"1.5\"/>\n" x y;
         (* A point passed again with its name (a loop) is named once: stacking the same name
            at every pass was quadratic in the passes (and cubic to place). *)
         let key = (Float.round (x *. 10.), Float.round (y *. 10.), sg.seg_label) in
         if sg.seg_label <> "" && not (Hashtbl.mem named key) then
           let () = Hashtbl.replace named key () in
           let ly = place (x +. 6.) (y -. 6.) (7. *. float_of_int (String.length sg.seg_label)) in
-          buf_printf b "<text x=\"%.1f\" y=\"%.1f\" fill=\"#c0392b\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">%s</text>\n"
+          buf_printf b "<text x=\"%.1f\" y=\"%.1f\" fill=\"#c0392b\" stroke=\"white\" stroke-width=\"3\" \
+                        paint-order=\"stroke\">%s</text>\n"
             (x +. 6.) ly (esc sg.seg_label)) segs;
     Buffer.add_string b "</g>\n" in
   view 0. "Top view (x–y)" "x" "y" (fun q -> q.x) (fun q -> q.y) xr yr;
@@ -152,13 +165,15 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
   let sx t = left +. t /. tend *. (w -. left -. 30.) in
   let b = Buffer.create 65536 in
   let height = if program = [] then 330. else 440. in
-  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">\n" w height;
+  buf_printf b "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" \
+                font-family=\"sans-serif\" font-size=\"12\">\n" w height;
   buf_printf b "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n";
   buf_printf b "<text x=\"20\" y=\"24\" font-size=\"16\" font-weight=\"bold\">%s</text>\n" (esc title);
   buf_printf b "<text x=\"10\" y=\"75\">moves</text><text x=\"10\" y=\"175\">TCP speed</text>\n";
   let t = tick tend in
   let rec ticks a = if a <= tend +. 1e-9 then begin
-      buf_printf b "<line x1=\"%.1f\" y1=\"50\" x2=\"%.1f\" y2=\"290\" stroke=\"#eee\"/><text x=\"%.1f\" y=\"305\" text-anchor=\"middle\" fill=\"#555\">%g</text>\n"
+      buf_printf b "<line x1=\"%.1f\" y1=\"50\" x2=\"%.1f\" y2=\"290\" stroke=\"#eee\"/>\
+                    <text x=\"%.1f\" y=\"305\" text-anchor=\"middle\" fill=\"#555\">%g</text>\n"
         (sx a) (sx a) (sx a) a;
       ticks (a +. t) end in
   ticks 0.;
@@ -168,13 +183,16 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
       let fill, label = match i.kind with
         | Planner.Segment id ->
             let s = segs.(id) in
-            ("#1f5fbf", Printf.sprintf "%s %s" s.seg_kind (if s.seg_label = "" then "#" ^ string_of_int id else s.seg_label))
+            ("#1f5fbf",
+             Printf.sprintf "%s %s" s.seg_kind (if s.seg_label = "" then "#" ^ string_of_int id else s.seg_label))
         | Planner.Corner _ -> ("#e67e00", "")
         | Planner.Still -> ("#bbbbbb", "stop") in
-      buf_printf b "<rect x=\"%.2f\" y=\"55\" width=\"%.2f\" height=\"30\" fill=\"%s\" stroke=\"white\" stroke-width=\"0.5\"><title>%s %.3f–%.3f s</title></rect>\n"
+      buf_printf b "<rect x=\"%.2f\" y=\"55\" width=\"%.2f\" height=\"30\" fill=\"%s\" stroke=\"white\" \
+                    stroke-width=\"0.5\"><title>%s %.3f–%.3f s</title></rect>\n"
         x0 (Float.max 0.5 (x1 -. x0)) fill (esc label) i.t_from i.t_to;
       if label <> "" && x1 -. x0 > 7. *. float_of_int (String.length label) then
-        buf_printf b "<text x=\"%.1f\" y=\"74\" text-anchor=\"middle\" fill=\"white\">%s</text>\n" ((x0 +. x1) /. 2.) (esc label))
+        buf_printf b "<text x=\"%.1f\" y=\"74\" text-anchor=\"middle\" fill=\"white\">%s</text>\n"
+          ((x0 +. x1) /. 2.) (esc label))
     pieces;
   (* Each move's own piece and the corner after it, found once (a search of the pieces for every
      move was quadratic in the moves); the first, as a search from the start finds. *)
@@ -187,7 +205,8 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
   List.iter (fun (s : Planner.segment_info) ->
       if s.seg_fine then
         match Hashtbl.find_opt own_piece s.seg_id with
-        | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"48\" x2=\"%.1f\" y2=\"88\" stroke=\"#c0392b\" stroke-width=\"2\"/>\n"
+        | Some i -> buf_printf b "<line x1=\"%.1f\" y1=\"48\" x2=\"%.1f\" y2=\"88\" stroke=\"#c0392b\" \
+                                 stroke-width=\"2\"/>\n"
                       (sx i.t_to) (sx i.t_to)
         | None -> ()) (Array.to_list segs);
   (* Each programmed point under the time it is passed: the end of its segment at a stop point,
@@ -208,12 +227,16 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
           while !row < 2 && x -. w /. 2. < rows.(!row) +. 4. do incr row done;
           rows.(!row) <- x +. w /. 2.;
           let y = 100. +. 12. *. float_of_int !row in
-          buf_printf b "<line x1=\"%.1f\" y1=\"85\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" stroke-width=\"0.5\"/><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" fill=\"#333\">%s</text>\n"
+          buf_printf b "<line x1=\"%.1f\" y1=\"85\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" stroke-width=\"0.5\"/>\
+                        <text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" fill=\"#333\">%s</text>\n"
             x x (y -. 9.) x y (esc name)) segs;
-  buf_printf b "<g font-size=\"11\"><rect x=\"300\" y=\"12\" width=\"12\" height=\"10\" fill=\"#1f5fbf\"/><text x=\"316\" y=\"21\">move</text>\
-<rect x=\"360\" y=\"12\" width=\"12\" height=\"10\" fill=\"#e67e00\"/><text x=\"376\" y=\"21\">corner path (fly-by point)</text>\
+  buf_printf b "<g font-size=\"11\"><rect x=\"300\" y=\"12\" width=\"12\" height=\"10\" fill=\"#1f5fbf\"/>\
+<text x=\"316\" y=\"21\">move</text>\
+<rect x=\"360\" y=\"12\" width=\"12\" height=\"10\" fill=\"#e67e00\"/>\
+<text x=\"376\" y=\"21\">corner path (fly-by point)</text>\
 <rect x=\"530\" y=\"12\" width=\"12\" height=\"10\" fill=\"#bbbbbb\"/><text x=\"546\" y=\"21\">standing still</text>\
-<line x1=\"640\" y1=\"10\" x2=\"640\" y2=\"24\" stroke=\"#c0392b\" stroke-width=\"2\"/><text x=\"646\" y=\"21\">stop point (fine)</text>\
+<line x1=\"640\" y1=\"10\" x2=\"640\" y2=\"24\" stroke=\"#c0392b\" stroke-width=\"2\"/>\
+<text x=\"646\" y=\"21\">stop point (fine)</text>\
 <text x=\"760\" y=\"21\" fill=\"#333\">names: programmed points</text></g>\n";
   (* TCP speed by differences of positions. *)
   let n = 600 in
@@ -223,8 +246,10 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
       distance (Planner.pose_at p t0).trans (Planner.pose_at p (t0 +. dt)).trans /. dt) in
   let vmax = Array.fold_left Float.max 1. speeds in
   let top = 140. and h = 140. in
-  buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#999\"/>\n" left (top +. h) (w -. 30.) (top +. h);
-  buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">%.0f mm/s</text><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">0</text>\n"
+  buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#999\"/>\n"
+    left (top +. h) (w -. 30.) (top +. h);
+  buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">%.0f mm/s</text>\
+                <text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#555\">0</text>\n"
     (left -. 4.) (top +. 4.) vmax (left -. 4.) (top +. h);
   buf_printf b "<polyline fill=\"none\" stroke=\"#1f8f4f\" stroke-width=\"1.5\" points=\"";
   Array.iteri (fun k v ->
@@ -242,17 +267,22 @@ let timeline_svg ?(title = "Motion timeline") ?(program = []) p =
         let x0 = sx m.m_from and x1 = sx m.m_to in
         match m.lane with
         | Signals ->
-            buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#8e44ad\" stroke-width=\"1.5\"><title>%s %.6f s</title></line>\n"
+            buf_printf b "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#8e44ad\" \
+                          stroke-width=\"1.5\"><title>%s %.6f s</title></line>\n"
               x0 y x0 (y +. 20.) (esc m.m_label) m.m_from;
             if x0 > !free then begin
-              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s</text>\n" (x0 +. 2.) (y +. 10.) (esc m.m_label);
+              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s</text>\n"
+                (x0 +. 2.) (y +. 10.) (esc m.m_label);
               free := x0 +. 6. *. float_of_int (String.length m.m_label) +. 6.
             end
         | Waits | Traps ->
-            buf_printf b "<rect x=\"%.2f\" y=\"%.1f\" width=\"%.2f\" height=\"20\" fill=\"%s\"><title>%s %.6f–%.6f s</title></rect>\n"
-              x0 y (Float.max 1. (x1 -. x0)) (if m.lane = Waits then "#7f8c8d" else "#c0392b") (esc m.m_label) m.m_from m.m_to;
+            buf_printf b "<rect x=\"%.2f\" y=\"%.1f\" width=\"%.2f\" height=\"20\" fill=\"%s\">\
+                          <title>%s %.6f–%.6f s</title></rect>\n"
+              x0 y (Float.max 1. (x1 -. x0)) (if m.lane = Waits then "#7f8c8d" else "#c0392b")
+              (esc m.m_label) m.m_from m.m_to;
             if x1 -. x0 > 6.5 *. float_of_int (String.length m.m_label) then
-              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" fill=\"white\">%s</text>\n"
+              buf_printf b "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"10\" \
+                            fill=\"white\">%s</text>\n"
                 ((x0 +. x1) /. 2.) (y +. 14.) (esc m.m_label)) program
   end;
   Buffer.add_string b "</svg>\n";

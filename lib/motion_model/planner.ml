@@ -457,7 +457,8 @@ let plan t ~now m =
   in
   let t_end = sg.f.t_start +. sg.f.duration in
   let idx = Vec.stop t.cur.pieces in
-  push_piece t { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
+  push_piece t
+    { tm = { t0 = sg.f.t_start +. own_from *. sg.f.duration; t1 = t_end; p0 = own_from; p1 = 1. }; shape = Part sg };
   let arrive_ready =
     match m.inpos with
     | None -> t_end
@@ -470,7 +471,8 @@ let plan t ~now m =
     if m.conc then Float.max now_p motion_from
     else if sg.fine then arrive_ready
     else
-      let fmax = side_fraction ~ext:(ext_of sg.f sg.f) ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
+      let fmax =
+        side_fraction ~ext:(ext_of sg.f sg.f) ~length:sg.f.length ~angle:sg.f.angle sg.f.zone_tcp sg.f.zone_ori in
       Float.max now_p (sg.f.t_start +. (1. -. fmax) *. sg.f.duration -. t.settings.look_ahead)
   in
   t.cur.end_joints <- sg.q_end;
@@ -674,7 +676,8 @@ let segment_spans t ids =
           if id <= runmin then
             match Hashtbl.find_opt spans id with
             | Some (lo, hi) ->
-                let ends_here = match pc.shape with Part _ -> true | Blend b -> b.b.id = id | Joint_blend b -> b.b.id = id in
+                let ends_here =
+                  match pc.shape with Part _ -> true | Blend b -> b.b.id = id | Joint_blend b -> b.b.id = id in
                 let hi = if ends_here then Float.max hi pc.tm.t1 else Float.max hi pc.tm.t0 in
                 Hashtbl.replace spans id (Float.min lo pc.tm.t0, hi)
             | None -> ()) (List.sort_uniq compare pids);

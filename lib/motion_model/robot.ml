@@ -91,7 +91,8 @@ let external_axis ln known rest =
   match rest with
   | [] -> raise (Bad (ln, 1, "external: expected NAME linear|rotating MIN MAX SPEED [track DX DY DZ]"))
   | (nc, n) :: rest ->
-      let index = match Array.to_list Ext_axes.names |> List.mapi (fun i x -> (i, x)) |> List.find_opt (fun (_, x) -> x = n) with
+      let index =
+        match Array.to_list Ext_axes.names |> List.mapi (fun i x -> (i, x)) |> List.find_opt (fun (_, x) -> x = n) with
         | Some (i, _) -> i
         | None -> raise (Bad (ln, nc, Printf.sprintf "external axis name must be eax_a to eax_f, found %S" n)) in
       if List.exists (fun (a : Ext_axes.axis) -> a.index = index) known then
@@ -123,7 +124,8 @@ let external_axis ln known rest =
             raise (Bad (ln, tc, Printf.sprintf "%s: only a linear axis can be a track" n))
         | Some (tc, dir) ->
             if List.length dir <> 3 then
-              raise (Bad (ln, tc, Printf.sprintf "%s: track: expected 3 numbers (a direction DX DY DZ), found %d" n (List.length dir)));
+              raise (Bad (ln, tc, Printf.sprintf "%s: track: expected 3 numbers (a direction DX DY DZ), found %d"
+                                    n (List.length dir)));
             let d = List.map (fun w ->
                 let v = number ln w (n ^ " track") in
                 within ln w (n ^ " track") ~low:(-. max_length) ~high:max_length ~unit:"(a direction)" v; v) dir in
@@ -199,7 +201,8 @@ let parse ~file text =
             let min = limit 4 in let max = limit 5 in
             let ax = { a; alpha; d; offset; min; max; speed = get 6 } in
             if ax.min >= ax.max then
-              raise (Bad (ln, fst (List.nth rest 4), Printf.sprintf "axis %d: range min %g is not below max %g" k ax.min ax.max));
+              raise (Bad (ln, fst (List.nth rest 4),
+                          Printf.sprintf "axis %d: range min %g is not below max %g" k ax.min ax.max));
             let ax = { ax with speed = speed ln (word 6) (what 6) ~unit:"degrees/s"
                                    ~positive:(Printf.sprintf "axis %d: speed must be positive" k) ax.speed } in
             axes.(k - 1) <- Some ax;

@@ -10,7 +10,8 @@ type t =
 
 let to_string = function
   | Segment_planned { time; id; instruction; label; zone; target; ready_time; start_time; end_time; _ } ->
-      Printf.sprintf "%.6f s: move %d planned: %s %s %s to [%.2f,%.2f,%.2f], from %.6f s to %.6f s, program pointer at %.6f s"
+      Printf.sprintf "%.6f s: move %d planned: %s %s %s to [%.2f,%.2f,%.2f], from %.6f s to %.6f s, \
+                      program pointer at %.6f s"
         time id instruction label zone target.trans.x target.trans.y target.trans.z start_time end_time ready_time
   | Segment_started { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) begins" time id label
   | Segment_ended { time; id; label } -> Printf.sprintf "%.6f s: move %d (%s) ends" time id label

@@ -43,7 +43,8 @@ let global_number ctx region = index ctx.global_index (Option.map snd ctx.instal
 let rec name_path (p : Ir.place) =
   match p with
   | Whole s -> Some (s, [])
-  | Element (q, idx) -> Option.map (fun (s, path) -> (s, path @ List.init (Array.length idx) (fun _ -> -1))) (name_path q)
+  | Element (q, idx) ->
+      Option.map (fun (s, path) -> (s, path @ List.init (Array.length idx) (fun _ -> -1))) (name_path q)
   | Component (q, k) -> Option.map (fun (s, path) -> (s, path @ [ k ])) (name_path q)
   | Unresolved _ -> None
 
@@ -489,8 +490,10 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
       | Some r ->
           (* §9.4: the routines of a NOSTEPIN module (and of a NOVIEW one, R-9.4-a) are below the
              user level (§7.3). *)
-          let r = { r with nostepin = (not inst) && List.exists (fun (a : A.module_attribute) -> a.it = A.NOSTEPIN || a.it = A.NOVIEW)
-                                         m.A.attributes } in
+          let r = { r with nostepin =
+                             (not inst)
+                             && List.exists (fun (a : A.module_attribute) -> a.it = A.NOSTEPIN || a.it = A.NOVIEW)
+                                  m.A.attributes } in
           local_names := Array.init r.locals (fun s ->
               Option.value (Hashtbl.find_opt ctx.slot_names s) ~default:"?") :: !local_names;
           r
@@ -511,7 +514,8 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
       go 0) [ "ERRNO"; "INTNO" ] in
   let entry_points = List.filter_map (fun x -> x)
       (Array.to_list (Array.mapi (fun i (r : Ir.routine) ->
-           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then Some (r.name, routine_base + i)
+           if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then
+             Some (r.name, routine_base + i)
            else None) routines)) in
   { part_routines = routines; part_globals = globals; part_decls = global_decls;
     part_local_names = Array.of_list (List.rev !local_names);

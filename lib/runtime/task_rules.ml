@@ -43,7 +43,8 @@ let every_task_waits (clock : Host.t) waits =
       let waiting = List.map (fun (name, what, _) ->
           match what with Some what -> name ^ " for " ^ what | None -> name) waits in
       Some (Outcome.Deadlock (Printf.sprintf
-                          "deadlock at %g s: every task waits (%s), and nothing can end the waits (no stimulus event left, no interrupt to come)"
+                          "deadlock at %g s: every task waits (%s), and nothing can end the waits \
+                           (no stimulus event left, no interrupt to come)"
                           (clock.now ()) (String.concat "; " waiting)))
   | t :: _ when t > clock.max_time -> Some (Outcome.time_limit clock.max_time)
   | t :: _ -> clock.advance_to t; None

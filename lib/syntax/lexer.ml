@@ -395,7 +395,10 @@ let rec header_lines lx start acc =
   | Star (' ' | '\t'), "%%%", Star (' ' | '\t'), (newline | eof) -> List.rev acc
   | Star (Compl ('\n' | '\r')), newline ->
       let line = text_of lx in
-      let line = String.sub line 0 (String.length line - (if String.length line >= 2 && String.sub line (String.length line - 2) 2 = "\r\n" then 2 else 1)) in
+      let line =
+        String.sub line 0
+          (String.length line
+           - (if String.length line >= 2 && String.sub line (String.length line - 2) 2 = "\r\n" then 2 else 1)) in
       header_lines lx start (line :: acc)
   | _ ->
       let stop, _ = Sedlexing.loc buf in

@@ -223,8 +223,12 @@ and assign_checked env (target : Ast.data_reference) (e : Ast.expression) =
     | VAR_placeholder -> Error "ERR_EXECPHR: a placeholder is no place (§2.9)" in
   let* root, steps = path target in
   let* datum = env root in
-  let* write = match datum.write with Some w -> Ok w | None -> Error (root ^ " is read-only: a constant, a loop variable or a system variable (§4.5)") in
-  let* whole = match datum.value with Some w -> Ok w | None -> Error (root ^ " is an absent optional parameter (ERR_NOTPRES, §5.2)") in
+  let* write = match datum.write with
+    | Some w -> Ok w
+    | None -> Error (root ^ " is read-only: a constant, a loop variable or a system variable (§4.5)") in
+  let* whole = match datum.value with
+    | Some w -> Ok w
+    | None -> Error (root ^ " is an absent optional parameter (ERR_NOTPRES, §5.2)") in
   match steps with
   | [] -> let* v = fit whole v in if write v then Ok v else Error (root ^ " cannot be written")
   | _ ->
@@ -242,7 +246,8 @@ and assign_checked env (target : Ast.data_reference) (e : Ast.expression) =
                   let* i = eval env ix in
                   let* i = to_index i in
                   let* y = index_into x i in
-                  (match x.v with Value.Array es -> go y (Some (es, i - 1)) rest | _ -> Error "only an array has elements (§3.6)") in
+                  (match x.v with
+                   | Value.Array es -> go y (Some (es, i - 1)) rest | _ -> Error "only an array has elements (§3.6)") in
             go x None ixs in
       let rec walk (x : typed) slot = function
         | [] -> Ok slot

@@ -12,7 +12,8 @@ let inside (outer : Source.region) (r : Source.region) =
   && Source.start_offset outer <= Source.start_offset r && Source.stop_offset r <= Source.stop_offset outer
 
 let writable (d : E.data_object) =
-  match d.d_kind with Variable | Persistent | Parameter _ -> true | Constant | Loop_variable | Read_only_variable -> false
+  match d.d_kind with
+  | Variable | Persistent | Parameter _ -> true | Constant | Loop_variable | Read_only_variable -> false
 
 let type_of modules =
   let objects =

@@ -94,7 +94,8 @@ let visible s = not (s.hidden (M.current_routine s.cfg).module_name)
 let run_until s stop =
   let rec go first =
     match M.outcome s.cfg with
-    | Outcome.Running when M.steps s.cfg >= s.max_steps -> s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
+    | Outcome.Running when M.steps s.cfg >= s.max_steps ->
+        s.out (Printf.sprintf "the step limit (%d) is exhausted" s.max_steps)
     | Outcome.Running ->
         if (not first) && M.pointer_statement s.cfg <> None && visible s && stop () then ()
         else begin
@@ -353,4 +354,7 @@ let command s line =
   | "print" | "p" -> if running s then print_ s rest; `Go_on
   | "set" -> if running s then set_ s rest; `Go_on
   | "where" -> if running s then where s; `Go_on
-  | _ -> s.out (Printf.sprintf "unknown command %S (step, next, finish, back, continue, break, delete, print, set, where, quit)" verb); `Go_on
+  | _ ->
+      s.out (Printf.sprintf "unknown command %S \
+                             (step, next, finish, back, continue, break, delete, print, set, where, quit)" verb);
+      `Go_on

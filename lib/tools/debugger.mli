@@ -12,12 +12,12 @@ val create :
 (** A session on a machine just started: it runs to the first statement of the entry routine
     and prints where the program pointer is. [max_steps] bounds the reduction steps of the whole
     session (default 100,000,000). [hidden] tells the modules the program pointer does not stop
-    in, by name: the NOSTEPIN and NOVIEW modules (§9.2, §9.4); their routines run as one step. [routine_data] names a routine's data declarations in order
-    (the lowered program keeps no names for them), for print and set. [type_of] gives a name's
-    declared type in a routine's scope and whether it may be written (not a constant, loop
-    variable or system variable), for components and for set. [files] are the task's files, as
-    named on the command line, where [break] may set a breakpoint (default: every file of the
-    program's routines). *)
+    in, by name: the NOSTEPIN and NOVIEW modules (§9.2, §9.4); their routines run as one step.
+    [routine_data] names a routine's data declarations in order (the lowered program keeps no
+    names for them), for print and set. [type_of] gives a name's declared type in a routine's
+    scope and whether it may be written (not a constant, loop variable or system variable), for
+    components and for set. [files] are the task's files, as named on the command line, where
+    [break] may set a breakpoint (default: every file of the program's routines). *)
 
 val command : t -> string -> [ `Go_on | `Quit ]
 (** Runs one command line (doc/debugger.md) and prints what it does. An unknown or malformed

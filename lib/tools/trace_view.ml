@@ -74,7 +74,8 @@ let text_with ?(limit = 72) t r (subs : (Source.region * string) list) =
       else begin
         let subs = List.filter_map (fun (q, text) ->
             let qa = clamp (Source.start_offset q) and qb = clamp (Source.stop_offset q) in
-            if Source.file_of q == Source.file_of r && qa >= a && qb <= b && qb > qa then Some (qa, qb, text) else None) subs in
+            if Source.file_of q == Source.file_of r && qa >= a && qb <= b && qb > qa then Some (qa, qb, text) else None)
+            subs in
         let subs = List.sort (fun (a1, b1, _) (a2, b2, _) -> if a1 <> a2 then compare a1 a2 else compare b2 b1) subs in
         let buf = Buffer.create 64 in
         let bytes i j = String.sub src.text src.byte_of_char.(i) (src.byte_of_char.(j) - src.byte_of_char.(i)) in
@@ -117,7 +118,8 @@ let place_text t program ri (p : Ir.place) =
     | Element (q, idx) ->
         Option.map (fun (s, path, text) ->
             (s, path @ List.init (Array.length idx) (fun _ -> -1),
-             text ^ "{" ^ String.concat "," (Array.to_list (Array.map (fun (e : Ir.expr) -> source_text t e.at) idx)) ^ "}"))
+             text ^ "{" ^ String.concat "," (Array.to_list (Array.map (fun (e : Ir.expr) -> source_text t e.at) idx))
+             ^ "}"))
           (go q)
     | Component (q, k) ->
         Option.map (fun (s, path, text) -> (s, path @ [ k ], text ^ "." ^ component_name program ri s path k)) (go q)
@@ -247,7 +249,9 @@ let before t cfg =
         members.(i) <- v;
         let all = Array.length acc = i + 1 in
         let text = "[" ^ String.concat "," (Array.to_list (Array.map value members)) ^ (if all then "]" else ",...]") in
-        (text, if all then Some (value (match kind with Record_value -> V.Record members | Array_value -> V.Array members)) else None)
+        (text,
+         if all then Some (value (match kind with Record_value -> V.Record members | Array_value -> V.Array members))
+         else None)
     | Value v, Store (l, _) -> (location_text cfg l ^ " := " ^ value v, None)
     | Value v, Condition _ -> (value v, None)
     | Value v, For_bound (_, bounds) ->
@@ -260,7 +264,8 @@ let before t cfg =
     | Value v, Late_name -> ("% " ^ value v ^ " %", None)
     | Value v, Element_index (l, i, n, read) ->
         let element = match M.location_value l, v with
-          | (Array es, (Num k | Dnum k)) when read && i = n - 1 && Float.is_integer k && k >= 1. && k <= float_of_int (Array.length es) ->
+          | (Array es, (Num k | Dnum k))
+            when read && i = n - 1 && Float.is_integer k && k >= 1. && k <= float_of_int (Array.length es) ->
               Some (value es.(int_of_float k - 1))
           | _ -> None in
         (location_text cfg l ^ "{" ^ value v ^ "}", element)
@@ -326,7 +331,8 @@ let event_change (e : Event.t) =
   | Undo_run r -> Undo_run r
   | Task_ended -> Task_ended
   | Observed (Stored { place; value }) -> Write { place; value }
-  | (Controller _ | Trap_entered _ | Trap_left _ | Stubbed _ | Motion _ | Event_log _ | Observed _) as e -> Controller_event e
+  | (Controller _ | Trap_entered _ | Trap_left _ | Stubbed _ | Motion _ | Event_log _ | Observed _) as e ->
+      Controller_event e
 
 let after t (b : before) cfg (rule, events) =
   ignore t;
@@ -346,7 +352,8 @@ let after t (b : before) cfg (rule, events) =
     | ("for-enter" | "for-step"), _, (For_bound (f, _) | For_body f) -> (None, write_slot (Local f.variable))
     | "for-empty", _, _ -> (Some "no iteration", [])
     | "for-done", _, _ -> (Some "the loop ends", [])
-    | "connect-allocate", Location l, _ -> (None, [ Write { place = location_text cfg l; value = value (M.location_value l) } ])
+    | "connect-allocate", Location l, _ ->
+        (None, [ Write { place = location_text cfg l; value = value (M.location_value l) } ])
     | ("if-true" | "compact-if-true"), _, _ -> (Some "THEN", [])
     | "if-false", _, _ -> (Some "ELSE", [])
     | "compact-if-false", _, _ -> (Some "skipped", [])
@@ -399,7 +406,9 @@ let after t (b : before) cfg (rule, events) =
   let statement = match b.focus with Statement s -> Some s | _ -> None in
   (* An interrupt is served where the program pointer is (ch. 8): the step says which, and
      which trap runs, rather than the frame it was served at. *)
-  let redex, result = match rule, List.find_map (function Event.Trap_entered { number; trap; _ } -> Some (number, trap) | _ -> None) events with
+  let redex, result =
+    match rule, List.find_map (function Event.Trap_entered { number; trap; _ } -> Some (number, trap) | _ -> None)
+                  events with
     | "interrupt-serve", Some (number, trap) ->
         (Printf.sprintf "interrupt %d" number, Some ("the trap " ^ trap ^ " runs"))
     | _ -> (b.b_redex, result) in

@@ -570,7 +570,8 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
                      (T.to_string t) p.p_name (mode_name mode)
                | _ -> ());
               if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
-                error ctx ~rule:"equal-types" ~section:sections arg.at "expected a value of type %s for the parameter %s, found %s"
+                error ctx ~rule:"equal-types" ~section:sections arg.at
+                  "expected a value of type %s for the parameter %s, found %s"
                   (T.to_string ptype) p.p_name (T.to_string t)
           | Some _ -> ()
           | None -> if kind = Arg_other_expression && mode = Mode_ref then ignore (infer ctx place e)))
@@ -638,7 +639,8 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                       match matches b with
                       | Some q when b.it <> ARG_placeholder ->
                           (match b.it with
-                           | Conditional_argument _ when (match a.it with Conditional_argument _ -> true | _ -> false) ->
+                           | Conditional_argument _
+                             when (match a.it with Conditional_argument _ -> true | _ -> false) ->
                                (* §3.11: several conditional arguments may serve mutually
                                   exclusive parameters; at most one is present when it runs. *)
                                optional_argument ~call ctx place b q;
@@ -752,7 +754,8 @@ and function_call ctx place region (call : function_call) : ty =
           error ctx ~rule:"function-call" ~section:"3.11" call.func.at "%s is a %s, not a function" name
             (Env.obj_kind_name o);
           Unknown
-      | None -> unknown_name ctx place call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
+      | None ->
+          unknown_name ctx place call.func.at "function" name; loose_arguments ctx place (call_arguments call); Unknown)
 
 and loose_arguments ctx place (args : argument array) =
   Array.iter (fun (a : argument) ->
@@ -1255,7 +1258,8 @@ let parameter_declaration ctx place ~optional (p : parameter_declaration) : Env.
       | None -> None
       | Some n ->
           let p_type = match base, dims with
-            | Some b, Some d when value_size_allowed ctx data_type.at ("the type " ^ T.name b) { T.base = b; dims = Scalar } ->
+            | Some b, Some d
+              when value_size_allowed ctx data_type.at ("the type " ^ T.name b) { T.base = b; dims = Scalar } ->
                 Some { T.base = b; dims = d }
             | _ -> Some unknown_object_type in
           Some { p_name = n; p_mode = mode; p_type; p_region = name.at })
@@ -1674,8 +1678,9 @@ let check_installed options installed =
 
 (* The environment after the first half, for a task's second half. The second half adds
    nothing to the installed level's table, nor to the installed modules' own tables (it registers
-   user objects in the globals), so those are shared; the tables it adds to are copied, and the task's elaboration keeps its own nodes apart
-   from the installed modules' ones (Elaboration.installed). *)
+   user objects in the globals), so those are shared; the tables it adds to are copied, and the
+   task's elaboration keeps its own nodes apart from the installed modules' ones
+   (Elaboration.installed). *)
 let copy_ctx report ctx =
   { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
              elab = Elaboration.create ~installed:ctx.elab ();

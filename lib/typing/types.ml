@@ -89,7 +89,8 @@ let value_size { base; dims } =
 let same_data_type a b =
   match a, b with
   | Num, Num | Dnum, Dnum | Bool, Bool | String, String | Anytype, Anytype -> true
-  | Installed_atomic x, Installed_atomic y -> String.lowercase_ascii x.atomic_name = String.lowercase_ascii y.atomic_name
+  | Installed_atomic x, Installed_atomic y ->
+      String.lowercase_ascii x.atomic_name = String.lowercase_ascii y.atomic_name
   | Record x, Record y -> x.record_id = y.record_id
   | (Num | Dnum | Bool | String | Anytype | Installed_atomic _ | Record _), _ -> false
 
