@@ -1594,7 +1594,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let n = int_of_float x in
           let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
           emit_raised st e;
-          raise (Raised e)
+          (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves the
+             routine, as RAISE; makes the error in hand leave it (rule raise-new). *)
+          if Option.is_some a.ext.current then raise (Leaving e) else raise (Raised e)
         else fail st ~at "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->

@@ -1422,8 +1422,18 @@ let value_step cfg v =
       match num_of v with
       | Some f -> (
           match to_int f with
-          | Some n when (n >= 1 && n <= 90) || cfg.host.booked n ->
-              cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); ("raise", [])
+          | Some n when (n >= 1 && n <= 90) || cfg.host.booked n -> (
+              let e = error_of_number cfg n (region_of_focus_stmt cfg) in
+              match cfg.act.handling, cfg.act.caller with
+              | In_handler _, None ->
+                  (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves
+                     the routine, as RAISE; makes the error in hand leave it (raise-again). *)
+                  let rule, events = stop cfg e "raise-new-unhandled" in
+                  (rule, Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
+              | In_handler _, Some _ ->
+                  cfg.focus <- F_search (e, cfg.act.recovery_up);
+                  ("raise-new", [ Error_raised { name = e.name; number = e.number; at = e.err_at } ])
+              | _ -> cfg.focus <- F_raise e; ("raise", []))
           | _ -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
       | None -> raise_ cfg "ERR_ILLRAISE"; ("raise-illegal", []))
   | K_late_name (args, at) :: rest -> (
@@ -1816,7 +1826,7 @@ let rule_names = [
   "while-again"; "for"; "for-enter"; "for-empty"; "for-step"; "for-done"; "test";
   "test-subject"; "test-next"; "test-match"; "test-default"; "connect"; "connect-allocate";
   "connect-again"; "exit"; "raise-number"; "raise"; "raise-illegal"; "raise-again";
-  "raise-again-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
+  "raise-again-unhandled"; "raise-new"; "raise-new-unhandled"; "raise-handle"; "raise-in-handler"; "raise-unhandled";
   "raise-propagate"; "longjump-search-start"; "longjump-search"; "longjump-found"; "abandon";
   "abandon-entry"; "undo-run"; "undo-done"; "undo-done-entry"; "retry"; "retry-limit"; "trynext"; "handler-end";
   "read-place"; "read"; "read-signal"; "place-absent"; "place-unknown";
