@@ -351,8 +351,10 @@ and unary_error ctx e op ta =
 (* §3.12: the operator table, row by row. A numeric literal operand takes the type of the other
    operand where that is num or dnum. *)
 and binary ctx place e op a b =
+  let is_aggregate (x : expression) = match x.it with Aggregate _ -> true | _ -> false in
   match op with
   | Equal | Not_equal -> equality ctx place e op a b
+  | _ when is_aggregate a <> is_aggregate b -> aggregate_operand ctx place e op a b
   | _ ->
       let ta = infer ctx place a and tb = infer ctx place b in
       if ta = Unknown || tb = Unknown then Unknown
@@ -374,6 +376,40 @@ and binary ctx place e op a b =
             | None -> binary_error ctx e op ta tb)
         | _ -> binary_error ctx e op ta tb
       end
+
+(* §3.10, R-3.10-operand1: an aggregate operand of an operator other than = and <> has the type
+   the operator table leaves it, given the other operand's type: the one row whose other operand
+   is that type and whose operand in the aggregate's place is a record (pos or orient; an
+   aggregate is no scalar, and arrays are operands of = and <> only). p.rot * [0,0,0,1] is an
+   orient, pos + [1,2,3] a pos, 2 * [1,2,3] a pos. No such row: no context gives the type. *)
+and aggregate_operand ctx place e op a b =
+  let aggregate_left = match a.it with Aggregate _ -> true | _ -> false in
+  let agg, other = if aggregate_left then (a, b) else (b, a) in
+  match infer ctx place other with
+  | Unknown -> loosely_expression ctx place agg; Unknown
+  | t_other ->
+      let other_operands = match t_other with
+        | Numeric_literal -> [ Tables.O_num; Tables.O_dnum ]
+        | t -> Option.to_list (operand_of ctx t) in
+      let record_operand (o : Tables.operand) = o = O_pos || o = O_orient in
+      let rows = List.filter (fun (row : Tables.binary_row) ->
+          let mine, theirs = if aggregate_left then (row.left, row.right) else (row.right, row.left) in
+          row.op = op && record_operand mine && List.mem theirs other_operands) Tables.binary_operators in
+      match rows with
+      | [ row ] -> (
+          let mine = if aggregate_left then row.left else row.right in
+          match type_of_operand ctx mine with
+          | Known t ->
+              check_expression ~sections:"3.12" ctx place agg t;
+              Hashtbl.replace ctx.elab.binary e.at row;
+              type_of_operand ctx row.result
+          | Numeric_literal | Unknown -> Unknown)
+      | _ ->
+          error ctx ~rule:"aggregate-context" ~section:"3.10" agg.at
+            "the data type of this aggregate cannot be determined by its context: no row of the \
+             operator %s takes an aggregate (a pos or orient) with %s" (Tables.operator_symbol op)
+            (type_string t_other);
+          Unknown
 
 and binary_error ctx e op ta tb =
   error ctx ~rule:"operator-types" ~section:"3.12" e.at "the operator %s cannot be applied to %s and %s"
