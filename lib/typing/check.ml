@@ -269,6 +269,9 @@ let rec reference ctx place (r : data_reference) : reference =
       match whole.rtype with
       | Known { base = Record rt; dims = Scalar } -> (
           match T.component rt comp.it with
+          | Some t when t == unknown_type ->
+              (* R-2.14-unknown1: not judged; left unresolved, reaching it is ERR_REFUNKDAT. *)
+              { whole with rtype = Unknown }
           | Some t ->
               let rec index i = function
                 | [] -> i | (n, _) :: rest -> if T.same_name n comp.it then i else index (i + 1) rest in
@@ -481,6 +484,7 @@ and equality ctx place e op a b =
    initial values, arguments, RETURN, test values, aggregate members. *)
 and check_expression ?(sections = "2.17") ctx place (e : expression) (expected : T.object_type) =
   match e.it with
+  | _ when is_unknown expected -> loosely_expression ctx place e
   | Aggregate (es, rs) -> aggregate ~sections ctx place e (members es rs) expected
   | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
     when is_scalar expected && expected.base = Dnum -> (
@@ -1539,7 +1543,11 @@ let type_definitions ctx infos =
                         match resolve_type ctx place t with
                         | Some T.Anytype -> None
                         | Some ty -> Some (cn, ty)
-                        | None -> None
+                        | None ->
+                            (* R-2.14-unknown1: a component whose type is unknown (reported: an
+                               error, or a warning under --allow-unknown) stays a component, of
+                               unknown type: its uses are not judged, as an object's would not be. *)
+                            Some (cn, unknown_type)
                       end)) components
       | `Alias _ -> ()) pending;
   (* A record that contains itself, directly or through other records, has no finite value
