@@ -737,6 +737,7 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
         let l = location place kind and bound = effective_kind caller place kind in
         match p.p_mode with
         | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
+        | Mode_pers when Late_binding.unresolved place -> l   (* ERR_REFUNKDAT (R-5.2-unknown1) *)
         | Mode_pers -> fun a -> (match bound a with
             | Ref_variable | Ref_other -> fail st ~at "ERR_ARGNOTPER" | _ -> l a)
         | _ -> l

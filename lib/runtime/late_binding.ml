@@ -41,6 +41,12 @@ let aggregate_shape (p : Ir.parameter) =
       match Value.shape_of_type t with s -> Some s | exception Invalid_argument _ -> None)
   | _ -> None
 
+(* A place whose name is neither declared nor installed (--allow-unknown). *)
+let rec unresolved : Ir.place -> bool = function
+  | Unresolved _ -> true
+  | Element (p, _) | Component (p, _) -> unresolved p
+  | Whole _ -> false
+
 let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
   let n = Array.length r.parameters in
   let bound = Array.make n Ir.Absent in
@@ -92,6 +98,11 @@ let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
             | None -> access "ERR_ARGNOTVAR"; By_value e)
         | Mode_pers -> (
             match reference () with
+            | Some place when unresolved place ->
+                (* R-5.2-unknown1: a name neither declared nor installed (--allow-unknown) is
+                   unknown, not "not a persistent": binding it raises ERR_REFUNKDAT, as a VAR
+                   parameter's would. *)
+                By_reference (place, Ref_persistent)
             | Some place -> (
                 match kind place a.late_kind with
                 | Ref_persistent -> By_reference (place, Ref_persistent)

@@ -22,6 +22,10 @@ val bind :
     PERS or INOUT one (§2.16).
     [Error "ERR_ARGNOTVAR"] when a VAR or INOUT parameter gets something other than a variable
     (a constant, a read-only variable, a persistent for VAR, any other expression), and
-    [Error "ERR_ARGNOTPER"] when a PERS parameter gets something other than a persistent: the
+    [Error "ERR_ARGNOTPER"] when a PERS parameter gets a known object that is not a persistent: the
     "-" cells of the access-mode table of §5.2, with the errors chapter 12 names for them
     (doc/rulings.md R-4.6-b). *)
+
+val unresolved : Ir.place -> bool
+(** A place whose name is neither declared nor installed (--allow-unknown): binding it raises
+    ERR_REFUNKDAT, whatever the parameter's mode (doc/rulings.md R-5.2-unknown1). *)
