@@ -1258,7 +1258,7 @@ and late_target st (caller : routine) ~at ~call_at name (args : late_argument ar
   in
   let about = name in
   match candidates with
-  | [] -> fun _ -> fail ~about st ~at "ERR_REFUNKPRC"
+  | [] -> let error = Late_binding.unknown_procedure_error name in fun _ -> fail ~about st ~at error
   | k :: _ ->
       let r = routines.(k) in
       if r.kind <> Procedure then fun _ -> fail ~about st ~at "ERR_CALLPROC"

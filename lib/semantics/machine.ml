@@ -601,7 +601,9 @@ let call_primitive cfg (cs : call_state) name =
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
-      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; ("call-by-var-unknown", List.rev !events)
+      | None ->
+          raise_ ~about:target cfg (Late_binding.unknown_procedure_error target);
+          ("call-by-var-unknown", List.rev !events)
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           raise_ ~about:target cfg "ERR_CALLPROC"; ("call-by-var-mismatch", List.rev !events)
       | Some i -> (
@@ -1442,7 +1444,7 @@ let value_step cfg v =
       | V.String name -> (
           let found = late_routine cfg name in
           match found with
-          | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; ("call-late-unknown", [])
+          | None -> raise_ ~about:name cfg (Late_binding.unknown_procedure_error name); ("call-late-unknown", [])
           | Some i when cfg.program.routines.(i).kind <> Procedure ->
               (* §4.6: late binding calls procedures only. *)
               raise_ ~about:name cfg "ERR_CALLPROC"; ("call-late-mismatch", [])
