@@ -1153,7 +1153,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
         if st.all_events then st.emit (Event.Stubbed { routine = callee.name; at = call_at })
       end;
       (match callee.kind with
-       | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
+       | Function -> IR.stub_value callee
        | Procedure | Trap -> no_value)
   | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
   | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
