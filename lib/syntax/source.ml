@@ -22,6 +22,12 @@ let file_count = ref 0
 let kept = ref 0
 let keep () = if !file_count < max_files - 64 then kept := max !kept !file_count
 
+(* Files about to be kept are registered where {!keep} can keep them: when fewer than [n] ids
+   are left below its limit, the ids wrap now (to those not kept), not in their midst. Without
+   it, files first parsed after some 960 others (a process that parsed the whole of spec/ first)
+   were not kept, and a later file took their ids. *)
+let make_room n = if !file_count + n >= max_files - 64 then file_count := !kept
+
 let register ~name ~line_starts =
   if !file_count >= max_files then file_count := !kept;
   incr file_count;

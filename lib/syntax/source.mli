@@ -24,6 +24,10 @@ val keep : unit -> unit
     and used by every later check (the installed modules), whose regions must never equal those
     of a file registered later. *)
 
+val make_room : int -> unit
+(** Before registering [n] files to {!keep}: the ids wrap now if they would reach the limit of
+    {!keep} among them, so that they are kept however many files the process parsed before. *)
+
 val name : file -> string
 
 val no_region : region

@@ -4,7 +4,8 @@ let file_names = List.map fst Installed_sources.files
 
 let parsed =
   lazy
-    (let modules =
+    (Source.make_room (List.length Installed_sources.files);
+     let modules =
        List.fold_left (fun acc (name, text) ->
            match acc with
            | Error _ -> acc
