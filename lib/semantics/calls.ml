@@ -197,7 +197,9 @@ let call_primitive cfg (cs : call_state) name =
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
-      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; (Rule.Call_by_var_unknown, List.rev !events)
+      | None ->
+          raise_ ~about:target cfg (Late_binding.unknown_procedure_error target);
+          (Rule.Call_by_var_unknown, List.rev !events)
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           raise_ ~about:target cfg "ERR_CALLPROC"; (Rule.Call_by_var_mismatch, List.rev !events)
       | Some i -> (
@@ -419,7 +421,7 @@ let late_name cfg args at rest v =
   | V.String name -> (
       let found = late_routine cfg name in
       match found with
-      | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; (Rule.Call_late_unknown, [])
+      | None -> raise_ ~about:name cfg (Late_binding.unknown_procedure_error name); (Rule.Call_late_unknown, [])
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           (* §4.6: late binding calls procedures only. *)
           raise_ ~about:name cfg "ERR_CALLPROC"; (Rule.Call_late_mismatch, [])
