@@ -555,7 +555,8 @@ let test_time_at_distance () =
   let now = Planner.finished_by p in
   let _ = plan p ~now (Planner.move (speed "v1000") (zone "fine") (Joint (target 400. (-100.) 300.))) in
   let now = Planner.finished_by p in
-  let c = plan p ~now (Planner.move (speed "v100") (zone "fine") (Circular (target 500. 0. 300., target 400. 100. 300.))) in
+  let arc = Planner.Circular (target 500. 0. 300., target 400. 100. 300.) in
+  let c = plan p ~now (Planner.move (speed "v100") (zone "fine") arc) in
   close ~eps:1e-6 "half the arc" (at c.id (50. *. 4. *. atan 1.)) (now +. 2. *. atan 1.);
   (* RestoPath drops the marks of level 2. *)
   let now = Planner.finished_by p in

@@ -43,7 +43,7 @@ val call :
   Primitive.context -> state -> string -> Primitive.argument array -> (Primitive.outcome * effects) option
 (** [None]: not a routine of motion (WaitTime and WaitUntil without \InPos included). The
     effects are those of this call. TriggL, TriggJ and TriggC are answered as the moves MoveL,
-    MoveJ and MoveC with their arguments (ABB: "as MoveL ... with events"), for
+    MoveJ and MoveC with their arguments (ABB: the same moves, with events), for
     {!Trigg_routines}, which claims them and adds their triggers. *)
 
 val modelled : string -> bool

@@ -1,19 +1,20 @@
 (** The moves with triggers and the triggers they take (ABB's RAPID Instructions: TriggL,
     TriggJ, TriggC, TriggIO, TriggEquip, TriggInt, TriggSpeed; motion.sys, cell.sys).
 
-    ABB defines a trigger once, in a triggdata variable (TriggIO "stores the trigger condition
-    in the variable of TriggData"), and lets every later TriggL, TriggJ or TriggC that names it
-    act on it where the robot's TCP is on that move's path: so a trigger here is data kept with
-    its variable, and becomes a timed event only when a Trigg move is planned, at the moment
+    ABB defines a trigger once, in a triggdata variable (TriggIO stores its condition there),
+    and lets every later TriggL, TriggJ or TriggC that names it act on it where the robot's TCP
+    is on that move's path: so a trigger here is data kept with its variable, and becomes a
+    timed event only when a Trigg move is planned, at the moment
     {!Rapid_motion_model.Planner.mark} gives for its position (doc/motion.md, law T-distance,
     rule M-trigg). The event is the world's ({!Rapid_controller.World.at}): its output changes,
     or its interrupt occurs through the task's interrupt queue, at that exact time, whatever the
-    program pointer is doing, as MoveLDO's output does (ABB: the events are "independent of the
-    program pointer"). A StopMove holds it back with the robot, a ClearPath drops it with the
+    program pointer is doing, as MoveLDO's output does (ABB: such events do not depend on the
+    program pointer). A StopMove holds it back with the robot, a ClearPath drops it with the
     path (doc/rulings.md R-4.1-trigg1 to R-4.1-trigg6).
 
-    The Trigg moves are Motion_routines' MoveL, MoveJ and MoveC (ABB: TriggL is "as MoveL" with
-    events): same planning, zones, speeds, \T, \Conc, tool and work object, errors. *)
+    The Trigg moves are Motion_routines' MoveL, MoveJ and MoveC (ABB describes TriggL as a
+    linear move with events): same planning, zones, speeds, \T, \Conc, tool and work object,
+    errors. *)
 
 val modelled : string -> bool
 
