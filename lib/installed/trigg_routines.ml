@@ -101,7 +101,7 @@ let signal_id ctx args name =
       | _ -> Error "ERR_NO_ALIASIO_DEF")
   | _ -> Error "ERR_NO_ALIASIO_DEF"
 
-(* Distances and times are not negative (ABB: "positive value"; R-4.1-trigg4). *)
+(* Distances and times are not negative (ABB gives them as positive values; R-4.1-trigg4). *)
 let not_negative = function
   | Some d when d >= 0. && Float.is_finite d -> Ok d
   | _ -> Error "ERR_ARGVALERR"

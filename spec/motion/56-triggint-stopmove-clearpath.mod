@@ -5,10 +5,10 @@ MODULE triggint_stopmove_clearpath
 ! @expect ok
 ! @statement-time 0
 ! @io io/trigg.io
-! @description The triggers follow the robot (R-4.1-trigg6). A TriggInt 250 mm before the end of a 500 mm move at v100 interrupts at 2.5 s; its trap stops the robot for 1 s (StopMove, WaitTime, StartMove), so the TriggIO 0.5 s before the end point (\Time) acts at 5.5 s instead of 4.5 s and the move ends at 6 s. When the trap clears the path instead (ClearPath), the robot stays where it was stopped (y = 0) and the trigger it never gets to is dropped: do_gun does not change. An interrupt that sleeps (ISleep) when the robot gets there is discarded; TriggInt activates it again (R-4.1-trigg3).
+! @description The triggers follow the robot (R-4.1-trigg6). A TriggInt 250 mm before the end of a 500 mm move at v100 interrupts at 2.5 s; its trap stops the robot for 3 s (StopMove, WaitTime, StartMove), so the TriggIO 0.5 s before the end point (\Time), due at 4.5 s while the robot stands, acts at 7.5 s, and the move ends at 8 s. When the trap clears the path instead (ClearPath), the robot stays where it was stopped (y = 0) and the trigger it never gets to is dropped: do_gun does not change. An interrupt that sleeps (ISleep) when the robot gets there is discarded; TriggInt activates it again (R-4.1-trigg3).
 ! @output position at 2500
-! @output do_gun 1 at 5500
-! @output end 6000
+! @output do_gun 1 at 7500
+! @output end 8000
 ! @output position at 2500
 ! @output cleared: do_gun 0 y 0
 ! @output asleep: no trap
@@ -28,7 +28,7 @@ MODULE triggint_stopmove_clearpath
     TPWrite "position at " + NumToStr(1000 * ClkRead(clk), 0);
     StopMove;
     IF mode = 0 THEN
-      WaitTime 1;
+      WaitTime 3;
     ELSE
       ClearPath;
     ENDIF
