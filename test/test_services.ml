@@ -368,6 +368,67 @@ let simultaneous_clients () =
        | _ -> Alcotest.fail ("the server did not serve every client: " ^ read_file out));
       Alcotest.(check string) "server output" "listening\nserved\n" (read_file out))
 
+(* R-13-sockwait1: an unmodified server waits for its client with WAIT_MAX (and accepts with
+   the default time-out of 60 s) longer than --max-time lets the virtual clock run: with nothing
+   else to happen the clock holds while the host waits, so the server answers each command, and
+   the run ends when the client closes, with its virtual time still about 0 s. *)
+let patient_server port = Printf.sprintf {|MODULE patient
+  VAR socketdev listener;
+  VAR socketdev client;
+  VAR string request;
+  VAR clock c;
+  PROC main()
+    ClkStart c;
+    SocketCreate listener;
+    SocketBind listener, "127.0.0.1", %d;
+    SocketListen listener;
+    SocketAccept listener, client;
+    WHILE TRUE DO
+      SocketReceive client \Str:=request \Time:=WAIT_MAX;
+      IF request = "PING" SocketSend client \Str:="PONG\0A";
+    ENDWHILE
+  ERROR
+    IF ERRNO = ERR_SOCK_CLOSED THEN
+      TPWrite "closed at " \Num:=Round(ClkRead(c));
+      SocketClose client;
+      SocketClose listener;
+      RETURN;
+    ENDIF
+  ENDPROC
+ENDMODULE
+|} port
+
+let wait_beyond_max_time () =
+  let dir = temp_dir () in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))) (fun () ->
+      List.iter (fun engine ->
+          let port = free_port () in
+          let file = Filename.concat dir "patient.mod" and out = Filename.concat dir "out.txt" in
+          write_file file (patient_server port);
+          let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
+          let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+          let pid = Unix.create_process binary
+              [| binary; "run"; "--engine"; engine; "--max-time"; "1"; "--fs"; Filename.concat dir "fs"; file |]
+              devnull fd_out fd_out in
+          Unix.close fd_out; Unix.close devnull;
+          (* The client comes after --max-time's second of host time, and pauses as long between
+             its commands. *)
+          Unix.sleepf 1.2;
+          let answers =
+            match connect_retrying port with
+            | s ->
+                Fun.protect ~finally:(fun () -> Unix.close s) (fun () ->
+                    List.map (fun c -> Unix.sleepf 1.2; send s c; read_line s) [ "PING"; "PING" ])
+            | exception e -> ignore (wait_bounded pid 0.); raise e in
+          let status = wait_bounded pid 10. in
+          Alcotest.(check (list string)) (engine ^ ": answers") [ "PONG"; "PONG" ] answers;
+          (match status with
+           | Some (Unix.WEXITED 0) -> ()
+           | Some _ -> Alcotest.fail (engine ^ ": the server did not end with status 0: " ^ read_file out)
+           | None -> Alcotest.fail (engine ^ ": the server did not end when its client closed"));
+          Alcotest.(check string) (engine ^ ": server output") "closed at 0\n" (read_file out))
+        [ "closure"; "machine" ])
+
 let suite = ("services", [
     Alcotest.test_case "command server over the loopback" `Quick command_server;
     Alcotest.test_case "sandbox escapes refused" `Quick escapes;
@@ -378,4 +439,5 @@ let suite = ("services", [
     Alcotest.test_case "--save: both engines write the same modules" `Quick save_engines;
     Alcotest.test_case "a line is read while the run waits on the host" `Quick first_line_before_wait;
     Alcotest.test_case "200 simultaneous clients connect at once" `Quick simultaneous_clients;
+    Alcotest.test_case "a wait beyond --max-time answers its client (R-13-sockwait1)" `Quick wait_beyond_max_time;
   ])

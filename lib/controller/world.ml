@@ -244,6 +244,11 @@ let statements_left w =
     end
 let next_event w = match w.c.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
 
+let next_change w =
+  (* A model's own event (a trigger on the path, [at]) changes a signal or makes an interrupt. *)
+  List.find_map (function
+      | (t, _, (Set_signal _ | Timer_due _ | Call _)) -> Some (to_seconds t) | _, _, Wake -> None) w.c.events
+
 (* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
    clock stop there. *)
 let wake_at w time =

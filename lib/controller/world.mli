@@ -86,6 +86,11 @@ val statements_left : t -> int
 val next_event : t -> float option
 (** When the next timed event (a stimulus, a delayed output, a timer) is due, if any. *)
 
+val next_change : t -> float option
+(** {!next_event}, leaving out the waits' own looks ({!wake_at}): when the next event that
+    changes something is due (a socket wait holds the clock when there is none,
+    doc/rulings.md R-13-sockwait1). *)
+
 val advance_to : t -> float -> unit
 (** The clock moves on to this time; the events due until then happen in order of time (and of
     scheduling for equal times). A time in the past changes nothing. *)

@@ -55,6 +55,7 @@ type state = {
   mutable cleared_at : float option;           (* the last ClearPath: when the moves it drops are dropped *)
   mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
   mutable drain_hooks : (W.t -> unit) list;
+  mutable robots : (string * state) list;      (* a task without a robot: the motion tasks (R-14-pos1) *)
 }
 
 let dummy = V.Bool false
@@ -66,7 +67,7 @@ let create ?(robot = MM.Robot.irb120) ?history () =
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
-    extensions = []; drain_hooks = [] }
+    extensions = []; drain_hooks = []; robots = [] }
 
 let set_backward st b = st.backward <- b
 let retracing st = st.backward
@@ -74,6 +75,8 @@ let retracing st = st.backward
 let extensions st = st.extensions
 let add_extension st e = st.extensions <- e :: st.extensions
 let on_drain st f = st.drain_hooks <- st.drain_hooks @ [ f ]
+
+let connect_robots st robots = st.robots <- robots
 
 let planner st = st.planner
 
@@ -695,6 +698,31 @@ let path_command ctx st command f =
       forget st ~now; Returned None
   | Error e -> fail ctx command e
 
+(* R-14-pos1: the motion state whose robot CJointT, CRobT and CPos read. \TaskName, or \TaskRef
+   (a taskid's identity is its task's number), names a task of the run: a motion task's robot; the
+   caller itself, as without either; another task, ERR_NOT_MOVETASK; no task, ERR_TASKNAME. Without
+   either, a motion task reads its own robot and a task without one the robot of its motion task
+   (as if it used that task's mechanical unit group). *)
+let robot_of ctx st args =
+  let w = ctx.world in
+  let tasks = W.task_names w in
+  let named = match value ctx args "TaskName", value ctx args "TaskRef" with
+    | Some (V.String n), _ -> Ok (Some n)
+    | _, Some (V.Handle h) when V.handle_id h >= 1 && V.handle_id h <= List.length tasks ->
+        Ok (Some (List.nth tasks (V.handle_id h - 1)))
+    | _, Some _ -> Error "ERR_TASKNAME"
+    | _ -> Ok None in
+  let connected () = if W.motion_task w then st else match st.robots with (_, r) :: _ -> r | [] -> st in
+  match named with
+  | Error e -> Error e
+  | Ok None -> Ok (connected ())
+  | Ok (Some n) when not (List.exists (same n) tasks) -> Error "ERR_TASKNAME"
+  | Ok (Some n) when same n (W.task_name w) -> Ok (connected ())
+  | Ok (Some n) -> (
+      match List.find_opt (fun (m, _) -> same m n) st.robots with
+      | Some (_, r) -> Ok r
+      | None -> Error "ERR_NOT_MOVETASK")
+
 let call_unguarded (ctx : context) st name args =
   let w = ctx.world in
   let now = W.now w in
@@ -822,10 +850,15 @@ let call_unguarded (ctx : context) st name args =
           let r = G.mir_pos ~point:(robtarget_of p).pose ~plane ?wobj ~mir_y:(present ctx args "MirY") () in
           Some (Returned (Some (with_pose p r)))
       | _ -> Some (Failed "ERR_ARGVALERR"))
-  | "cjointt" -> Some (match current_joints ctx st with
+  | ("cjointt" | "crobt" | "cpos") when Result.is_error (robot_of ctx st args) ->
+      Some (match robot_of ctx st args with Error e -> Failed e | Ok _ -> Failed "ERR_TASKNAME")
+  | "cjointt" ->
+      let st = Result.get_ok (robot_of ctx st args) in
+      Some (match current_joints ctx st with
       | Ok q -> Returned (Some (jointtarget_value ~ext:(current_external ctx st) q))
       | Error e -> fail ctx name e)
   | "crobt" | "cpos" -> (
+      let st = Result.get_ok (robot_of ctx st args) in
       (* Without \Tool and \WObj: the active ones, those of the last move. *)
       let tool = match get "Tool", active_tool st with
         | Some t, _ | None, Some t -> tool_of t | None, None -> D.tool0 in

@@ -55,6 +55,11 @@ val drain : state -> Rapid_controller.World.t -> Rapid_observable.Motion_event.t
 val finish : state -> Rapid_observable.Motion_event.t list
 (** At the end of the task: the rest of the motion the robot still does, with its times. *)
 
+val connect_robots : state -> (string * state) list -> unit
+(** The motion tasks of the run by name, with their states, for the position functions of this
+    task's state (CJointT, CRobT and CPos, \TaskName and \TaskRef, and a task without a robot:
+    doc/rulings.md R-14-pos1). Without it (one task), a task reads its own robot. *)
+
 val set_backward : state -> bool -> unit
 (** A BACKWARD handler begins (true) or ends (false) its run (ch. 6): its move instructions
     retrace the forward moves, the newest first (§6.3). *)

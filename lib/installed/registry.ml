@@ -40,7 +40,8 @@ let bodies = [
   { module_name = "io"; reach = (fun _ -> World); claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
     answer = plain Io_routines.call };
   { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
-    answer = plain Service_routines.call };
+    answer = (fun ~standstill ctx _ name args ->
+        Option.map (fun r -> (r, no_effects)) (Service_routines.call ~standstill ctx name args)) };
   { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
     answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
 ]

@@ -200,9 +200,10 @@ let pack_bytes ctx args v =
         | _ -> Error "ERR_ARGVALERR")
     | Some _ -> Error "ERR_ARGVALERR"
     | None -> (
-        (* \ASCII, or no encoding named: a string is its characters, a byte one character. *)
+        (* \ASCII, or no encoding named: a string is its characters (none for "", R-13-raw1), a
+           byte one character. *)
         match v with
-        | V.String s when s <> "" -> Ok (Bytes.of_string s)
+        | V.String s -> Ok (Bytes.of_string s)
         | V.Num f when Float.is_integer f && f >= 0. && f <= 255. && present ctx args "ASCII" ->
             Ok (Bytes.make 1 (Char.chr (int_of_float f)))
         | _ -> Error "ERR_ARGVALERR")
@@ -226,57 +227,80 @@ let unpack ctx args b n start =
             match target with Some (V.Dnum _) -> V.dnum f | _ -> V.num f) (take (abs x))
     | Some _ -> Error "ERR_ARGVALERR"
     | None -> (
+        (* \ASCII:=0 reads no byte and gives "" (R-13-raw1). *)
         match integer (num ctx args "ASCII") with
-        | Some k when k >= 1 && k <= 80 -> Result.map (fun bs -> V.String (Bytes.to_string bs)) (take k)
+        | Some k when k >= 0 && k <= 80 -> Result.map (fun bs -> V.String (Bytes.to_string bs)) (take k)
         | _ -> Error "ERR_ARGVALERR")
 
 (* ---------------------------------------------------------------- sockets *)
 
 let sockets ctx = S.sockets (services ctx)
 
-(* A blocking socket call waits on the host; the virtual clock moves on by the host time it
-   waited (R-13-v). The wait is bounded by \Time (default 60 s) and by the run's --max-time. *)
+(* A blocking socket call waits on the host, at most its \Time (default 60 s), whatever
+   --max-time leaves (R-13-sockwait1): the run's bound is the virtual clock's, not the peer's. *)
 let timeout ctx args =
   match num ctx args "Time" with
   | Some t when not (t > 0.) || not (Float.is_finite t) -> Error "ERR_ARGVALERR"
-  | t ->
-      let t = Option.value t ~default:60. in
-      Ok (Float.max 0. (Float.min t (W.max_time ctx.world -. W.now ctx.world)))
+  | t -> Ok (Option.value t ~default:60.)
 
 let waited ctx seconds = W.advance_to ctx.world (W.now ctx.world +. seconds)
 
 (* R-14-n: a blocking call (SocketAccept, SocketReceive, SocketReceiveFrom) that cannot go on at
    once is a waiting instruction: interrupts are served while it waits (§8) and, with several
-   tasks, the others run. Its wait keeps the virtual clock within [socket_slice] of the host's:
-   each look first waits on the host until the host has waited as long as the virtual clock
-   moved since the call, then lets the clock move on by one slice at most; data that comes moves
-   the clock on by the host time the host waited beyond it. The call itself runs when the socket
-   is ready, \Time on the virtual clock. *)
+   tasks, the others run. While anything else can happen at a virtual time (another task, a
+   timed event before the call's deadline, the robot moving), its wait keeps the virtual clock
+   within [socket_slice] of the host's: each look first waits on the host until the host has
+   waited as long as the virtual clock moved since the call, then lets the clock move on by one
+   slice at most; data that comes moves the clock on by the host time the host waited beyond it.
+   Once nothing else can happen, the clock holds (R-13-sockwait1): each look waits on the host
+   for [hold_slice] and lets the clock move on by a microsecond only, and \Time is the host's
+   (the clock jumps to the deadline when it passes). The call itself runs when the socket is
+   ready. *)
 let socket_slice = 0.02   (* §8: a response to an interrupt is 2-30 ms late *)
+let hold_slice = 0.25
 
-let blocking ctx ~what id ~timeout (call : timeout:float -> outcome) =
+let blocking ctx ~standstill ~what id ~timeout (call : timeout:float -> outcome) =
   let w = ctx.world and k = sockets ctx in
   if K.readable k id ~within:0. then call ~timeout
   else begin
     let start = W.now w and host_start = Unix.gettimeofday () in
     let deadline = start +. timeout in
+    let host () = Unix.gettimeofday () -. host_start in
+    (* Nothing else can happen at a virtual time: one task, the robot at a standstill, no timed
+       event before the deadline but the waits' own looks. *)
+    let alone () =
+      (match W.task_names w with [ _ ] -> true | _ -> false)
+      && not (standstill () > W.now w)
+      && (match W.next_change w with None -> true | Some t -> t >= deadline) in
+    let holding = ref false in
     (* One Wake at a time: with several tasks the socket is looked at every turn. *)
     let next_look = ref (Float.min deadline (start +. socket_slice)) in
     W.wake_at w !next_look;
     Wait { W.what = what; deadline = Some deadline; poll = None;
            satisfied = (fun () ->
-               let host () = Unix.gettimeofday () -. host_start in
-               let ready = K.readable k id ~within:((W.now w -. start) -. host ()) in
                let now = W.now w in
-               if ready then begin
-                 let ahead = Float.min (start +. host ()) deadline in
-                 if ahead > now then W.advance_to w ahead
+               if (not !holding) && now < deadline && alone () then holding := true;
+               if !holding then begin
+                 let ready = K.readable k id ~within:(Float.min hold_slice (timeout -. host ())) in
+                 let now = W.now w in
+                 if ready then ()
+                 else if host () >= timeout then W.advance_to w deadline
+                 else (next_look := now +. 1e-6; W.wake_at w !next_look);
+                 ready
                end
-               else if now < deadline && now >= !next_look then begin
-                 next_look := Float.min deadline (now +. socket_slice);
-                 W.wake_at w !next_look
-               end;
-               ready);
+               else begin
+                 let ready = K.readable k id ~within:((now -. start) -. host ()) in
+                 let now = W.now w in
+                 if ready then begin
+                   let ahead = Float.min (start +. host ()) deadline in
+                   if ahead > now then W.advance_to w ahead
+                 end
+                 else if now < deadline && now >= !next_look then begin
+                   next_look := Float.min deadline (now +. socket_slice);
+                   W.wake_at w !next_look
+                 end;
+                 ready
+               end);
            finish = (fun ~timed_out ->
                if timed_out then Rapid_observable.Wait.error "ERR_SOCK_TIMEOUT"
                else match call ~timeout:(Float.max socket_slice (deadline -. W.now w)) with
@@ -348,7 +372,7 @@ let names = [
 
 let modelled name = List.exists (same name) names
 
-let call (ctx : context) name args =
+let call ?(standstill = fun () -> neg_infinity) (ctx : context) name args =
   let sv () = services ctx in
   let dev () = object_id ctx args "IODevice" in
   match String.lowercase_ascii name with
@@ -409,8 +433,9 @@ let call (ctx : context) name args =
         let* ic = device_input ctx args in
         let id, b, _ = raw ctx args "RawData" in
         let got = try input ic b 0 S.rawbytes_capacity with Sys_error _ -> -1 in
+        (* Nothing left: ERR_RANYBIN_EOF, the rawbytes unchanged (R-13-raw2). *)
         if got < 0 then Failed "ERR_FILEACC"
-        else if got = 0 then Failed "ERR_FILEEOF"
+        else if got = 0 then Failed "ERR_RANYBIN_EOF"
         else (S.set_rawbytes_length (sv ()) id got; done_))
   | "readanybin" ->
       Some (
@@ -502,9 +527,11 @@ let call (ctx : context) name args =
       Some (
         let _, fb, fn = raw ctx args "FromRawData" in
         let tid, tb, tn = raw ctx args "ToRawData" in
+        (* FromIndex may stand right after the valid data: without \NoOfBytes nothing is copied
+           (R-13-raw3), an empty rawbytes from 1 too. *)
         let* from =
           match integer (num ctx args "FromIndex") with
-          | Some k when k >= 1 && k <= fn -> Ok k | _ -> Error "ERR_OUTOFBND" in
+          | Some k when k >= 1 && k <= fn + 1 -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* count = match integer (num ctx args "NoOfBytes") with
           | None when not (present ctx args "NoOfBytes") -> Ok (fn - from + 1)
           | Some k when k >= 1 && from + k - 1 <= fn -> Ok k
@@ -531,9 +558,11 @@ let call (ctx : context) name args =
   | "unpackrawbytes" ->
       Some (
         let _, b, n = raw ctx args "RawData" in
+        (* \ASCII:=0 reads nothing, so it may also start right after the valid data (R-13-raw1). *)
+        let nothing = integer (num ctx args "ASCII") = Some 0 in
         let* start =
           match integer (num ctx args "StartIndex") with
-          | Some k when k >= 1 && k <= n -> Ok k | _ -> Error "ERR_OUTOFBND" in
+          | Some k when k >= 1 && (k <= n || (nothing && k = n + 1)) -> Ok k | _ -> Error "ERR_OUTOFBND" in
         let* v = unpack ctx args b n start in
         match value ctx args "Value", v with
         | Some (V.String _), V.String _ | Some (V.Num _), V.Num _ | Some (V.Dnum _), V.Dnum _ ->
@@ -558,7 +587,7 @@ let call (ctx : context) name args =
       Some (
         let* timeout = timeout ctx args in
         let id = object_id ctx args "Socket" in
-        blocking ctx ~what:"a client at the socket (SocketAccept)" id ~timeout @@ fun ~timeout ->
+        blocking ctx ~standstill ~what:"a client at the socket (SocketAccept)" id ~timeout @@ fun ~timeout ->
         let r, w = K.accept (sockets ctx) id ~timeout in
         waited ctx w;
         let* client, address = r in
@@ -590,7 +619,7 @@ let call (ctx : context) name args =
         let* max, exact = receive_size ctx args capacity in
         let* timeout = timeout ctx args in
         let id = object_id ctx args "Socket" in
-        blocking ctx ~what:"data at the socket (SocketReceive)" id ~timeout @@ fun ~timeout ->
+        blocking ctx ~standstill ~what:"data at the socket (SocketReceive)" id ~timeout @@ fun ~timeout ->
         let r, w = K.receive (sockets ctx) id ~max ~exact ~timeout in
         waited ctx w;
         let* data = r in
@@ -601,7 +630,7 @@ let call (ctx : context) name args =
         let* max, _ = receive_size ctx args capacity in
         let* timeout = timeout ctx args in
         let id = object_id ctx args "Socket" in
-        blocking ctx ~what:"data at the socket (SocketReceiveFrom)" id ~timeout @@ fun ~timeout ->
+        blocking ctx ~standstill ~what:"data at the socket (SocketReceiveFrom)" id ~timeout @@ fun ~timeout ->
         let r, w = K.receive_from (sockets ctx) id ~max ~timeout in
         waited ctx w;
         let* data, address, port = r in

@@ -3,8 +3,12 @@
     They act on the run's {!Rapid_controller.Services}, reached through the world of the
     primitive context. *)
 
-val call : Primitive.context -> string -> Primitive.argument array -> Primitive.outcome option
-(** [None]: not one of these routines. Arguments are found by parameter name. *)
+val call :
+  ?standstill:(unit -> float) -> Primitive.context -> string -> Primitive.argument array ->
+  Primitive.outcome option
+(** [None]: not one of these routines. Arguments are found by parameter name. [standstill]: when
+    the task's robot stands still (doc/motion.md); a socket wait follows the host's clock while
+    the robot moves (doc/rulings.md R-13-sockwait1). Without it, the robot stands still. *)
 
 val modelled : string -> bool
 

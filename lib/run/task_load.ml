@@ -166,5 +166,12 @@ let load ?(allow_unknown = false) ?io ?motion_task ~world ~motion (specs : spec 
                   let host = Rapid_installed.World_host.make w motion in
                   { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host };
                     world = w; motion }) loaded in
+              (* R-14-pos1: the position functions of a task without a robot reach the motion
+                 task's by its name, and read it by default (its mechanical unit group's). *)
+              let robots = List.filter_map (fun (t : task) ->
+                  if W.motion_task t.world then Some (W.task_name t.world, t.motion) else None) tasks in
+              List.iter (fun (t : task) ->
+                  if not (W.motion_task t.world) then Rapid_installed.Motion_routines.connect_robots t.motion robots)
+                tasks;
               let warnings = List.concat_map (fun (_, _, (l : Session.loaded)) -> l.warnings) loaded in
               Ok { tasks; links = List.rev !links; warnings })

@@ -2,11 +2,11 @@ MODULE rawbytes_file
 ! @format 3
 ! @section 13
 ! @expect ok
-! @description WriteRawBytes writes the valid data of a rawbytes (or \NoOfBytes of them) to a file opened with \Bin; ReadRawBytes reads what the file holds into a rawbytes, and raises ERR_FILEEOF when nothing is left.
+! @description WriteRawBytes writes the valid data of a rawbytes (or \NoOfBytes of them) to a file opened with \Bin; ReadRawBytes reads what the file holds into a rawbytes, and raises ERR_RANYBIN_EOF when nothing is left (R-13-raw2).
 ! @output size 16
 ! @output read 16
 ! @output hellohello world
-! @output ERR_FILEEOF
+! @output ERR_RANYBIN_EOF
 ! @exit 0
   VAR iodev file;
   VAR rawbytes raw;
@@ -27,7 +27,7 @@ MODULE rawbytes_file
     ReadRawBytes file, back;
     TPWrite "not reached";
   ERROR
-    IF ERRNO = ERR_FILEEOF TPWrite "ERR_FILEEOF";
+    IF ERRNO = ERR_RANYBIN_EOF TPWrite "ERR_RANYBIN_EOF";
     Close file;
     RETURN;
   ENDPROC
