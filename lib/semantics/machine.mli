@@ -41,9 +41,12 @@ val start :
     arguments of calls and the values functions return ({!Observation.t}: texts built only then,
     schema rapid-sem/2). *)
 
+val step_rule : config -> Rule.t * event list
+(** One reduction: the rule applied and what it made observable. Only valid while [outcome] is
+    [Running]. *)
+
 val step : config -> string * event list
-(** One reduction: the name of the rule applied and what it made observable. Only valid while
-    [outcome] is [Running]. *)
+(** [step_rule], with the rule's name ({!Rule.name}): the string the trace prints. *)
 
 val outcome : config -> outcome
 
@@ -150,7 +153,8 @@ val computed_values : config -> (Rapid_syntax.Source.region * Value.t) list
     region of the expression it is the value of (the statement as it stands). *)
 
 val rule_names : string list
-(** Every rule of the machine, as doc/semantics.md lists them. *)
+(** Every rule of the machine, as doc/semantics.md lists them: the names of the {!Rule.listed}
+    rules of {!Rule.all}, in its order. *)
 
 val module_data : config -> (string * string * Value.t) list
 (** Each module data object of the task (and installed datum): its module, its name and its
@@ -165,7 +169,6 @@ val pointer_statement : config -> Ir.stmt option
 val empty_loop_round : config -> bool
 (** After a step of rule while-again or for-step: whether the loop's body has no statement
     (where a turn of several tasks ends, doc/rulings.md R-14-o). *)
-
 
 val call_chain_view : config -> (Ir.routine * Rapid_syntax.Source.region) list
 (** The active routines, innermost first, each with where it stands: the innermost at the
@@ -186,12 +189,16 @@ val backward : config -> (string, string) result
     when it has ended, "backward-end", the pointer is at the call); [Error message] when
     backward execution is refused: nothing changed. *)
 
+val backward_rule : config -> (Rule.t, string) result
+(** [backward], with the rule as a constructor. *)
+
 val backward_running : config -> bool
 (** A BACKWARD handler is running: an error now goes to the system error handler
     ("raise-in-backward", §6.1). *)
 
 val backward_rule_names : string list
-(** The rules of backward execution (doc/semantics.md, "Backward execution"). *)
+(** The rules of backward execution (doc/semantics.md, "Backward execution"): the names of the
+    {!Rule.backward} rules of {!Rule.all}. *)
 
 val global_slot : config -> string -> Ir.slot option
 (** The module data object (or installed data object) of that name, case-insensitively (§2.2). *)

@@ -46,7 +46,8 @@ let limits t = t.limits
 
 (* The next task to take a turn, among the running tasks that do not wait in vain. *)
 let choose s =
-  Task_rules.next_turn s.order ~cursor:s.cursor ~count:(Array.length s.tasks) (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
+  Task_rules.next_turn s.order ~cursor:s.cursor ~count:(Array.length s.tasks)
+    (fun k -> running s.tasks.(k) && not s.tasks.(k).idle)
   |> Option.map (fun k -> s.tasks.(k))
 
 let all_wait s =
@@ -76,18 +77,18 @@ let step s =
     match s.current with
     | None -> None
     | Some task ->
-        let rule, events = M.step task.cfg in
+        let rule, events = M.step_rule task.cfg in
         s.turn_steps <- s.turn_steps + 1;
-        if rule = "wait-yield" then (task.idle <- true; s.current <- None)
+        if rule = Rule.Wait_yield then (task.idle <- true; s.current <- None)
         else begin
           Array.iter (fun t -> t.idle <- false) s.tasks;
           (* R-14-o: a new round of a loop without a statement ends the turn too, so that every
              turn ends (a loop waiting for another task with an empty body lets it run). *)
           if not (running task) || M.pointer_statement task.cfg <> None
-             || ((rule = "while-again" || rule = "for-step") && M.empty_loop_round task.cfg) then
+             || ((rule = Rule.While_again || rule = Rule.For_step) && M.empty_loop_round task.cfg) then
             s.current <- None
         end;
-        Some (task.t_name, rule, events)
+        Some (task.t_name, Rule.name rule, events)
 
 let tasks s = Array.to_list (Array.map (fun t -> (t.t_name, t.cfg)) s.tasks)
 
