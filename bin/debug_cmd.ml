@@ -4,9 +4,8 @@
 open Cmdliner
 module D = Rapid_tools.Debugger
 
-let cmd ~start_machine ~finish ~common_run_args ~controller_args =
-  let robot_arg = Motion_cmd.robot_arg in
-  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+let cmd =
+  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = Run_args.common_run_args in
   let script = Arg.(value & opt (some string) None & info [ "script" ] ~docv:"FILE"
                       ~doc:"Read the debugger's commands from FILE instead of standard input.") in
   let run files entry max_steps allow_unknown max_depth retry_limit controller robot script =
@@ -16,10 +15,15 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     match input with
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg _ ->
+    Cli.guard @@ fun () ->
+    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    match Rapid_run.Run_setup.start_machine ~notify:Cli.notify options files ~entry with
+    | Error f -> Cli.failure f
+    | Ok (cfg, _) ->
     let echo = script <> None in
     let parsed = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
-    let ident (i : Rapid_syntax.Ast.identifier) = match i.it with Ident n -> String.lowercase_ascii n | ID_placeholder -> "" in
+    let ident (i : Rapid_syntax.Ast.identifier) =
+      match i.it with Ident n -> String.lowercase_ascii n | ID_placeholder -> "" in
     (* The names of each routine's data, in declaration order, by module and routine. *)
     let data_names = Hashtbl.create 16 in
     List.iter (fun (m : Rapid_syntax.Ast.module_declaration) ->
@@ -27,7 +31,8 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
             let named name (body : Rapid_syntax.Ast.routine_body) =
               Hashtbl.replace data_names (ident m.module_name, ident name)
                 (List.filter_map (fun (d : Rapid_syntax.Ast.data_declaration) ->
-                     match d.it with Data_declaration { name; _ } -> Some (ident name) | _ -> None) body.declarations) in
+                     match d.it with Data_declaration { name; _ } -> Some (ident name) | _ -> None)
+                    body.declarations) in
             match r.it with
             | Procedure_declaration { name; body; _ } | Function_declaration { name; body; _ }
             | Trap_declaration { name; body; _ } -> named name body
@@ -61,15 +66,19 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     let cfg = D.config session in
     match Rapid_semantics.Machine.outcome cfg with
     | Rapid_runtime.Outcome.Running -> 0
-    | o -> finish o (Rapid_semantics.Machine.steps cfg) ~max_steps
+    | o -> Cli.finish o (Rapid_semantics.Machine.steps cfg) ~max_steps
   in
   let doc = "step through a task as on the FlexPendant: forward, backward (ch. 6), by statement" in
   let man = [
     `S Manpage.s_description;
-    `P "Checks and loads the FILEs as $(b,rapid-sem run) does, stops at the first statement of the entry routine, then runs the commands of doc/debugger.md (step [N], next, finish, back, continue, break FILE:LINE, delete [N], print EXPR, set REF := EXPR, where, quit), one a line, from standard input or --script FILE. After each command that moves the program pointer it prints MODULE:LINE and the statement's line.";
+    `P "Checks and loads the FILEs as $(b,rapid-sem run) does, stops at the first statement of the entry routine, then \
+        runs the commands of doc/debugger.md (step [N], next, finish, back, continue, break FILE:LINE, delete [N], \
+        print EXPR, set REF := EXPR, where, quit), one a line, from standard input or --script FILE. After each \
+        command that moves the program pointer it prints MODULE:LINE and the statement's line.";
     `S Manpage.s_exit_status;
-    `P "0 when the session ends (quit, or the end of the commands) with the task still running or ended; otherwise that of $(b,rapid-sem run) for how the task ended.";
+    `P "0 when the session ends (quit, or the end of the commands) with the task still running or ended; otherwise \
+        that of $(b,rapid-sem run) for how the task ended.";
   ] in
   Cmd.v (Cmd.info "debug" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ controller_args
-          $ robot_arg $ script)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
+          $ Run_args.robot_arg $ script)

@@ -32,26 +32,54 @@ let progress_line started ~done_ ~total ~failures ~rules_seen =
   end
 
 let cmd =
-  let count = Arg.(value & opt (positive_int "--count") 1000 & info [ "count" ] ~docv:"N" ~doc:"Programs in the whole campaign.") in
-  let seed = Arg.(value & opt int 1 & info [ "seed" ] ~docv:"S" ~doc:"The campaign's seed: the same seed gives the same programs.") in
-  let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N" ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
-  let out = Arg.(value & opt (some string) None & info [ "out" ] ~docv:"DIR" ~doc:"Where each failure is saved as a minimal .mod with its expected events (without $(b,--out): fuzz-failures), and where the rule coverage is written: coverage.json and coverage.md (doc/fuzz-campaign.md).") in
-  let merge = Arg.(value & opt_all file [] & info [ "merge" ] ~docv:"FILE" ~doc:"Add the coverage.json of another shard to this run's (repeatable); with $(b,--count 0) only merges, as bench/fuzz-campaign.sh does.") in
-  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD" ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does. The protocol passes the program alone, without an I/O configuration, so no program then uses the controller (as with $(b,--no-controller)).") in
-  let mismatching = Arg.(value & flag & info [ "mismatching" ] ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older scripts).") in
-  let matching_only = Arg.(value & flag & info [ "matching-only" ] ~doc:"Generate no late-bound call with wrong arguments.") in
-  let no_controller = Arg.(value & flag & info [ "no-controller" ] ~doc:"Generate no program that uses the controller (waits, signals, interrupts, moves).") in
-  let signal_stores = Arg.(value & flag & info [ "no-signal-stores" ] ~doc:"Generate no assignments to signal variables (do1 := 1).") in
-  let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M" ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
-  let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K" ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K programs; 0: none.") in
-  let scenarios = Arg.(value & opt (positive_int "--scenarios") 10 & info [ "scenarios" ] ~docv:"K" ~doc:"One program in K on average is a scenario: several modules, a NOSTEPIN module, two tasks, a collision, or run with $(b,--allow-unknown), $(b,--stub-unmodelled) or small limits (doc/fuzz-campaign.md, \"Scenarios\"); 0: none. Not with $(b,--impl).") in
+  let count = Arg.(value & opt (positive_int "--count") 1000 & info [ "count" ] ~docv:"N"
+                     ~doc:"Programs in the whole campaign.") in
+  let seed = Arg.(value & opt int 1 & info [ "seed" ] ~docv:"S"
+                    ~doc:"The campaign's seed: the same seed gives the same programs.") in
+  let shard = Arg.(value & opt shard_conv { C.index = 1; count = 1 } & info [ "shard" ] ~docv:"K/N"
+                     ~doc:"Run only shard K of N: program I belongs to shard (I mod N) + 1.") in
+  let out = Arg.(value & opt (some string) None & info [ "out" ] ~docv:"DIR"
+                   ~doc:"Where each failure is saved as a minimal .mod with its expected events (without \
+                         $(b,--out): fuzz-failures), and where the rule coverage is written: coverage.json and \
+                         coverage.md (doc/fuzz-campaign.md).") in
+  let merge = Arg.(value & opt_all file [] & info [ "merge" ] ~docv:"FILE"
+                     ~doc:"Add the coverage.json of another shard to this run's (repeatable); with $(b,--count 0) \
+                           only merges, as bench/fuzz-campaign.sh does.") in
+  let impl = Arg.(value & opt (some string) None & info [ "impl" ] ~docv:"CMD"
+                    ~doc:"Also check another implementation on each program, as $(b,rapid-sem oracle --impl) does. \
+                          The protocol passes the program alone, without an I/O configuration, so no program then \
+                          uses the controller (as with $(b,--no-controller)).") in
+  let mismatching = Arg.(value & flag & info [ "mismatching" ]
+                           ~doc:"Generate late-bound calls with wrong arguments too (the default; kept for older \
+                                 scripts).") in
+  let matching_only = Arg.(value & flag & info [ "matching-only" ]
+                             ~doc:"Generate no late-bound call with wrong arguments.") in
+  let no_controller = Arg.(value & flag & info [ "no-controller" ]
+                             ~doc:"Generate no program that uses the controller (waits, signals, interrupts, \
+                                   moves).") in
+  let signal_stores = Arg.(value & flag & info [ "no-signal-stores" ]
+                             ~doc:"Generate no assignments to signal variables (do1 := 1).") in
+  let mutants = Arg.(value & opt (positive_int "--mutants") 1 & info [ "mutants" ] ~docv:"M"
+                       ~doc:"Ill-typed mutants of each program, for the property that the checker never crashes.") in
+  let hostile_every = Arg.(value & opt (positive_int "--hostile-every") 10 & info [ "hostile-every" ] ~docv:"K"
+                             ~doc:"A hostile text (random bytes, deep nesting, huge names and numbers) every K \
+                                   programs; 0: none.") in
+  let scenarios = Arg.(value & opt (positive_int "--scenarios") 10 & info [ "scenarios" ] ~docv:"K"
+                         ~doc:"One program in K on average is a scenario: several modules, a NOSTEPIN module, two \
+                               tasks, a collision, or run with $(b,--allow-unknown), $(b,--stub-unmodelled) or small \
+                               limits (doc/fuzz-campaign.md, \"Scenarios\"); 0: none. Not with $(b,--impl).") in
   let break_rule =
     let names = List.map (fun m -> (Rapid_fuzz.Mutation.name m, m)) Rapid_fuzz.Mutation.all in
     Arg.(value & opt (some (enum names)) None & info [ "break-rule" ] ~docv:"MUTATION"
-           ~doc:(Printf.sprintf "The mutation check: run the closure engine with one rule deliberately broken (%s), and stop at the first failure, which a working harness finds (exit 1 then; 0 would mean the harness missed it)."
+           ~doc:(Printf.sprintf "The mutation check: run the closure engine with one rule deliberately broken \
+                                 (%s), and stop at the first failure, which a working harness finds (exit 1 then; \
+                                 0 would mean the harness missed it)."
                    (String.concat ", " (List.map fst names)))) in
-  let coverage = Arg.(value & flag & info [ "coverage" ] ~doc:"List every rule of the machine with how often it applied, and the rules never applied.") in
-  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores) (mutants, hostile_every, scenarios) coverage =
+  let coverage = Arg.(value & flag & info [ "coverage" ]
+                        ~doc:"List every rule of the machine with how often it applied, and the rules never \
+                              applied.") in
+  let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores)
+      (mutants, hostile_every, scenarios) coverage =
     C.tune_gc ();
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
@@ -66,15 +94,16 @@ let cmd =
             | Agree _ -> Ok ()
             | v -> Error (Rapid_oracle.Oracle.verdict_report { name = "program"; files = [] } v))) impl in
     let options = { Rapid_fuzz.Program_gen.default_options with
-                    mismatching = mismatching || not matching_only; controller = not no_controller && impl = None; signal_stores = not signal_stores } in
+                    mismatching = mismatching || not matching_only; controller = not no_controller && impl = None;
+                    signal_stores = not signal_stores } in
     (* Every program runs under both engines (doc/semantics.md, "The second engine"). *)
     let engine = match break_rule with
       | Some m -> Rapid_fuzz.Mutation.engine m Rapid_fuzz.Fuzz_run.closure
       | None -> Rapid_fuzz.Fuzz_run.closure in
     let max_failures = Option.map (fun _ -> 1) break_rule in
     let scenarios = if impl = None then scenarios else 0 in
-    let s = C.run ~options ~engines:[ engine ] ?external_check ?progress ~mutants ~hostile_every ~scenarios ?max_failures
-        ~seed ~count ~shard () in
+    let s = C.run ~options ~engines:[ engine ] ?external_check ?progress ~mutants ~hostile_every ~scenarios
+        ?max_failures ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
     List.iter (fun (f : C.failure_found) ->
         let path = C.save ~dir:(Option.value out ~default:"fuzz-failures") f in
@@ -96,11 +125,13 @@ let cmd =
     Printf.printf "%d programs (shard %d/%d, seed %d) in %.1f s: %.0f programs/s (%.0f per second of processor time)\n"
       s.programs shard.index shard.count seed s.seconds (if s.seconds > 0. then float s.programs /. s.seconds else 0.)
       (if s.cpu_seconds > 0. then float s.programs /. s.cpu_seconds else 0.);
-    Printf.printf "outcomes: %s\n" (String.concat ", " (List.map (fun (k, n) -> Printf.sprintf "%s %d" k n) s.outcomes));
+    Printf.printf "outcomes: %s\n"
+      (String.concat ", " (List.map (fun (k, n) -> Printf.sprintf "%s %d" k n) s.outcomes));
     if merge <> [] then
       Printf.printf "merged with %d other shard%s: %d programs, %d failures\n" (List.length merge)
         (if List.length merge = 1 then "" else "s") cov.programs cov.failures;
-    Printf.printf "rules applied: %d of %d\n" (Rapid_fuzz.Coverage.applied cov) (List.length Rapid_fuzz.Coverage.rule_names);
+    Printf.printf "rules applied: %d of %d\n" (Rapid_fuzz.Coverage.applied cov)
+      (List.length Rapid_fuzz.Coverage.rule_names);
     if coverage then
       List.iter (fun (r, n) -> Printf.printf "  %-28s %d\n" r n) cov.rules;
     Printf.printf "%d passed, %d failed\n" (s.programs - List.length s.failures) (List.length s.failures);
@@ -116,4 +147,8 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  Cmd.v (Cmd.info "fuzz" ~doc ~man) Term.(const run $ count $ seed $ shard $ Term.(const (fun a b c -> (a, b, c)) $ out $ merge $ break_rule) $ impl $ Term.(const (fun a b c d -> (a, b, c, d)) $ mismatching $ matching_only $ no_controller $ signal_stores) $ Term.(const (fun a b c -> (a, b, c)) $ mutants $ hostile_every $ scenarios) $ coverage)
+  let triple a b c = (a, b, c) and quadruple a b c d = (a, b, c, d) in
+  Cmd.v (Cmd.info "fuzz" ~doc ~man)
+    Term.(const run $ count $ seed $ shard $ (const triple $ out $ merge $ break_rule) $ impl
+          $ (const quadruple $ mismatching $ matching_only $ no_controller $ signal_stores)
+          $ (const triple $ mutants $ hostile_every $ scenarios) $ coverage)

@@ -1,64 +1,10 @@
-(* rapid-sem motion, and the motion options of run, trace and check: --robot, --samples
-   (doc/motion.md, doc/user-guide.md). *)
+(* rapid-sem motion: a run by the machine, and what the robot did drawn (doc/motion.md,
+   doc/user-guide.md). *)
 
 open Cmdliner
 module M = Rapid_semantics.Machine
 module MP = Rapid_installed.Motion_routines
 module MM = Rapid_motion_model
-
-let robot_arg =
-  Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE"
-         ~doc:"The robot description (doc/motion.md, \"The robot description\"); default the built-in ABB IRB 120.")
-
-let samples_arg =
-  Arg.(value & opt (some float) None & info [ "samples" ] ~docv:"HZ"
-         ~doc:"With JSON output: add a tcp-sample event HZ times per second of virtual time (doc/trace-format.md).")
-
-(* The robot of --robot; an error is FILE:LINE:COL: robot description error: MESSAGE. *)
-let load_robot = function
-  | None -> Ok MM.Robot.irb120
-  | Some file -> Result.map_error MM.Robot.error_to_string (MM.Robot.load file)
-
-let check_samples = function
-  | Some hz when not (hz > 0. && hz <= 10_000.) -> Error "rapid-sem: --samples takes a rate above 0 and at most 10000 Hz"
-  | _ -> Ok ()
-
-(* TCP samples at k / HZ s, each once, as the clock passes them; at most [max_samples] in a run
-   (doc/motion.md, "Memory"): a step of the clock may pass many, and they are built before they
-   are written. *)
-let max_samples = 200_000
-
-type sampler = { hz : float; mutable next : int; mutable capped : bool }
-
-let sampler hz = { hz; next = 0; capped = false }
-
-let samples s motion ~until =
-  let p = MP.planner motion in
-  let out = ref [] in
-  let rec go () =
-    let t = float_of_int s.next /. s.hz in
-    if t <= until +. 1e-9 && s.next < max_samples then begin
-      let joints = match MM.Planner.joints_at p t with Ok q -> Some q | Error _ -> None in
-      out := Motion_json.sample t (MM.Planner.pose_at p t) joints :: !out;
-      s.next <- s.next + 1; go ()
-    end in
-  go ();
-  if s.next >= max_samples && not s.capped then begin
-    s.capped <- true;
-    Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!"
-      max_samples
-  end;
-  List.rev !out
-
-(* At the end of a run that ended: the samples until the robot stands still. *)
-let final_samples s cfg (w : Rapid_run.Run.world) =
-  let motion = w.motion in
-  let stop = MM.Planner.finished_by (MP.planner motion) in
-  let now = Rapid_controller.World.now w.controller in
-  (* Not beyond --max-time: a move of 1E30 s is planned, not sampled. *)
-  let stop = Float.min stop (Rapid_controller.World.max_time w.controller) in
-  if M.outcome cfg = Rapid_runtime.Outcome.Ended && Float.is_finite stop then samples s motion ~until:(Float.max now stop)
-  else samples s motion ~until:now
 
 (* ------------------------------------------------------------------ rapid-sem motion *)
 
@@ -80,7 +26,8 @@ let collect (w : Rapid_run.Run.world) =
      | "wait-start" -> wait_from := Some (now ())
      | "wait-done" | "wait-timeout" -> (
          match !wait_from with
-         | Some t0 -> marks := { lane = Waits; m_from = t0; m_to = now (); m_label = !label } :: !marks; wait_from := None
+         | Some t0 ->
+             marks := { lane = Waits; m_from = t0; m_to = now (); m_label = !label } :: !marks; wait_from := None
          | None -> ())
      | _ -> ());
     List.iter (function
@@ -91,25 +38,34 @@ let collect (w : Rapid_run.Run.world) =
                 traps := rest; marks := { lane = Traps; m_from = t0; m_to = time; m_label = trap } :: !marks
             | _ -> ())
         | Rapid_runtime.Event.Controller (Signal_changed { time; signal; value }) ->
-            marks := { lane = Signals; m_from = time; m_to = time; m_label = Printf.sprintf "%s=%g" signal value } :: !marks
-        | Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
+            let m_label = Printf.sprintf "%s=%g" signal value in
+            marks := { lane = Signals; m_from = time; m_to = time; m_label } :: !marks
+        | Rapid_runtime.Event.Motion (Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
         | _ -> ()) events;
-    if rule = "wait-start" && not (List.exists (function Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned _) -> true | _ -> false) events) then
+    let planned = function Rapid_runtime.Event.Motion (Segment_planned _) -> true | _ -> false in
+    if rule = "wait-start" && not (List.exists planned events) then
       label := "wait"
   in
   (observe, fun () -> List.rev !marks)
 
-let cmd ~start_machine ~finish ~common_run_args ~controller_args =
-  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = common_run_args in
+let cmd =
+  let files, entry, max_steps, allow_unknown, max_depth, retry_limit = Run_args.common_run_args in
   let out name doc = Arg.(value & opt (some string) None & info [ name ] ~docv:"FILE" ~doc) in
   let svg = out "svg" "Write the TCP path (top and side views) as SVG to FILE." in
-  let timeline = out "timeline" "Write the timeline (moves, corner paths, TCP speed, the program's waits, traps and signal changes) as SVG to FILE." in
+  let timeline = out "timeline" "Write the timeline (moves, corner paths, TCP speed, the program's waits, traps and \
+                                 signal changes) as SVG to FILE." in
   let csv = out "csv" "Write TCP and axis samples as CSV to FILE (t,x,y,z,q1,q2,q3,q4,j1..j6)." in
-  let step_ = Arg.(value & opt float 0.01 & info [ "csv-step" ] ~docv:"SECONDS" ~doc:"The CSV's sampling step (default 0.01 s).") in
+  let step_ = Arg.(value & opt float 0.01 & info [ "csv-step" ] ~docv:"SECONDS"
+                     ~doc:"The CSV's sampling step (default 0.01 s).") in
   let run files entry max_steps allow_unknown max_depth retry_limit controller robot svg timeline csv csv_step =
-    if not (csv_step > 0. && csv_step <= 1000.) then (prerr_endline "rapid-sem: --csv-step takes a step above 0 and at most 1000 s"; 2)
+    if not (csv_step > 0. && csv_step <= 1000.) then (prerr_endline "rapid-sem: --csv-step takes a step above 0 and at \
+                                                                     most 1000 s"; 2)
     else
-    start_machine ?robot files entry allow_unknown max_depth retry_limit controller @@ fun cfg w ->
+    Cli.guard @@ fun () ->
+    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    match Rapid_run.Run_setup.start_machine ~history:true ~notify:Cli.notify options files ~entry with
+    | Error f -> Cli.failure f
+    | Ok (cfg, w) ->
     let observe, marks = collect w in
     let rec loop () =
       if M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < max_steps then begin
@@ -134,15 +90,19 @@ let cmd ~start_machine ~finish ~common_run_args ~controller_args =
     List.iter (function
         | Ok path -> Printf.eprintf "rapid-sem: wrote %s\n" path
         | Error m -> Printf.eprintf "rapid-sem: cannot write: %s\n" m) written;
-    let status = finish (M.outcome cfg) (M.steps cfg) ~max_steps in
+    let status = Cli.finish (M.outcome cfg) (M.steps cfg) ~max_steps in
     if status = 0 && List.exists Result.is_error written then 2 else status
   in
   let doc = "run a task and draw its motion: the TCP path, the timeline, samples" in
   let man = [
     `S Manpage.s_description;
-    `P "Runs the task as $(b,rapid-sem run --engine machine) does (its output on standard output), then writes what the robot did: $(b,--svg) the TCP path in the world frame (top view x-y, side view x-z), $(b,--timeline) the moves, corner paths and TCP speed against virtual time with the program's waits, traps and signal changes below, $(b,--csv) samples of the TCP pose, the axis angles and the external axes (doc/motion.md, \"Output\"). Each file written is named on standard error.";
+    `P "Runs the task as $(b,rapid-sem run --engine machine) does (its output on standard output), then writes what \
+        the robot did: $(b,--svg) the TCP path in the world frame (top view x-y, side view x-z), $(b,--timeline) \
+        the moves, corner paths and TCP speed against virtual time with the program's waits, traps and signal \
+        changes below, $(b,--csv) samples of the TCP pose, the axis angles and the external axes (doc/motion.md, \
+        \"Output\"). Each file written is named on standard error.";
     `S Manpage.s_exit_status; `P "As $(b,rapid-sem run); 2 also when a file cannot be written.";
   ] in
   Cmd.v (Cmd.info "motion" ~doc ~man)
-    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ controller_args
-          $ robot_arg $ svg $ timeline $ csv $ step_)
+    Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
+          $ Run_args.robot_arg $ svg $ timeline $ csv $ step_)

@@ -5,9 +5,9 @@
 module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8 *)
 open Rapid_syntax
 
-let schema = "rapid-sem/2"
+let schema = Rapid_oracle.Event_json.schema
 
-let start_line : Yojson.Safe.t = `Assoc [ ("event", `String "start"); ("schema", `String schema) ]
+let start_line : Yojson.Safe.t = Rapid_oracle.Event_json.start ()
 
 (* The class as spec/README.md's @expect spells it. *)
 let class_word = function
@@ -43,7 +43,7 @@ let stream_of_failure : Rapid_load.Session.failure -> Yojson.Safe.t list option 
 
 open Cmdliner
 
-let cmd ~read_io ~io_arg =
+let cmd =
   let files = Arg.(non_empty & pos_all string [] & info [] ~docv:"FILE" ~doc:"RAPID module files: one task buffer.") in
   let stage =
     Arg.(value & opt (enum [ ("parse", `Parse); ("check", `Check) ]) `Check & info [ "stage" ] ~docv:"STAGE"
@@ -55,7 +55,7 @@ let cmd ~read_io ~io_arg =
   let allow_unknown = Arg.(value & flag & info [ "allow-unknown" ] ~doc:"Unknown names are warnings.") in
   let run files stage strict allow_unknown io =
     let print l = List.iter (fun j -> print_endline (Json_text.to_string j)) l in
-    match read_io io with
+    match Rapid_run.Run_setup.read_io io with
     | Error m -> prerr_endline m; 2
     | Ok io -> (
         let options = { Parse.default_options with strict } in
@@ -76,7 +76,10 @@ let cmd ~read_io ~io_arg =
   let doc = "say whether a task buffer is accepted, as an event stream (the oracle's protocol)" in
   let man = [
     `S Manpage.s_description;
-    `P "Writes the start line of $(b,run --json) and one end object: $(b,{\"event\":\"end\",\"outcome\":\"accepted\"}), or $(b,\"refused\") with the first error's class (as spec/README.md's @expect spells it), region and message. $(b,rapid-sem spec --impl) asks implementations this question for the cases of formats 1 and 2 (doc/oracle.md).";
+    `P "Writes the start line of $(b,run --json) and one end object: \
+        $(b,{\"event\":\"end\",\"outcome\":\"accepted\"}), or $(b,\"refused\") with the first error's class (as \
+        spec/README.md's @expect spells it), region and message. $(b,rapid-sem spec --impl) asks implementations \
+        this question for the cases of formats 1 and 2 (doc/oracle.md).";
     `S Manpage.s_exit_status; `P "0 accepted; 2 refused.";
   ] in
-  Cmd.v (Cmd.info "verdict" ~doc ~man) Term.(const run $ files $ stage $ strict $ allow_unknown $ io_arg)
+  Cmd.v (Cmd.info "verdict" ~doc ~man) Term.(const run $ files $ stage $ strict $ allow_unknown $ Run_args.io_arg)

@@ -39,4 +39,5 @@ let () =
       Test_realprog2.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
+      Test_drivers.suite;
     ]

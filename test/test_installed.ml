@@ -44,11 +44,11 @@ let errors_stay_per_use () =
   Alcotest.(check int) "one error per routine" 2 (List.length (Rapid_typing.Check.errors result));
   Alcotest.(check (option string)) "no summary" None (Rapid_typing.Check.unknown_summary result)
 
-(* A stubbed function gives its result type's initial value (OpMode: a symnum, 0), and the run
+(* A stubbed function gives its result type's initial value (RunMode: a symnum, 0), and the run
    goes on. *)
 let stubbed_record_result () =
   let m = parse "r.mod"
-      "MODULE r\n  VAR symnum m;\n  PROC main()\n    m := OpMode();\n    TPWrite \"m=\" \\Num:=m;\n  ENDPROC\nENDMODULE\n" in
+      "MODULE r\n  VAR symnum m;\n  PROC main()\n    m := RunMode();\n    TPWrite \"m=\" \\Num:=m;\n  ENDPROC\nENDMODULE\n" in
   match Rapid_load.Session.load_modules [ m ] with
   | Error _ -> Alcotest.fail "does not load"
   | Ok loaded -> (
@@ -64,7 +64,7 @@ let stubbed_record_result () =
                 | _ -> ()) (snd (M.step cfg))
           done;
           Alcotest.(check bool) "ended" true (M.outcome cfg = Ended);
-          Alcotest.(check (list string)) "stubbed" [ "OpMode" ] !stubbed;
+          Alcotest.(check (list string)) "stubbed" [ "RunMode" ] !stubbed;
           Alcotest.(check (list string)) "output" [ "m=0" ] !out)
 
 (* Source ids are reused after 1023 files; the installed modules, parsed once per process, keep

@@ -1,7 +1,8 @@
 (* The layers of doc/architecture.md, checked from the dune files: the definition (lib/semantics)
-   links neither the controller, the motion model, unix nor threads, and the second engine
-   (lib/closure) cannot name the machine. A library's dependencies are read from its dune file's
-   (libraries ...) field, and followed through the project's own libraries. *)
+   links neither the controller, the motion model, unix nor threads, the second engine
+   (lib/closure) cannot name the machine, and the oracle (lib/oracle) names neither engine. A
+   library's dependencies are read from its dune file's (libraries ...) field, and followed
+   through the project's own libraries. *)
 
 let read path =
   let ic = open_in_bin path in
@@ -54,6 +55,8 @@ let layers () =
     [ "rapid_controller"; "rapid_motion_model"; "rapid_installed"; "unix"; "threads"; "threads.posix";
       "rapid_semantics"; "rapid_closure" ] table;
   forbidden "rapid_closure" [ "rapid_semantics"; "rapid_controller"; "rapid_motion_model"; "rapid_installed" ] table;
+  (* The oracle compares implementations: its encoder of the events names neither engine. *)
+  forbidden "rapid_oracle" [ "rapid_semantics"; "rapid_closure" ] table;
   (* And the checker itself sees a dependency: the run library links both engines. *)
   Alcotest.(check bool) "a link is seen through a library" true
     (List.mem "rapid_controller" (links table "rapid_run") && List.mem "rapid_semantics" (links table "rapid_run"))

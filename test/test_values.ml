@@ -603,14 +603,15 @@ let test_table () =
       | Some (_, _, count) -> Alcotest.(check int) (name ^ ": parameters") count arity)
     L.functions;
   (* Every function of the string and math modules is here, and the geometry functions of
-     the motion module (StrToVal apart: its Val is INOUT). *)
+     the motion module (StrToVal apart: its Val is INOUT), or in System_routines (DecToHex). *)
   let geometry = [ "PoseMult"; "PoseInv"; "PoseVect"; "OrientZYX"; "EulerZYX"; "NOrient" ] in
   List.iter
     (fun (m, name, _) ->
       let wanted =
         (m = "Installed_string" || m = "Installed_math" || List.mem name geometry) && name <> "StrToVal"
       in
-      if wanted && L.find name = None then Alcotest.failf "%s (%s) has no implementation" name m)
+      if wanted && L.find name = None && not (Rapid_installed.System_routines.modelled name) then
+        Alcotest.failf "%s (%s) has no implementation" name m)
     installed;
   let call name args = (Option.get (L.find name)) args in
   ok "StrFind by name, \\NotInSet present" (n "1")

@@ -19,8 +19,7 @@ type wait_end = Finished of Rapid_observable.Wait.raised option | Halted of Outc
    [spend] charges it, so that --max-steps bounds a wait as it bounds the machine's (issue 21). *)
 let wait ?yield (host : Host.t) (wt : Rapid_observable.Wait.t) ~first_poll ~condition ~serve ~observe ~spend =
   let now = host.now () in
-  let period = Option.value wt.poll ~default:0. in
-  let next_poll = ref (match first_poll with Some t -> Float.max t (now +. period) | None -> now +. period) in
+  let next_poll = ref (Rapid_observable.Wait.first_poll wt ~now first_poll) in
   let finish timed_out = Finished (wt.finish ~timed_out) in
   (* ch. 14: whether this turn (of several tasks) began at this wait's yield and nothing
      happened since: then the turn was the yield alone, which wakes no other task. *)

@@ -737,6 +737,7 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
         let l = location place kind and bound = effective_kind caller place kind in
         match p.p_mode with
         | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
+        | Mode_pers when Late_binding.unresolved place -> l   (* ERR_REFUNKDAT (R-5.2-unknown1) *)
         | Mode_pers -> fun a -> (match bound a with
             | Ref_variable | Ref_other -> fail st ~at "ERR_ARGNOTPER" | _ -> l a)
         | _ -> l
@@ -1152,7 +1153,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
         if st.all_events then st.emit (Event.Stubbed { routine = callee.name; at = call_at })
       end;
       (match callee.kind with
-       | Function -> V.default_of (Option.value callee.stub_result ~default:V.S_num)
+       | Function -> IR.stub_value callee
        | Procedure | Trap -> no_value)
   | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
   | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
@@ -1257,7 +1258,7 @@ and late_target st (caller : routine) ~at ~call_at name (args : late_argument ar
   in
   let about = name in
   match candidates with
-  | [] -> fun _ -> fail ~about st ~at "ERR_REFUNKPRC"
+  | [] -> let error = Late_binding.unknown_procedure_error name in fun _ -> fail ~about st ~at error
   | k :: _ ->
       let r = routines.(k) in
       if r.kind <> Procedure then fun _ -> fail ~about st ~at "ERR_CALLPROC"
@@ -1594,7 +1595,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let n = int_of_float x in
           let e = { name = string_of_int n; number = n; at; about = None; chain = None } in
           emit_raised st e;
-          raise (Raised e)
+          (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves the
+             routine, as RAISE; makes the error in hand leave it (rule raise-new). *)
+          if Option.is_some a.ext.current then raise (Leaving e) else raise (Raised e)
         else fail st ~at "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->

@@ -46,7 +46,6 @@ let robot_of (run : Spec_case.run) =
 
 (* The run's output lines and outcome, by the chosen engine. *)
 let execute engine case (run : Spec_case.run) ~io program =
-  let module M = Rapid_semantics.Machine in
   let limits = { Rapid_runtime.Limits.default with
                  retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
@@ -59,27 +58,14 @@ let execute engine case (run : Spec_case.run) ~io program =
   let services = Rapid_controller.Services.create ~sandbox () in
   Rapid_controller.World.set_services world services;
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
-  match engine with
-  | Machine -> (
-      match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_installed.Motion_routines.create ?robot () in
-          let host = (Rapid_run.Run.setup ~controller:world ~motion ()).host in
-          M.start ~limits ~stub_unmodelled:case.Spec_case.stub_unmodelled ~host program ~entry:run.entry) with
-      | Error m -> release (); Error m
-      | Ok cfg ->
-          while M.outcome cfg = Running && M.steps cfg < max_steps do
-            List.iter collect (snd (M.step cfg))
-          done;
-          release ();
-          Ok (List.rev !output, M.outcome cfg))
-  | Closure -> (
-      match Result.bind (robot_of run) (fun robot ->
-          let motion = Rapid_installed.Motion_routines.create ?robot () in
-          let host = (Rapid_run.Run.setup ~controller:world ~motion ()).host in
-          Rapid_closure.Closure_engine.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled
-            ~all_events:false ~host ~on_event:collect program ~entry:run.entry) with
-      | Error m -> release (); Error m
-      | Ok r -> release (); Ok (List.rev !output, r.outcome))
+  let module E = (val Rapid_run.Run.engine (match engine with Machine -> `Machine | Closure -> `Closure)) in
+  match Result.bind (robot_of run) (fun robot ->
+      let motion = Rapid_installed.Motion_routines.create ?robot () in
+      let host = (Rapid_run.Run.setup ~controller:world ~motion ()).host in
+      E.run ~limits ~fuel:max_steps ~stub_unmodelled:case.Spec_case.stub_unmodelled ~all_events:false ~host
+        ~on_event:collect program ~entry:run.entry) with
+  | Error m -> release (); Error m
+  | Ok r -> release (); Ok (List.rev !output, r.outcome)
 
 let rec run_program engine case (run : Spec_case.run) ~io program =
   match Loopback_lock.exclusive case (fun () -> execute engine case run ~io program) with
@@ -134,7 +120,6 @@ let compare_static case expected reports =
 
 (* Format 4: several tasks (@task), run as rapid-sem run --task does, by either engine. *)
 let run_tasks engine case expected (run : Spec_case.run) =
-  let module M = Rapid_semantics.Machine in
   let module TS = Rapid_semantics.Task_set in
   let module CT = Rapid_closure.Closure_tasks in
   let module TL = Rapid_run.Task_load in
@@ -165,17 +150,10 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let motion = Rapid_installed.Motion_routines.create ?robot () in
   let stub_unmodelled = case.Spec_case.stub_unmodelled and allow_unknown = case.allow_unknown in
   let seed = run.schedule and motion_task = run.motion_task in
-  (* The run's output and outcome, by the chosen engine. *)
-  let loaded = TL.load ~allow_unknown ~io ?motion_task ~world ~motion specs in
-  let started start =
-    match loaded with
-    | Error f -> Error f
-    | Ok (l : TL.loaded) ->
-        Result.map_error (fun m -> TL.Refused m)
-          (Result.map (fun t -> (t, l.warnings)) (start (List.map (fun (t : TL.task) -> t.rules) l.tasks) l.links)) in
+  (* The run's output and outcome, by the chosen engine, loaded and started as rapid-sem run does (Run). *)
   let result = match engine with
     | Machine ->
-        Result.map (fun (ts, w) -> ((fun () ->
+        Result.map (fun (ts, _) -> (fun () ->
             let output = ref [] in
             let rec loop () =
               if TS.steps ts < max_steps then
@@ -186,20 +164,24 @@ let run_tasks engine case expected (run : Spec_case.run) =
                     loop ()
             in
             loop ();
-            (List.rev !output, TS.outcome ts)), w)) (started (TS.start ~limits ~stub_unmodelled ?seed))
+            (List.rev !output, TS.outcome ts)))
+          (Rapid_run.Run.machine_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
+             ~controller:world ~motion specs)
     | Closure ->
-        Result.map (fun (ct, w) -> ((fun () ->
+        Result.map (fun (ct, _) -> (fun () ->
             let output = ref [] in
             let r = CT.run ~fuel:max_steps ~all_events:false
                 ~on_event:(fun _ -> function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) ct in
-            (List.rev !output, r.outcome)), w)) (started (CT.start ~limits ~stub_unmodelled ?seed)) in
+            (List.rev !output, r.outcome)))
+          (Rapid_run.Run.closure_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
+             ~controller:world ~motion specs) in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
     | Error (Load (_, Static reports)) -> compare_static case expected reports
     | Error (Load (_, Internal m)) | Error (Refused m) -> fail case m
     | Ok _ when expected <> Spec_case.Accepted -> accepted case expected
-    | Ok (go, _) -> judge case run (go ())
+    | Ok go -> judge case run (go ())
   in
   release (); verdict
 

@@ -74,21 +74,13 @@ let tasks_refused : TL.failure -> F.failure = function
 let tasks_world (c : Fuzz_case.t) io =
   (Rapid_controller.World.create ?max_time:c.options.max_time io, Rapid_installed.Motion_routines.create ())
 
-(* Loaded as for either engine, and started by one. *)
-let start_tasks (c : Fuzz_case.t) io specs start =
-  let world, motion = tasks_world c io in
-  match TL.load ~allow_unknown:c.options.allow_unknown ~io ~world ~motion specs with
-  | Error f -> Error (tasks_refused f)
-  | Ok l -> (
-      match start (List.map (fun (t : TL.task) -> t.rules) l.tasks) l.links with
-      | Error m -> Error (F.Refused m)
-      | Ok t -> Ok t)
-
+(* Loaded and started as rapid-sem run --task does (Run.machine_tasks). *)
 let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  match start_tasks c io specs (TS.start ~limits:(Fuzz_case.limits c.options)
-                                  ~stub_unmodelled:c.options.stub_unmodelled ~observe:true ?seed) with
-  | Error f -> Error f
-  | Ok ts ->
+  let world, motion = tasks_world c io in
+  match Rapid_run.Run.machine_tasks ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
+          ~observe:true ?seed ~allow_unknown:c.options.allow_unknown ~io ~controller:world ~motion specs with
+  | Error f -> Error (tasks_refused f)
+  | Ok (ts, _) ->
       let add, events = streams () in
       let rec loop () =
         if TS.steps ts < max_steps then
@@ -105,10 +97,11 @@ let run_tasks ~max_steps (c : Fuzz_case.t) io specs ~seed =
 (* The same tasks by the closure engine (Closure_tasks), in the same kind of world. [fuel] is
    each task's there, the whole run's for the machine: runs cut short are not compared. *)
 let run_tasks_closure ~max_steps (c : Fuzz_case.t) io specs ~seed =
-  match start_tasks c io specs (Rapid_closure.Closure_tasks.start ~limits:(Fuzz_case.limits c.options)
-                                  ~stub_unmodelled:c.options.stub_unmodelled ?seed) with
-  | Error f -> Error f
-  | Ok ct ->
+  let world, motion = tasks_world c io in
+  match Rapid_run.Run.closure_tasks ~limits:(Fuzz_case.limits c.options) ~stub_unmodelled:c.options.stub_unmodelled
+          ?seed ~allow_unknown:c.options.allow_unknown ~io ~controller:world ~motion specs with
+  | Error f -> Error (tasks_refused f)
+  | Ok (ct, _) ->
       let add, events = streams () in
       let r = Rapid_closure.Closure_tasks.run ~fuel:max_steps ~observe:true ~on_event:add ct in
       Ok (observed (events ()) r.outcome

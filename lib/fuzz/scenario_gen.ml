@@ -50,7 +50,7 @@ let unknown rs =
 (* Installed routines whose behaviour rapid-sem does not model (the stub cases of spec/11-installed):
    the run ends there, or under --stub-unmodelled they run as no-ops (R-13-i). *)
 let unmodelled rs =
-  let calls = [ "TPReadFK zn1, \"Go on?\", \"Yes\", \"No\", \"\", \"\", \"\";"; "zn1 := OpMode();";
+  let calls = [ "TPReadFK zn1, \"Go on?\", \"Yes\", \"No\", \"\", \"\", \"\";"; "zn1 := RunMode();";
                 "zb1 := IsSysId(\"6400-1234\");"; "zs1 := Type(zn1);" ] in
   let body = List.concat (List.init (int_in rs 1 3) (fun _ -> [ pick rs calls; "TPWrite \"n \" \\Num:=zn1;" ])) in
   one ~options:{ Fuzz_case.default_options with stub_unmodelled = chance rs 0.6 }

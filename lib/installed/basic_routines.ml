@@ -60,8 +60,7 @@ let dim args =
 
 let specials = [
   "TPWrite"; "TPErase"; "ErrWrite"; "Present"; "Dim"; "IsVar"; "IsPers"; "Incr"; "Decr"; "Add";
-  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "CallByVar"; "StrToVal"; "BitSet"; "BitClear";
-  "BitSetDnum"; "BitClearDnum";
+  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "CallByVar"; "StrToVal";
 ]
 
 let modelled name =
@@ -96,14 +95,6 @@ let call ctx name args =
       | Some d -> update args (fun v -> add_number v d)
       | None -> Failed "ERR_NOTPRES")
   | "clear" -> update args zero_like
-  (* BitSet, BitClear and their dnum forms change their first argument (R-13-h). *)
-  | "bitset" | "bitclear" | "bitsetdnum" | "bitcleardnum" as op -> (
-      let f = match op with
-        | "bitset" -> Library.bit_set | "bitclear" -> Library.bit_clear
-        | "bitsetdnum" -> Library.bit_set_dnum | _ -> Library.bit_clear_dnum in
-      match value_of args.(1) with
-      | Some p -> update args (fun v -> f v p)
-      | None -> Failed "ERR_NOTPRES")
   | "bookerrno" -> (
       match args.(0) with
       | Location (box, i, _) -> box.(i) <- V.num (float_of_int (ctx.book_error ())); Returned None

@@ -42,6 +42,9 @@ let bodies = [
   { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
     answer = (fun ~standstill ctx _ name args ->
         Option.map (fun r -> (r, no_effects)) (Service_routines.call ~standstill ctx name args)) };
+  { module_name = "system"; reach = (fun _ -> Values); claims = (fun _ -> System_routines.modelled);
+    answer = (fun ~standstill:_ ctx motion name args ->
+        Option.map (fun r -> (r, no_effects)) (System_routines.call ctx motion name args)) };
   { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
     answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
 ]

@@ -11,3 +11,7 @@ type t = {
 }
 
 let default_poll_rate = 0.1
+
+let first_poll wait ~now motion =
+  let period = Option.value wait.poll ~default:0. in
+  match motion with Some t -> Float.max t (now +. period) | None -> now +. period

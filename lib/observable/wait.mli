@@ -24,3 +24,8 @@ type t = {
 
 val default_poll_rate : float
 (** WaitUntil's \PollRate when absent: 0.1 s (installed-facts.md section 4, UNCERTAIN). *)
+
+val first_poll : t -> now:float -> float option -> float
+(** When a wait begun [now] first evaluates its condition (WaitUntil, §4 of ABB's WaitUntil): one
+    poll period on, or later when the motion gives a later time (\InPos: when the robot stands
+    still, R-4.1-f). Both engines start their waits with it. *)

@@ -50,3 +50,5 @@ let condition_argument entry (callee : Ir.routine) (arguments : Ir.argument arra
           if same p.p_name name && i < Array.length arguments then
             match arguments.(i) with Ir.By_value e -> found := Some e | _ -> ()) callee.parameters;
       !found
+
+let stub_value (callee : Ir.routine) = Value.default_of (Option.value callee.stub_result ~default:Value.S_num)

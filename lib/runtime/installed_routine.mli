@@ -64,3 +64,7 @@ val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> 
 
 val condition_argument : entry -> Ir.routine -> Ir.argument array -> Ir.expr option
 (** The expression given for the entry's [condition] parameter, when it has one. *)
+
+val stub_value : Ir.routine -> Value.t
+(** What a function rapid-sem does not model gives under --stub-unmodelled: the initial value of
+    its result type (§2.22, doc/rulings.md R-13-i). *)

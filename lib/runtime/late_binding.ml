@@ -41,6 +41,43 @@ let aggregate_shape (p : Ir.parameter) =
       match Value.shape_of_type t with s -> Some s | exception Invalid_argument _ -> None)
   | _ -> None
 
+(* §2.3: an identifier is a letter followed by letters, digits and '_', at most 32 characters,
+   and no reserved word (§2.4); the letters of §2.1 are A..Z, a..z and the Latin-1 letters
+   À..Ö, Ø..ö, ø..ÿ. The bytes are read as UTF-8 where they are valid, as Latin-1 elsewhere (a
+   string of a Latin-1 module, R-2.1-b). *)
+let is_identifier (s : string) =
+  let chars = Utf8_text.characters ~latin1:false s in
+  let code c =
+    match String.length c with
+    | 1 -> Char.code c.[0]
+    | 2 -> ((Char.code c.[0] land 0x1F) lsl 6) lor (Char.code c.[1] land 0x3F)
+    | _ -> -1 in
+  let letter c =
+    let k = code c in
+    (k >= 0x41 && k <= 0x5A) || (k >= 0x61 && k <= 0x7A)
+    || (k >= 0xC0 && k <= 0xFF && k <> 0xD7 && k <> 0xF7) in
+  let digit c = let k = code c in k >= 0x30 && k <= 0x39 in
+  let n = Array.length chars in
+  n >= 1 && n <= Rapid_syntax.Lexer.max_identifier_length
+  && letter chars.(0)
+  && Array.for_all (fun c -> letter c || digit c || c = "_") chars
+  && not (Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii s))
+
+(* §4.6: "name2", or "name1:name2" (procedure name2 of module name1). *)
+let is_procedure_name name =
+  match String.split_on_char ':' name with
+  | [ p ] -> is_identifier p
+  | [ m; p ] -> is_identifier m && is_identifier p
+  | _ -> false
+
+let unknown_procedure_error name = if is_procedure_name name then "ERR_REFUNKPRC" else "ERR_CALLPROC"
+
+(* A place whose name is neither declared nor installed (--allow-unknown). *)
+let rec unresolved : Ir.place -> bool = function
+  | Unresolved _ -> true
+  | Element (p, _) | Component (p, _) -> unresolved p
+  | Whole _ -> false
+
 let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
   let n = Array.length r.parameters in
   let bound = Array.make n Ir.Absent in
@@ -92,6 +129,11 @@ let bind (r : Ir.routine) ~kind (args : Ir.late_argument array) =
             | None -> access "ERR_ARGNOTVAR"; By_value e)
         | Mode_pers -> (
             match reference () with
+            | Some place when unresolved place ->
+                (* R-5.2-unknown1: a name neither declared nor installed (--allow-unknown) is
+                   unknown, not "not a persistent": binding it raises ERR_REFUNKDAT, as a VAR
+                   parameter's would. *)
+                By_reference (place, Ref_persistent)
             | Some place -> (
                 match kind place a.late_kind with
                 | Ref_persistent -> By_reference (place, Ref_persistent)

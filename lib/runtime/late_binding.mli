@@ -22,6 +22,21 @@ val bind :
     PERS or INOUT one (§2.16).
     [Error "ERR_ARGNOTVAR"] when a VAR or INOUT parameter gets something other than a variable
     (a constant, a read-only variable, a persistent for VAR, any other expression), and
-    [Error "ERR_ARGNOTPER"] when a PERS parameter gets something other than a persistent: the
+    [Error "ERR_ARGNOTPER"] when a PERS parameter gets a known object that is not a persistent: the
     "-" cells of the access-mode table of §5.2, with the errors chapter 12 names for them
     (doc/rulings.md R-4.6-b). *)
+
+val is_procedure_name : string -> bool
+(** §4.6: the string is "name2" or "name1:name2", each an identifier of §2.3 (a letter, then
+    letters, digits and '_', at most 32 characters, no reserved word). *)
+
+val unknown_procedure_error : string -> string
+(** The error of a late-bound name (or CallByVar's) that denotes no routine (doc/rulings.md
+    R-4.6-name1): ["ERR_REFUNKPRC"] for a procedure name that is unknown (ch. 12: "在链接时或运行
+    时(后期绑定),未知的无返回值程序的引用"), ["ERR_CALLPROC"] for a string that is no procedure
+    name at all, the "syntax" of ch. 12's "运行时(后期绑定)的无返回值程序调用错误 (语法,非无返回值
+    程序)". *)
+
+val unresolved : Ir.place -> bool
+(** A place whose name is neither declared nor installed (--allow-unknown): binding it raises
+    ERR_REFUNKDAT, whatever the parameter's mode (doc/rulings.md R-5.2-unknown1). *)

@@ -178,9 +178,7 @@ let call_primitive cfg (cs : call_state) name =
         | Some entry when wait.poll <> None -> Installed_routine.condition_argument entry cs.callee cs.call.arguments
         | _ -> None in
       let now = cfg.host.now () in
-      let next_poll = match first_poll with
-        | Some t -> Float.max t (now +. Option.value wait.poll ~default:0.)
-        | None -> now +. Option.value wait.poll ~default:0. in
+      let next_poll = Rapid_observable.Wait.first_poll wait ~now first_poll in
       push cfg (K_wait { wait; cond; next_poll });
       cfg.focus <- F_next;
       (Rule.Wait_start, List.rev !events)
@@ -199,7 +197,9 @@ let call_primitive cfg (cs : call_state) name =
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
-      | None -> raise_ ~about:target cfg "ERR_REFUNKPRC"; (Rule.Call_by_var_unknown, List.rev !events)
+      | None ->
+          raise_ ~about:target cfg (Late_binding.unknown_procedure_error target);
+          (Rule.Call_by_var_unknown, List.rev !events)
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           raise_ ~about:target cfg "ERR_CALLPROC"; (Rule.Call_by_var_mismatch, List.rev !events)
       | Some i -> (
@@ -215,7 +215,7 @@ let call_primitive cfg (cs : call_state) name =
       let first = not (Hashtbl.mem cfg.stubbed key) in
       if first then Hashtbl.replace cfg.stubbed key ();
       (match cs.callee.kind with
-       | Function -> cfg.focus <- F_value (V.default_of (Option.value cs.callee.stub_result ~default:V.S_num))
+       | Function -> cfg.focus <- F_value (Installed_routine.stub_value cs.callee)
        | Procedure | Trap -> cfg.focus <- F_next);
       (Rule.Call_stubbed,
        List.rev !events @ (if first then [ Stubbed { routine = cs.callee.name; at = cs.call.call_at } ] else []))
@@ -421,7 +421,7 @@ let late_name cfg args at rest v =
   | V.String name -> (
       let found = late_routine cfg name in
       match found with
-      | None -> raise_ ~about:name cfg "ERR_REFUNKPRC"; (Rule.Call_late_unknown, [])
+      | None -> raise_ ~about:name cfg (Late_binding.unknown_procedure_error name); (Rule.Call_late_unknown, [])
       | Some i when cfg.program.routines.(i).kind <> Procedure ->
           (* §4.6: late binding calls procedures only. *)
           raise_ ~about:name cfg "ERR_CALLPROC"; (Rule.Call_late_mismatch, [])

@@ -35,7 +35,7 @@ type t =
   (* Errors *)
   | Raise_number | Raise | Raise_illegal | Raise_handle | Raise_in_handler | Raise_unhandled
   | Longjump_search_start | Longjump_search | Longjump_found | Raise_propagate | Raise_again
-  | Raise_again_unhandled | Abandon | Abandon_entry | Undo_run | Undo_done | Undo_done_entry
+  | Raise_again_unhandled | Raise_new | Raise_new_unhandled | Abandon | Abandon_entry | Undo_run | Undo_done | Undo_done_entry
   | Retry | Retry_limit | Trynext | Handler_end
   (* The user level *)
   | Raise_to_user_break_off | Raise_to_user_continue | Resume_retry | Resume_trynext
@@ -172,6 +172,8 @@ let name = function
   | Raise_propagate -> "raise-propagate"
   | Raise_again -> "raise-again"
   | Raise_again_unhandled -> "raise-again-unhandled"
+  | Raise_new -> "raise-new"
+  | Raise_new_unhandled -> "raise-new-unhandled"
   | Abandon -> "abandon"
   | Abandon_entry -> "abandon-entry"
   | Undo_run -> "undo-run"
@@ -269,7 +271,9 @@ let after = function
   | Raise -> Some Raise_illegal
   | Raise_illegal -> Some Raise_again
   | Raise_again -> Some Raise_again_unhandled
-  | Raise_again_unhandled -> Some Raise_handle
+  | Raise_again_unhandled -> Some Raise_new
+  | Raise_new -> Some Raise_new_unhandled
+  | Raise_new_unhandled -> Some Raise_handle
   | Raise_handle -> Some Raise_in_handler
   | Raise_in_handler -> Some Raise_unhandled
   | Raise_unhandled -> Some Raise_propagate

@@ -138,6 +138,8 @@ type t =
   | Raise_propagate
   | Raise_again                     (** §4.11, §7.1 *)
   | Raise_again_unhandled
+  | Raise_new                       (** §4.11, §7.1; the dialect's, R-4.11-handler1 *)
+  | Raise_new_unhandled
   | Abandon                         (** §7.2, §1.2 *)
   | Abandon_entry
   | Undo_run

@@ -295,8 +295,18 @@ let value_step cfg v =
       match num_of v with
       | Some f -> (
           match to_int f with
-          | Some n when (n >= 1 && n <= 90) || cfg.host.booked n ->
-              cfg.focus <- F_raise (error_of_number cfg n (region_of_focus_stmt cfg)); (Rule.Raise, [])
+          | Some n when (n >= 1 && n <= 90) || cfg.host.booked n -> (
+              let e = error_of_number cfg n (region_of_focus_stmt cfg) in
+              match cfg.act.handling, cfg.act.caller with
+              | In_handler _, None ->
+                  (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves
+                     the routine, as RAISE; makes the error in hand leave it (raise-again). *)
+                  let rule, events = Recovery.stop cfg e Rule.Raise_new_unhandled in
+                  (rule, Error_raised { name = e.name; number = e.number; at = e.err_at } :: events)
+              | In_handler _, Some _ ->
+                  cfg.focus <- F_search (e, cfg.act.recovery_up);
+                  (Rule.Raise_new, [ Error_raised { name = e.name; number = e.number; at = e.err_at } ])
+              | _ -> cfg.focus <- F_raise e; (Rule.Raise, []))
           | _ -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
       | None -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
   | K_late_name (args, at) :: rest -> Calls.late_name cfg args at rest v

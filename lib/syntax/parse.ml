@@ -178,6 +178,50 @@ module Nesting = struct
                          %d deep (§1.4)" max_nesting)
 end
 
+(* Under --strict, the dialect extension that is a rule of the static semantics rather than of
+   the grammar (doc/dialect.md): §4.11, "包含错误编号的raise语句不得出现在程序的错误处理器中" (a RAISE
+   with an error number may not stand in an error handler), which ABB's own add-ins break. It is
+   refused as the semantic error it is, when the module is read in strict mode; by default the
+   statement is accepted and raises its error from the handler (doc/rulings.md R-4.11-handler1).
+   The walk runs after [Nesting.check]: the tree is at most [max_nesting] deep. *)
+module Strict_raise = struct
+  open Ast
+
+  exception Found of Source.region
+
+  let rec statement (s : statement) =
+    match s.it with
+    | Raise (Some _) -> raise (Found s.at)
+    | If i ->
+        statements i.then_branch;
+        List.iter (fun (c : elseif_clause) ->
+            match c.it with Elseif (_, l) -> statements l | EIT_placeholder -> ()) i.elseifs;
+        Option.iter statements i.else_branch
+    | Compact_if (_, s) -> statement s
+    | For f -> statements f.body
+    | While (_, l) -> statements l
+    | Test t ->
+        List.iter (fun (c : case_clause) ->
+            match c.it with Case (_, l) -> statements l | CSE_placeholder -> ()) t.cases;
+        Option.iter statements t.default
+    | Assignment _ | Procedure_call _ | Return _ | Raise None | Connect _ | Goto _ | Break | Continue
+    | Exit | Retry | Trynext | Label _ | Statement_comment _ | SMT_placeholder -> ()
+
+  and statements l = List.iter statement l
+
+  let check (m : module_declaration) =
+    try
+      List.iter (fun (r : routine_declaration) ->
+          match r.it with
+          | Procedure_declaration { body = b; _ } | Function_declaration { body = b; _ }
+          | Trap_declaration { body = b; _ } -> Option.iter (fun h -> statements h.handler) b.error
+          | Routine_comment _ | RDN_placeholder -> ()) m.routine_declarations
+    with Found at ->
+      refuse Semantic_error at
+        "RAISE with an error number may not stand in an error handler (§4.11); accepted \
+         without --strict (doc/dialect.md)"
+end
+
 (* Menhir's code back end (lib/syntax/dune): with --exn-carries-state its exception carries the
    automaton's state, which is all the messages of parser.messages need; it parses about three
    times as fast as the table back end (bench/README.md). It reads each token's positions from
@@ -233,6 +277,7 @@ let parse_decoded options name (decoded : Decode.t) =
         "the file does not end with a line break (§2.10: a line ends with <newline>); \
          accepted without --strict (doc/dialect.md)";
     Nesting.check m;
+    if options.strict then Strict_raise.check m;
     Ok m
   with
   | Refused d -> Error d

@@ -269,6 +269,9 @@ let rec reference ctx place (r : data_reference) : reference =
       match whole.rtype with
       | Known { base = Record rt; dims = Scalar } -> (
           match T.component rt comp.it with
+          | Some t when t == unknown_type ->
+              (* R-2.14-unknown1: not judged; left unresolved, reaching it is ERR_REFUNKDAT. *)
+              { whole with rtype = Unknown }
           | Some t ->
               let rec index i = function
                 | [] -> i | (n, _) :: rest -> if T.same_name n comp.it then i else index (i + 1) rest in
@@ -351,8 +354,10 @@ and unary_error ctx e op ta =
 (* §3.12: the operator table, row by row. A numeric literal operand takes the type of the other
    operand where that is num or dnum. *)
 and binary ctx place e op a b =
+  let is_aggregate (x : expression) = match x.it with Aggregate _ -> true | _ -> false in
   match op with
   | Equal | Not_equal -> equality ctx place e op a b
+  | _ when is_aggregate a <> is_aggregate b -> aggregate_operand ctx place e op a b
   | _ ->
       let ta = infer ctx place a and tb = infer ctx place b in
       if ta = Unknown || tb = Unknown then Unknown
@@ -374,6 +379,40 @@ and binary ctx place e op a b =
             | None -> binary_error ctx e op ta tb)
         | _ -> binary_error ctx e op ta tb
       end
+
+(* §3.10, R-3.10-operand1: an aggregate operand of an operator other than = and <> has the type
+   the operator table leaves it, given the other operand's type: the one row whose other operand
+   is that type and whose operand in the aggregate's place is a record (pos or orient; an
+   aggregate is no scalar, and arrays are operands of = and <> only). p.rot * [0,0,0,1] is an
+   orient, pos + [1,2,3] a pos, 2 * [1,2,3] a pos. No such row: no context gives the type. *)
+and aggregate_operand ctx place e op a b =
+  let aggregate_left = match a.it with Aggregate _ -> true | _ -> false in
+  let agg, other = if aggregate_left then (a, b) else (b, a) in
+  match infer ctx place other with
+  | Unknown -> loosely_expression ctx place agg; Unknown
+  | t_other ->
+      let other_operands = match t_other with
+        | Numeric_literal -> [ Tables.O_num; Tables.O_dnum ]
+        | t -> Option.to_list (operand_of ctx t) in
+      let record_operand (o : Tables.operand) = o = O_pos || o = O_orient in
+      let rows = List.filter (fun (row : Tables.binary_row) ->
+          let mine, theirs = if aggregate_left then (row.left, row.right) else (row.right, row.left) in
+          row.op = op && record_operand mine && List.mem theirs other_operands) Tables.binary_operators in
+      match rows with
+      | [ row ] -> (
+          let mine = if aggregate_left then row.left else row.right in
+          match type_of_operand ctx mine with
+          | Known t ->
+              check_expression ~sections:"3.12" ctx place agg t;
+              Hashtbl.replace ctx.elab.binary e.at row;
+              type_of_operand ctx row.result
+          | Numeric_literal | Unknown -> Unknown)
+      | _ ->
+          error ctx ~rule:"aggregate-context" ~section:"3.10" agg.at
+            "the data type of this aggregate cannot be determined by its context: no row of the \
+             operator %s takes an aggregate (a pos or orient) with %s" (Tables.operator_symbol op)
+            (type_string t_other);
+          Unknown
 
 and binary_error ctx e op ta tb =
   error ctx ~rule:"operator-types" ~section:"3.12" e.at "the operator %s cannot be applied to %s and %s"
@@ -445,6 +484,7 @@ and equality ctx place e op a b =
    initial values, arguments, RETURN, test values, aggregate members. *)
 and check_expression ?(sections = "2.17") ctx place (e : expression) (expected : T.object_type) =
   match e.it with
+  | _ when is_unknown expected -> loosely_expression ctx place e
   | Aggregate (es, rs) -> aggregate ~sections ctx place e (members es rs) expected
   | Binary ((Plus | Minus | Mul | Div | Int_div | Modulo) as op, a, b)
     when is_scalar expected && expected.base = Dnum -> (
@@ -1002,14 +1042,12 @@ and return ctx place (s : statement) e =
       loosely_expression ctx place e
   | _, _ -> ()
 
-(* §4.11: RAISE with an error number, never in an error handler; RAISE without one, only there. *)
+(* §4.11: RAISE without an error number only in an error handler. RAISE with one "may not stand
+   in an error handler": a dialect extension accepts it there (doc/dialect.md, R-4.11-handler1),
+   and --strict refuses it when the module is read (Parse, rule raise-number-in-handler). *)
 and raise_ ctx place (s : statement) e =
   match e with
-  | Some e ->
-      if place.in_error_handler then
-        error ctx ~rule:"raise-number-in-handler" ~section:"4.11" s.at
-          "RAISE with an error number may not stand in an error handler";
-      check_expression ~sections:"4.11,2.17" ctx place e (T.scalar Num)
+  | Some e -> check_expression ~sections:"4.11,2.17" ctx place e (T.scalar Num)
   | None ->
       if not place.in_error_handler then
         error ctx ~rule:"raise-without-number" ~section:"4.11" s.at
@@ -1505,7 +1543,11 @@ let type_definitions ctx infos =
                         match resolve_type ctx place t with
                         | Some T.Anytype -> None
                         | Some ty -> Some (cn, ty)
-                        | None -> None
+                        | None ->
+                            (* R-2.14-unknown1: a component whose type is unknown (reported: an
+                               error, or a warning under --allow-unknown) stays a component, of
+                               unknown type: its uses are not judged, as an object's would not be. *)
+                            Some (cn, unknown_type)
                       end)) components
       | `Alias _ -> ()) pending;
   (* A record that contains itself, directly or through other records, has no finite value

@@ -1,11 +1,14 @@
 MODULE raise_number_in_handler
 ! @format 2
 ! @section 4.11
-! @expect semantic-error 9:5
-! @description A RAISE with an error number may not appear in an error handler; refused at RAISE.
+! @section 7.1
+! @expect ok
+! @description Dialect (doc/dialect.md, R-4.11-handler1): a RAISE with an error number in an error handler, as ABB's add-ins write it, is accepted without --strict, directly and nested in an IF.
+  CONST errnum ERR_MINE := 12;
   PROC main()
     DebugBreak;
   ERROR
-    RAISE 12;
+    IF ERRNO = ERR_DIVZERO RAISE ERR_MINE;
+    RAISE 13;
   ENDPROC
 ENDMODULE

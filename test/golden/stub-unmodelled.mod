@@ -6,7 +6,7 @@ MODULE client
     TPReadFK answer, "Continue?", "Yes", "No", "", "", "";
     TPReadFK answer, "Continue?", "Yes", "No", "", "", "";
     TPWrite "answer: " \Num:=answer;
-    status := OpMode();
+    status := RunMode();
     TPWrite "status: " \Num:=status;
     IF IsSysId("6400-1234") THEN
       TPWrite "that system";

@@ -1,0 +1,46 @@
+module M = Rapid_semantics.Machine
+module TS = Rapid_semantics.Task_set
+
+type t = {
+  next : unit -> (string option * M.config) option;
+  step : unit -> string * Event.t list;
+  outcome : unit -> Outcome.t;
+  steps : unit -> int;
+  robot : (M.config * Run.world) option;
+  entry_at : Rapid_syntax.Source.region option;
+}
+
+let single max_steps cfg w entry = {
+  next = (fun () -> if M.outcome cfg = Running && M.steps cfg < max_steps then Some (None, cfg) else None);
+  step = (fun () -> M.step cfg);
+  outcome = (fun () -> M.outcome cfg);
+  steps = (fun () -> M.steps cfg);
+  robot = Some (cfg, w);
+  entry_at = Run_drive.entry_region (M.program cfg) entry;
+}
+
+let several max_steps ts (loaded : Task_load.loaded) = {
+  next = (fun () -> if TS.steps ts < max_steps then Option.map (fun (n, c) -> (Some n, c)) (TS.next ts) else None);
+  step = (fun () -> match TS.step ts with Some (_, rule, events) -> (rule, events) | None -> ("", []));
+  outcome = (fun () -> TS.outcome ts);
+  steps = (fun () -> TS.steps ts);
+  robot = Option.map (fun (t : Task_load.task) -> (List.assoc t.rules.name (TS.tasks ts), Run.task_world t))
+      (Run.motion_task loaded);
+  entry_at = None;
+}
+
+let start ?history ~notify (o : Run_options.t) (t : Run_options.tasks) =
+  if t.tasks <> [] then
+    Result.bind (Run_setup.several ?history ~notify o t) (fun s ->
+        Result.map (fun (ts, loaded) -> several o.max_steps ts loaded) (Run_setup.machine_tasks ~notify o t s))
+  else
+    Result.bind (Run_setup.entry t) (fun entry ->
+        Result.map (fun (cfg, w) -> single o.max_steps cfg w entry)
+          (Run_setup.start_machine ?history ~notify o t.files ~entry))
+
+let next t = t.next ()
+let step t = t.step ()
+let outcome t = t.outcome ()
+let steps t = t.steps ()
+let robot t = t.robot
+let entry_at t = t.entry_at

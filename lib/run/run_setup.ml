@@ -1,0 +1,164 @@
+module W = Rapid_controller.World
+module Io = Rapid_controller.Io_config
+module MR = Rapid_installed.Motion_routines
+module Robot = Rapid_motion_model.Robot
+
+type notice =
+  | Inferred_signal of Io.signal
+  | Warnings of Rapid_typing.Report.t list * string option
+  | Stdin_not_saved
+  | Samples_capped of int
+
+type failure =
+  | Usage of string
+  | Refused of Rapid_load.Session.failure
+  | Task_refused of string * Rapid_load.Session.failure
+  | Tasks_refused of string
+  | Cannot_start of { entry : string; reason : string }
+  | Save_failed of string
+
+let read_io = function
+  | None -> Ok Io.empty
+  | Some file -> Io.read_file file
+
+let load_robot = function
+  | None -> Ok Robot.irb120
+  | Some file -> Result.map_error Robot.error_to_string (Robot.load file)
+
+let install_services (s : Run_options.services) world =
+  let module K = Rapid_controller.Sockets in
+  let all parse items = List.fold_left (fun acc s -> match acc, parse s with
+      | Ok l, Ok x -> Ok (l @ x) | (Error _ as e), _ -> e | _, Error e -> Error e) (Ok []) items in
+  match all K.parse_allowed s.net, all K.parse_mapping s.map_address with
+  | Error e, _ -> Error ("--net " ^ e)
+  | _, Error e -> Error ("--map-address " ^ e)
+  | _ when Option.fold ~none:false ~some:(fun q -> q < 0) s.fs_quota -> Error "--fs-quota: a number of bytes, 0 or more"
+  | Ok allowed, Ok mapping ->
+      let root = Option.value s.fs ~default:Rapid_controller.File_sandbox.default_root in
+      W.set_services world
+        (Rapid_controller.Services.create ~sandbox:(Rapid_controller.File_sandbox.create root)
+           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ());
+      Ok ()
+
+let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
+
+let entry (t : Run_options.tasks) =
+  if t.files = [] then Error (Usage "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)")
+  else if t.schedule <> None || t.motion_task <> None then
+    Error (Usage "rapid-sem: --schedule and --motion-task go with --task")
+  else match List.find_opt (fun e -> String.contains e '=') t.entries with
+    | Some e -> Error (Usage (Printf.sprintf "rapid-sem: --entry %s: TASK=ROUTINE goes with --task" e))
+    | None -> Ok (match List.rev t.entries with e :: _ -> e | [] -> "main")
+
+(* R-13-aa: under --allow-unknown --stub-unmodelled, the undeclared names a program passes as
+   signals become virtual signals at 0. *)
+let with_inferred_signals ~notify (o : Run_options.t) files io =
+  if not (o.allow_unknown && o.stub_unmodelled) then io
+  else
+    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let io, added =
+      Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
+        modules io in
+    List.iter (fun s -> notify (Inferred_signal s)) added;
+    io
+
+(* The world of the options' controller, and the robot's motion. *)
+let world (o : Run_options.t) ~history io robot =
+  let c = o.controller in
+  let controller = W.create ~statement_time:c.statement_time ~max_time:c.max_time ~epoch:c.epoch io in
+  let history = if history then Some o.limits.max_memory else None in
+  let motion = MR.create ~robot ?history () in
+  match install_services c.services controller with
+  | Error m -> Error (Usage ("rapid-sem: " ^ m))
+  | Ok () -> Ok (controller, motion)
+
+type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
+
+let single ?(history = false) ~notify (o : Run_options.t) files =
+  match read_io o.controller.io, load_robot o.robot with
+  | Error m, _ | _, Error m -> Error (Usage m)
+  | Ok io, Ok robot ->
+      let io = with_inferred_signals ~notify o files io in
+      if o.controller.statement_time < 0. || o.controller.max_time < 0. then
+        Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
+      else
+        match Rapid_load.Session.load ~allow_unknown:o.allow_unknown ~io files with
+        | Error f -> Error (Refused f)
+        | Ok loaded ->
+            notify (Warnings (loaded.warnings, loaded.unknown_summary));
+            Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
+              (world o ~history io robot)
+
+let machine ?(observe = false) (o : Run_options.t) s ~entry =
+  Result.map_error (fun reason -> Cannot_start { entry; reason })
+    (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
+       s.loaded.program ~entry)
+
+let start_machine ?observe ?history ~notify o files ~entry =
+  machine_gc ();
+  Result.bind (single ?history ~notify o files) (fun s ->
+      Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry))
+
+type several = {
+  specs : Task_load.spec list;
+  names : string list;
+  io : Io.t;
+  controller : W.t;
+  motion : MR.state;
+}
+
+let several ?(history = false) ~notify (o : Run_options.t) (t : Run_options.tasks) =
+  machine_gc ();
+  let split s = (String.sub s 0 (String.index s '='),
+                 String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
+  let well_formed s = match String.index_opt s '=' with
+    | Some i -> i > 0 && i < String.length s - 1
+    | None -> false in
+  let parse_task s =
+    if well_formed s then
+      let name, files = split s in
+      Ok (name, List.filter (( <> ) "") (String.split_on_char ',' files))
+    else Error (Printf.sprintf "rapid-sem: --task %s: expected NAME=FILE[,FILE...]" s) in
+  let parse_entry s =
+    if well_formed s then Ok (split s)
+    else Error (Printf.sprintf "rapid-sem: --entry %s: with --task, expected NAME=ROUTINE" s) in
+  let all f l =
+    List.fold_right (fun x acc -> match f x, acc with
+        | Ok v, Ok vs -> Ok (v :: vs)
+        | Error m, _ | _, Error m -> Error m) l (Ok []) in
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  match all parse_task t.tasks, all parse_entry t.entries, read_io o.controller.io, load_robot o.robot with
+  | Error m, _, _, _ | _, Error m, _, _ | _, _, Error m, _ | _, _, _, Error m -> Error (Usage m)
+  | Ok tasks, Ok entries, Ok io, Ok robot ->
+      let names = List.map fst tasks in
+      let duplicate = List.find_opt (fun n -> List.length (List.filter (same n) names) > 1) names in
+      let unknown_entry = List.find_opt (fun (n, _) -> not (List.exists (same n) names)) entries in
+      match duplicate, unknown_entry with
+      | Some n, _ -> Error (Usage (Printf.sprintf "rapid-sem: --task %s is given twice: task names are unique" n))
+      | _, Some (n, _) -> Error (Usage (Printf.sprintf "rapid-sem: --entry %s=...: there is no task %s" n n))
+      | None, None ->
+          (* R-13-aa: the signals are the controller's, shared by every task. *)
+          let io = with_inferred_signals ~notify o (List.concat_map snd tasks) io in
+          let entry name =
+            match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
+          let specs = List.map (fun (name, files) -> { Task_load.name; files; entry = entry name }) tasks in
+          Result.map (fun (controller, motion) -> { specs; names; io; controller; motion })
+            (world o ~history io robot)
+
+let refused : Task_load.failure -> failure = function
+  | Load (name, f) -> Task_refused (name, f)
+  | Refused m -> Tasks_refused m
+
+let loaded ~notify = function
+  | Error f -> Error (refused f)
+  | Ok (t, (l : Task_load.loaded)) -> notify (Warnings (l.warnings, None)); Ok (t, l)
+
+let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
+  loaded ~notify
+    (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+       ~observe ?seed:t.schedule ?motion_task:t.motion_task ~controller:s.controller ~motion:s.motion s.specs)
+
+let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
+  loaded ~notify
+    (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+       ?seed:t.schedule ?motion_task:t.motion_task ~controller:s.controller ~motion:s.motion s.specs)

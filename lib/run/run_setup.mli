@@ -1,0 +1,107 @@
+(** A run set up from its options ({!Run_options}): the stimulus and the robot read, the world of
+    the controller made (signals, clock, services) with the motion around it, the task buffer or
+    the tasks loaded in it, and the engine started; both engines run in the same world. What the
+    command line used to assemble itself, here so that each command only says what it prints.
+
+    Nothing is printed here: what a person should be told on the way comes out as a {!notice},
+    in the order it happens, and what stops the run as a {!failure}; the command line writes
+    them. *)
+
+(** {1 What happens on the way} *)
+
+type notice =
+  | Inferred_signal of Rapid_controller.Io_config.signal
+      (** R-13-aa: under --allow-unknown --stub-unmodelled, an undeclared name the program passes
+          as a signal became a virtual signal at 0 *)
+  | Warnings of Rapid_typing.Report.t list * string option
+      (** the warnings of the static semantics and the summary of the unknown names (one task
+          buffer), or the warnings of every task (several) *)
+  | Stdin_not_saved
+      (** --save with a module read from standard input: it has no file to write back to *)
+  | Samples_capped of int
+      (** --samples wrote the most samples a run writes ({!Tcp_samples.max_samples}); the rest
+          are left out *)
+
+type failure =
+  | Usage of string
+      (** an option that cannot be used as given, or a file it names that cannot be read: the
+          whole message, one line (exit status 2) *)
+  | Refused of Rapid_load.Session.failure         (** the task buffer is refused before it runs *)
+  | Task_refused of string * Rapid_load.Session.failure   (** this task's buffer is *)
+  | Tasks_refused of string
+      (** the tasks cannot start: no such entry routine, no such motion task, too many tasks *)
+  | Cannot_start of { entry : string; reason : string }
+      (** the one task cannot start on this entry routine: it does not exist or takes
+          parameters, an initial value fails *)
+  | Save_failed of string                         (** --save: what is wrong *)
+
+(** {1 The pieces} *)
+
+val read_io : string option -> (Rapid_controller.Io_config.t, string) result
+(** --io: the I/O configuration of the file, or none. *)
+
+val load_robot : string option -> (Rapid_motion_model.Robot.t, string) result
+(** --robot: the robot description of the file, or the built-in IRB 120; an error reads
+    FILE:LINE:COL: robot description error: MESSAGE. *)
+
+val install_services : Run_options.services -> Rapid_controller.World.t -> (unit, string) result
+(** The services of the options given to the world (its file sandbox, its sockets). *)
+
+val machine_gc : unit -> unit
+(** A run allocates frames that live as long as their routine: with deep recursion the live heap
+    grows with the call depth, and the collector's default pace makes each step cost more the
+    deeper it is. A lazier pace keeps the cost of a step nearly independent of depth
+    (bench/README.md, "The machine"). Runs of the machine and of several tasks set it. *)
+
+val entry : Run_options.tasks -> (string, failure) result
+(** Without --task: the entry routine (the last --entry, default main), once the files are there
+    and neither --schedule, --motion-task nor TASK=ROUTINE was given, which go with --task. *)
+
+(** {1 One task buffer} *)
+
+type single = {
+  loaded : Rapid_load.Session.loaded;
+  world : Run.world;              (** the controller of the options, and the robot *)
+}
+
+val single :
+  ?history:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> (single, failure) result
+(** The task buffer of these files loaded, in the controller of the options (signals, stimulus,
+    clock, services, robot), which either engine runs it in. [history]: the motion history is
+    kept, within --max-memory (--samples, rapid-sem motion). *)
+
+val machine :
+  ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
+(** The machine started on the entry routine, with the limits of the options. *)
+
+val start_machine :
+  ?observe:bool -> ?history:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->
+  (Rapid_semantics.Machine.config * Run.world, failure) result
+(** {!single}, then {!machine}, the collector paced for the machine first: what trace, motion and
+    debug run. *)
+
+(** {1 Several tasks (ch. 14)} *)
+
+type several = {
+  specs : Task_load.spec list;    (** the tasks in the order of the --task options *)
+  names : string list;
+  io : Rapid_controller.Io_config.t;
+  controller : Rapid_controller.World.t;
+  motion : Rapid_installed.Motion_routines.state;
+}
+
+val several :
+  ?history:bool -> notify:(notice -> unit) -> Run_options.t -> Run_options.tasks -> (several, failure) result
+(** The --task and --entry options read (NAME=FILE,...; TASK=ROUTINE), the names checked (unique,
+    an entry for a task that exists), and the controller every task shares made: the signals are
+    the controller's, inferred from every task's modules. Nothing loaded yet. *)
+
+val machine_tasks :
+  ?observe:bool -> notify:(notice -> unit) -> Run_options.t -> Run_options.tasks -> several ->
+  (Rapid_semantics.Task_set.t * Task_load.loaded, failure) result
+(** The tasks loaded and started as machines ({!Run.machine_tasks}); their warnings notified. *)
+
+val closure_tasks :
+  notify:(notice -> unit) -> Run_options.t -> Run_options.tasks -> several ->
+  (Rapid_closure.Closure_tasks.t * Task_load.loaded, failure) result
+(** The same tasks for the closure engine ({!Run.closure_tasks}). *)
