@@ -7,7 +7,8 @@ open Test_services
 
 let with_dir f =
   let dir = temp_dir () in
-  Fun.protect ~finally:(fun () -> ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))) (fun () -> f dir)
+  let remove () = ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir))) in
+  Fun.protect ~finally:remove (fun () -> f dir)
 
 (* A sandbox under [dir] whose HOME: holds [files] (name, contents). *)
 let seed_home dir files =
@@ -87,7 +88,34 @@ let line_server engine () =
       Alcotest.(check string) "server output"
         "line server listening\nsession 1\nsession 2\nline server stopped\n" (read_file out))
 
+(* A little-endian int32 and float32 (IEEE single) as bytes. *)
+let int32_le b i = Buffer.add_int32_le b (Int32.of_int i)
+let float32_le b f = Buffer.add_int32_le b (Int32.bits_of_float f)
+
+(* 3. The motion-program executor (test/drivers/ProgramExecutor.mod): a binary program written
+   into the sandbox's HOME: (header "RSMP", version, count; records of an int32 opcode and 7
+   float32s), executed record by record; the reports come in the program's order and the robot
+   ends at the last target. *)
+let program_executor engine () =
+  with_dir (fun dir ->
+      let records =
+        [ (2, [ 350.; 0.; 450.; 0.; 0.; 1.; 0. ]); (1, [ 350.; 100.; 450.; 0.; 0.; 1.; 0. ]);
+          (3, [ 0.5; 0.; 0.; 0.; 0.; 0.; 0. ]); (1, [ 300.; -100.; 400.; 0.; 0.; 1.; 0. ]);
+          (2, [ 320.; 50.; 420.; 0.; 0.; 1.; 0. ]); (3, [ 0.25; 0.; 0.; 0.; 0.; 0.; 0. ]) ] in
+      let b = Buffer.create 256 in
+      Buffer.add_string b "RSMP"; int32_le b 1; int32_le b (List.length records);
+      List.iter (fun (op, args) -> int32_le b op; List.iter (float32_le b) args) records;
+      let fs = seed_home dir [ ("program.bin", Buffer.contents b) ] in
+      let pid, out = start dir [ "--engine"; engine; "--fs"; fs; "--max-time"; "60"; "drivers/ProgramExecutor.mod" ] in
+      serve pid out (fun () -> ());
+      Alcotest.(check string) "reports and final position"
+        "program of records: 6\nrecord 1 MoveJ done\nrecord 2 MoveL done\nrecord 3 WaitTime 0.50 done\n\
+         record 4 MoveL done\nrecord 5 MoveJ done\nrecord 6 WaitTime 0.25 done\nfinal position 320.0 50.0 420.0\n"
+        (read_file out))
+
 let suite = ("drivers", [
     Alcotest.test_case "line-protocol command server (open_abb's kind)" `Quick (line_server "closure");
     Alcotest.test_case "line-protocol command server, the machine" `Quick (line_server "machine");
+    Alcotest.test_case "binary motion-program executor (rawbytes)" `Quick (program_executor "closure");
+    Alcotest.test_case "binary motion-program executor, the machine" `Quick (program_executor "machine");
   ])

@@ -61,4 +61,37 @@ let layers () =
   Alcotest.(check bool) "a link is seen through a library" true
     (List.mem "rapid_controller" (links table "rapid_run") && List.mem "rapid_semantics" (links table "rapid_run"))
 
-let suite = ("layers", [ Alcotest.test_case "the libraries' dependencies (doc/architecture.md)" `Quick layers ])
+
+(* doc/architecture.md, "Conventions": no line of lib/ and bin/ is over 120 characters (UTF-8
+   characters, not bytes: a § is one). *)
+let utf8_length line =
+  let n = ref 0 in
+  String.iter (fun c -> if Char.code c land 0xC0 <> 0x80 then incr n) line;
+  !n
+
+(* The sources as written: not what the build generates beside them (menhir's parser, the
+   preprocessed files, the embedded installed environment). *)
+let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml" ]
+
+let rec sources dir =
+  Sys.readdir dir |> Array.to_list |> List.concat_map (fun f ->
+      let p = Filename.concat dir f in
+      if Sys.is_directory p then (if f = "_build" || f.[0] = '.' then [] else sources p)
+      else if (Filename.check_suffix f ".ml" || Filename.check_suffix f ".mli")
+              && not (Filename.check_suffix f ".pp.ml" || Filename.check_suffix f ".pp.mli" || List.mem f generated)
+      then [ p ]
+      else [])
+
+let width () =
+  let files = sources "../lib" @ sources "../bin" in
+  Alcotest.(check bool) "the sources are read" true (List.length files > 100);
+  let long = List.concat_map (fun f ->
+      List.filteri (fun _ l -> utf8_length l > 120) (String.split_on_char '\n' (read f))
+      |> List.map (fun l -> Printf.sprintf "%s: %d characters" f (utf8_length l))) files in
+  Alcotest.(check (list string)) "lines over 120 characters" [] long;
+  Alcotest.(check int) "a § counts one" 1 (utf8_length "§")
+
+let suite =
+  ("layers",
+   [ Alcotest.test_case "the libraries' dependencies (doc/architecture.md)" `Quick layers;
+     Alcotest.test_case "no line of lib/ and bin/ over 120 characters" `Quick width ])

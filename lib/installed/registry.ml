@@ -37,7 +37,8 @@ let bodies = [
   { module_name = "motion"; reach = (fun name -> if Motion_routines.modelled name then Moves else World);
     claims = (fun _ name -> Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil");
     answer = (fun ~standstill:_ ctx motion name args -> Motion_routines.call ctx motion name args) };
-  { module_name = "io"; reach = (fun _ -> World); claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
+  { module_name = "io"; reach = (fun _ -> World);
+    claims = (fun _ name -> Io_routines.modelled name || same name "ErrWrite");
     answer = plain Io_routines.call };
   { module_name = "service"; reach = (fun _ -> World); claims = (fun _ -> Service_routines.modelled);
     answer = (fun ~standstill ctx _ name args ->

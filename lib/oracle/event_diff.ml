@@ -38,7 +38,8 @@ let compare ?(ignore = []) ?(context = 3) ~expected ~actual () =
     in
     match es, as_ with
     | [], [] -> None
-    | e :: es', a :: as' -> if Yojson.Safe.equal e a then go (i + 1) (e :: seen) es' as' else divergence (Some e) (Some a)
+    | e :: es', a :: as' ->
+        if Yojson.Safe.equal e a then go (i + 1) (e :: seen) es' as' else divergence (Some e) (Some a)
     | e :: _, [] -> divergence (Some e) None
     | [], a :: _ -> divergence None (Some a)
   in

@@ -19,7 +19,8 @@ let to_v1 events =
         | "error-raised" -> go (field "at" e) (e :: acc) rest
         | "error-propagated" ->
             let again = `Assoc ([ ("event", `String "error-raised") ]
-                                @ List.filter_map (fun k -> Option.map (fun v -> (k, v)) (field k e)) [ "name"; "number" ]
+                                @ List.filter_map (fun k -> Option.map (fun v -> (k, v)) (field k e))
+                                    [ "name"; "number" ]
                                 @ (match raised with Some at -> [ ("at", at) ] | None -> [])) in
             go raised (Event_stream.canonical again :: acc) rest
         | "end" -> go raised (without "at" e :: acc) rest

@@ -25,7 +25,8 @@ type verdict = Agree of int | Diverge of divergence | Broken of string
 
 let compare ?(ignore = []) ~(expected : Event_stream.t) ~(actual : Event_stream.t) () =
   if actual.schema <> expected.schema then
-    Broken (Printf.sprintf "the implementation's first line names the schema %s; expected %s (the schema of several tasks)"
+    Broken (Printf.sprintf
+              "the implementation's first line names the schema %s; expected %s (the schema of several tasks)"
               (Event_stream.clip (Option.value actual.schema ~default:"(none)"))
               (Option.value expected.schema ~default:"(none)"))
   else

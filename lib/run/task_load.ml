@@ -30,7 +30,8 @@ let system_global_pers (modules : Ast.module_declaration list) =
       let module_name = match m.module_name.it with Ident s -> s | ID_placeholder -> "" in
       List.filter_map (fun (d : Ast.data_declaration) ->
           match d.it with
-          | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ }; dims; initial_value } ->
+          | Data_declaration { scope = Global; storage = Pers; data_type; name = { it = Ident name; _ }; dims;
+                               initial_value } ->
               let type_name = match data_type.it with Ident s -> s | ID_placeholder -> "" in
               Some (module_name, name, type_name, List.length dims, initial_value <> None, d.at)
           | _ -> None) m.data_declarations) modules
@@ -76,7 +77,8 @@ let share_persistents ~link (programs : Ir.program array) (tasks : (int * string
                       each more
                   | Some p when not (same p.type_text type_text) ->
                       Error (Load (task_name, Session.Front_end [ Diagnostic.make Semantic_error at (Printf.sprintf
-                                        "the persistent %s is %s in task %s but %s here: a system-global persistent has one type in every task (ch. 14)"
+                                        "the persistent %s is %s in task %s but %s here: a system-global persistent \
+                                         has one type in every task (ch. 14)"
                                         name p.type_text p.task_name type_text) ]))
                   | Some p ->
                       if has_init && not p.has_init then begin
@@ -104,7 +106,9 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
       let first_program = programs.(first) in
       List.iter (fun (k, _, modules) ->
           let own = List.filter_map (fun (m : Ast.module_declaration) ->
-              match m.module_name.it with Ident s -> Some (String.lowercase_ascii s) | ID_placeholder -> None) modules in
+              match m.module_name.it with
+              | Ident s -> Some (String.lowercase_ascii s)
+              | ID_placeholder -> None) modules in
           let program = programs.(k) in
           Array.iteri (fun i (g : Ir.global) ->
               if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then

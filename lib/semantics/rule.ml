@@ -35,7 +35,8 @@ type t =
   (* Errors *)
   | Raise_number | Raise | Raise_illegal | Raise_handle | Raise_in_handler | Raise_unhandled
   | Longjump_search_start | Longjump_search | Longjump_found | Raise_propagate | Raise_again
-  | Raise_again_unhandled | Raise_new | Raise_new_unhandled | Abandon | Abandon_entry | Undo_run | Undo_done | Undo_done_entry
+  | Raise_again_unhandled | Raise_new | Raise_new_unhandled | Abandon | Abandon_entry | Undo_run | Undo_done
+  | Undo_done_entry
   | Retry | Retry_limit | Trynext | Handler_end
   (* The user level *)
   | Raise_to_user_break_off | Raise_to_user_continue | Resume_retry | Resume_trynext
