@@ -16,8 +16,9 @@ type region
 
 val register : name:string -> line_starts:int array -> file
 (** [register ~name ~line_starts] records a file whose line [i+1] starts at character offset
-    [line_starts.(i)]; [line_starts.(0)] is [0]. Ids are reused after 1023 files, except those
-    {!keep} protects. *)
+    [line_starts.(i)]; [line_starts.(0)] is [0]. Ids are reused after 1023 files (927 while
+    {!keep} has kept none, so that up to 32 files registered just before it are kept), except
+    those {!keep} protects. *)
 
 val keep : unit -> unit
 (** The files registered so far keep their ids for the life of the process: files parsed once
