@@ -512,6 +512,61 @@ let test_stop_start_clear () =
   let r = plan p ~now:(now +. 3.) (Planner.move (speed "v100") (zone "fine") (Linear (target 350. 50. 300.))) in
   close "the next move starts from there" r.ready_time (now +. 3.5)
 
+(* T-distance: the time at which the TCP has gone a distance along a segment (TriggL, TriggIO,
+   TriggInt), from its start or back from its end, with a shift of path time; it follows
+   StopMove and StartMove, and a mark goes with the path ClearPath or RestoPath drops. *)
+let test_time_at_distance () =
+  let p = planner () in
+  let r0 = plan p (Planner.move (speed "v1000") (zone "fine") (Joint (target 300. (-250.) 300.))) in
+  let now = r0.ready_time in
+  let some what = function Some t -> t | None -> Alcotest.failf "%s: dropped" what in
+  let at ?from_end ?shift id d = some "time" (Planner.time_at_distance ?from_end ?shift p id d) in
+  (* 500 mm at v100: 100 mm/s. *)
+  let r = plan p ~now (Planner.move (speed "v100") (zone "fine") (Linear (target 300. 250. 300.))) in
+  close "length" (Planner.segment_length p r.id) 500.;
+  close "speed" (Planner.segment_speed p r.id) 100.;
+  close "100 mm from the start" (at r.id 100.) (now +. 1.);
+  close "at the start" (at r.id 0.) now;
+  close "100 mm before the end" (at ~from_end:true r.id 100.) (now +. 4.);
+  close "at the end" (at ~from_end:true r.id 0.) (now +. 5.);
+  close "beyond the length from the start: the end" (at r.id 600.) (now +. 5.);
+  close "beyond the length from the end: the start" (at ~from_end:true r.id 600.) now;
+  close "0.2 s before the end" (at ~from_end:true ~shift:(-0.2) r.id 0.) (now +. 4.8);
+  close "a delay after the end" (at ~from_end:true ~shift:0.3 r.id 0.) (now +. 5.3);
+  close "never before the move's motion" (at ~shift:(-3.) r.id 100.) now;
+  close_pos "the TCP is there then" (Planner.pose_at p (at r.id 100.)).trans { x = 300.; y = -150.; z = 300. };
+  (* StopMove holds it, StartMove shifts it by the pause; ClearPath drops what is not reached. *)
+  let reached = Planner.mark p r.id 100. and ahead = Planner.mark p r.id 300. in
+  Planner.stop p ~at:(now +. 0.5);
+  close "stopped short: never" (some "stopped" (Planner.mark_time p ahead)) infinity;
+  Planner.start p ~at:(now +. 2.);
+  close "after StartMove" (some "started" (Planner.mark_time p ahead)) (now +. 4.5);
+  Planner.clear p ~at:(now +. 3.);
+  Alcotest.(check bool) "ClearPath drops the mark not reached" true (Planner.mark_time p ahead = None);
+  Alcotest.(check bool) "a mark reached stays" true (Planner.mark_time p reached <> None);
+  Planner.release p reached; Planner.release p ahead;
+  (* A fly-by point: the end is where the segment's law reaches its point, the middle of a
+     symmetric corner path (z10 between two 100 mm segments at v100: 0.9 s to 1.1 s). *)
+  let now = now +. 3. in
+  let a = plan p ~now (Planner.move (speed "v100") (zone "z10") (Linear (target 300. 0. 300.))) in
+  let _ = plan p ~now:a.ready_time (Planner.move (speed "v100") (zone "fine") (Linear (target 400. 0. 300.))) in
+  close "a fly-by point's end" (at ~from_end:true a.id 0.) (now +. 1.);
+  (* A circle: the arc length, at constant angular speed. *)
+  let now = Planner.finished_by p in
+  let _ = plan p ~now (Planner.move (speed "v1000") (zone "fine") (Joint (target 400. (-100.) 300.))) in
+  let now = Planner.finished_by p in
+  let arc = Planner.Circular (target 500. 0. 300., target 400. 100. 300.) in
+  let c = plan p ~now (Planner.move (speed "v100") (zone "fine") arc) in
+  close ~eps:1e-6 "half the arc" (at c.id (50. *. 4. *. atan 1.)) (now +. 2. *. atan 1.);
+  (* RestoPath drops the marks of level 2. *)
+  let now = Planner.finished_by p in
+  ok "StorePath" (Planner.store_path p ~at:now);
+  let up = plan p ~now (Planner.move (speed "v100") (zone "fine") (Linear (target 400. 100. 350.))) in
+  let m = Planner.mark ~from_end:true p up.id 0. in
+  close "level 2" (some "level 2" (Planner.mark_time p m)) (now +. 0.5);
+  ok "RestoPath" (Planner.resto_path p ~at:(now +. 0.5));
+  Alcotest.(check bool) "RestoPath drops level 2's marks" true (Planner.mark_time p m = None)
+
 (* ------------------------------------------------------------------ paths, properties *)
 
 (* Targets the IRB 120 reaches comfortably, pointing down. *)
@@ -638,6 +693,7 @@ let suite =
       Alcotest.test_case "Z-failure: corner path failure" `Quick test_corner_failure;
       Alcotest.test_case "errors of moves, ConfL, SingArea" `Quick test_move_errors;
       Alcotest.test_case "StopMove, StartMove, ClearPath" `Quick test_stop_start_clear;
+      Alcotest.test_case "T-distance: the time at a distance along a segment" `Quick test_time_at_distance;
       Alcotest.test_case "bad input never raises" `Quick test_bad_input;
       Alcotest.test_case "S-level: StorePath, RestoPath" `Quick test_path_level;
       Alcotest.test_case "L-sum: path length, random" `Quick test_length_sum;

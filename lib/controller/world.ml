@@ -80,6 +80,7 @@ type action =
   | Set_signal of int * float
   | Timer_due of t * int * int        (* the task's world, number, generation *)
   | Wake                              (* nothing happens: a wait looks again (wake_at) *)
+  | Call of (unit -> unit)            (* a model beside the controller acts (at) *)
 
 and shared = {
   mutable now : int;
@@ -221,6 +222,7 @@ let perform w = function
           occur w n
       | _ -> ())
   | Wake -> ()
+  | Call f -> f ()
 
 let advance_us w target =
   let rec go () =
@@ -262,12 +264,19 @@ let statements_left w =
 let next_event w = match w.c.events with (t, _, _) :: _ -> Some (to_seconds t) | [] -> None
 
 let next_change w =
-  List.find_map (function (t, _, (Set_signal _ | Timer_due _)) -> Some (to_seconds t) | _, _, Wake -> None) w.c.events
+  (* A model's own event (a trigger on the path, [at]) changes a signal or makes an interrupt. *)
+  List.find_map (function
+      | (t, _, (Set_signal _ | Timer_due _ | Call _)) -> Some (to_seconds t) | _, _, Wake -> None) w.c.events
 
 (* A wait whose end another model computes (the robot's ready time, doc/motion.md) has the
    clock stop there. *)
 let wake_at w time =
   if Float.is_finite time && time < 1e12 && seconds time > w.c.now then schedule w (seconds time) Wake
+
+(* A trigger on the robot's path (TriggIO, TriggInt) acts at the time the motion model computes,
+   among the events due then in the order they were scheduled. *)
+let at w time f =
+  if Float.is_finite time && time < 1e12 then schedule w (max w.c.now (seconds time)) (Call f)
 
 (* ---------------------------------------------------------------- ordering interrupts *)
 
@@ -286,6 +295,7 @@ let connect w ~trap =
   end
 
 let connected w n = Hashtbl.mem w.interrupts n
+let interrupt w n = occur w n
 (* The occurrences still queued go with the number: dropped now, so that a later CONNECT that
    gets the same number never serves them with its trap (R-8-x). *)
 let delete w n =

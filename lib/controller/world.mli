@@ -106,6 +106,13 @@ val seconds : float -> int
     count, 10^18, that no run reaches ("never"), so that a time as large as a num can hold
     neither overflows nor wraps to the past. *)
 
+val at : t -> float -> (unit -> unit) -> unit
+(** A timed event of a model beside the controller: [f] runs when the clock reaches the time
+    (a past time: at the next move of the clock), among the events due then in the order they
+    were scheduled; an infinite or absurdly large time never comes. A trigger on the robot's
+    path (TriggIO, TriggInt; doc/motion.md) sets its output or makes its interrupt occur
+    there, at its exact time, and looks again if the robot was held up meanwhile. *)
+
 (** {1 Signals} *)
 
 val signals : t -> (string * Io_config.signal_type * int) list
@@ -144,9 +151,15 @@ val connect : t -> trap:int -> (int, string) result
     ERR_INOMAX. *)
 
 val connected : t -> int -> bool
+
 val delete : t -> int -> unit
 (** IDelete: the number is free again; its source is cancelled, and its occurrences still queued
     are dropped (an [Interrupt_discarded] each, R-8-x). *)
+
+val interrupt : t -> int -> unit
+(** The interrupt of this number occurs now, as its order would make it occur (TriggInt's, when
+    the robot reaches its position): queued for its trap, or discarded if it sleeps or the
+    queue is full; nothing for a number not connected. *)
 
 val order_timer : t -> int -> period:float -> single:bool -> (unit, string) result
 (** ITimer; ERR_UNKINO for a number that is not connected. A period below {!min_timer_single}

@@ -22,6 +22,8 @@ type async_mode = Sync_last | Sync_org
 type async = { a_name : string; a_move : int option; a_mode : async_mode;
                a_handled : bool  (* false: a collision with motion error handling off (§7.6) *) }
 
+type extension = ..
+
 type state = {
   robot : MM.Robot.t;
   kin : MM.Kinematics.t;
@@ -51,6 +53,8 @@ type state = {
       (* forward moves and their start axes (the arm's, the external ones), newest first *)
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
   mutable cleared_at : float option;           (* the last ClearPath: when the moves it drops are dropped *)
+  mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
+  mutable drain_hooks : (W.t -> unit) list;
   mutable robots : (string * state) list;      (* a task without a robot: the motion tasks (R-14-pos1) *)
 }
 
@@ -63,9 +67,14 @@ let create ?(robot = MM.Robot.irb120) ?history () =
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
-    robots = [] }
+    extensions = []; drain_hooks = []; robots = [] }
 
 let set_backward st b = st.backward <- b
+let retracing st = st.backward
+
+let extensions st = st.extensions
+let add_extension st e = st.extensions <- e :: st.extensions
+let on_drain st f = st.drain_hooks <- st.drain_hooks @ [ f ]
 
 let connect_robots st robots = st.robots <- robots
 
@@ -404,9 +413,9 @@ let move ctx st name args =
         | _ -> None in
       let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
         | "moveextj" -> Some P.External_only
-        | "movel" | "moveldo" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
-        | "movej" | "movejdo" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
-        | "movec" -> (match get "CirPoint", get "ToPoint" with
+        | "movel" | "moveldo" | "triggl" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
+        | "movej" | "movejdo" | "triggj" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
+        | "movec" | "triggc" -> (match get "CirPoint", get "ToPoint" with
             | Some c, Some p -> Some (P.Circular (robtarget_of c, robtarget_of p)) | _ -> None)
         | _ -> Option.map (fun j -> P.Abs_joint (joints_of_jointtarget j)) (get "ToJointPos") in
       let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
@@ -533,6 +542,7 @@ let collide st w =
     due
 
 let drain st w =
+  List.iter (fun f -> f w) st.drain_hooks;
   let now = W.now w in
   if st.outputs <> [] then place_outputs st w;
   let due = st.dirty || W.seconds now >= W.seconds (Float.min st.check_at 1e12) in
@@ -722,6 +732,7 @@ let call_unguarded (ctx : context) st name args =
   let lname = String.lowercase_ascii name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
+  | "triggl" | "triggj" | "triggc" -> Some (move ctx st name args)  (* for Trigg_routines: the move itself *)
   | "moveextj" -> Some (move ctx st name args)
   | "searchl" | "searchj" | "searchc" -> Some (search ctx st name args)
   | "waittime" when present ctx args "InPos" -> (

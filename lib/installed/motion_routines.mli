@@ -42,7 +42,9 @@ type effects = {
 val call :
   Primitive.context -> state -> string -> Primitive.argument array -> (Primitive.outcome * effects) option
 (** [None]: not a routine of motion (WaitTime and WaitUntil without \InPos included). The
-    effects are those of this call. *)
+    effects are those of this call. TriggL, TriggJ and TriggC are answered as the moves MoveL,
+    MoveJ and MoveC with their arguments (ABB: the same moves, with events), for
+    {!Trigg_routines}, which claims them and adds their triggers. *)
 
 val modelled : string -> bool
 
@@ -61,6 +63,21 @@ val connect_robots : state -> (string * state) list -> unit
 val set_backward : state -> bool -> unit
 (** A BACKWARD handler begins (true) or ends (false) its run (ch. 6): its move instructions
     retrace the forward moves, the newest first (§6.3). *)
+
+val retracing : state -> bool
+(** A BACKWARD handler runs: a Trigg move retraces a forward path, and sets no trigger. *)
+
+(** {1 For the modules of bodies built on the motion (lib/installed/trigg_routines.ml)} *)
+
+type extension = ..
+(** What such a module keeps for the run beside the motion (the trigger data TriggIO defines). *)
+
+val extensions : state -> extension list
+val add_extension : state -> extension -> unit
+
+val on_drain : state -> (Rapid_controller.World.t -> unit) -> unit
+(** [f] runs at each {!drain}, first: a trigger held up by StopMove is set again when the path
+    goes on. *)
 
 val take_org_error : state -> (string * int option * bool) option
 (** An asynchronous error to raise now in the routine of a move (ProcerrRecovery

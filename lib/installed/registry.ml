@@ -33,6 +33,7 @@ let bodies = [
                             || ((not (W.motion_task w)) && List.exists (same name) Task_routines.motion_instructions));
     answer = (fun ~standstill ctx _ name args ->
         Option.map (fun r -> (r, no_effects)) (Task_routines.call ~standstill ctx name args)) };
+  { module_name = "trigg"; reach = Trigg_routines.reach; claims = Trigg_routines.claims; answer = Trigg_routines.call };
   { module_name = "motion"; reach = (fun name -> if Motion_routines.modelled name then Moves else World);
     claims = (fun _ name -> Motion_routines.modelled name || same name "WaitTime" || same name "WaitUntil");
     answer = (fun ~standstill:_ ctx motion name args -> Motion_routines.call ctx motion name args) };

@@ -187,11 +187,20 @@ type level = {
   pauses : pause Vec.t;  (* StopMove … StartMove, real time, oldest first *)
   mutable paused_before : float;  (* how long the pauses forgotten lasted *)
   mutable stopped_at : float option;
+  mutable marks : mark list;  (* the marks on this level's path not yet released (law T-distance) *)
 }
+
+(* A moment of a level's path where a trigger acts (law T-distance): its path time [p], and
+   [limit], the path time up to which the robot must get on the move for it to count (the
+   event's own time, or the move's end for an event delayed beyond it). *)
+and mark = { m_level : level; m_p : float; m_limit : float; mutable m_dropped : bool }
 
 (* A move planned: its segment, the path time at which the program may leave it, the same as
    answered by plan (for a move of a level dropped since), and the level it was planned on. *)
-type entry = { seg : segment; ready : float; ready_real : float; level : level }
+type entry = {
+  seg : segment; ready : float; ready_real : float; level : level;
+  motion_from : float;  (* path time at which the move's motion begins: its incoming corner, or its part *)
+}
 
 type t = {
   kin : Kinematics.t;
@@ -205,7 +214,7 @@ type t = {
 let new_level kin joints ~from =
   { start_joints = Array.copy joints; pieces = Vec.create (); end_joints = Array.copy joints;
     end_flange = world_flange kin joints; end_time = from; open_seg = None; pauses = Vec.create (); paused_before = 0.;
-    stopped_at = None }
+    stopped_at = None; marks = [] }
 
 let create ?(joints = Array.make 6 0.) kin =
   let joints = join joints (Ext_axes.initial (Kinematics.robot kin).externals) in
@@ -481,7 +490,7 @@ let plan t ~now m =
   let idx = if Vec.stop t.cur.pieces > idx then idx else -1 in
   t.cur.open_seg <- (if sg.fine then None else Some (sg, idx));
   let ready_time = real_time t.cur ready in
-  Vec.push t.moves { seg = sg; ready; ready_real = ready_time; level = t.cur };
+  Vec.push t.moves { seg = sg; ready; ready_real = ready_time; level = t.cur; motion_from };
   Ok { id; ready_time; warnings = !warnings }
 
 let ready_time t id =
@@ -569,7 +578,10 @@ let clear t ~at =
     t.cur.end_flange <- world_flange t.kin q;
     t.cur.end_time <- tp
   end;
-  t.cur.open_seg <- None
+  t.cur.open_seg <- None;
+  (* A trigger the robot does not get to on this path any more goes with it. *)
+  List.iter (fun m -> if tp < m.m_limit then m.m_dropped <- true) t.cur.marks;
+  t.cur.marks <- List.filter (fun m -> not m.m_dropped) t.cur.marks
 
 type piece_kind = Segment of int | Corner of int * int | Still
 type piece_info = { t_from : float; t_to : float; kind : piece_kind }
@@ -617,7 +629,10 @@ let store_path t ~at =
 let resto_path t ~at:_ =
   match t.stored with
   | None -> Error (Motion_error.Path_level "RestoPath: no path is stored (path level 1)")
-  | Some l1 -> t.cur <- l1; t.stored <- None; Ok ()
+  | Some l1 ->
+      List.iter (fun m -> m.m_dropped <- true) t.cur.marks;
+      t.cur.marks <- [];
+      t.cur <- l1; t.stored <- None; Ok ()
 
 let target_joints t id =
   if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_joints: unknown move"
@@ -744,3 +759,47 @@ let forget t ~before ~keep =
       drop_pauses ()
     end in
   drop_pauses ()
+
+(* ------------------------------------------------------------------ triggers on the path *)
+
+(* Law T-distance: the segment's own time law places a distance along it, s = d / L from its
+   start (from its end with [from_end]), clamped to the segment; a move that does not move the
+   TCP (L = 0) is at its start for 0 from the start and at its end for any other distance (and
+   the other way round from the end). [shift] moves the moment in path time (a lag, a delay);
+   it is never before the move's motion begins. *)
+let mark_of ?(from_end = false) ?(shift = 0.) t id d =
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.mark: unknown move";
+  let e = Vec.get t.moves id in
+  let f = e.seg.f in
+  let s =
+    if f.length > 0. then Float.max 0. (Float.min 1. (d /. f.length))
+    else if d > 0. then 1. else 0. in
+  let s = if from_end then 1. -. s else s in
+  let own_end = f.t_start +. f.duration in
+  let p = Float.max e.motion_from (f.t_start +. s *. f.duration +. shift) in
+  { m_level = e.level; m_p = p; m_limit = Float.min p own_end; m_dropped = false }
+
+let real_mark_time t m =
+  let live = m.m_level == t.cur || (match t.stored with Some s -> s == m.m_level | None -> false) in
+  if m.m_dropped || not live then None else Some (real_time m.m_level m.m_p)
+
+let time_at_distance ?from_end ?shift t id d = real_mark_time t (mark_of ?from_end ?shift t id d)
+
+let mark ?from_end ?shift t id d =
+  let m = mark_of ?from_end ?shift t id d in
+  m.m_level.marks <- m :: m.m_level.marks;
+  m
+
+let mark_time = real_mark_time
+
+let release _ m = m.m_level.marks <- List.filter (fun x -> x != m) m.m_level.marks
+
+let segment_length t id =
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.segment_length: unknown move"
+  else (Vec.get t.moves id).seg.f.length
+
+let segment_speed t id =
+  if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.segment_speed: unknown move"
+  else
+    let f = (Vec.get t.moves id).seg.f in
+    if f.duration > 0. then f.length /. f.duration else 0.

@@ -160,3 +160,36 @@ val forget : t -> before:float -> keep:int -> unit
 val is_open : t -> int -> bool
 (** Whether the move is the last one, ending in a fly-by point whose corner waits for the next
     move. *)
+
+(** {1 Triggers on the path (TriggL, TriggJ, TriggC; doc/motion.md, law T-distance)} *)
+
+val time_at_distance : ?from_end:bool -> ?shift:float -> t -> int -> float -> float option
+(** [time_at_distance t id d]: when the TCP of the move [id] has gone [d] mm along its segment
+    from the segment's start (with [from_end], when it is [d] mm before the segment's end), by
+    the segment's own time law (s = d / L at constant speed, inside the corner paths too, which
+    take the time of the parts they replace), clamped to the segment, plus [shift] seconds of
+    path time, and never before the move's motion begins: a real time in the light of StopMove
+    and StartMove, [infinity] while the robot is stopped short of it; [None] when the path has
+    been dropped before it. ABB's triggers measure the distance from the move's start or end
+    point (TriggIO, TriggInt: RAPID Instructions); a TCP that does not move (L = 0) is at the
+    start for 0 from the start and at the end for any other distance. Raises
+    [Invalid_argument] for a move forgotten or not planned. *)
+
+type mark
+(** A moment of the path that a trigger waits for: it follows StopMove and StartMove, and is
+    dropped with the path (ClearPath, RestoPath) when the robot has not got to it. *)
+
+val mark : ?from_end:bool -> ?shift:float -> t -> int -> float -> mark
+(** The moment of {!time_at_distance}, kept until {!release}, so that it can be asked for after
+    the move is forgotten. *)
+
+val mark_time : t -> mark -> float option
+(** As {!time_at_distance} answers for the mark, now. *)
+
+val release : t -> mark -> unit
+
+val segment_length : t -> int -> float
+(** The TCP path length of the move's segment, mm (law L-sum; MoveJ: the chord). *)
+
+val segment_speed : t -> int -> float
+(** The move's TCP speed, length over time, mm/s (0 for a move of no time). *)

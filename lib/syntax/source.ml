@@ -22,14 +22,12 @@ let file_count = ref 0
 let kept = ref 0
 let keep () = if !file_count < max_files - 64 then kept := max !kept !file_count
 
-(* Files about to be kept are registered where {!keep} can keep them: when fewer than [n] ids
-   are left below its limit, the ids wrap now (to those not kept), not in their midst. Without
-   it, files first parsed after some 960 others (a process that parsed the whole of spec/ first)
-   were not kept, and a later file took their ids. *)
-let make_room n = if !file_count + n >= max_files - 64 then file_count := !kept
-
+(* Until [keep] has kept any, ids are reused from [max_files - 96] on, so that the files parsed
+   just before it (the installed modules, first needed after any number of other files) end
+   below its limit: otherwise whether they keep their ids depended on where the count stood. *)
 let register ~name ~line_starts =
-  if !file_count >= max_files then file_count := !kept;
+  let limit = if !kept = 0 then max_files - 96 else max_files in
+  if !file_count >= limit then file_count := !kept;
   incr file_count;
   let id = !file_count in
   if id >= Array.length !files then begin

@@ -16,17 +16,14 @@ type region
 
 val register : name:string -> line_starts:int array -> file
 (** [register ~name ~line_starts] records a file whose line [i+1] starts at character offset
-    [line_starts.(i)]; [line_starts.(0)] is [0]. Ids are reused after 1023 files, except those
-    {!keep} protects. *)
+    [line_starts.(i)]; [line_starts.(0)] is [0]. Ids are reused after 1023 files (927 while
+    {!keep} has kept none, so that up to 32 files registered just before it are kept), except
+    those {!keep} protects. *)
 
 val keep : unit -> unit
 (** The files registered so far keep their ids for the life of the process: files parsed once
     and used by every later check (the installed modules), whose regions must never equal those
     of a file registered later. *)
-
-val make_room : int -> unit
-(** Before registering [n] files to {!keep}: the ids wrap now if they would reach the limit of
-    {!keep} among them, so that they are kept however many files the process parsed before. *)
 
 val name : file -> string
 

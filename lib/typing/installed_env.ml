@@ -4,8 +4,7 @@ let file_names = List.map fst Installed_sources.files
 
 let parsed =
   lazy
-    (Source.make_room (List.length Installed_sources.files);
-     let modules =
+    (let modules =
        List.fold_left (fun acc (name, text) ->
            match acc with
            | Error _ -> acc
