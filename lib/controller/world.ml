@@ -39,6 +39,7 @@ type source =
   | Signal_edge of { signal : int; trigger : trigger; single : bool }
   | Watch of { changed : unit -> bool; single : bool }
   | Error_log of { domain : int; id : int option; error_type : int }
+  | Rmq_message of { datatype : string }      (* IRMQMessage: a message of this data type *)
 
 type interrupt = {
   trap : int;
@@ -49,6 +50,21 @@ type interrupt = {
 }
 
 type clock = { mutable since : int option; mutable total : int }
+
+(* The RAPID Message Queue (ABB's RMQ, doc/controller.md): what a message carries is the
+   installed routines' value, which this library does not know. *)
+type rmq_data = ..
+
+type rmq_message = { sender : int; datatype : string; dims : int list; user_def : int; data : rmq_data }
+
+type rmq_mode = Rmq_unset | Rmq_interrupt | Rmq_synchronous
+
+type rmq = {
+  messages : rmq_message Queue.t;
+  mutable mode : rmq_mode;
+  mutable awaiting : (int * string) option;
+  mutable answer : rmq_message option;
+}
 
 type wait = Rapid_observable.Wait.t = {
   what : string;
@@ -73,6 +89,9 @@ and shared = {
   mutable members : t list;                    (* the tasks, in order of their numbers *)
   syncs : (string, int) Hashtbl.t;             (* WaitSyncTask: (sync point, task) -> arrivals *)
   sync_moves : (string, string list) Hashtbl.t; (* SyncMoveOn: task -> the task list it synchronises with *)
+  rmqs : (int, rmq) Hashtbl.t;                 (* each task's RAPID Message Queue, by its number *)
+  rmq_kept : (int, rmq_message) Hashtbl.t;     (* the messages rmqmessage variables hold *)
+  mutable rmq_last : int;                      (* the identity of the last message kept *)
 }
 
 and t = {
@@ -112,7 +131,7 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4;
-            sync_moves = Hashtbl.create 2 } in
+            sync_moves = Hashtbl.create 2; rmqs = Hashtbl.create 2; rmq_kept = Hashtbl.create 8; rmq_last = 0 } in
   let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true;
             statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             interrupts = Hashtbl.create 8; watching = false;
@@ -445,3 +464,82 @@ let set_sync_move w tasks =
   match tasks with
   | Some l -> Hashtbl.replace w.c.sync_moves k l
   | None -> Hashtbl.remove w.c.sync_moves k
+
+(* ---------------------------------------------------------------- RAPID Message Queue *)
+
+(* ABB's defaults of the task's system parameters RMQ Max No Of Messages and RMQ Max Message Size
+   (doc/rulings.md R-14-rmq1). *)
+let rmq_max_messages = 5
+let rmq_max_size = 400
+let rmq_kept_limit = 1000
+
+let rmq w =
+  match Hashtbl.find_opt w.c.rmqs w.task_number with
+  | Some q -> q
+  | None ->
+      let q = { messages = Queue.create (); mode = Rmq_unset; awaiting = None; answer = None } in
+      Hashtbl.replace w.c.rmqs w.task_number q;
+      q
+
+(* A task's slot is its number, its slot name RMQ_ and its name (ABB's RMQFindSlot examples:
+   "RMQ_T_ROB2"); names compare without letter case, as task names. *)
+let rmq_slot_name w slot =
+  List.find_map (fun m -> if m.task_number = slot then Some ("RMQ_" ^ m.task_name) else None) w.c.members
+
+let same_text a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+let rmq_slot w name =
+  List.find_map (fun m -> if same_text ("RMQ_" ^ m.task_name) name then Some m.task_number else None) w.c.members
+
+let order_rmq w n ~datatype =
+  with_interrupt w n (fun i ->
+      i.generation <- fresh_generation w;
+      i.sleeping <- false;
+      i.source <- Rmq_message { datatype };
+      Ok ())
+
+(* A message arrives (R-14-rmq2): the answer a waiting RMQSendWait of the receiver expects goes
+   to it; in interrupt mode a message of a data type some IRMQMessage ordered is queued and the
+   interrupt of the lowest such number occurs (a message whose interrupt is discarded, sleeping
+   or finding the interrupt queue full, is discarded with it), any other is discarded; in
+   synchronous mode, and before the task has chosen a mode, every message is queued. A queue
+   already holding rmq_max_messages refuses the message: ERR_RMQ_FULL for the sender. *)
+let rmq_send w ~slot (m : rmq_message) =
+  match List.find_opt (fun r -> r.task_number = slot) w.c.members with
+  | None -> Error "ERR_RMQ_INVALID"
+  | Some r -> (
+      let q = rmq r in
+      let full () = Queue.length q.messages >= rmq_max_messages in
+      match q.awaiting with
+      | Some (from, datatype) when from = m.sender && same_text datatype m.datatype && q.answer = None ->
+          q.answer <- Some m;
+          Ok ()
+      | _ when q.mode <> Rmq_interrupt ->
+          if full () then Error "ERR_RMQ_FULL" else (Queue.add m q.messages; Ok ())
+      | _ -> (
+          let lowest = Hashtbl.fold (fun n i found ->
+              match i.source with
+              | Rmq_message { datatype } when same_text datatype m.datatype ->
+                  (match found with Some k when k < n -> found | _ -> Some n)
+              | _ -> found) r.interrupts None in
+          match lowest with
+          | None -> Ok ()
+          | Some _ when full () -> Error "ERR_RMQ_FULL"
+          | Some n ->
+              let i = Hashtbl.find r.interrupts n in
+              if (not i.sleeping) && Queue.length r.queue < queue_capacity then Queue.add m q.messages;
+              occur r n;
+              Ok ()))
+
+(* A message an rmqmessage variable holds, under a new identity: the one the variable held before
+   is forgotten, so that a variable taking message after message holds one; of the others the
+   last rmq_kept_limit given out are kept, the oldest forgotten first (R-14-rmq3). *)
+let rmq_keep w ?into m =
+  let c = w.c in
+  Option.iter (Hashtbl.remove c.rmq_kept) into;
+  c.rmq_last <- c.rmq_last + 1;
+  Hashtbl.replace c.rmq_kept c.rmq_last m;
+  Hashtbl.remove c.rmq_kept (c.rmq_last - rmq_kept_limit);
+  c.rmq_last
+
+let rmq_kept w k = Hashtbl.find_opt w.c.rmq_kept k

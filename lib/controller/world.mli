@@ -7,7 +7,8 @@
       (the stimulus) and of outputs (SetDO \SDelay, PulseDO);
     - the interrupt numbers, their sources (timers, signal edges), the queue of interrupts that
       occurred and wait for their trap, IDisable/IEnable, ISleep/IWatch (ch. 8, §4.15);
-    - the clocks of ClkStart/ClkRead, and the wall clock of CDate/CTime/GetTime.
+    - the clocks of ClkStart/ClkRead, and the wall clock of CDate/CTime/GetTime;
+    - with several tasks, each task's RAPID Message Queue (ABB's RMQ), which the others send to.
 
     Times are seconds; inside, the clock counts whole microseconds, so that adding the time of
     a statement a million times gives exactly a million times it. *)
@@ -251,3 +252,63 @@ val sync_move : t -> string list option
     with, or [None] (independent movement). *)
 
 val set_sync_move : t -> string list option -> unit
+
+(** {1 The RAPID Message Queue (ABB's RMQ; doc/controller.md, "The RAPID Message Queue")}
+
+    Each task of the run has a queue of messages from the other tasks (and from itself), in the
+    shared part of the worlds, so that a task's RMQSendMessage reaches another's queue. A slot
+    is a task's number; its name is RMQ_ and the task's name. What a message carries is opaque
+    here: the installed routines extend {!rmq_data} with their values. *)
+
+type rmq_data = ..
+
+type rmq_message = {
+  sender : int;              (** the slot of the sending task *)
+  datatype : string;         (** the name of the data's type: [num], [robtarget], a record's name *)
+  dims : int list;           (** the sizes of its dimensions, [[]] for a scalar *)
+  user_def : int;            (** \UserDef of the send *)
+  data : rmq_data;
+}
+
+(** ABB's RMQ Mode of a task (Interrupt or Synchronous); a task of rapid-sem takes the mode of the
+    first of IRMQMessage and RMQReadWait it executes (doc/rulings.md R-14-rmq2). *)
+type rmq_mode = Rmq_unset | Rmq_interrupt | Rmq_synchronous
+
+(** A task's queue: its messages, first in first out, its mode, and the answer RMQSendWait
+    awaits (the slot it sent to and the answer's data type) once it has come. *)
+type rmq = {
+  messages : rmq_message Queue.t;
+  mutable mode : rmq_mode;
+  mutable awaiting : (int * string) option;
+  mutable answer : rmq_message option;
+}
+
+val rmq_max_messages : int
+val rmq_max_size : int
+(** ABB's defaults of the task parameters RMQ Max No Of Messages (5) and RMQ Max Message Size
+    (400 bytes of data), doc/rulings.md R-14-rmq1. *)
+
+val rmq : t -> rmq
+(** This task's queue. *)
+
+val rmq_slot : t -> string -> int option
+(** RMQFindSlot: the slot of this name (letter case aside). *)
+
+val rmq_slot_name : t -> int -> string option
+(** RMQGetSlotName: [None] for a number that is no task of the run. *)
+
+val order_rmq : t -> int -> datatype:string -> (unit, string) result
+(** IRMQMessage: an interrupt for each message of this data type (its name, letter case aside)
+    that arrives; ERR_UNKINO for a number that is not connected. *)
+
+val rmq_send : t -> slot:int -> rmq_message -> (unit, string) result
+(** The message arrives at the slot's task: to the answer its RMQSendWait awaits, to its queue
+    (with the interrupt IRMQMessage ordered, in interrupt mode) or discarded (interrupt mode,
+    no order for its type); ERR_RMQ_INVALID for a slot that is no task, ERR_RMQ_FULL when the
+    queue holds {!rmq_max_messages} already (R-14-rmq2). *)
+
+val rmq_keep : t -> ?into:int -> rmq_message -> int
+val rmq_kept : t -> int -> rmq_message option
+(** The messages rmqmessage variables hold, each by a new identity: [into], the identity the
+    variable held so far, is forgotten; of the others the last 1000 given out are kept
+    (doc/rulings.md R-14-rmq3). *)

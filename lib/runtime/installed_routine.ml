@@ -30,7 +30,24 @@ let returned v = { result = Returned v; events = []; new_move = None }
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
+let type_suffix = ":type"
+
+(* [P:type]: the static type the lowering recorded for the argument of the anytype parameter P
+   (Ir.Argument_types). *)
+let argument_type (program : Ir.program) (callee : Ir.routine) arguments name =
+  match Ir.Argument_types.find_opt program.argument_types arguments with
+  | None -> None
+  | Some types ->
+      let found = ref None in
+      Array.iteri (fun i (p : Ir.parameter) ->
+          if same p.p_name name && i < Array.length types then found := types.(i)) callee.parameters;
+      !found
+
 let argument_label (program : Ir.program) (callee : Ir.routine) (arguments : Ir.argument array) name =
+  let n = String.length name and k = String.length type_suffix in
+  if n > k && String.sub name (n - k) k = type_suffix then
+    argument_type program callee arguments (String.sub name 0 (n - k))
+  else
   let found = ref None in
   Array.iteri (fun i (p : Ir.parameter) ->
       if same p.p_name name && i < Array.length arguments then

@@ -7,7 +7,8 @@ type context = {
   parameters : string array;                   (** the routine's parameter names, in order *)
   argument_label : string -> string option;
       (** the name of the data object given for a parameter (by the parameter's name), for the
-          motion's output: [p10], [z10]; for any other expression its line, [line 12] *)
+          motion's output: [p10], [z10]; for any other expression its line, [line 12]; for
+          [P:type] the static type of an anytype parameter's argument ({!argument_label}) *)
   book_error : unit -> int;                    (** BookErrNo: the task's next error number *)
   error_number : string -> int;                (** the number of an ERR_ name (§7.1) *)
 }
@@ -60,7 +61,11 @@ val returned : Value.t option -> outcome
 val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
 (** The data object the argument of a call gives for a parameter (by the parameter's name), for
     the motion's output ([p10], [z10]), or [line N] for another expression (an inline target,
-    Offs(...)): the [argument_label] of a call's context. *)
+    Offs(...)): the [argument_label] of a call's context. Asked for [P:type] (a parameter name
+    and [:type], which no parameter name holds), it gives the name of the static type of the
+    data reference given for the anytype parameter P, as the lowering recorded it
+    ({!Ir.Argument_types}: a call the checker bound; not a late-bound one): the RAPID Message
+    Queue sends data with its type's name (ABB's RMQSendMessage, doc/rulings.md R-14-rmq4). *)
 
 val condition_argument : entry -> Ir.routine -> Ir.argument array -> Ir.expr option
 (** The expression given for the entry's [condition] parameter, when it has one. *)

@@ -173,6 +173,18 @@ type global = {
   g_at : region;                             (* its declaration, for a memory budget exceeded *)
 }
 
+(* The static types of the data references a call gives for anytype parameters, by the name of
+   the type (aliases replaced, §2.15), one entry per parameter ([None]: no such argument): the
+   RAPID Message Queue sends data with its type's name and receives it by that name (ABB's
+   RMQSendMessage, RMQGetMsgData; doc/rulings.md R-14-rmq4). The key is the call's arguments
+   array, which the lowering makes once per call and the engines pass on as they find it in the
+   call: compared physically. *)
+module Argument_types = Hashtbl.Make (struct
+    type t = argument array
+    let equal = ( == )
+    let hash = Hashtbl.hash
+  end)
+
 type program = {
   routines : routine array;
   globals : global array;
@@ -181,6 +193,7 @@ type program = {
   error_numbers : (string * int) list;       (* ERR_ names of the installed environment *)
   entry_points : (string * int) list;        (* procedures without parameters, by name *)
   names : names;                             (* for the trace only: the machine never reads them *)
+  argument_types : string option array Argument_types.t;
 }
 
 (* The names a trace writes places with: the lowering resolves names to slots and components to

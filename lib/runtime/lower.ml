@@ -30,6 +30,7 @@ type ctx = {
   component_names : (Ir.name_key, string) Hashtbl.t;
   installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
       (* the routine and global numbers of the installed part, when it is shared (below) *)
+  argument_types : string option array Ir.Argument_types.t;
 }
 
 let index table installed region =
@@ -177,12 +178,51 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
           (* The bound arguments are in parameter order (Elaboration): one walk along both lists,
              not a search per parameter, since a call may have thousands of arguments. *)
           let bound = ref binding.bound in
-          let arguments = Array.map (fun (p : Env.parameter) ->
+          let types = ref [] in
+          let arguments = Array.mapi (fun i (p : Env.parameter) ->
               match !bound with
-              | ((q : Env.parameter), a) :: rest when q == p -> bound := rest; argument ctx p a
+              | ((q : Env.parameter), a) :: rest when q == p ->
+                  bound := rest;
+                  (match p.p_type with
+                   | Some { base = Anytype; _ } -> (
+                       match argument_type ctx a with Some t -> types := (i, t) :: !types | None -> ())
+                   | _ -> ());
+                  argument ctx p a
               | _ -> Ir.Absent) (Array.of_list params) in
+          if !types <> [] then begin
+            let named = Array.make (Array.length arguments) None in
+            List.iter (fun (i, t) -> named.(i) <- Some t) !types;
+            Ir.Argument_types.replace ctx.argument_types arguments named
+          end;
           { callee = Routine index; arguments; call_at = at })
   | _ -> unknown ()
+
+(* The name of the static type of a data reference given for an anytype parameter (Ir's
+   Argument_types): its declared type, an element's or a component's. *)
+and argument_type ctx (a : A.argument) =
+  let e = match a.it with
+    | Required_argument (_, e, at) -> Some (A.operand e at)
+    | Positional_argument e -> Some (A.operand e a.at)
+    | Optional_argument (_, Some e) -> Some e
+    | Optional_argument (_, None) | Conditional_argument _ | ARG_placeholder -> None in
+  match e with
+  | Some ({ it = Data_reference r; _ } as e) ->
+      Option.map (fun (t : Types.object_type) -> Types.name t.base) (reference_type ctx (A.reference e r))
+  | _ -> None
+
+and reference_type ctx (r : A.data_reference) : Types.object_type option =
+  let declared (n : Source.region) = match Hashtbl.find_opt ctx.elab.names n with
+    | Some (Data d) -> Some d.d_type
+    | _ -> None in
+  match r.it with
+  | VAR_placeholder -> None
+  | Entire _ -> declared r.at
+  | Element (n, _) -> Option.map (fun (t : Types.object_type) -> Types.scalar t.base) (declared n.at)
+  | Component (inner, comp) -> (
+      match reference_type ctx inner, Hashtbl.find_opt ctx.elab.components comp.at with
+      | Some { base = Record rt; _ }, Some k ->
+          Option.map (fun (_, t) -> Types.scalar t) (List.nth_opt rt.components k)
+      | _ -> None)
 
 and parameters_of (r : Env.routine) =
   List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
@@ -525,7 +565,7 @@ let new_ctx elab =
   { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
     locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
     routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
-    installed_index = None }
+    installed_index = None; argument_types = Ir.Argument_types.create 4 }
 
 (* The installed modules' part is the same for every task (its names are bound by the installed
    level alone, and it comes first), so it is lowered once and shared when the checker shares
@@ -548,7 +588,8 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
   let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
                      component_names = Hashtbl.copy c.component_names;
-                     installed_index = Some (c.routine_index, c.global_index) } in
+                     installed_index = Some (c.routine_index, c.global_index);
+                     argument_types = Ir.Argument_types.create 16 } in
   let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
       ~global_base:(Array.length inst.part_globals) (List.map (fun m -> (m, false)) modules) in
   let routines = Array.append inst.part_routines user.part_routines in
@@ -562,4 +603,4 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let entry_points = inst.part_entry_points @ user.part_entry_points in
   { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO";
     error_numbers = inst.part_error_numbers; entry_points;
-    names = { local_names; component_names = ctx.component_names } }
+    names = { local_names; component_names = ctx.component_names }; argument_types = ctx.argument_types }

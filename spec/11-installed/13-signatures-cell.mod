@@ -21,7 +21,7 @@ MODULE sig_cell
     VAR string uname;
     VAR num axes;
     RMQFindSlot peer, "RMQ_T_ROB2";
-    RMQSendMessage peer, 42 \UserDef:=7;
+    RMQSendMessage peer, reading \UserDef:=7;
     CONNECT onData WITH Received;
     IRMQMessage reading, onData;
     RMQReadWait inbox \TimeOut:=2;
