@@ -13,3 +13,7 @@ val modelled : string -> bool
 val date_time : float -> int * int * int * int * int * int * int
 (** Seconds since 1970-01-01 00:00:00 to year, month, day, hour, minute, second and the day of
     the week (1 Monday .. 7 Sunday, GetTime \WDay). *)
+
+val signal : Primitive.context -> Primitive.argument array -> string -> (int, string) result
+(** The configured signal a signal argument (by parameter name) denotes: its identity, or
+    ERR_NO_ALIASIO_DEF for a signal object connected to none (doc/rulings.md R-8-a). *)

@@ -60,14 +60,7 @@ type t = {
 
 let create world motion = { world; motion; entries = Hashtbl.create 64 }
 
-let same = Rapid_typing.Types.same_name
-
 let claimants world name = List.filter (fun b -> b.claims world name) bodies
-
-(* The world of a motion task, for [modelled]: every name some task's registry answers. *)
-let a_motion_task = lazy (W.create Rapid_controller.Io_config.empty)
-
-let modelled name = List.exists (fun b -> b.claims (Lazy.force a_motion_task) name) bodies
 
 (* The most any claimant reaches: the motion, the world (the clock, signals, interrupts,
    services, other tasks), or values only. ErrWrite's entry goes to the world's event log too

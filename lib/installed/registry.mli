@@ -11,6 +11,3 @@ val create : Rapid_controller.World.t -> Motion_routines.state -> t
 val find : t -> string -> Installed_routine.entry option
 (** The entry of the routine of this name (letter case aside, §2.3), made once; [None] when
     rapid-sem does not model it yet. *)
-
-val modelled : string -> bool
-(** Whether rapid-sem gives the installed routine of this name a body, in some task. *)

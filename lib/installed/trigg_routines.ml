@@ -93,14 +93,6 @@ let run_of st =
 
 let ( let* ) = Result.bind
 
-let signal_id ctx args name =
-  match arg ctx args name with
-  | Location (box, i, _) -> (
-      match box.(i) with
-      | V.Handle h when V.handle_id h > 0 && W.signal_kind ctx.world (V.handle_id h) <> None -> Ok (V.handle_id h)
-      | _ -> Error "ERR_NO_ALIASIO_DEF")
-  | _ -> Error "ERR_NO_ALIASIO_DEF"
-
 (* Distances and times are not negative (ABB gives them as positive values; R-4.1-trigg4). *)
 let not_negative = function
   | Some d when d >= 0. && Float.is_finite d -> Ok d
@@ -122,7 +114,7 @@ let output ctx args =
   | None, _ when present ctx args "ProcID" -> Error not_modelled
   | None, _ | _, None -> Error "ERR_ARGVALERR"
   | Some k, Some v ->
-      let* id = signal_id ctx args k in
+      let* id = Io_routines.signal ctx args k in
       match k with
       | "DOp" -> if v = 0. || v = 1. then Ok (id, v) else Error "ERR_ARGVALERR"
       | "GOp" -> if Float.is_integer v && v >= 0. && v < 4294967296. then Ok (id, v) else Error "ERR_GO_LIM"
@@ -184,12 +176,12 @@ let trigg_int ctx args =
 let trigg_speed ctx args =
   let* distance = not_negative (num ctx args "Distance") in
   let* lag = finite (num ctx args "ScaleLag") in
-  let* signal = signal_id ctx args "AOp" in
+  let* signal = Io_routines.signal ctx args "AOp" in
   let* scale = finite (num ctx args "ScaleValue") in
   let* dip_lag = match num ctx args "DipLag" with None -> Ok 0. | d -> not_negative d in
   let* () = match arg ctx args "ErrDO" with
     | Missing -> Ok ()
-    | _ -> Result.map ignore (signal_id ctx args "ErrDO") in
+    | _ -> Result.map ignore (Io_routines.signal ctx args "ErrDO") in
   Ok { distance; from_start = present ctx args "Start"; time = false; shift = -. lag; inhib = inhib ctx args;
        action = Speed_output { signal; scale; dip_lag } }
 
