@@ -70,8 +70,8 @@ let utf8_length line =
   !n
 
 (* The sources as written: not what the build generates beside them (menhir's parser, the
-   preprocessed files, the embedded installed environment). *)
-let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml" ]
+   preprocessed files, the embedded installed environment and its image). *)
+let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "installed_image_data.ml" ]
 
 let rec sources dir =
   Sys.readdir dir |> Array.to_list |> List.concat_map (fun f ->
