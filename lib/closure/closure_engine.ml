@@ -408,10 +408,18 @@ let local_access (r : routine) i =
 let index st ~at (v : V.t) n =
   match v with
   | V.Num x | V.Dnum x ->
-      if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
+      (* an integer within the bounds, the common case, with one conversion and no call *)
+      let k = int_of_float x in
+      if float_of_int k = x && k >= 1 && k <= n then k - 1
+      else if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
       else if x < 1. || x > float_of_int n then fail st ~at "ERR_OUTOFBND"
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
+
+(* A whole place read and written where it is: module data, or an own slot of the activation. *)
+let plain_whole (r : routine) = function
+  | Global _ -> true
+  | Local i -> local_access r i = Own
 
 (* The root slot of a place, for the binding of alias arguments. *)
 let rec root = function
@@ -429,6 +437,14 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
           fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Element (Whole w, [| ix |]) when plain_whole r w ->
+      (* One index into module data or an own slot: located as [locate] does (the index first,
+         then its bounds), without building the location. *)
+      let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
+      fun a ->
+        let v = ix a in
+        let elements = V.components (container a) in
+        elements.(index st ~at v (Array.length elements))
   | Element _ | Component _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
@@ -480,6 +496,13 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
+  | Binary ((Dnum_add | Dnum_sub as op), { e = Read (Whole (Local i)); _ }, { e = Literal (V.Dnum q as v); _ })
+    when local_access r i = Own ->
+      (* x +- k on an own dnum slot, read without a call (as [binary]'s dnum rows) *)
+      let slow u = check st ~at (Arith.binary op u v) in
+      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+      if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u)
+      else fun a -> (match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u)
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -515,6 +538,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
 and binary st ~at (op : Arith.binary) x y : act -> V.t =
   let slow u v = check st ~at (Arith.binary op u v) in
   let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
   (* An integer of at most 24 bits is a single already, and finite. *)
   let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op with
@@ -540,6 +564,24 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
       (match u, v with V.Num p, V.Num q -> if p = q then v_true else v_false | _ -> slow u v)
   | Not_equal -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
+  (* The rows on two dnums: Arith's rule (one operation in double precision; an infinite result
+     is ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO) without building a result. *)
+  | Dnum_add -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p +. q) | _ -> slow u v)
+  | Dnum_sub -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p -. q) | _ -> slow u v)
+  | Dnum_mul -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p *. q) | _ -> slow u v)
+  | Dnum_div -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q when q <> 0. -> dnum (p /. q) | _ -> slow u v)
+  | Dnum_lt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p < q then v_true else v_false | _ -> slow u v)
+  | Dnum_le -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p <= q then v_true else v_false | _ -> slow u v)
+  | Dnum_gt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p > q then v_true else v_false | _ -> slow u v)
+  | Dnum_ge -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p >= q then v_true else v_false | _ -> slow u v)
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
 (* The same with a num literal on the right, which then costs no call. *)
@@ -583,6 +625,17 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
             | Num_ge -> fun a -> (match x a with V.Num p -> p >= q | u -> slow u)
             | Equal -> fun a -> (match x a with V.Num p -> p = q | u -> slow u)
             | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
+    | (Arith.Dnum_lt | Dnum_le | Dnum_gt | Dnum_ge), Literal (V.Dnum q as v) ->
+        (* A dnum literal on the right: compared without a call. *)
+        let x = match x.e with
+          | Read (Whole (Local i)) when local_access r i = Own -> fun a -> a.store.(i)
+          | _ -> expr st r ~at x in
+        let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op with
+            | Dnum_lt -> fun a -> (match x a with V.Dnum p -> p < q | u -> slow u)
+            | Dnum_le -> fun a -> (match x a with V.Dnum p -> p <= q | u -> slow u)
+            | Dnum_gt -> fun a -> (match x a with V.Dnum p -> p > q | u -> slow u)
+            | _ -> fun a -> (match x a with V.Dnum p -> p >= q | u -> slow u))
     | _ ->
     let x = expr st r ~at x and y = expr st r ~at y in
     let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
@@ -599,6 +652,14 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
                         match u, v with V.Num p, V.Num q -> p = q | _ -> slow u v)
     | Not_equal -> Some (fun a -> let u = x a in let v = y a in
                         match u, v with V.Num p, V.Num q -> not (p = q) | _ -> slow u v)
+    | Dnum_lt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p < q | _ -> slow u v)
+    | Dnum_le -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p <= q | _ -> slow u v)
+    | Dnum_gt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p > q | _ -> slow u v)
+    | Dnum_ge -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p >= q | _ -> slow u v)
     | _ -> None
   in
   let general () = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
@@ -1560,6 +1621,17 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Element (Whole w, [| ix |]) when plain_whole r w ->
+          (* As the general case below, the element located (index, bounds) before the value,
+             without building the location. *)
+          let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
+          fun a ->
+            let iv = ix a in
+            let elements = V.components (container a) in
+            let j = index st ~at iv (Array.length elements) in
+            let v = value a in
+            if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
+            true
       | _ ->
           let l = locate st r ~at place in
           fun a ->
@@ -1697,7 +1769,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
            | false -> continue := false; goes_on := false
            | exception Continue_loop -> at_round st a
            | exception Break_loop -> continue := false);
-          if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
+          (* num + num (Arith's rule: rounded to single, R-2.13-a; infinite: ERR_OVERFLOW) *)
+          if !continue then begin
+            let next = !v +. step in
+            v := if is_small_integer next then next
+              else
+                let y = Int32.float_of_bits (Int32.bits_of_float next) in
+                if Float.is_finite y then y else fail st ~at "ERR_OVERFLOW"
+          end
         done;
         !goes_on
   | Test (subject, cases, default) ->
