@@ -421,6 +421,47 @@ let plain_whole (r : routine) = function
   | Global _ -> true
   | Local i -> local_access r i = Own
 
+(* An activation's arrays, allocated in place for the common sizes: Array.make is a call to the
+   runtime, the largest part of a call with alias parameters. One function per element type,
+   so that each literal is built without the runtime's test for floats. *)
+let small_store n : V.t array =
+  match n with
+  | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+  | 4 -> [| v_false; v_false; v_false; v_false |] | 5 -> [| v_false; v_false; v_false; v_false; v_false |]
+  | 6 -> [| v_false; v_false; v_false; v_false; v_false; v_false |]
+  | _ -> Array.make n v_false
+
+let small_boxes n : V.t array array =
+  match n with
+  | 1 -> [| [||] |] | 2 -> [| [||]; [||] |] | 3 -> [| [||]; [||]; [||] |] | 4 -> [| [||]; [||]; [||]; [||] |]
+  | _ -> Array.make n [||]
+
+let small_ints n : int array =
+  match n with 1 -> [| 0 |] | 2 -> [| 0; 0 |] | 3 -> [| 0; 0; 0 |] | 4 -> [| 0; 0; 0; 0 |] | _ -> Array.make n 0
+
+let small_present n : bool array =
+  match n with
+  | 1 -> [| true |] | 2 -> [| true; true |] | 3 -> [| true; true; true |] | 4 -> [| true; true; true; true |]
+  | _ -> Array.make n true
+
+let small_bools n : bool array =
+  match n with
+  | 1 -> [| false |] | 2 -> [| false; false |] | 3 -> [| false; false; false |]
+  | 4 -> [| false; false; false; false |]
+  | _ -> Array.make n false
+
+let small_kinds n : reference_kind array =
+  match n with
+  | 1 -> [| Ref_other |] | 2 -> [| Ref_other; Ref_other |] | 3 -> [| Ref_other; Ref_other; Ref_other |]
+  | 4 -> [| Ref_other; Ref_other; Ref_other; Ref_other |]
+  | _ -> Array.make n Ref_other
+
+let small_arguments n : Argument.t array =
+  match n with
+  | 1 -> [| Argument.Missing |] | 2 -> [| Argument.Missing; Argument.Missing |]
+  | 3 -> [| Argument.Missing; Argument.Missing; Argument.Missing |]
+  | _ -> Array.make n Argument.Missing
+
 (* The root slot of a place, for the binding of alias arguments. *)
 let rec root = function
   | Whole s -> Some s
@@ -743,6 +784,21 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
             | _ -> fun _ -> None)
         | _ -> fun _ -> None
       in
+      match place with
+      | Whole (Global g) ->
+          (* module data: its location is known; [refused] is for a caller's INOUT parameter *)
+          let globals = st.globals in
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind a;
+            c.ext.module_data.(i) <- module_data a;
+            if p.p_optional then c.ext.present.(i) <- true
+      | Whole (Local s) when local_access caller s = Own ->
+          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind a;
+            c.ext.module_data.(i) <- module_data a;
+            if p.p_optional then c.ext.present.(i) <- true
+      | _ ->
       fun a (c : act) ->
         let box, j = l a in
         (match refused a with Some name -> fail st ~at name | None -> ());
@@ -947,7 +1003,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             e.call site values in
       fun a ->
         let pending = ref 0 in
-        let values = Array.make n Argument.Missing in
+        let values = small_arguments n in
         for i = 0 to n - 1 do
           let v = args.(i) a in
           let what, bytes = cost.(i) v in
@@ -1358,15 +1414,13 @@ and activation_shape (r : routine) =
 
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
-    store = (match size with
-        | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
-        | _ -> Array.make size v_false);
+    store = small_store size;
     ext = (if own_extension then
-             { boxes = (if aliases then Array.make n [||] else [||]);
-               idx = (if aliases then Array.make n 0 else [||]);
-               present = (if optional then Array.make n true else [||]);
-               bound = (if aliases then Array.make n Ref_other else [||]);
-               module_data = (if aliases then Array.make n false else [||]);
+             { boxes = (if aliases then small_boxes n else [||]);
+               idx = (if aliases then small_ints n else [||]);
+               present = (if optional then small_present n else [||]);
+               bound = (if aliases then small_kinds n else [||]);
+               module_data = (if aliases then small_bools n else [||]);
                retries = 0; current = None }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
