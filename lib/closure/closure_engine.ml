@@ -1598,7 +1598,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves the
              routine, as RAISE; makes the error in hand leave it (rule raise-new). *)
           if Option.is_some a.ext.current then raise (Leaving e) else raise (Raised e)
-        else fail st ~at "ERR_ILLRAISE"
+        else
+          fail ~about:(Raise_number.refusal st.program ~in_handler:(Option.is_some a.ext.current) x) st ~at
+            "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY

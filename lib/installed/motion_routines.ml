@@ -698,7 +698,8 @@ let path_command ctx st command f =
       forget st ~now; Returned None
   | Error e -> fail ctx command e
 
-(* R-14-pos1: the motion state whose robot CJointT, CRobT and CPos read. \TaskName, or \TaskRef
+(* R-14-pos1: the motion state whose robot CJointT, CRobT and CPos read (CTool and CWObj too,
+   R-14-pos2). \TaskName, or \TaskRef
    (a taskid's identity is its task's number), names a task of the run: a motion task's robot; the
    caller itself, as without either; another task, ERR_NOT_MOVETASK; no task, ERR_TASKNAME. Without
    either, a motion task reads its own robot and a task without one the robot of its motion task
@@ -822,14 +823,22 @@ let call_unguarded (ctx : context) st name args =
       settings.sing_area_wrist <- present ctx args "Wrist" || present ctx args "LockAxis4"; Some (Returned None)
   | "maxrobspeed" -> Some (Returned (Some (V.num st.robot.max_tcp_speed)))
   | "cspeedoverride" -> Some (Returned (Some (V.num 100.)))
-  | "ctool" -> Some (Returned (Some (match active_tool st with
+  (* R-14-pos2: CTool and CWObj read the active tool and work object of the task whose robot
+     CJointT would read (\TaskRef, \TaskName: R-14-pos1). *)
+  | ("ctool" | "cwobj") when Result.is_error (robot_of ctx st args) ->
+      Some (match robot_of ctx st args with Error e -> Failed e | Ok _ -> Failed "ERR_TASKNAME")
+  | "ctool" ->
+      let st = Result.get_ok (robot_of ctx st args) in
+      Some (Returned (Some (match active_tool st with
       | Some t -> V.copy t
       | None -> tool0_value ())))
-  | "cwobj" -> Some (Returned (Some (if st.wobj == dummy then
-                                       V.Record [| V.Bool false; V.Bool true; V.String "";
-                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
-                                     else V.copy st.wobj)))
+  | "cwobj" ->
+      let st = Result.get_ok (robot_of ctx st args) in
+      Some (Returned (Some (if st.wobj == dummy then
+                              V.Record [| V.Bool false; V.Bool true; V.String "";
+                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
+                            else V.copy st.wobj)))
   | "offs" -> (
       match get "Point", num ctx args "XOffset", num ctx args "YOffset", num ctx args "ZOffset" with
       | Some p, Some x, Some y, Some z ->
