@@ -198,6 +198,32 @@ let symbols () =
   Alcotest.(check string) "in Tools.mod" "Tools.mod"
     (Filename.basename (str (get [ "location"; "uri" ] (List.hd (to_list (member "result" r))))))
 
+(* A backup's task is its RAPID/TASKn folder with PROGMOD and SYSMOD below it; another task of
+   the same backup is not part of it. *)
+let backup () =
+  let root = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "rapid-sem-backup-%d" (Unix.getpid ())) in
+  let file rel text =
+    let p = List.fold_left Filename.concat root rel in
+    ignore (Sys.command (Printf.sprintf "mkdir -p %s" (Filename.quote (Filename.dirname p))));
+    write p text; p in
+  let main = file [ "RAPID"; "TASK1"; "PROGMOD"; "Main.mod" ]
+      "MODULE Cycle\n  PROC main()\n    nCycles := nCycles + 1;\n  ENDPROC\nENDMODULE\n" in
+  ignore (file [ "RAPID"; "TASK1"; "SYSMOD"; "user.sys" ] "MODULE user (SYSMODULE)\n  PERS num nCycles := 0;\nENDMODULE\n");
+  ignore (file [ "RAPID"; "TASK2"; "PROGMOD"; "Other.mod" ] "MODULE Other\n  VAR num nCycles;\nENDMODULE\n");
+  let s = { server = Lsp_server.create { allow_unknown = false; io = Rapid_controller.Io_config.empty }; out = []; next = 0 } in
+  ignore (request s "initialize" (`Assoc [ ("rootUri", `String (Lsp_uri.of_path root)); ("capabilities", `Assoc []) ]));
+  let u = Lsp_uri.of_path main in
+  notify s "textDocument/didOpen"
+    (`Assoc [ ("textDocument", `Assoc [ ("uri", `String u); ("languageId", `String "rapid"); ("version", `Int 1);
+                                        ("text", `String (read main)) ]) ]);
+  Alcotest.(check int) "no error: SYSMOD's user.sys is in the task" 0 (List.length (diagnostics_of s u));
+  let r = request s "textDocument/definition" (`Assoc [ text_doc u; pos 2 6 ]) in
+  Alcotest.(check (list string)) "the definition is in SYSMOD, not in TASK2" [ "user.sys" ]
+    (List.map (fun l -> Filename.basename (str (member "uri" l))) (to_list (member "result" r)));
+  let r = request s "workspace/symbol" (`Assoc [ ("query", `String "ncycles") ]) in
+  Alcotest.(check int) "workspace/symbol sees both tasks" 2 (List.length (to_list (member "result" r)));
+  ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote root)))
+
 (* {1 Completion} *)
 
 let labels r = List.map (fun i -> str (member "label" i)) (to_list (get [ "result"; "items" ] r))
@@ -355,7 +381,10 @@ let fuzz () =
                (int (member "code" e) = Lsp_rpc.request_failed)
     done
   done;
-  (* The server's texts are the model's: hover on a name the model says is there still answers. *)
+  List.iter (fun f ->
+      Alcotest.(check (option string)) (f ^ ": the server's text is the one the edits make")
+        (Some (Lsp_text.text (Hashtbl.find model f)))
+        (Option.map Lsp_text.text (Lsp_workspace.text (Lsp_server.workspace s.server) (uri f)))) files;
   let r = request s "shutdown" `Null in
   Alcotest.(check bool) "still answering after the fuzz" true (member "result" r = `Null)
 
@@ -445,6 +474,7 @@ let suite =
      Alcotest.test_case "hover" `Quick hover;
      Alcotest.test_case "definition and references across the task" `Quick definition_references;
      Alcotest.test_case "document and workspace symbols" `Quick symbols;
+     Alcotest.test_case "a backup's RAPID/TASKn is a task" `Quick backup;
      Alcotest.test_case "completion" `Quick completion;
      Alcotest.test_case "rename and its refusals" `Quick rename;
      Alcotest.test_case "a line of what each installed routine does" `Quick routine_docs;

@@ -13,6 +13,7 @@ type t = {
 
 let create options = { workspace = W.create options; state = Waiting; snippets = false; exit_status = None }
 let finished t = t.exit_status
+let workspace t = t.workspace
 
 exception Bad_params of string
 
@@ -75,23 +76,26 @@ let change t params =
       W.change_document t.workspace uri range text) changes;
   publish t uri
 
-(* A request's result, or the notifications a notification makes. *)
-let request t meth params : Yojson.Safe.t =
+(* A request's result; [None] for a method the server does not serve. *)
+let request t meth params : Yojson.Safe.t option =
   let ws = t.workspace in
+  let served f = Some (f ()) in
   match meth with
-  | "textDocument/hover" -> F.hover ws (uri_of params) (position_at params)
-  | "textDocument/definition" -> F.definition ws (uri_of params) (position_at params)
+  | "textDocument/hover" -> served (fun () -> F.hover ws (uri_of params) (position_at params))
+  | "textDocument/definition" -> served (fun () -> F.definition ws (uri_of params) (position_at params))
   | "textDocument/references" ->
       let include_declaration = match path [ "context"; "includeDeclaration" ] params with
         | Some (`Bool b) -> b | _ -> true in
-      F.references ws (uri_of params) (position_at params) ~include_declaration
-  | "textDocument/documentSymbol" -> F.document_symbols ws (uri_of params)
+      served (fun () -> F.references ws (uri_of params) (position_at params) ~include_declaration)
+  | "textDocument/documentSymbol" -> served (fun () -> F.document_symbols ws (uri_of params))
   | "workspace/symbol" ->
-      F.workspace_symbols ws (match field "query" params with Some (`String q) -> q | _ -> "")
-  | "textDocument/completion" -> F.completion ws (uri_of params) (position_at params) ~snippets:t.snippets
-  | "textDocument/prepareRename" -> F.prepare_rename ws (uri_of params) (position_at params)
-  | "textDocument/rename" -> F.rename ws (uri_of params) (position_at params) (string_at [ "newName" ] params)
-  | _ -> raise Not_found
+      served (fun () -> F.workspace_symbols ws (match field "query" params with Some (`String q) -> q | _ -> ""))
+  | "textDocument/completion" ->
+      served (fun () -> F.completion ws (uri_of params) (position_at params) ~snippets:t.snippets)
+  | "textDocument/prepareRename" -> served (fun () -> F.prepare_rename ws (uri_of params) (position_at params))
+  | "textDocument/rename" ->
+      served (fun () -> F.rename ws (uri_of params) (position_at params) (string_at [ "newName" ] params))
+  | _ -> None
 
 let notification t meth params =
   match meth with
@@ -140,8 +144,8 @@ let dispatch t (msg : Yojson.Safe.t) : Yojson.Safe.t list =
             | _, Some id, Shut_down -> [ R.error_response id R.invalid_request "the server is shut down" ]
             | _, Some id, _ -> (
                 match request t meth params with
-                | result -> [ R.response id result ]
-                | exception Not_found -> [ R.error_response id R.method_not_found ("unknown method " ^ meth) ])
+                | Some result -> [ R.response id result ]
+                | None -> [ R.error_response id R.method_not_found ("unknown method " ^ meth) ])
             | _, None, _ -> notification t meth params
           with
           | Bad_params m -> fail R.invalid_params m

@@ -12,6 +12,9 @@ val handle : t -> Yojson.Safe.t -> Yojson.Safe.t list
 (** The messages one incoming message makes, in order: its response (for a request) and the
     notifications it causes (publishDiagnostics). Never raises. *)
 
+val workspace : t -> Lsp_workspace.t
+(** Its documents, for a test to compare with what the client sent. *)
+
 val finished : t -> int option
 (** After [exit]: the exit status (0 after [shutdown], 1 otherwise, as LSP 3.17 says). *)
 
