@@ -21,6 +21,7 @@ let () =
       Test_check_output.suite;
       Test_robustness.suite;
       Test_motion_run.suite;
+      Test_motion_plots.suite;
       Test_motion_memory.suite;
       Test_impl_runner.suite;
       Test_oracle_hostile.suite;
@@ -40,4 +41,5 @@ let () =
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_lsp.suite;
     ]
