@@ -663,6 +663,7 @@ let names = [
   "WriteCfgData";
   "SetSysData";
   "IsStopMoveAct";
+  "ExitCycle";
 ]
 
 let modelled name = List.exists (same name) names
@@ -772,6 +773,18 @@ let call_unguarded (ctx : context) st name args =
       Some Retry_requested
   | "clearpath" ->
       Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
+  | "exitcycle" -> (
+      (* R-13-exitcycle1 (ABB's ExitCycle): the robot's on-going movement stops and every path
+         not done is dropped, of both path levels; the next cycle's moves start from where the
+         robot stands (a StopMove in effect is lifted, as by a start from main). *)
+      let clear at =
+        let back = if P.path_level st.planner = 2 then P.resto_path st.planner ~at else Ok () in
+        P.clear st.planner ~at; st.cleared_at <- Some at;
+        if P.stopped st.planner then P.start st.planner ~at;
+        back in
+      match path_command ctx st "ClearPath" clear with
+      | Returned _ -> Some Exit_cycle_requested
+      | other -> Some other)
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
   | "procerrrecovery" ->

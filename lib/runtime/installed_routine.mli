@@ -22,6 +22,9 @@ type result =
           as RETRY (§7.4) *)
   | Call_by_name of string                     (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                             (** Stop: the task stops *)
+  | Exit_cycle_requested
+      (** ExitCycle: the cycle ends, every active routine is abandoned (UNDO handlers run) and
+          the entry routine starts again (doc/rulings.md R-13-exitcycle1) *)
   | Not_modelled                               (** rapid-sem does not model this routine yet *)
   | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
       (** a waiting instruction: the engine waits (doc/controller.md); [first_poll]: WaitUntil
