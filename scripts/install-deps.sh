@@ -6,6 +6,7 @@ packages=(
   ocaml-nox ocaml-findlib dune menhir libmenhir-ocaml-dev
   libsedlex-ocaml-dev libzarith-ocaml-dev libcmdliner-ocaml-dev libyojson-ocaml-dev
   libalcotest-ocaml-dev libqcheck-ocaml-dev libocamlgsl-ocaml-dev libxmlm-ocaml-dev
+  lcov
 )
 missing=()
 for p in "${packages[@]}"; do
