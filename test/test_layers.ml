@@ -77,7 +77,7 @@ let utf8_length line =
 
 (* The sources as written: not what the build generates beside them (menhir's parser, the
    preprocessed files, the embedded installed environment). *)
-let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml" ]
+let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "robot_files.ml" ]
 
 let rec sources dir =
   Sys.readdir dir |> Array.to_list |> List.concat_map (fun f ->

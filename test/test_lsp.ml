@@ -222,6 +222,11 @@ let backup () =
     (List.map (fun l -> Filename.basename (str (member "uri" l))) (to_list (member "result" r)));
   let r = request s "workspace/symbol" (`Assoc [ ("query", `String "ncycles") ]) in
   Alcotest.(check int) "workspace/symbol sees both tasks" 2 (List.length (to_list (member "result" r)));
+  (* A module of the task changed on disk: after didSave the task is judged again. *)
+  ignore (file [ "RAPID"; "TASK1"; "SYSMOD"; "user.sys" ] "MODULE user (SYSMODULE)\n  PERS num nLoops := 0;\nENDMODULE\n");
+  s.out <- [];
+  notify s "textDocument/didSave" (`Assoc [ text_doc u ]);
+  Alcotest.(check int) "nCycles is now unknown" 1 (List.length (diagnostics_of s u));
   ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote root)))
 
 (* {1 Completion} *)
@@ -330,11 +335,15 @@ let with_input text f =
 
 let framing () =
   let ok = Lsp_rpc.frame (`Assoc [ ("a", `Int 1) ]) in
-  with_input ("\r\n" ^ ok ^ "X-Other: 1\r\n\r\n" ^ "Content-Length: 3\r\n\r\n{x}" ^ ok) (fun ic ->
+  with_input ("\r\n" ^ ok ^ "X-Other: 1\r\n\r\n" ^ "Content-Length: 3\r\n\r\n{x}" ^ ok
+              ^ "X-Other: 2\r\n\r\n{\"b\":2}" ^ ok ^ Printf.sprintf "Content-Length: %d\r\n\r\n" (Lsp_rpc.max_body + 1)
+              ^ String.make (Lsp_rpc.max_body + 1) ' ' ^ ok) (fun ic ->
       let kind = function Lsp_rpc.Message _ -> "message" | Malformed _ -> "malformed" | End -> "end" in
-      let seq = List.init 5 (fun _ -> kind (Lsp_rpc.read ic)) in
-      Alcotest.(check (list string)) "a message, a header without length, bad JSON, a message, the end"
-        [ "message"; "malformed"; "malformed"; "message"; "end" ] seq)
+      let seq = List.init 9 (fun _ -> kind (Lsp_rpc.read ic)) in
+      Alcotest.(check (list string))
+        "a message, a header without length, bad JSON, a message, a body without a header (the next message found \
+         again), a body too long (read past), the end"
+        [ "message"; "malformed"; "malformed"; "message"; "malformed"; "message"; "malformed"; "message"; "end" ] seq)
 
 (* A seeded fuzz: random edits (insertions, deletions, replacements of random text at random
    places, full replacements) of the task's modules, each followed by requests at random

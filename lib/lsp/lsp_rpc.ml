@@ -18,12 +18,30 @@ let header_line ic =
       let n = String.length l in
       Some (if n > 0 && l.[n - 1] = '\r' then String.sub l 0 (n - 1) else l)
 
+(* The field may follow the rest of a message that came without one (a body the header did not
+   measure, read as a header line): it is looked for anywhere in the line, so that the next
+   message is read again from its own header. *)
 let content_length fields =
+  let field = "content-length:" in
+  let n = String.length field in
   List.find_map (fun l ->
-      match String.index_opt l ':' with
-      | Some i when String.lowercase_ascii (String.trim (String.sub l 0 i)) = "content-length" ->
-          int_of_string_opt (String.trim (String.sub l (i + 1) (String.length l - i - 1)))
-      | _ -> None) fields
+      let low = String.lowercase_ascii l in
+      let rec find i =
+        if i + n > String.length low then None
+        else if String.sub low i n = field then
+          int_of_string_opt (String.trim (String.sub l (i + n) (String.length l - i - n)))
+        else find (i + 1) in
+      find 0) fields
+
+(* The body of a refused message is read and dropped, so that the next header is found. *)
+let skip ic n =
+  let chunk = Bytes.create 65536 in
+  let rec go n = if n > 0 then
+      match input ic chunk 0 (min n (Bytes.length chunk)) with
+      | 0 -> ()
+      | k -> go (n - k)
+      | exception End_of_file -> () in
+  go n
 
 let read ic =
   (* The header: lines up to an empty one. Empty lines before any field are skipped (a client's
@@ -39,6 +57,7 @@ let read ic =
       match content_length fs with
       | None -> Malformed "a message header without a Content-Length field"
       | Some n when n < 0 || n > max_body ->
+          skip ic n;
           Malformed (Printf.sprintf "a Content-Length of %d bytes is refused (at most %d)" n max_body)
       | Some n -> (
           match really_input_string ic n with

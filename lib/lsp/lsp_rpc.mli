@@ -10,7 +10,7 @@ type incoming =
   | End                   (** the input ended *)
 
 val max_body : int
-(** A body longer than this is refused as malformed (and skipped) rather than held in memory. *)
+(** A body longer than this is refused as malformed and read past, not held in memory. *)
 
 val read : in_channel -> incoming
 

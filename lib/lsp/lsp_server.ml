@@ -111,7 +111,13 @@ let notification t meth params =
       (* its diagnostics go with it; the others of its task are judged again without it *)
       R.notification "textDocument/publishDiagnostics" (`Assoc [ ("uri", `String uri); ("diagnostics", `List []) ])
       :: (if W.diagnostics t.workspace uri = [] then [] else publish t uri)
-  | "textDocument/didSave" | "workspace/didChangeConfiguration" | "workspace/didChangeWatchedFiles" -> []
+  | "textDocument/didSave" | "workspace/didChangeWatchedFiles" ->
+      (* the modules on disk are read again, and every open task judged again *)
+      W.files_changed t.workspace;
+      let seen = Hashtbl.create 4 in
+      List.concat_map (fun uri ->
+          let k = W.task_key t.workspace uri in
+          if Hashtbl.mem seen k then [] else (Hashtbl.replace seen k (); publish t uri)) (W.open_uris t.workspace)
   | _ -> []
 
 let log message =

@@ -103,6 +103,10 @@ let close_document t uri =
 
 let is_open t uri = Hashtbl.mem t.docs uri
 
+let files_changed t = Hashtbl.reset t.cache
+
+let open_uris t = List.sort compare (Hashtbl.fold (fun uri _ acc -> uri :: acc) t.docs [])
+
 let read_file p =
   match open_in_bin p with
   | exception Sys_error _ -> None

@@ -28,6 +28,11 @@ val close_document : t -> string -> unit
 
 val is_open : t -> string -> bool
 
+val open_uris : t -> string list
+
+val files_changed : t -> unit
+(** Files on disk changed (a save, the client's file watcher): every task is read again. *)
+
 val text : t -> string -> Lsp_text.t option
 (** An open document's text, or a task file's on disk. *)
 

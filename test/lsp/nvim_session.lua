@@ -2,8 +2,8 @@
 -- test/test_lsp.ml in a copy of test/lsp/cell): open the task's three modules, wait for the
 -- diagnostics of Wrong.mod and check where Neovim puts them, hover, go to definition, find
 -- references, complete, rename. Each result is a line of $RESULT, which the test checks; a Lua
--- error is written there too. Neovim 0.7 (Debian bookworm) has vim.lsp.start_client; later
--- ones vim.lsp.start as well.
+-- error is written there too. Neovim 0.8 and later start the client with vim.lsp.start;
+-- Neovim 0.7 (Debian bookworm's) has only vim.lsp.start_client and buf_attach_client.
 
 local bin = os.getenv("RAPID_SEM")
 local result = os.getenv("RESULT")
@@ -38,9 +38,22 @@ local function session()
   local tools = vim.api.nvim_get_current_buf()
   vim.cmd("edit Wrong.mod")
   local wrong = vim.api.nvim_get_current_buf()
-  local client = vim.lsp.start_client({ name = "rapid-sem", cmd = { bin, "lsp" }, root_dir = cwd })
+  local config = { name = "rapid-sem", cmd = { bin, "lsp" }, root_dir = cwd }
+  local client
+  if vim.lsp.start then
+    -- Neovim 0.8 and later: one client for the root, attached to each buffer made current.
+    for _, b in ipairs({ cell, tools, wrong }) do
+      vim.api.nvim_set_current_buf(b)
+      client = vim.lsp.start(config)
+    end
+  else
+    client = vim.lsp.start_client(config)
+    if client then
+      for _, b in ipairs({ cell, tools, wrong }) do vim.lsp.buf_attach_client(b, client) end
+    end
+  end
   if not client then error("the server did not start") end
-  for _, b in ipairs({ cell, tools, wrong }) do vim.lsp.buf_attach_client(b, client) end
+  emit("client " .. (vim.lsp.start and "vim.lsp.start" or "vim.lsp.start_client"))
 
   -- Diagnostics: where Neovim puts them (it makes byte columns of the server's UTF-16 ones;
   -- they are counted back in UTF-16 here), and the text it finds there.
