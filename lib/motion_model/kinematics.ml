@@ -34,12 +34,12 @@ let set_link m (ax : Robot.axis) theta =
    arm's attitude, and joint 3 its angle against the lower arm (doc/motion.md R-structure). *)
 let to_chain (r : Robot.t) q =
   match r.structure with
-  | Serial -> q
+  | Serial | Palletiser -> q
   | Coupled_axis3 -> let c = Array.copy q in c.(2) <- q.(2) -. q.(1); c
 
 let of_chain (r : Robot.t) c =
   match r.structure with
-  | Serial -> c
+  | Serial | Palletiser -> c
   | Coupled_axis3 -> let q = Array.copy c in q.(2) <- c.(2) +. c.(1); q
 
 (* The transform of the first [n] links into k.acc. *)
@@ -55,10 +55,46 @@ let chain k n q =
 
 let rotation_of m = Array.init 9 (fun i -> Gsl.Matrix.get m (i / 3) (i mod 3))
 
+(* The palletiser (Robot.Palletiser, doc/motion.md R-structure), in closed form: in the arm's
+   vertical plane the lower arm leans forward by axis 2 from the vertical, the upper arm's end is
+   axis 3 below the horizontal, and the flange hangs level, ahead of and below it; tool0 points
+   down, its x axis backwards at axes 1 and 6 at 0 (as an IRB 120's pointing down), and axis 6
+   turns it about its own z. *)
+let pal_dims (r : Robot.t) =
+  let ax k = r.axes.(k - 1) in
+  ((ax 1).a, (ax 1).d, (ax 2).a, (ax 3).a, (ax 6).a, (ax 6).d)
+
+let level_down = { q1 = 0.; q2 = 0.; q3 = 1.; q4 = 0. }
+
+let pal_rot t1 t6 = omult (of_axis_angle { x = 0.; y = 0.; z = 1. } (t1 -. t6)) level_down
+
+(* Radial distance and height of the upper arm's end, the wrist. *)
+let pal_wrist r q =
+  let a1, d1, l2, l3, _, _ = pal_dims r in
+  let t2 = rad q.(1) and t3 = rad q.(2) in
+  (a1 +. (l2 *. sin t2) +. (l3 *. cos t3), d1 +. (l2 *. cos t2) -. (l3 *. sin t3))
+
+let pal_forward r q =
+  let _, _, _, _, a6, d6 = pal_dims r in
+  let radial, z = pal_wrist r q in
+  let radial = radial +. a6 and z = z -. d6 in
+  let t1 = rad q.(0) in
+  { trans = { x = radial *. cos t1; y = radial *. sin t1; z }; rot = pal_rot t1 (rad q.(5)) }
+
+(* The arm configuration of a palletiser's axes: the wrist behind axis 1, and the elbow bent the
+   other way (the upper arm turned from the lower arm clockwise rather than counter-clockwise, in
+   the plane seen with the arm pointing right). *)
+let pal_arm r q =
+  let radial, _ = pal_wrist r q in
+  let t2 = rad q.(1) and t3 = rad q.(2) in
+  (radial < 0., -. cos (t2 -. t3) > 0.)
+
 let forward k q =
+  if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
   chain k 6 q;
   let g = Gsl.Matrix.get k.acc in
   { trans = { x = g 0 3; y = g 1 3; z = g 2 3 }; rot = of_matrix (rotation_of k.acc) }
+  end
 
 (* An angle a rounding error below a quadrant's edge (axis 4 at -1e-14 degrees for 0) is on the
    edge: the quadrant of a computed 0 is 0, as the programmed one is. *)
@@ -68,6 +104,7 @@ let quadrant a = int_of_float (Float.floor ((a +. 1e-9) /. 90.))
 let singular_zone = 1.0
 
 let wrist_singular ?(zone = singular_zone) k q =
+  k.robot.structure <> Robot.Palletiser &&
   let t5 = rad (q.(4) +. k.robot.axes.(4).offset) in
   Float.abs (sin t5) < sin (rad zone)
 
@@ -177,6 +214,44 @@ let solutions ?arm k (p : pose) ~t4_hint =
     [ false; true ];
   List.rev !out
 
+(* A palletiser's solutions: its flange must hang level, tool0's z down within [level_tolerance];
+   two elbows, and the wrist ahead of or behind axis 1. *)
+let level_tolerance = 1.0
+
+let pal_solutions (r : Robot.t) (p : pose) ~t1_hint =
+  let a1, d1, l2, l3, a6, d6 = pal_dims r in
+  let m = to_matrix p.rot in
+  (* tool0's z in the base frame is the matrix's third column; down is [0, 0, -1] *)
+  if -. m.(8) < cos (rad level_tolerance) then []
+  else
+    let psi = atan2 (-. m.(3)) (-. m.(0)) in
+    let rho = Float.hypot p.trans.x p.trans.y in
+    let phi = if rho < 1e-9 then rad t1_hint else atan2 p.trans.y p.trans.x in
+    let out = ref [] in
+    List.iter (fun behind ->
+        let t1 = if behind then phi +. pi else phi in
+        let radial = if behind then -. rho else rho in
+        (* the wrist relative to axis 2, in the arm's plane *)
+        let x = radial -. a6 -. a1 and y = p.trans.z +. d6 -. d1 in
+        let dist = Float.hypot x y in
+        if dist > 1e-9 then begin
+          let kk = ((dist *. dist) +. (l2 *. l2) -. (l3 *. l3)) /. (2. *. l2 *. dist) in
+          if Float.abs kk <= 1. +. 1e-12 then
+            let kk = Float.max (-1.) (Float.min 1. kk) in
+            let beta = atan2 y x in
+            List.iter (fun t2s ->
+                let t2 = t2s -. beta in
+                let ex = l2 *. sin t2 and ey = l2 *. cos t2 in
+                let t3 = atan2 (ey -. y) (x -. ex) in
+                let q = Array.map wrap [| deg t1; deg t2; deg t3; 0.; 0.; deg (t1 -. psi) |] in
+                let behind', elbow = pal_arm r q in
+                let cfx = (if behind' then 4 else 0) + if elbow then 2 else 0 in
+                out := { angles = q; raw_cfx = cfx } :: !out)
+              [ asin kk; pi -. asin kk ]
+        end)
+      [ false; true ];
+    List.rev !out
+
 (* Each axis at a turn within its range nearest to its target, or the first axis that has none. *)
 let place (r : Robot.t) raw targets =
   let q = Array.make 6 0. in
@@ -190,6 +265,7 @@ let place (r : Robot.t) raw targets =
 (* The arm configuration (wrist centre behind axis 1, behind the lower arm) of axis angles,
    from the planar geometry of axes 2 and 3 alone. *)
 let arm_of k q =
+  if k.robot.structure = Robot.Palletiser then pal_arm k.robot q else
   let q = to_chain k.robot q in
   let ax = k.robot.axes in
   let t2 = rad (q.(1) +. ax.(1).offset) and t3 = rad (q.(2) +. ax.(2).offset) in
@@ -200,7 +276,8 @@ let arm_of k q =
 
 let conf_of k q =
   let behind, elbow = arm_of k q in
-  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if q.(4) < 0. then 1 else 0) in
+  let wrist = k.robot.structure <> Robot.Palletiser && q.(4) < 0. in
+  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if wrist then 1 else 0) in
   { cf1 = quadrant q.(0); cf4 = quadrant q.(3); cf6 = quadrant q.(5); cfx }
 
 let nearest_of (r : Robot.t) sols q0 =
@@ -213,8 +290,21 @@ let nearest_of (r : Robot.t) sols q0 =
       | Error _, (Error _ as x) -> (match acc with Error (Joint_out_of_range _) -> acc | _ -> x))
     (Error Out_of_reach) sols
 
+(* What of a confdata the arm can use: a palletiser has no axes 4 and 5 (cf4 and cfx's axis 5 bit
+   say nothing of it). *)
+let significant k c =
+  if k.robot.structure = Robot.Palletiser then { c with cf4 = 0; cfx = c.cfx land 6 } else c
+
 let inverse k p choice =
   let r = k.robot in
+  let choice = match choice with With_conf c -> With_conf (significant k c) | n -> n in
+  let solutions ?arm k p ~t4_hint =
+    if r.structure = Robot.Palletiser then
+      List.filter (fun s -> match arm with
+          | None -> true
+          | Some (b, e) -> s.raw_cfx = (if b then 4 else 0) + if e then 2 else 0)
+        (pal_solutions r p ~t1_hint:t4_hint.(0))
+    else solutions ?arm k p ~t4_hint in
   match choice with
   | With_conf c ->
       let mid cf = float_of_int cf *. 90. +. 45. in
