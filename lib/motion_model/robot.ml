@@ -174,10 +174,11 @@ let structure_problem r =
   let zero what i v =
     if !bad = None && v <> 0. then bad := Some (i, Printf.sprintf "axis %d: %s must be 0" i what) in
   zero "d" 2 (ax 2).d; zero "d" 3 (ax 3).d; zero "d" 5 (ax 5).d;
-  zero "a" 4 (ax 4).a; zero "a" 5 (ax 5).a; zero "a" 6 (ax 6).a;
+  (* axis 5's a may be given: an offset wrist (CRB 15000), solved numerically *)
+  zero "a" 4 (ax 4).a; zero "a" 6 (ax 6).a;
   if !bad = None && (ax 2).a <= 0. then bad := Some (2, "axis 2: a must be positive");
   Option.map (fun (k, m) -> k, "unsupported kinematic structure (" ^ m ^ "): the inverse kinematics \
-     solves arms with a spherical wrist, twists -90 0 -90 90 -90 0 (doc/motion.md)") !bad
+     solves arms with twists -90 0 -90 90 -90 0 (doc/motion.md)") !bad
 
 let structure_error r = Option.map snd (structure_problem r)
 
