@@ -65,7 +65,10 @@ let key = String.lowercase_ascii
    --allow-unknown, a warning was reported): every use of the object is then left unjudged. *)
 let unknown_type = T.Installed_atomic { atomic_name = "?"; atomic_class = Value; associated = None }
 let unknown_object_type = { T.base = unknown_type; dims = Scalar }
-let is_unknown (t : T.object_type) = t.base == unknown_type
+(* By its name, which no RAPID type can have: the installed environment's image (built at build
+   time, lib/load/installed_image.ml) holds copies of this value, not this value itself. *)
+let is_unknown_base = function T.Installed_atomic { atomic_name = "?"; _ } -> true | _ -> false
+let is_unknown (t : T.object_type) = is_unknown_base t.base
 
 let name_of_identifier (i : identifier) = match i.it with Ident s -> Some s | ID_placeholder -> None
 
@@ -269,7 +272,7 @@ let rec reference ctx place (r : data_reference) : reference =
       match whole.rtype with
       | Known { base = Record rt; dims = Scalar } -> (
           match T.component rt comp.it with
-          | Some t when t == unknown_type ->
+          | Some t when is_unknown_base t ->
               (* R-2.14-unknown1: not judged; left unresolved, reaching it is ERR_REFUNKDAT. *)
               { whole with rtype = Unknown }
           | Some t ->
@@ -1734,9 +1737,12 @@ let copy_ctx report ctx =
    afresh. *)
 let installed_cache : (module_declaration list * options * ctx * module_info list) option ref = ref None
 
+(* A check without reports under [allow_unknown = false] met no unknown name, so it is also the
+   check under [allow_unknown = true] (which differs only in what it does with unknown names). *)
 let installed_half options installed =
   match !installed_cache with
-  | Some (l, o, ctx, infos) when l == installed && o = options -> (copy_ctx (Report.create ()) ctx, infos)
+  | Some (l, o, ctx, infos) when l == installed && (o = options || not o.allow_unknown) ->
+      ({ (copy_ctx (Report.create ()) ctx) with options }, infos)
   | _ ->
       let ctx, infos = check_installed options installed in
       if Report.all ctx.report = [] then begin
@@ -1802,3 +1808,11 @@ let unknown_summary r =
       Some (Printf.sprintf "%d name%s unknown (%d use%s); they are warnings under --allow-unknown"
               (List.length names) (if List.length names = 1 then "" else "s")
               uses (if uses = 1 then "" else "s"))
+
+type installed_state = module_declaration list * options * ctx * module_info list
+
+let installed_state installed =
+  let ctx, infos = check_installed default_options installed in
+  if Report.all ctx.report = [] then Ok (installed, default_options, ctx, infos) else Error (Report.all ctx.report)
+
+let use_installed_state state = installed_cache := Some state
