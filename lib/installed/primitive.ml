@@ -31,6 +31,7 @@ type outcome =
   | Failed of string
   | Call_by_name of string
   | Stop_requested
+  | Exit_cycle_requested
   | Not_modelled
   | Wait of Rapid_controller.World.wait
   | Retry_requested

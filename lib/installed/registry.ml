@@ -78,6 +78,7 @@ let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) :
   | Failed error -> Failed { error; at_move = effects.at_move }
   | Call_by_name n -> Call_by_name n
   | Stop_requested -> Stop_requested
+  | Exit_cycle_requested -> Exit_cycle_requested
   | Not_modelled -> Not_modelled
   | Wait wait -> Wait { wait; first_poll = effects.first_poll }
   | Retry_requested -> Retry_requested

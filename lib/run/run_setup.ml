@@ -23,7 +23,7 @@ let read_io = function
 
 let load_robot = function
   | None -> Ok Robot.irb120
-  | Some file -> Result.map_error Robot.error_to_string (Robot.load file)
+  | Some name -> Rapid_motion_model.Robot_library.load name
 
 let install_services (s : Run_options.services) world =
   let module K = Rapid_controller.Sockets in

@@ -194,6 +194,9 @@ let call_primitive cfg (cs : call_state) name =
       (Rule.Async_error_at_move, List.rev !events)
   | Failed { error = name; at_move = false } -> raise_ cfg name; (Rule.Call_primitive_error, List.rev !events)
   | Stop_requested -> cfg.focus <- F_done Ended; (Rule.Call_primitive_stop, List.rev !events @ [ Task_ended ])
+  | Exit_cycle_requested ->
+      (* R-13-exitcycle1: every routine is abandoned as by EXIT, then the entry starts again. *)
+      cfg.focus <- F_abandon Go_on_exit_cycle; (Rule.Call_primitive_exit_cycle, List.rev !events)
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
