@@ -74,20 +74,29 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ?testing ~notify (o : Run_options.t) files =
+(* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
+   of the options. *)
+let io_and_robot ~notify (o : Run_options.t) files =
   match read_io o.controller.io, load_robot o.robot with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
-      else
-        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
-        | Error f -> Error (Refused f)
-        | Ok loaded ->
-            notify (Warnings (loaded.warnings, loaded.unknown_summary));
-            Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
-              (world o ~history io robot)
+      else Ok (io, robot)
+
+let single ?(history = false) ?testing ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ~notify o files) (fun (io, robot) ->
+      match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
+      | Error f -> Error (Refused f)
+      | Ok loaded ->
+          notify (Warnings (loaded.warnings, loaded.unknown_summary));
+          Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
+            (world o ~history io robot))
+
+let fresh_world ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ~notify o files) (fun (io, robot) ->
+      Result.map (fun (controller, motion) -> Run.setup ~controller ~motion ()) (world o ~history:false io robot))
 
 let machine ?(observe = false) (o : Run_options.t) s ~entry =
   Result.map_error (fun reason -> Cannot_start { entry; reason })

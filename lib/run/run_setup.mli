@@ -71,6 +71,12 @@ val single :
     kept, within --max-memory (--samples, rapid-sem motion). [testing]: the assertions of
     rapid-sem test are installed (doc/rulings.md R-test-a). *)
 
+val fresh_world :
+  notify:(notice -> unit) -> Run_options.t -> string list -> (Run.world, failure) result
+(** Another world of the same options for the task buffer of these files, as {!single} makes it:
+    each start of the program {!single} loaded in one of them begins afresh (module data, clock,
+    signals, robot), without loading the files again (rapid-sem test: a world per test). *)
+
 val machine :
   ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
 (** The machine started on the entry routine, with the limits of the options. *)

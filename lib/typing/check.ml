@@ -126,6 +126,26 @@ let names_in_scope (place : place) what =
   List.concat_map from sc.routine @ from sc.module_objects
   @ (if sc.in_installed_module then [] else from sc.globals) @ from sc.installed
 
+(* The names rapid-sem test installs beside the others (doc/rulings.md R-test-a): unknown to any
+   other command, where their hint says so. *)
+let test_names =
+  lazy (match Installed_env.test_modules () with
+      | Error _ -> []
+      | Ok ms ->
+          List.concat_map (fun (m : Ast.module_declaration) ->
+              List.filter_map (fun (r : Ast.routine_declaration) -> match r.it with
+                  | Procedure_declaration { name = { it = Ident n; _ }; _ } -> Some n
+                  | _ -> None) m.routine_declarations
+              @ List.filter_map (fun (d : Ast.data_declaration) -> match d.it with
+                  | Data_declaration { name = { it = Ident n; _ }; _ } -> Some n
+                  | _ -> None) m.data_declarations) ms)
+
+let test_hint name =
+  match List.find_opt (fun n -> String.lowercase_ascii n = String.lowercase_ascii name) (Lazy.force test_names) with
+  | Some n -> Some (Printf.sprintf "%s belongs to the assertions of rapid-sem test, installed only in the modules \
+                                    that command runs (doc/testing.md)" n)
+  | None -> None
+
 (* §2.20, ch. 13: a name that is neither declared nor installed. In a routine it is reported
    at its first use only, not at every use; each module-level declaration is judged on its own.
    The hint names the names in scope closest to it. *)
@@ -140,7 +160,7 @@ let unknown_name ctx place region what name =
   else if not (match k with Some k -> Hashtbl.mem ctx.unknown_reported k | None -> false) then begin
     Option.iter (fun k -> Hashtbl.add ctx.unknown_reported k ()) k;
     let section = unknown_name_section what in
-    let hint = Suggest.hint name (names_in_scope place what) in
+    let hint = match test_hint name with Some h -> Some h | None -> Suggest.hint name (names_in_scope place what) in
     Report.error ctx.report ?hint ~rule:"unknown-name" ~section region
       (Printf.sprintf "unknown %s %s: it is neither declared nor installed" what name)
   end
