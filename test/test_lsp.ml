@@ -254,6 +254,9 @@ let completion () =
   Alcotest.(check string) "MoveL's required parameters as a snippet"
     "MoveL ${1:ToPoint}, ${2:Speed}, ${3:Zone}, ${4:Tool}" (str (member "insertText" movel));
   Alcotest.(check bool) "its signature as detail" true (contains (str (member "detail" movel)) "PERS tooldata Tool");
+  Alcotest.(check string) "its parameters beside the label (labelDetails)"
+    " ([\\Conc], ToPoint, [\\ID], Speed, [\\V|\\T], Zone, [\\Z], [\\Inpos], Tool, [\\WObj], [\\Corr], [\\TLoad])"
+    (str (get [ "labelDetails"; "detail" ] movel));
   let s2 = start ~snippets:false () in
   open_doc s2 "Tools.mod";
   Alcotest.(check bool) "no snippet for a client without them" true
@@ -267,6 +270,26 @@ let completion () =
   change s "Cell.mod" (13, 37) (13, 37) " \\";
   Alcotest.(check bool) "MoveL's optional parameters" true
     (let l = labels (complete s "Cell.mod" 13 39) in List.mem "WObj" l && List.mem "Conc" l && not (List.mem "Tool" l))
+
+(* {1 Signature help} *)
+
+let signature_help () =
+  let s = start () in
+  open_doc s "Tools.mod";
+  let help l c = member "result" (request s "textDocument/signatureHelp" (`Assoc [ text_doc (uri "Tools.mod"); pos l c ])) in
+  let active h =
+    let label = str (get [ "signatures" ] h |> to_list |> List.hd |> member "label") in
+    let p = List.nth (to_list (get [ "parameters" ] (List.hd (to_list (member "signatures" h))))) (int (member "activeParameter" h)) in
+    match to_list (member "label" p) with
+    | [ `Int a; `Int b ] -> String.sub label a (b - a)
+    | _ -> "?" in
+  (* line 4: "    MoveL Offs(pAt, 0, 0, 50), v100, z10, tGripper \WObj:=wobj0;" *)
+  Alcotest.(check string) "inside Offs( after one comma: its second parameter" "num XOffset" (active (help 4 20));
+  Alcotest.(check string) "MoveL after the point and the speed: Zone" "zonedata Zone" (active (help 4 37));
+  Alcotest.(check string) "MoveL's first required parameter at the start" "robtarget ToPoint" (active (help 4 10));
+  Alcotest.(check bool) "the installed routine's line" true
+    (contains (str (member "documentation" (List.hd (to_list (member "signatures" (help 4 37)))))) "straight line");
+  Alcotest.(check bool) "nothing on a line without a call" true (help 0 3 = `Null)
 
 (* {1 Rename} *)
 
@@ -465,6 +488,7 @@ let nvim_session () =
       "definition Pick Tools.mod 2:7";
       "references nCount 5";
       "completion MoveL yes";
+      "signature MoveL zonedata Zone";
       "completion components x,y,z";
       "rename nCount nPicks 5";
       "renamed Cell.mod nPicks := nPicks + 1;";
@@ -485,6 +509,7 @@ let suite =
      Alcotest.test_case "document and workspace symbols" `Quick symbols;
      Alcotest.test_case "a backup's RAPID/TASKn is a task" `Quick backup;
      Alcotest.test_case "completion" `Quick completion;
+     Alcotest.test_case "signature help" `Quick signature_help;
      Alcotest.test_case "rename and its refusals" `Quick rename;
      Alcotest.test_case "a line of what each installed routine does" `Quick routine_docs;
      Alcotest.test_case "protocol errors never end the server" `Quick protocol;

@@ -25,9 +25,10 @@ let location index uri a b : Yojson.Safe.t = `Assoc [ ("uri", `String uri); ("ra
 let where index (d : I.decl) =
   match d.uri with
   | None -> (
+      let of_routine = match d.routine with Some r -> Printf.sprintf "of %s, " r | None -> "" in
       match d.installed_file with
-      | Some "built-in" | None -> "built in (ch. 13)"
-      | Some f -> Printf.sprintf "installed (%s, ch. 13)" (Filename.basename f))
+      | Some "built-in" | None -> of_routine ^ "built in (ch. 13)"
+      | Some f -> Printf.sprintf "%sinstalled (%s, ch. 13)" of_routine (Filename.basename f))
   | Some uri ->
       let line = match source_text index uri with
         | Some t -> Printf.sprintf ", line %d" ((Lsp_text.position_of_offset t d.name_start).line + 1)
@@ -194,7 +195,16 @@ let item ~snippets (d : I.decl) : Yojson.Safe.t =
   let insert = match snippets, snippet d with
     | true, Some s when s <> d.name -> [ ("insertText", `String s); ("insertTextFormat", `Int 2) ]
     | _ -> [] in
+  (* LSP 3.17's labelDetails: the parameters beside the name, as ABB's syntax lists them *)
+  let label_details = match d.kind with
+    | Routine { slots; routine = Proc | Func _ } ->
+        let slot = function
+          | I.Required q -> q.I.p_name
+          | Optional qs -> "[\\" ^ String.concat "|\\" (List.map (fun (q : I.param) -> q.p_name) qs) ^ "]" in
+        [ ("labelDetails", `Assoc [ ("detail", `String (" (" ^ String.concat ", " (List.map slot slots) ^ ")")) ]) ]
+    | _ -> [] in
   `Assoc ([ ("label", `String d.name); ("kind", `Int (item_kind d)); ("detail", `String (I.signature d)) ]
+          @ label_details
           @ (match doc with Some s -> [ ("documentation", `String s) ] | None -> [])
           @ insert)
 
@@ -292,6 +302,72 @@ let completion ws uri pos ~snippets : Yojson.Safe.t =
               | _ -> [])
         else List.map (item ~snippets) (I.visible_at index uri offset) in
       `Assoc [ ("isIncomplete", `Bool false); ("items", `List items) ]
+
+(* {1 Signature help} *)
+
+(* The separators of required arguments (§4.6: a comma; an optional argument may have one
+   before it too) between [start] and [stop], outside parentheses, brackets, braces and strings. *)
+let commas text start stop =
+  let depth = ref 0 and quoted = ref false and n = ref 0 in
+  for i = start to stop - 1 do
+    match text.[i] with
+    | '"' -> quoted := not !quoted
+    | ('(' | '[' | '{') when not !quoted -> incr depth
+    | (')' | ']' | '}') when not !quoted -> decr depth
+    | ',' when not !quoted && !depth = 0 -> incr n
+    | _ -> ()
+  done;
+  !n
+
+let signature_help ws uri pos : Yojson.Safe.t =
+  let index = W.index ws uri in
+  match W.text ws uri with
+  | None -> `Null
+  | Some t ->
+      let offset = Lsp_text.offset_of_position t pos in
+      let text = Lsp_text.text t in
+      let b = Lsp_text.byte_of_offset t offset in
+      let line_start = Lsp_text.byte_of_offset t (Lsp_text.offset_of_position t { pos with character = 0 }) in
+      match callee_before text line_start b with
+      | None -> `Null
+      | Some name -> (
+          match I.lookup_at index uri offset name with
+          | Some ({ kind = Routine { slots; routine }; _ } as r) when routine <> I.Trap_routine ->
+              (* the arguments begin after the name's last use before the cursor (and after the
+                 '(' of a function call) *)
+              let n = String.length name in
+              let rec last i best =
+                if i + n > b then best
+                else if key (String.sub text i n) = key name && (i = 0 || not (is_ident_char text.[i - 1]))
+                        && (i + n >= String.length text || not (is_ident_char text.[i + n])) then last (i + 1) (i + n)
+                else last (i + 1) best in
+              let after = last line_start line_start in
+              let rec skip i = if i < b && (text.[i] = ' ' || text.[i] = '\t') then skip (i + 1) else i in
+              let after = let i = skip after in if i < b && text.[i] = '(' then i + 1 else after in
+              let k = commas text after b in
+              let required = List.filteri (fun _ s -> match s with I.Required _ -> true | _ -> false) slots in
+              let active = match List.nth_opt required (min k (List.length required - 1)) with
+                | Some s -> let rec pos i = function [] -> 0 | x :: rest -> if x == s then i else pos (i + 1) rest in
+                    pos 0 slots
+                | None -> 0 in
+              let prefix = match routine with
+                | Func ret -> Printf.sprintf "FUNC %s %s (" ret r.name
+                | _ -> Printf.sprintf "PROC %s (" r.name in
+              let label = Buffer.create 80 in
+              Buffer.add_string label prefix;
+              let params = List.mapi (fun i s ->
+                  if i > 0 then Buffer.add_string label ", ";
+                  let a = Buffer.length label in
+                  Buffer.add_string label (I.slot_text s);
+                  `Assoc [ ("label", `List [ `Int a; `Int (Buffer.length label) ]) ]) slots in
+              Buffer.add_string label ")";
+              let doc = if r.uri = None then Lsp_routine_docs.find r.name else None in
+              `Assoc [ ("signatures", `List [ `Assoc ([ ("label", `String (Buffer.contents label));
+                                                        ("parameters", `List params) ]
+                                                      @ (match doc with Some d -> [ ("documentation", `String d) ]
+                                                                      | None -> [])) ]);
+                       ("activeSignature", `Int 0); ("activeParameter", `Int active) ]
+          | _ -> `Null)
 
 (* {1 Rename} *)
 

@@ -27,6 +27,11 @@ val completion : Lsp_workspace.t -> string -> Lsp_text.position -> snippets:bool
     parameters of the routine called on the line; elsewhere: the names in scope, installed
     routines with their parameters (as snippets when the client takes them). *)
 
+val signature_help : Lsp_workspace.t -> string -> Lsp_text.position -> Yojson.Safe.t
+(** The signature of the routine called on the line (the innermost open function call, else the
+    procedure call), its parameters, and the one the cursor is at: the required parameter
+    after as many commas as stand before the cursor. *)
+
 val prepare_rename : Lsp_workspace.t -> string -> Lsp_text.position -> Yojson.Safe.t
 
 val rename : Lsp_workspace.t -> string -> Lsp_text.position -> string -> Yojson.Safe.t

@@ -590,10 +590,11 @@ let param_text q =
       (if q.p_mode = "" then "" else q.p_mode ^ " ") ^ ty ^ " " ^ q.p_name
       ^ (if q.p_dims = 0 then "" else "{" ^ String.concat "," (List.init q.p_dims (fun _ -> "*")) ^ "}")
 
-let slots_text slots =
-  String.concat ", " (List.map (function
-      | Required q -> param_text q
-      | Optional qs -> "\\" ^ String.concat " | " (List.map param_text qs)) slots)
+let slot_text = function
+  | Required q -> param_text q
+  | Optional qs -> "\\" ^ String.concat " | " (List.map param_text qs)
+
+let slots_text slots = String.concat ", " (List.map slot_text slots)
 
 let signature d =
   let local = if d.local && d.routine = None then "LOCAL " else "" in

@@ -41,6 +41,7 @@ let capabilities : Yojson.Safe.t =
     ("documentSymbolProvider", `Bool true);
     ("workspaceSymbolProvider", `Bool true);
     ("completionProvider", `Assoc [ ("triggerCharacters", `List [ `String "."; `String "\\" ]) ]);
+    ("signatureHelpProvider", `Assoc [ ("triggerCharacters", `List [ `String "("; `String "," ]) ]);
     ("renameProvider", `Assoc [ ("prepareProvider", `Bool true) ]);
   ]
 
@@ -92,6 +93,7 @@ let request t meth params : Yojson.Safe.t option =
       served (fun () -> F.workspace_symbols ws (match field "query" params with Some (`String q) -> q | _ -> ""))
   | "textDocument/completion" ->
       served (fun () -> F.completion ws (uri_of params) (position_at params) ~snippets:t.snippets)
+  | "textDocument/signatureHelp" -> served (fun () -> F.signature_help ws (uri_of params) (position_at params))
   | "textDocument/prepareRename" -> served (fun () -> F.prepare_rename ws (uri_of params) (position_at params))
   | "textDocument/rename" ->
       served (fun () -> F.rename ws (uri_of params) (position_at params) (string_at [ "newName" ] params))
