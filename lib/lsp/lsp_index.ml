@@ -530,8 +530,6 @@ let build sources =
       let w = { index = t; info; text = info.source.text; routine_levels = []; found = [] } in
       (try walk_module w with Not_found | Invalid_argument _ -> ());
       info.occurrences <- List.rev w.found) modules;
-  (* Parameters and components are members: their declarations are listed with the routine
-     level of their module. *)
   t
 
 let occurrence_at t uri offset =
