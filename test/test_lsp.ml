@@ -153,6 +153,10 @@ let hover () =
   Alcotest.(check bool) "a global of another module" true (contains h "VAR num nCount" && contains h "module Cell");
   let h = hover_value s "Cell.mod" 17 44 in
   Alcotest.(check bool) "a component of a kernel record (§2.14)" true (contains h "num x (component of pos)");
+  Alcotest.(check bool) "where it is declared: the kernel (§2.14)" true (contains h "built in (§2.14)");
+  let h = hover_value s "Tools.mod" 2 22 in
+  Alcotest.(check bool) "a parameter: its declaration and routine" true
+    (contains h "robtarget pAt" && contains h "routine Pick");
   Alcotest.(check bool) "off a name: null" true
     (member "result" (request s "textDocument/hover" (`Assoc [ text_doc (uri "Cell.mod"); pos 0 0 ])) = `Null)
 

@@ -27,7 +27,12 @@ let where index (d : I.decl) =
   | None -> (
       let of_routine = match d.routine with Some r -> Printf.sprintf "of %s, " r | None -> "" in
       match d.installed_file with
-      | Some "built-in" | None -> of_routine ^ "built in (ch. 13)"
+      | Some "built-in" | None ->
+          of_routine ^ (match d.kind with
+              | Record _ | Component _ -> "built in (§2.14)"
+              | Alias _ -> "built in (§2.15)"
+              | Atomic when List.mem (key d.name) [ "num"; "dnum"; "bool"; "string" ] -> "built in (§2.13)"
+              | _ -> "installed (ch. 13)")
       | Some f -> Printf.sprintf "%sinstalled (%s, ch. 13)" of_routine (Filename.basename f))
   | Some uri ->
       let line = match source_text index uri with
@@ -39,6 +44,7 @@ let where index (d : I.decl) =
 (* The declaration as written, on one line, when it is short enough to show. *)
 let written index (d : I.decl) =
   match d.uri, d.kind with
+  | _, Data { parameter = true; _ } | _, Data { storage = "FOR"; _ } -> None
   | Some uri, (Data _ | Alias _) -> (
       match source_text index uri with
       | Some t ->
