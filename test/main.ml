@@ -43,4 +43,5 @@ let () =
       Test_layers.suite;
       Test_drivers.suite;
       Test_lsp.suite;
+      Test_unit_test.suite;
     ]

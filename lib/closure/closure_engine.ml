@@ -1163,6 +1163,10 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
   | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
   | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
   | History_exhausted m -> raise (Halt (Outcome.motion_history_exhausted m call_at))
+  | Assertion_failed message ->
+      (* rapid-sem test (R-test-b): the task stops at the call, as Stop does: no handler, no UNDO. *)
+      raise (Halt (Outcome.Stopped { name = "ERR_ASSERT"; number = number_of st "ERR_ASSERT"; at = call_at;
+                                     chain = chain_of caller_act; about = Some message }))
   | Retry_requested ->
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          StartMove alone (R-7.6-b). *)

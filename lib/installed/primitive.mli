@@ -40,6 +40,7 @@ type outcome =
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
   | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
+  | Assertion_failed of string                       (** an assertion of rapid-sem test failed *)
 
 val named_argument : context -> argument array -> string -> argument
 (** The argument of the callee's parameter of this name ([context.parameters]), letter case

@@ -74,7 +74,7 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ~notify (o : Run_options.t) files =
+let single ?(history = false) ?testing ~notify (o : Run_options.t) files =
   match read_io o.controller.io, load_robot o.robot with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
@@ -82,7 +82,7 @@ let single ?(history = false) ~notify (o : Run_options.t) files =
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
       else
-        match Rapid_load.Session.load ~allow_unknown:o.allow_unknown ~io files with
+        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
         | Error f -> Error (Refused f)
         | Ok loaded ->
             notify (Warnings (loaded.warnings, loaded.unknown_summary));

@@ -15,6 +15,7 @@ type result =
   | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
   | Retry_requested
   | History_exhausted of string
+  | Assertion_failed of string
 
 type outcome = { result : result; events : Event.t list; new_move : int option }
 

@@ -33,6 +33,10 @@ type result =
   | History_exhausted of string
       (** the motion history beyond its budget (doc/motion.md): the run ends as a resource
           exhausted (§1.4) at the call *)
+  | Assertion_failed of string
+      (** an assertion of rapid-sem test failed (lib/typing/installed/unit_test.sys): the task
+          stops at the call with ERR_ASSERT and this message as what the error is about; no
+          error handler takes it (doc/rulings.md R-test-b) *)
 
 type outcome = {
   result : result;

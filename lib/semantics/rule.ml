@@ -46,7 +46,7 @@ type t =
   (* Not rules *)
   | Done | Stuck
   (* Backward execution *)
-  | Backward_noop | Backward_call | Backward_end | Raise_in_backward
+  | Backward_noop | Backward_call | Backward_move | Backward_end | Raise_in_backward
   (* Not in doc/semantics.md *)
   | Motion_history_exhausted
 
@@ -199,6 +199,7 @@ let name = function
   | Stuck -> "stuck"
   | Backward_noop -> "backward-noop"
   | Backward_call -> "backward-call"
+  | Backward_move -> "backward-move"
   | Backward_end -> "backward-end"
   | Raise_in_backward -> "raise-in-backward"
   | Motion_history_exhausted -> "motion-history-exhausted"
@@ -356,7 +357,8 @@ let after = function
   | Done -> Some Stuck
   | Stuck -> Some Backward_noop
   | Backward_noop -> Some Backward_call
-  | Backward_call -> Some Backward_end
+  | Backward_call -> Some Backward_move
+  | Backward_move -> Some Backward_end
   | Backward_end -> Some Raise_in_backward
   | Raise_in_backward -> Some Motion_history_exhausted
   | Motion_history_exhausted -> None
@@ -368,7 +370,7 @@ let all =
   from Label []
 
 let backward = function
-  | Backward_noop | Backward_call | Backward_end | Raise_in_backward -> true
+  | Backward_noop | Backward_call | Backward_move | Backward_end | Raise_in_backward -> true
   | _ -> false
 
 let listed r = not (backward r || r = Motion_history_exhausted)

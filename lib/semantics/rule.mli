@@ -164,9 +164,10 @@ type t =
      bug of rapid-sem) *)
   | Done
   | Stuck
-  (* Backward execution (ch. 6): the first two are [Machine.backward]'s, the others [step]'s *)
+  (* Backward execution (ch. 6): the first three are [Machine.backward]'s, the others [step]'s *)
   | Backward_noop                   (** §6.1 *)
   | Backward_call                   (** §6.1, §6.2 *)
+  | Backward_move                   (** §6.1, R-6.1-move *)
   | Backward_end                    (** §6.2 *)
   | Raise_in_backward               (** §6.1 *)
   (* Not in doc/semantics.md, nor in [Machine.rule_names]: a call whose motion history (kept for
