@@ -208,7 +208,8 @@ let backup () =
   let root = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "rapid-sem-backup-%d" (Unix.getpid ())) in
   let file rel text =
     let p = List.fold_left Filename.concat root rel in
-    ignore (Sys.command (Printf.sprintf "mkdir -p %s" (Filename.quote (Filename.dirname p))));
+    let rec mkdir_p d = if not (Sys.file_exists d) then (mkdir_p (Filename.dirname d); Unix.mkdir d 0o755) in
+    mkdir_p (Filename.dirname p);
     write p text; p in
   let main = file [ "RAPID"; "TASK1"; "PROGMOD"; "Main.mod" ]
       "MODULE Cycle\n  PROC main()\n    nCycles := nCycles + 1;\n  ENDPROC\nENDMODULE\n" in
