@@ -296,6 +296,30 @@ let signature_help () =
     (contains (str (member "documentation" (List.hd (to_list (member "signatures" (help 4 37)))))) "straight line");
   Alcotest.(check bool) "nothing on a line without a call" true (help 0 3 = `Null)
 
+(* {1 Quick fixes} *)
+
+let quick_fix () =
+  let s = start () in
+  let u = "untitled:fix" in
+  notify s "textDocument/didOpen"
+    (`Assoc [ ("textDocument", `Assoc [ ("uri", `String u); ("languageId", `String "rapid"); ("version", `Int 1);
+                                        ("text", `String "MODULE W\n  PROC p()\n    TPWrite \"\" \\Num:=ERRNUM + tol0.tload.mass;\n  ENDPROC\nENDMODULE\n") ]) ]);
+  let ds = diagnostics_of s u in
+  let with_hint = List.filter (fun d -> contains (str (member "message" d)) "hint: did you mean") ds in
+  Alcotest.(check bool) "a diagnostic with a hint" true (with_hint <> []);
+  let r = request s "textDocument/codeAction"
+      (`Assoc [ text_doc u; ("range", `Assoc [ ("start", `Assoc [ ("line", `Int 2); ("character", `Int 0) ]);
+                                                 ("end", `Assoc [ ("line", `Int 2); ("character", `Int 40) ]) ]);
+                ("context", `Assoc [ ("diagnostics", `List ds) ]) ]) in
+  let titles = List.map (fun a -> str (member "title" a)) (to_list (member "result" r)) in
+  Alcotest.(check bool) "Change tol0 to tool0 offered" true (List.mem "Change tol0 to tool0" titles);
+  let fix = List.find (fun a -> member "title" a = `String "Change tol0 to tool0") (to_list (member "result" r)) in
+  let edit = List.hd (to_list (get [ "edit"; "changes"; u ] fix)) in
+  Alcotest.(check string) "the edit writes the name" "tool0" (str (member "newText" edit));
+  Alcotest.(check range) "over the misspelt name" ((2, 30), (2, 34)) (range_of (member "range" edit));
+  Alcotest.(check (list string)) "the hint's names" [ "a"; "bb"; "c" ] (Lsp_features.suggested "did you mean a, bb or c?");
+  Alcotest.(check (list string)) "no other hint" [] (Lsp_features.suggested "write \\Num:=x (§4.6)")
+
 (* {1 Rename} *)
 
 let rename () =
@@ -515,6 +539,7 @@ let suite =
      Alcotest.test_case "a backup's RAPID/TASKn is a task" `Quick backup;
      Alcotest.test_case "completion" `Quick completion;
      Alcotest.test_case "signature help" `Quick signature_help;
+     Alcotest.test_case "quick fixes from the hints" `Quick quick_fix;
      Alcotest.test_case "rename and its refusals" `Quick rename;
      Alcotest.test_case "a line of what each installed routine does" `Quick routine_docs;
      Alcotest.test_case "protocol errors never end the server" `Quick protocol;

@@ -466,3 +466,50 @@ let rename ws uri pos new_name : Yojson.Safe.t =
       Hashtbl.replace by_uri u (edit :: Option.value (Hashtbl.find_opt by_uri u) ~default:[])) uses;
   `Assoc [ ("changes", `Assoc (Hashtbl.fold (fun u edits acc -> (u, `List (List.rev edits)) :: acc) by_uri []
                                |> List.sort compare)) ]
+
+(* {1 Quick fixes} *)
+
+(* The names of a hint "did you mean a, b or c?" (Rapid_syntax.Suggest), when it is one. *)
+let suggested hint =
+  let prefix = "did you mean " in
+  let n = String.length prefix and m = String.length hint in
+  if m > n + 1 && String.sub hint 0 n = prefix && hint.[m - 1] = '?' then
+    let names = String.sub hint n (m - n - 1) in
+    let words = List.concat_map (String.split_on_char ',')
+        (String.split_on_char ' ' names) |> List.filter (fun w -> w <> "" && w <> "or") in
+    if words <> [] && List.for_all (fun w -> valid_identifier w = Ok ()) words then words else []
+  else []
+
+let code_actions ws uri (diagnostics : Yojson.Safe.t list) : Yojson.Safe.t =
+  match W.text ws uri with
+  | None -> `List []
+  | Some t ->
+      `List (List.concat_map (fun (d : Yojson.Safe.t) ->
+          let field k (j : Yojson.Safe.t) = match j with `Assoc l -> List.assoc_opt k l | _ -> None in
+          let message = match field "message" d with Some (`String m) -> m | _ -> "" in
+          let hint = match String.split_on_char '\n' message with
+            | _ :: rest -> List.find_map (fun l ->
+                let p = "hint: " in
+                if String.length l > String.length p && String.sub l 0 (String.length p) = p
+                then Some (String.sub l (String.length p) (String.length l - String.length p)) else None) rest
+            | [] -> None in
+          let range = field "range" d in
+          let ends = Option.bind range (fun r ->
+              match Option.bind (field "start" r) Lsp_text.position_of_json,
+                    Option.bind (field "end" r) Lsp_text.position_of_json with
+              | Some a, Some b -> Some (a, b)
+              | _ -> None) in
+          match hint, ends, range with
+          | Some h, Some (a, b), Some range ->
+              (* only where the range holds one name, the one the hint corrects *)
+              let written = Lsp_text.slice t (Lsp_text.offset_of_position t a) (Lsp_text.offset_of_position t b) in
+              if valid_identifier written <> Ok () then []
+              else
+                List.map (fun name ->
+                    `Assoc [ ("title", `String (Printf.sprintf "Change %s to %s" written name));
+                             ("kind", `String "quickfix");
+                             ("diagnostics", `List [ d ]);
+                             ("edit", `Assoc [ ("changes", `Assoc [
+                                  (uri, `List [ `Assoc [ ("range", range); ("newText", `String name) ] ]) ]) ]) ])
+                  (suggested h)
+          | _ -> []) diagnostics)
