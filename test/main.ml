@@ -16,6 +16,7 @@ let () =
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;
+      Test_robot_library.suite;
       Test_controller.suite;
       Test_installed.suite;
       Test_check_output.suite;
@@ -41,4 +42,6 @@ let () =
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_lsp.suite;
+      Test_unit_test.suite;
     ]

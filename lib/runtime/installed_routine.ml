@@ -10,10 +10,12 @@ type result =
   | Failed of { error : string; at_move : bool }
   | Call_by_name of string
   | Stop_requested
+  | Exit_cycle_requested
   | Not_modelled
   | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
   | Retry_requested
   | History_exhausted of string
+  | Assertion_failed of string
 
 type outcome = { result : result; events : Event.t list; new_move : int option }
 

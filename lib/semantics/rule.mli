@@ -57,6 +57,7 @@ type t =
   | Call_primitive
   | Call_primitive_error
   | Call_primitive_stop
+  | Call_primitive_exit_cycle       (** ExitCycle, R-13-exitcycle1 *)
   | Call_not_modelled
   | Call_stubbed                    (** R-13-i *)
   | Call_unknown
@@ -145,6 +146,7 @@ type t =
   | Undo_run
   | Undo_done
   | Undo_done_entry
+  | Cycle_restart                   (** R-13-exitcycle1 *)
   | Retry                           (** §4.13 *)
   | Retry_limit                     (** §7.1 *)
   | Trynext                         (** §4.14 *)
