@@ -133,7 +133,8 @@ let errors () =
     (one_test ("    VAR num a{2};\n    VAR num i := 3;\n    a{i} := 1;\n" ^ handler));
   Alcotest.(check string) "no handler takes a failed assertion" "3:5 AssertFail: once"
     (one_test "    AssertFail \"once\";\n  ERROR\n    RETRY;\n");
-  Alcotest.(check string) "an unhandled error" "5:5 execution error ERR_OUTOFBND: no error handler took it (test_it)"
+  Alcotest.(check string) "an unhandled error" "5:5 execution error ERR_OUTOFBND (index 3 outside the dimension 1 to 2): no error handler took it \
+                                           (test_it)"
     (one_test "    VAR num a{2};\n    VAR num i := 3;\n    a{i} := 1;\n");
   Alcotest.(check string) "Stop ends the test" "passed" (one_test "    Stop;\n    AssertFail \"after Stop\";\n");
   Alcotest.(check string) "the step limit, at the test's name" "2:8 the step limit (10000000) is exhausted"

@@ -413,7 +413,7 @@ let index st ~at (v : V.t) n =
       let k = int_of_float x in
       if float_of_int k = x && k >= 1 && k <= n then k - 1
       else if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
-      else if x < 1. || x > float_of_int n then fail st ~at "ERR_OUTOFBND"
+      else if x < 1. || x > float_of_int n then fail ~about:(Outcome.index_outside x n) st ~at "ERR_OUTOFBND"
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
 
@@ -1288,7 +1288,8 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          StartMove alone (R-7.6-b). *)
       if caller_act.ext.current = None then no_value
-      else if caller_act.ext.retries >= st.limits.retry_limit then fail st ~at:call_at "ERR_EXCRTYMAX"
+      else if caller_act.ext.retries >= st.limits.retry_limit then
+        fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:call_at "ERR_EXCRTYMAX"
       else begin caller_act.ext.retries <- caller_act.ext.retries + 1; raise_notrace Retry_signal end
 
 (* A waiting instruction (doc/controller.md): interrupts are served while it waits, and an
@@ -1747,21 +1748,24 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* R-7.3-p: the NOSTEPIN routine's own RETRY, counted there (rule resume-retry). *)
           let inner = List.assq a st.resuming in
           if inner.ext.retries >= st.limits.retry_limit then begin
-            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None;
+            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat;
+                      about = Some (Outcome.retries_beyond st.limits.retry_limit);
                       chain = None } in
             emit_raised st e;
             raise (stop st inner e)
           end
           else begin inner.ext.retries <- inner.ext.retries + 1; raise_notrace Retry_signal end
         end
-        else if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+        else if a.ext.retries >= st.limits.retry_limit then
+          fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext ->
       fun a -> (
         match a.ext.current with
         | Some e when st.async_errors <> [] && not (List.memq a st.kept) && List.memq e st.async_errors ->
             (* §7.4: "TRYNEXT executes as RETRY" for an asynchronous error (R-7.4-m). *)
-            if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+            if a.ext.retries >= st.limits.retry_limit then
+              fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:s.sat "ERR_EXCRTYMAX"
             else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
         | _ -> raise_notrace Trynext_signal)
   | Connect (place, trap) ->
@@ -2136,7 +2140,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
   let program = host.prepare program in
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
-  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | None -> Error (Rapid_runtime.Task_rules.no_entry program entry)
   | Some (_, k) ->
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)

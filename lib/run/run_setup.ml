@@ -4,7 +4,7 @@ module MR = Rapid_installed.Motion_routines
 module Robot = Rapid_motion_model.Robot
 
 type notice =
-  | Inferred_signal of Io.signal
+  | Inferred_signal of Io.signal * Rapid_syntax.Source.region
   | Warnings of Rapid_typing.Report.t list * string option
   | Stdin_not_saved
   | Samples_capped of int
@@ -59,7 +59,7 @@ let with_inferred_signals ~notify (o : Run_options.t) files io =
     let io, added =
       Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
         modules io in
-    List.iter (fun s -> notify (Inferred_signal s)) added;
+    List.iter (fun (s, at) -> notify (Inferred_signal (s, at))) added;
     io
 
 (* The world of the options' controller, and the robot's motion. *)

@@ -10,9 +10,9 @@
 (** {1 What happens on the way} *)
 
 type notice =
-  | Inferred_signal of Rapid_controller.Io_config.signal
+  | Inferred_signal of Rapid_controller.Io_config.signal * Rapid_syntax.Source.region
       (** R-13-aa: under --allow-unknown --stub-unmodelled, an undeclared name the program passes
-          as a signal became a virtual signal at 0 *)
+          as a signal became a virtual signal at 0; the region of its first use *)
   | Warnings of Rapid_typing.Report.t list * string option
       (** the warnings of the static semantics and the summary of the unknown names (one task
           buffer), or the warnings of every task (several) *)
