@@ -40,4 +40,5 @@ let () =
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_egm.suite;
     ]
