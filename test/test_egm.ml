@@ -119,6 +119,35 @@ let sense sock =
         go true in
   go false
 
+let run_with_sensor ?(extra = []) engine dir =
+  let sock = Unix.socket Unix.PF_INET Unix.SOCK_DGRAM 0 in
+  Fun.protect ~finally:(fun () -> Unix.close sock) (fun () ->
+      Unix.bind sock (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
+      let port = match Unix.getsockname sock with Unix.ADDR_INET (_, p) -> p | _ -> assert false in
+      let out = Filename.concat dir "out.txt" in
+      let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
+      let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+      let args = [ binary; "run"; "--engine"; engine; "--max-time"; "30";
+                   "--egm-device"; Printf.sprintf "EGMSensor=127.0.0.1:%d" port ] @ extra @ [ "drivers/EgmJoint.mod" ] in
+      let pid = Unix.create_process binary (Array.of_list args) devnull fd_out fd_out in
+      Unix.close fd_out; Unix.close devnull;
+      let feedback = try sense sock with e -> ignore (wait_bounded pid 0.); raise e in
+      (match wait_bounded pid 10. with
+       | Some (Unix.WEXITED 0) -> ()
+       | _ -> Alcotest.fail ("the program did not end with status 0: " ^ read_file out));
+      (feedback, read_file out))
+
+(* A collision at 0.1 s, while the robot follows the sensor: ERR_COLL_STOP is taken by the
+   handler of the routine (§7.6), which keeps EGMRunJoint's program point for RETRY (R-7.2-m): the
+   process still runs, no cycle happens, and EGMStop connects it again. *)
+let egm_collision engine () =
+  with_dir (fun dir ->
+      let io = Filename.concat dir "collision.io" in
+      write_file io "at 0.1 collision\n";
+      let feedback, out = run_with_sensor ~extra:[ "--io"; io ] engine dir in
+      Alcotest.(check bool) "cycles until the collision" true (List.length feedback >= 20 && List.length feedback <= 30);
+      Alcotest.(check string) "program output" "egm state before the run 1\ncollision, egm state 2\nafter EGMStop 1\n" out)
+
 let egm_joint engine () =
   with_dir (fun dir ->
       let sock = Unix.socket Unix.PF_INET Unix.SOCK_DGRAM 0 in
@@ -178,5 +207,7 @@ let suite = ("egm", [
     Alcotest.test_case "codec: hostile bytes never raise" `Quick hostile;
     Alcotest.test_case "joint-mode EGM with a sensor on the loopback" `Quick (egm_joint "closure");
     Alcotest.test_case "joint-mode EGM with a sensor, the machine" `Quick (egm_joint "machine");
+    Alcotest.test_case "a collision during the run" `Quick (egm_collision "closure");
+    Alcotest.test_case "a collision during the run, the machine" `Quick (egm_collision "machine");
     Alcotest.test_case "no sensor: ERR_UDPUC_COMM after CommTimeout" `Quick egm_timeout;
   ])

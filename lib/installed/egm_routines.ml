@@ -44,6 +44,7 @@ type process = {
   mutable seqno : int;
   mutable setup_time : float;
   mutable stop_requested : bool;
+  mutable running : W.wait option;  (* EGMRunJoint's wait while it runs *)
 }
 
 type run = { processes : (int, process) Hashtbl.t; mutable next_id : int }
@@ -100,7 +101,7 @@ let get_id ctx st args =
     r.next_id <- id + 1;
     Hashtbl.replace r.processes id
       { state = Disconnected; channel = None; joint_mode = false; comm_timeout = 1.; activation = None; seqno = 0;
-        setup_time = 0.; stop_requested = false };
+        setup_time = 0.; stop_requested = false; running = None };
     named_store ctx args "EGMid" (V.Handle (V.make_handle ~kind:"egmident" id))
   end;
   done_
@@ -159,7 +160,9 @@ let act_joint ctx st args =
 let stop ctx st args =
   let* p = process st ctx args in
   let* _ = not_negative_or ctx args "RampOutTime" ~default:0. in
-  if p.state = Running then p.stop_requested <- true;
+  (* The run ends at its next cycle; one whose program point an asynchronous error's handler
+     keeps (R-7.2-m) runs no cycle meanwhile, and is connected from now. *)
+  if p.state = Running then (p.stop_requested <- true; p.state <- Connected);
   done_
 
 (* R-13-egm2: EGMReset of an egmident that holds no process does nothing (programs reset before
@@ -263,7 +266,7 @@ let run_joint ctx st args =
                 match MR.servo ctx st next ~duration:act.cycle with
                 | Ok () -> ()
                 | Error e -> failure := Some e; finish_run () in
-        Wait { W.what = "the EGM sensor"; deadline = None; poll = None;
+        let wait = { W.what = "the EGM sensor"; deadline = None; poll = None;
                satisfied = (fun () ->
                    let now = W.now w in
                    if (not !finished) && W.seconds now >= W.seconds (next_cycle ()) then begin
@@ -273,8 +276,19 @@ let run_joint ctx st args =
                    end;
                    !finished);
                finish = (fun ~timed_out:_ ->
-                   p.state <- Connected;
-                   Option.bind !failure Rapid_observable.Wait.error) }
+                   p.state <- Connected; p.running <- None;
+                   Option.bind !failure Rapid_observable.Wait.error) } in
+        p.running <- Some wait;
+        Wait wait
+
+(* R-13-egm2: a run left by an error or a long jump (a trap's RAISE, §7.2) ends there, the robot
+   standing at the end of its last cycle. *)
+let wait_abandoned st (wait : W.wait) =
+  match List.find_map (function Egm r -> Some r | _ -> None) (MR.extensions st) with
+  | None -> ()
+  | Some r -> Hashtbl.iter (fun _ p ->
+      if (match p.running with Some x -> x == wait | None -> false) then (p.state <- Connected; p.running <- None))
+      r.processes
 
 let call ctx st name args =
   let f = String.lowercase_ascii name in

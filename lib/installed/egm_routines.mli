@@ -17,6 +17,10 @@ val modelled : string -> bool
 val reach : string -> Installed_routine.reach
 (** EGMRunJoint reaches the motion; the others the world (the process's UDP channel). *)
 
+val wait_abandoned : Motion_routines.state -> Rapid_controller.World.wait -> unit
+(** A wait an error or a long jump leaves (§7.2): if it is EGMRunJoint's, its process is connected
+    again, no longer running. *)
+
 val call :
   Primitive.context -> Motion_routines.state -> string -> Primitive.argument array -> Primitive.outcome option
 (** The body of one of {!modelled}'s routines; [None] for another name. *)

@@ -27,6 +27,14 @@ MODULE EgmJoint
     IF ERRNO = ERR_UDPUC_COMM THEN
       TPWrite "communication timeout";
       RETURN;
+    ELSEIF ERRNO = ERR_COLL_STOP THEN
+      ! A collision stops the robot during the run (the stimulus's "at TIME collision"): the
+      ! handler keeps the run's program point for RETRY, so the process still runs until
+      ! EGMStop.
+      TPWrite "collision, egm state " \Num:=EGMGetState(egm_id);
+      EGMStop egm_id, EGM_STOP_HOLD;
+      TPWrite "after EGMStop " \Num:=EGMGetState(egm_id);
+      RETURN;
     ENDIF
     RAISE;
   ENDPROC
