@@ -185,6 +185,12 @@ let get_state ctx st args =
 
 let clamp limit x = Float.max (-. limit) (Float.min limit x)
 
+(* R-13-egm4: the Cartesian feedback of joint mode is the flange (tool0) in the world frame, mm and
+   a unit quaternion, as CRobT \Tool:=tool0 \WObj:=wobj0 reads it. *)
+let flange st now =
+  let { Rapid_motion_model.Geom.trans = t; rot = r } = Rapid_motion_model.Planner.pose_at (MR.planner st) now in
+  { E.pos = Some (t.x, t.y, t.z); orient = Some (r.q1, r.q2, r.q3, r.q4); euler = None }
+
 (* R-13-egm4: one cycle of the robot's part every activation cycle of virtual time: it sends its
    feedback, takes the newest set point the sensor sent (waiting on the host one cycle at most),
    and moves each guided axis towards it by PosCorrGain of the deviation plus the sensor's speed
@@ -225,6 +231,7 @@ let run_joint ctx st args =
           C.send channel (E.encode_robot { E.empty_robot with
                                            r_header = { seqno = Some p.seqno; tm = Some tm; mtype = Some E.mtype_data };
                                            feedback_joints = Some (Array.to_list (Array.sub q 0 6));
+                                           feedback_pose = Some (flange st now);
                                            planned_joints = Option.map Array.to_list !target;
                                            motor_on = Some true; mci_running = Some true; convergence_met = Some met;
                                            rapid_running = Some true });

@@ -8,6 +8,7 @@ MODULE EgmJoint
 
   PROC main()
     VAR jointtarget reached;
+    VAR robtarget flange;
     ! A fresh process: resetting one the variable does not hold does nothing.
     EGMReset egm_id;
     EGMGetId egm_id;
@@ -21,6 +22,9 @@ MODULE EgmJoint
     TPWrite "joints " + NumToStr(reached.robax.rax_1, 2) + " " + NumToStr(reached.robax.rax_2, 2) + " "
       + NumToStr(reached.robax.rax_3, 2) + " " + NumToStr(reached.robax.rax_4, 2) + " "
       + NumToStr(reached.robax.rax_5, 2) + " " + NumToStr(reached.robax.rax_6, 2);
+    flange := CRobT(\Tool:=tool0 \WObj:=wobj0);
+    TPWrite "flange " + NumToStr(flange.trans.x, 2) + " " + NumToStr(flange.trans.y, 2) + " "
+      + NumToStr(flange.trans.z, 2);
     EGMReset egm_id;
     TPWrite "egm state after the reset " \Num:=EGMGetState(egm_id);
   ERROR
