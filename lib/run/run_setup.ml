@@ -23,7 +23,7 @@ let read_io = function
 
 let load_robot = function
   | None -> Ok Robot.irb120
-  | Some file -> Result.map_error Robot.error_to_string (Robot.load file)
+  | Some name -> Rapid_motion_model.Robot_library.load name
 
 let install_services (s : Run_options.services) world =
   let module K = Rapid_controller.Sockets in
@@ -78,7 +78,7 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ~notify (o : Run_options.t) files =
+let single ?(history = false) ?testing ~notify (o : Run_options.t) files =
   match read_io o.controller.io, load_robot o.robot with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
@@ -86,7 +86,7 @@ let single ?(history = false) ~notify (o : Run_options.t) files =
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
       else
-        match Rapid_load.Session.load ~allow_unknown:o.allow_unknown ~io files with
+        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
         | Error f -> Error (Refused f)
         | Ok loaded ->
             notify (Warnings (loaded.warnings, loaded.unknown_summary));

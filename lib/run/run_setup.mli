@@ -65,10 +65,11 @@ type single = {
 }
 
 val single :
-  ?history:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> (single, failure) result
+  ?history:bool -> ?testing:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> (single, failure) result
 (** The task buffer of these files loaded, in the controller of the options (signals, stimulus,
     clock, services, robot), which either engine runs it in. [history]: the motion history is
-    kept, within --max-memory (--samples, rapid-sem motion). *)
+    kept, within --max-memory (--samples, rapid-sem motion). [testing]: the assertions of
+    rapid-sem test are installed (doc/rulings.md R-test-a). *)
 
 val machine :
   ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
