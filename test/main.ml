@@ -43,6 +43,7 @@ let () =
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_egm.suite;
       Test_lsp.suite;
       Test_unit_test.suite;
     ]

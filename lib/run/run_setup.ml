@@ -32,12 +32,16 @@ let install_services (s : Run_options.services) world =
   match all K.parse_allowed s.net, all K.parse_mapping s.map_address with
   | Error e, _ -> Error ("--net " ^ e)
   | _, Error e -> Error ("--map-address " ^ e)
+  | _ when Result.is_error (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ->
+      Result.fold ~ok:(fun _ -> Ok ()) ~error:(fun e -> Error ("--egm-device " ^ e))
+        (all Rapid_controller.Egm_channel.parse_devices s.egm_device)
   | _ when Option.fold ~none:false ~some:(fun q -> q < 0) s.fs_quota -> Error "--fs-quota: a number of bytes, 0 or more"
   | Ok allowed, Ok mapping ->
       let root = Option.value s.fs ~default:Rapid_controller.File_sandbox.default_root in
+      let egm_devices = Result.value (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ~default:[] in
       W.set_services world
         (Rapid_controller.Services.create ~sandbox:(Rapid_controller.File_sandbox.create root)
-           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ());
+           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ~egm_devices ());
       Ok ()
 
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
