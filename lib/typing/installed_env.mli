@@ -19,4 +19,8 @@ val set_image : (unit -> Ast.module_declaration list) -> unit
     also restores what their parse, check and lowering left behind (their files' ids, the
     record types' ids, the checker's and the lowering's shared state). *)
 
+val test_modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
+(** The assertions of rapid-sem test (installed/unit_test.sys), which {!modules} leaves out: only
+    the task buffers that command runs have them (doc/rulings.md R-test-a). *)
+
 val file_names : string list
