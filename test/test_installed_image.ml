@@ -13,7 +13,12 @@ let in_use () =
   match Rapid_typing.Installed_env.modules () with
   | Error _ -> Alcotest.fail "the installed environment does not parse"
   | Ok modules ->
-      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules)
+      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules);
+      (* the checker's and the lowering's kept work is found by this list, compared physically *)
+      Alcotest.(check bool) "the same list at every call" true
+        (match Rapid_typing.Installed_env.modules () with Ok again -> again == modules | Error _ -> false);
+      Alcotest.(check bool) "without the assertions of rapid-sem test" true
+        (List.length (Level.all (image ())) > List.length modules)
 
 let same_as_now () =
   let files, records = Level.before (image ()) in
