@@ -228,7 +228,7 @@ let () =
   in
   let argv = Array.of_list (join (Array.to_list Sys.argv)) in
   let commands = [ parse_cmd; Check_cmd.cmd; run_cmd; Trace_cmd.cmd; spec_cmd; Motion_cmd.cmd; Debug_cmd.cmd;
-                   Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd; Verdict.cmd ] in
+                   Lsp_cmd.cmd; Oracle_cmd.cmd; Fuzz_cmd.cmd; Mem_cmd.cmd; Verdict.cmd; Test_cmd.cmd ] in
   let status = Cmd.eval' ~argv (Cmd.group info commands) in
   (* A command line that cannot be read (an unknown option, a negative limit) is refused like a
      static error, with cmdliner's message saying what is wrong. *)

@@ -91,8 +91,10 @@ let controller_args =
         $ io_arg $ statement_time $ max_time $ epoch $ services_args)
 
 let robot_arg =
-  Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE"
-         ~doc:"The robot description (doc/motion.md, \"The robot description\"); default the built-in ABB IRB 120.")
+  Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE|NAME"
+         ~doc:"The robot: a description file (doc/motion.md, \"The robot description\"), or else a robot of the \
+               library by its name (irb2400-10-1.5), its model (irb7600) or a MOC.cfg robot type \
+               (ROB1_2400_1.5_10; doc/motion.md, \"The robot library\"); default the built-in ABB IRB 120.")
 
 let samples_arg =
   Arg.(value & opt (some float) None & info [ "samples" ] ~docv:"HZ"

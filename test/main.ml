@@ -16,11 +16,13 @@ let () =
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;
+      Test_robot_library.suite;
       Test_controller.suite;
       Test_installed.suite;
       Test_check_output.suite;
       Test_robustness.suite;
       Test_motion_run.suite;
+      Test_motion_plots.suite;
       Test_motion_memory.suite;
       Test_impl_runner.suite;
       Test_oracle_hostile.suite;
@@ -41,4 +43,6 @@ let () =
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_lsp.suite;
+      Test_unit_test.suite;
     ]

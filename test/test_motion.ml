@@ -123,7 +123,7 @@ let test_description () =
   close "axis 3 min" Robot.irb120.axes.(2).min (-110.);
   err (replace_line 4 "axis 2      270        0          0     -90          -110   x110      250")
     "r.robot:5:61: robot description error: axis 2 max: expected a number, found \"x110\"";
-  err (replace_line 4 "axes 2") "r.robot:5:1: robot description error: unknown keyword \"axes\" (expected name, axis, external or max_tcp_speed)";
+  err (replace_line 4 "axes 2") "r.robot:5:1: robot description error: unknown keyword \"axes\" (expected name, structure, axis, external, max_tcp_speed or reach)";
   err (replace_line 4 "") "r.robot:11:1: robot description error: axis 2 is missing";
   err (replace_line 5 "axis 3      70       -90          0       0          70  -110      250")
     "r.robot:6:54: robot description error: axis 3: range min 70 is not below max -110";

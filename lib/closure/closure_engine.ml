@@ -133,6 +133,7 @@ type state = {
       (* §7.3: a user level's handler run by RaiseToUser \Continue, and the NOSTEPIN activation
          its RETRY and TRYNEXT go on in *)
   mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
+  mutable next_cycle : bool;          (* ExitCycle: the [Exit_task] that unwinds starts the entry again *)
   cooperation : cooperation option;   (* one of several tasks (Closure_tasks) *)
 }
 
@@ -1144,6 +1145,10 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
       (* CallByVar (rules call-by-var, call-by-var-unknown, call-by-var-mismatch). *)
       late_target st caller ~at ~call_at target [||] caller_act)
   | Stop_requested -> if st.all_events then st.emit Event.Task_ended; raise (Halt Outcome.Ended)
+  | Exit_cycle_requested ->
+      (* R-13-exitcycle1 (rule call-primitive-exit-cycle): every routine is abandoned as by EXIT;
+         the entry routine catches it and starts again (cycle-restart). *)
+      st.next_cycle <- true; raise Exit_task
   | Not_modelled when st.stub_unmodelled ->
       (* --stub-unmodelled (doc/rulings.md R-13-i): the call does nothing; a function gives the
          initial value of its type (§2.22). *)
@@ -1158,6 +1163,10 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
   | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
   | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
   | History_exhausted m -> raise (Halt (Outcome.motion_history_exhausted m call_at))
+  | Assertion_failed message ->
+      (* rapid-sem test (R-test-b): the task stops at the call, as Stop does: no handler, no UNDO. *)
+      raise (Halt (Outcome.Stopped { name = "ERR_ASSERT"; number = number_of st "ERR_ASSERT"; at = call_at;
+                                     chain = chain_of caller_act; about = Some message }))
   | Retry_requested ->
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          StartMove alone (R-7.6-b). *)
@@ -1598,7 +1607,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* R-4.11-handler1 (doc/dialect.md): in an error handler the new error leaves the
              routine, as RAISE; makes the error in hand leave it (rule raise-new). *)
           if Option.is_some a.ext.current then raise (Leaving e) else raise (Raised e)
-        else fail st ~at "ERR_ILLRAISE"
+        else
+          fail ~about:(Raise_number.refusal st.program ~in_handler:(Option.is_some a.ext.current) x) st ~at
+            "ERR_ILLRAISE"
   | Exit -> fun _ -> raise Exit_task
   | Retry ->
       (* R-7.2-b: beyond the limit RETRY raises ERR_EXCRTYMAX, in the handler, at the RETRY
@@ -1962,7 +1973,8 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     moving = host.collisions;
     max_time = host.max_time; move_owners = [];
     serve_trap = (fun _ _ _ -> ());
-    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = []; cooperation } in
+    undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
+    next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
   st.compiled <- Array.make (Array.length program.routines) not_compiled;
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
@@ -2026,27 +2038,43 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
               | Init_default _ -> ()) program.globals;
           Option.iter (fun c -> c.share st.globals) cooperation;
           let code = Lazy.force st.compiled.(k) in
-          let a = new_act (activation_shape r) r sentinel in
-          a.nest <- code.c_nest;
-          st.native <- code.c_nest;
-          st.depth <- 1;
-          (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit. *)
+          (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit; cycle-restart: the
+             entry routine runs again, in a new activation, after ExitCycle (R-13-exitcycle1). *)
           if all_events then on_event (Event.Routine_entered r.name);
-          match code.c_init r.at a; code.c_body a with
-          | _ ->
-              if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
-              Outcome.Ended
-          | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
-          | exception Exit_task ->
-              (match code.c_undo with
-               | Some undo ->
-                   if all_events then on_event (Event.Undo_run r.name);
-                   (match undo a with
-                    | _ -> ()
-                    | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
-               | None -> ());
-              if all_events then on_event Event.Task_ended;
-              Outcome.Ended
+          let rec cycle () =
+            let a = new_act (activation_shape r) r sentinel in
+            a.nest <- code.c_nest;
+            st.native <- code.c_nest;
+            st.depth <- 1;
+            match code.c_init r.at a; code.c_body a with
+            | _ ->
+                if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
+                Outcome.Ended
+            | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
+            | exception Exit_task ->
+                (match code.c_undo with
+                 | Some undo ->
+                     if all_events then on_event (Event.Undo_run r.name);
+                     (match undo a with
+                      | _ -> ()
+                      | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
+                 | None -> ());
+                if st.next_cycle then begin
+                  st.next_cycle <- false;
+                  pop st a;
+                  st.in_trap <- false; st.kept <- []; st.undoing <- []; st.resuming <- []; st.skip_undo <- [];
+                  st.user_calls <- [];
+                  tick st;
+                  if all_events then begin
+                    on_event (Event.Routine_left r.name); on_event (Event.Routine_entered r.name)
+                  end;
+                  cycle ()
+                end
+                else begin
+                  if all_events then on_event Event.Task_ended;
+                  Outcome.Ended
+                end in
+          cycle ()
         with
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
         | Observer_failed ex -> raise ex

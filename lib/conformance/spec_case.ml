@@ -200,7 +200,9 @@ let read path =
               | Some ("robot", v) when v <> "" ->
                   (* The robot description of the run (doc/motion.md), beside the case. *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
-                  with_run case (fun r -> { r with robot = Some (Filename.concat dir v) })
+                  (* a file beside the case, else a name of the robot library (doc/motion.md) *)
+                  let file = Filename.concat dir v in
+                  with_run case (fun r -> { r with robot = Some (if Sys.file_exists file then file else v) })
               | Some ("home", v) when v <> "" ->
                   (* The files HOME: holds at the start, a folder beside the case (doc/services.md). *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in

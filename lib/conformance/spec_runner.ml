@@ -41,8 +41,7 @@ let accepted case expected =
 let robot_of (run : Spec_case.run) =
   match run.robot with
   | None -> Ok None
-  | Some file -> Result.map Option.some (Result.map_error Rapid_motion_model.Robot.error_to_string
-                                           (Rapid_motion_model.Robot.load file))
+  | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name)
 
 (* The run's output lines and outcome, by the chosen engine. *)
 let execute engine case (run : Spec_case.run) ~io program =

@@ -30,8 +30,21 @@ let set_link m (ax : Robot.axis) theta =
   s 2 0 0.; s 2 1 sa; s 2 2 ca; s 2 3 ax.d;
   s 3 0 0.; s 3 1 0.; s 3 2 0.; s 3 3 1.
 
+(* The DH chain's joint angles of axis angles, and back: on a parallel arm axis 3 is the upper
+   arm's attitude, and joint 3 its angle against the lower arm (doc/motion.md R-structure). *)
+let to_chain (r : Robot.t) q =
+  match r.structure with
+  | Serial -> q
+  | Coupled_axis3 -> let c = Array.copy q in c.(2) <- q.(2) -. q.(1); c
+
+let of_chain (r : Robot.t) c =
+  match r.structure with
+  | Serial -> c
+  | Coupled_axis3 -> let q = Array.copy c in q.(2) <- c.(2) +. c.(1); q
+
 (* The transform of the first [n] links into k.acc. *)
 let chain k n q =
+  let q = to_chain k.robot q in
   let axes = k.robot.axes in
   set_link k.acc axes.(0) (rad (q.(0) +. axes.(0).offset));
   for i = 1 to n - 1 do
@@ -155,7 +168,7 @@ let solutions ?arm k (p : pose) ~t4_hint =
                 in
                 let q = [| q3.(0); q3.(1); q3.(2); deg t4 -. (ax 3).offset; deg t5 -. (ax 4).offset;
                            deg t6 -. (ax 5).offset |] in
-                let q = Array.map wrap q in
+                let q = Array.map wrap (of_chain r q) in
                 let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0)
                           + (if q.(4) < 0. then 1 else 0) in
                 out := { angles = q; raw_cfx = cfx } :: !out)
@@ -177,6 +190,7 @@ let place (r : Robot.t) raw targets =
 (* The arm configuration (wrist centre behind axis 1, behind the lower arm) of axis angles,
    from the planar geometry of axes 2 and 3 alone. *)
 let arm_of k q =
+  let q = to_chain k.robot q in
   let ax = k.robot.axes in
   let t2 = rad (q.(1) +. ax.(1).offset) and t3 = rad (q.(2) +. ax.(2).offset) in
   let a3 = ax.(2).a and d4 = ax.(3).d in

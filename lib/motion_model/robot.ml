@@ -3,7 +3,14 @@ type axis = {
   min : float; max : float; speed : float;
 }
 
-type t = { name : string; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list }
+type structure = Serial | Coupled_axis3
+
+let structure_names = [ ("serial", Serial); ("coupled-axis3", Coupled_axis3) ]
+
+type t = {
+  name : string; structure : structure; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list;
+  reach : float option;
+}
 
 type error = { file : string; line : int; col : int; message : string }
 
@@ -154,7 +161,7 @@ let structure_problem r =
 let structure_error r = Option.map snd (structure_problem r)
 
 let parse ~file text =
-  let name = ref None and tcp = ref None in
+  let name = ref None and tcp = ref None and reach = ref None and structure = ref None in
   let axes = Array.make 6 None and axis_line = Array.make 6 1 in
   let externals = ref [] in
   let fail line col message = Error { file; line; col; message } in
@@ -178,6 +185,22 @@ let parse ~file text =
             if !tcp <> None then raise (Bad (ln, 1, "max_tcp_speed given twice"));
             tcp := Some s
         | (_, "max_tcp_speed") :: _ -> raise (Bad (ln, 1, "max_tcp_speed: expected one number (mm/s)"))
+        | [ (_, "structure"); (c, w) ] ->
+            (match List.assoc_opt w structure_names with
+             | None -> raise (Bad (ln, c, Printf.sprintf "structure: expected %s, found %S"
+                                         (String.concat " or " (List.map fst structure_names))
+                                         (Rapid_syntax.Decimal.shown w)))
+             | Some k ->
+                 if !structure <> None then raise (Bad (ln, 1, "structure given twice"));
+                 structure := Some k)
+        | (_, "structure") :: _ -> raise (Bad (ln, 1, "structure: expected one word"))
+        | [ (_, "reach"); v ] ->
+            (* informative: the reach of the wrist centre a product specification gives *)
+            let l = length ln v "reach" (number ln v "reach") in
+            if l <= 0. then raise (Bad (ln, fst v, "reach must be positive"));
+            if !reach <> None then raise (Bad (ln, 1, "reach given twice"));
+            reach := Some l
+        | (_, "reach") :: _ -> raise (Bad (ln, 1, "reach: expected one number (mm)"))
         | (_, "axis") :: (nc, n) :: rest ->
             (* int_of_string would take 0x1 and 1_ too *)
             let k = match n with
@@ -209,8 +232,9 @@ let parse ~file text =
             axis_line.(k - 1) <- ln
         | (_, "external") :: rest -> externals := !externals @ [ external_axis ln !externals rest ]
         | (c, w) :: _ ->
-            raise (Bad (ln, c, Printf.sprintf "unknown keyword %S (expected name, axis, external or max_tcp_speed)"
-                               (Rapid_syntax.Decimal.shown w))))
+            raise (Bad (ln, c, Printf.sprintf
+                                 "unknown keyword %S (expected name, structure, axis, external, max_tcp_speed or reach)"
+                                 (Rapid_syntax.Decimal.shown w))))
       lines;
     let last = List.length lines in
     let missing = ref None in
@@ -219,8 +243,9 @@ let parse ~file text =
     | Some k, _ -> fail last 1 (Printf.sprintf "axis %d is missing" k)
     | None, None -> fail last 1 "max_tcp_speed is missing"
     | None, Some max_tcp_speed ->
-        let r = { name = Option.value !name ~default:file;
-                  axes = Array.map Option.get axes; max_tcp_speed; externals = !externals } in
+        let r = { name = Option.value !name ~default:file; structure = Option.value !structure ~default:Serial;
+                  axes = Array.map Option.get axes; max_tcp_speed; externals = !externals;
+                  reach = !reach } in
         (match structure_problem r with
          | Some (k, m) -> fail axis_line.(k - 1) 1 m
          | None -> Ok r)

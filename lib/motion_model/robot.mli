@@ -13,11 +13,23 @@ type axis = {
   speed : float;  (** maximum axis speed, degrees/s *)
 }
 
+type structure =
+  | Serial  (** each axis angle measured against the link before it (the default) *)
+  | Coupled_axis3
+      (** axis 3's angle is the upper arm's against the horizontal, not against the lower arm, so
+          that axis 2 alone moves the lower arm and leaves the upper arm's attitude: the arms whose
+          axis 3 drive works through a parallel rod (IRB 1600, 2400, 6700, 7600; doc/rulings.md
+          R-structure); the DH chain's joint 3 is axis 3 minus axis 2 *)
+
 type t = {
   name : string;
+  structure : structure;  (** [structure serial|coupled-axis3] *)
   axes : axis array;  (** six axes, axis 1 first *)
   max_tcp_speed : float;  (** mm/s: vmax's v_tcp and MaxRobSpeed() *)
   externals : Ext_axes.axis list;  (** external axes, in the order of the description; none by default *)
+  reach : float option;
+      (** mm: the reach of the wrist centre its product specification gives, where the description
+          states it (informative: the library's tests compare the kinematics with it) *)
 }
 
 val irb120 : t

@@ -6,9 +6,8 @@ type input = Files of string list | Cell of cell
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
 
-(* The robot library of the motion model, by MOC.cfg's type (ROB1_2400_1.5_10). Until it is
-   there, no type is known. *)
-let library_find (_ : string) : (Robot.t, string) result = Error "no robot library"
+(* The robot library of the motion model, by MOC.cfg's type (ROB1_2400_1.5_10). *)
+let library_find = Rapid_motion_model.Robot_library.find
 
 let degrees r = r *. 180. /. Float.pi
 
@@ -47,7 +46,7 @@ let input ~robot files =
         Result.bind (Backup.read f) (fun (b : Backup.t) ->
             let given = match robot with
               | None -> Ok None
-              | Some file -> Result.map Option.some (Result.map_error Robot.error_to_string (Robot.load file)) in
+              | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name) in
             Result.bind given (fun given ->
                 let robots = List.filter_map (fun (t : Backup.task) ->
                     if not t.motion then None

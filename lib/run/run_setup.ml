@@ -24,7 +24,7 @@ let read_io = function
 
 let load_robot = function
   | None -> Ok Robot.irb120
-  | Some file -> Result.map_error Robot.error_to_string (Robot.load file)
+  | Some name -> Rapid_motion_model.Robot_library.load name
 
 (* A backup's robot, unless --robot gives one (the options override the backup). *)
 let robot_of ?robot (o : Run_options.t) = match robot, o.robot with
@@ -80,7 +80,7 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ?robot ~notify (o : Run_options.t) files =
+let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
   match read_io o.controller.io, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
@@ -88,7 +88,7 @@ let single ?(history = false) ?robot ~notify (o : Run_options.t) files =
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
       else
-        match Rapid_load.Session.load ~allow_unknown:o.allow_unknown ~io files with
+        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
         | Error f -> Error (Refused f)
         | Ok loaded ->
             notify (Warnings (loaded.warnings, loaded.unknown_summary));

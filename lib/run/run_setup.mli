@@ -68,11 +68,12 @@ type single = {
 }
 
 val single :
-  ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list ->
-  (single, failure) result
+  ?history:bool -> ?testing:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) ->
+  Run_options.t -> string list -> (single, failure) result
 (** The task buffer of these files loaded, in the controller of the options (signals, stimulus,
     clock, services, robot), which either engine runs it in. [history]: the motion history is
-    kept, within --max-memory (--samples, rapid-sem motion). [robot]: a backup's robot, unless
+    kept, within --max-memory (--samples, rapid-sem motion). [testing]: the assertions of
+    rapid-sem test are installed (doc/rulings.md R-test-a). [robot]: a backup's robot, unless
     --robot gives one. *)
 
 val one_task :

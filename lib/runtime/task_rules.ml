@@ -37,6 +37,7 @@ let next_turn order ~cursor ~count eligible =
    waits for, and the time its wait gave. The clock moves on to the earliest such time ([None]);
    with none, a deadlock; beyond --max-time, the time limit. For both engines' task sets. *)
 let every_task_waits (clock : Host.t) waits =
+  clock.every_task_waits (List.map (fun (name, _, _) -> name) waits);
   let times = List.filter_map (fun (_, _, wake) -> wake) waits in
   match List.sort compare times with
   | [] ->

@@ -446,6 +446,8 @@ let pointer_statement cfg =
   | F_stmt s, K_seq (b, j) :: _ when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == s -> Some s
   | _ -> None
 
+let test_case cfg = match cfg.stack with K_test_value (_, _, _, ci, _) :: _ -> Some ci | _ -> None
+
 (* ch. 14 (R-14-o): the loop whose round the last step began, when its body has no statement:
    right after while-again its condition is in focus; right after for-step settling has left
    the empty body already. *)

@@ -307,7 +307,10 @@ let value_step cfg v =
                   cfg.focus <- F_search (e, cfg.act.recovery_up);
                   (Rule.Raise_new, [ Error_raised { name = e.name; number = e.number; at = e.err_at } ])
               | _ -> cfg.focus <- F_raise e; (Rule.Raise, []))
-          | _ -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
+          | _ ->
+              let in_handler = match cfg.act.handling with In_handler _ -> true | _ -> false in
+              raise_ ~about:(Raise_number.refusal cfg.program ~in_handler f) cfg "ERR_ILLRAISE";
+              (Rule.Raise_illegal, []))
       | None -> raise_ cfg "ERR_ILLRAISE"; (Rule.Raise_illegal, []))
   | K_late_name (args, at) :: rest -> Calls.late_name cfg args at rest v
   | K_fit shape :: rest -> Calls.fit cfg shape rest v

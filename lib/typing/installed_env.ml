@@ -1,6 +1,9 @@
 open Rapid_syntax
 
-let file_names = List.map fst Installed_sources.files
+(* The assertions of rapid-sem test (doc/testing.md) are installed only in the task buffers
+   that command runs (doc/rulings.md R-test-a). *)
+let file_names =
+  List.filter (( <> ) "installed/unit_test.sys") (List.map fst Installed_sources.files)
 
 let parsed =
   lazy
@@ -17,4 +20,9 @@ let parsed =
      Source.keep ();
      modules)
 
-let modules () = Lazy.force parsed
+let is_test (m : Ast.module_declaration) =
+  match m.module_name.it with Ast.Ident n -> String.lowercase_ascii n = "installed_unit_test" | ID_placeholder -> false
+
+let modules () = Result.map (List.filter (fun m -> not (is_test m))) (Lazy.force parsed)
+
+let test_modules () = Result.map (List.filter is_test) (Lazy.force parsed)

@@ -9,4 +9,8 @@ open Rapid_syntax
 val modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
 (** Parsed once, on first use. An [Error] is a bug of rapid-sem's own sources. *)
 
+val test_modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
+(** The assertions of rapid-sem test (installed/unit_test.sys), which {!modules} leaves out: only
+    the task buffers that command runs have them (doc/rulings.md R-test-a). *)
+
 val file_names : string list

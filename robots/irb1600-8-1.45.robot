@@ -1,0 +1,24 @@
+# ABB IRB 1600-8/1.45: a serial six-axis arm with a spherical wrist (doc/motion.md, "The robot library").
+# Dimensions, axis ranges and axis speeds: ABB's product specification of the IRB 1600-8/1.45, chapter
+#   "Robot motion" (working range figure; table of axis working ranges and maximum axis speeds),
+#   as transcribed in ROS-Industrial's abb_experimental repository, abb_irb1600_support/urdf/irb1600_8_145_macro.xacro
+#   (joint origins, limits and velocities); figures only.
+# DH reading (derived, doc/motion.md "The robot library"): axis 1 d = height of axis 2 above the
+#   base, a = axis 2 ahead of axis 1; axis 2 a = lower arm; axis 3 a = axis 4 above axis 3;
+#   axis 4 d = axis 3 to the wrist centre; axis 6 d = wrist centre to the flange.
+# max_tcp_speed: ESTIMATED (the specification gives no figure; doc/motion.md "The robot library").
+# structure coupled-axis3: axis 3 is the upper arm's attitude against the horizontal, not its angle to
+#   the lower arm, as ABB's controller reports it for this arm (ROS-Industrial's driver couples joints 2
+#   and 3 for it: J23_coupled true in its launch files; doc/rulings.md R-structure).
+structure coupled-axis3
+name "ABB IRB 1600-8/1.45"
+#     DH: a (mm)  alpha (deg)  d (mm)  offset (deg)   range (deg)   speed (deg/s)
+axis 1   150   -90   486.5    0    -180 180   180
+axis 2   700     0     0  -90    -90 120   180
+axis 3   0   -90     0    0    -245 65   200
+axis 4     0    90   600    0    -200 200   400
+axis 5     0   -90     0    0    -115 115   400
+axis 6     0     0   65  180    -400 400   460
+max_tcp_speed 6000
+# the reach of the wrist centre, mm: the product specification's figure (the product's name rounds it)
+reach 1450
