@@ -62,9 +62,12 @@ let parse_cmd =
 let outcome_text (o : Rapid_runtime.Outcome.t) = match o with
   | Running -> "still running at the step limit"
   | Ended -> "ended"
-  | Stopped { name; _ } -> "stopped by " ^ name
+  | Stopped { name; at; about; _ } ->
+      Printf.sprintf "stopped by %s%s at %s" name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
+        (Rapid_syntax.Source.to_string at)
   | Resource_exhausted (m, _) -> "exhausted: " ^ m
-  | Unsupported { name; _ } -> "stopped at " ^ name ^ ", not modelled"
+  | Unsupported { name; at; _ } ->
+      Printf.sprintf "stopped at %s, not modelled, at %s" name (Rapid_syntax.Source.to_string at)
   | Deadlock _ -> "waiting forever (deadlock)"
   | Stuck m -> "stuck: " ^ m
 
@@ -75,7 +78,8 @@ let print_summary (s : Rapid_run.Backup_setup.summary) ends =
   List.iter (fun (t : Rapid_run.Backup_setup.task_summary) ->
       let robot = match t.robot, t.reads with
         | Some r, _ -> Printf.sprintf "robot %s%s" r (match t.robot_type with
-            | Some ty when ty <> "" && t.stand_in -> " in place of " ^ ty ^ " (not in the robot library)"
+            | Some ty when ty <> "" && t.stand_in <> None ->
+                Printf.sprintf " in place of %s (%s)" ty (Option.get t.stand_in)
             | Some ty when ty <> "" -> " (" ^ ty ^ ")"
             | _ -> "")
         | None, Some m -> "reads " ^ m ^ "'s robot"

@@ -187,7 +187,7 @@ let task_end name o steps =
 
 type cell_task = {
   name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
-  stand_in : bool; reads : string option; modules : int;
+  stand_in : string option; reads : string option; modules : int;
 }
 
 let cell ~backup ~io ~signals ~warnings tasks : Yojson.Safe.t =
@@ -196,7 +196,7 @@ let cell ~backup ~io ~signals ~warnings tasks : Yojson.Safe.t =
            ("tasks", `List (List.map (fun t ->
                 `Assoc [ ("task", text t.name); ("type", `String t.kind); ("entry", text t.entry);
                          ("motion", `Bool t.motion); ("robot", opt t.robot); ("robot_type", opt t.robot_type);
-                         ("stand_in", `Bool t.stand_in);
+                         ("stand_in", opt t.stand_in);
                          ("reads", opt t.reads); ("modules", `Int t.modules) ]) tasks));
            ("io", opt io); ("signals", `Int signals); ("warnings", `Int warnings) ]
 

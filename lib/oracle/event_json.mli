@@ -67,14 +67,15 @@ val task_end : string -> Rapid_runtime.Outcome.t -> int -> Yojson.Safe.t
 
 type cell_task = {
   name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
-  stand_in : bool; reads : string option; modules : int;
+  stand_in : string option; reads : string option; modules : int;
 }
 
 val cell : backup:string -> io:string option -> signals:int -> warnings:int -> cell_task list -> Yojson.Safe.t
 (** A controller backup's run, right after [start]: [{"event":"cell","backup":DIR,"tasks":[...],
     "io":FILE|null,"signals":N,"warnings":N}], each task with its type (NORMAL, STATIC,
     SEMISTATIC), entry routine, whether it has a robot, the robot's name and MOC.cfg type (and
-    [stand_in]: the default IRB 120 moves in place of a type rapid-sem does not know), the
+    [stand_in]: why another robot moves in place of that type's: ["--robot"], ["not in the robot
+    library"], ["no robot in MOC.cfg"], else null), the
     motion task whose robot a task without one reads, and its number of modules
     (doc/trace-format.md). *)
 

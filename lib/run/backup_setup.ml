@@ -1,7 +1,9 @@
 module Backup = Rapid_load.Backup
 module Robot = Rapid_motion_model.Robot
 
-type cell = { backup : Backup.t; robots : (string * Robot.t) list; stand_in : string list; warnings : string list }
+type cell = {
+  backup : Backup.t; robots : (string * Robot.t) list; stand_in : (string * string) list; warnings : string list;
+}
 type input = Files of string list | Cell of cell
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
@@ -51,11 +53,13 @@ let input ~robot files =
                 let robots = List.filter_map (fun (t : Backup.task) ->
                     if not t.motion then None
                     else match given, List.assoc_opt t.name b.robots with
-                      | Some r, _ -> Some (t.name, ((r, []), true))
-                      | None, Some r -> Some (t.name, Result.get_ok (robot_of_type r))
-                      | None, None -> Some (t.name, ((Robot.irb120, []), false))) b.tasks in
+                      | Some r, _ -> Some (t.name, ((r, []), Some "--robot"))
+                      | None, Some r ->
+                          let robot, known = Result.get_ok (robot_of_type r) in
+                          Some (t.name, (robot, if known then None else Some "not in the robot library"))
+                      | None, None -> Some (t.name, ((Robot.irb120, []), Some "no robot in MOC.cfg"))) b.tasks in
                 Ok (Cell { backup = b; robots = List.map (fun (n, ((r, _), _)) -> (n, r)) robots;
-                           stand_in = List.filter_map (fun (n, (_, known)) -> if known then None else Some n) robots;
+                           stand_in = List.filter_map (fun (n, (_, why)) -> Option.map (fun w -> (n, w)) why) robots;
                            warnings = b.warnings @ List.concat_map (fun (_, ((_, w), _)) -> w) robots })))
   | [ f ] when String.lowercase_ascii (Filename.extension f) = ".pgf" ->
       Result.map (fun l -> Files l) (Backup.read_pgf f)
@@ -63,7 +67,7 @@ let input ~robot files =
 
 type task_summary = {
   task : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
-  stand_in : bool; reads : string option; modules : int;
+  stand_in : string option; reads : string option; modules : int;
 }
 
 type summary = { dir : string; tasks : task_summary list; io : string option; signals : int; warned : int }
@@ -80,7 +84,7 @@ let summary c ~run ~(io : Rapid_controller.Io_config.t) =
         robot_type =
           (if motion then Option.map (fun (r : Backup.robot) -> r.robot_type) (List.assoc_opt s.name b.robots)
            else None);
-        stand_in = List.exists (same s.name) c.stand_in;
+        stand_in = Option.map snd (List.find_opt (fun (n, _) -> same n s.name) c.stand_in);
         reads = (if motion then None else List.assoc_opt s.name b.connected);
         modules = List.length s.files }) run in
   { dir = b.dir; tasks; io = (if io.file = "" then None else Some io.file); signals = List.length io.signals;

@@ -8,7 +8,9 @@ module Backup = Rapid_load.Backup
 type cell = {
   backup : Backup.t;
   robots : (string * Rapid_motion_model.Robot.t) list;   (** each motion task's robot *)
-  stand_in : string list;     (** the motion tasks whose robot is the default IRB 120 in place of MOC.cfg's *)
+  stand_in : (string * string) list;
+      (** the motion tasks whose robot is not their MOC.cfg type's, and why: "--robot", "not in the
+          robot library", "no robot in MOC.cfg" *)
   warnings : string list;     (** the backup's, then the robots' (R-bk-5), FILE:LINE: warning: ... *)
 }
 
@@ -38,7 +40,7 @@ type task_summary = {
   motion : bool;
   robot : string option;      (** a motion task's robot: its description's name *)
   robot_type : string option; (** MOC.cfg's -use_robot_type *)
-  stand_in : bool;            (** the robot is the default IRB 120 in place of that type's *)
+  stand_in : string option;   (** why the robot is not that type's (then --robot's, or the default IRB 120) *)
   reads : string option;      (** a task without a robot: the motion task whose robot it reads *)
   modules : int;
 }
