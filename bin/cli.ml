@@ -115,6 +115,7 @@ let notify : Setup.notice -> unit = function
                      it has no file to write back to"
   | Samples_capped n ->
       Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!" n
+  | Backup_warning w -> prerr_endline w
 
 let failure ?(json = false) ?(files = []) : Setup.failure -> int = function
   | Usage m -> prerr_endline m; exit_static_error

@@ -21,7 +21,11 @@ let cmd =
     | Ok ic ->
     Cli.guard @@ fun () ->
     let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
-    match Rapid_run.Run_setup.start_machine ~notify:Cli.notify options files ~entry with
+    (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
+    match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
+    | Error f -> Cli.failure f
+    | Ok (options, files, entry, robot) ->
+    match Rapid_run.Run_setup.start_machine ?robot ~notify:ignore options files ~entry with
     | Error f -> Cli.failure f
     | Ok (cfg, _) ->
     let echo = script <> None in

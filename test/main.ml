@@ -40,6 +40,7 @@ let () =
       Test_tasks.suite;
       Test_observation.suite;
       Test_realprog2.suite;
+      Test_backup.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;

@@ -15,7 +15,7 @@ let () =
     Rapid_typing.Installed_env.set_image (fun () ->
         let t : Installed_level.t = Marshal.from_string data 0 in
         Installed_level.install t;
-        (Installed_level.all t, Installed_level.modules t))
+        Installed_level.modules t)
   end
 
 let in_use () = usable

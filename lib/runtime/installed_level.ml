@@ -6,8 +6,7 @@ type t = {
   records_before : int;
   files : Source.registry;
   record_ids : int;
-  all : Ast.module_declaration list;        (* with the assertions of rapid-sem test *)
-  modules : Ast.module_declaration list;    (* those of every task (Installed_env.without_tests) *)
+  modules : Ast.module_declaration list;
   checked : Check.installed_state;
   lowered : Lower.installed_lowering;
   values : Initial_values.kept;
@@ -17,8 +16,7 @@ let compute () =
   let files_before = Source.registry () and records_before = Rapid_typing.Types.record_ids_used () in
   match Rapid_typing.Installed_env.parse () with
   | Error d -> Error ("the installed environment does not parse: " ^ Diagnostic.to_string d)
-  | Ok all -> (
-      let modules = Rapid_typing.Installed_env.without_tests all in
+  | Ok modules -> (
       match Check.installed_state modules with
       | Error reports ->
           Error (String.concat "\n" ("the installed environment does not check:"
@@ -36,14 +34,13 @@ let compute () =
                                          :: List.map Rapid_typing.Report.to_string reports))
           | Ok _ ->
               Ok { files_before; records_before; files = Source.registry ();
-                   record_ids = Rapid_typing.Types.record_ids_used (); all; modules; checked; lowered;
+                   record_ids = Rapid_typing.Types.record_ids_used (); modules; checked; lowered;
                    values = Option.get (Initial_values.kept ()) })
 
 let files t = t.files
 let before t = (t.files_before, t.records_before)
 let record_ids t = t.record_ids
 let modules t = t.modules
-let all t = t.all
 
 let install t =
   Check.use_installed_state t.checked;

@@ -21,11 +21,6 @@ val record_ids : t -> int
 (** The record types' ids [compute] used. *)
 
 val modules : t -> Rapid_syntax.Ast.module_declaration list
-(** The installed modules of every task (without the assertions of rapid-sem test), the list
-    the checker's and the lowering's state are kept for. *)
-
-val all : t -> Rapid_syntax.Ast.module_declaration list
-(** With the assertions (Rapid_typing.Installed_env.test_modules). *)
 
 val install : t -> unit
 (** The checker's, the lowering's and the initial values' shared state become this one's

@@ -7,18 +7,14 @@
 open Rapid_syntax
 
 val modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
-(** Parsed once, on first use, or taken from the image {!set_image} names; the same list at every
-    call. An [Error] is a bug of rapid-sem's own sources. *)
+(** Parsed once, on first use, or taken from the image {!set_image} names. An [Error] is a bug of
+    rapid-sem's own sources. *)
 
 val parse : unit -> (Ast.module_declaration list, Diagnostic.t) result
 (** Parses them now (what {!modules} does without an image): for the build-time image. *)
 
-val without_tests : Ast.module_declaration list -> Ast.module_declaration list
-(** The modules of every task: those [parse] gives, without the assertions of rapid-sem test. *)
-
-val set_image : (unit -> Ast.module_declaration list * Ast.module_declaration list) -> unit
-(** Before the first {!modules}: where it takes the installed modules from (all of them, and
-    those of every task, the list {!modules} gives), the image of them
+val set_image : (unit -> Ast.module_declaration list) -> unit
+(** Before the first {!modules}: where it takes the installed modules from, the image of them
     (parsed, checked and lowered when rapid-sem was built, lib/load/installed_image.ml) that
     also restores what their parse, check and lowering left behind (their files' ids, the
     record types' ids, the checker's and the lowering's shared state). *)
@@ -28,3 +24,4 @@ val test_modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
     the task buffers that command runs have them (doc/rulings.md R-test-a). *)
 
 val file_names : string list
+(** The names of every installed file, the assertions' among them. *)
