@@ -13,7 +13,15 @@ let in_use () =
   match Rapid_typing.Installed_env.modules () with
   | Error _ -> Alcotest.fail "the installed environment does not parse"
   | Ok modules ->
-      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules)
+      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules);
+      (* the checker's and the lowering's kept work is found by this list, compared physically *)
+      Alcotest.(check bool) "the same list at every call" true
+        (match Rapid_typing.Installed_env.modules () with Ok again -> again == modules | Error _ -> false);
+      Alcotest.(check bool) "without the assertions of rapid-sem test" true
+        (List.for_all (fun (m : Rapid_syntax.Ast.module_declaration) ->
+             match m.module_name.it with
+             | Rapid_syntax.Ast.Ident n -> String.lowercase_ascii n <> "installed_unit_test"
+             | ID_placeholder -> true) modules)
 
 let same_as_now () =
   let files, records = Level.before (image ()) in
