@@ -4,7 +4,7 @@ module MR = Rapid_installed.Motion_routines
 module Robot = Rapid_motion_model.Robot
 
 type notice =
-  | Inferred_signal of Io.signal
+  | Inferred_signal of Io.signal * Rapid_syntax.Source.region
   | Warnings of Rapid_typing.Report.t list * string option
   | Stdin_not_saved
   | Samples_capped of int
@@ -38,12 +38,16 @@ let install_services (s : Run_options.services) world =
   match all K.parse_allowed s.net, all K.parse_mapping s.map_address with
   | Error e, _ -> Error ("--net " ^ e)
   | _, Error e -> Error ("--map-address " ^ e)
+  | _ when Result.is_error (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ->
+      Result.fold ~ok:(fun _ -> Ok ()) ~error:(fun e -> Error ("--egm-device " ^ e))
+        (all Rapid_controller.Egm_channel.parse_devices s.egm_device)
   | _ when Option.fold ~none:false ~some:(fun q -> q < 0) s.fs_quota -> Error "--fs-quota: a number of bytes, 0 or more"
   | Ok allowed, Ok mapping ->
       let root = Option.value s.fs ~default:Rapid_controller.File_sandbox.default_root in
+      let egm_devices = Result.value (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ~default:[] in
       W.set_services world
         (Rapid_controller.Services.create ~sandbox:(Rapid_controller.File_sandbox.create root)
-           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ());
+           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ~egm_devices ());
       Ok ()
 
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
@@ -65,7 +69,7 @@ let with_inferred_signals ~notify (o : Run_options.t) files io =
     let io, added =
       Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
         modules io in
-    List.iter (fun s -> notify (Inferred_signal s)) added;
+    List.iter (fun (s, at) -> notify (Inferred_signal (s, at))) added;
     io
 
 (* The world of the options' controller, and the robot's motion. *)
@@ -80,20 +84,29 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
+(* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
+   of the options, or the backup's robot when --robot does not name one. *)
+let io_and_robot ?robot ~notify (o : Run_options.t) files =
   match read_io o.controller.io, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
-      else
-        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
-        | Error f -> Error (Refused f)
-        | Ok loaded ->
-            notify (Warnings (loaded.warnings, loaded.unknown_summary));
-            Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
-              (world o ~history io robot)
+      else Ok (io, robot)
+
+let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
+      match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
+      | Error f -> Error (Refused f)
+      | Ok loaded ->
+          notify (Warnings (loaded.warnings, loaded.unknown_summary));
+          Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
+            (world o ~history io robot))
+
+let fresh_world ?robot ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
+      Result.map (fun (controller, motion) -> Run.setup ~controller ~motion ()) (world o ~history:false io robot))
 
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with

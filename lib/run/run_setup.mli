@@ -10,9 +10,9 @@
 (** {1 What happens on the way} *)
 
 type notice =
-  | Inferred_signal of Rapid_controller.Io_config.signal
+  | Inferred_signal of Rapid_controller.Io_config.signal * Rapid_syntax.Source.region
       (** R-13-aa: under --allow-unknown --stub-unmodelled, an undeclared name the program passes
-          as a signal became a virtual signal at 0 *)
+          as a signal became a virtual signal at 0; the region of its first use *)
   | Warnings of Rapid_typing.Report.t list * string option
       (** the warnings of the static semantics and the summary of the unknown names (one task
           buffer), or the warnings of every task (several) *)
@@ -83,6 +83,12 @@ val one_task :
     backup's first motion task alone (its modules, its entry routine when [entry] is main, its
     robot, its EIO.cfg unless --io), the backup's warnings notified: what debug, motion and trace
     of one task run. *)
+
+val fresh_world :
+  ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list -> (Run.world, failure) result
+(** Another world of the same options for the task buffer of these files, as {!single} makes it:
+    each start of the program {!single} loaded in one of them begins afresh (module data, clock,
+    signals, robot), without loading the files again (rapid-sem test: a world per test). *)
 
 val machine :
   ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
