@@ -14,21 +14,37 @@ let write_file path text =
     Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text); Ok ()
   with Sys_error m -> Error m
 
-(* The program's side of the timeline: waits (from the rule that starts a wait to the one that
-   ends it), traps, signal changes. *)
+(* The program's side of the timeline: its waits (from the rule that starts a wait to the one
+   that ends it), traps, signal changes. A wait is a waiting instruction's (WaitTime, WaitDI,
+   WaitUntil, RMQReadWait, ...): a move instruction's program pointer waiting for its stop
+   point is the moves row's, not a wait of the program. *)
+let waiting_instruction cfg =
+  match M.current_statement cfg with
+  | Some { s = Call_procedure { callee = Routine i; _ }; _ } ->
+      let name = (M.program cfg).routines.(i).name in
+      let lower = String.lowercase_ascii name in
+      let rec has k = k + 4 <= String.length lower && (String.sub lower k 4 = "wait" || has (k + 1)) in
+      if has 0 then Some name else None
+  | _ -> None
+
 let collect (w : Rapid_run.Run.world) =
-  let marks = ref [] and wait_from = ref None and traps = ref [] in
+  let marks = ref [] and waits = ref [] and traps = ref [] in
   let now () = Rapid_controller.World.now w.controller in
-  let label = ref "" in
-  let observe rule events =
+  let observe cfg rule events =
     let open MM.Path_output in
     (match rule with
-     | "wait-start" -> wait_from := Some (now ())
-     | "wait-done" | "wait-timeout" -> (
-         match !wait_from with
-         | Some t0 ->
-             marks := { lane = Waits; m_from = t0; m_to = now (); m_label = !label } :: !marks; wait_from := None
-         | None -> ())
+     | "wait-start" ->
+         let what = Option.map (fun name ->
+             match M.waiting_for cfg with Some what -> name ^ ": " ^ what | None -> name) (waiting_instruction cfg) in
+         waits := (now (), what) :: !waits
+     | "wait-done" | "wait-timeout" | "wait-poll-true" -> (
+         (* a trap's wait within the wait of the routine it interrupted: the innermost ends *)
+         match !waits with
+         | (t0, what) :: rest ->
+             Option.iter (fun m_label ->
+                 marks := { lane = Waits; m_from = t0; m_to = now (); m_label } :: !marks) what;
+             waits := rest
+         | [] -> ())
      | _ -> ());
     List.iter (function
         | Rapid_runtime.Event.Trap_entered { trap; time; _ } -> traps := (trap, time) :: !traps
@@ -40,11 +56,7 @@ let collect (w : Rapid_run.Run.world) =
         | Rapid_runtime.Event.Controller (Signal_changed { time; signal; value }) ->
             let m_label = Printf.sprintf "%s=%g" signal value in
             marks := { lane = Signals; m_from = time; m_to = time; m_label } :: !marks
-        | Rapid_runtime.Event.Motion (Segment_planned { instruction; label = l; _ }) -> label := instruction ^ " " ^ l
-        | _ -> ()) events;
-    let planned = function Rapid_runtime.Event.Motion (Segment_planned _) -> true | _ -> false in
-    if rule = "wait-start" && not (List.exists planned events) then
-      label := "wait"
+        | _ -> ()) events
   in
   (observe, fun () -> List.rev !marks)
 
@@ -70,7 +82,7 @@ let cmd =
     let rec loop () =
       if M.outcome cfg = Rapid_runtime.Outcome.Running && M.steps cfg < max_steps then begin
         let rule, events = M.step cfg in
-        observe rule events;
+        observe cfg rule events;
         List.iter (function Rapid_runtime.Event.Output s -> print_endline s | _ -> ()) events;
         loop ()
       end in

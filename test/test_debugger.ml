@@ -179,6 +179,79 @@ ENDMODULE
   (* The refused breakpoints took no number; the one set stops continue. *)
   Alcotest.(check (list string)) "continue" [ "m:6  x := 2;" ] (answer "continue")
 
+(* Move instructions stepped backward (R-6.1-move): after each back the robot stands where the
+   move stepped over began, having retraced it (MoveC through its circle point), at a stop point. *)
+let back_moves_retrace () =
+  let module MP = Rapid_installed.Motion_routines in
+  let module MM = Rapid_motion_model in
+  let file = "../spec/06-backward/05-back-move-instructions.mod" in
+  let loaded = match Rapid_load.Session.load [ file ] with Ok l -> l | Error _ -> Alcotest.fail "does not load" in
+  let motion = MP.create ~history:100_000_000 () in
+  let host = (Rapid_run.Run.setup ~motion ()).host in
+  let cfg = match M.start ~host loaded.program ~entry:"main" with Ok c -> c | Error m -> Alcotest.fail m in
+  let d = D.create ~max_steps:1_000_000 ~out:(fun _ -> ()) cfg in
+  let run l = ignore (D.command d l) in
+  let p () = MP.planner motion in
+  let now () = host.now () in
+  let at () = (MM.Planner.pose_at (p ()) (now ())).trans in
+  let close what (a : MM.Geom.pos) (x, y, z) =
+    let dist = Float.sqrt (((a.x -. x) ** 2.) +. ((a.y -. y) ** 2.) +. ((a.z -. z) ** 2.)) in
+    if dist > 0.05 then Alcotest.failf "%s: the robot at (%.2f, %.2f, %.2f), not (%g, %g, %g)" what a.x a.y a.z x y z in
+  List.iter run [ "next"; "next"; "next"; "next" ];
+  close "forward, after MoveC" (at ()) (550., 100., 300.);
+  let t0 = now () in
+  run "back";
+  (* back over MoveC: at p2, the robot standing, having passed the circle point pCir *)
+  close "back over MoveC" (at ()) (350., 100., 300.);
+  if not (MM.Planner.finished_by (p ()) <= now () +. 1e-6) then Alcotest.fail "the robot still moves after back";
+  let nearest = ref infinity in
+  for k = 0 to 400 do
+    let t = t0 +. (now () -. t0) *. float_of_int k /. 400. in
+    let q = (MM.Planner.pose_at (p ()) t).trans in
+    let dist = Float.sqrt (((q.x -. 450.) ** 2.) +. ((q.y -. 200.) ** 2.) +. ((q.z -. 300.) ** 2.)) in
+    nearest := Float.min !nearest dist;
+    (* on the circle through p2, pCir, p3: centre (450, 100, 300), radius 100 *)
+    let r = Float.sqrt (((q.x -. 450.) ** 2.) +. ((q.y -. 100.) ** 2.)) in
+    if Float.abs (r -. 100.) > 0.5 || Float.abs (q.z -. 300.) > 0.5 then
+      Alcotest.failf "back over MoveC leaves the circle at (%.1f, %.1f, %.1f)" q.x q.y q.z
+  done;
+  if !nearest > 1. then Alcotest.failf "back over MoveC passes %.1f mm from the circle point" !nearest;
+  let t1 = now () in
+  run "back";
+  (* back over MoveL p2 (a fly-by point forward): on the line to p1, ending there at a stop point *)
+  close "back over MoveL" (at ()) (350., -100., 300.);
+  let mid = (MM.Planner.pose_at (p ()) ((t1 +. now ()) /. 2.)).trans in
+  if Float.abs (mid.x -. 350.) > 0.5 || Float.abs (mid.z -. 300.) > 0.5 then
+    Alcotest.failf "back over MoveL leaves the line at (%.1f, %.1f, %.1f)" mid.x mid.y mid.z;
+  run "back";
+  (* back over MoveJ p1: to the axis angles it started from, jStart *)
+  (match MM.Planner.joints_at (p ()) (now ()) with
+   | Ok j -> Alcotest.(check (array (float 1e-3))) "back over MoveJ: at jStart" [| 0.; 0.; 0.; 0.; 30.; 0. |] j
+   | Error _ -> Alcotest.fail "no axis angles");
+  run "back";
+  (match MM.Planner.joints_at (p ()) (now ()) with
+   | Ok j -> Alcotest.(check (array (float 1e-3))) "back over MoveAbsJ: at the start (axes 0)" [| 0.; 0.; 0.; 0.; 0.; 0. |] j
+   | Error _ -> Alcotest.fail "no axis angles");
+  Alcotest.(check (list string)) "the rules" [ "backward-move"; "backward-end" ]
+    (List.filter (fun r -> r = "backward-move" || r = "backward-end") (D.rules d) |> List.sort_uniq compare |> List.rev)
+
+(* At the first statement of a list inside a compound statement, back refuses, saying why. *)
+let back_at_top_of_inner_list () =
+  let file = program {|MODULE m
+  VAR num x := 0;
+  PROC main()
+    IF x = 0 THEN
+      x := 1;
+      x := 2;
+    ENDIF
+  ENDPROC
+ENDMODULE
+|} in
+  let out, _, _ = session [ file ] [ "step"; "back"; "step"; "back" ] in
+  let has sub = try ignore (Str.search_forward (Str.regexp_string sub) out 0); true with Not_found -> false in
+  if not (has "the first statement of a list inside a compound statement (IF, FOR, WHILE, TEST), which cannot be \
+               executed backward") then Alcotest.failf "no reason given: %s" out
+
 let suite =
   ("debugger",
    [ Alcotest.test_case "backward rules documented" `Quick backward_rules_documented;
@@ -186,4 +259,6 @@ let suite =
      Alcotest.test_case "back in an error handler" `Quick back_in_handler;
      Alcotest.test_case "BACKWARD handler scope" `Quick handler_scope;
      Alcotest.test_case "step limit" `Quick step_limit;
-     Alcotest.test_case "malformed commands say what they expect" `Quick malformed_commands ])
+     Alcotest.test_case "malformed commands say what they expect" `Quick malformed_commands;
+     Alcotest.test_case "back at the top of an IF's list" `Quick back_at_top_of_inner_list;
+     Alcotest.test_case "MoveC, MoveL, MoveJ, MoveAbsJ stepped backward retrace their moves" `Quick back_moves_retrace ])

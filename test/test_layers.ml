@@ -57,6 +57,12 @@ let layers () =
   forbidden "rapid_closure" [ "rapid_semantics"; "rapid_controller"; "rapid_motion_model"; "rapid_installed" ] table;
   (* The oracle compares implementations: its encoder of the events names neither engine. *)
   forbidden "rapid_oracle" [ "rapid_semantics"; "rapid_closure" ] table;
+  (* The language server answers static questions: the front end, the checker and the loader,
+     no engine and no world (doc/architecture.md). *)
+  forbidden "rapid_lsp"
+    [ "rapid_semantics"; "rapid_closure"; "rapid_installed"; "rapid_motion_model"; "rapid_run"; "threads";
+      "threads.posix" ] table;
+  Alcotest.(check bool) "the language server has a library" true (List.mem_assoc "rapid_lsp" table);
   (* And the checker itself sees a dependency: the run library links both engines. *)
   Alcotest.(check bool) "a link is seen through a library" true
     (List.mem "rapid_controller" (links table "rapid_run") && List.mem "rapid_semantics" (links table "rapid_run"))
@@ -70,8 +76,9 @@ let utf8_length line =
   !n
 
 (* The sources as written: not what the build generates beside them (menhir's parser, the
-   preprocessed files, the embedded installed environment). *)
-let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "robot_files.ml" ]
+   preprocessed files, the embedded installed environment and its image, the robot library). *)
+let generated =
+  [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "installed_image_data.ml"; "robot_files.ml" ]
 
 let rec sources dir =
   Sys.readdir dir |> Array.to_list |> List.concat_map (fun f ->

@@ -311,6 +311,82 @@ let test_socket_wait () =
   Alcotest.(check bool) (Printf.sprintf "the virtual clock followed the host (%g s)" waited) true
     (waited >= 0.3 && waited < 5.)
 
+(* R-13-sockwait2: two tasks each waiting in SocketAccept, with nothing else in the run: the
+   clock holds while they wait on the host, however small --max-time; a client at either port
+   wakes that task. The clients come 1.5 s and 2 s after the servers listen, beyond the 1 s of
+   --max-time. Both engines. *)
+let accept_server name port = Printf.sprintf {|MODULE accept_%s
+  VAR socketdev server;
+  VAR socketdev peer;
+  VAR string text;
+  PROC main()
+    SocketCreate server;
+    SocketBind server, "127.0.0.1", %d;
+    SocketListen server;
+    SocketAccept server, peer \Time := 30;
+    SocketReceive peer \Str := text \Time := 30;
+    TPWrite "%s received " + text;
+    SocketSend peer \Str := "%s";
+    SocketClose peer;
+    SocketClose server;
+  ENDPROC
+ENDMODULE
+|} name port name name
+
+let free_port () =
+  let s0 = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+  Unix.bind s0 (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
+  let port = match Unix.getsockname s0 with Unix.ADDR_INET (_, p) -> p | _ -> 0 in
+  Unix.close s0; port
+
+let connect_retrying port =
+  let deadline = Unix.gettimeofday () +. 10. in
+  let rec go () =
+    let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
+    match Unix.connect s (Unix.ADDR_INET (Unix.inet_addr_loopback, port)) with
+    | () -> s
+    | exception Unix.Unix_error (Unix.ECONNREFUSED, _, _) when Unix.gettimeofday () < deadline ->
+        Unix.close s; Unix.sleepf 0.05; go () in
+  go ()
+
+let test_two_accepts () =
+  List.iter (fun engine ->
+      let dir = temp_dir () in
+      let pa = free_port () and pb = free_port () in
+      let a = write dir "a.mod" (accept_server "A" pa) and b = write dir "b.mod" (accept_server "B" pb) in
+      let out = Filename.concat dir "out.txt" in
+      let fd = Unix.openfile out [ O_WRONLY; O_CREAT; O_TRUNC ] 0o600 in
+      let devnull = Unix.openfile "/dev/null" [ O_RDWR ] 0 in
+      let pid = Unix.create_process binary
+          [| binary; "run"; "--engine"; engine; "--max-time"; "1"; "--task"; "T_A=" ^ a; "--task"; "T_B=" ^ b |]
+          devnull fd devnull in
+      Unix.close fd; Unix.close devnull;
+      let started = Unix.gettimeofday () in
+      (* Probe that both listen, then wait beyond --max-time before the first real client. *)
+      let answer s text =
+        ignore (Unix.write_substring s text 0 (String.length text));
+        let buf = Bytes.create 16 in
+        let n = try Unix.read s buf 0 16 with Unix.Unix_error _ -> 0 in
+        Bytes.sub_string buf 0 n in
+      Unix.sleepf 1.5;
+      let sb = connect_retrying pb in
+      let got_b = answer sb "hi" in
+      Unix.sleepf 0.5;
+      let sa = connect_retrying pa in
+      let got_a = answer sa "ho" in
+      let _, status = Unix.waitpid [] pid in
+      Unix.close sa; Unix.close sb;
+      let ic = open_in_bin out in
+      let o = lines (really_input_string ic (in_channel_length ic)) in
+      close_in ic;
+      Alcotest.(check bool) (engine ^ ": the clients came after the time limit") true
+        (Unix.gettimeofday () -. started > 1.9);
+      Alcotest.(check bool) (engine ^ ": exit 0") true (status = Unix.WEXITED 0);
+      Alcotest.(check (list string)) (engine ^ ": each task served its client, B first")
+        [ "B received hi"; "A received ho" ] o;
+      Alcotest.(check (pair string string)) (engine ^ ": the answers") ("A", "B") (got_a, got_b))
+    [ "closure"; "machine" ]
+
 (* check --task judges the buffers as run --task loads them: every case of spec/14-tasks that
    expects a semantic error is refused by check --task, and no other case is (R-14-c). *)
 let test_check_agrees () =
@@ -428,5 +504,6 @@ let suite =
       Alcotest.test_case "check --task agrees with run --task" `Quick test_check_agrees;
       Alcotest.test_case "task-end outcomes" `Quick test_task_ends;
       Alcotest.test_case "a socket wait beside traps and a task" `Quick test_socket_wait;
+      Alcotest.test_case "two tasks in SocketAccept beyond --max-time" `Quick test_two_accepts;
       Alcotest.test_case "run --task: both engines, several schedules" `Quick test_engines_agree;
       Alcotest.test_case "the tasks share --max-memory; at most 20 tasks" `Quick test_task_budget ] )

@@ -92,6 +92,10 @@ and shared = {
   rmqs : (int, rmq) Hashtbl.t;                 (* each task's RAPID Message Queue, by its number *)
   rmq_kept : (int, rmq_message) Hashtbl.t;     (* the messages rmqmessage variables hold *)
   mutable rmq_last : int;                      (* the identity of the last message kept *)
+  mutable executed : int;                      (* statements executed, by any task *)
+  host_waits : (int, unit) Hashtbl.t;          (* the tasks, by number, in a wait on the host *)
+  mutable all_waiting : (string list * int) option;
+      (* the running tasks when they last all waited, and [executed] then (R-13-sockwait2) *)
 }
 
 and t = {
@@ -131,7 +135,8 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
   let signals = Array.of_list (List.map (fun (s : Io_config.signal) ->
       { s_name = s.name; s_kind = s.kind; value = s.initial }) config.signals) in
   let c = { now = 0; events = []; sequence = 0; members = []; syncs = Hashtbl.create 4;
-            sync_moves = Hashtbl.create 2; rmqs = Hashtbl.create 2; rmq_kept = Hashtbl.create 8; rmq_last = 0 } in
+            sync_moves = Hashtbl.create 2; rmqs = Hashtbl.create 2; rmq_kept = Hashtbl.create 8; rmq_last = 0;
+            executed = 0; host_waits = Hashtbl.create 2; all_waiting = None } in
   let w = { c; task_name = "T_ROB1"; task_number = 1; motion_task = true;
             statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             interrupts = Hashtbl.create 8; watching = false;
@@ -237,16 +242,18 @@ let advance_us w target =
   if target > w.c.now then w.c.now <- target
 
 let advance_to w time = advance_us w (seconds time)
-let statement w = advance_us w (w.c.now + w.statement_time)
+let statement w = w.c.executed <- w.c.executed + 1; advance_us w (w.c.now + w.statement_time)
 
 let statement_within w =
+  w.c.executed <- w.c.executed + 1;
   let target = w.c.now + w.statement_time in
   (match w.c.events with
    | (t, _, _) :: _ when t <= target -> advance_us w target
    | _ -> w.c.now <- target);
   not (to_seconds w.c.now > w.max_time)
 
-let statements w k = if k > 0 then advance_us w (w.c.now + k * w.statement_time)
+let statements w k =
+  if k > 0 then begin w.c.executed <- w.c.executed + k; advance_us w (w.c.now + k * w.statement_time) end
 
 let statements_left w =
   let d = w.statement_time in
@@ -445,6 +452,26 @@ let add_task w ~name ~motion =
   t
 
 let name_task w ~name ~motion = w.task_name <- name; w.motion_task <- motion
+
+(* R-13-sockwait2: the scheduler says when every running task waits; a wait on the host (a
+   socket's) says when it begins and ends. Nothing but the host can then end any wait while no
+   statement has run since and every task that waited then still waits on the host. *)
+let every_task_waits w names = w.c.all_waiting <- Some (names, w.c.executed)
+let host_wait_begin w = Hashtbl.replace w.c.host_waits w.task_number ()
+let host_wait_end w = Hashtbl.remove w.c.host_waits w.task_number
+
+let only_host_waits w =
+  match w.c.members with
+  | [ _ ] -> true
+  | members -> (
+      match w.c.all_waiting with
+      | Some (names, executed) when executed = w.c.executed ->
+          List.for_all (fun name ->
+              List.exists (fun m -> String.lowercase_ascii m.task_name = String.lowercase_ascii name
+                                    && Hashtbl.mem w.c.host_waits m.task_number) members) names
+      | _ -> false)
+
+let host_waiters w = Hashtbl.length w.c.host_waits
 
 let sync_key point task = String.lowercase_ascii point ^ "\x00" ^ String.lowercase_ascii task
 

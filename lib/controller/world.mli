@@ -240,6 +240,21 @@ val name_task : t -> name:string -> motion:bool -> unit
 val add_task : t -> name:string -> motion:bool -> t
 (** The world of a new task of the same run: the next number, on the same clock. *)
 
+val every_task_waits : t -> string list -> unit
+(** The scheduler: every running task of the run, these, waits now (before the clock moves on). *)
+
+val host_wait_begin : t -> unit
+val host_wait_end : t -> unit
+(** This task begins (ends) a wait that only the host can end: a socket's (R-13-sockwait2). *)
+
+val only_host_waits : t -> bool
+(** Whether only the host can end any task's wait: the run has one task, or every running task
+    waited when the scheduler last said so, no statement has run since, and each of them still
+    waits on the host (doc/rulings.md R-13-sockwait2). *)
+
+val host_waiters : t -> int
+(** How many tasks wait on the host. *)
+
 val sync_arrive : t -> string -> int
 (** WaitSyncTask: this task reaches the synchronisation point of this name once more; how many
     times it has now. *)

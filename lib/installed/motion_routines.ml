@@ -663,6 +663,7 @@ let names = [
   "WriteCfgData";
   "SetSysData";
   "IsStopMoveAct";
+  "ExitCycle";
 ]
 
 let modelled name = List.exists (same name) names
@@ -698,7 +699,8 @@ let path_command ctx st command f =
       forget st ~now; Returned None
   | Error e -> fail ctx command e
 
-(* R-14-pos1: the motion state whose robot CJointT, CRobT and CPos read. \TaskName, or \TaskRef
+(* R-14-pos1: the motion state whose robot CJointT, CRobT and CPos read (CTool and CWObj too,
+   R-14-pos2). \TaskName, or \TaskRef
    (a taskid's identity is its task's number), names a task of the run: a motion task's robot; the
    caller itself, as without either; another task, ERR_NOT_MOVETASK; no task, ERR_TASKNAME. Without
    either, a motion task reads its own robot and a task without one the robot of its motion task
@@ -771,6 +773,18 @@ let call_unguarded (ctx : context) st name args =
       Some Retry_requested
   | "clearpath" ->
       Some (path_command ctx st "ClearPath" (fun at -> P.clear st.planner ~at; st.cleared_at <- Some at; Ok ()))
+  | "exitcycle" -> (
+      (* R-13-exitcycle1 (ABB's ExitCycle): the robot's on-going movement stops and every path
+         not done is dropped, of both path levels; the next cycle's moves start from where the
+         robot stands (a StopMove in effect is lifted, as by a start from main). *)
+      let clear at =
+        let back = if P.path_level st.planner = 2 then P.resto_path st.planner ~at else Ok () in
+        P.clear st.planner ~at; st.cleared_at <- Some at;
+        if P.stopped st.planner then P.start st.planner ~at;
+        back in
+      match path_command ctx st "ClearPath" clear with
+      | Returned _ -> Some Exit_cycle_requested
+      | other -> Some other)
   | "storepath" -> Some (path_command ctx st "StorePath" (fun at -> P.store_path st.planner ~at))
   | "restopath" -> Some (path_command ctx st "RestoPath" (fun at -> P.resto_path st.planner ~at))
   | "procerrrecovery" ->
@@ -822,14 +836,22 @@ let call_unguarded (ctx : context) st name args =
       settings.sing_area_wrist <- present ctx args "Wrist" || present ctx args "LockAxis4"; Some (Returned None)
   | "maxrobspeed" -> Some (Returned (Some (V.num st.robot.max_tcp_speed)))
   | "cspeedoverride" -> Some (Returned (Some (V.num 100.)))
-  | "ctool" -> Some (Returned (Some (match active_tool st with
+  (* R-14-pos2: CTool and CWObj read the active tool and work object of the task whose robot
+     CJointT would read (\TaskRef, \TaskName: R-14-pos1). *)
+  | ("ctool" | "cwobj") when Result.is_error (robot_of ctx st args) ->
+      Some (match robot_of ctx st args with Error e -> Failed e | Ok _ -> Failed "ERR_TASKNAME")
+  | "ctool" ->
+      let st = Result.get_ok (robot_of ctx st args) in
+      Some (Returned (Some (match active_tool st with
       | Some t -> V.copy t
       | None -> tool0_value ())))
-  | "cwobj" -> Some (Returned (Some (if st.wobj == dummy then
-                                       V.Record [| V.Bool false; V.Bool true; V.String "";
-                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                                                   V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
-                                     else V.copy st.wobj)))
+  | "cwobj" ->
+      let st = Result.get_ok (robot_of ctx st args) in
+      Some (Returned (Some (if st.wobj == dummy then
+                              V.Record [| V.Bool false; V.Bool true; V.String "";
+                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
+                            else V.copy st.wobj)))
   | "offs" -> (
       match get "Point", num ctx args "XOffset", num ctx args "YOffset", num ctx args "ZOffset" with
       | Some p, Some x, Some y, Some z ->
@@ -912,3 +934,17 @@ let call ctx st name args =
     if not st.async_raised && st.new_move = None && st.first_poll = None then no_effects
     else { at_move = st.async_raised; new_move = st.new_move; first_poll = st.first_poll } in
   Option.map (fun o -> (o, effects)) outcome
+
+(* ------------------------------------------------------------------ guided motion *)
+
+let axes_now st ~now = match P.joints_at st.planner now with Ok q -> q | Error _ -> arm_end_joints st now
+
+(* One cycle of Externally Guided Motion (Egm_routines): the arm goes to its next axis angles in
+   one cycle, a stop point, as a MoveAbsJ \T would; the active tool and work object stay. *)
+let servo ctx st q ~duration =
+  let now = W.now ctx.world in
+  let fine = Option.get (D.find D.zonedata "fine") and speed = Option.get (D.find D.speeddata "v1000") in
+  forget st ~now;
+  match P.plan st.planner ~now (P.move ~t:duration ~label:"EGM" speed fine (P.Abs_joint q)) with
+  | Error e -> ctx.log (Printf.sprintf "EGM: %s" (MM.Motion_error.name e)); Error (error_name e)
+  | Ok { id; _ } -> planned st id; st.last_planned <- Some id; Ok ()

@@ -31,9 +31,11 @@ type outcome =
   | Failed of string
   | Call_by_name of string
   | Stop_requested
+  | Exit_cycle_requested
   | Not_modelled
   | Wait of Rapid_controller.World.wait
   | Retry_requested
+  | Assertion_failed of string
 
 (* The argument of the parameter of this name (letter case aside, §2.3): installed routines
    whose behaviour lives outside this module find their arguments by name. *)

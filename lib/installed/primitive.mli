@@ -36,9 +36,11 @@ type outcome =
   | Failed of string                                 (** an execution error, by its ERR_ name *)
   | Call_by_name of string                           (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                                   (** Stop: the task stops *)
+  | Exit_cycle_requested                             (** ExitCycle: the next cycle starts *)
   | Not_modelled                                     (** rapid-sem does not model this routine yet *)
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
   | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
+  | Assertion_failed of string                       (** an assertion of rapid-sem test failed *)
 
 val named_argument : context -> argument array -> string -> argument
 (** The argument of the callee's parameter of this name ([context.parameters]), letter case

@@ -45,9 +45,15 @@ let bodies = [
         Option.map (fun r -> (r, no_effects)) (Service_routines.call ~standstill ctx name args)) };
   { module_name = "rmq"; reach = (fun _ -> World); claims = (fun _ -> Rmq_routines.modelled);
     answer = plain Rmq_routines.call };
+  { module_name = "egm"; reach = Egm_routines.reach; claims = (fun _ -> Egm_routines.modelled);
+    answer = (fun ~standstill:_ ctx motion name args ->
+        Option.map (fun r -> (r, no_effects)) (Egm_routines.call ctx motion name args)) };
   { module_name = "system"; reach = (fun _ -> Values); claims = (fun _ -> System_routines.modelled);
     answer = (fun ~standstill:_ ctx motion name args ->
         Option.map (fun r -> (r, no_effects)) (System_routines.call ctx motion name args)) };
+  { module_name = "assert"; reach = (fun _ -> Moves); claims = (fun _ -> Assert_routines.modelled);
+    answer = (fun ~standstill:_ ctx motion name args ->
+        Option.map (fun r -> (r, no_effects)) (Assert_routines.call ctx motion name args)) };
   { module_name = "basic"; reach = (fun _ -> Values); claims = (fun _ -> Basic_routines.modelled);
     answer = (fun ~standstill:_ ctx _ name args -> Some (Basic_routines.call ctx name args, no_effects)) };
 ]
@@ -75,9 +81,11 @@ let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) :
   | Failed error -> Failed { error; at_move = effects.at_move }
   | Call_by_name n -> Call_by_name n
   | Stop_requested -> Stop_requested
+  | Exit_cycle_requested -> Exit_cycle_requested
   | Not_modelled -> Not_modelled
   | Wait wait -> Wait { wait; first_poll = effects.first_poll }
   | Retry_requested -> Retry_requested
+  | Assertion_failed m -> Assertion_failed m
 
 let make t name claimants : IR.entry =
   let reach = reach_of claimants name in

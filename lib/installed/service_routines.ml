@@ -247,13 +247,15 @@ let waited ctx seconds = W.advance_to ctx.world (W.now ctx.world +. seconds)
 
 (* R-14-n: a blocking call (SocketAccept, SocketReceive, SocketReceiveFrom) that cannot go on at
    once is a waiting instruction: interrupts are served while it waits (§8) and, with several
-   tasks, the others run. While anything else can happen at a virtual time (another task, a
-   timed event before the call's deadline, the robot moving), its wait keeps the virtual clock
-   within [socket_slice] of the host's: each look first waits on the host until the host has
-   waited as long as the virtual clock moved since the call, then lets the clock move on by one
-   slice at most; data that comes moves the clock on by the host time the host waited beyond it.
-   Once nothing else can happen, the clock holds (R-13-sockwait1): each look waits on the host
-   for [hold_slice] and lets the clock move on by a microsecond only, and \Time is the host's
+   tasks, the others run. While anything else can happen at a virtual time (a task that runs or
+   waits for something but the host, a timed event before the call's deadline, the robot
+   moving), its wait keeps the virtual clock within [socket_slice] of the host's: each look first
+   waits on the host until the host has waited as long as the virtual clock moved since the call
+   (the clock followed), then lets the clock move on by one slice at most; data that comes moves
+   the clock on by the host time the host waited beyond it. Once nothing else can happen — one
+   task, or every task waiting on the host (W.only_host_waits) — the clock holds (R-13-sockwait1,
+   R-13-sockwait2): each look waits on the host for [hold_slice] (shared among the tasks that
+   wait on the host) and lets the clock move on by a microsecond only, and \Time is the host's
    (the clock jumps to the deadline when it passes). The call itself runs when the socket is
    ready. *)
 let socket_slice = 0.02   (* §8: a response to an interrupt is 2-30 ms late *)
@@ -266,42 +268,53 @@ let blocking ctx ~standstill ~what id ~timeout (call : timeout:float -> outcome)
     let start = W.now w and host_start = Unix.gettimeofday () in
     let deadline = start +. timeout in
     let host () = Unix.gettimeofday () -. host_start in
-    (* Nothing else can happen at a virtual time: one task, the robot at a standstill, no timed
-       event before the deadline but the waits' own looks. *)
+    (* The clock has reached a time, at its resolution (a microsecond). *)
+    let reached t = W.seconds (W.now w) >= W.seconds t in
+    (* Nothing else can happen at a virtual time: only the host can end any task's wait, the
+       robot at a standstill, no timed event before the deadline but the waits' own looks. *)
     let alone () =
-      (match W.task_names w with [ _ ] -> true | _ -> false)
+      W.only_host_waits w
       && not (standstill () > W.now w)
       && (match W.next_change w with None -> true | Some t -> t >= deadline) in
-    let holding = ref false in
+    (* The host time the clock did not follow (it held), as of the last look that followed. *)
+    let lag = ref 0. and held = ref false in
     (* One Wake at a time: with several tasks the socket is looked at every turn. *)
     let next_look = ref (Float.min deadline (start +. socket_slice)) in
     W.wake_at w !next_look;
+    W.host_wait_begin w;
+    let looked ready = if ready then W.host_wait_end w; ready in
     Wait { W.what = what; deadline = Some deadline; poll = None;
            satisfied = (fun () ->
                let now = W.now w in
-               if (not !holding) && now < deadline && alone () then holding := true;
-               if !holding then begin
-                 let ready = K.readable k id ~within:(Float.min hold_slice (timeout -. host ())) in
-                 let now = W.now w in
+               if reached deadline then looked (K.readable k id ~within:0.)
+               else if alone () then begin
+                 held := true;
+                 let slice = hold_slice /. float_of_int (max 1 (W.host_waiters w)) in
+                 let ready = K.readable k id ~within:(Float.min slice (timeout -. host ())) in
                  if ready then ()
                  else if host () >= timeout then W.advance_to w deadline
                  else (next_look := now +. 1e-6; W.wake_at w !next_look);
-                 ready
+                 looked ready
                end
                else begin
-                 let ready = K.readable k id ~within:((now -. start) -. host ()) in
+                 (* After a hold the clock follows from where it held: the host time of the
+                    hold is not caught up, but it counts toward \Time. *)
+                 if !held then (held := false; lag := host () -. (now -. start));
+                 let ready = K.readable k id ~within:((now -. start) -. (host () -. !lag)) in
                  let now = W.now w in
                  if ready then begin
-                   let ahead = Float.min (start +. host ()) deadline in
+                   let ahead = Float.min (start +. host () -. !lag) deadline in
                    if ahead > now then W.advance_to w ahead
                  end
-                 else if now < deadline && now >= !next_look then begin
+                 else if (now -. start) +. !lag >= timeout then W.advance_to w deadline
+                 else if reached !next_look then begin
                    next_look := Float.min deadline (now +. socket_slice);
                    W.wake_at w !next_look
                  end;
-                 ready
+                 looked ready
                end);
            finish = (fun ~timed_out ->
+               W.host_wait_end w;
                if timed_out then Rapid_observable.Wait.error "ERR_SOCK_TIMEOUT"
                else match call ~timeout:(Float.max socket_slice (deadline -. W.now w)) with
                  | Failed e -> Rapid_observable.Wait.error e

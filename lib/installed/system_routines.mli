@@ -5,9 +5,8 @@
     numbers between base 10 and base 16 (R-13-sys3); BitSet and BitClear change one bit of a byte
     or of a dnum, as their pages say (R-13-sys4); MaxRobReorientSpeed, SoftAct, SoftDeact and
     PathAccLim are the motion's (R-13-sys5). The kernel manual knows none of them: installed
-    routines are the system's (ch. 13). ExitCycle is not here: ending the cycle abandons the
-    active routines with their UNDO handlers (§1.2), which no outcome of an installed routine
-    can ask the engines for (R-13-sys6).
+    routines are the system's (ch. 13). ExitCycle is the motion's (it drops the robot's path,
+    Motion_routines) and the engines' (the next cycle, R-13-exitcycle1).
 
     The bodies find their arguments by the names of the routine's parameters
     ([Primitive.context.parameters], lib/typing/installed), so that a parameter added to a

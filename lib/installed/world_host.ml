@@ -35,6 +35,7 @@ let make w motion : Host.t =
     statements_left = (fun () -> W.statements_left w);
     next_event = (fun () -> W.next_event w);
     advance_to = (fun t -> W.advance_to w t);
+    every_task_waits = W.every_task_waits w;
     collisions = W.collisions w <> [];
     read_signal = read_signal w;
     write_signal = write_signal w;
@@ -47,6 +48,8 @@ let make w motion : Host.t =
     motion_error = (fun () ->
         Option.map (fun (error, move, handled) -> { Host.error; move; handled }) (MR.take_org_error motion));
     set_backward = MR.set_backward motion;
-    wait_abandoned = (fun wait -> Rmq_routines.wait_abandoned w wait; MR.wait_abandoned motion wait ~now:(W.now w));
+    wait_abandoned = (fun wait ->
+        W.host_wait_end w; Rmq_routines.wait_abandoned w wait; Egm_routines.wait_abandoned motion wait;
+        MR.wait_abandoned motion wait ~now:(W.now w));
     prepare = MR.robot_data motion;
   }

@@ -28,11 +28,16 @@ let signal_module (io : Io.t) =
     | Ok m -> Ok (Some m)
     | Error d -> Error d
 
-let installed ?(io = Io.empty) () =
-  match Rapid_typing.Installed_env.modules (), signal_module io with
-  | Error d, _ | _, Error d -> Error d
-  | Ok installed, Ok None -> Ok installed
-  | Ok installed, Ok (Some m) -> Ok (installed @ [ m ])
+(* The installed environment computed at build time (Installed_image), which this reference
+   links into every program that loads a task. *)
+let () = ignore (Installed_image.in_use ())
+
+let installed ?(testing = false) ?(io = Io.empty) () =
+  let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
+  match Rapid_typing.Installed_env.modules (), tests, signal_module io with
+  | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
+  | Ok installed, Ok tests, Ok None -> Ok (installed @ tests)
+  | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @ tests @ [ m ])
 
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)
@@ -79,8 +84,8 @@ let at_io_place (io : Io.t) =
           { r with region = Source.region file start (start + String.length s.name) }
     | _ -> r
 
-let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
-  match installed ~io () with
+let load_modules ?testing ?(allow_unknown = false) ?(io = Io.empty) modules =
+  match installed ?testing ~io () with
   | Error d -> Error (Internal ("the installed environment does not parse: " ^ Diagnostic.to_string d))
   | Ok installed ->
       let result = Rapid_typing.Check.check_task ~options:{ allow_unknown } ~installed modules in
@@ -91,9 +96,9 @@ let load_modules ?(allow_unknown = false) ?(io = Io.empty) modules =
             Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
         | Error reports -> Error (Static (result.reports @ reports))
 
-let load ?(strict = false) ?allow_unknown ?io files =
+let load ?(strict = false) ?testing ?allow_unknown ?io files =
   let options = { Parse.default_options with strict } in
   let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
-  | [] -> load_modules ?allow_unknown ?io (List.filter_map Result.to_option parsed)
+  | [] -> load_modules ?testing ?allow_unknown ?io (List.filter_map Result.to_option parsed)
   | errors -> Error (Front_end errors)

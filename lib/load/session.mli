@@ -15,16 +15,17 @@ type failure =
   | Internal of string                          (** the installed environment does not load *)
 
 val load :
-  ?strict:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> string list ->
+  ?strict:bool -> ?testing:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> string list ->
   (loaded, failure) result
-(** [io]: the I/O configuration; its signals are installed data objects (§2.16). *)
+(** [io]: the I/O configuration; its signals are installed data objects (§2.16). [testing]: the
+    assertions of rapid-sem test are installed too (doc/rulings.md R-test-a). *)
 
 val load_modules :
-  ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> Ast.module_declaration list ->
+  ?testing:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> Ast.module_declaration list ->
   (loaded, failure) result
 
 val installed :
-  ?io:Rapid_controller.Io_config.t -> unit -> (Ast.module_declaration list, Diagnostic.t) result
+  ?testing:bool -> ?io:Rapid_controller.Io_config.t -> unit -> (Ast.module_declaration list, Diagnostic.t) result
 (** The installed environment, with a generated module declaring the signals of the I/O
     configuration (VAR signaldi di1; ...). *)
 

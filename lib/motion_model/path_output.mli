@@ -17,6 +17,15 @@ val path_svg : ?title:string -> Planner.t -> string
 
 (** What the program did, for the timeline: the program pointer waiting (a move, WaitTime, ...),
     traps, signal changes (a mark at [m_from]). *)
+val tcp_speeds : ?samples:int -> ?until:float -> Planner.t -> (float * float) array
+(** The TCP speed (mm/s) at [samples] (default 600) times from 0 to [until] (default the end of
+    the path): the mid time of each sample's window, the distance over it within one moving
+    piece of the path (the tool of the move under way), 0 where the robot stands still. *)
+
+val nice_axis : float -> float * float
+(** The step (1, 2 or 5 times a power of ten) and the top of an axis from 0 to at least the
+    given maximum with 4 to 8 ticks above 0. *)
+
 type lane = Waits | Traps | Signals
 
 type mark = { lane : lane; m_from : float; m_to : float; m_label : string }

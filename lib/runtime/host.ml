@@ -13,6 +13,7 @@ type t = {
   statements_left : unit -> int;
   next_event : unit -> float option;
   advance_to : float -> unit;
+  every_task_waits : string list -> unit;
   collisions : bool;
   read_signal : Value.t -> (Value.t, string) result;
   write_signal : Value.t -> Value.t -> (unit, string) result;

@@ -33,6 +33,9 @@ type t = {
           scheduled: an engine may count them itself and charge them later *)
   next_event : unit -> float option;             (** when the next timed event is due *)
   advance_to : float -> unit;                    (** the clock moves on; the events due happen *)
+  every_task_waits : string list -> unit;
+      (** ch. 14: the scheduler says that every running task, these, waits, before the clock
+          moves on (a socket wait then holds the clock, doc/rulings.md R-13-sockwait2) *)
   collisions : bool;
       (** the stimulus holds collisions: the motion may report at any time (doc/motion.md) *)
 

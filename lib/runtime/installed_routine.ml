@@ -10,10 +10,12 @@ type result =
   | Failed of { error : string; at_move : bool }
   | Call_by_name of string
   | Stop_requested
+  | Exit_cycle_requested
   | Not_modelled
   | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
   | Retry_requested
   | History_exhausted of string
+  | Assertion_failed of string
 
 type outcome = { result : result; events : Event.t list; new_move : int option }
 
@@ -54,7 +56,10 @@ let argument_label (program : Ir.program) (callee : Ir.routine) (arguments : Ir.
         match arguments.(i) with
         | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
             found := Some program.globals.(g).g_name
-        | By_value { at; _ } -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line)
+        | By_value { at; _ } -> (
+            match Hashtbl.find_opt program.names.argument_texts at with
+            | Some text -> found := Some text
+            | None -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line))
         | _ -> ()) callee.parameters;
   !found
 

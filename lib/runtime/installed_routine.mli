@@ -22,6 +22,9 @@ type result =
           as RETRY (§7.4) *)
   | Call_by_name of string                     (** CallByVar: call this procedure (§4.6) *)
   | Stop_requested                             (** Stop: the task stops *)
+  | Exit_cycle_requested
+      (** ExitCycle: the cycle ends, every active routine is abandoned (UNDO handlers run) and
+          the entry routine starts again (doc/rulings.md R-13-exitcycle1) *)
   | Not_modelled                               (** rapid-sem does not model this routine yet *)
   | Wait of { wait : Rapid_observable.Wait.t; first_poll : float option }
       (** a waiting instruction: the engine waits (doc/controller.md); [first_poll]: WaitUntil
@@ -30,6 +33,10 @@ type result =
   | History_exhausted of string
       (** the motion history beyond its budget (doc/motion.md): the run ends as a resource
           exhausted (§1.4) at the call *)
+  | Assertion_failed of string
+      (** an assertion of rapid-sem test failed (lib/typing/installed/unit_test.sys): the task
+          stops at the call with ERR_ASSERT and this message as what the error is about; no
+          error handler takes it (doc/rulings.md R-test-b) *)
 
 type outcome = {
   result : result;
@@ -60,10 +67,12 @@ val returned : Value.t option -> outcome
 
 val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
 (** The data object the argument of a call gives for a parameter (by the parameter's name), for
-    the motion's output ([p10], [z10]), or [line N] for another expression (an inline target,
-    Offs(...)): the [argument_label] of a call's context. Asked for [P:type] (a parameter name
-    and [:type], which no parameter name holds), it gives the name of the static type of the
-    data reference given for the anytype parameter P, as the lowering recorded it
+    the motion's output ([p10], [z10]), the expression as written for another one
+    ([Offs(pPick, 0, 0, 100)], a routine's local [pStart]: {!Ir.names}), or [line N] for a
+    literal or an aggregate (an inline target): the [argument_label] of a call's context. Asked
+    for [P:type] (a parameter name and [:type], which no parameter name holds), it gives the name
+    of the static type of the data reference given for the anytype parameter P, as the lowering
+    recorded it
     ({!Ir.Argument_types}: a call the checker bound; not a late-bound one): the RAPID Message
     Queue sends data with its type's name (ABB's RMQSendMessage, doc/rulings.md R-14-rmq4). *)
 

@@ -28,6 +28,7 @@ type ctx = {
   mutable routine_now : int;
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
+  argument_texts : (Source.region, string) Hashtbl.t;
   installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
       (* the routine and global numbers of the installed part, when it is shared (below) *)
   argument_types : string option array Ir.Argument_types.t;
@@ -254,6 +255,16 @@ and optional_parameter_slot ctx (e : A.expression) =
       | _ -> None)
   | _ -> None
 
+(* The text of an in argument as the programmer wrote it, kept for the motion's output (Ir.names). *)
+and written ctx (source : A.expression) (e : Ir.expr) =
+  (match e.e with
+   | Literal _ | Aggregate _ | Read (Whole (Global _)) | Placeholder -> ()  (* a named global, or "line N" *)
+   | _ ->
+       let text = Printer.expression source in
+       let text = if String.length text > 48 then String.sub text 0 45 ^ "..." else text in
+       Hashtbl.replace ctx.argument_texts e.at text);
+  e
+
 and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
   let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
   let value (e : A.expression) : Ir.argument =
@@ -264,7 +275,7 @@ and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
         match expr ctx ~dnum e with
         | { e = Read_signal place; at } -> By_value { e = Read place; at }
         | other -> By_value other)
-    | Mode_in -> By_value (expr ctx ~dnum e)
+    | Mode_in -> By_value (written ctx e (expr ctx ~dnum e))
     | Mode_ref when optional_parameter_slot ctx e <> None ->
         (* Present and the other REF parameters see an absent optional parameter as absent
            instead of using its value (§5.2, ch. 11). *)
@@ -565,7 +576,7 @@ let new_ctx elab =
   { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
     locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
     routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
-    installed_index = None; argument_types = Ir.Argument_types.create 4 }
+    argument_texts = Hashtbl.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
 
 (* The installed modules' part is the same for every task (its names are bound by the installed
    level alone, and it comes first), so it is lowered once and shared when the checker shares
@@ -584,10 +595,20 @@ let installed_part ~installed (elab : E.t) =
       if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
       (part, ctx)
 
+type installed_lowering = A.module_declaration list * E.t * part * ctx
+
+let installed_lowering ~installed (elab : E.t) : installed_lowering =
+  let base = Option.value elab.installed ~default:elab in
+  let ctx = new_ctx base in
+  (installed, base, lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed), ctx)
+
+let use_installed_lowering l = installed_cache := Some l
+
 let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
   let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
                      component_names = Hashtbl.copy c.component_names;
+                     argument_texts = Hashtbl.copy c.argument_texts;
                      installed_index = Some (c.routine_index, c.global_index);
                      argument_types = Ir.Argument_types.create 16 } in
   let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)
@@ -603,4 +624,5 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let entry_points = inst.part_entry_points @ user.part_entry_points in
   { routines; globals; errno = find_global "ERRNO"; intno = find_global "INTNO";
     error_numbers = inst.part_error_numbers; entry_points;
-    names = { local_names; component_names = ctx.component_names }; argument_types = ctx.argument_types }
+    names = { local_names; component_names = ctx.component_names; argument_texts = ctx.argument_texts };
+    argument_types = ctx.argument_types }

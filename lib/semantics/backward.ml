@@ -13,6 +13,28 @@ let statement_name (s : Ir.stmt) =
   | If _ | Elseif _ -> "IF" | Compact_if _ -> "a compact IF" | For _ -> "FOR" | While _ -> "WHILE"
   | Test _ -> "TEST" | Label -> "a label" | Placeholder_statement -> "<SMT>"
 
+(* The installed procedures whose backward execution rapid-sem defines: the move instructions of
+   ABB's backward execution of a program stepped on the FlexPendant (§6.1: "a procedure call,
+   predefined or user-defined, may have any backward behaviour ... defined in the procedure";
+   doc/rulings.md R-6.1-move). *)
+let backward_moves = [ "movel"; "movej"; "movec"; "moveabsj" ]
+
+(* A move instruction stepped backward ends at a stop point: its call with the predefined zonedata
+   fine for its Zone (R-6.1-move). *)
+let at_stop_point cfg (call : Ir.call) (r : Ir.routine) =
+  let fine = ref (-1) in
+  Array.iteri (fun g (gl : Ir.global) -> if !fine < 0 && String.lowercase_ascii gl.g_name = "fine" then fine := g)
+    cfg.program.globals;
+  if !fine < 0 then call
+  else
+    let arguments = Array.mapi (fun i (a : Ir.argument) ->
+        if i < Array.length r.parameters && String.lowercase_ascii r.parameters.(i).p_name = "zone" then
+          match a with
+          | By_value e -> Ir.By_value { e with e = Read (Whole (Global !fine)) }
+          | other -> other
+        else a) call.arguments in
+    { call with arguments }
+
 let not_supported why = Stdlib.Error ("backward execution is not supported: " ^ why ^ "; no step taken (§6.1)")
 
 (* One statement backward from the program pointer (§6.1-§6.3): the statement before it in its
@@ -26,7 +48,16 @@ let backward cfg =
            backward"; UNDO handlers likewise (doc/rulings.md R-6-d). *)
         not_supported "the program pointer is in an error or UNDO handler (§6.2)"
       else if cfg.backward_depth >= 0 then not_supported "backward execution cannot be nested (§6.2)"
-      else if j = 1 then not_supported "the program pointer is at the top of a statement list"
+      else if j = 1 then
+        (* §6.1: "it is not possible to step backward out of a routine at the top of a statement
+           list"; nor out of a compound statement's list, which cannot itself be executed
+           backward (R-6-a). *)
+        not_supported
+          (if b == cfg.act.routine.body then
+             Printf.sprintf "the program pointer is at the first statement of %s, and backward execution does \
+                             not leave a routine for its caller" cfg.act.routine.name
+           else "the program pointer is at the first statement of a list inside a compound statement (IF, \
+                 FOR, WHILE, TEST), which cannot be executed backward")
       else begin
         let prev = b.body.(j - 2) in
         let moved () = cfg.stack <- K_seq (b, j - 1) :: rest; cfg.focus <- F_stmt prev in
@@ -37,8 +68,21 @@ let backward cfg =
         | Call_procedure ({ callee = Routine i; _ } as call) -> (
             let r = cfg.program.routines.(i) in
             match r.backward with
+            | None when r.primitive <> None && List.mem (String.lowercase_ascii r.name) backward_moves ->
+                (* §6.1, R-6.1-move: the move instruction runs as in a BACKWARD handler, where a move
+                   retraces the newest forward move not yet retraced (R-6.3-m), to a stop point;
+                   the program pointer is then at it (backward-end). *)
+                cfg.stack <- K_backward_end :: K_seq (b, j - 2) :: rest;
+                cfg.backward_depth <- cfg.act.call_depth + 1;
+                cfg.host.set_backward true;
+                cfg.focus <- F_stmt { prev with s = Call_procedure (at_stop_point cfg call r) };
+                Ok Rule.Backward_move
+            | None when r.primitive <> None ->
+                not_supported (Printf.sprintf "the installed procedure %s has no backward execution (only MoveL, \
+                                               MoveJ, MoveC and MoveAbsJ step backward, R-6.1-move)" r.name)
             | None ->
-                not_supported (Printf.sprintf "the procedure %s has no BACKWARD handler (§6.2)" r.name)
+                not_supported (Printf.sprintf "the procedure %s has no BACKWARD handler (§6.2): give it one to step \
+                                               back over its calls" r.name)
             | Some handler ->
                 (* §6.1: the arguments are evaluated forward and bound to the parameters as in
                    forward execution; the BACKWARD handler runs in place of the body, with the

@@ -194,6 +194,9 @@ let call_primitive cfg (cs : call_state) name =
       (Rule.Async_error_at_move, List.rev !events)
   | Failed { error = name; at_move = false } -> raise_ cfg name; (Rule.Call_primitive_error, List.rev !events)
   | Stop_requested -> cfg.focus <- F_done Ended; (Rule.Call_primitive_stop, List.rev !events @ [ Task_ended ])
+  | Exit_cycle_requested ->
+      (* R-13-exitcycle1: every routine is abandoned as by EXIT, then the entry starts again. *)
+      cfg.focus <- F_abandon Go_on_exit_cycle; (Rule.Call_primitive_exit_cycle, List.rev !events)
   | Call_by_name target -> (
       (* CallByVar: a late-bound call without arguments (§4.6). *)
       match late_routine cfg target with
@@ -227,6 +230,11 @@ let call_primitive cfg (cs : call_state) name =
           let rule, more = !exec_ref cfg { Ir.s = Ir.Retry; sat = cs.call.call_at } in
           (rule, List.rev !events @ more)
       | _ -> cfg.focus <- F_next; (Rule.Call_primitive, List.rev !events))
+  | Assertion_failed message ->
+      (* rapid-sem test (R-test-b): the task stops at the call, as Stop does: no handler, no UNDO. *)
+      cfg.focus <- F_done (Stopped { name = "ERR_ASSERT"; number = error_number cfg "ERR_ASSERT"; at = cs.call.call_at;
+                                     chain = call_chain cfg.act; about = Some message });
+      (Rule.Call_primitive_stop, List.rev !events)
   | Not_modelled ->
       cfg.focus <- F_done (Outcome.not_modelled cs.callee.name cs.call.call_at);
       (Rule.Call_not_modelled, List.rev !events)

@@ -51,6 +51,7 @@ and handling =
 (* What comes after an UNDO handler, or after abandoning a routine that has none. *)
 and after_abandon =
   | Go_on_exit                          (* EXIT: abandon every routine (§4.12, §7.2) *)
+  | Go_on_exit_cycle                    (* ExitCycle: abandon every routine, start the entry again *)
   | Go_on_propagate of err              (* raise the error again at the call point (§7.1) *)
   | Go_on_long_jump of err * activation (* unwind down to the error recovery point (§7.2) *)
   | Go_on_in_handler of Ir.stmt * activation

@@ -79,7 +79,7 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
   let program = host.prepare program in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
-  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | None -> Error (Task_rules.no_entry program entry)
   | Some i ->
       let routine = program.routines.(i) in
       if routine.kind <> Procedure || Array.length routine.parameters > 0 then
@@ -445,6 +445,8 @@ let pointer_statement cfg =
   match cfg.focus, cfg.stack with
   | F_stmt s, K_seq (b, j) :: _ when j >= 1 && j <= Array.length b.body && b.body.(j - 1) == s -> Some s
   | _ -> None
+
+let test_case cfg = match cfg.stack with K_test_value (_, _, _, ci, _) :: _ -> Some ci | _ -> None
 
 (* ch. 14 (R-14-o): the loop whose round the last step began, when its body has no statement:
    right after while-again its condition is in focus; right after for-step settling has left

@@ -166,6 +166,11 @@ val pointer_statement : config -> Ir.stmt option
 (** The statement the program pointer is at, when the machine stands before a statement of a
     statement list (not the simple statement of a compact IF, which is part of its IF). *)
 
+val test_case : config -> int option
+(** While a TEST compares its test values: the index (from 0) of the case whose value is in
+    focus; the next step's rule, test-match, selects that case. For rapid-sem test's branch
+    coverage (doc/testing.md). *)
+
 val empty_loop_round : config -> bool
 (** After a step of rule while-again or for-step: whether the loop's body has no statement
     (where a turn of several tasks ends, doc/rulings.md R-14-o). *)

@@ -152,6 +152,20 @@ let handler_end cfg =
 let leave_abandoned cfg after rule rule_entry =
   let act = cfg.act in
   match act.caller with
+  | None when (match after with Go_on_exit_cycle -> true | _ -> false) ->
+      (* R-13-exitcycle1: the next cycle, a new activation of the entry routine (its routine
+         data initialised again); module data, interrupts, files and the clock are kept. *)
+      release cfg act;
+      let routine = act.routine in
+      let slots = Array.init routine.locals (fun _ -> fresh_loc (V.Bool false)) in
+      let fresh = activation ~routine ~slots ~present:[||] ~kinds:[||] ~module_data:[||] ~caller:None
+          ~return_to:[ K_task_end ] ~caller_mark:[] in
+      cfg.act <- fresh;
+      cfg.stack <- [ K_local_init (fresh, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
+      cfg.mark <- [];
+      cfg.kept <- [];
+      cfg.focus <- F_next;
+      (Rule.Cycle_restart, [ Routine_left routine.name; Routine_entered routine.name ])
   | None -> cfg.focus <- F_done Ended; (rule_entry, [ Task_ended ])
   | Some caller ->
       release cfg act;
@@ -165,6 +179,7 @@ let leave_abandoned cfg after rule rule_entry =
         | other -> other in
       (match after with
        | Go_on_exit -> cfg.focus <- F_abandon Go_on_exit
+       | Go_on_exit_cycle -> cfg.focus <- F_abandon Go_on_exit_cycle
        | Go_on_propagate e -> cfg.focus <- F_raise { e with searched = true }; cfg.propagated <- true
        | Go_on_long_jump (e, target) ->
            if cfg.act == target then cfg.focus <- F_raise { e with searched = true }

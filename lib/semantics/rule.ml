@@ -18,7 +18,8 @@ type t =
   | Call_arguments | Argument_alias | Argument_reference | Argument_alias_refused
   | Argument_pass_on_duplicate | Argument_aggregate | Argument_fit | Argument_fit_refused
   | Call_enter | Local_initial_value | Call_depth_exceeded | Memory_exhausted | Call_primitive
-  | Call_primitive_error | Call_primitive_stop | Call_not_modelled | Call_stubbed | Call_unknown
+  | Call_primitive_error | Call_primitive_stop | Call_primitive_exit_cycle | Call_not_modelled | Call_stubbed
+  | Call_unknown
   | Call_unknown_function | Call_late | Call_late_unknown | Call_late_mismatch | Call_by_var
   | Call_by_var_unknown | Call_by_var_mismatch | Return_value | Return_procedure | Return_function
   | Return_entry | Function_no_return
@@ -36,7 +37,7 @@ type t =
   | Raise_number | Raise | Raise_illegal | Raise_handle | Raise_in_handler | Raise_unhandled
   | Longjump_search_start | Longjump_search | Longjump_found | Raise_propagate | Raise_again
   | Raise_again_unhandled | Raise_new | Raise_new_unhandled | Abandon | Abandon_entry | Undo_run | Undo_done
-  | Undo_done_entry
+  | Undo_done_entry | Cycle_restart
   | Retry | Retry_limit | Trynext | Handler_end
   (* The user level *)
   | Raise_to_user_break_off | Raise_to_user_continue | Resume_retry | Resume_trynext
@@ -45,7 +46,7 @@ type t =
   (* Not rules *)
   | Done | Stuck
   (* Backward execution *)
-  | Backward_noop | Backward_call | Backward_end | Raise_in_backward
+  | Backward_noop | Backward_call | Backward_move | Backward_end | Raise_in_backward
   (* Not in doc/semantics.md *)
   | Motion_history_exhausted
 
@@ -95,6 +96,7 @@ let name = function
   | Call_primitive -> "call-primitive"
   | Call_primitive_error -> "call-primitive-error"
   | Call_primitive_stop -> "call-primitive-stop"
+  | Call_primitive_exit_cycle -> "call-primitive-exit-cycle"
   | Call_not_modelled -> "call-not-modelled"
   | Call_stubbed -> "call-stubbed"
   | Call_unknown -> "call-unknown"
@@ -180,6 +182,7 @@ let name = function
   | Undo_run -> "undo-run"
   | Undo_done -> "undo-done"
   | Undo_done_entry -> "undo-done-entry"
+  | Cycle_restart -> "cycle-restart"
   | Retry -> "retry"
   | Retry_limit -> "retry-limit"
   | Trynext -> "trynext"
@@ -196,6 +199,7 @@ let name = function
   | Stuck -> "stuck"
   | Backward_noop -> "backward-noop"
   | Backward_call -> "backward-call"
+  | Backward_move -> "backward-move"
   | Backward_end -> "backward-end"
   | Raise_in_backward -> "raise-in-backward"
   | Motion_history_exhausted -> "motion-history-exhausted"
@@ -224,7 +228,8 @@ let after = function
   | Memory_exhausted -> Some Call_primitive
   | Call_primitive -> Some Call_primitive_error
   | Call_primitive_error -> Some Call_primitive_stop
-  | Call_primitive_stop -> Some Call_by_var
+  | Call_primitive_stop -> Some Call_primitive_exit_cycle
+  | Call_primitive_exit_cycle -> Some Call_by_var
   | Call_by_var -> Some Call_by_var_unknown
   | Call_by_var_unknown -> Some Call_by_var_mismatch
   | Call_by_var_mismatch -> Some Call_not_modelled
@@ -286,7 +291,8 @@ let after = function
   | Abandon_entry -> Some Undo_run
   | Undo_run -> Some Undo_done
   | Undo_done -> Some Undo_done_entry
-  | Undo_done_entry -> Some Retry
+  | Undo_done_entry -> Some Cycle_restart
+  | Cycle_restart -> Some Retry
   | Retry -> Some Retry_limit
   | Retry_limit -> Some Trynext
   | Trynext -> Some Handler_end
@@ -351,7 +357,8 @@ let after = function
   | Done -> Some Stuck
   | Stuck -> Some Backward_noop
   | Backward_noop -> Some Backward_call
-  | Backward_call -> Some Backward_end
+  | Backward_call -> Some Backward_move
+  | Backward_move -> Some Backward_end
   | Backward_end -> Some Raise_in_backward
   | Raise_in_backward -> Some Motion_history_exhausted
   | Motion_history_exhausted -> None
@@ -363,7 +370,7 @@ let all =
   from Label []
 
 let backward = function
-  | Backward_noop | Backward_call | Backward_end | Raise_in_backward -> true
+  | Backward_noop | Backward_call | Backward_move | Backward_end | Raise_in_backward -> true
   | _ -> false
 
 let listed r = not (backward r || r = Motion_history_exhausted)

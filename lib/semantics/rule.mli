@@ -57,6 +57,7 @@ type t =
   | Call_primitive
   | Call_primitive_error
   | Call_primitive_stop
+  | Call_primitive_exit_cycle       (** ExitCycle, R-13-exitcycle1 *)
   | Call_not_modelled
   | Call_stubbed                    (** R-13-i *)
   | Call_unknown
@@ -145,6 +146,7 @@ type t =
   | Undo_run
   | Undo_done
   | Undo_done_entry
+  | Cycle_restart                   (** R-13-exitcycle1 *)
   | Retry                           (** §4.13 *)
   | Retry_limit                     (** §7.1 *)
   | Trynext                         (** §4.14 *)
@@ -162,9 +164,10 @@ type t =
      bug of rapid-sem) *)
   | Done
   | Stuck
-  (* Backward execution (ch. 6): the first two are [Machine.backward]'s, the others [step]'s *)
+  (* Backward execution (ch. 6): the first three are [Machine.backward]'s, the others [step]'s *)
   | Backward_noop                   (** §6.1 *)
   | Backward_call                   (** §6.1, §6.2 *)
+  | Backward_move                   (** §6.1, R-6.1-move *)
   | Backward_end                    (** §6.2 *)
   | Raise_in_backward               (** §6.1 *)
   (* Not in doc/semantics.md, nor in [Machine.rule_names]: a call whose motion history (kept for

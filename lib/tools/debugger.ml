@@ -193,9 +193,29 @@ let value_text v = try Text_format.value_text v with Value.Type_mismatch _ -> "<
 
 (* The data objects an expression names (Debug_expr): found as [find_data] finds them, typed by
    the session's [type_of] for their components. *)
+(* A semi-value data object (a signal, §2.16) is read as its value, as in value context in a
+   program: the handle itself says nothing to the programmer. *)
+let signal_type known =
+  match known with
+  | Some ({ Rapid_typing.Types.base = Installed_atomic { atomic_class = Semi_value; atomic_name; _ };
+            dims = Scalar }, _) -> Some atomic_name
+  | _ -> None
+
 let env s name =
+  let signal_value slot =
+    match M.read_data s.cfg slot with
+    | Some (Value.Handle _ as h) -> Some ((M.host s.cfg).read_signal h)
+    | _ -> None in
   match find_data s name with
   | None -> Error (Printf.sprintf "no data object %s in the scope of %s" name (M.current_routine s.cfg).name)
+  | Some slot when (match signal_value slot with Some (Ok _) -> true | _ -> false) ->
+      (* a signal connected to one of the I/O configuration (declared, or made by --io) *)
+      Ok { Debug_expr.value = Option.map Result.get_ok (signal_value slot); typ = None; write = None }
+  | Some slot when signal_type (s.type_of (M.current_routine s.cfg) name) <> None ->
+      let kind = Option.get (signal_type (s.type_of (M.current_routine s.cfg) name)) in
+      let err = match signal_value slot with Some (Error e) -> e | _ -> "ERR_NO_ALIASIO_DEF" in
+      Error (Printf.sprintf "%s is a %s not connected to a signal of the I/O configuration (%s): give the \
+                             signal in the --io file, or connect it with AliasIO" name kind err)
   | Some slot ->
       let known = s.type_of (M.current_routine s.cfg) name in
       (* ERRNO and INTNO are the system's (ch. 12), known as such to the program itself. *)
@@ -227,7 +247,23 @@ let set_ s text =
   let target_missing = match contains_assign text with
     | Some i -> String.trim (String.sub text 0 i) = ""
     | None -> true in
+  let root = let t = String.trim text in
+    let rec go i = if i < String.length t && (match t.[i] with
+        | 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false) then go (i + 1) else i in
+    String.sub t 0 (go 0) in
+  let signal = match if root = "" then None else find_data s root with
+    | None -> None
+    | Some slot -> (
+        match signal_type (s.type_of (M.current_routine s.cfg) root), M.read_data s.cfg slot with
+        | Some kind, _ -> Some ("a signal (" ^ kind ^ ")")
+        | None, Some (Value.Handle _ as h) when Result.is_ok ((M.host s.cfg).read_signal h) -> Some "a signal"
+        | _ -> None) in
   if target_missing then s.out "set: set REF := EXPR" else
+  match signal with
+  | Some kind ->
+      s.out (Printf.sprintf "set: %s is %s: the debugger does not set signals; the program sets its \
+                             outputs (SetDO, SetAO, SetGO), the stimulus file (--io) its inputs" root kind)
+  | None ->
   match Debug_expr.parse_assignment text with
   | Error m -> s.out ("set: " ^ m)
   | Ok (target, e) -> (
@@ -247,9 +283,9 @@ let back s =
     | Error m -> s.out m
     | Ok rule ->
         note_rule s rule;
-        if rule = "backward-call" then begin
-          (* The BACKWARD handler runs to its end: breakpoints in it do not stop it, so that
-             backward execution is never nested (§6.2). *)
+        if rule = "backward-call" || rule = "backward-move" then begin
+          (* The BACKWARD handler, or the move instruction stepped backward, runs to its end:
+             breakpoints in it do not stop it, so that backward execution is never nested (§6.2). *)
           let d = M.depth s.cfg in
           run_until s (fun () -> M.depth s.cfg <= d && not (M.backward_running s.cfg))
         end;

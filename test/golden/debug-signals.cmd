@@ -1,0 +1,1 @@
+debug --io debug-signals.io --script debug-signals.dbg debug-signals.mod

@@ -1,0 +1,1 @@
+run --engine machine run-raise-system-error-in-handler.mod

@@ -1,0 +1,1 @@
+run run-raise-system-error-in-handler.mod

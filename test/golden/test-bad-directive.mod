@@ -1,0 +1,5 @@
+!rapid-sem: --io cell.io --entry main
+MODULE BadDirective
+  PROC test_nothing()
+  ENDPROC
+ENDMODULE

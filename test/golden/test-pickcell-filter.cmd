@@ -1,0 +1,1 @@
+test --filter slot --jobs 2 ../../examples/pickcell

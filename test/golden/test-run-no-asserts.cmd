@@ -1,0 +1,1 @@
+run test-static.mod --entry test_types
