@@ -88,7 +88,9 @@ let cmd =
       end in
     loop ();
     let p = MP.planner w.motion in
-    let title = String.concat " " (List.map Filename.basename files) in
+    (* the cell: the program's files and the robot that moved (doc/motion.md, "Output") *)
+    let robot = MM.Kinematics.robot (MM.Planner.kinematics p) in
+    let title = String.concat " " (List.map Filename.basename files) ^ ", " ^ robot.MM.Robot.name in
     let written = List.filter_map (fun (target, text) ->
         match target with
         | None -> None

@@ -71,6 +71,17 @@ let hostile () =
     | exception e -> Alcotest.failf "%S: %s" cut (Printexc.to_string e)
   done
 
+(* A line of 200,000 attributes, and 100,000 instances: no stack overflow. *)
+let long_lines () =
+  let flags = String.concat " " (List.init 200_000 (fun _ -> "-a")) in
+  (match parse ("SYS:CFG_1.0:6:0::\nX:\n " ^ flags ^ "\n") with
+   | Ok c -> Alcotest.(check int) "attributes" 200_000 (List.length (List.hd (attributes c "X")))
+   | Error m -> Alcotest.fail m);
+  let many = String.concat "" (List.init 100_000 (fun k -> Printf.sprintf " -Name \"t%d\"\n" k)) in
+  match parse ("SYS:CFG_1.0:6:0::\nCAB_TASKS:\n" ^ many) with
+  | Ok c -> Alcotest.(check int) "instances" 100_000 (List.length (attributes c "CAB_TASKS"))
+  | Error m -> Alcotest.fail m
+
 let write path text =
   let rec mkdir d = if not (Sys.file_exists d) then (mkdir (Filename.dirname d); Sys.mkdir d 0o755) in
   mkdir (Filename.dirname path);
@@ -106,13 +117,13 @@ let bare_folders () =
 let configured () =
   let dir = temp_backup [
       ("BACKINFO/backinfo.txt", ">>TASK1: (T_ROB1,P,)\nPROGMOD\\Z.mod @ z.mod\nSYSMOD\\k.sys @ k.sys\nPROGMOD\\Enc.mod @ enc.mod\n\n\
-                                 >>TASK2: (SC_CBC,,)\n\n>>TASK3: (T_BG,,)\nPROGMOD/B.mod @ b.mod\n>>EOF:\n");
+                                 >>TASK2: (SC_CBC,,)\n\n>>TASK3: (T_BG,,)\nPROGMOD/B.mod @ b.mod\n>>TASK4: (t_bg,,)\n>>EOF:\n");
       ("SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n\
                           \ -Name \"T_BG\" -Entry \"loop\"\n#\n");
       ("RAPID/TASK1/PROGMOD/Z.mod", main_mod "Z"); ("RAPID/TASK1/SYSMOD/k.sys", "MODULE k(SYSMODULE)\nENDMODULE\n");
       ("RAPID/TASK1/PROGMOD/Enc.mod", "\xfc\x30\x1d\xe1\x0a\x01\x80");
       ("RAPID/TASK2/SYSMOD/user.sys", "MODULE user(SYSMODULE)\nENDMODULE\n");
-      ("RAPID/TASK3/PROGMOD/B.mod", main_mod "B") ] in
+      ("RAPID/TASK3/PROGMOD/B.mod", main_mod "B"); ("RAPID/TASK4/PROGMOD/C.mod", main_mod "C") ] in
   match Backup.read dir with
   | Error m -> Alcotest.fail m
   | Ok b ->
@@ -127,7 +138,8 @@ let configured () =
           let n = String.length part in
           let rec at i = i + n <= String.length w && (String.sub w i n = part || at (i + 1)) in at 0) b.warnings in
       Alcotest.(check bool) "the option's task is a warning" true (warned "SC_CBC");
-      Alcotest.(check bool) "the encrypted module is a warning" true (warned "Enc.mod:1: warning: an encrypted module")
+      Alcotest.(check bool) "the encrypted module is a warning" true (warned "Enc.mod:1: warning: an encrypted module");
+      Alcotest.(check bool) "a second folder of one name is a warning" true (warned "a second folder")
 
 (* Errors of a backup: FILE:LINE:COL, never an exception. *)
 let refused () =
@@ -175,11 +187,36 @@ let program_file () =
                      (String.length m > String.length (dir // f) && String.sub m 0 (String.length (dir // f)) = dir // f))
     [ "bad.pgf"; "empty.pgf"; "missing.pgf" ]
 
+(* A backup whose configuration files are mutated at random: read or refused, never raising. *)
+let hostile_backup () =
+  let rs = Random.State.make [| 23 |] in
+  let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n \
+             -Name \"T_B\" -UseMechanicalUnitGroup \"rob1\"\n#\nMECHANICAL_UNIT_GROUP:\n -Name \"rob1\" -Robot \"ROB_1\"\n#\n"
+  and moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\" -use_joint_0 \"j\"\n#\n\
+             ARM:\n -name \"j\" -upper_joint_bound 1 -lower_joint_bound -1\n#\n"
+  and info = ">>TASK1: (T_ROB1,,)\nPROGMOD/A.mod @ a.mod\n\n>>TASK2: (T_B,,)\nPROGMOD/B.mod @ b.mod\n>>EOF:\n" in
+  let mutate text =
+    let b = Bytes.of_string text in
+    for _ = 1 to 1 + Random.State.int rs 3 do
+      Bytes.set b (Random.State.int rs (Bytes.length b)) (Char.chr (Random.State.int rs 256))
+    done;
+    Bytes.sub_string b 0 (Random.State.int rs (Bytes.length b + 1)) in
+  for _ = 1 to 60 do
+    let dir = temp_backup [ ("SYSPAR/SYS.cfg", mutate sys); ("SYSPAR/MOC.cfg", mutate moc);
+                            ("BACKINFO/backinfo.txt", mutate info);
+                            ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A"); ("RAPID/TASK2/PROGMOD/B.mod", main_mod "B") ] in
+    match Backup.read dir with
+    | Ok _ | Error _ -> ()
+    | exception e -> Alcotest.failf "%s: %s" dir (Printexc.to_string e)
+  done
+
 let suite =
   ( "backup",
     [ Alcotest.test_case "cfg format" `Quick format;
       Alcotest.test_case "malformed cfg" `Quick malformed;
       Alcotest.test_case "hostile cfg" `Quick hostile;
+      Alcotest.test_case "long cfg lines" `Quick long_lines;
+      Alcotest.test_case "hostile backups" `Quick hostile_backup;
       Alcotest.test_case "task folders alone" `Quick bare_folders;
       Alcotest.test_case "tasks configured" `Quick configured;
       Alcotest.test_case "refused backups" `Quick refused;

@@ -234,6 +234,32 @@ let backup () =
   Alcotest.(check int) "nCycles is now unknown" 1 (List.length (diagnostics_of s u));
   ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote root)))
 
+(* A module of rapid-sem test's tests is checked with the assertions installed, as that command
+   checks it (R-test-a); a module without tests is not. *)
+let test_module () =
+  let root = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "rapid-sem-lsp-test-%d" (Unix.getpid ())) in
+  Unix.mkdir root 0o755;
+  let file name text = let p = Filename.concat root name in write p text; p in
+  let tests = file "Cell_test.mod"
+      "MODULE Cell_test\n  PROC test_sum()\n    AssertEqual 1 + 1, 2;\n  ENDPROC\nENDMODULE\n" in
+  let plain = file "Plain.mod" "MODULE Plain\n  PROC main()\n    AssertEqual 1 + 1, 2;\n  ENDPROC\nENDMODULE\n" in
+  let diagnostics_in path =
+    let s = { server = Lsp_server.create { allow_unknown = false; io = Rapid_controller.Io_config.empty }; out = [];
+              next = 0 } in
+    ignore (request s "initialize" (`Assoc [ ("rootUri", `String (Lsp_uri.of_path root)); ("capabilities", `Assoc []) ]));
+    let u = Lsp_uri.of_path path in
+    notify s "textDocument/didOpen"
+      (`Assoc [ ("textDocument", `Assoc [ ("uri", `String u); ("languageId", `String "rapid"); ("version", `Int 1);
+                                          ("text", `String (read path)) ]) ]);
+    List.map (fun d -> str (member "message" d)) (diagnostics_of s u) in
+  Sys.remove plain;
+  Alcotest.(check (list string)) "the assertions are installed for a test module" [] (diagnostics_in tests);
+  Sys.remove tests;
+  ignore (file "Plain.mod" "MODULE Plain\n  PROC main()\n    AssertEqual 1 + 1, 2;\n  ENDPROC\nENDMODULE\n");
+  Alcotest.(check bool) "and not for a module without tests" true
+    (List.exists (fun m -> contains m "AssertEqual") (diagnostics_in plain));
+  ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote root)))
+
 (* {1 Completion} *)
 
 let labels r = List.map (fun i -> str (member "label" i)) (to_list (get [ "result"; "items" ] r))
@@ -537,6 +563,7 @@ let suite =
      Alcotest.test_case "definition and references across the task" `Quick definition_references;
      Alcotest.test_case "document and workspace symbols" `Quick symbols;
      Alcotest.test_case "a backup's RAPID/TASKn is a task" `Quick backup;
+     Alcotest.test_case "a module of tests has the assertions" `Quick test_module;
      Alcotest.test_case "completion" `Quick completion;
      Alcotest.test_case "signature help" `Quick signature_help;
      Alcotest.test_case "quick fixes from the hints" `Quick quick_fix;

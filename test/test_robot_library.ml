@@ -87,10 +87,28 @@ let palletiser_calibration n (r : Robot.t) k =
   if angle_between f.rot { q1 = 0.; q2 = 0.; q3 = 1.; q4 = 0. } > 1e-9 then Alcotest.failf "%s: not pointing down" n;
   ((Kinematics.forward k [| 0.; (ax 2).max; 0.; 0.; 0.; 0. |]).trans, false)
 
+(* The delta: at calibration the arms are level and the plate hangs on the axis at the depth the
+   rods leave, sqrt(rod^2 - (R + a)^2), the flange d below it, pointing down; the reach is the
+   working range's radius: a point that far out is reached level. *)
+let delta_calibration n (r : Robot.t) k =
+  let ax i = r.axes.(i - 1) in
+  let f = Kinematics.forward k (Array.make 6 0.) in
+  let rr = (ax 4).a +. (ax 1).a in
+  let expect = { x = 0.; y = 0.; z = -. sqrt (((ax 1).d *. (ax 1).d) -. (rr *. rr)) -. (ax 4).d } in
+  if distance f.trans expect > 1e-6 then
+    Alcotest.failf "%s: flange at calibration [%g %g %g]" n f.trans.x f.trans.y f.trans.z;
+  if angle_between f.rot { q1 = 0.; q2 = 0.; q3 = 1.; q4 = 0. } > 1e-9 then Alcotest.failf "%s: not pointing down" n;
+  let reach = Option.get r.reach in
+  let far = { f with trans = { x = reach; y = 0.; z = f.trans.z +. 100. } } in
+  match Kinematics.inverse k far (Nearest (Array.make 6 0.)) with
+  | Ok q -> ((Kinematics.forward k q).trans, false)
+  | Error e -> Alcotest.failf "%s: the reach: %s" n (Motion_error.name e)
+
 let calibration_and_reach () =
   List.iter (fun (n, (r : Robot.t)) ->
       let k = Kinematics.create r in
       let w, off_level = match r.structure with
+        | Robot.Delta -> delta_calibration n r k
         | Robot.Palletiser -> palletiser_calibration n r k
         | Robot.Serial | Robot.Coupled_axis3 -> serial_calibration n r k in
       let reach = match r.reach with Some l -> l | None -> Alcotest.failf "%s: no reach" n in
@@ -113,6 +131,29 @@ let round_trip () =
       let regular q =
         let edges = Array.for_all (fun a -> Float.abs (Float.rem (Float.abs a) 90.) > 1e-6) [| q.(0); q.(3); q.(5) |] in
         match r.structure with
+        | Robot.Delta ->
+            (* away from an arm in line with its rod, where its two solutions meet *)
+            let f = Kinematics.forward k q in
+            let rr = ax.(3).a and l = ax.(0).a in
+            let plate = { f.trans with z = f.trans.z +. ax.(3).d } in
+            (not (Float.is_nan f.trans.x))
+            && List.for_all (fun i ->
+                let phi = rad (120. *. float_of_int i) and t = rad q.(i) in
+                let dir = { x = cos phi; y = sin phi; z = 0. } in
+                let shoulder = scale rr dir in
+                let elbow = add shoulder (add (scale (l *. cos t) dir) { x = 0.; y = 0.; z = -. l *. sin t }) in
+                (* the rod as seen in the arm's plane: the two solutions meet where it is in
+                   line with the upper arm *)
+                let normal = { x = -. sin phi; y = cos phi; z = 0. } in
+                let v = sub plate elbow in
+                let v = sub v (scale (dot v normal) normal) in
+                let u = sub elbow shoulder in
+                (* and the elbow outside the line from the shoulder to the plate, as the arm is built *)
+                let w = sub plate shoulder in
+                let w = sub w (scale (dot w normal) normal) in
+                dot (cross w u) normal < 0.
+                && norm (cross u v) /. (norm u *. norm v) > 0.1) [ 0; 1; 2 ]
+            && Float.abs (Float.rem (Float.abs q.(3)) 90.) > 1e-6
         | Robot.Palletiser ->
             let t2 = rad q.(1) and t3 = rad q.(2) in
             let f = Kinematics.forward k q in
@@ -202,7 +243,7 @@ let coupled_axis3 () =
       match r.structure with
       | Robot.Coupled_axis3 -> if turned > 1e-9 then Alcotest.failf "%s: turned %g" n turned
       | Robot.Serial -> if Float.abs (turned -. rad 25.) > 1e-9 then Alcotest.failf "%s: turned %g" n turned
-      | Robot.Palletiser -> if turned > 1e-9 then Alcotest.failf "%s: the flange turned %g" n turned)
+      | Robot.Palletiser | Robot.Delta -> if turned > 1e-9 then Alcotest.failf "%s: the flange turned %g" n turned)
     (robots ());
   Alcotest.(check bool) "the IRB 2400 is coupled" true
     ((get "2400" (Robot_library.find "irb2400-10-1.5")).structure = Robot.Coupled_axis3);
@@ -215,7 +256,7 @@ let coupled_axis3 () =
     | Error e -> Alcotest.(check string) extra expect (Robot.error_to_string e) in
   let line = List.length (String.split_on_char '\n' base) in
   err "structure delta-ish\n" (Printf.sprintf
-    "r.robot:%d:11: robot description error: structure: expected serial, coupled-axis3 or palletiser, found \"delta-ish\"" line);
+    "r.robot:%d:11: robot description error: structure: expected serial, coupled-axis3, palletiser or delta, found \"delta-ish\"" line);
   err "structure serial\nstructure serial\n"
     (Printf.sprintf "r.robot:%d:1: robot description error: structure given twice" (line + 1));
   err "structure\n" (Printf.sprintf "r.robot:%d:1: robot description error: structure: expected one word" line)
@@ -263,6 +304,29 @@ let palletiser () =
   err (replace "axis 6   260     0     247      0     -300 300      300\n" "")
     "p.robot:20:1: robot description error: axis 6 is missing"
 
+(* structure delta: axes 1 to 4, three equal arms; its description's errors. *)
+let delta () =
+  let r = get "360" (Robot_library.find "ROB1_360_1.13_1") in
+  Alcotest.(check bool) "axes" true
+    (List.map (Robot.present r) [ 1; 2; 3; 4; 5; 6 ] = [ true; true; true; true; false; false ]);
+  let k = Kinematics.create r in
+  let q = [| 20.; 30.; 40.; 75.; 0.; 0. |] in
+  let c = Kinematics.conf_of k q in
+  Alcotest.(check int) "cf4: axis 4's quadrant" 0 c.cf4;
+  (match Kinematics.inverse k (Kinematics.forward k q) (With_conf { c with cf1 = 2; cf6 = -1; cfx = 7 }) with
+   | Ok q' -> Alcotest.(check (float 1e-6)) "cf1, cf6 and cfx say nothing" q.(2) q'.(2)
+   | Error e -> Alcotest.failf "with conf: %s" (Motion_error.name e));
+  let text = Option.get (Robot_library.text "irb360-1-1.13") in
+  let err t expect =
+    match Robot.parse ~file:"d.robot" t with
+    | Ok _ -> Alcotest.failf "accepted: %s" expect
+    | Error e -> Alcotest.(check string) expect expect (Robot.error_to_string e) in
+  let replace a b = Str.global_replace (Str.regexp_string a) b text in
+  err (replace "axis 2   290     0     800" "axis 2   291     0     800")
+    "d.robot:14:1: robot description error: axis 2: a delta's three arms have axis 1's a and d";
+  err (replace "max_tcp_speed" "axis 5 0 0 0 0 -1 1 1\nmax_tcp_speed")
+    "d.robot:17:1: robot description error: axis 5: a delta has no axis 5 (its axes are 1 to 4)"
+
 let suite =
   ( "robot library",
     [ Alcotest.test_case "every description parses and is found by its robot type" `Quick all_parse;
@@ -272,4 +336,5 @@ let suite =
       Alcotest.test_case "an axis beyond its range is refused" `Quick limits_refused;
       Alcotest.test_case "the reach line" `Quick reach_line;
       Alcotest.test_case "structure coupled-axis3" `Quick coupled_axis3;
-      Alcotest.test_case "structure palletiser" `Quick palletiser ] )
+      Alcotest.test_case "structure palletiser" `Quick palletiser;
+      Alcotest.test_case "structure delta" `Quick delta ] )

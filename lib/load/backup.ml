@@ -334,6 +334,11 @@ let read dir =
       if not (List.exists (fun (n, _, _, _) -> same n t.info_name) named) then
         warn (Printf.sprintf "%s:%d: warning: the task %s has no folder RAPID/TASK%d: not run" info_file_name
                 t.info_line t.info_name t.number)) info;
+  (* A name backinfo.txt gives two folders: the first folder is the task's. *)
+  let named = List.rev (List.fold_left (fun acc ((name, folder, _, info_at) as t) ->
+      if List.exists (fun (n, _, _, _) -> same n name) acc then begin
+        warn (Printf.sprintf "%s: warning: a second folder %s for the task %s: not run" info_at folder name); acc
+      end else t :: acc) [] named) in
   let tasks = List.filter_map (fun (name, folder, listed, info_at) ->
       let cab_task = List.find_opt (fun c -> same c.c_name name) cab in
       match cab_task, sys with

@@ -4,8 +4,8 @@ type buffer = { name : string; modules : Ast.module_declaration list }
 
 type checked = { reports : Rapid_typing.Report.t list; unknown_summaries : (string * string) list }
 
-let check ~allow_unknown ~io ~several buffers =
-  match Session.installed ~io () with
+let check ?testing ~allow_unknown ~io ~several buffers =
+  match Session.installed ?testing ~io () with
   | Error d -> Error d
   | Ok installed ->
       let checked = List.map (fun { name; modules } ->

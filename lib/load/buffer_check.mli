@@ -19,7 +19,8 @@ type checked = {
 }
 
 val check :
-  allow_unknown:bool -> io:Rapid_controller.Io_config.t -> several:bool -> buffer list ->
+  ?testing:bool -> allow_unknown:bool -> io:Rapid_controller.Io_config.t -> several:bool -> buffer list ->
   (checked, Diagnostic.t) result
 (** [several]: the buffers are those of --task, checked together too. [Error]: the installed
-    environment does not parse (a bug). *)
+    environment does not parse (a bug). [testing]: with the assertions of rapid-sem test
+    (R-test-a). *)

@@ -40,15 +40,16 @@ let words ln text =
   done;
   List.rev !acc
 
+(* Tail recursive: a hostile line may hold a million attributes. *)
 let attributes ln ws =
-  let rec go = function
-    | [] -> []
-    | (Key k, col) :: (Word v, _) :: rest -> { key = k; value = Text v; line = ln; col } :: go rest
-    | (Key k, col) :: (Quoted v, _) :: rest -> { key = k; value = Text v; line = ln; col } :: go rest
-    | (Key k, col) :: rest -> { key = k; value = Flag; line = ln; col } :: go rest
+  let rec go acc = function
+    | [] -> List.rev acc
+    | (Key k, col) :: (Word v, _) :: rest -> go ({ key = k; value = Text v; line = ln; col } :: acc) rest
+    | (Key k, col) :: (Quoted v, _) :: rest -> go ({ key = k; value = Text v; line = ln; col } :: acc) rest
+    | (Key k, col) :: rest -> go ({ key = k; value = Flag; line = ln; col } :: acc) rest
     | (Word w, col) :: _ -> raise (Bad (ln, col, Printf.sprintf "the value %s has no -KEY before it" w))
     | (Quoted w, col) :: _ -> raise (Bad (ln, col, Printf.sprintf "the value \"%s\" has no -KEY before it" w)) in
-  go ws
+  go [] ws
 
 let is_name_char c = c = '_' || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')
 

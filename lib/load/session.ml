@@ -105,3 +105,12 @@ let load ?(strict = false) ?testing ?allow_unknown ?io files =
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
   | [] -> load_modules ?testing ?allow_unknown ?io (List.filter_map Result.to_option parsed)
   | errors -> Error (Front_end errors)
+
+(* rapid-sem test (doc/testing.md, R-test-a): a test is a parameterless procedure named test_...,
+   letter case aside (§2.3). *)
+let is_test_name n = String.length n > 5 && String.lowercase_ascii (String.sub n 0 5) = "test_"
+
+let declares_tests (m : Ast.module_declaration) =
+  List.exists (fun (r : Ast.routine_declaration) -> match r.it with
+      | Procedure_declaration { name = { it = Ident n; _ }; parameters = []; _ } -> is_test_name n
+      | _ -> false) m.routine_declarations

@@ -45,3 +45,10 @@ val at_io_place : Rapid_controller.Io_config.t -> Rapid_typing.Report.t -> Rapid
 val connect_signals : Rapid_controller.Io_config.t -> Ir.program -> Ir.program
 (** Each signal object of the generated module gets the handle of its signal in the run's
     world. *)
+
+val is_test_name : string -> bool
+(** A name of rapid-sem test's tests: test_..., letter case aside (doc/testing.md). *)
+
+val declares_tests : Ast.module_declaration -> bool
+(** The module declares a test, a parameterless procedure of such a name: its task buffer has the
+    assertions installed (R-test-a), under rapid-sem test and in the language server. *)

@@ -184,7 +184,9 @@ let analyse t key =
     else
       let modules = List.map (fun (s : Lsp_index.source) -> s.ast) sources in
       let buffer = { Rapid_load.Buffer_check.name = ""; modules } in
-      match Rapid_load.Buffer_check.check ~allow_unknown:t.options.allow_unknown ~io:t.options.io ~several:false
+      (* a task of rapid-sem test's tests is checked as that command checks it, assertions installed *)
+      let testing = List.exists Rapid_load.Session.declares_tests modules in
+      match Rapid_load.Buffer_check.check ~testing ~allow_unknown:t.options.allow_unknown ~io:t.options.io ~several:false
               [ buffer ] with
       | Ok c -> c.reports
       | Error _ -> [] in

@@ -34,12 +34,12 @@ let set_link m (ax : Robot.axis) theta =
    arm's attitude, and joint 3 its angle against the lower arm (doc/motion.md R-structure). *)
 let to_chain (r : Robot.t) q =
   match r.structure with
-  | Serial | Palletiser -> q
+  | Serial | Palletiser | Delta -> q
   | Coupled_axis3 -> let c = Array.copy q in c.(2) <- q.(2) -. q.(1); c
 
 let of_chain (r : Robot.t) c =
   match r.structure with
-  | Serial | Palletiser -> c
+  | Serial | Palletiser | Delta -> c
   | Coupled_axis3 -> let q = Array.copy c in q.(2) <- c.(2) +. c.(1); q
 
 (* The transform of the first [n] links into k.acc. *)
@@ -89,8 +89,57 @@ let pal_arm r q =
   let t2 = rad q.(1) and t3 = rad q.(2) in
   (radial < 0., -. cos (t2 -. t3) > 0.)
 
+(* The delta (Robot.Delta, doc/motion.md R-structure): three arms at 0, 120 and 240 degrees
+   about the base's z, each an upper arm turned by its axis (0 level, positive down) and a
+   parallelogram rod to the travelling plate, which stays level; axis 4 turns the flange about
+   its z. All in closed form: the plate is where three spheres about the elbows meet. *)
+let delta_dims (r : Robot.t) =
+  let ax k = r.axes.(k - 1) in
+  ((ax 4).a, (ax 1).a, (ax 1).d, (ax 4).d)
+
+let delta_azimuth i = rad (120. *. float_of_int i)
+
+let delta_elbow r i theta =
+  let rr, l, _, _ = delta_dims r in
+  let radial = rr +. (l *. cos theta) and phi = delta_azimuth i in
+  { x = radial *. cos phi; y = radial *. sin phi; z = -. l *. sin theta }
+
+(* The plate's centre: the lower of the two points at the rods' length from the three elbows. *)
+let delta_plate r q =
+  let _, _, rod, _ = delta_dims r in
+  let e = Array.init 3 (fun i -> delta_elbow r i (rad q.(i))) in
+  let ex = sub e.(1) e.(0) in
+  let d = norm ex in
+  let ex = scale (1. /. d) ex in
+  let t = sub e.(2) e.(0) in
+  let i = dot ex t in
+  let ey = sub t (scale i ex) in
+  let j = norm ey in
+  if d < 1e-9 || j < 1e-9 then None
+  else
+    let ey = scale (1. /. j) ey in
+    let ez = cross ex ey in
+    let x = d /. 2. in
+    let y = ((i *. i) +. (j *. j) -. (2. *. i *. x)) /. (2. *. j) in
+    let zz = (rod *. rod) -. (x *. x) -. (y *. y) in
+    if zz < 0. then None
+    else
+      let z = sqrt zz in
+      let p1 = add e.(0) (add (scale x ex) (add (scale y ey) (scale z ez))) in
+      let p2 = add e.(0) (add (scale x ex) (add (scale y ey) (scale (-. z) ez))) in
+      Some (if p1.z < p2.z then p1 else p2)
+
+let delta_rot t4 = omult (of_axis_angle { x = 0.; y = 0.; z = 1. } (-. t4)) level_down
+
+let delta_forward r q =
+  let _, _, _, drop = delta_dims r in
+  match delta_plate r q with
+  | Some p -> { trans = { p with z = p.z -. drop }; rot = delta_rot (rad q.(3)) }
+  | None -> { trans = { x = nan; y = nan; z = nan }; rot = delta_rot (rad q.(3)) }
+
 let forward k q =
-  if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
+  if k.robot.structure = Robot.Delta then delta_forward k.robot q
+  else if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
   chain k 6 q;
   let g = Gsl.Matrix.get k.acc in
   { trans = { x = g 0 3; y = g 1 3; z = g 2 3 }; rot = of_matrix (rotation_of k.acc) }
@@ -104,7 +153,7 @@ let quadrant a = int_of_float (Float.floor ((a +. 1e-9) /. 90.))
 let singular_zone = 1.0
 
 let wrist_singular ?(zone = singular_zone) k q =
-  k.robot.structure <> Robot.Palletiser &&
+  k.robot.structure <> Robot.Palletiser && k.robot.structure <> Robot.Delta &&
   let t5 = rad (q.(4) +. k.robot.axes.(4).offset) in
   Float.abs (sin t5) < sin (rad zone)
 
@@ -254,6 +303,37 @@ let pal_solutions (r : Robot.t) (p : pose) ~t1_hint =
       [ false; true ];
     List.rev !out
 
+(* Each arm's angle for a plate centre: the elbow outwards. *)
+let delta_solution (r : Robot.t) (p : pose) ~t4_hint =
+  let rr, l, rod, drop = delta_dims r in
+  let m = to_matrix p.rot in
+  if -. m.(8) < cos (rad level_tolerance) then None
+  else
+    let psi = atan2 (-. m.(3)) (-. m.(0)) in
+    let c = { p.trans with z = p.trans.z +. drop } in
+    let angle i =
+      let phi = delta_azimuth i in
+      let x' = (c.x *. cos phi) +. (c.y *. sin phi) and y' = (-. c.x *. sin phi) +. (c.y *. cos phi) in
+      let a = 2. *. l *. (rr -. x') and b = 2. *. l *. c.z in
+      let k = (rod *. rod) -. (rr *. rr) -. (l *. l) -. (x' *. x') -. (y' *. y') -. (c.z *. c.z) +. (2. *. rr *. x') in
+      let n = Float.hypot a b in
+      if n < 1e-9 || Float.abs (k /. n) > 1. then None
+      else
+        let base = atan2 b a and w = acos (k /. n) in
+        let t1 = base +. w and t2 = base -. w in
+        (* the two elbows are mirror images across the line from the shoulder to the plate (in
+           the arm's plane: radial, height): the one outside it *)
+        let outside t = ((x' -. rr) *. (-. l *. sin t)) -. (c.z *. l *. cos t) in
+        Some (if outside t1 >= outside t2 then t1 else t2) in
+    match angle 0, angle 1, angle 2 with
+    | Some a, Some b, Some c ->
+        (* axis 4 turns the flange about its z, down: the base's z the other way *)
+        let t4 = -. psi in
+        let q4 = deg t4 in
+        let q4 = q4 +. (360. *. Float.round ((t4_hint -. q4) /. 360.)) in
+        Some { angles = [| wrap (deg a); wrap (deg b); wrap (deg c); q4; 0.; 0. |]; raw_cfx = 0 }
+    | _ -> None
+
 (* Each axis at a turn within its range nearest to its target, or the first axis that has none. *)
 let place (r : Robot.t) raw targets =
   let q = Array.make 6 0. in
@@ -267,7 +347,8 @@ let place (r : Robot.t) raw targets =
 (* The arm configuration (wrist centre behind axis 1, behind the lower arm) of axis angles,
    from the planar geometry of axes 2 and 3 alone. *)
 let arm_of k q =
-  if k.robot.structure = Robot.Palletiser then pal_arm k.robot q else
+  if k.robot.structure = Robot.Delta then (false, false)
+  else if k.robot.structure = Robot.Palletiser then pal_arm k.robot q else
   let q = to_chain k.robot q in
   let ax = k.robot.axes in
   let t2 = rad (q.(1) +. ax.(1).offset) and t3 = rad (q.(2) +. ax.(2).offset) in
@@ -277,6 +358,7 @@ let arm_of k q =
   (radial < 0., sin (t3 +. ps) < 0.)
 
 let conf_of k q =
+  if k.robot.structure = Robot.Delta then { cf1 = 0; cf4 = quadrant q.(3); cf6 = 0; cfx = 0 } else
   let behind, elbow = arm_of k q in
   let wrist = k.robot.structure <> Robot.Palletiser && q.(4) < 0. in
   let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if wrist then 1 else 0) in
@@ -361,7 +443,8 @@ let refine k (p : pose) q0 =
   in
   go newton_iterations
 
-let offset_wrist (r : Robot.t) = r.structure <> Robot.Palletiser && r.axes.(4).a <> 0.
+let offset_wrist (r : Robot.t) =
+  (r.structure = Robot.Serial || r.structure = Robot.Coupled_axis3) && r.axes.(4).a <> 0.
 
 (* An offset wrist's flange is its spherical twin's (the same arm with a5 = 0) moved by a5 along
    frame 5's x axis, which is the tool's x axis turned back by axis 6 about the tool's z. So for
@@ -445,13 +528,17 @@ let nearest_of (r : Robot.t) sols q0 =
 (* What of a confdata the arm can use: a palletiser has no axes 4 and 5 (cf4 and cfx's axis 5 bit
    say nothing of it). *)
 let significant k c =
-  if k.robot.structure = Robot.Palletiser then { c with cf4 = 0; cfx = c.cfx land 6 } else c
+  match k.robot.structure with
+  | Robot.Palletiser -> { c with cf4 = 0; cfx = c.cfx land 6 }
+  | Robot.Delta -> { cf1 = 0; cf4 = c.cf4; cf6 = 0; cfx = 0 }
+  | Robot.Serial | Robot.Coupled_axis3 -> c
 
 let inverse k p choice =
   let r = k.robot in
   let choice = match choice with With_conf c -> With_conf (significant k c) | n -> n in
   let solutions ?arm k p ~t4_hint =
-    if offset_wrist r then offset_solutions ?arm k p ~t4_hint
+    if r.structure = Robot.Delta then Option.to_list (delta_solution r p ~t4_hint:t4_hint.(3))
+    else if offset_wrist r then offset_solutions ?arm k p ~t4_hint
     else if r.structure = Robot.Palletiser then
       List.filter (fun s -> match arm with
           | None -> true

@@ -376,6 +376,8 @@ let build t ~now_p m id =
             let q = Array.mapi (fun i a -> if Robot.present robot (i + 1) then a else 0.) q in
             let q = join q e_end in
             let f = world_flange k q in
+            (* a delta's arms may stand where no plate joins their rods *)
+            if Float.is_nan f.trans.x then Error Motion_error.Out_of_reach else
             Ok ("MoveAbsJ", Joints (q_start, q), (tcp_of_flange f tframe).rot, Array.copy q, f)
       | External_only ->
           let q = join q_start e_end in

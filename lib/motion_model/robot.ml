@@ -3,12 +3,14 @@ type axis = {
   min : float; max : float; speed : float;
 }
 
-type structure = Serial | Coupled_axis3 | Palletiser
+type structure = Serial | Coupled_axis3 | Palletiser | Delta
 
-let structure_names = [ ("serial", Serial); ("coupled-axis3", Coupled_axis3); ("palletiser", Palletiser) ]
+let structure_names =
+  [ ("serial", Serial); ("coupled-axis3", Coupled_axis3); ("palletiser", Palletiser); ("delta", Delta) ]
 
-(* A palletiser has axes 1, 2, 3 and 6 (ABB numbers them so); the others stand still at 0. *)
-let absent_axes = function Palletiser -> [ 4; 5 ] | Serial | Coupled_axis3 -> []
+(* A palletiser has axes 1, 2, 3 and 6 (ABB numbers them so), a delta 1 to 4; the others stand
+   still at 0. *)
+let absent_axes = function Palletiser -> [ 4; 5 ] | Delta -> [ 5; 6 ] | Serial | Coupled_axis3 -> []
 
 let absent_axis = { a = 0.; alpha = 0.; d = 0.; offset = 0.; min = 0.; max = 0.; speed = 1. }
 
@@ -162,9 +164,23 @@ let palletiser_problem r =
     [ 2; 3 ];
   !bad
 
+let delta_problem r =
+  let ax k = r.axes.(k - 1) in
+  let bad = ref None in
+  let say k m = if !bad = None then bad := Some (k, m) in
+  List.iter (fun k -> if (ax k).alpha <> 0. || (ax k).offset <> 0. then
+                say k (Printf.sprintf "axis %d: a delta's alpha and offset must be 0 (doc/motion.md)" k))
+    [ 1; 2; 3; 4 ];
+  List.iter (fun k -> if (ax k).a <> (ax 1).a || (ax k).d <> (ax 1).d then
+                say k (Printf.sprintf "axis %d: a delta's three arms have axis 1's a and d" k)) [ 2; 3 ];
+  if (ax 1).a <= 0. || (ax 1).d <= 0. then say 1 "axis 1: a delta's upper arm a and rod d must be positive";
+  if (ax 4).a < 0. || (ax 4).d < 0. then say 4 "axis 4: a delta's a and d must not be negative";
+  !bad
+
 let structure_problem r =
   match r.structure with
   | Palletiser -> palletiser_problem r
+  | Delta -> delta_problem r
   | Serial | Coupled_axis3 ->
   let ax i = r.axes.(i - 1) in
   let expect = [| -90.; 0.; -90.; 90.; -90.; 0. |] in
@@ -212,7 +228,7 @@ let parse ~file text =
         | [ (_, "structure"); (c, w) ] ->
             (match List.assoc_opt w structure_names with
              | None -> raise (Bad (ln, c, Printf.sprintf
-                                         "structure: expected serial, coupled-axis3 or palletiser, found %S"
+                                         "structure: expected serial, coupled-axis3, palletiser or delta, found %S"
                                          (Rapid_syntax.Decimal.shown w)))
              | Some k ->
                  if !structure <> None then raise (Bad (ln, 1, "structure given twice"));
@@ -265,7 +281,9 @@ let parse ~file text =
     let absent = absent_axes kind in
     List.iter (fun k -> if axes.(k - 1) <> None then
                   raise (Bad (axis_line.(k - 1), 1, Printf.sprintf
-                                "axis %d: a palletiser has no axis %d (its axes are 1, 2, 3 and 6)" k k))) absent;
+                                "axis %d: a %s has no axis %d (its axes are %s)" k
+                                (if kind = Delta then "delta" else "palletiser") k
+                                (if kind = Delta then "1 to 4" else "1, 2, 3 and 6")))) absent;
     List.iter (fun k -> axes.(k - 1) <- Some absent_axis) absent;
     let missing = ref None in
     Array.iteri (fun i a -> if a = None && !missing = None then missing := Some (i + 1)) axes;

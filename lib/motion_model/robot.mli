@@ -27,6 +27,12 @@ type structure =
           place axis 2 ahead of and above the base, axis 2 [a] the lower arm, axis 3 [a] the upper
           arm, axis 6 [a] and [d] the flange ahead of and below the upper arm's end; twists and
           offsets are 0. Axes 4 and 5 are not given and stand at 0. *)
+  | Delta
+      (** four axes, 1 to 4 (IRB 360): three upper arms at 0, 120 and 240 degrees about the base's
+          z, each turned by its axis (0 level, positive down), with parallel rods to a plate kept
+          level; axis 4 turns the flange about its z. Axes 1 to 3 [a]: the upper arm, [d]: the
+          rod (the same for all three); axis 4 [a]: the base's radius less the plate's, [d]: the
+          flange below the plate. Axes 5 and 6 are not given and stand at 0. *)
 
 type t = {
   name : string;
@@ -61,7 +67,7 @@ val load : string -> (t, error) result
 (** [parse] of a file's contents; an unreadable file is an error at 1:1. *)
 
 val present : t -> int -> bool
-(** Whether the arm has axis [k] (1 to 6): a palletiser has no axes 4 and 5. *)
+(** Whether the arm has axis [k] (1 to 6): a palletiser has no axes 4 and 5, a delta no 5 and 6. *)
 
 val structure_error : t -> string option
 (** Why the analytic inverse kinematics cannot solve this arm, or [None]. *)

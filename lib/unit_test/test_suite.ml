@@ -83,7 +83,7 @@ type suite = {
   loads : (O.t * Rapid_load.Session.loaded) list;
 }
 
-let is_test_name n = String.length n > 5 && String.lowercase_ascii (String.sub n 0 5) = "test_"
+let is_test_name = Rapid_load.Session.is_test_name
 
 let file_of (r : Ir.routine) = Option.map S.name (S.file_of r.at)
 
@@ -102,10 +102,7 @@ let discover ~notify (o : O.t) files =
   let declares_tests file =
     match Rapid_syntax.Parse.parse_file file with
     | Error _ -> true
-    | Ok m ->
-        List.exists (fun (r : Rapid_syntax.Ast.routine_declaration) -> match r.it with
-            | Procedure_declaration { name = { it = Ident n; _ }; parameters = []; _ } -> is_test_name n
-            | _ -> false) m.routine_declarations in
+    | Ok m -> Rapid_load.Session.declares_tests m in
   let per_file = List.filter (fun (f, _) -> declares_tests f) per_file in
   let distinct = match List.sort_uniq compare (List.map snd per_file) with [] -> [ o ] | l -> l in
   let* loads = List.fold_left (fun acc opts ->

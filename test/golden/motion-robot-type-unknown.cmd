@@ -1,0 +1,1 @@
+run --robot ROB1_2400_1.5_12 robot-library-cell.mod
