@@ -186,8 +186,8 @@ let analyse t key =
       let buffer = { Rapid_load.Buffer_check.name = ""; modules } in
       (* a task of rapid-sem test's tests is checked as that command checks it, assertions installed *)
       let testing = List.exists Rapid_load.Session.declares_tests modules in
-      match Rapid_load.Buffer_check.check ~testing ~allow_unknown:t.options.allow_unknown ~io:t.options.io ~several:false
-              [ buffer ] with
+      match Rapid_load.Buffer_check.check ~testing ~allow_unknown:t.options.allow_unknown ~io:t.options.io
+              ~several:false [ buffer ] with
       | Ok c -> c.reports
       | Error _ -> [] in
   let diagnostics = List.filter_map (fun (uri, name, text, doc, _, error) ->
