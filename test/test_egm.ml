@@ -99,7 +99,9 @@ let targets = [ 10.; -20.; 15.; 5.; 30.; -45. ]
 
 (* The sensor: answers every EgmRobot with the targets, until the robot has been silent for
    1 s; the feedback it received, in order. *)
-let sense sock =
+let joint_reply (_ : E.robot) = { E.empty_sensor with set_joints = Some targets }
+
+let sense ?(reply = joint_reply) sock =
   let buf = Bytes.create 65536 in
   let received = ref [] and seqno = ref 0 in
   let rec go seen =
@@ -112,14 +114,13 @@ let sense sock =
          | Ok r ->
              received := r :: !received;
              incr seqno;
-             let reply = E.encode_sensor { E.empty_sensor with
-                                           s_header = { seqno = Some !seqno; tm = None; mtype = Some E.mtype_correction };
-                                           set_joints = Some targets } in
+             let reply = E.encode_sensor { (reply r) with
+                                           s_header = { seqno = Some !seqno; tm = None; mtype = Some E.mtype_correction } } in
              ignore (Unix.sendto_substring sock reply 0 (String.length reply) [] from));
         go true in
   go false
 
-let run_with_sensor ?(extra = []) engine dir =
+let run_with_sensor ?(extra = []) ?reply ?(driver = "drivers/EgmJoint.mod") engine dir =
   let sock = Unix.socket Unix.PF_INET Unix.SOCK_DGRAM 0 in
   Fun.protect ~finally:(fun () -> Unix.close sock) (fun () ->
       Unix.bind sock (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
@@ -128,14 +129,62 @@ let run_with_sensor ?(extra = []) engine dir =
       let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
       let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
       let args = [ binary; "run"; "--engine"; engine; "--max-time"; "30";
-                   "--egm-device"; Printf.sprintf "EGMSensor=127.0.0.1:%d" port ] @ extra @ [ "drivers/EgmJoint.mod" ] in
+                   "--egm-device"; Printf.sprintf "EGMSensor=127.0.0.1:%d" port ] @ extra @ [ driver ] in
       let pid = Unix.create_process binary (Array.of_list args) devnull fd_out fd_out in
       Unix.close fd_out; Unix.close devnull;
-      let feedback = try sense sock with e -> ignore (wait_bounded pid 0.); raise e in
+      let feedback = try sense ?reply sock with e -> ignore (wait_bounded pid 0.); raise e in
       (match wait_bounded pid 10. with
        | Some (Unix.WEXITED 0) -> ()
        | _ -> Alcotest.fail ("the program did not end with status 0: " ^ read_file out));
       (feedback, read_file out))
+
+(* Pose mode (test/drivers/EgmPose.mod): the sensor asks for the TCP 30 mm along x, -20 along y
+   and -40 along z of where the first feedback found it in the work object's frame, turned
+   6 degrees about its z axis; the feedback pose converges there, within the criteria, and CRobT
+   in the same tool and work object finds the TCP there. With [~euler] the orientation is sent
+   as ZYX Euler angles in degrees instead of a quaternion. *)
+let euler_of (w, x, y, z) =
+  let deg r = r *. 180. /. Float.pi in
+  (deg (Float.atan2 (2. *. ((y *. z) +. (w *. x))) (1. -. (2. *. ((x *. x) +. (y *. y))))),
+   deg (Float.asin (Float.max (-1.) (Float.min 1. (2. *. ((w *. y) -. (x *. z)))))),
+   deg (Float.atan2 (2. *. ((x *. y) +. (w *. z))) (1. -. (2. *. ((y *. y) +. (z *. z))))))
+
+let egm_pose ?(euler = false) engine () =
+  with_dir (fun dir ->
+      let goal = ref None in
+      let reply (r : E.robot) =
+        (match !goal, r.feedback_pose with
+         | None, Some { E.pos = Some (x, y, z); orient = Some (a, b, c, d); _ } ->
+             let h = Float.pi *. 3. /. 180. in
+             let cz = Float.cos h and sz = Float.sin h in
+             (* (a, b, c, d) . (cz, 0, 0, sz) *)
+             let q = (a *. cz -. d *. sz, b *. cz +. c *. sz, c *. cz -. b *. sz, d *. cz +. a *. sz) in
+             goal := Some ((x +. 30., y -. 20., z -. 40.), q)
+         | _ -> ());
+        match !goal with
+        | Some (p, q) ->
+            let set = if euler then { E.pos = Some p; orient = None; euler = Some (euler_of q) }
+              else { E.pos = Some p; orient = Some q; euler = None } in
+            { E.empty_sensor with set_pose = Some set }
+        | None -> E.empty_sensor in
+      let feedback, out = run_with_sensor ~reply ~driver:"drivers/EgmPose.mod" engine dir in
+      let (gx, gy, gz), (g1, g2, g3, g4) = match !goal with Some g -> g | None -> Alcotest.fail "no feedback pose" in
+      Alcotest.(check bool) "more than 50 cycles" true (List.length feedback > 50);
+      let last = List.nth feedback (List.length feedback - 1) in
+      (match last.feedback_pose with
+       | Some { E.pos = Some (x, y, z); orient = Some (a, b, c, d); _ } ->
+           List.iter2 (fun t v -> if Float.abs (t -. v) > 0.1 then Alcotest.failf "last feedback %g, target %g" v t)
+             [ gx; gy; gz ] [ x; y; z ];
+           let dot = Float.abs ((a *. g1) +. (b *. g2) +. (c *. g3) +. (d *. g4)) in
+           if dot < 0.99999 then Alcotest.failf "last orientation (%g %g %g %g), |dot| %g" a b c d dot
+       | _ -> Alcotest.fail "no Cartesian feedback");
+      Alcotest.(check (option bool)) "convergence met at the end" (Some true) last.convergence_met;
+      Alcotest.(check bool) "the set point as planned" true
+        (match last.planned_pose with Some { E.pos = Some (x, _, _); _ } -> Float.abs (x -. gx) < 1e-9 | _ -> false);
+      let sign = if g1 < 0. then -1. else 1. in
+      Alcotest.(check string) "program output"
+        (Printf.sprintf "egm state before the run 1\negm state after the run 1\ntcp %.1f %.1f %.1f\n\
+                         orient %.3f %.3f %.3f %.3f\n" gx gy gz (sign *. g1) (sign *. g2) (sign *. g3) (sign *. g4)) out)
 
 (* A collision at 0.1 s, while the robot follows the sensor: ERR_COLL_STOP is taken by the
    handler of the routine (§7.6), which keeps EGMRunJoint's program point for RETRY (R-7.2-m): the
@@ -225,5 +274,7 @@ let suite = ("egm", [
     Alcotest.test_case "joint-mode EGM with a sensor, the machine" `Quick (egm_joint "machine");
     Alcotest.test_case "a collision during the run" `Quick (egm_collision "closure");
     Alcotest.test_case "a collision during the run, the machine" `Quick (egm_collision "machine");
+    Alcotest.test_case "pose-mode EGM with a sensor on the loopback" `Quick (egm_pose "closure");
+    Alcotest.test_case "pose-mode EGM with a sensor, Euler angles, the machine" `Quick (egm_pose ~euler:true "machine");
     Alcotest.test_case "no sensor: ERR_UDPUC_COMM after CommTimeout" `Quick egm_timeout;
   ])

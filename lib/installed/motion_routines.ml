@@ -941,6 +941,9 @@ let axes_now st ~now = match P.joints_at st.planner now with Ok q -> q | Error _
 
 (* One cycle of Externally Guided Motion (Egm_routines): the arm goes to its next axis angles in
    one cycle, a stop point, as a MoveAbsJ \T would; the active tool and work object stay. *)
+let tooldata_of = tool_of
+let wobjdata_of = wobj_of
+
 let servo ctx st q ~duration =
   let now = W.now ctx.world in
   let fine = Option.get (D.find D.zonedata "fine") and speed = Option.get (D.find D.speeddata "v1000") in

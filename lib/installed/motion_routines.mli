@@ -99,6 +99,13 @@ val move_waits_in_progress : state -> int
 val axes_now : state -> now:float -> float array
 (** The arm's six axis angles (degrees) at this time, as CJointT reads them. *)
 
+val tooldata_of : Value.t -> Rapid_motion_model.Motion_data.tooldata
+(** A tooldata value's robot-held flag, tool frame and mass. *)
+
+val wobjdata_of : Value.t -> Rapid_motion_model.Motion_data.wobjdata
+val pose_of : Value.t -> Rapid_motion_model.Geom.pose
+(** A pose value (mm, quaternion). *)
+
 val servo : Primitive.context -> state -> float array -> duration:float -> (unit, string) result
 (** The arm goes from where it is now to these axis angles in [duration] seconds and stops
     there (one EGM cycle); [Error] with the ERR_ name a move would raise (ERR_ROBLIMIT beyond an
