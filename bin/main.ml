@@ -59,6 +59,7 @@ let parse_cmd =
    it is, and flush every line. *)
 let run_sink ~json ~closure_single : Drive.sink =
   let encoder = EJ.create () in
+  let ended = ref [] in
   let line j = Cli.print_line (Json_text.to_string j) in
   let framing j = if closure_single then print_endline (Json_text.to_string j) else line j in
   let named task j = match task with Some name -> EJ.with_task name j | None -> j in
@@ -69,8 +70,9 @@ let run_sink ~json ~closure_single : Drive.sink =
     stubbed = Cli.report_stubbed;
     samples = (fun task -> List.iter (fun (s : Rapid_run.Tcp_samples.sample) ->
         line (named task (EJ.sample s.time s.pose s.joints))));
-    task_end = (fun name o steps -> if json then line (EJ.task_end name o steps));
-    run_end = (fun ?entry_at o steps -> if json then framing (EJ.outcome ?entry_at o steps));
+    task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ended := (name, o) :: !ended);
+    run_end = (fun ?entry_at o steps ->
+        if json then framing (EJ.outcome ?entry_at o steps) else Cli.report_task_stops (List.rev !ended) o);
     flush = Cli.flush_output }
 
 let run_cmd =
