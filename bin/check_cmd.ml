@@ -44,7 +44,27 @@ let cmd =
   in
   let run files tasks allow_unknown strict format io robot =
     Cli.guard @@ fun () ->
-    match buffers files tasks, Rapid_run.Run_setup.read_io io, Rapid_run.Run_setup.load_robot robot with
+    (* A controller backup: its tasks, each --task NAME=FILE,... replacing a task's files, and its
+       EIO.cfg unless --io names another; a .pgf file: its modules. *)
+    match Rapid_run.Backup_setup.input ~robot files with
+    | Error m -> prerr_endline m; Cli.exit_static_error
+    | Ok input ->
+    let files, own, io, several = match input with
+      | Files fs -> (fs, [], io, tasks <> [])
+      | Cell c ->
+          if format = Check_output.Text then List.iter prerr_endline c.warnings;
+          let given = List.filter_map (fun t -> match String.index_opt t '=' with
+              | Some i -> Some (String.sub t 0 i) | None -> None) tasks in
+          let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+          let own = List.filter_map (fun (t : Rapid_load.Backup.task) ->
+              if List.exists (same t.name) given then None else Some (t.name, t.files)) c.backup.tasks in
+          ([], own, (match io with Some _ -> io | None -> c.backup.eio), true) in
+    let buffers = match own, buffers files tasks with
+      | [], b -> b
+      | own, Ok [ ("", []) ] -> Ok own
+      | own, Ok b -> Ok (own @ b)
+      | _, e -> e in
+    match buffers, Rapid_run.Run_setup.read_io io, Rapid_run.Run_setup.load_robot robot with
     | Error m, _, _ | _, Error m, _ | _, _, Error m -> prerr_endline m; Cli.exit_static_error
     | Ok [ (_, []) ], _, _ ->
         prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; Cli.exit_static_error
@@ -61,7 +81,7 @@ let cmd =
     else
       let buffers = List.map (fun (name, p) ->
           { Rapid_load.Buffer_check.name; modules = List.filter_map Result.to_option p }) parsed in
-      match Rapid_load.Buffer_check.check ~allow_unknown ~io ~several:(tasks <> []) buffers with
+      match Rapid_load.Buffer_check.check ~allow_unknown ~io ~several buffers with
       | Error d ->
           Printf.eprintf "rapid-sem: internal error: the installed environment does not parse: %s\n"
             (Diagnostic.to_string d);
@@ -89,6 +109,9 @@ let cmd =
         $(b,rapid-sem run --task) loads them: each on its own, then, when none has an error, \
         together: a system-global persistent declared with another type than in an earlier \
         task is an error at the later declaration (chapter 14).";
+    `P "A FILE that is a controller backup's folder checks the tasks it configures (SYSPAR/SYS.cfg, \
+        BACKINFO/backinfo.txt, RAPID/TASKn) with the signals of its SYSPAR/EIO.cfg; a $(b,.pgf) program file, \
+        the modules it lists (doc/user-guide.md, \"Controller backups\").";
     `S Manpage.s_exit_status;
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in

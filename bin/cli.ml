@@ -117,9 +117,14 @@ let report_load_failure ?(json = false) failure =
   | Internal m -> Printf.eprintf "rapid-sem: internal error: %s\n" m; exit_internal
 
 let notify : Setup.notice -> unit = function
-  | Inferred_signal s ->
-      Printf.eprintf "warning: %s is not declared; --stub-unmodelled made it a virtual %s at 0\n%!" s.name
-        (Rapid_controller.Io_config.type_name s.kind)
+  | Inferred_signal (s, at) ->
+      let kind = Rapid_controller.Io_config.type_name s.kind in
+      let io_kind = if String.length kind > 6 then String.sub kind 6 (String.length kind - 6) else kind in
+      Printf.eprintf "%swarning: %s is not declared; --stub-unmodelled made it a virtual %s at 0 (R-13-aa)\n  \
+                      hint: to model it, give it in a stimulus file: --io FILE with a line \"signal %s %s\" \
+                      (doc/controller.md)\n%!"
+        (if Rapid_syntax.Source.file_of at = None then "" else Rapid_syntax.Source.to_string at ^ ": ")
+        s.name kind s.name io_kind
   | Warnings (reports, unknown_summary) ->
       List.iter (fun r -> prerr_endline (Rapid_typing.Report.to_string r)) reports;
       Option.iter prerr_endline unknown_summary
@@ -128,6 +133,7 @@ let notify : Setup.notice -> unit = function
                      it has no file to write back to"
   | Samples_capped n ->
       Printf.eprintf "rapid-sem: --samples: %d samples written, the most a run writes; the rest are left out\n%!" n
+  | Backup_warning w -> prerr_endline w
 
 let failure ?(json = false) ?(files = []) : Setup.failure -> int = function
   | Usage m -> prerr_endline m; exit_static_error

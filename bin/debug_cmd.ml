@@ -8,7 +8,11 @@ let cmd =
   let files, entry, max_steps, allow_unknown, max_depth, retry_limit = Run_args.common_run_args in
   let script = Arg.(value & opt (some string) None & info [ "script" ] ~docv:"FILE"
                       ~doc:"Read the debugger's commands from FILE instead of standard input.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit controller robot script =
+  let prompt_text = Arg.(value & opt (some string) None & info [ "prompt" ] ~docv:"TEXT"
+                           ~doc:"Write TEXT before each command read, whether standard input is a terminal or not \
+                                 (default: $(b,(rapid-sem) ) on a terminal, nothing from a pipe or a script); \
+                                 an empty TEXT writes none.") in
+  let run files entry max_steps allow_unknown max_depth retry_limit controller robot script prompt_text =
     let input = match script with
       | None -> Ok stdin
       | Some f -> (try Ok (open_in_bin f) with Sys_error m -> Error m) in
@@ -17,7 +21,11 @@ let cmd =
     | Ok ic ->
     Cli.guard @@ fun () ->
     let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
-    match Rapid_run.Run_setup.start_machine ~notify:Cli.notify options files ~entry with
+    (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
+    match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
+    | Error f -> Cli.failure f
+    | Ok (options, files, entry, robot) ->
+    match Rapid_run.Run_setup.start_machine ?robot ~notify:ignore options files ~entry with
     | Error f -> Cli.failure f
     | Ok (cfg, _) ->
     let echo = script <> None in
@@ -51,11 +59,14 @@ let cmd =
         ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
     (* A person typing commands sees when the session waits for the next one; a script or a
        pipe gets the transcript alone (doc/debugger.md). *)
-    let prompt = script = None && Unix.isatty Unix.stdin in
+    let prompt = match prompt_text with
+      | Some "" -> None
+      | Some t -> Some t
+      | None -> if script = None && Unix.isatty Unix.stdin then Some "(rapid-sem) " else None in
     let rec loop () =
-      if prompt then (print_string "(rapid-sem) "; flush stdout);
+      Option.iter (fun p -> print_string p; flush stdout) prompt;
       match input_line ic with
-      | exception End_of_file -> if prompt then print_newline ()
+      | exception End_of_file -> if prompt <> None then print_newline ()
       | line ->
           let line = String.trim line in
           if echo && line <> "" then print_endline ("(rapid) " ^ line);
@@ -81,4 +92,4 @@ let cmd =
   ] in
   Cmd.v (Cmd.info "debug" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
-          $ Run_args.robot_arg $ script)
+          $ Run_args.robot_arg $ script $ prompt_text)

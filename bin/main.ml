@@ -57,9 +57,41 @@ let parse_cmd =
    task shows the control characters of an output line as the pendant does, and leaves its start
    and end lines in the buffer until the next line goes out; the others write an output line as
    it is, and flush every line. *)
+(* A controller backup's summary, on standard error at the end of a run without --json: what
+   ran, and how each task ended. *)
+let outcome_text (o : Rapid_runtime.Outcome.t) = match o with
+  | Running -> "still running at the step limit"
+  | Ended -> "ended"
+  | Stopped { name; at; about; _ } ->
+      Printf.sprintf "stopped by %s%s at %s" name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
+        (Rapid_syntax.Source.to_string at)
+  | Resource_exhausted (m, _) -> "exhausted: " ^ m
+  | Unsupported { name; at; _ } ->
+      Printf.sprintf "stopped at %s, not modelled, at %s" name (Rapid_syntax.Source.to_string at)
+  | Deadlock _ -> "waiting forever (deadlock)"
+  | Stuck m -> "stuck: " ^ m
+
+let print_summary (s : Rapid_run.Backup_setup.summary) ends =
+  Printf.eprintf "rapid-sem: the backup %s ran %d task%s; I/O configuration %s (%d signals); %d warning%s above\n"
+    s.dir (List.length s.tasks) (if List.length s.tasks = 1 then "" else "s")
+    (Option.value s.io ~default:"none") s.signals s.warned (if s.warned = 1 then "" else "s");
+  List.iter (fun (t : Rapid_run.Backup_setup.task_summary) ->
+      let robot = match t.robot, t.reads with
+        | Some r, _ -> Printf.sprintf "robot %s%s" r (match t.robot_type with
+            | Some ty when ty <> "" && t.stand_in <> None ->
+                Printf.sprintf " in place of %s (%s)" ty (Option.get t.stand_in)
+            | Some ty when ty <> "" -> " (" ^ ty ^ ")"
+            | _ -> "")
+        | None, Some m -> "reads " ^ m ^ "'s robot"
+        | None, None -> "no robot" in
+      Printf.eprintf "  %s (%s): entry %s, %d module%s, %s: %s\n" t.task t.kind t.entry t.modules
+        (if t.modules = 1 then "" else "s") robot
+        (match List.assoc_opt t.task ends with Some o -> outcome_text o | None -> "not started")) s.tasks;
+  flush stderr
+
 let run_sink ~json ~closure_single : Drive.sink =
   let encoder = EJ.create () in
-  let ended = ref [] in
+  let summary = ref None and ends = ref [] in
   let line j = Cli.print_line (Json_text.to_string j) in
   let framing j = if closure_single then print_endline (Json_text.to_string j) else line j in
   let named task j = match task with Some name -> EJ.with_task name j | None -> j in
@@ -70,9 +102,20 @@ let run_sink ~json ~closure_single : Drive.sink =
     stubbed = Cli.report_stubbed;
     samples = (fun task -> List.iter (fun (s : Rapid_run.Tcp_samples.sample) ->
         line (named task (EJ.sample s.time s.pose s.joints))));
-    task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ended := (name, o) :: !ended);
+    cell = (fun (s : Rapid_run.Backup_setup.summary) ->
+        if json then
+          line (EJ.cell ~backup:s.dir ~io:s.io ~signals:s.signals ~warnings:s.warned
+                  (List.map (fun (t : Rapid_run.Backup_setup.task_summary) ->
+                       { EJ.name = t.task; kind = t.kind; entry = t.entry; motion = t.motion; robot = t.robot;
+                         robot_type = t.robot_type; stand_in = t.stand_in; reads = t.reads;
+                         modules = t.modules }) s.tasks))
+        else summary := Some s);
+    task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ends := (name, o) :: !ends);
     run_end = (fun ?entry_at o steps ->
-        if json then framing (EJ.outcome ?entry_at o steps) else Cli.report_task_stops (List.rev !ended) o);
+        if json then framing (EJ.outcome ?entry_at o steps)
+        else match !summary with
+          | Some s -> Cli.flush_output (); print_summary s !ends
+          | None -> Cli.report_task_stops (List.rev !ends) o);
     flush = Cli.flush_output }
 
 let run_cmd =

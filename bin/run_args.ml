@@ -58,7 +58,7 @@ let seconds_conv ~most =
 (* The longest statement: a day of virtual time. *)
 let most_statement_time = 86400.
 
-(* --fs, --fs-quota, --net, --map-address (doc/services.md). *)
+(* --fs, --fs-quota, --net, --map-address, --egm-device (doc/services.md). *)
 let services_args =
   let fs = Arg.(value & opt (some string) None & info [ "fs" ] ~docv:"ROOT"
                   ~doc:"The folder that holds the controller's mass memory: HOME:, TEMP:, RAMDISK: and \
@@ -73,7 +73,11 @@ let services_args =
   let map = Arg.(value & opt_all string [] & info [ "map-address" ] ~docv:"FROM=TO,..."
                    ~doc:"Read the RAPID address FROM as TO, e.g. 192.168.125.1=127.0.0.1 (the controller's \
                          service port on the loopback), before the --net check.") in
-  Term.(const (fun fs fs_quota net map_address -> { O.fs; fs_quota; net; map_address }) $ fs $ quota $ net $ map)
+  let egm = Arg.(value & opt_all string [] & info [ "egm-device" ] ~docv:"NAME=HOST:PORT,..."
+                   ~doc:"A UdpUc device of Externally Guided Motion: EGMSetupUC's UCDevice NAME sends to the \
+                         sensor at HOST:PORT, a loopback address (doc/services.md).") in
+  Term.(const (fun fs fs_quota net map_address egm_device -> { O.fs; fs_quota; net; map_address; egm_device })
+        $ fs $ quota $ net $ map $ egm)
 
 let controller_args =
   let module W = Rapid_controller.World in

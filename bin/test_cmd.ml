@@ -48,6 +48,13 @@ let cmd =
     | Ok suite ->
         let suite = match regex with Some re -> U.Test_suite.filter re suite | None -> suite in
         let total = List.length suite.tests in
+        (* No test is no success (R-test-c): a folder or a --filter mistyped in CI would pass. *)
+        if total = 0 then begin
+          Printf.eprintf "rapid-sem: no test to run: no procedure test_...() without parameters%s in %s\n"
+            (match filter with Some r -> " whose name --filter " ^ r ^ " matches" | None -> "")
+            (String.concat ", " files);
+          1
+        end else
         let tty = Unix.isatty Unix.stderr in
         let show_progress = progress || tty in
         let started = Unix.gettimeofday () in
@@ -100,7 +107,8 @@ let cmd =
         line under it says where (FILE:LINE:COL) and what was expected and found. Standard output has a line \
         per test with the virtual time it took, then the summary $(b,N passed, N failed).";
     `S Manpage.s_exit_status;
-    `P "0 when every test passes; 1 when one fails; 2 for a static error or a command line that cannot be used.";
+    `P "0 when every test passes; 1 when one fails or there is no test to run; 2 for a static error or a command \
+        line that cannot be used.";
   ] in
   Cmd.v (Cmd.info "test" ~doc ~man)
     Term.(const run $ files $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args

@@ -36,12 +36,15 @@ let () =
       Test_engines_kept.suite;
       Test_waits.suite;
       Test_start_sharing.suite;
+      Test_installed_image.suite;
       Test_tasks.suite;
       Test_observation.suite;
       Test_realprog2.suite;
+      Test_backup.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;
+      Test_egm.suite;
       Test_lsp.suite;
       Test_unit_test.suite;
     ]

@@ -55,7 +55,15 @@ let debugger_prompt () =
       let status, on_terminal = run (Printf.sprintf "script -qec %s /dev/null" (Filename.quote debug)) in
       Alcotest.(check int) "terminal: exit 0" 0 status;
       (* One before each command: step, quit. *)
-      Alcotest.(check int) ("terminal: a prompt before each command: " ^ String.escaped on_terminal) 2 (prompts on_terminal))
+      Alcotest.(check int) ("terminal: a prompt before each command: " ^ String.escaped on_terminal) 2 (prompts on_terminal);
+      (* --prompt TEXT: that prompt, piped too; an empty one: none, on a terminal too. *)
+      let status, piped = run (Printf.sprintf "%s debug --prompt '(rapid-sem) ' debug-steps.mod" (Filename.quote binary)) in
+      Alcotest.(check int) "--prompt piped: exit 0" 0 status;
+      Alcotest.(check int) "--prompt piped: a prompt before each command" 2 (prompts piped);
+      let quiet = Printf.sprintf "%s debug --prompt '' debug-steps.mod" (Filename.quote binary) in
+      let status, on_terminal = run (Printf.sprintf "script -qec %s /dev/null" (Filename.quote quiet)) in
+      Alcotest.(check int) "--prompt '': exit 0" 0 status;
+      Alcotest.(check int) "--prompt '' on a terminal: no prompt" 0 (prompts on_terminal))
 
 (* --save with a module read from standard input: the run goes on, and a warning says that module
    is not saved (it has no file), rather than nothing at all. *)

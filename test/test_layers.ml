@@ -76,8 +76,9 @@ let utf8_length line =
   !n
 
 (* The sources as written: not what the build generates beside them (menhir's parser, the
-   preprocessed files, the embedded installed environment). *)
-let generated = [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "robot_files.ml" ]
+   preprocessed files, the embedded installed environment and its image, the robot library). *)
+let generated =
+  [ "parser.ml"; "parser.mli"; "parser_messages.ml"; "installed_sources.ml"; "installed_image_data.ml"; "robot_files.ml" ]
 
 let rec sources dir =
   Sys.readdir dir |> Array.to_list |> List.concat_map (fun f ->

@@ -153,6 +153,10 @@ let hover () =
   Alcotest.(check bool) "a global of another module" true (contains h "VAR num nCount" && contains h "module Cell");
   let h = hover_value s "Cell.mod" 17 44 in
   Alcotest.(check bool) "a component of a kernel record (§2.14)" true (contains h "num x (component of pos)");
+  Alcotest.(check bool) "where it is declared: the kernel (§2.14)" true (contains h "built in (§2.14)");
+  let h = hover_value s "Tools.mod" 2 22 in
+  Alcotest.(check bool) "a parameter: its declaration and routine" true
+    (contains h "robtarget pAt" && contains h "routine Pick");
   Alcotest.(check bool) "off a name: null" true
     (member "result" (request s "textDocument/hover" (`Assoc [ text_doc (uri "Cell.mod"); pos 0 0 ])) = `Null)
 
@@ -204,7 +208,8 @@ let backup () =
   let root = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "rapid-sem-backup-%d" (Unix.getpid ())) in
   let file rel text =
     let p = List.fold_left Filename.concat root rel in
-    ignore (Sys.command (Printf.sprintf "mkdir -p %s" (Filename.quote (Filename.dirname p))));
+    let rec mkdir_p d = if not (Sys.file_exists d) then (mkdir_p (Filename.dirname d); Unix.mkdir d 0o755) in
+    mkdir_p (Filename.dirname p);
     write p text; p in
   let main = file [ "RAPID"; "TASK1"; "PROGMOD"; "Main.mod" ]
       "MODULE Cycle\n  PROC main()\n    nCycles := nCycles + 1;\n  ENDPROC\nENDMODULE\n" in
@@ -254,6 +259,9 @@ let completion () =
   Alcotest.(check string) "MoveL's required parameters as a snippet"
     "MoveL ${1:ToPoint}, ${2:Speed}, ${3:Zone}, ${4:Tool}" (str (member "insertText" movel));
   Alcotest.(check bool) "its signature as detail" true (contains (str (member "detail" movel)) "PERS tooldata Tool");
+  Alcotest.(check string) "its parameters beside the label (labelDetails)"
+    " ([\\Conc], ToPoint, [\\ID], Speed, [\\V|\\T], Zone, [\\Z], [\\Inpos], Tool, [\\WObj], [\\Corr], [\\TLoad])"
+    (str (get [ "labelDetails"; "detail" ] movel));
   let s2 = start ~snippets:false () in
   open_doc s2 "Tools.mod";
   Alcotest.(check bool) "no snippet for a client without them" true
@@ -267,6 +275,50 @@ let completion () =
   change s "Cell.mod" (13, 37) (13, 37) " \\";
   Alcotest.(check bool) "MoveL's optional parameters" true
     (let l = labels (complete s "Cell.mod" 13 39) in List.mem "WObj" l && List.mem "Conc" l && not (List.mem "Tool" l))
+
+(* {1 Signature help} *)
+
+let signature_help () =
+  let s = start () in
+  open_doc s "Tools.mod";
+  let help l c = member "result" (request s "textDocument/signatureHelp" (`Assoc [ text_doc (uri "Tools.mod"); pos l c ])) in
+  let active h =
+    let label = str (get [ "signatures" ] h |> to_list |> List.hd |> member "label") in
+    let p = List.nth (to_list (get [ "parameters" ] (List.hd (to_list (member "signatures" h))))) (int (member "activeParameter" h)) in
+    match to_list (member "label" p) with
+    | [ `Int a; `Int b ] -> String.sub label a (b - a)
+    | _ -> "?" in
+  (* line 4: "    MoveL Offs(pAt, 0, 0, 50), v100, z10, tGripper \WObj:=wobj0;" *)
+  Alcotest.(check string) "inside Offs( after one comma: its second parameter" "num XOffset" (active (help 4 20));
+  Alcotest.(check string) "MoveL after the point and the speed: Zone" "zonedata Zone" (active (help 4 37));
+  Alcotest.(check string) "MoveL's first required parameter at the start" "robtarget ToPoint" (active (help 4 10));
+  Alcotest.(check bool) "the installed routine's line" true
+    (contains (str (member "documentation" (List.hd (to_list (member "signatures" (help 4 37)))))) "straight line");
+  Alcotest.(check bool) "nothing on a line without a call" true (help 0 3 = `Null)
+
+(* {1 Quick fixes} *)
+
+let quick_fix () =
+  let s = start () in
+  let u = "untitled:fix" in
+  notify s "textDocument/didOpen"
+    (`Assoc [ ("textDocument", `Assoc [ ("uri", `String u); ("languageId", `String "rapid"); ("version", `Int 1);
+                                        ("text", `String "MODULE W\n  PROC p()\n    TPWrite \"\" \\Num:=ERRNUM + tol0.tload.mass;\n  ENDPROC\nENDMODULE\n") ]) ]);
+  let ds = diagnostics_of s u in
+  let with_hint = List.filter (fun d -> contains (str (member "message" d)) "hint: did you mean") ds in
+  Alcotest.(check bool) "a diagnostic with a hint" true (with_hint <> []);
+  let r = request s "textDocument/codeAction"
+      (`Assoc [ text_doc u; ("range", `Assoc [ ("start", `Assoc [ ("line", `Int 2); ("character", `Int 0) ]);
+                                                 ("end", `Assoc [ ("line", `Int 2); ("character", `Int 40) ]) ]);
+                ("context", `Assoc [ ("diagnostics", `List ds) ]) ]) in
+  let titles = List.map (fun a -> str (member "title" a)) (to_list (member "result" r)) in
+  Alcotest.(check bool) "Change tol0 to tool0 offered" true (List.mem "Change tol0 to tool0" titles);
+  let fix = List.find (fun a -> member "title" a = `String "Change tol0 to tool0") (to_list (member "result" r)) in
+  let edit = List.hd (to_list (get [ "edit"; "changes"; u ] fix)) in
+  Alcotest.(check string) "the edit writes the name" "tool0" (str (member "newText" edit));
+  Alcotest.(check range) "over the misspelt name" ((2, 30), (2, 34)) (range_of (member "range" edit));
+  Alcotest.(check (list string)) "the hint's names" [ "a"; "bb"; "c" ] (Lsp_features.suggested "did you mean a, bb or c?");
+  Alcotest.(check (list string)) "no other hint" [] (Lsp_features.suggested "write \\Num:=x (§4.6)")
 
 (* {1 Rename} *)
 
@@ -465,6 +517,7 @@ let nvim_session () =
       "definition Pick Tools.mod 2:7";
       "references nCount 5";
       "completion MoveL yes";
+      "signature MoveL zonedata Zone";
       "completion components x,y,z";
       "rename nCount nPicks 5";
       "renamed Cell.mod nPicks := nPicks + 1;";
@@ -485,6 +538,8 @@ let suite =
      Alcotest.test_case "document and workspace symbols" `Quick symbols;
      Alcotest.test_case "a backup's RAPID/TASKn is a task" `Quick backup;
      Alcotest.test_case "completion" `Quick completion;
+     Alcotest.test_case "signature help" `Quick signature_help;
+     Alcotest.test_case "quick fixes from the hints" `Quick quick_fix;
      Alcotest.test_case "rename and its refusals" `Quick rename;
      Alcotest.test_case "a line of what each installed routine does" `Quick routine_docs;
      Alcotest.test_case "protocol errors never end the server" `Quick protocol;

@@ -134,7 +134,7 @@ let test_description () =
   err (replace_line 6 "axis 4      0         90        302       0          -160   160")
     "r.robot:7:61: robot description error: axis 4: expected 7 numbers (a alpha d offset min max speed), found 6";
   err (replace_line 6 "axis 4      0         -90        302       0          -160   160   320")
-    "r.robot:7:1: robot description error: unsupported kinematic structure (axis 4: alpha must be 90): the inverse kinematics solves arms with a spherical wrist, twists -90 0 -90 90 -90 0 (doc/motion.md)";
+    "r.robot:7:1: robot description error: unsupported kinematic structure (axis 4: alpha must be 90): the inverse kinematics solves arms with twists -90 0 -90 90 -90 0 (doc/motion.md)";
   err (replace_line 9 "") "r.robot:11:1: robot description error: max_tcp_speed is missing";
   err (replace_line 1 "name \"IRB") "r.robot:2:6: robot description error: unterminated name: a closing \" is missing";
   (match Robot.load "/nonexistent/robot.txt" with

@@ -50,7 +50,8 @@ let no_entry () =
   PROC other()
   ENDPROC
 ENDMODULE|rapid} in
-  check_both "no main" p ~entry:"main" "no procedure main without parameters to run"
+  check_both "no main" p ~entry:"main"
+    "no procedure main without parameters to run (§9.1): run the task's procedure other with --entry other"
 
 (* A long path of zone points (a CAD path exported as thousands of fly-by MoveL) made every
    check of the running moves walk the queue once per queued move; [Planner.segment_spans]

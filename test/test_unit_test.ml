@@ -14,7 +14,7 @@ let options = Rapid_run.Run_options.{
     max_steps = 10_000_000; allow_unknown = false; stub_unmodelled = false; limits = Rapid_runtime.Limits.default;
     controller = { io = None; statement_time = Rapid_controller.World.default_statement_time;
                    max_time = Rapid_controller.World.default_max_time; epoch = Rapid_controller.World.default_epoch;
-                   services = { fs = None; fs_quota = None; net = []; map_address = [] } };
+                   services = { fs = None; fs_quota = None; net = []; map_address = []; egm_device = [] } };
     robot = None }
 
 let cell = "../examples/pickcell"
@@ -133,22 +133,41 @@ let errors () =
     (one_test ("    VAR num a{2};\n    VAR num i := 3;\n    a{i} := 1;\n" ^ handler));
   Alcotest.(check string) "no handler takes a failed assertion" "3:5 AssertFail: once"
     (one_test "    AssertFail \"once\";\n  ERROR\n    RETRY;\n");
-  Alcotest.(check string) "an unhandled error" "5:5 execution error ERR_OUTOFBND: no error handler took it (test_it)"
+  Alcotest.(check string) "an unhandled error" "5:5 execution error ERR_OUTOFBND (index 3 outside the dimension 1 to 2): no error handler took it \
+                                           (test_it)"
     (one_test "    VAR num a{2};\n    VAR num i := 3;\n    a{i} := 1;\n");
   Alcotest.(check string) "Stop ends the test" "passed" (one_test "    Stop;\n    AssertFail \"after Stop\";\n");
-  Alcotest.(check string) "the step limit" "- the step limit (10000000) is exhausted"
-    (one_test "    WHILE TRUE DO\n    ENDWHILE\n")
+  Alcotest.(check string) "the step limit, at the test's name" "2:8 the step limit (10000000) is exhausted"
+    (one_test "    WHILE TRUE DO\n    ENDWHILE\n");
+  (* What a failing test wrote goes under its message. *)
+  let _, file = module_ "Out" "  PROC test_it()\n    TPWrite \"gripper on\";\n    AssertTrue FALSE;\n  ENDPROC\n" in
+  match run (suite_of [ file ]) with
+  | [ r ] ->
+      Alcotest.(check (list string)) "output" [ "gripper on" ] r.output;
+      Alcotest.(check (list string)) "the report's lines"
+        [ "FAIL test_it                                  0.000 s";
+          "  " ^ file ^ ":4:5: AssertTrue: expected TRUE, actual FALSE"; "  | gripper on" ]
+        (U.Test_report.line r)
+  | _ -> Alcotest.fail "one test"
 
 (* Tests are parameterless procedures named test_ (any letter case); each starts with fresh
-   module data and a fresh controller. *)
+   module data (a variable, a persistent) and a fresh controller (its clock, its signals). *)
 let discovery () =
-  let _, file = module_ "Found" "  VAR num n := 0;\n  PROC TEST_One()\n    n := n + 1;\n    AssertEqual 1, n;\n  ENDPROC\n\
-                                  \  PROC test_two()\n    n := n + 1;\n    AssertEqual 1, n;\n  ENDPROC\n\
-                                  \  PROC test_param(num x)\n  ENDPROC\n  FUNC num test_f()\n    RETURN 1;\n  ENDFUNC\n\
-                                  \  PROC tester()\n  ENDPROC\n" in
+  let fresh = "    n := n + 1;\n    p := p + 1;\n    AssertEqual 1, n;\n    AssertEqual 1, p;\n\
+               \    AssertSignal doLamp, 0;\n    SetDO doLamp, 1;\n    AssertTrue ClkRead(c) = 0;\n\
+               \    ClkStart c;\n    WaitTime 1;\n" in
+  let _, file = module_ ~io:"signal doLamp do\n" "Found"
+      ("  VAR num n := 0;\n  PERS num p := 0;\n  VAR clock c;\n  PROC TEST_One()\n" ^ fresh ^ "  ENDPROC\n\
+       \  PROC test_two()\n" ^ fresh ^ "  ENDPROC\n\
+       \  PROC test_param(num x)\n  ENDPROC\n  FUNC num test_f()\n    RETURN 1;\n  ENDFUNC\n\
+       \  PROC tester()\n  ENDPROC\n") in
   let s = suite_of [ file ] in
   Alcotest.(check (list string)) "tests" [ "TEST_One"; "test_two" ] (List.map (fun (t : Suite.test) -> t.name) s.tests);
-  Alcotest.(check (list string)) "fresh data" [ "TEST_One passed"; "test_two passed" ] (verdicts (run s))
+  Alcotest.(check (list string)) "fresh data" [ "TEST_One passed"; "test_two passed" ] (verdicts (run s));
+  Alcotest.(check (list string)) "fresh data (machine)" [ "TEST_One passed"; "test_two passed" ]
+    (verdicts (run ~engine:`Machine s));
+  Alcotest.(check (list (float 0.01))) "each clock from 0: a second of WaitTime, and the statements" [ 1.; 1. ]
+    (List.map (fun (r : Suite.result) -> r.time) (run s))
 
 (* The assertions are rapid-sem test's only (R-test-a): check and run do not know them. *)
 let only_under_test () =
@@ -180,9 +199,9 @@ let directives () =
    | Error m -> Alcotest.(check bool) "not an option" true (contains m (file ^ ":1:13: test directive: --entry is not"))
    | Ok _ -> Alcotest.fail "--entry is refused")
 
-let coverage_of files =
+let coverage_of ?jobs files =
   let s = suite_of files in
-  let results = run ~coverage:true s in
+  let results = run ?jobs ~coverage:true s in
   List.iter (fun (r : Suite.result) -> Option.iter (U.Test_coverage.add s.coverage) r.hits) results;
   s.coverage
 
@@ -304,7 +323,7 @@ let junit () =
 
 (* Markup and bytes that are not UTF-8 in a message stay well-formed XML. *)
 let junit_escapes () =
-  let t : Suite.test = { name = "test_<x>"; module_name = "M&N"; file = "a\"b.mod"; line = 1; options } in
+  let t : Suite.test = { name = "test_<x>"; module_name = "M&N"; file = "a\"b.mod"; line = 1; col = 3; options } in
   let r : Suite.result = { test = t; verdict = Failed { at = Some "a.mod:1:1"; message = "expected \"<\xff>\", actual ]]>" };
                            time = 0.; output = [ "line\x01" ]; hits = None } in
   match parse_xml (U.Test_report.junit [ r ]) with
@@ -317,6 +336,8 @@ let junit_escapes () =
 let cobertura () =
   let files = Result.get_ok (Suite.module_files [ cell ]) in
   let c = coverage_of files in
+  Alcotest.(check string) "the counts of three child processes are those of one"
+    (U.Test_coverage.lcov c) (U.Test_coverage.lcov (coverage_of ~jobs:3 files));
   let doc = parse_xml (U.Test_coverage.cobertura c ~version:"rapid-sem test") in
   (match doc with Element ("coverage", _, _) -> () | _ -> Alcotest.fail "the root is coverage");
   let covered = int_of_string (Option.get (attr "lines-covered" doc))

@@ -409,10 +409,59 @@ let local_access (r : routine) i =
 let index st ~at (v : V.t) n =
   match v with
   | V.Num x | V.Dnum x ->
-      if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
-      else if x < 1. || x > float_of_int n then fail st ~at "ERR_OUTOFBND"
+      (* an integer within the bounds, the common case, with one conversion and no call *)
+      let k = int_of_float x in
+      if float_of_int k = x && k >= 1 && k <= n then k - 1
+      else if not (Float.is_integer x) then fail st ~at "ERR_NOTINTVAL"
+      else if x < 1. || x > float_of_int n then fail ~about:(Outcome.index_outside x n) st ~at "ERR_OUTOFBND"
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
+
+(* A whole place read and written where it is: module data, or an own slot of the activation. *)
+let plain_whole (r : routine) = function
+  | Global _ -> true
+  | Local i -> local_access r i = Own
+
+(* An activation's arrays, allocated in place for the common sizes: Array.make is a call to the
+   runtime, the largest part of a call with alias parameters. One function per element type,
+   so that each literal is built without the runtime's test for floats. *)
+let small_store n : V.t array =
+  match n with
+  | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
+  | 4 -> [| v_false; v_false; v_false; v_false |] | 5 -> [| v_false; v_false; v_false; v_false; v_false |]
+  | 6 -> [| v_false; v_false; v_false; v_false; v_false; v_false |]
+  | _ -> Array.make n v_false
+
+let small_boxes n : V.t array array =
+  match n with
+  | 1 -> [| [||] |] | 2 -> [| [||]; [||] |] | 3 -> [| [||]; [||]; [||] |] | 4 -> [| [||]; [||]; [||]; [||] |]
+  | _ -> Array.make n [||]
+
+let small_ints n : int array =
+  match n with 1 -> [| 0 |] | 2 -> [| 0; 0 |] | 3 -> [| 0; 0; 0 |] | 4 -> [| 0; 0; 0; 0 |] | _ -> Array.make n 0
+
+let small_present n : bool array =
+  match n with
+  | 1 -> [| true |] | 2 -> [| true; true |] | 3 -> [| true; true; true |] | 4 -> [| true; true; true; true |]
+  | _ -> Array.make n true
+
+let small_bools n : bool array =
+  match n with
+  | 1 -> [| false |] | 2 -> [| false; false |] | 3 -> [| false; false; false |]
+  | 4 -> [| false; false; false; false |]
+  | _ -> Array.make n false
+
+let small_kinds n : reference_kind array =
+  match n with
+  | 1 -> [| Ref_other |] | 2 -> [| Ref_other; Ref_other |] | 3 -> [| Ref_other; Ref_other; Ref_other |]
+  | 4 -> [| Ref_other; Ref_other; Ref_other; Ref_other |]
+  | _ -> Array.make n Ref_other
+
+let small_arguments n : Argument.t array =
+  match n with
+  | 1 -> [| Argument.Missing |] | 2 -> [| Argument.Missing; Argument.Missing |]
+  | 3 -> [| Argument.Missing; Argument.Missing; Argument.Missing |]
+  | _ -> Array.make n Argument.Missing
 
 (* The root slot of a place, for the binding of alias arguments. *)
 let rec root = function
@@ -430,6 +479,14 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
           fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Element (Whole w, [| ix |]) when plain_whole r w ->
+      (* One index into module data or an own slot: located as [locate] does (the index first,
+         then its bounds), without building the location. *)
+      let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
+      fun a ->
+        let v = ix a in
+        let elements = V.components (container a) in
+        elements.(index st ~at v (Array.length elements))
   | Element _ | Component _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
@@ -481,6 +538,13 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
+  | Binary ((Dnum_add | Dnum_sub as op), { e = Read (Whole (Local i)); _ }, { e = Literal (V.Dnum q as v); _ })
+    when local_access r i = Own ->
+      (* x +- k on an own dnum slot, read without a call (as [binary]'s dnum rows) *)
+      let slow u = check st ~at (Arith.binary op u v) in
+      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+      if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u)
+      else fun a -> (match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u)
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -516,6 +580,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
 and binary st ~at (op : Arith.binary) x y : act -> V.t =
   let slow u v = check st ~at (Arith.binary op u v) in
   let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+  let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
   (* An integer of at most 24 bits is a single already, and finite. *)
   let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op with
@@ -541,6 +606,24 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
       (match u, v with V.Num p, V.Num q -> if p = q then v_true else v_false | _ -> slow u v)
   | Not_equal -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Num p, V.Num q -> if p = q then v_false else v_true | _ -> slow u v)
+  (* The rows on two dnums: Arith's rule (one operation in double precision; an infinite result
+     is ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO) without building a result. *)
+  | Dnum_add -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p +. q) | _ -> slow u v)
+  | Dnum_sub -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p -. q) | _ -> slow u v)
+  | Dnum_mul -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> dnum (p *. q) | _ -> slow u v)
+  | Dnum_div -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q when q <> 0. -> dnum (p /. q) | _ -> slow u v)
+  | Dnum_lt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p < q then v_true else v_false | _ -> slow u v)
+  | Dnum_le -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p <= q then v_true else v_false | _ -> slow u v)
+  | Dnum_gt -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p > q then v_true else v_false | _ -> slow u v)
+  | Dnum_ge -> fun a -> let u = x a in let v = y a in
+      (match u, v with V.Dnum p, V.Dnum q -> if p >= q then v_true else v_false | _ -> slow u v)
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
 (* The same with a num literal on the right, which then costs no call. *)
@@ -584,6 +667,17 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
             | Num_ge -> fun a -> (match x a with V.Num p -> p >= q | u -> slow u)
             | Equal -> fun a -> (match x a with V.Num p -> p = q | u -> slow u)
             | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
+    | (Arith.Dnum_lt | Dnum_le | Dnum_gt | Dnum_ge), Literal (V.Dnum q as v) ->
+        (* A dnum literal on the right: compared without a call. *)
+        let x = match x.e with
+          | Read (Whole (Local i)) when local_access r i = Own -> fun a -> a.store.(i)
+          | _ -> expr st r ~at x in
+        let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op with
+            | Dnum_lt -> fun a -> (match x a with V.Dnum p -> p < q | u -> slow u)
+            | Dnum_le -> fun a -> (match x a with V.Dnum p -> p <= q | u -> slow u)
+            | Dnum_gt -> fun a -> (match x a with V.Dnum p -> p > q | u -> slow u)
+            | _ -> fun a -> (match x a with V.Dnum p -> p >= q | u -> slow u))
     | _ ->
     let x = expr st r ~at x and y = expr st r ~at y in
     let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
@@ -600,6 +694,14 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
                         match u, v with V.Num p, V.Num q -> p = q | _ -> slow u v)
     | Not_equal -> Some (fun a -> let u = x a in let v = y a in
                         match u, v with V.Num p, V.Num q -> not (p = q) | _ -> slow u v)
+    | Dnum_lt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p < q | _ -> slow u v)
+    | Dnum_le -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p <= q | _ -> slow u v)
+    | Dnum_gt -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p > q | _ -> slow u v)
+    | Dnum_ge -> Some (fun a -> let u = x a in let v = y a in
+                        match u, v with V.Dnum p, V.Dnum q -> p >= q | _ -> slow u v)
     | _ -> None
   in
   let general () = let f = expr st r ~at e in fun a -> V.bool_value (f a) in
@@ -683,6 +785,21 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
             | _ -> fun _ -> None)
         | _ -> fun _ -> None
       in
+      match place with
+      | Whole (Global g) ->
+          (* module data: its location is known; [refused] is for a caller's INOUT parameter *)
+          let globals = st.globals in
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind a;
+            c.ext.module_data.(i) <- module_data a;
+            if p.p_optional then c.ext.present.(i) <- true
+      | Whole (Local s) when local_access caller s = Own ->
+          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind a;
+            c.ext.module_data.(i) <- module_data a;
+            if p.p_optional then c.ext.present.(i) <- true
+      | _ ->
       fun a (c : act) ->
         let box, j = l a in
         (match refused a with Some name -> fail st ~at name | None -> ());
@@ -887,7 +1004,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             e.call site values in
       fun a ->
         let pending = ref 0 in
-        let values = Array.make n Argument.Missing in
+        let values = small_arguments n in
         for i = 0 to n - 1 do
           let v = args.(i) a in
           let what, bytes = cost.(i) v in
@@ -1171,7 +1288,8 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
       (* StartMoveRetry: StartMove, then the RETRY statement's rule; outside an error handler
          StartMove alone (R-7.6-b). *)
       if caller_act.ext.current = None then no_value
-      else if caller_act.ext.retries >= st.limits.retry_limit then fail st ~at:call_at "ERR_EXCRTYMAX"
+      else if caller_act.ext.retries >= st.limits.retry_limit then
+        fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:call_at "ERR_EXCRTYMAX"
       else begin caller_act.ext.retries <- caller_act.ext.retries + 1; raise_notrace Retry_signal end
 
 (* A waiting instruction (doc/controller.md): interrupts are served while it waits, and an
@@ -1306,15 +1424,13 @@ and activation_shape (r : routine) =
 
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
-    store = (match size with
-        | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
-        | _ -> Array.make size v_false);
+    store = small_store size;
     ext = (if own_extension then
-             { boxes = (if aliases then Array.make n [||] else [||]);
-               idx = (if aliases then Array.make n 0 else [||]);
-               present = (if optional then Array.make n true else [||]);
-               bound = (if aliases then Array.make n Ref_other else [||]);
-               module_data = (if aliases then Array.make n false else [||]);
+             { boxes = (if aliases then small_boxes n else [||]);
+               idx = (if aliases then small_ints n else [||]);
+               present = (if optional then small_present n else [||]);
+               bound = (if aliases then small_kinds n else [||]);
+               module_data = (if aliases then small_bools n else [||]);
                retries = 0; current = None }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
@@ -1569,6 +1685,17 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Element (Whole w, [| ix |]) when plain_whole r w ->
+          (* As the general case below, the element located (index, bounds) before the value,
+             without building the location. *)
+          let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
+          fun a ->
+            let iv = ix a in
+            let elements = V.components (container a) in
+            let j = index st ~at iv (Array.length elements) in
+            let v = value a in
+            if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
+            true
       | _ ->
           let l = locate st r ~at place in
           fun a ->
@@ -1621,21 +1748,24 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* R-7.3-p: the NOSTEPIN routine's own RETRY, counted there (rule resume-retry). *)
           let inner = List.assq a st.resuming in
           if inner.ext.retries >= st.limits.retry_limit then begin
-            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat; about = None;
+            let e = { name = "ERR_EXCRTYMAX"; number = number_of st "ERR_EXCRTYMAX"; at = s.sat;
+                      about = Some (Outcome.retries_beyond st.limits.retry_limit);
                       chain = None } in
             emit_raised st e;
             raise (stop st inner e)
           end
           else begin inner.ext.retries <- inner.ext.retries + 1; raise_notrace Retry_signal end
         end
-        else if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+        else if a.ext.retries >= st.limits.retry_limit then
+          fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:s.sat "ERR_EXCRTYMAX"
         else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
   | Trynext ->
       fun a -> (
         match a.ext.current with
         | Some e when st.async_errors <> [] && not (List.memq a st.kept) && List.memq e st.async_errors ->
             (* §7.4: "TRYNEXT executes as RETRY" for an asynchronous error (R-7.4-m). *)
-            if a.ext.retries >= st.limits.retry_limit then fail st ~at:s.sat "ERR_EXCRTYMAX"
+            if a.ext.retries >= st.limits.retry_limit then
+              fail ~about:(Outcome.retries_beyond st.limits.retry_limit) st ~at:s.sat "ERR_EXCRTYMAX"
             else begin a.ext.retries <- a.ext.retries + 1; raise_notrace Retry_signal end
         | _ -> raise_notrace Trynext_signal)
   | Connect (place, trap) ->
@@ -1708,7 +1838,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
            | false -> continue := false; goes_on := false
            | exception Continue_loop -> at_round st a
            | exception Break_loop -> continue := false);
-          if !continue then v := V.num_value (check st ~at (Arith.binary Arith.Num_add (V.Num !v) (V.Num step)))
+          (* num + num (Arith's rule: rounded to single, R-2.13-a; infinite: ERR_OVERFLOW) *)
+          if !continue then begin
+            let next = !v +. step in
+            v := if is_small_integer next then next
+              else
+                let y = Int32.float_of_bits (Int32.bits_of_float next) in
+                if Float.is_finite y then y else fail st ~at "ERR_OVERFLOW"
+          end
         done;
         !goes_on
   | Test (subject, cases, default) ->
@@ -2003,7 +2140,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
   let program = host.prepare program in
   let lower = String.lowercase_ascii entry in
   match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
-  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | None -> Error (Rapid_runtime.Task_rules.no_entry program entry)
   | Some (_, k) ->
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)

@@ -33,12 +33,13 @@ and run = {
   motion_task : string option;
   task_entries : (string * string) list;
   robot : string option;
+  egm_devices : string list;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
                max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
                tasks = []; schedule = None; motion_task = None; task_entries = [];
-               robot = None }
+               robot = None; egm_devices = [] }
 
 let known_formats = [ "1"; "2"; "3"; "4" ]
 let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
@@ -207,6 +208,9 @@ let read path =
                   (* The files HOME: holds at the start, a folder beside the case (doc/services.md). *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
                   with_run case (fun r -> { r with home = Some (Filename.concat dir v) })
+              | Some ("egm-device", v) when Result.is_ok (Rapid_controller.Egm_channel.parse_devices v) ->
+                  (* A UdpUc device of EGM (rapid-sem run --egm-device, doc/services.md). *)
+                  with_run case (fun r -> { r with egm_devices = r.egm_devices @ [ v ] })
               | Some (("statement-time" | "max-time") as k, v) -> (
                   match float_of_string_opt v with
                   | Some f when f >= 0. && Float.is_finite f ->

@@ -46,6 +46,7 @@ and run = {
   task_entries : (string * string) list;
       (** format 4, [! @entry TASK=ROUTINE]: that task's entry routine (the others: [entry]) *)
   robot : string option;          (** [! @robot FILE]: the robot description (rapid-sem run --robot), beside the case *)
+  egm_devices : string list;      (** [! @egm-device NAME=HOST:PORT]: UdpUc devices of EGM (--egm-device) *)
 }
 
 val read : string -> t

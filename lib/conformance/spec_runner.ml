@@ -54,7 +54,9 @@ let execute engine case (run : Spec_case.run) ~io program =
   (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
   let sandbox = Rapid_controller.File_sandbox.temporary () in
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-  let services = Rapid_controller.Services.create ~sandbox () in
+  let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
+      run.egm_devices in
+  let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
   Rapid_controller.World.set_services world services;
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
   let module E = (val Rapid_run.Run.engine (match engine with Machine -> `Machine | Closure -> `Closure)) in
@@ -139,7 +141,9 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
   let sandbox = Rapid_controller.File_sandbox.temporary () in
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-  let services = Rapid_controller.Services.create ~sandbox () in
+  let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
+      run.egm_devices in
+  let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
   Rapid_controller.World.set_services world services;
   let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in

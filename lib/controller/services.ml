@@ -13,19 +13,31 @@ type t = {
   quota : int;
   mutable written : int;  (* bytes written into files in this run, against [quota] *)
   mutable next : int;
+  egm_devices : Egm_channel.device list;
+  mutable egm_channels : Egm_channel.t list;  (* open, closed with the run's services *)
 }
 
 let max_file_size = 64 * 1024 * 1024
 let max_total_size = 256 * 1024 * 1024
 
-let create ?sandbox ?sockets ?(max_file_size = max_file_size) ?(max_total_size = max_total_size) () =
+let create ?sandbox ?sockets ?(egm_devices = []) ?(max_file_size = max_file_size) ?(max_total_size = max_total_size)
+    () =
   { sandbox = (match sandbox with Some s -> s | None -> File_sandbox.create File_sandbox.default_root);
     sockets = (match sockets with Some s -> s | None -> Sockets.create ());
     files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; texts = Text_tables.create ();
-    file_limit = max_file_size; quota = max_total_size; written = 0; next = 1 }
+    file_limit = max_file_size; quota = max_total_size; written = 0; next = 1;
+    egm_devices; egm_channels = [] }
 
 let sandbox t = t.sandbox
 let sockets t = t.sockets
+let egm_devices t = t.egm_devices
+
+let open_egm t d =
+  Result.map (fun c -> t.egm_channels <- c :: t.egm_channels; c) (Egm_channel.open_channel d)
+
+let close_egm t c =
+  Egm_channel.close c;
+  t.egm_channels <- List.filter (fun x -> x != c) t.egm_channels
 let texts t = t.texts
 let max_files = 32
 
@@ -194,4 +206,6 @@ let set_rawbytes_length t id n =
 let close_all t =
   List.iter (close_file t) (List.of_seq (Hashtbl.to_seq_keys t.files));
   Hashtbl.reset t.dirs;
-  Sockets.close_all t.sockets
+  Sockets.close_all t.sockets;
+  List.iter Egm_channel.close t.egm_channels;
+  t.egm_channels <- []

@@ -6,13 +6,23 @@
 type t
 
 val create :
-  ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?max_file_size:int -> ?max_total_size:int -> unit -> t
+  ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?egm_devices:Egm_channel.device list -> ?max_file_size:int ->
+  ?max_total_size:int -> unit -> t
 (** Without [sandbox], {!File_sandbox.default_root}; without [sockets], loopback only;
     [max_file_size] bytes a file may hold (default {!max_file_size}), [max_total_size] bytes
     the run may write into files in all (default {!max_total_size}). *)
 
 val sandbox : t -> File_sandbox.t
 val sockets : t -> Sockets.t
+
+val egm_devices : t -> Egm_channel.device list
+(** The UdpUc devices of EGM the run knows (--egm-device); none by default. *)
+
+val open_egm : t -> Egm_channel.device -> (Egm_channel.t, string) result
+(** The channel of an EGM process; those still open close with the run's other services. *)
+
+val close_egm : t -> Egm_channel.t -> unit
+
 val texts : t -> Text_tables.t
 (** The text tables installed in the run (chapter 15). *)
 

@@ -3,8 +3,11 @@ module Json_text = Rapid_runtime.Json_text  (* every JSON written is valid UTF-8
 (* done and stuck are in the machine's list but are not rules (doc/semantics.md, "Not rules"):
    done is the answer after the end, stuck a bug. *)
 let rule_names =
-  List.rev (List.fold_left (fun acc r -> if List.mem r acc || r = "done" || r = "stuck" then acc else r :: acc) []
-              Rapid_semantics.Machine.rule_names)
+  (* computed at every start of rapid-sem: a table of those seen, not a scan of the list *)
+  let seen = Hashtbl.create 512 in
+  List.filter (fun r ->
+      if Hashtbl.mem seen r || r = "done" || r = "stuck" then false else (Hashtbl.replace seen r (); true))
+    Rapid_semantics.Machine.rule_names
 
 type t = {
   programs : int;

@@ -18,11 +18,12 @@ let text v = match Text_format.value_text v with s -> s | exception V.Type_misma
 
 let num = Text_format.num_text
 
-(* The failure's message: the programmer's \Msg first, then the routine and what it found. *)
+(* The failure's message: the programmer's \Msg first, then the routine and what it found; one
+   line, its control characters shown as the FlexPendant shows them (\0A). *)
 let failed ctx args routine detail =
   let detail = routine ^ ": " ^ detail in
   match value ctx args "Msg" with
-  | Some (V.String m) -> P.Assertion_failed (m ^ ": " ^ detail)
+  | Some (V.String m) -> P.Assertion_failed (Text_format.display m ^ ": " ^ detail)
   | _ -> P.Assertion_failed detail
 
 let passed = P.Returned None
@@ -153,6 +154,6 @@ let call ctx motion name args =
             | None -> Some P.Not_modelled)
     | "assertfail" -> (
         match value ctx args "Msg" with
-        | Some (V.String m) -> Some (P.Assertion_failed ("AssertFail: " ^ m))
+        | Some (V.String m) -> Some (P.Assertion_failed ("AssertFail: " ^ Text_format.display m))
         | _ -> Some (P.Failed "ERR_ARGVALERR"))
     | _ -> None

@@ -934,3 +934,17 @@ let call ctx st name args =
     if not st.async_raised && st.new_move = None && st.first_poll = None then no_effects
     else { at_move = st.async_raised; new_move = st.new_move; first_poll = st.first_poll } in
   Option.map (fun o -> (o, effects)) outcome
+
+(* ------------------------------------------------------------------ guided motion *)
+
+let axes_now st ~now = match P.joints_at st.planner now with Ok q -> q | Error _ -> arm_end_joints st now
+
+(* One cycle of Externally Guided Motion (Egm_routines): the arm goes to its next axis angles in
+   one cycle, a stop point, as a MoveAbsJ \T would; the active tool and work object stay. *)
+let servo ctx st q ~duration =
+  let now = W.now ctx.world in
+  let fine = Option.get (D.find D.zonedata "fine") and speed = Option.get (D.find D.speeddata "v1000") in
+  forget st ~now;
+  match P.plan st.planner ~now (P.move ~t:duration ~label:"EGM" speed fine (P.Abs_joint q)) with
+  | Error e -> ctx.log (Printf.sprintf "EGM: %s" (MM.Motion_error.name e)); Error (error_name e)
+  | Ok { id; _ } -> planned st id; st.last_planned <- Some id; Ok ()

@@ -93,3 +93,13 @@ val wait_abandoned : state -> Rapid_controller.World.wait -> now:float -> unit
 val move_waits_in_progress : state -> int
 (** How many move instructions the program pointer waits in (a trap's move above the main one's
     makes two); 0 when the task has ended. *)
+
+(** {1 For Externally Guided Motion (lib/installed/egm_routines.ml)} *)
+
+val axes_now : state -> now:float -> float array
+(** The arm's six axis angles (degrees) at this time, as CJointT reads them. *)
+
+val servo : Primitive.context -> state -> float array -> duration:float -> (unit, string) result
+(** The arm goes from where it is now to these axis angles in [duration] seconds and stops
+    there (one EGM cycle); [Error] with the ERR_ name a move would raise (ERR_ROBLIMIT beyond an
+    axis's range), its reason in the event log. *)

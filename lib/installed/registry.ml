@@ -45,6 +45,9 @@ let bodies = [
         Option.map (fun r -> (r, no_effects)) (Service_routines.call ~standstill ctx name args)) };
   { module_name = "rmq"; reach = (fun _ -> World); claims = (fun _ -> Rmq_routines.modelled);
     answer = plain Rmq_routines.call };
+  { module_name = "egm"; reach = Egm_routines.reach; claims = (fun _ -> Egm_routines.modelled);
+    answer = (fun ~standstill:_ ctx motion name args ->
+        Option.map (fun r -> (r, no_effects)) (Egm_routines.call ctx motion name args)) };
   { module_name = "system"; reach = (fun _ -> Values); claims = (fun _ -> System_routines.modelled);
     answer = (fun ~standstill:_ ctx motion name args ->
         Option.map (fun r -> (r, no_effects)) (System_routines.call ctx motion name args)) };

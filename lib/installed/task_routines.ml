@@ -24,7 +24,9 @@ let task_list = function
   | Location (box, i, _) -> (
       match box.(i) with
       | V.Array es ->
-          Some (Array.to_list (Array.map (function V.Record [| V.String s |] -> s | _ -> "") es))
+          (* R-14-f-empty: an entry left "" (a list declared larger than the cell) names no task. *)
+          Some (List.filter (( <> ) "")
+                  (Array.to_list (Array.map (function V.Record [| V.String s |] -> s | _ -> "") es)))
       | _ -> None)
   | _ -> None
 

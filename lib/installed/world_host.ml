@@ -49,6 +49,7 @@ let make w motion : Host.t =
         Option.map (fun (error, move, handled) -> { Host.error; move; handled }) (MR.take_org_error motion));
     set_backward = MR.set_backward motion;
     wait_abandoned = (fun wait ->
-        W.host_wait_end w; Rmq_routines.wait_abandoned w wait; MR.wait_abandoned motion wait ~now:(W.now w));
+        W.host_wait_end w; Rmq_routines.wait_abandoned w wait; Egm_routines.wait_abandoned motion wait;
+        MR.wait_abandoned motion wait ~now:(W.now w));
     prepare = MR.robot_data motion;
   }

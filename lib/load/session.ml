@@ -28,6 +28,10 @@ let signal_module (io : Io.t) =
     | Ok m -> Ok (Some m)
     | Error d -> Error d
 
+(* The installed environment computed at build time (Installed_image), which this reference
+   links into every program that loads a task. *)
+let () = ignore (Installed_image.in_use ())
+
 let installed ?(testing = false) ?(io = Io.empty) () =
   let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
   match Rapid_typing.Installed_env.modules (), tests, signal_module io with

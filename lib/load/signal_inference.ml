@@ -89,13 +89,13 @@ let infer ~installed modules =
   let table = signatures (installed @ modules) in
   let known = declared (installed @ modules) in
   let found = ref [] in
-  let note name kind =
+  let note at name kind =
     if not (Hashtbl.mem known (lower name))
-    && not (List.exists (fun (n, _) -> lower n = lower name) !found) then
-      found := (name, kind) :: !found in
+    && not (List.exists (fun (n, _, _) -> lower n = lower name) !found) then
+      found := (name, kind, at) :: !found in
   let entire = function Ast.Data_reference (Ast.Entire n) -> Some n | _ -> None in
   let rec expr (e : Ast.expression_desc) = match e with
-    | Ast.Function_call { func; arguments; _ } -> call func arguments
+    | Ast.Function_call { func; arguments; argument_regions; _ } -> call func arguments argument_regions
     | Ast.Aggregate (es, _) -> Array.iter expr es
     | Ast.Unary (_, e, _) -> expr e
     | Ast.Binary (_, a, b) -> expr a.it; expr b.it
@@ -105,27 +105,29 @@ let infer ~installed modules =
     | Ast.Element (_, es) -> List.iter (fun (e : Ast.expression) -> expr e.it) es
     | Ast.Component (r, _) -> reference r.it
     | _ -> ()
-  and call func (args : Ast.argument_desc array) =
+  and call func (args : Ast.argument_desc array) (regions : Source.region array) =
     let sg = Option.bind (ident_name func) (fun n -> Hashtbl.find_opt table (lower n)) in
     let required = ref (match sg with Some s -> s.required | None -> []) in
-    Array.iter (fun (a : Ast.argument_desc) ->
+    Array.iteri (fun i (a : Ast.argument_desc) ->
+        let at = if i < Array.length regions then regions.(i) else Source.no_region in
         match a with
         | Ast.Required_argument (_, e, _) | Ast.Positional_argument e ->
             (match !required with
-             | k :: rest -> required := rest; (match k, entire e with Some k, Some n -> note n k | _ -> ())
+             | k :: rest -> required := rest; (match k, entire e with Some k, Some n -> note at n k | _ -> ())
              | [] -> ());
             expr e
         | Ast.Optional_argument (name, Some e) ->
             (match sg, ident_name name, entire e.it with
-             | Some s, Some p, Some n -> Option.iter (note n) (List.assoc_opt (lower p) s.optional)
+             | Some s, Some p, Some n -> Option.iter (note e.at n) (List.assoc_opt (lower p) s.optional)
              | _ -> ());
             expr e.it
         | _ -> ()) args
   in
   let rec stmt (s : Ast.statement) = match s.it with
     | Ast.Assignment (r, e) -> reference r.it; expr e.it
-    | Ast.Procedure_call (Ast.Procedure_name p, args, _) -> call p args
-    | Ast.Procedure_call (Ast.Late_bound e, args, _) -> expr e.it; call { it = Ast.ID_placeholder; at = e.at } args
+    | Ast.Procedure_call (Ast.Procedure_name p, args, regions) -> call p args regions
+    | Ast.Procedure_call (Ast.Late_bound e, args, regions) ->
+        expr e.it; call { it = Ast.ID_placeholder; at = e.at } args regions
     | Ast.Return (Some e) | Ast.Raise (Some e) -> expr e.it
     | Ast.If { condition; then_branch; elseifs; else_branch } ->
         expr condition.it; stmts then_branch;
@@ -156,7 +158,7 @@ let infer ~installed modules =
 
 let extend (io : Io.t) inferred =
   let have n = List.exists (fun (s : Io.signal) -> lower s.name = lower n) io.signals in
-  let extra = List.filter_map (fun (name, kind) ->
+  let extra = List.filter_map (fun (name, kind, _) ->
       if have name then None else Some { Io.name; kind; initial = 0.; line = 0; col = 0 }) inferred in
   { io with signals = io.signals @ extra }
 
@@ -166,5 +168,10 @@ let for_run ~allow_unknown ~stub_unmodelled modules io =
     match Rapid_typing.Installed_env.modules () with
     | Error _ -> (io, [])
     | Ok installed ->
-        let io' = extend io (infer ~installed modules) in
-        (io', List.filter (fun s -> not (List.memq s io.signals)) io'.signals)
+        let inferred = infer ~installed modules in
+        let io' = extend io inferred in
+        let first_use (s : Io.signal) =
+          match List.find_opt (fun (n, _, _) -> lower n = lower s.name) inferred with
+          | Some (_, _, at) -> at
+          | None -> Source.no_region in
+        (io', List.filter_map (fun s -> if List.memq s io.signals then None else Some (s, first_use s)) io'.signals)

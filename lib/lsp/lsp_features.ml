@@ -25,9 +25,15 @@ let location index uri a b : Yojson.Safe.t = `Assoc [ ("uri", `String uri); ("ra
 let where index (d : I.decl) =
   match d.uri with
   | None -> (
+      let of_routine = match d.routine with Some r -> Printf.sprintf "of %s, " r | None -> "" in
       match d.installed_file with
-      | Some "built-in" | None -> "built in (ch. 13)"
-      | Some f -> Printf.sprintf "installed (%s, ch. 13)" (Filename.basename f))
+      | Some "built-in" | None ->
+          of_routine ^ (match d.kind with
+              | Record _ | Component _ -> "built in (§2.14)"
+              | Alias _ -> "built in (§2.15)"
+              | Atomic when List.mem (key d.name) [ "num"; "dnum"; "bool"; "string" ] -> "built in (§2.13)"
+              | _ -> "installed (ch. 13)")
+      | Some f -> Printf.sprintf "%sinstalled (%s, ch. 13)" of_routine (Filename.basename f))
   | Some uri ->
       let line = match source_text index uri with
         | Some t -> Printf.sprintf ", line %d" ((Lsp_text.position_of_offset t d.name_start).line + 1)
@@ -38,6 +44,7 @@ let where index (d : I.decl) =
 (* The declaration as written, on one line, when it is short enough to show. *)
 let written index (d : I.decl) =
   match d.uri, d.kind with
+  | _, Data { parameter = true; _ } | _, Data { storage = "FOR"; _ } -> None
   | Some uri, (Data _ | Alias _) -> (
       match source_text index uri with
       | Some t ->
@@ -194,7 +201,16 @@ let item ~snippets (d : I.decl) : Yojson.Safe.t =
   let insert = match snippets, snippet d with
     | true, Some s when s <> d.name -> [ ("insertText", `String s); ("insertTextFormat", `Int 2) ]
     | _ -> [] in
+  (* LSP 3.17's labelDetails: the parameters beside the name, as ABB's syntax lists them *)
+  let label_details = match d.kind with
+    | Routine { slots; routine = Proc | Func _ } ->
+        let slot = function
+          | I.Required q -> q.I.p_name
+          | Optional qs -> "[\\" ^ String.concat "|\\" (List.map (fun (q : I.param) -> q.p_name) qs) ^ "]" in
+        [ ("labelDetails", `Assoc [ ("detail", `String (" (" ^ String.concat ", " (List.map slot slots) ^ ")")) ]) ]
+    | _ -> [] in
   `Assoc ([ ("label", `String d.name); ("kind", `Int (item_kind d)); ("detail", `String (I.signature d)) ]
+          @ label_details
           @ (match doc with Some s -> [ ("documentation", `String s) ] | None -> [])
           @ insert)
 
@@ -293,6 +309,72 @@ let completion ws uri pos ~snippets : Yojson.Safe.t =
         else List.map (item ~snippets) (I.visible_at index uri offset) in
       `Assoc [ ("isIncomplete", `Bool false); ("items", `List items) ]
 
+(* {1 Signature help} *)
+
+(* The separators of required arguments (§4.6: a comma; an optional argument may have one
+   before it too) between [start] and [stop], outside parentheses, brackets, braces and strings. *)
+let commas text start stop =
+  let depth = ref 0 and quoted = ref false and n = ref 0 in
+  for i = start to stop - 1 do
+    match text.[i] with
+    | '"' -> quoted := not !quoted
+    | ('(' | '[' | '{') when not !quoted -> incr depth
+    | (')' | ']' | '}') when not !quoted -> decr depth
+    | ',' when not !quoted && !depth = 0 -> incr n
+    | _ -> ()
+  done;
+  !n
+
+let signature_help ws uri pos : Yojson.Safe.t =
+  let index = W.index ws uri in
+  match W.text ws uri with
+  | None -> `Null
+  | Some t ->
+      let offset = Lsp_text.offset_of_position t pos in
+      let text = Lsp_text.text t in
+      let b = Lsp_text.byte_of_offset t offset in
+      let line_start = Lsp_text.byte_of_offset t (Lsp_text.offset_of_position t { pos with character = 0 }) in
+      match callee_before text line_start b with
+      | None -> `Null
+      | Some name -> (
+          match I.lookup_at index uri offset name with
+          | Some ({ kind = Routine { slots; routine }; _ } as r) when routine <> I.Trap_routine ->
+              (* the arguments begin after the name's last use before the cursor (and after the
+                 '(' of a function call) *)
+              let n = String.length name in
+              let rec last i best =
+                if i + n > b then best
+                else if key (String.sub text i n) = key name && (i = 0 || not (is_ident_char text.[i - 1]))
+                        && (i + n >= String.length text || not (is_ident_char text.[i + n])) then last (i + 1) (i + n)
+                else last (i + 1) best in
+              let after = last line_start line_start in
+              let rec skip i = if i < b && (text.[i] = ' ' || text.[i] = '\t') then skip (i + 1) else i in
+              let after = let i = skip after in if i < b && text.[i] = '(' then i + 1 else after in
+              let k = commas text after b in
+              let required = List.filteri (fun _ s -> match s with I.Required _ -> true | _ -> false) slots in
+              let active = match List.nth_opt required (min k (List.length required - 1)) with
+                | Some s -> let rec pos i = function [] -> 0 | x :: rest -> if x == s then i else pos (i + 1) rest in
+                    pos 0 slots
+                | None -> 0 in
+              let prefix = match routine with
+                | Func ret -> Printf.sprintf "FUNC %s %s (" ret r.name
+                | _ -> Printf.sprintf "PROC %s (" r.name in
+              let label = Buffer.create 80 in
+              Buffer.add_string label prefix;
+              let params = List.mapi (fun i s ->
+                  if i > 0 then Buffer.add_string label ", ";
+                  let a = Buffer.length label in
+                  Buffer.add_string label (I.slot_text s);
+                  `Assoc [ ("label", `List [ `Int a; `Int (Buffer.length label) ]) ]) slots in
+              Buffer.add_string label ")";
+              let doc = if r.uri = None then Lsp_routine_docs.find r.name else None in
+              `Assoc [ ("signatures", `List [ `Assoc ([ ("label", `String (Buffer.contents label));
+                                                        ("parameters", `List params) ]
+                                                      @ (match doc with Some d -> [ ("documentation", `String d) ]
+                                                                      | None -> [])) ]);
+                       ("activeSignature", `Int 0); ("activeParameter", `Int active) ]
+          | _ -> `Null)
+
 (* {1 Rename} *)
 
 let valid_identifier s =
@@ -384,3 +466,50 @@ let rename ws uri pos new_name : Yojson.Safe.t =
       Hashtbl.replace by_uri u (edit :: Option.value (Hashtbl.find_opt by_uri u) ~default:[])) uses;
   `Assoc [ ("changes", `Assoc (Hashtbl.fold (fun u edits acc -> (u, `List (List.rev edits)) :: acc) by_uri []
                                |> List.sort compare)) ]
+
+(* {1 Quick fixes} *)
+
+(* The names of a hint "did you mean a, b or c?" (Rapid_syntax.Suggest), when it is one. *)
+let suggested hint =
+  let prefix = "did you mean " in
+  let n = String.length prefix and m = String.length hint in
+  if m > n + 1 && String.sub hint 0 n = prefix && hint.[m - 1] = '?' then
+    let names = String.sub hint n (m - n - 1) in
+    let words = List.concat_map (String.split_on_char ',')
+        (String.split_on_char ' ' names) |> List.filter (fun w -> w <> "" && w <> "or") in
+    if words <> [] && List.for_all (fun w -> valid_identifier w = Ok ()) words then words else []
+  else []
+
+let code_actions ws uri (diagnostics : Yojson.Safe.t list) : Yojson.Safe.t =
+  match W.text ws uri with
+  | None -> `List []
+  | Some t ->
+      `List (List.concat_map (fun (d : Yojson.Safe.t) ->
+          let field k (j : Yojson.Safe.t) = match j with `Assoc l -> List.assoc_opt k l | _ -> None in
+          let message = match field "message" d with Some (`String m) -> m | _ -> "" in
+          let hint = match String.split_on_char '\n' message with
+            | _ :: rest -> List.find_map (fun l ->
+                let p = "hint: " in
+                if String.length l > String.length p && String.sub l 0 (String.length p) = p
+                then Some (String.sub l (String.length p) (String.length l - String.length p)) else None) rest
+            | [] -> None in
+          let range = field "range" d in
+          let ends = Option.bind range (fun r ->
+              match Option.bind (field "start" r) Lsp_text.position_of_json,
+                    Option.bind (field "end" r) Lsp_text.position_of_json with
+              | Some a, Some b -> Some (a, b)
+              | _ -> None) in
+          match hint, ends, range with
+          | Some h, Some (a, b), Some range ->
+              (* only where the range holds one name, the one the hint corrects *)
+              let written = Lsp_text.slice t (Lsp_text.offset_of_position t a) (Lsp_text.offset_of_position t b) in
+              if valid_identifier written <> Ok () then []
+              else
+                List.map (fun name ->
+                    `Assoc [ ("title", `String (Printf.sprintf "Change %s to %s" written name));
+                             ("kind", `String "quickfix");
+                             ("diagnostics", `List [ d ]);
+                             ("edit", `Assoc [ ("changes", `Assoc [
+                                  (uri, `List [ `Assoc [ ("range", range); ("newText", `String name) ] ]) ]) ]) ])
+                  (suggested h)
+          | _ -> []) diagnostics)

@@ -27,6 +27,15 @@ val completion : Lsp_workspace.t -> string -> Lsp_text.position -> snippets:bool
     parameters of the routine called on the line; elsewhere: the names in scope, installed
     routines with their parameters (as snippets when the client takes them). *)
 
+val signature_help : Lsp_workspace.t -> string -> Lsp_text.position -> Yojson.Safe.t
+(** The signature of the routine called on the line (the innermost open function call, else the
+    procedure call), its parameters, and the one the cursor is at: the required parameter
+    after as many commas as stand before the cursor. *)
+
+val code_actions : Lsp_workspace.t -> string -> Yojson.Safe.t list -> Yojson.Safe.t
+(** Quick fixes for the diagnostics the client names: for a hint "did you mean tool0?" (or
+    "a, b or c?") on a diagnostic whose range holds one name, an edit to each suggested name. *)
+
 val prepare_rename : Lsp_workspace.t -> string -> Lsp_text.position -> Yojson.Safe.t
 
 val rename : Lsp_workspace.t -> string -> Lsp_text.position -> string -> Yojson.Safe.t
@@ -37,3 +46,6 @@ val rename : Lsp_workspace.t -> string -> Lsp_text.position -> string -> Yojson.
     denote instead. *)
 
 val valid_identifier : string -> (unit, string) result
+
+val suggested : string -> string list
+(** The names of a hint ["did you mean a, b or c?"]; none for another hint. *)

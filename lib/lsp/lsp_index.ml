@@ -530,8 +530,6 @@ let build sources =
       let w = { index = t; info; text = info.source.text; routine_levels = []; found = [] } in
       (try walk_module w with Not_found | Invalid_argument _ -> ());
       info.occurrences <- List.rev w.found) modules;
-  (* Parameters and components are members: their declarations are listed with the routine
-     level of their module. *)
   t
 
 let occurrence_at t uri offset =
@@ -590,10 +588,11 @@ let param_text q =
       (if q.p_mode = "" then "" else q.p_mode ^ " ") ^ ty ^ " " ^ q.p_name
       ^ (if q.p_dims = 0 then "" else "{" ^ String.concat "," (List.init q.p_dims (fun _ -> "*")) ^ "}")
 
-let slots_text slots =
-  String.concat ", " (List.map (function
-      | Required q -> param_text q
-      | Optional qs -> "\\" ^ String.concat " | " (List.map param_text qs)) slots)
+let slot_text = function
+  | Required q -> param_text q
+  | Optional qs -> "\\" ^ String.concat " | " (List.map param_text qs)
+
+let slots_text slots = String.concat ", " (List.map slot_text slots)
 
 let signature d =
   let local = if d.local && d.routine = None then "LOCAL " else "" in

@@ -102,6 +102,9 @@ val components_of_type : t -> string -> int -> string -> decl list
 val type_of_decl : decl -> string option
 (** A data object's type, a function's return type, a component's type. *)
 
+val slot_text : slot -> string
+(** [robtarget ToPoint], [\num V | num T], as {!signature} writes it. *)
+
 val signature : decl -> string
 (** One line of RAPID that declares it: [PERS tooldata tGripper], [PROC MoveL (\switch Conc, ...)]. *)
 

@@ -41,6 +41,8 @@ let capabilities : Yojson.Safe.t =
     ("documentSymbolProvider", `Bool true);
     ("workspaceSymbolProvider", `Bool true);
     ("completionProvider", `Assoc [ ("triggerCharacters", `List [ `String "."; `String "\\" ]) ]);
+    ("signatureHelpProvider", `Assoc [ ("triggerCharacters", `List [ `String "("; `String "," ]) ]);
+    ("codeActionProvider", `Assoc [ ("codeActionKinds", `List [ `String "quickfix" ]) ]);
     ("renameProvider", `Assoc [ ("prepareProvider", `Bool true) ]);
   ]
 
@@ -92,6 +94,10 @@ let request t meth params : Yojson.Safe.t option =
       served (fun () -> F.workspace_symbols ws (match field "query" params with Some (`String q) -> q | _ -> ""))
   | "textDocument/completion" ->
       served (fun () -> F.completion ws (uri_of params) (position_at params) ~snippets:t.snippets)
+  | "textDocument/signatureHelp" -> served (fun () -> F.signature_help ws (uri_of params) (position_at params))
+  | "textDocument/codeAction" ->
+      let diagnostics = match path [ "context"; "diagnostics" ] params with Some (`List l) -> l | _ -> [] in
+      served (fun () -> F.code_actions ws (uri_of params) diagnostics)
   | "textDocument/prepareRename" -> served (fun () -> F.prepare_rename ws (uri_of params) (position_at params))
   | "textDocument/rename" ->
       served (fun () -> F.rename ws (uri_of params) (position_at params) (string_at [ "newName" ] params))

@@ -178,7 +178,9 @@ let analyse t key =
   let sources = List.filter_map (fun (_, _, _, _, s, _) -> s) parsed in
   let index = Lsp_index.build sources in
   let reports =
-    if List.exists (fun (_, _, _, _, s, _) -> s = None) parsed then []
+    (* diagnostics are for open documents: a task none of whose modules is open is only indexed *)
+    if List.exists (fun (_, _, _, _, s, _) -> s = None) parsed
+    || not (List.exists (fun (_, _, _, doc, _, _) -> doc <> None) parsed) then []
     else
       let modules = List.map (fun (s : Lsp_index.source) -> s.ast) sources in
       let buffer = { Rapid_load.Buffer_check.name = ""; modules } in

@@ -34,12 +34,12 @@ let set_link m (ax : Robot.axis) theta =
    arm's attitude, and joint 3 its angle against the lower arm (doc/motion.md R-structure). *)
 let to_chain (r : Robot.t) q =
   match r.structure with
-  | Serial -> q
+  | Serial | Palletiser -> q
   | Coupled_axis3 -> let c = Array.copy q in c.(2) <- q.(2) -. q.(1); c
 
 let of_chain (r : Robot.t) c =
   match r.structure with
-  | Serial -> c
+  | Serial | Palletiser -> c
   | Coupled_axis3 -> let q = Array.copy c in q.(2) <- c.(2) +. c.(1); q
 
 (* The transform of the first [n] links into k.acc. *)
@@ -55,10 +55,46 @@ let chain k n q =
 
 let rotation_of m = Array.init 9 (fun i -> Gsl.Matrix.get m (i / 3) (i mod 3))
 
+(* The palletiser (Robot.Palletiser, doc/motion.md R-structure), in closed form: in the arm's
+   vertical plane the lower arm leans forward by axis 2 from the vertical, the upper arm's end is
+   axis 3 below the horizontal, and the flange hangs level, ahead of and below it; tool0 points
+   down, its x axis backwards at axes 1 and 6 at 0 (as an IRB 120's pointing down), and axis 6
+   turns it about its own z. *)
+let pal_dims (r : Robot.t) =
+  let ax k = r.axes.(k - 1) in
+  ((ax 1).a, (ax 1).d, (ax 2).a, (ax 3).a, (ax 6).a, (ax 6).d)
+
+let level_down = { q1 = 0.; q2 = 0.; q3 = 1.; q4 = 0. }
+
+let pal_rot t1 t6 = omult (of_axis_angle { x = 0.; y = 0.; z = 1. } (t1 -. t6)) level_down
+
+(* Radial distance and height of the upper arm's end, the wrist. *)
+let pal_wrist r q =
+  let a1, d1, l2, l3, _, _ = pal_dims r in
+  let t2 = rad q.(1) and t3 = rad q.(2) in
+  (a1 +. (l2 *. sin t2) +. (l3 *. cos t3), d1 +. (l2 *. cos t2) -. (l3 *. sin t3))
+
+let pal_forward r q =
+  let _, _, _, _, a6, d6 = pal_dims r in
+  let radial, z = pal_wrist r q in
+  let radial = radial +. a6 and z = z -. d6 in
+  let t1 = rad q.(0) in
+  { trans = { x = radial *. cos t1; y = radial *. sin t1; z }; rot = pal_rot t1 (rad q.(5)) }
+
+(* The arm configuration of a palletiser's axes: the wrist behind axis 1, and the elbow bent the
+   other way (the upper arm turned from the lower arm clockwise rather than counter-clockwise, in
+   the plane seen with the arm pointing right). *)
+let pal_arm r q =
+  let radial, _ = pal_wrist r q in
+  let t2 = rad q.(1) and t3 = rad q.(2) in
+  (radial < 0., -. cos (t2 -. t3) > 0.)
+
 let forward k q =
+  if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
   chain k 6 q;
   let g = Gsl.Matrix.get k.acc in
   { trans = { x = g 0 3; y = g 1 3; z = g 2 3 }; rot = of_matrix (rotation_of k.acc) }
+  end
 
 (* An angle a rounding error below a quadrant's edge (axis 4 at -1e-14 degrees for 0) is on the
    edge: the quadrant of a computed 0 is 0, as the programmed one is. *)
@@ -68,6 +104,7 @@ let quadrant a = int_of_float (Float.floor ((a +. 1e-9) /. 90.))
 let singular_zone = 1.0
 
 let wrist_singular ?(zone = singular_zone) k q =
+  k.robot.structure <> Robot.Palletiser &&
   let t5 = rad (q.(4) +. k.robot.axes.(4).offset) in
   Float.abs (sin t5) < sin (rad zone)
 
@@ -123,7 +160,9 @@ let r03_of k q =
 (* A solution before the choice of turns: DH-free axis angles (degrees) and its cfx. *)
 type raw = { angles : float array; raw_cfx : int }
 
-let solutions ?arm k (p : pose) ~t4_hint =
+(* [clamp]: an unreachable wrist centre is taken at the stretched or folded elbow nearest it, for
+   the offset wrist's search, whose twin may just miss the reach near a solution. *)
+let solutions ?(clamp = false) ?arm k (p : pose) ~t4_hint =
   let r = k.robot in
   let ax i = r.axes.(i) in
   let m = to_matrix p.rot in
@@ -140,7 +179,7 @@ let solutions ?arm k (p : pose) ~t4_hint =
       let radial = if behind then -. rho else rho in
       let x = radial -. (ax 0).a and y = -. (w.z -. (ax 0).d) in
       let c = (x *. x +. y *. y -. a2 *. a2 -. l3 *. l3) /. (2. *. a2 *. l3) in
-      if Float.abs c <= 1. +. 1e-12 then
+      if clamp || Float.abs c <= 1. +. 1e-12 then
         let c = Float.max (-1.) (Float.min 1. c) in
         List.iter (fun elbow ->
             if (match arm with Some (_, e) -> e = elbow | None -> true) then
@@ -177,6 +216,44 @@ let solutions ?arm k (p : pose) ~t4_hint =
     [ false; true ];
   List.rev !out
 
+(* A palletiser's solutions: its flange must hang level, tool0's z down within [level_tolerance];
+   two elbows, and the wrist ahead of or behind axis 1. *)
+let level_tolerance = 1.0
+
+let pal_solutions (r : Robot.t) (p : pose) ~t1_hint =
+  let a1, d1, l2, l3, a6, d6 = pal_dims r in
+  let m = to_matrix p.rot in
+  (* tool0's z in the base frame is the matrix's third column; down is [0, 0, -1] *)
+  if -. m.(8) < cos (rad level_tolerance) then []
+  else
+    let psi = atan2 (-. m.(3)) (-. m.(0)) in
+    let rho = Float.hypot p.trans.x p.trans.y in
+    let phi = if rho < 1e-9 then rad t1_hint else atan2 p.trans.y p.trans.x in
+    let out = ref [] in
+    List.iter (fun behind ->
+        let t1 = if behind then phi +. pi else phi in
+        let radial = if behind then -. rho else rho in
+        (* the wrist relative to axis 2, in the arm's plane *)
+        let x = radial -. a6 -. a1 and y = p.trans.z +. d6 -. d1 in
+        let dist = Float.hypot x y in
+        if dist > 1e-9 then begin
+          let kk = ((dist *. dist) +. (l2 *. l2) -. (l3 *. l3)) /. (2. *. l2 *. dist) in
+          if Float.abs kk <= 1. +. 1e-12 then
+            let kk = Float.max (-1.) (Float.min 1. kk) in
+            let beta = atan2 y x in
+            List.iter (fun t2s ->
+                let t2 = t2s -. beta in
+                let ex = l2 *. sin t2 and ey = l2 *. cos t2 in
+                let t3 = atan2 (ey -. y) (x -. ex) in
+                let q = Array.map wrap [| deg t1; deg t2; deg t3; 0.; 0.; deg (t1 -. psi) |] in
+                let behind', elbow = pal_arm r q in
+                let cfx = (if behind' then 4 else 0) + if elbow then 2 else 0 in
+                out := { angles = q; raw_cfx = cfx } :: !out)
+              [ asin kk; pi -. asin kk ]
+        end)
+      [ false; true ];
+    List.rev !out
+
 (* Each axis at a turn within its range nearest to its target, or the first axis that has none. *)
 let place (r : Robot.t) raw targets =
   let q = Array.make 6 0. in
@@ -190,6 +267,7 @@ let place (r : Robot.t) raw targets =
 (* The arm configuration (wrist centre behind axis 1, behind the lower arm) of axis angles,
    from the planar geometry of axes 2 and 3 alone. *)
 let arm_of k q =
+  if k.robot.structure = Robot.Palletiser then pal_arm k.robot q else
   let q = to_chain k.robot q in
   let ax = k.robot.axes in
   let t2 = rad (q.(1) +. ax.(1).offset) and t3 = rad (q.(2) +. ax.(2).offset) in
@@ -200,8 +278,159 @@ let arm_of k q =
 
 let conf_of k q =
   let behind, elbow = arm_of k q in
-  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if q.(4) < 0. then 1 else 0) in
+  let wrist = k.robot.structure <> Robot.Palletiser && q.(4) < 0. in
+  let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if wrist then 1 else 0) in
   { cf1 = quadrant q.(0); cf4 = quadrant q.(3); cf6 = quadrant q.(5); cfx }
+
+(* An offset wrist (axis 5's a not 0: the CRB 15000), solved numerically: the analytic solutions
+   of its spherical twin (the same arm with a5 = 0) seed a Newton iteration on the arm's own
+   forward kinematics (doc/motion.md R-structure). *)
+let newton_iterations = 60
+
+(* The pose error of [q] to [p]: position (mm) and orientation (rotation vector, rad). *)
+let pose_error k (p : pose) q =
+  let f = forward k q in
+  let dp = sub p.trans f.trans in
+  let dq = omult p.rot (conj f.rot) in
+  let dq = if dq.q1 < 0. then { q1 = -. dq.q1; q2 = -. dq.q2; q3 = -. dq.q3; q4 = -. dq.q4 } else dq in
+  let s = Float.sqrt ((dq.q2 *. dq.q2) +. (dq.q3 *. dq.q3) +. (dq.q4 *. dq.q4)) in
+  let angle = 2. *. atan2 s dq.q1 in
+  let w = if s < 1e-300 then { x = 0.; y = 0.; z = 0. }
+    else scale (angle /. s) { x = dq.q2; y = dq.q3; z = dq.q4 } in
+  [| dp.x; dp.y; dp.z; w.x; w.y; w.z |]
+
+(* Gaussian elimination with partial pivoting of a 6x6 system; None when singular. *)
+let solve6 a b =
+  let n = 6 in
+  let a = Array.map Array.copy a and b = Array.copy b in
+  let ok = ref true in
+  for c = 0 to n - 1 do
+    if !ok then begin
+      let p = ref c in
+      for r = c + 1 to n - 1 do if Float.abs a.(r).(c) > Float.abs a.(!p).(c) then p := r done;
+      if Float.abs a.(!p).(c) < 1e-12 then ok := false
+      else begin
+        let t = a.(c) in a.(c) <- a.(!p); a.(!p) <- t;
+        let t = b.(c) in b.(c) <- b.(!p); b.(!p) <- t;
+        for r = c + 1 to n - 1 do
+          let f = a.(r).(c) /. a.(c).(c) in
+          for j = c to n - 1 do a.(r).(j) <- a.(r).(j) -. (f *. a.(c).(j)) done;
+          b.(r) <- b.(r) -. (f *. b.(c))
+        done
+      end
+    end
+  done;
+  if not !ok then None
+  else begin
+    let x = Array.make n 0. in
+    for r = n - 1 downto 0 do
+      let s = ref b.(r) in
+      for j = r + 1 to n - 1 do s := !s -. (a.(r).(j) *. x.(j)) done;
+      x.(r) <- !s /. a.(r).(r)
+    done;
+    Some x
+  end
+
+(* Newton on the six axes (degrees): the Jacobian by central differences; converged when the
+   flange is within 1e-9 mm and 1e-12 rad of the pose. *)
+let refine k (p : pose) q0 =
+  let q = Array.copy q0 in
+  let h = 1e-6 in
+  let rec go n =
+    let e = pose_error k p q in
+    let small = Float.abs e.(0) +. Float.abs e.(1) +. Float.abs e.(2) < 1e-9
+                && Float.abs e.(3) +. Float.abs e.(4) +. Float.abs e.(5) < 1e-12 in
+    if small then Some q
+    else if n = 0 then None
+    else
+      let jac = Array.make_matrix 6 6 0. in
+      for j = 0 to 5 do
+        let qp = Array.copy q and qm = Array.copy q in
+        qp.(j) <- q.(j) +. h; qm.(j) <- q.(j) -. h;
+        let ep = pose_error k p qp and em = pose_error k p qm in
+        (* e decreases as q moves towards the pose: d(error)/dq = -J *)
+        for i = 0 to 5 do jac.(i).(j) <- (em.(i) -. ep.(i)) /. (2. *. h) done
+      done;
+      match solve6 jac e with
+      | None -> None
+      | Some dq ->
+          let biggest = Array.fold_left (fun m d -> Float.max m (Float.abs d)) 0. dq in
+          let s = if biggest > 20. then 20. /. biggest else 1. in
+          Array.iteri (fun i d -> q.(i) <- q.(i) +. (s *. d)) dq;
+          go (n - 1)
+  in
+  go newton_iterations
+
+let offset_wrist (r : Robot.t) = r.structure <> Robot.Palletiser && r.axes.(4).a <> 0.
+
+(* An offset wrist's flange is its spherical twin's (the same arm with a5 = 0) moved by a5 along
+   frame 5's x axis, which is the tool's x axis turned back by axis 6 about the tool's z. So for
+   each axis 6 angle the twin solves the pose moved back by that, and a solution is an axis 6
+   angle the twin gives back: the difference is scanned every 2 degrees on each of the twin's
+   branches (its cfx), its zeros bisected, and Newton polishes. *)
+let offset_solutions ?arm k (p : pose) ~t4_hint =
+  let r = k.robot in
+  let a5 = r.axes.(4).a and off6 = r.axes.(5).offset in
+  let twin =
+    create { r with axes = Array.mapi (fun i (a : Robot.axis) -> if i = 4 then { a with a = 0. } else a) r.axes } in
+  let m = to_matrix p.rot in
+  let x6 = { x = m.(0); y = m.(3); z = m.(6) } and y6 = { x = m.(1); y = m.(4); z = m.(7) } in
+  let branch label q6 =
+    let t = rad (q6 +. off6) in
+    let x5 = sub (scale (cos t) x6) (scale (sin t) y6) in
+    let moved = { p with trans = sub p.trans (scale a5 x5) } in
+    match List.find_opt (fun s -> s.raw_cfx = label) (solutions ~clamp:true ?arm twin moved ~t4_hint) with
+    | Some s -> Some (wrap (s.angles.(5) -. q6), s)
+    | None -> None in
+  let found = ref [] in
+  let keep (s : raw) =
+    match refine k p s.angles with
+    | None -> ()
+    | Some q ->
+        let q = Array.map wrap q in
+        let c = conf_of k q in
+        let same o = Array.for_all2 (fun a b -> Float.abs (wrap (a -. b)) < 1e-6) o.angles q in
+        if not (List.exists same !found) then found := { angles = q; raw_cfx = c.cfx } :: !found in
+  let rec bisect label lo flo hi n =
+    let mid = (lo +. hi) /. 2. in
+    match branch label mid with
+    | None -> None
+    | Some (fm, s) ->
+        if n = 0 || Float.abs fm < 1e-12 then Some s
+        else if (fm < 0.) = (flo < 0.) then bisect label mid fm hi (n - 1)
+        else bisect label lo flo mid (n - 1) in
+  (* a sign change between two angles, the difference continuous there (no turn of 360 between
+     them); where it changes fast the interval is halved, as a pair of roots may hide in it *)
+  let rec scan label lo flo hi fhi depth =
+    if Float.abs (fhi -. flo) < 180. then begin
+      if depth > 0 && Float.abs (fhi -. flo) > 10. then
+        let mid = (lo +. hi) /. 2. in
+        match branch label mid with
+        | Some (fm, _) -> scan label lo flo mid fm (depth - 1); scan label mid fm hi fhi (depth - 1)
+        | None -> ()
+      else if flo = 0. then Option.iter keep (Option.map snd (branch label lo))
+      else if (flo < 0.) <> (fhi < 0.) then Option.iter keep (bisect label lo flo hi 60)
+    end in
+  let step = 2. in
+  for label = 0 to 7 do
+    let prev = ref None and before = ref None in
+    for i = 0 to int_of_float (360. /. step) do
+      let q6 = -180. +. (float_of_int i *. step) in
+      let here = branch label q6 in
+      (match !prev, here with
+       | Some (lo, flo, _), Some (fhi, _) -> scan label lo flo q6 fhi 5
+       | _ -> ());
+      (* two roots close together (the arm near a singularity) may not change the sign between
+         two steps: a small local minimum of the difference is a start for Newton *)
+      (match !before, !prev, here with
+       | Some fb, Some (_, fm, sm), Some (fh, _)
+         when Float.abs fm < 2. && Float.abs fm <= Float.abs fb && Float.abs fm <= Float.abs fh -> keep sm
+       | _ -> ());
+      before := Option.map (fun (_, f, _) -> f) !prev;
+      prev := Option.map (fun (f, s) -> (q6, f, s)) here
+    done
+  done;
+  List.rev !found
 
 let nearest_of (r : Robot.t) sols q0 =
   let dist q = let d = ref 0. in
@@ -213,8 +442,22 @@ let nearest_of (r : Robot.t) sols q0 =
       | Error _, (Error _ as x) -> (match acc with Error (Joint_out_of_range _) -> acc | _ -> x))
     (Error Out_of_reach) sols
 
+(* What of a confdata the arm can use: a palletiser has no axes 4 and 5 (cf4 and cfx's axis 5 bit
+   say nothing of it). *)
+let significant k c =
+  if k.robot.structure = Robot.Palletiser then { c with cf4 = 0; cfx = c.cfx land 6 } else c
+
 let inverse k p choice =
   let r = k.robot in
+  let choice = match choice with With_conf c -> With_conf (significant k c) | n -> n in
+  let solutions ?arm k p ~t4_hint =
+    if offset_wrist r then offset_solutions ?arm k p ~t4_hint
+    else if r.structure = Robot.Palletiser then
+      List.filter (fun s -> match arm with
+          | None -> true
+          | Some (b, e) -> s.raw_cfx = (if b then 4 else 0) + if e then 2 else 0)
+        (pal_solutions r p ~t1_hint:t4_hint.(0))
+    else solutions ?arm k p ~t4_hint in
   match choice with
   | With_conf c ->
       let mid cf = float_of_int cf *. 90. +. 45. in
@@ -222,9 +465,25 @@ let inverse k p choice =
       (* Only the arm configuration cfx names is solved; the others only to tell an
          unreachable position from a configuration it cannot be reached in. *)
       let arm = (c.cfx land 4 <> 0, c.cfx land 2 <> 0) in
-      (match List.find_opt (fun s -> s.raw_cfx = c.cfx) (solutions ~arm k p ~t4_hint:hint) with
-       | Some s -> place r s hint
-       | None -> if solutions k p ~t4_hint:hint = [] then Error Out_of_reach else Error Configuration_error)
+      (* one solution per cfx on a spherical wrist; an offset wrist may have more: the one within
+         the ranges nearest the quadrants' middles *)
+      (match List.filter (fun s -> s.raw_cfx = c.cfx) (solutions ~arm k p ~t4_hint:hint) with
+       | [ s ] -> place r s hint
+       | _ :: _ as matching ->
+           let quadrants (s : raw) = match place r s hint with
+             | Ok q -> let c' = conf_of k q in c'.cf1 = c.cf1 && c'.cf4 = c.cf4 && c'.cf6 = c.cf6
+             | Error _ -> false in
+           (match List.filter quadrants matching with
+            | [] -> nearest_of r matching hint
+            | exact -> nearest_of r exact hint)
+       | [] -> if solutions k p ~t4_hint:hint = [] then Error Out_of_reach else Error Configuration_error)
+  | Nearest q0 when offset_wrist r && (match refine k p q0 with Some _ -> true | None -> false) ->
+      (* a path's next point is near its last: Newton from there, in the reference's configuration *)
+      let q = Array.map wrap (Option.get (refine k p q0)) in
+      let raw = { angles = q; raw_cfx = (conf_of k q).cfx } in
+      (match place r raw q0 with
+       | Ok q' when arm_of k q' = arm_of k q0 -> Ok q'
+       | _ -> nearest_of r (solutions k p ~t4_hint:q0) q0)
   | Nearest q0 ->
       (* A path keeps its arm configuration: the reference's is tried first, alone. *)
       match nearest_of r (solutions ~arm:(arm_of k q0) k p ~t4_hint:q0) q0 with

@@ -31,6 +31,10 @@ val singular_zone : float
 (** 1 degree: the half-width of the wrist singularity zone in which SingArea \Off refuses a
     linear or circular move (doc/motion.md, "R-motion-singarea"). *)
 
+val significant : t -> conf -> conf
+(** The part of a confdata that names a solution of this arm: all of it, but for a palletiser
+    (doc/motion.md R-structure) cf4 and cfx's axis 5 bit are 0. *)
+
 type choice =
   | With_conf of conf  (** the solution the confdata names: MoveJ, CalcJointT *)
   | Nearest of float array  (** the solution nearest these axis angles: ConfL \Off, the path *)

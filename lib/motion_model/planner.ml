@@ -254,11 +254,13 @@ let real_time (l : level) path =
 
 let ( let* ) = Result.bind
 
+(* An axis the arm does not have (a palletiser's 4 and 5) is not checked: MoveAbsJ sets it to 0. *)
 let check_range (r : Robot.t) q =
   let bad = ref None in
   Array.iteri (fun i a ->
       let ax = r.axes.(i) in
-      if !bad = None && (a < ax.min -. 1e-9 || a > ax.max +. 1e-9) then bad := Some (i + 1)) q;
+      if !bad = None && Robot.present r (i + 1) && (a < ax.min -. 1e-9 || a > ax.max +. 1e-9) then
+        bad := Some (i + 1)) q;
   match !bad with None -> Ok () | Some k -> Error (Motion_error.Joint_out_of_range k)
 
 (* The circle through three points (law G-circle): centre from the two perpendicular bisector
@@ -344,9 +346,9 @@ let build t ~now_p m id =
       let* q, f = goal_joints rt (Kinematics.Nearest q_start) in
       let* q =
         if st.conf_l then
-          let c = Kinematics.conf_of k q in
-          if c.cfx <> rt.conf.cfx then Error Motion_error.Configuration_error
-          else if c.cf1 = rt.conf.cf1 && c.cf4 = rt.conf.cf4 && c.cf6 = rt.conf.cf6 then Ok q
+          let c = Kinematics.conf_of k q and want = Kinematics.significant k rt.conf in
+          if c.cfx <> want.cfx then Error Motion_error.Configuration_error
+          else if c.cf1 = want.cf1 && c.cf4 = want.cf4 && c.cf6 = want.cf6 then Ok q
           else let* qc, _ = goal_joints rt (Kinematics.With_conf rt.conf) in Ok qc
         else Ok q in
       if (not st.sing_area_wrist) && Kinematics.wrist_singular k q then Error Motion_error.Close_to_singularity
@@ -371,6 +373,7 @@ let build t ~now_p m id =
             Error (Motion_error.Joint_out_of_range 1)
           else
             let* () = check_range robot q in
+            let q = Array.mapi (fun i a -> if Robot.present robot (i + 1) then a else 0.) q in
             let q = join q e_end in
             let f = world_flange k q in
             Ok ("MoveAbsJ", Joints (q_start, q), (tcp_of_flange f tframe).rot, Array.copy q, f)

@@ -3,9 +3,14 @@ type axis = {
   min : float; max : float; speed : float;
 }
 
-type structure = Serial | Coupled_axis3
+type structure = Serial | Coupled_axis3 | Palletiser
 
-let structure_names = [ ("serial", Serial); ("coupled-axis3", Coupled_axis3) ]
+let structure_names = [ ("serial", Serial); ("coupled-axis3", Coupled_axis3); ("palletiser", Palletiser) ]
+
+(* A palletiser has axes 1, 2, 3 and 6 (ABB numbers them so); the others stand still at 0. *)
+let absent_axes = function Palletiser -> [ 4; 5 ] | Serial | Coupled_axis3 -> []
+
+let absent_axis = { a = 0.; alpha = 0.; d = 0.; offset = 0.; min = 0.; max = 0.; speed = 1. }
 
 type t = {
   name : string; structure : structure; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list;
@@ -144,7 +149,23 @@ let external_axis ln known rest =
             Some (Geom.scale (1. /. l) p) in
       { Ext_axes.name = n; index; kind; min; max; speed; track }
 
+let palletiser_problem r =
+  let bad = ref None in
+  List.iter (fun k ->
+      let ax = r.axes.(k - 1) in
+      if !bad = None && (ax.alpha <> 0. || ax.offset <> 0.) then
+        bad := Some (k, Printf.sprintf "axis %d: a palletiser's alpha and offset must be 0 (doc/motion.md)" k))
+    [ 1; 2; 3; 6 ];
+  List.iter (fun k ->
+      if !bad = None && r.axes.(k - 1).a <= 0. then
+        bad := Some (k, Printf.sprintf "axis %d: a palletiser's arm length a must be positive" k))
+    [ 2; 3 ];
+  !bad
+
 let structure_problem r =
+  match r.structure with
+  | Palletiser -> palletiser_problem r
+  | Serial | Coupled_axis3 ->
   let ax i = r.axes.(i - 1) in
   let expect = [| -90.; 0.; -90.; 90.; -90.; 0. |] in
   let bad = ref None in
@@ -153,12 +174,15 @@ let structure_problem r =
   let zero what i v =
     if !bad = None && v <> 0. then bad := Some (i, Printf.sprintf "axis %d: %s must be 0" i what) in
   zero "d" 2 (ax 2).d; zero "d" 3 (ax 3).d; zero "d" 5 (ax 5).d;
-  zero "a" 4 (ax 4).a; zero "a" 5 (ax 5).a; zero "a" 6 (ax 6).a;
+  (* axis 5's a may be given: an offset wrist (CRB 15000), solved numerically *)
+  zero "a" 4 (ax 4).a; zero "a" 6 (ax 6).a;
   if !bad = None && (ax 2).a <= 0. then bad := Some (2, "axis 2: a must be positive");
   Option.map (fun (k, m) -> k, "unsupported kinematic structure (" ^ m ^ "): the inverse kinematics \
-     solves arms with a spherical wrist, twists -90 0 -90 90 -90 0 (doc/motion.md)") !bad
+     solves arms with twists -90 0 -90 90 -90 0 (doc/motion.md)") !bad
 
 let structure_error r = Option.map snd (structure_problem r)
+
+let present r k = not (List.mem k (absent_axes r.structure))
 
 let parse ~file text =
   let name = ref None and tcp = ref None and reach = ref None and structure = ref None in
@@ -187,8 +211,8 @@ let parse ~file text =
         | (_, "max_tcp_speed") :: _ -> raise (Bad (ln, 1, "max_tcp_speed: expected one number (mm/s)"))
         | [ (_, "structure"); (c, w) ] ->
             (match List.assoc_opt w structure_names with
-             | None -> raise (Bad (ln, c, Printf.sprintf "structure: expected %s, found %S"
-                                         (String.concat " or " (List.map fst structure_names))
+             | None -> raise (Bad (ln, c, Printf.sprintf
+                                         "structure: expected serial, coupled-axis3 or palletiser, found %S"
                                          (Rapid_syntax.Decimal.shown w)))
              | Some k ->
                  if !structure <> None then raise (Bad (ln, 1, "structure given twice"));
@@ -237,13 +261,19 @@ let parse ~file text =
                                  (Rapid_syntax.Decimal.shown w))))
       lines;
     let last = List.length lines in
+    let kind = Option.value !structure ~default:Serial in
+    let absent = absent_axes kind in
+    List.iter (fun k -> if axes.(k - 1) <> None then
+                  raise (Bad (axis_line.(k - 1), 1, Printf.sprintf
+                                "axis %d: a palletiser has no axis %d (its axes are 1, 2, 3 and 6)" k k))) absent;
+    List.iter (fun k -> axes.(k - 1) <- Some absent_axis) absent;
     let missing = ref None in
     Array.iteri (fun i a -> if a = None && !missing = None then missing := Some (i + 1)) axes;
     match !missing, !tcp with
     | Some k, _ -> fail last 1 (Printf.sprintf "axis %d is missing" k)
     | None, None -> fail last 1 "max_tcp_speed is missing"
     | None, Some max_tcp_speed ->
-        let r = { name = Option.value !name ~default:file; structure = Option.value !structure ~default:Serial;
+        let r = { name = Option.value !name ~default:file; structure = kind;
                   axes = Array.map Option.get axes; max_tcp_speed; externals = !externals;
                   reach = !reach } in
         (match structure_problem r with

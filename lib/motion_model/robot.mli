@@ -20,6 +20,13 @@ type structure =
           that axis 2 alone moves the lower arm and leaves the upper arm's attitude: the arms whose
           axis 3 drive works through a parallel rod (IRB 1600, 2400, 6700, 7600; doc/rulings.md
           R-structure); the DH chain's joint 3 is axis 3 minus axis 2 *)
+  | Palletiser
+      (** four axes, 1, 2, 3 and 6: a lower arm (axis 2, from the vertical), an upper arm kept by a
+          parallel rod (axis 3, its attitude against the horizontal, positive down) and a flange
+          kept level, pointing down, turned by axis 6 (IRB 660). The columns: axis 1 [a] and [d]
+          place axis 2 ahead of and above the base, axis 2 [a] the lower arm, axis 3 [a] the upper
+          arm, axis 6 [a] and [d] the flange ahead of and below the upper arm's end; twists and
+          offsets are 0. Axes 4 and 5 are not given and stand at 0. *)
 
 type t = {
   name : string;
@@ -52,6 +59,9 @@ val parse : file:string -> string -> (t, error) result
 
 val load : string -> (t, error) result
 (** [parse] of a file's contents; an unreadable file is an error at 1:1. *)
+
+val present : t -> int -> bool
+(** Whether the arm has axis [k] (1 to 6): a palletiser has no axes 4 and 5. *)
 
 val structure_error : t -> string option
 (** Why the analytic inverse kinematics cannot solve this arm, or [None]. *)

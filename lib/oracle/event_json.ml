@@ -185,6 +185,21 @@ let task_end name o steps =
   | `Assoc (_ :: rest) -> `Assoc (("event", `String "task-end") :: ("task", `String name) :: rest)
   | j -> j
 
+type cell_task = {
+  name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
+  stand_in : string option; reads : string option; modules : int;
+}
+
+let cell ~backup ~io ~signals ~warnings tasks : Yojson.Safe.t =
+  let opt = function Some s -> text s | None -> `Null in
+  `Assoc [ ("event", `String "cell"); ("backup", text backup);
+           ("tasks", `List (List.map (fun t ->
+                `Assoc [ ("task", text t.name); ("type", `String t.kind); ("entry", text t.entry);
+                         ("motion", `Bool t.motion); ("robot", opt t.robot); ("robot_type", opt t.robot_type);
+                         ("stand_in", opt t.stand_in);
+                         ("reads", opt t.reads); ("modules", `Int t.modules) ]) tasks));
+           ("io", opt io); ("signals", `Int signals); ("warnings", `Int warnings) ]
+
 let refused_entry ~files ~entry : Yojson.Safe.t =
   let file = match files with f :: _ -> f | [] -> "" in
   let message =

@@ -65,6 +65,20 @@ val outcome : ?entry_at:Rapid_syntax.Source.region -> Rapid_runtime.Outcome.t ->
 val task_end : string -> Rapid_runtime.Outcome.t -> int -> Yojson.Safe.t
 (** One task's end in a run of several: as {!outcome}, the event [task-end] with the task's name. *)
 
+type cell_task = {
+  name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
+  stand_in : string option; reads : string option; modules : int;
+}
+
+val cell : backup:string -> io:string option -> signals:int -> warnings:int -> cell_task list -> Yojson.Safe.t
+(** A controller backup's run, right after [start]: [{"event":"cell","backup":DIR,"tasks":[...],
+    "io":FILE|null,"signals":N,"warnings":N}], each task with its type (NORMAL, STATIC,
+    SEMISTATIC), entry routine, whether it has a robot, the robot's name and MOC.cfg type (and
+    [stand_in]: why another robot moves in place of that type's: ["--robot"], ["not in the robot
+    library"], ["no robot in MOC.cfg"], else null), the
+    motion task whose robot a task without one reads, and its number of modules
+    (doc/trace-format.md). *)
+
 val refused_entry : files:string list -> entry:string -> Yojson.Safe.t
 (** R-9.1-m: a task buffer without the entry procedure is refused before it runs; the stream
     says so as for any static error, the same from both engines. It has no place of its own: the

@@ -29,7 +29,17 @@ let several max_steps ts (loaded : Task_load.loaded) = {
   entry_at = None;
 }
 
-let start ?history ~notify (o : Run_options.t) (t : Run_options.tasks) =
+let rec start ?history ~notify (o : Run_options.t) (t : Run_options.tasks) =
+  match (if t.files = [] then Ok (Backup_setup.Files []) else Backup_setup.input ~robot:o.robot t.files) with
+  | Error m -> Error (Run_setup.Usage m)
+  | Ok (Files files) when files <> t.files -> start ?history ~notify o { t with files }
+  | Ok (Cell cell) ->
+      (* A backup: its tasks, as run takes them (R-bk-3). *)
+      List.iter (fun w -> notify (Run_setup.Backup_warning w)) cell.warnings;
+      let t = { t with files = [] } in
+      Result.bind (Run_setup.several ?history ~cell ~notify o t) (fun s ->
+          Result.map (fun (ts, loaded) -> several o.max_steps ts loaded) (Run_setup.machine_tasks ~notify o t s))
+  | Ok (Files _) ->
   if t.tasks <> [] then
     Result.bind (Run_setup.several ?history ~notify o t) (fun s ->
         Result.map (fun (ts, loaded) -> several o.max_steps ts loaded) (Run_setup.machine_tasks ~notify o t s))

@@ -45,6 +45,7 @@ val engine : [ `Machine | `Closure ] -> (module ENGINE)
 val machine_tasks :
   ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
   (Rapid_semantics.Task_set.t * Task_load.loaded, Task_load.failure) Stdlib.result
 (** The tasks loaded ({!Task_load.load}) and started as machines ({!Rapid_semantics.Task_set});
@@ -53,6 +54,7 @@ val machine_tasks :
 val closure_tasks :
   ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
   (Rapid_closure.Closure_tasks.t * Task_load.loaded, Task_load.failure) Stdlib.result
 (** The same tasks for the closure engine ({!Rapid_closure.Closure_tasks}). *)

@@ -14,6 +14,7 @@ type sink = {
   event : string option -> Event.t -> unit;
   stubbed : Event.t list -> unit;
   samples : string option -> Tcp_samples.sample list -> unit;
+  cell : Backup_setup.summary -> unit;
   task_end : string -> Outcome.t -> int -> unit;
   run_end : ?entry_at:Rapid_syntax.Source.region -> Outcome.t -> int -> unit;
   flush : unit -> unit;
@@ -87,10 +88,11 @@ let machine ~notify sink ~json ~samples ~save (o : Run_options.t) files ~entry =
 
 (* Several tasks by the closure engine (Closure_tasks): the same events, in the same order, as
    the machine's; --max-steps is each task's fuel. *)
-let closure_tasks ~notify sink ~json (o : Run_options.t) (t : Run_options.tasks) =
-  let* s = Run_setup.several ~notify o t in
+let closure_tasks ?cell ~notify sink ~json (o : Run_options.t) (t : Run_options.tasks) =
+  let* s = Run_setup.several ?cell ~notify o t in
   let* ct, _ = Run_setup.closure_tasks ~notify o t s in
   sink.start (Some s.names);
+  Option.iter sink.cell s.summary;
   let on_event name e = sink.stubbed [ e ]; sink.event (Some name) e in
   let r = CT.run ~fuel:o.max_steps ~all_events:(json || o.stub_unmodelled) ~observe:json ~on_event ct in
   let work = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
@@ -101,10 +103,11 @@ let closure_tasks ~notify sink ~json (o : Run_options.t) (t : Run_options.tasks)
 
 (* Several tasks by the machine (Task_set), on one clock, in turns of a statement; --samples
    samples the motion task's robot as the one clock passes them. *)
-let machine_tasks ~notify sink ~json ~samples (o : Run_options.t) (t : Run_options.tasks) =
-  let* s = Run_setup.several ~history:(samples <> None && json) ~notify o t in
+let machine_tasks ?cell ~notify sink ~json ~samples (o : Run_options.t) (t : Run_options.tasks) =
+  let* s = Run_setup.several ?cell ~history:(samples <> None && json) ~notify o t in
   let* ts, loaded = Run_setup.machine_tasks ~observe:json ~notify o t s in
   sink.start (Some s.names);
+  Option.iter sink.cell s.summary;
   let robot_task = Option.map (fun (t : Task_load.task) ->
       (t.rules.name, List.assoc t.rules.name (TS.tasks ts), Run.task_world t)) (Run.motion_task loaded) in
   let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (sampler ~notify hz) | _ -> None in
@@ -130,7 +133,29 @@ let machine_tasks ~notify sink ~json ~samples (o : Run_options.t) (t : Run_optio
 
 let only_machine = "rapid-sem: --samples runs on the machine only: use --engine machine"
 
-let run ~notify sink ~engine ~json ~samples ~save (o : Run_options.t) (t : Run_options.tasks) =
+(* R-bk-3: a backup runs as the tasks it configures; NoOfRetry of SYS_MISC is the retry limit
+   unless --retry-limit gives another. *)
+let cell_run ~notify sink ~engine ~json ~samples ~save (o : Run_options.t) (t : Run_options.tasks)
+    (c : Backup_setup.cell) =
+  List.iter (fun w -> notify (Run_setup.Backup_warning w)) c.warnings;
+  let o = match c.backup.retry_limit with
+    | Some n when o.limits.retry_limit = Limits.default.retry_limit ->
+        { o with limits = { o.limits with retry_limit = n } }
+    | _ -> o in
+  let t = { t with files = [] } in
+  if save <> None then usage "rapid-sem: --save runs one task: not with a controller backup"
+  else if engine = `Closure && samples <> None then usage only_machine
+  else if engine = `Closure then closure_tasks ~cell:c ~notify sink ~json o t
+  else
+    let* () = Result.map_error (fun m -> Run_setup.Usage m) (Tcp_samples.check samples) in
+    machine_tasks ~cell:c ~notify sink ~json ~samples o t
+
+let rec run ~notify sink ~engine ~json ~samples ~save (o : Run_options.t) (t : Run_options.tasks) =
+  match (if t.files = [] then Ok (Backup_setup.Files []) else Backup_setup.input ~robot:o.robot t.files) with
+  | Error m -> usage m
+  | Ok (Cell c) -> cell_run ~notify sink ~engine ~json ~samples ~save o t c
+  | Ok (Files files) when files <> t.files -> run ~notify sink ~engine ~json ~samples ~save o { t with files }
+  | Ok (Files _) ->
   if t.tasks <> [] then
     if t.files <> [] then usage "rapid-sem: with --task, the files are named in each --task NAME=FILE,..."
     else if save <> None then usage "rapid-sem: --save runs one task: not with --task"

@@ -21,6 +21,8 @@ type sink = {
       (** events of a step, or of the whole closure run of one task at its end, among which the
           [Stubbed] ones (--stub-unmodelled) are to be reported *)
   samples : string option -> Tcp_samples.sample list -> unit;   (** --samples, with [~json] *)
+  cell : Backup_setup.summary -> unit;
+      (** a controller backup: after [start], what runs (its tasks, entry routines, robots, I/O) *)
   task_end : string -> Rapid_runtime.Outcome.t -> int -> unit;   (** several: each task's end *)
   run_end : ?entry_at:Rapid_syntax.Source.region -> Rapid_runtime.Outcome.t -> int -> unit;
       (** the end of the run and its work (steps, or units of fuel), before --save writes; an
@@ -41,7 +43,9 @@ val run :
     ({!Persistent_save}), its problems found before the run where they can be. With several
     tasks, --max-steps bounds the machine's steps of the whole run, and each task's fuel of the
     closure engine. A combination of options that cannot run is a [Usage] failure before
-    anything is loaded. *)
+    anything is loaded. One folder that is a controller backup runs as the tasks it configures,
+    one .pgf file as the modules it lists ({!Backup_setup.input}); the backup's warnings are
+    notified first. *)
 
 val entry_region : Ir.program -> string -> Rapid_syntax.Source.region option
 (** Where the entry procedure of this name is declared (schema rapid-sem/2: an ended task is at

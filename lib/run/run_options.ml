@@ -1,4 +1,5 @@
-type services = { fs : string option; fs_quota : int option; net : string list; map_address : string list }
+type services = {
+  fs : string option; fs_quota : int option; net : string list; map_address : string list; egm_device : string list }
 
 type controller = {
   io : string option; statement_time : float; max_time : float; epoch : float; services : services }

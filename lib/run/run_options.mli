@@ -9,6 +9,7 @@ type services = {
   fs_quota : int option;          (** --fs-quota: the bytes a run may write there *)
   net : string list;              (** --net: the addresses beyond the loopback sockets may reach *)
   map_address : string list;      (** --map-address: FROM=TO, read before the --net check *)
+  egm_device : string list;       (** --egm-device: NAME=HOST:PORT, the UdpUc devices of EGM *)
 }
 (** The services of the controller (doc/services.md). *)
 

@@ -4,10 +4,11 @@ module MR = Rapid_installed.Motion_routines
 module Robot = Rapid_motion_model.Robot
 
 type notice =
-  | Inferred_signal of Io.signal
+  | Inferred_signal of Io.signal * Rapid_syntax.Source.region
   | Warnings of Rapid_typing.Report.t list * string option
   | Stdin_not_saved
   | Samples_capped of int
+  | Backup_warning of string
 
 type failure =
   | Usage of string
@@ -25,6 +26,11 @@ let load_robot = function
   | None -> Ok Robot.irb120
   | Some name -> Rapid_motion_model.Robot_library.load name
 
+(* A backup's robot, unless --robot gives one (the options override the backup). *)
+let robot_of ?robot (o : Run_options.t) = match robot, o.robot with
+  | Some r, None -> Ok r
+  | _ -> load_robot o.robot
+
 let install_services (s : Run_options.services) world =
   let module K = Rapid_controller.Sockets in
   let all parse items = List.fold_left (fun acc s -> match acc, parse s with
@@ -32,12 +38,16 @@ let install_services (s : Run_options.services) world =
   match all K.parse_allowed s.net, all K.parse_mapping s.map_address with
   | Error e, _ -> Error ("--net " ^ e)
   | _, Error e -> Error ("--map-address " ^ e)
+  | _ when Result.is_error (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ->
+      Result.fold ~ok:(fun _ -> Ok ()) ~error:(fun e -> Error ("--egm-device " ^ e))
+        (all Rapid_controller.Egm_channel.parse_devices s.egm_device)
   | _ when Option.fold ~none:false ~some:(fun q -> q < 0) s.fs_quota -> Error "--fs-quota: a number of bytes, 0 or more"
   | Ok allowed, Ok mapping ->
       let root = Option.value s.fs ~default:Rapid_controller.File_sandbox.default_root in
+      let egm_devices = Result.value (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ~default:[] in
       W.set_services world
         (Rapid_controller.Services.create ~sandbox:(Rapid_controller.File_sandbox.create root)
-           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ());
+           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ~egm_devices ());
       Ok ()
 
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }
@@ -59,7 +69,7 @@ let with_inferred_signals ~notify (o : Run_options.t) files io =
     let io, added =
       Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
         modules io in
-    List.iter (fun s -> notify (Inferred_signal s)) added;
+    List.iter (fun (s, at) -> notify (Inferred_signal (s, at))) added;
     io
 
 (* The world of the options' controller, and the robot's motion. *)
@@ -74,30 +84,57 @@ let world (o : Run_options.t) ~history io robot =
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
-let single ?(history = false) ?testing ~notify (o : Run_options.t) files =
-  match read_io o.controller.io, load_robot o.robot with
+(* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
+   of the options, or the backup's robot when --robot does not name one. *)
+let io_and_robot ?robot ~notify (o : Run_options.t) files =
+  match read_io o.controller.io, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
       if o.controller.statement_time < 0. || o.controller.max_time < 0. then
         Error (Usage "rapid-sem: --statement-time and --max-time are not negative")
-      else
-        match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
-        | Error f -> Error (Refused f)
-        | Ok loaded ->
-            notify (Warnings (loaded.warnings, loaded.unknown_summary));
-            Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
-              (world o ~history io robot)
+      else Ok (io, robot)
+
+let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
+      match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
+      | Error f -> Error (Refused f)
+      | Ok loaded ->
+          notify (Warnings (loaded.warnings, loaded.unknown_summary));
+          Result.map (fun (controller, motion) -> { loaded; world = Run.setup ~controller ~motion () })
+            (world o ~history io robot))
+
+let fresh_world ?robot ~notify (o : Run_options.t) files =
+  Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
+      Result.map (fun (controller, motion) -> Run.setup ~controller ~motion ()) (world o ~history:false io robot))
+
+let one_task ~notify (o : Run_options.t) files ~entry =
+  match Backup_setup.input ~robot:o.robot files with
+  | Error m -> Error (Usage m)
+  | Ok (Files files) -> Ok (o, files, entry, None)
+  | Ok (Cell c) -> (
+      List.iter (fun w -> notify (Backup_warning w)) c.warnings;
+      match List.find_opt (fun (t : Rapid_load.Backup.task) -> t.motion) c.backup.tasks with
+      | None -> Error (Usage (c.backup.dir ^ ": the backup has no task to run"))
+      | Some t ->
+          if List.length c.backup.tasks > 1 then
+            notify (Backup_warning (Printf.sprintf "%s: warning: this command runs one task: %s, the motion task, \
+                                                    alone (the backup's other tasks are not started)" t.at t.name));
+          let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
+          let o = { o with controller = { o.controller with io } } in
+          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots))
 
 let machine ?(observe = false) (o : Run_options.t) s ~entry =
   Result.map_error (fun reason -> Cannot_start { entry; reason })
     (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
        s.loaded.program ~entry)
 
-let start_machine ?observe ?history ~notify o files ~entry =
+let start_machine ?observe ?history ?robot ~notify o files ~entry =
   machine_gc ();
-  Result.bind (single ?history ~notify o files) (fun s ->
-      Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry))
+  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot) ->
+      let robot = match robot with Some _ -> robot | None -> cell_robot in
+      Result.bind (single ?history ?robot ~notify o files) (fun s ->
+          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry)))
 
 type several = {
   specs : Task_load.spec list;
@@ -105,9 +142,13 @@ type several = {
   io : Io.t;
   controller : W.t;
   motion : MR.state;
+  robots : (string * MR.state) list;
+  connected : (string * string) list;
+  motion_task : string option;
+  summary : Backup_setup.summary option;
 }
 
-let several ?(history = false) ~notify (o : Run_options.t) (t : Run_options.tasks) =
+let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
   machine_gc ();
   let split s = (String.sub s 0 (String.index s '='),
                  String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
@@ -127,9 +168,26 @@ let several ?(history = false) ~notify (o : Run_options.t) (t : Run_options.task
         | Ok v, Ok vs -> Ok (v :: vs)
         | Error m, _ | _, Error m -> Error m) l (Ok []) in
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
-  match all parse_task t.tasks, all parse_entry t.entries, read_io o.controller.io, load_robot o.robot with
+  (* A backup's tasks (R-bk-3), each --task NAME=FILE,... replacing the files of the task NAME
+     or adding a task; its EIO.cfg unless --io names another configuration. *)
+  let backup_tasks = match cell with
+    | None -> []
+    | Some (c : Backup_setup.cell) ->
+        List.map (fun (b : Rapid_load.Backup.task) -> (b.name, b.files, b.entry)) c.backup.tasks in
+  let io_file = match o.controller.io, cell with
+    | Some f, _ -> Some f
+    | None, Some c -> c.backup.eio
+    | None, None -> None in
+  match all parse_task t.tasks, all parse_entry t.entries, read_io io_file, load_robot o.robot with
   | Error m, _, _, _ | _, Error m, _, _ | _, _, Error m, _ | _, _, _, Error m -> Error (Usage m)
-  | Ok tasks, Ok entries, Ok io, Ok robot ->
+  | Ok given, Ok entries, Ok io, Ok robot ->
+      let replaced = List.map (fun (n, files, entry) ->
+          match List.find_opt (fun (g, _) -> same g n) given with
+          | Some (_, f) -> (n, f, entry) | None -> (n, files, entry)) backup_tasks in
+      let added = List.filter_map (fun (g, f) ->
+          if List.exists (fun (n, _, _) -> same n g) backup_tasks then None else Some (g, f, "main")) given in
+      let tasks = List.map (fun (n, f, _) -> (n, f)) (replaced @ added) in
+      let entry_of = List.map (fun (n, _, e) -> (n, e)) (replaced @ added) in
       let names = List.map fst tasks in
       let duplicate = List.find_opt (fun n -> List.length (List.filter (same n) names) > 1) names in
       let unknown_entry = List.find_opt (fun (n, _) -> not (List.exists (same n) names)) entries in
@@ -140,9 +198,27 @@ let several ?(history = false) ~notify (o : Run_options.t) (t : Run_options.task
           (* R-13-aa: the signals are the controller's, shared by every task. *)
           let io = with_inferred_signals ~notify o (List.concat_map snd tasks) io in
           let entry name =
-            match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with Some (_, r) -> r | None -> "main" in
+            match List.find_opt (fun (n, _) -> same n name) (List.rev entries) with
+            | Some (_, r) -> r
+            | None -> Option.value (List.assoc_opt name entry_of) ~default:"main" in
           let specs = List.map (fun (name, files) -> { Task_load.name; files; entry = entry name }) tasks in
-          Result.map (fun (controller, motion) -> { specs; names; io; controller; motion })
+          (* MultiMove (R-bk-4): the first motion task of the backup is the run's; each other has
+             its robot too. *)
+          let cell_robots = match cell with Some c -> c.robots | None -> [] in
+          let motion_task = match t.motion_task, cell_robots with
+            | Some m, _ -> Some m | None, (m, _) :: _ -> Some m | None, [] -> None in
+          let robot = match motion_task with
+            | Some m when o.robot = None ->
+                Option.value (List.assoc_opt m cell_robots) ~default:robot
+            | _ -> robot in
+          let others = List.filter (fun (n, _) -> match motion_task with Some m -> not (same n m) | None -> true)
+              cell_robots in
+          let history_budget = if history then Some o.limits.max_memory else None in
+          let robots = List.map (fun (n, r) -> (n, MR.create ~robot:r ?history:history_budget ())) others in
+          let connected = match cell with Some c -> c.backup.connected | None -> [] in
+          let summary = Option.map (fun c -> Backup_setup.summary c ~run:specs ~io) cell in
+          Result.map (fun (controller, motion) ->
+              { specs; names; io; controller; motion; robots; connected; motion_task; summary })
             (world o ~history io robot)
 
 let refused : Task_load.failure -> failure = function
@@ -156,9 +232,11 @@ let loaded ~notify = function
 let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
-       ~observe ?seed:t.schedule ?motion_task:t.motion_task ~controller:s.controller ~motion:s.motion s.specs)
+       ~observe ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
+       ~controller:s.controller ~motion:s.motion s.specs)
 
 let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
-       ?seed:t.schedule ?motion_task:t.motion_task ~controller:s.controller ~motion:s.motion s.specs)
+       ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
+       ~controller:s.controller ~motion:s.motion s.specs)

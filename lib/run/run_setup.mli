@@ -10,9 +10,9 @@
 (** {1 What happens on the way} *)
 
 type notice =
-  | Inferred_signal of Rapid_controller.Io_config.signal
+  | Inferred_signal of Rapid_controller.Io_config.signal * Rapid_syntax.Source.region
       (** R-13-aa: under --allow-unknown --stub-unmodelled, an undeclared name the program passes
-          as a signal became a virtual signal at 0 *)
+          as a signal became a virtual signal at 0; the region of its first use *)
   | Warnings of Rapid_typing.Report.t list * string option
       (** the warnings of the static semantics and the summary of the unknown names (one task
           buffer), or the warnings of every task (several) *)
@@ -21,6 +21,9 @@ type notice =
   | Samples_capped of int
       (** --samples wrote the most samples a run writes ({!Tcp_samples.max_samples}); the rest
           are left out *)
+  | Backup_warning of string
+      (** what a controller backup holds that the run does not model, FILE:LINE: warning: ...
+          (R-bk-7), each once, before anything runs *)
 
 type failure =
   | Usage of string
@@ -65,21 +68,38 @@ type single = {
 }
 
 val single :
-  ?history:bool -> ?testing:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> (single, failure) result
+  ?history:bool -> ?testing:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) ->
+  Run_options.t -> string list -> (single, failure) result
 (** The task buffer of these files loaded, in the controller of the options (signals, stimulus,
     clock, services, robot), which either engine runs it in. [history]: the motion history is
     kept, within --max-memory (--samples, rapid-sem motion). [testing]: the assertions of
-    rapid-sem test are installed (doc/rulings.md R-test-a). *)
+    rapid-sem test are installed (doc/rulings.md R-test-a). [robot]: a backup's robot, unless
+    --robot gives one. *)
+
+val one_task :
+  notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->
+  (Run_options.t * string list * string * Rapid_motion_model.Robot.t option, failure) result
+(** The one task buffer of these files: as they are, the modules of a .pgf file, or a controller
+    backup's first motion task alone (its modules, its entry routine when [entry] is main, its
+    robot, its EIO.cfg unless --io), the backup's warnings notified: what debug, motion and trace
+    of one task run. *)
+
+val fresh_world :
+  ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list -> (Run.world, failure) result
+(** Another world of the same options for the task buffer of these files, as {!single} makes it:
+    each start of the program {!single} loaded in one of them begins afresh (module data, clock,
+    signals, robot), without loading the files again (rapid-sem test: a world per test). *)
 
 val machine :
   ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
 (** The machine started on the entry routine, with the limits of the options. *)
 
 val start_machine :
-  ?observe:bool -> ?history:bool -> notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->
+  ?observe:bool -> ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) ->
+  Run_options.t -> string list -> entry:string ->
   (Rapid_semantics.Machine.config * Run.world, failure) result
-(** {!single}, then {!machine}, the collector paced for the machine first: what trace, motion and
-    debug run. *)
+(** {!one_task}, {!single}, then {!machine}, the collector paced for the machine first: what trace,
+    motion and debug run. *)
 
 (** {1 Several tasks (ch. 14)} *)
 
@@ -88,14 +108,21 @@ type several = {
   names : string list;
   io : Rapid_controller.Io_config.t;
   controller : Rapid_controller.World.t;
-  motion : Rapid_installed.Motion_routines.state;
+  motion : Rapid_installed.Motion_routines.state;       (** the run's motion task's robot *)
+  robots : (string * Rapid_installed.Motion_routines.state) list;   (** the other motion tasks' *)
+  connected : (string * string) list;   (** a task without a robot, the motion task it reads *)
+  motion_task : string option;          (** --motion-task, else a backup's first motion task *)
+  summary : Backup_setup.summary option;   (** a backup's *)
 }
 
 val several :
-  ?history:bool -> notify:(notice -> unit) -> Run_options.t -> Run_options.tasks -> (several, failure) result
+  ?history:bool -> ?cell:Backup_setup.cell -> notify:(notice -> unit) -> Run_options.t -> Run_options.tasks ->
+  (several, failure) result
 (** The --task and --entry options read (NAME=FILE,...; TASK=ROUTINE), the names checked (unique,
     an entry for a task that exists), and the controller every task shares made: the signals are
-    the controller's, inferred from every task's modules. Nothing loaded yet. *)
+    the controller's, inferred from every task's modules. Nothing loaded yet. With [cell], the
+    backup's tasks, entry routines, EIO.cfg and robots, which --task NAME=FILE,... (the files of
+    a task), --entry, --io, --robot and --motion-task override (R-bk-3). *)
 
 val machine_tasks :
   ?observe:bool -> notify:(notice -> unit) -> Run_options.t -> Run_options.tasks -> several ->

@@ -124,7 +124,7 @@ let parse_all files =
 
 let same = Rapid_typing.Types.same_name
 
-let load ?(allow_unknown = false) ?io ?motion_task ~world ~motion (specs : spec list) =
+let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = []) ~world ~motion (specs : spec list) =
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
   let rec load acc = function
@@ -163,10 +163,14 @@ let load ?(allow_unknown = false) ?io ?motion_task ~world ~motion (specs : spec 
           | Error f -> Error f
           | Ok () ->
               let tasks = List.mapi (fun k ((s : spec), _, _) ->
-                  let is_motion = same s.name motion_name in
+                  (* MultiMove (R-bk-4): besides the run's motion task, each task of [robots]
+                     has a robot of its own. *)
+                  let own = List.find_opt (fun (n, _) -> same n s.name) robots in
+                  let is_motion = same s.name motion_name || own <> None in
                   let w = if k = 0 then (W.name_task world ~name:s.name ~motion:is_motion; world)
                     else W.add_task world ~name:s.name ~motion:is_motion in
-                  let motion = if is_motion then motion else Rapid_installed.Motion_routines.create () in
+                  let motion = if same s.name motion_name then motion
+                    else match own with Some (_, m) -> m | None -> Rapid_installed.Motion_routines.create () in
                   let host = Rapid_installed.World_host.make w motion in
                   { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host };
                     world = w; motion }) loaded in
@@ -174,8 +178,14 @@ let load ?(allow_unknown = false) ?io ?motion_task ~world ~motion (specs : spec 
                  task's by its name, and read it by default (its mechanical unit group's). *)
               let robots = List.filter_map (fun (t : task) ->
                   if W.motion_task t.world then Some (W.task_name t.world, t.motion) else None) tasks in
+              (* R-bk-4: the motion task of its mechanical unit group first: the one read by default. *)
               List.iter (fun (t : task) ->
-                  if not (W.motion_task t.world) then Rapid_installed.Motion_routines.connect_robots t.motion robots)
+                  if not (W.motion_task t.world) then
+                    let name = W.task_name t.world in
+                    let first = match List.find_opt (fun (n, _) -> same n name) connected with
+                      | Some (_, m) -> List.filter (fun (n, _) -> same n m) robots | None -> [] in
+                    Rapid_installed.Motion_routines.connect_robots t.motion
+                      (first @ List.filter (fun r -> not (List.memq r first)) robots))
                 tasks;
               let warnings = List.concat_map (fun (_, _, (l : Session.loaded)) -> l.warnings) loaded in
               Ok { tasks; links = List.rev !links; warnings })

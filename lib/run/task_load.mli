@@ -23,8 +23,11 @@ type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapi
 
 val load :
   ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> ?motion_task:string ->
+  ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
   world:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> spec list ->
   (loaded, failure) result
 (** The tasks in order, and the warnings of their checks. [world] becomes the first task's
     world; [motion] the motion task's robot ([motion_task], default the first task). More than
-    {!Task_rules.max_tasks} tasks are [Refused]. *)
+    {!Task_rules.max_tasks} tasks are [Refused]. [robots]: the other motion tasks (MultiMove,
+    R-bk-4), each with its robot; [connected]: a task without a robot and the motion task whose
+    robot it reads by default (its mechanical unit group's), else the first motion task's. *)

@@ -307,3 +307,8 @@ let evaluate (program : Ir.program) =
         let f = match Source.file_of r.region with Some f -> Source.name f | None -> "" in
         (f, Source.start_offset r.region) in
       Error (List.stable_sort (fun a b -> compare (order a) (order b)) (List.rev reports))
+
+type kept = memo
+
+let kept () = !last
+let keep m = last := Some m

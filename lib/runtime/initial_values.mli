@@ -22,3 +22,12 @@ val evaluate : Ir.program -> (Ir.program, Rapid_typing.Report.t list) result
     or a name allowed by --allow-unknown stay as they are: they fail when they run. Routine
     data keeps its expressions, which the machine evaluates at each call (§2.21). [Error]: the
     reports, in source order. *)
+
+type kept
+(** What {!evaluate} keeps of the last program that passed, for the next one over the same
+    installed part (the values of its installed data and the verdicts on its installed routines). *)
+
+val kept : unit -> kept option
+
+val keep : kept -> unit
+(** The next {!evaluate} starts from this (the installed environment's image, lib/load). *)

@@ -595,6 +595,15 @@ let installed_part ~installed (elab : E.t) =
       if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
       (part, ctx)
 
+type installed_lowering = A.module_declaration list * E.t * part * ctx
+
+let installed_lowering ~installed (elab : E.t) : installed_lowering =
+  let base = Option.value elab.installed ~default:elab in
+  let ctx = new_ctx base in
+  (installed, base, lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed), ctx)
+
+let use_installed_lowering l = installed_cache := Some l
+
 let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
   let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;

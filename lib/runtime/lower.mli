@@ -9,3 +9,16 @@ val program :
   Ir.program
 (** The task buffer [modules] over the installed environment [installed]; the elaboration is
     that of a check without errors. *)
+
+type installed_lowering
+(** The installed modules' part of every program, lowered once (the first routines and globals
+    of every {!program} over the same installed modules and installed elaboration, both compared
+    physically). It holds no functional value: lib/load/installed_image.ml marshals it at build
+    time. *)
+
+val installed_lowering :
+  installed:Rapid_syntax.Ast.module_declaration list -> Rapid_typing.Elaboration.t -> installed_lowering
+(** From the elaboration of a task checked over [installed] (or of the installed level itself). *)
+
+val use_installed_lowering : installed_lowering -> unit
+(** The next programs over its installed modules and elaboration start from it. *)

@@ -10,6 +10,15 @@ type t =
   | Deadlock of string
   | Stuck of string
 
+let index_outside index dimension =
+  (* An integer as a programmer writes it: 1E+20 beyond the digits a num holds exactly. *)
+  let text = if Float.abs index < 1e15 then Printf.sprintf "%.0f" index
+    else String.uppercase_ascii (Printf.sprintf "%g" index) in
+  Printf.sprintf "index %s outside the dimension 1 to %d" text dimension
+
+let retries_beyond limit =
+  Printf.sprintf "more than %d RETRY in one handler, the retry limit: --retry-limit N sets it" limit
+
 let not_modelled name at =
   Unsupported
     { name; at;

@@ -8,7 +8,8 @@ type t =
       (** the system error handler stopped the task: the error, where it occurred, the call
           chain at that point, innermost first, and the name the error is about (the unknown
           data object or routine of ERR_REFUNKDAT, ERR_REFUNKFUN, ERR_REFUNKPRC, the procedure
-          name of ERR_CALLPROC, the function of ERR_FNCNORET) *)
+          name of ERR_CALLPROC, the function of ERR_FNCNORET), or what it is about (the index and
+          the dimension of ERR_OUTOFBND, the retry limit of ERR_EXCRTYMAX) *)
   | Resource_exhausted of string * Rapid_syntax.Source.region option
       (** call depth beyond the limit, or RAPID data or the motion history beyond the memory
           budget, or virtual time beyond --max-time: the reason, and the place when one explains
@@ -18,6 +19,13 @@ type t =
           [at] the call) *)
   | Deadlock of string                     (** a wait nothing can ever end (doc/controller.md) *)
   | Stuck of string                        (** no rule applies: a bug of rapid-sem *)
+
+val index_outside : float -> int -> string
+(** What ERR_OUTOFBND is about, in both engines' words: the index and the dimension it is
+    outside of. *)
+
+val retries_beyond : int -> string
+(** What ERR_EXCRTYMAX is about: the retry limit (--retry-limit). *)
 
 val not_modelled : string -> Rapid_syntax.Source.region -> t
 (** [Unsupported] for a call of this installed routine at this place. *)

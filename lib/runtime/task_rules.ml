@@ -50,6 +50,26 @@ let every_task_waits (clock : Host.t) waits =
   | t :: _ when t > clock.max_time -> Some (Outcome.time_limit clock.max_time)
   | t :: _ -> clock.advance_to t; None
 
+(* §9.1: the task's entry routine is a procedure without parameters; the message names the
+   others there are, which --entry runs (the installed routines, whose modules are of the
+   system, are not offered). *)
+let no_entry (program : Ir.program) entry =
+  let offered = List.filter_map (fun (name, i) ->
+      let r = program.routines.(i) in
+      let file = match Rapid_syntax.Source.file_of r.at with Some f -> Rapid_syntax.Source.name f | None -> "" in
+      if List.mem file Rapid_typing.Installed_env.file_names then None else Some name) program.entry_points in
+  let offered = List.sort_uniq compare offered in
+  Printf.sprintf "no procedure %s without parameters to run (§9.1): %s" entry
+    (match offered with
+     | [] -> "the task has no procedure without parameters; declare PROC " ^ entry ^ "()"
+     | [ one ] -> Printf.sprintf "run the task's procedure %s with --entry %s" one one
+     | l when List.length l <= 12 ->
+         Printf.sprintf "run another with --entry NAME; the task's procedures without parameters: %s"
+           (String.concat ", " l)
+     | l ->
+         Printf.sprintf "run another with --entry NAME; the task's procedures without parameters: %s, ... (%d in all)"
+           (String.concat ", " (List.filteri (fun i _ -> i < 12) l)) (List.length l))
+
 let entry_routine (program : Ir.program) entry =
   let lower = String.lowercase_ascii entry in
   let rec find i =
@@ -57,7 +77,7 @@ let entry_routine (program : Ir.program) entry =
     else if String.lowercase_ascii program.routines.(i).name = lower then Some i
     else find (i + 1) in
   match find 0 with
-  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | None -> Error (no_entry program entry)
   | Some i ->
       let r = program.routines.(i) in
       if r.kind <> Procedure || Array.length r.parameters > 0 then

@@ -37,6 +37,10 @@ val every_task_waits : Host.t -> (string * string option * float option) list ->
     the time limit when that time is beyond --max-time. The host is the run's clock (the first
     task's). *)
 
+val no_entry : Ir.program -> string -> string
+(** The message for a task without the procedure [entry]: what to do, with the task's procedures
+    without parameters that --entry can run (§9.1). *)
+
 val entry_routine : Ir.program -> string -> (int, string) result
 (** The entry routine of this name (letter case aside): the first routine so named, which must
     be a procedure without parameters (§9.1); [Error] says why there is none, in the words both

@@ -79,7 +79,7 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
   let program = host.prepare program in
   let by_name = routines_by_name program in
   match routine_index_in by_name entry with
-  | None -> Error (Printf.sprintf "no procedure %s without parameters to run" entry)
+  | None -> Error (Task_rules.no_entry program entry)
   | Some i ->
       let routine = program.routines.(i) in
       if routine.kind <> Procedure || Array.length routine.parameters > 0 then

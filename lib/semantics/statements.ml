@@ -86,7 +86,8 @@ and exec_statement cfg (s : Ir.stmt) =
             act.retries <- 0;
             (* §7.1: the error is beyond recovery: ERR_EXCRTYMAX, at the RETRY, in the handler,
                goes to the system error handler. *)
-            cfg.focus <- F_raise { (error cfg "ERR_EXCRTYMAX" s.sat) with searched = true };
+            cfg.focus <- F_raise { (error ~about:(Outcome.retries_beyond cfg.limits.retry_limit) cfg "ERR_EXCRTYMAX"
+                                      s.sat) with searched = true };
             act.handling <- In_handler (e, point);
             (Rule.Retry_limit, [])
           end
@@ -328,7 +329,9 @@ let value_step cfg v =
                 (Rule.Index_next, [])
               end
               else (cfg.stack <- rest; cfg.focus <- F_loc l'; (Rule.Element, []))
-          | Some _ -> cfg.stack <- rest; raise_ cfg "ERR_OUTOFBND"; (Rule.Index_out_of_bounds, [])
+          | Some _ ->
+              cfg.stack <- rest; raise_ ~about:(Outcome.index_outside f (Array.length elems)) cfg "ERR_OUTOFBND";
+              (Rule.Index_out_of_bounds, [])
           | None -> cfg.stack <- rest; raise_ cfg "ERR_NOTINTVAL"; (Rule.Index_not_integer, []))
       | _ ->
           cfg.stack <- rest; cfg.focus <- F_done (Stuck "an index into a value that is not an array");

@@ -42,6 +42,20 @@ let register ~name ~line_starts =
 let name f = f.name
 let no_region = 0
 
+(* The table of files as one value, for an environment computed at build time (its regions name
+   its files' ids) and restored at start-up before any other file is registered. *)
+type registry = { r_files : file option array; r_count : int; r_kept : int }
+
+let registered () = !file_count
+let registered_in r = r.r_count
+
+let registry () = { r_files = Array.copy !files; r_count = !file_count; r_kept = !kept }
+
+let restore_registry r =
+  files := Array.copy r.r_files;
+  file_count := r.r_count;
+  kept := r.r_kept
+
 (* Every node of the tree takes a region: the clamps compare ints directly, since Stdlib's
    [min] and [max] are polymorphic and cost a call to the runtime's generic comparison. *)
 let clamp (lo : int) (hi : int) (x : int) = if x < lo then lo else if x > hi then hi else x

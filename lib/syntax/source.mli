@@ -27,6 +27,22 @@ val keep : unit -> unit
 
 val name : file -> string
 
+type registry
+(** The files registered so far, their ids and which are kept. *)
+
+val registry : unit -> registry
+
+val registered : unit -> int
+(** How many files were registered (ids given). *)
+
+val registered_in : registry -> int
+(** How many files were registered when {!registry} made it. *)
+
+val restore_registry : registry -> unit
+(** Makes the table of files what {!registry} saw: for the installed environment computed when
+    rapid-sem was built (lib/load/installed_image.ml), whose regions name those files' ids;
+    restored before any other file is registered. *)
+
 val no_region : region
 (** The region of a node that was not read from a file (generated trees). *)
 

@@ -41,6 +41,9 @@ type ctx = {
   unknown_reported : (string, unit) Hashtbl.t;
       (* routine, kind and name of each unknown name reported in a routine: once is enough *)
   const_cache : Const_eval.cache;   (* each constant's value computed once (R-3.2-b) *)
+  mutable signal_argument : string option;
+      (* the signal type of the parameter whose argument is being checked: an unknown name there
+         is a signal of the controller's I/O configuration, and the hint says where to give it *)
 }
 
 (* Where in a routine the judgement is. *)
@@ -65,7 +68,10 @@ let key = String.lowercase_ascii
    --allow-unknown, a warning was reported): every use of the object is then left unjudged. *)
 let unknown_type = T.Installed_atomic { atomic_name = "?"; atomic_class = Value; associated = None }
 let unknown_object_type = { T.base = unknown_type; dims = Scalar }
-let is_unknown (t : T.object_type) = t.base == unknown_type
+(* By its name, which no RAPID type can have: the installed environment's image (built at build
+   time, lib/load/installed_image.ml) holds copies of this value, not this value itself. *)
+let is_unknown_base = function T.Installed_atomic { atomic_name = "?"; _ } -> true | _ -> false
+let is_unknown (t : T.object_type) = is_unknown_base t.base
 
 let name_of_identifier (i : identifier) = match i.it with Ident s -> Some s | ID_placeholder -> None
 
@@ -123,21 +129,56 @@ let names_in_scope (place : place) what =
   List.concat_map from sc.routine @ from sc.module_objects
   @ (if sc.in_installed_module then [] else from sc.globals) @ from sc.installed
 
+(* The names rapid-sem test installs beside the others (doc/rulings.md R-test-a): unknown to any
+   other command, where their hint says so. *)
+let test_names =
+  lazy (match Installed_env.test_modules () with
+      | Error _ -> []
+      | Ok ms ->
+          List.concat_map (fun (m : Ast.module_declaration) ->
+              List.filter_map (fun (r : Ast.routine_declaration) -> match r.it with
+                  | Procedure_declaration { name = { it = Ident n; _ }; _ } -> Some n
+                  | _ -> None) m.routine_declarations
+              @ List.filter_map (fun (d : Ast.data_declaration) -> match d.it with
+                  | Data_declaration { name = { it = Ident n; _ }; _ } -> Some n
+                  | _ -> None) m.data_declarations) ms)
+
+let test_hint name =
+  match List.find_opt (fun n -> String.lowercase_ascii n = String.lowercase_ascii name) (Lazy.force test_names) with
+  | Some n -> Some (Printf.sprintf "%s belongs to the assertions of rapid-sem test, installed only in the modules \
+                                    that command runs (doc/testing.md)" n)
+  | None -> None
+
 (* §2.20, ch. 13: a name that is neither declared nor installed. In a routine it is reported
    at its first use only, not at every use; each module-level declaration is judged on its own.
    The hint names the names in scope closest to it. *)
+(* The kind a stimulus file gives a signal of this type (doc/controller.md): signaldi -> di. *)
+let io_kind kind =
+  let k = String.lowercase_ascii kind in
+  if String.length k > 6 && String.sub k 0 6 = "signal" then String.sub k 6 (String.length k - 6) else k
+
 let unknown_name ctx place region what name =
   let k = match place.routine with
     | Some r ->
         Some (String.concat "\000" [ key place.module_name;
                                       string_of_int (Source.start_offset r.r_region); what; key name ])
     | None -> None in
+  (* An unknown name passed for a signal parameter: the signals of a controller's EIO
+     configuration are not part of the program (§2.16, R-13-aa); a name of another kind is no
+     help. *)
+  let suggest () = match what, ctx.signal_argument with
+    | "data object", Some kind ->
+        Some (Printf.sprintf "%s is passed as a %s: give the controller's I/O signals in a stimulus file (--io FILE \
+                              with a line \"signal %s %s\", doc/controller.md), or run with --allow-unknown \
+                              --stub-unmodelled to make it a virtual %s at 0" name kind name
+                (io_kind kind) kind)
+    | _ -> Suggest.hint name (names_in_scope place what) in
   if ctx.options.allow_unknown then
-    unknown_use ctx ~hint:(fun () -> Suggest.hint name (names_in_scope place what)) region what name
+    unknown_use ctx ~hint:suggest region what name
   else if not (match k with Some k -> Hashtbl.mem ctx.unknown_reported k | None -> false) then begin
     Option.iter (fun k -> Hashtbl.add ctx.unknown_reported k ()) k;
     let section = unknown_name_section what in
-    let hint = Suggest.hint name (names_in_scope place what) in
+    let hint = match test_hint name with Some h -> Some h | None -> suggest () in
     Report.error ctx.report ?hint ~rule:"unknown-name" ~section region
       (Printf.sprintf "unknown %s %s: it is neither declared nor installed" what name)
   end
@@ -269,7 +310,7 @@ let rec reference ctx place (r : data_reference) : reference =
       match whole.rtype with
       | Known { base = Record rt; dims = Scalar } -> (
           match T.component rt comp.it with
-          | Some t when t == unknown_type ->
+          | Some t when is_unknown_base t ->
               (* R-2.14-unknown1: not judged; left unresolved, reaching it is ERR_REFUNKDAT. *)
               { whole with rtype = Unknown }
           | Some t ->
@@ -560,6 +601,13 @@ and mode_name : Tables.access_mode -> string = function
 (* One argument against one parameter: its type (§2.17), its value class (§2.16) and its
    access mode (§5.2). *)
 and argument ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
+  let outer = ctx.signal_argument in
+  ctx.signal_argument <- (match p.p_type with
+      | Some { base; dims = Scalar } when T.value_class base = T.Semi_value -> Some (T.name base)
+      | _ -> None);
+  Fun.protect ~finally:(fun () -> ctx.signal_argument <- outer) (fun () -> argument_checked ~call ctx place arg e p)
+
+and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
   let sections = call ^ ",5.2,2.17" in
   match p.p_type with
   | None -> ()
@@ -631,10 +679,20 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     | Required_argument (Some n, _, _) -> name_of_identifier n
     | Required_argument (None, _, _) | Positional_argument _ | ARG_placeholder -> None
   in
+  let optional_names = List.concat_map (function
+      | Env.Optional_slot ps -> List.map (fun (p : Env.parameter) -> p.p_name) ps
+      | Env.Required_slot _ -> []) routine.r_slots in
+  (* An optional or conditional argument that names no optional parameter of the routine. *)
+  let unknown_optional (a : argument) =
+    match a.it, arg_name a with
+    | (Optional_argument _ | Conditional_argument _), Some n ->
+        not (List.exists (fun p -> T.same_name p n) optional_names)
+    | _ -> false in
   let rec go slots (args : argument list) =
     match slots, args with
     | _, ({ it = ARG_placeholder; _ } :: rest) -> go (match slots with _ :: s -> s | [] -> []) rest
     | [], [] -> ()
+    | [], a :: _ when unknown_optional a -> ()  (* reported below, once, with the names it may mean *)
     | [], a :: _ ->
         Report.error ctx.report ?hint:(backslash_hint ctx place routine a) ~rule:"argument-count"
           ~section:call a.at (Printf.sprintf "%s takes no more arguments" routine.r_name)
@@ -701,12 +759,27 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   (* Optional or conditional arguments that match no parameter. *)
   List.iter (fun (a : argument) ->
       match a.it, arg_name a with
-      | (Optional_argument _ | Conditional_argument _), Some n ->
-          let known = List.exists (function
-              | Env.Optional_slot ps -> List.exists (fun (p : Env.parameter) -> T.same_name p.p_name n) ps
-              | Env.Required_slot _ -> false) routine.r_slots in
-          if not known then
-            error ctx ~rule:"argument-name" ~section:call a.at "%s has no optional parameter %s" routine.r_name n
+      | (Optional_argument _ | Conditional_argument _), Some _ when unknown_optional a ->
+          let n = Option.get (arg_name a) in
+          (* "did you mean \\DecelMax?": the names as an optional argument is written *)
+          (* Among names as close, the ones that begin as the name written does (DecMax: DecelMax,
+             not AccMax). *)
+          let prefix a b =
+            let a = String.lowercase_ascii a and b = String.lowercase_ascii b in
+            let rec go i = if i < String.length a && i < String.length b && a.[i] = b.[i] then go (i + 1) else i in
+            go 0 in
+          let close = Suggest.closest n optional_names in
+          let best = List.fold_left (fun m c -> max m (prefix n c)) 0 close in
+          let close = List.filter (fun c -> prefix n c = best) close in
+          let hint = match List.map (fun p -> "\\" ^ p) close with
+            | [ c ] -> Some (Printf.sprintf "did you mean %s?" c)
+            | c :: more -> Some (Printf.sprintf "did you mean %s or %s?" (String.concat ", " more) c)
+            | [] when optional_names = [] -> Some (Printf.sprintf "%s has no optional parameters" routine.r_name)
+            | [] ->
+                Some (Printf.sprintf "its optional parameters: %s"
+                        (String.concat ", " (List.map (fun p -> "\\" ^ p) optional_names))) in
+          Report.error ctx.report ?hint ~rule:"argument-name" ~section:call a.at
+            (Printf.sprintf "%s has no optional parameter %s" routine.r_name n)
       | _ -> ()) args
 
 (* §4.6, §3.11: an optional argument is written with a backslash and its parameter's name. A
@@ -1654,7 +1727,7 @@ let builtin_environment report options =
     early_constants = Hashtbl.create 64;
     unknown_uses = Hashtbl.create 16;
     unknown_reported = Hashtbl.create 16;
-    const_cache = Const_eval.create_cache ();
+    const_cache = Const_eval.create_cache (); signal_argument = None;
   }
 
 (* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
@@ -1734,9 +1807,12 @@ let copy_ctx report ctx =
    afresh. *)
 let installed_cache : (module_declaration list * options * ctx * module_info list) option ref = ref None
 
+(* A check without reports under [allow_unknown = false] met no unknown name, so it is also the
+   check under [allow_unknown = true] (which differs only in what it does with unknown names). *)
 let installed_half options installed =
   match !installed_cache with
-  | Some (l, o, ctx, infos) when l == installed && o = options -> (copy_ctx (Report.create ()) ctx, infos)
+  | Some (l, o, ctx, infos) when l == installed && (o = options || not o.allow_unknown) ->
+      ({ (copy_ctx (Report.create ()) ctx) with options }, infos)
   | _ ->
       let ctx, infos = check_installed options installed in
       if Report.all ctx.report = [] then begin
@@ -1782,6 +1858,22 @@ let check_task ?(options = default_options) ~installed modules =
             "a global object and a module may not share the name %s" i.m_name
       | None -> ()) user;
   bodies ctx user_bodies;
+  (* §5.5: a function whose statements can complete ends without RETURN (ERR_FNCNORET). *)
+  List.iter (fun i ->
+      List.iter (fun (name, at, last) ->
+          let hint = Printf.sprintf "end every path of %s with RETURN and its value (an ELSE or DEFAULT with its \
+                                     RETURN, or a RETURN before ENDFUNC)" name in
+          match last with
+          | Some at ->
+              Report.warning report ~hint ~rule:"function-no-return" ~section:"5.5" at
+                (Printf.sprintf "the function %s can end without RETURN: after this statement its ENDFUNC is \
+                                 reached, and the call raises ERR_FNCNORET (a function's evaluation must end with a \
+                                 RETURN statement)" name)
+          | None ->
+              Report.warning report ~hint ~rule:"function-no-return" ~section:"5.5" at
+                (Printf.sprintf "the function %s has no statement: it ends without RETURN, and every call raises \
+                                 ERR_FNCNORET" name))
+        (Fall_off.functions i.m)) user;
   (* --allow-unknown: one warning per unknown name, at its first use, with the number of uses. *)
   let unknown = Hashtbl.fold (fun _ u acc -> u :: acc) ctx.unknown_uses [] in
   List.iter (fun ((u : unknown_name), section, hint) ->
@@ -1802,3 +1894,11 @@ let unknown_summary r =
       Some (Printf.sprintf "%d name%s unknown (%d use%s); they are warnings under --allow-unknown"
               (List.length names) (if List.length names = 1 then "" else "s")
               uses (if uses = 1 then "" else "s"))
+
+type installed_state = module_declaration list * options * ctx * module_info list
+
+let installed_state installed =
+  let ctx, infos = check_installed default_options installed in
+  if Report.all ctx.report = [] then Ok (installed, default_options, ctx, infos) else Error (Report.all ctx.report)
+
+let use_installed_state state = installed_cache := Some state

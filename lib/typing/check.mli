@@ -41,3 +41,15 @@ val errors : result -> Report.t list
 val unknown_summary : result -> string option
 (** Under [allow_unknown], when a name was unknown: ["N names unknown (M uses); they are
     warnings under --allow-unknown"]. *)
+
+type installed_state
+(** The installed level checked (the first half of every task's check), as the next
+    {!check_task} over the same (physically) installed modules reuses it. It holds no functional
+    value: lib/load/installed_image.ml marshals it at build time. *)
+
+val installed_state : Ast.module_declaration list -> (installed_state, Report.t list) Stdlib.result
+(** The installed level of these installed modules, checked under {!default_options}; [Error]:
+    the reports of a check that reported something. *)
+
+val use_installed_state : installed_state -> unit
+(** The next tasks over its installed modules start from this state. *)

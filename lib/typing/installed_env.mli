@@ -7,7 +7,17 @@
 open Rapid_syntax
 
 val modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
-(** Parsed once, on first use. An [Error] is a bug of rapid-sem's own sources. *)
+(** Parsed once, on first use, or taken from the image {!set_image} names. An [Error] is a bug of
+    rapid-sem's own sources. *)
+
+val parse : unit -> (Ast.module_declaration list, Diagnostic.t) result
+(** Parses them now (what {!modules} does without an image): for the build-time image. *)
+
+val set_image : (unit -> Ast.module_declaration list) -> unit
+(** Before the first {!modules}: where it takes the installed modules from, the image of them
+    (parsed, checked and lowered when rapid-sem was built, lib/load/installed_image.ml) that
+    also restores what their parse, check and lowering left behind (their files' ids, the
+    record types' ids, the checker's and the lowering's shared state). *)
 
 val test_modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
 (** The assertions of rapid-sem test (installed/unit_test.sys), which {!modules} leaves out: only

@@ -118,6 +118,8 @@ let equal_types ~value_context a b =
 
 let counter = ref 0
 let new_record_id () = incr counter; !counter
+let record_ids_used () = !counter
+let restore_record_ids n = counter := n
 
 (* Without building lowered copies: names are compared wherever components and labels are
    looked up, thousands of times in a large record. *)

@@ -67,6 +67,13 @@ val equal_types : value_context:bool -> object_type -> object_type -> bool
 
 val new_record_id : unit -> int
 
+val record_ids_used : unit -> int
+(** The last id {!new_record_id} gave. *)
+
+val restore_record_ids : int -> unit
+(** [restore_record_ids n]: the next id is [n + 1], as after the [n]th: the record types of the
+    installed environment's image (made when rapid-sem was built) keep their ids 1 to [n]. *)
+
 val component : record_type -> string -> data_type option
 (** A component by name, compared without regard to letter case (§2.3). *)
 

@@ -19,7 +19,8 @@ let total_time rs = List.fold_left (fun a (r : T.result) -> a +. r.time) 0. rs
 
 let summary rs =
   let f = failed rs in
-  Printf.sprintf "%d passed, %d failed (%d tests, %s virtual)" (List.length rs - f) f (List.length rs)
+  let n = List.length rs in
+  Printf.sprintf "%d passed, %d failed (%d test%s, %s virtual)" (n - f) f n (if n = 1 then "" else "s")
     (seconds (total_time rs))
 
 let junit rs =

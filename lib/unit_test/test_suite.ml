@@ -23,7 +23,8 @@ let rec below dir =
 let module_files given =
   List.fold_left (fun acc f ->
       let* acc = acc in
-      if Sys.file_exists f && Sys.is_directory f then
+      if f = "-" then Error "rapid-sem: test reads its modules from files: standard input (-) is not one"
+      else if Sys.file_exists f && Sys.is_directory f then
         match below f with
         | Ok [] -> Error (Printf.sprintf "rapid-sem: %s: no RAPID module (.mod, .sys, .modx, .sysx) in this folder" f)
         | Ok l -> Ok (acc @ l)
@@ -44,7 +45,9 @@ let lines_of file =
       go 1 []
 
 let directive_options (o : O.t) file =
-  let relative f = if Filename.is_relative f then Filename.concat (Filename.dirname file) f else f in
+  let relative f =
+    let dir = Filename.dirname file in
+    if Filename.is_relative f && dir <> Filename.current_dir_name then Filename.concat dir f else f in
   List.fold_left (fun acc (n, line) ->
       let* (o : O.t) = acc in
       if not (Str.string_match directive_prefix line 0) then Ok o
@@ -70,9 +73,15 @@ let directive_options (o : O.t) file =
                                             --statement-time)" w) in
         go o words) (Ok o) (lines_of file)
 
-type test = { name : string; module_name : string; file : string; line : int; options : O.t }
+type test = { name : string; module_name : string; file : string; line : int; col : int; options : O.t }
 
-type suite = { files : string list; tests : test list; test_modules : string list; coverage : Test_coverage.t }
+type suite = {
+  files : string list;
+  tests : test list;
+  test_modules : string list;
+  coverage : Test_coverage.t;
+  loads : (O.t * Rapid_load.Session.loaded) list;
+}
 
 let is_test_name n = String.length n > 5 && String.lowercase_ascii (String.sub n 0 5) = "test_"
 
@@ -102,22 +111,23 @@ let discover ~notify (o : O.t) files =
   let* loads = List.fold_left (fun acc opts ->
       let* acc = acc in
       let tell = if acc = [] then notify else ignore in
-      Result.map (fun (s : Setup.single) -> acc @ [ (opts, s.loaded.program) ])
+      Result.map (fun (s : Setup.single) -> acc @ [ (opts, s.loaded) ])
         (Setup.single ~testing:true ~notify:tell opts files))
       (Ok []) distinct in
-  let program = snd (List.hd loads) in
+  let program = (snd (List.hd loads)).program in
   let tests = List.concat_map (fun (file, opts) ->
-      let program = List.assoc opts loads in
+      let program = (List.assoc opts loads).program in
       List.filter_map (fun (r : Ir.routine) ->
           if file_of r = Some file then
-            Some { name = r.name; module_name = r.module_name; file; line = (S.start r.at).line; options = opts }
+            let at = S.start r.at in
+            Some { name = r.name; module_name = r.module_name; file; line = at.line; col = at.col; options = opts }
           else None) (tests_of program)) per_file in
   let test_modules = List.sort_uniq compare (List.map (fun t -> String.lowercase_ascii t.module_name) tests) in
   let given = files in
   let covered (r : Ir.routine) =
     (match file_of r with Some f -> List.mem f given | None -> false)
     && not (List.mem (String.lowercase_ascii r.module_name) test_modules) in
-  Ok { files; tests; test_modules; coverage = Test_coverage.of_program program ~covered }
+  Ok { files; tests; test_modules; coverage = Test_coverage.of_program program ~covered; loads }
 
 let filter re s =
   let matches n = match Str.search_forward re n 0 with _ -> true | exception Not_found -> false in
@@ -133,8 +143,12 @@ type result = {
   hits : Test_coverage.portable option;
 }
 
-let verdict (o : Outcome.t) ~max_steps =
-  let failed ?at message = Failed { at = Option.map S.to_string at; message } in
+let verdict (t : test) (o : Outcome.t) ~max_steps =
+  let failed ?at message =
+    let at = match at with
+      | Some r when r <> S.no_region -> S.to_string r
+      | _ -> Printf.sprintf "%s:%d:%d" t.file t.line t.col in
+    Failed { at = Some at; message } in
   match o with
   | Ended -> Passed
   | Stopped { name = "ERR_ASSERT"; at; about = Some m; _ } -> failed ~at m
@@ -150,13 +164,16 @@ let verdict (o : Outcome.t) ~max_steps =
 let run_test ~coverage ~engine suite t =
   let o = t.options in
   let refused m = { test = t; verdict = Failed { at = None; message = m }; time = 0.; output = []; hits = None } in
-  match Setup.single ~testing:true ~notify:ignore o suite.files with
-  | Error _ -> refused "the task buffer does not load with this test's options"
-  | Ok s ->
+  (* The program loaded once with these options, in a world of its own (Run_setup.fresh_world):
+     both engines start it with fresh module data (§2.21). *)
+  match List.assoc_opt o suite.loads, Setup.fresh_world ~notify:ignore o suite.files with
+  | None, _ | _, Error _ -> refused "the task buffer does not load with this test's options"
+  | Some loaded, Ok world ->
+      let s = { Setup.loaded; world } in
       let output = ref [] in
       let on_event = function Event.Output l -> output := l :: !output | _ -> () in
       let finish outcome hits =
-        { test = t; verdict = verdict outcome ~max_steps:o.max_steps;
+        { test = t; verdict = verdict t outcome ~max_steps:o.max_steps;
           time = Rapid_controller.World.now s.world.controller;
           output = List.rev !output; hits } in
       if coverage || engine = `Machine then

@@ -9,7 +9,8 @@
 
 val module_files : string list -> (string list, string) result
 (** The files given, each folder replaced by the RAPID modules below it (.mod, .sys, .modx,
-    .sysx, letter case aside), in name order. *)
+    .sysx, letter case aside), in name order. Standard input ([-]) is refused: its directives and
+    its tests are read before the task buffer is loaded. *)
 
 val directive_options : Rapid_run.Run_options.t -> string -> (Rapid_run.Run_options.t, string) result
 (** The options of the tests of this file: those given, with what its [!rapid-sem:] comment
@@ -23,6 +24,7 @@ type test = {
   module_name : string;
   file : string;                          (** the file that declares it *)
   line : int;
+  col : int;                              (** where the declaration begins *)
   options : Rapid_run.Run_options.t;      (** with its module's directives *)
 }
 
@@ -31,6 +33,8 @@ type suite = {
   tests : test list;                      (** in the order of the files, then of declaration *)
   test_modules : string list;             (** the modules that declare a test *)
   coverage : Test_coverage.t;             (** the routines of the other modules, at 0 *)
+  loads : (Rapid_run.Run_options.t * Rapid_load.Session.loaded) list;
+      (** the task buffer loaded once per set of options its test modules ask for *)
 }
 
 val discover :
@@ -48,7 +52,8 @@ val filter : Str.regexp -> suite -> suite
 type verdict =
   | Passed
   | Failed of { at : string option; message : string }
-      (** [at]: FILE:LINE:COL of the failed assertion or of the error *)
+      (** [at]: FILE:LINE:COL of the failed assertion or of the error; for a failure that has no
+          place of its own (--max-time, a deadlock), the test's name in its declaration *)
 
 type result = {
   test : test;

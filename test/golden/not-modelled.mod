@@ -1,9 +1,9 @@
 MODULE not_modelled
-  ! EGMGetId (Externally Guided Motion) is installed, and rapid-sem does not model EGM.
+  ! EGMStreamStop (EGM position streaming) is installed, and rapid-sem does not model it.
   VAR egmident egm1;
   PROC main()
     TPWrite "before";
-    EGMGetId egm1;
+    EGMStreamStop egm1;
     TPWrite "after";
   ENDPROC
 ENDMODULE

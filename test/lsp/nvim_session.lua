@@ -92,6 +92,12 @@ local function session()
   for _, i in ipairs(items) do if i.label == "MoveL" then found = "yes" end end
   emit("completion MoveL " .. found)
 
+  -- Signature help: the parameter at the cursor, by its offsets in the signature.
+  local sh = request(tools, "textDocument/signatureHelp", at(tools, 4, 37))
+  local sig = sh.signatures[1]
+  local range = sig.parameters[sh.activeParameter + 1].label
+  emit("signature " .. sig.label:match("PROC (%w+)") .. " " .. string.sub(sig.label, range[1] + 1, range[2]))
+
   -- Rename, applied by Neovim to both buffers.
   local params = at(cell, 9, 12)
   params.newName = "nPicks"

@@ -1,0 +1,54 @@
+(** A controller backup read as the controller reads it at start (doc/user-guide.md, "Controller
+    backups"; doc/rulings.md R-bk-1 to R-bk-7): the folder a controller or RobotStudio writes,
+    [BACKINFO/backinfo.txt] (which task folder is which task, and its modules in load order),
+    [SYSPAR/SYS.cfg] (the tasks: [CAB_TASKS], [MECHANICAL_UNIT_GROUP]), [SYSPAR/MOC.cfg] (the
+    robots: [ROBOT -use_robot_type], the arms' joint bounds), [SYSPAR/EIO.cfg] (the signals),
+    [RAPID/TASKn/PROGMOD] and [SYSMOD] (the modules, [.mod], [.modx], [.sys], [.sysx]), [HOME/].
+    Also a program file [.pgf] (an XML list of modules). Only what the backup says is gathered
+    here; the robots themselves are made in lib/run, which knows the motion model. *)
+
+type kind = Normal | Static | Semistatic
+
+type task = {
+  name : string;               (** the task's name (SYS.cfg, backinfo.txt) *)
+  folder : string;             (** its folder, RAPID/TASKn *)
+  kind : kind;                 (** -Type *)
+  motion : bool;               (** -MotionTask *)
+  group : string option;       (** -UseMechanicalUnitGroup *)
+  entry : string;              (** -Entry, else main *)
+  files : string list;         (** its modules, in the order backinfo.txt gives (R-bk-2) *)
+  at : string;                 (** FILE:LINE of its CAB_TASKS instance *)
+}
+
+type bound = { axis : int; lower : float; upper : float; bound_at : string }
+(** An arm's -lower_joint_bound and -upper_joint_bound, radians (or metres for a linear axis). *)
+
+type robot = {
+  robot_name : string;         (** MOC.cfg's ROBOT -name, ROB_1 *)
+  robot_type : string;         (** -use_robot_type, ROB1_2400_1.5_10; [""] when not given *)
+  bounds : bound list;         (** the arms of its joints, axis 1 first *)
+  robot_at : string;           (** FILE:LINE of its ROBOT instance *)
+}
+
+type t = {
+  dir : string;
+  tasks : task list;                     (** the tasks to run, in the order of their folders *)
+  robots : (string * robot) list;        (** each motion task's robot, by the task's name *)
+  connected : (string * string) list;    (** a task without a robot and the motion task of its group *)
+  eio : string option;                   (** SYSPAR/EIO.cfg when there is one *)
+  retry_limit : int option;              (** SYS.cfg SYS_MISC NoOfRetry *)
+  warnings : string list;                (** what is not modelled: FILE:LINE: warning: ... (R-bk-7) *)
+}
+
+val is_backup : string -> bool
+(** A folder that holds RAPID/, SYSPAR/ or BACKINFO/backinfo.txt. *)
+
+val read : string -> (t, string) result
+(** The backup in this folder. An error is one line with FILE:LINE:COL: a malformed cfg file
+    ({!Cfg_file}), a task SYS.cfg names twice, a backup with no task to run. *)
+
+val read_pgf : string -> (string list, string) result
+(** The module files a program file lists, as paths beside it, in its order. *)
+
+val kind_name : kind -> string
+(** NORMAL, STATIC, SEMISTATIC. *)

@@ -1,0 +1,21 @@
+open Rapid_syntax
+
+let data = Installed_image_data.image
+
+(* At initialisation, before anything parses: the image's regions name its files by their ids,
+   and its record types have their ids, so both are taken before any other file or record type. *)
+let usable =
+  Source.registered () = Installed_image_data.files_before
+  && Rapid_typing.Types.record_ids_used () = Installed_image_data.records_before
+
+let () =
+  if usable then begin
+    Source.restore_registry (Marshal.from_string Installed_image_data.files 0);
+    Rapid_typing.Types.restore_record_ids Installed_image_data.record_ids;
+    Rapid_typing.Installed_env.set_image (fun () ->
+        let t : Installed_level.t = Marshal.from_string data 0 in
+        Installed_level.install t;
+        Installed_level.modules t)
+  end
+
+let in_use () = usable

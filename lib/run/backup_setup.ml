@@ -1,0 +1,91 @@
+module Backup = Rapid_load.Backup
+module Robot = Rapid_motion_model.Robot
+
+type cell = {
+  backup : Backup.t; robots : (string * Robot.t) list; stand_in : (string * string) list; warnings : string list;
+}
+type input = Files of string list | Cell of cell
+
+let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+(* The robot library of the motion model, by MOC.cfg's type (ROB1_2400_1.5_10). *)
+let library_find = Rapid_motion_model.Robot_library.find
+
+let degrees r = r *. 180. /. Float.pi
+
+(* R-bk-5: the arm's bounds narrow the description's range, never widen it. *)
+let narrow (robot : Robot.t) (bounds : Backup.bound list) =
+  let warnings = ref [] in
+  let axes = Array.mapi (fun k (a : Robot.axis) ->
+      match List.find_opt (fun (b : Backup.bound) -> b.axis = k + 1) bounds with
+      | None -> a
+      | Some b ->
+          let lo = Float.max a.min (degrees b.lower) and hi = Float.min a.max (degrees b.upper) in
+          if lo > hi then begin
+            warnings := Printf.sprintf "%s: warning: axis %d: the joint bounds %g .. %g rad leave nothing of %s's \
+                                        range %g .. %g degrees: its range kept" b.bound_at (k + 1) b.lower b.upper
+                robot.name a.min a.max :: !warnings;
+            a
+          end else { a with min = lo; max = hi }) robot.axes in
+  ({ robot with axes }, List.rev !warnings)
+
+let robot_of_type (r : Backup.robot) =
+  match library_find r.robot_type with
+  | Ok robot -> Ok (narrow robot r.bounds, true)
+  | Error _ ->
+      let what = if r.robot_type = "" then Printf.sprintf "robot %s has no -use_robot_type" r.robot_name
+        else Printf.sprintf "robot %s: the type %s is not in the robot library" r.robot_name r.robot_type in
+      Ok ((Robot.irb120, [ Printf.sprintf "%s: warning: %s: the default IRB 120 moves instead (its joint bounds \
+                                           are not applied)" r.robot_at what ]), false)
+
+let input ~robot files =
+  match files with
+  | [ f ] when Sys.file_exists f && Sys.is_directory f ->
+      if not (Backup.is_backup f) then
+        Error (Printf.sprintf "%s:1:1: backup error: a folder that is not a controller backup (no RAPID/, SYSPAR/ or \
+                               BACKINFO/backinfo.txt)" f)
+      else
+        Result.bind (Backup.read f) (fun (b : Backup.t) ->
+            let given = match robot with
+              | None -> Ok None
+              | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name) in
+            Result.bind given (fun given ->
+                let robots = List.filter_map (fun (t : Backup.task) ->
+                    if not t.motion then None
+                    else match given, List.assoc_opt t.name b.robots with
+                      | Some r, _ -> Some (t.name, ((r, []), Some "--robot"))
+                      | None, Some r ->
+                          let robot, known = Result.get_ok (robot_of_type r) in
+                          Some (t.name, (robot, if known then None else Some "not in the robot library"))
+                      | None, None -> Some (t.name, ((Robot.irb120, []), Some "no robot in MOC.cfg"))) b.tasks in
+                Ok (Cell { backup = b; robots = List.map (fun (n, ((r, _), _)) -> (n, r)) robots;
+                           stand_in = List.filter_map (fun (n, (_, why)) -> Option.map (fun w -> (n, w)) why) robots;
+                           warnings = b.warnings @ List.concat_map (fun (_, ((_, w), _)) -> w) robots })))
+  | [ f ] when String.lowercase_ascii (Filename.extension f) = ".pgf" ->
+      Result.map (fun l -> Files l) (Backup.read_pgf f)
+  | files -> Ok (Files files)
+
+type task_summary = {
+  task : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
+  stand_in : string option; reads : string option; modules : int;
+}
+
+type summary = { dir : string; tasks : task_summary list; io : string option; signals : int; warned : int }
+
+let summary c ~run ~(io : Rapid_controller.Io_config.t) =
+  let b = c.backup in
+  let tasks = List.map (fun (s : Task_load.spec) ->
+      let t = List.find_opt (fun (t : Backup.task) -> same t.name s.name) b.tasks in
+      let motion = List.mem_assoc s.name c.robots in
+      { task = s.name;
+        kind = (match t with Some t -> Backup.kind_name t.kind | None -> "NORMAL");
+        entry = s.entry; motion;
+        robot = Option.map (fun (r : Robot.t) -> r.name) (List.assoc_opt s.name c.robots);
+        robot_type =
+          (if motion then Option.map (fun (r : Backup.robot) -> r.robot_type) (List.assoc_opt s.name b.robots)
+           else None);
+        stand_in = Option.map snd (List.find_opt (fun (n, _) -> same n s.name) c.stand_in);
+        reads = (if motion then None else List.assoc_opt s.name b.connected);
+        modules = List.length s.files }) run in
+  { dir = b.dir; tasks; io = (if io.file = "" then None else Some io.file); signals = List.length io.signals;
+    warned = List.length c.warnings }

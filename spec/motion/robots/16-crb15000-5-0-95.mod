@@ -1,0 +1,53 @@
+MODULE r_crb15000_5_0_95
+! @format 3
+! @section 13
+! @expect ok
+! @statement-time 0
+! @robot crb15000-5-0.95
+! @description The ABB CRB 15000-5/0.95 of the robot library (doc/motion.md "The robot library", robots/crb15000-5-0.95.robot), by its library name. A known pose: at the calibration position (all axes 0) the flange is at [a1 + d4 + d6, 0, d1 + a2 + a3 + a5] = [571, 0, 899] (the product specification's dimensions). Reach: with axis 2 at 90 and axis 3 at -76.8274 the arm is stretched forward, the wrist centre (tool wc: tool0 moved back along its z by d6 = 101) at x = 944.9315, z = 342.8951 (the DH chain: the wrist offset 80 mm from the arm line): the published reach 950 mm within 2.5 %; a point 50 mm beyond the flange stretched level is out of reach (ERR_ROBLIMIT). Joint limits: axis 1 at its limit 180 moves, one degree beyond is refused (ERR_ROBLIMIT), as axis 3 one degree below -225. A move timed: axis 1 turning 45 degrees at its 125 degrees/s takes 45 / 125 = 0.360 s (T-joint: more than the flange's chord at v5000 and the reorientation at v_ori).
+! @output home x 571.0 z 899.0
+! @output reach x 944.9 z 342.9
+! @output far ERR_ROBLIMIT
+! @output edge 180.0
+! @output beyond 1 ERR_ROBLIMIT
+! @output beyond 3 ERR_ROBLIMIT
+! @output t 0.360
+  CONST jointtarget calib := [[0,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST jointtarget stretched := [[0,90,-76.827447,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST jointtarget edge := [[180,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST jointtarget past1 := [[181,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST jointtarget past3 := [[0,0,-226,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST jointtarget turned := [[45,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget far := [[1077.7007,0,265],[0.707107,0,0.707107,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PERS tooldata wc := [TRUE,[[0,0,-101],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];
+  VAR clock clk;
+  VAR string what;
+  PROC main()
+    VAR pos p;
+    VAR jointtarget j;
+    MoveAbsJ calib, v1000, fine, tool0;
+    p := CPos(\Tool:=tool0);
+    TPWrite "home x " + NumToStr(p.x, 1) + " z " + NumToStr(p.z, 1);
+    MoveAbsJ stretched, v1000, fine, tool0;
+    p := CPos(\Tool:=wc);
+    TPWrite "reach x " + NumToStr(p.x, 1) + " z " + NumToStr(p.z, 1);
+    what := "far";
+    MoveJ far, v1000, fine, tool0;
+    MoveAbsJ edge, v1000, fine, tool0;
+    j := CJointT();
+    TPWrite "edge " + NumToStr(j.robax.rax_1, 1);
+    what := "beyond 1";
+    MoveAbsJ past1, v1000, fine, tool0;
+    what := "beyond 3";
+    MoveAbsJ past3, v1000, fine, tool0;
+    MoveAbsJ calib, v1000, fine, tool0;
+    ClkStart clk;
+    MoveAbsJ turned, v5000, fine, tool0;
+    TPWrite "t " + NumToStr(ClkRead(clk), 3);
+  ERROR
+    IF ERRNO = ERR_ROBLIMIT THEN
+      TPWrite what + " ERR_ROBLIMIT";
+      TRYNEXT;
+    ENDIF
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+run --robot irb2400-10-1.5 backup-library

@@ -1,0 +1,3 @@
+MODULE ProgData
+  CONST string greeting := "program file: two modules, one task";
+ENDMODULE

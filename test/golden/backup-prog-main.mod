@@ -1,0 +1,5 @@
+MODULE ProgMain
+  PROC main()
+    TPWrite greeting;
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+run --engine machine --retry-limit 2 msg-excrtymax.mod

@@ -1,0 +1,1 @@
+run --retry-limit 2 msg-excrtymax.mod

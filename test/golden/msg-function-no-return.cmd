@@ -1,0 +1,1 @@
+check msg-function-no-return.mod

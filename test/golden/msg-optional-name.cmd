@@ -1,0 +1,1 @@
+check msg-optional-name.mod

@@ -1,0 +1,1 @@
+run --engine machine --json msg-outofbnd.mod

@@ -1,0 +1,1 @@
+run msg-outofbnd.mod

@@ -1,0 +1,1 @@
+check msg-undeclared-signal.mod

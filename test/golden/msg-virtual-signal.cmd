@@ -1,0 +1,1 @@
+run --allow-unknown --stub-unmodelled msg-virtual-signal.mod

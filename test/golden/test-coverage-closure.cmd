@@ -1,0 +1,1 @@
+test --engine closure --cobertura /dev/null test-static.mod

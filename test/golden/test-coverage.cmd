@@ -1,0 +1,1 @@
+test --filter grip --coverage /dev/null ../../examples/pickcell

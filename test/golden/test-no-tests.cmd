@@ -1,0 +1,1 @@
+test --filter nothing_matches ../../examples/pickcell

@@ -1,0 +1,1 @@
+test --progress --filter slot ../../examples/pickcell

@@ -1,0 +1,1 @@
+test - < test-static.mod

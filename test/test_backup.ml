@@ -1,0 +1,187 @@
+(* Controller backups (lib/load/cfg_file.ml, lib/load/backup.ml, lib/run/backup_setup.ml): the
+   cfg format as the backups gathered in doc/real-programs.md write it, a backup's tasks and
+   robots read as R-bk-1 to R-bk-7 say, and hostile inputs that must never crash. The runs of
+   whole backups are golden tests (test/golden/backup-*.cmd). *)
+
+module Cfg = Rapid_load.Cfg_file
+module Backup = Rapid_load.Backup
+
+let ( // ) = Filename.concat
+
+let parse text = Cfg.parse ~file:"t.cfg" text
+
+let cfg_ok text = match parse text with Ok c -> c | Error m -> Alcotest.fail m
+
+let attributes (c : Cfg.t) section =
+  match Cfg.section c section with
+  | None -> Alcotest.fail ("no section " ^ section)
+  | Some s -> List.map (fun (i : Cfg.instance) ->
+      List.map (fun (a : Cfg.attribute) ->
+          (a.key, match a.value with Cfg.Flag -> "<flag>" | Text v -> v)) i.attributes) s.instances
+
+let pairs = Alcotest.(list (list (pair string string)))
+
+let format () =
+  let c = cfg_ok "SYS:CFG_1.0:5:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask \n\n\
+                  \      -Name \"T_ui\" -Type \"STATIC\" -Entry \"Main\"\\\r\n      -TrustLevel \"None\"\n#\n\
+                  MMC_MC1 = MMC_PALETTE:\n      -name \"x\" -text_id 30,82 -low -5.5 -mode  -x\n#\n" in
+  Alcotest.(check string) "domain" "SYS" c.domain;
+  Alcotest.check pairs "two instances, a flag, a continued line"
+    [ [ ("Name", "T_ROB1"); ("Type", "NORMAL"); ("MotionTask", "<flag>") ];
+      [ ("Name", "T_ui"); ("Type", "STATIC"); ("Entry", "Main"); ("TrustLevel", "None") ] ]
+    (attributes c "CAB_TASKS");
+  Alcotest.check pairs "NAME = TYPE: header; a list, a negative number, flags"
+    [ [ ("name", "x"); ("text_id", "30,82"); ("low", "-5.5"); ("mode", "<flag>"); ("x", "<flag>") ] ]
+    (attributes c "MMC_MC1");
+  (* Instances written one after the other, without a blank line between them. *)
+  let c = cfg_ok "MOC:CFG_1.0:6:0::\nARM:\n      -name \"a\" -upper_joint_bound 1\n      -name \"b\"\n#\n" in
+  Alcotest.check pairs "an instance per line" [ [ ("name", "a"); ("upper_joint_bound", "1") ]; [ ("name", "b") ] ]
+    (attributes c "ARM")
+
+(* Malformed files: each a clear FILE:LINE:COL error of the cfg class, never an exception. *)
+let malformed () =
+  List.iter (fun (text, where) ->
+      match parse text with
+      | Ok _ -> Alcotest.failf "accepted: %S" text
+      | Error m ->
+          let prefix = "t.cfg:" ^ where ^ ": cfg error: " in
+          if not (String.length m > String.length prefix && String.sub m 0 (String.length prefix) = prefix) then
+            Alcotest.failf "%S: %s (expected %s...)" text m prefix)
+    [ ("", "1:1"); ("not a header\n", "1:1");
+      ("SYS:CFG_1.0:5:0::\n      -Name \"x\"\n", "2:1");
+      ("SYS:CFG_1.0:5:0::\nCAB_TASKS:\n      -Name \"x\n", "3:13");
+      ("SYS:CFG_1.0:5:0::\nCAB_TASKS:\n      \"x\" -Name\n", "3:7");
+      ("SYS:CFG_1.0:5:0::\nCAB_TASKS:\n  garbage here\n", "3:3");
+      ("SYS:CFG_1.0:5:0::\nCAB_TASKS:\n      -Name \"x\" \\", "3:1") ]
+
+(* Random bytes and cut files: the reader and the backup never raise. *)
+let hostile () =
+  let rs = Random.State.make [| 17 |] in
+  let base = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\\\n \
+              -Entry \"main\"\n#\nMECHANICAL_UNIT_GROUP:\n      -Name \"rob1\" -Robot \"ROB_1\"\n#\n" in
+  for _ = 1 to 2000 do
+    let n = String.length base in
+    let b = Bytes.of_string base in
+    for _ = 1 to 1 + Random.State.int rs 4 do
+      Bytes.set b (Random.State.int rs n) (Char.chr (Random.State.int rs 256))
+    done;
+    let cut = Bytes.sub_string b 0 (Random.State.int rs (n + 1)) in
+    match parse cut with
+    | Ok _ | Error _ -> ()
+    | exception e -> Alcotest.failf "%S: %s" cut (Printexc.to_string e)
+  done
+
+let write path text =
+  let rec mkdir d = if not (Sys.file_exists d) then (mkdir (Filename.dirname d); Sys.mkdir d 0o755) in
+  mkdir (Filename.dirname path);
+  let oc = open_out_bin path in
+  output_string oc text; close_out oc
+
+let temp_backup files =
+  let dir = Filename.temp_file "rapid-sem-backup" "" in
+  Sys.remove dir; Sys.mkdir dir 0o755;
+  List.iter (fun (p, t) -> write (dir // p) t) files;
+  dir
+
+let main_mod name = Printf.sprintf "MODULE %s\n  PROC main()\n  ENDPROC\nENDMODULE\n" name
+
+(* Without SYS.cfg and backinfo.txt: the folders' tasks, SYSMOD's modules before PROGMOD's, the
+   first task with the robot (R-bk-1 to R-bk-3). *)
+let bare_folders () =
+  let dir = temp_backup [ ("RAPID/TASK2/PROGMOD/B.mod", main_mod "B"); ("RAPID/TASK1/PROGMOD/Z.mod", main_mod "Z");
+                          ("RAPID/TASK1/SYSMOD/a.sys", "MODULE a(SYSMODULE)\nENDMODULE\n") ] in
+  match Backup.read dir with
+  | Error m -> Alcotest.fail m
+  | Ok b ->
+      Alcotest.(check (list string)) "names" [ "TASK1"; "TASK2" ] (List.map (fun (t : Backup.task) -> t.name) b.tasks);
+      Alcotest.(check (list string)) "TASK1's files"
+        [ dir // "RAPID" // "TASK1" // "SYSMOD" // "a.sys"; dir // "RAPID" // "TASK1" // "PROGMOD" // "Z.mod" ]
+        (List.hd b.tasks).files;
+      Alcotest.(check (list bool)) "the first has the robot" [ true; false ]
+        (List.map (fun (t : Backup.task) -> t.motion) b.tasks);
+      Alcotest.(check (list (pair string string))) "the other reads it" [ ("TASK2", "TASK1") ] b.connected
+
+(* backinfo.txt's names and order (Windows separators too), SYS.cfg's types and entries, a task
+   of an option left out, an encrypted module left out with a warning. *)
+let configured () =
+  let dir = temp_backup [
+      ("BACKINFO/backinfo.txt", ">>TASK1: (T_ROB1,P,)\nPROGMOD\\Z.mod @ z.mod\nSYSMOD\\k.sys @ k.sys\nPROGMOD\\Enc.mod @ enc.mod\n\n\
+                                 >>TASK2: (SC_CBC,,)\n\n>>TASK3: (T_BG,,)\nPROGMOD/B.mod @ b.mod\n>>EOF:\n");
+      ("SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n\
+                          \ -Name \"T_BG\" -Entry \"loop\"\n#\n");
+      ("RAPID/TASK1/PROGMOD/Z.mod", main_mod "Z"); ("RAPID/TASK1/SYSMOD/k.sys", "MODULE k(SYSMODULE)\nENDMODULE\n");
+      ("RAPID/TASK1/PROGMOD/Enc.mod", "\xfc\x30\x1d\xe1\x0a\x01\x80");
+      ("RAPID/TASK2/SYSMOD/user.sys", "MODULE user(SYSMODULE)\nENDMODULE\n");
+      ("RAPID/TASK3/PROGMOD/B.mod", main_mod "B") ] in
+  match Backup.read dir with
+  | Error m -> Alcotest.fail m
+  | Ok b ->
+      Alcotest.(check (list string)) "tasks" [ "T_ROB1"; "T_BG" ] (List.map (fun (t : Backup.task) -> t.name) b.tasks);
+      Alcotest.(check (list string)) "backinfo's order"
+        [ dir // "RAPID" // "TASK1" // "PROGMOD" // "Z.mod"; dir // "RAPID" // "TASK1" // "SYSMOD" // "k.sys" ]
+        (List.hd b.tasks).files;
+      let bg = List.nth b.tasks 1 in
+      Alcotest.(check string) "-Entry" "loop" bg.entry;
+      Alcotest.(check string) "no -Type: SEMISTATIC" "SEMISTATIC" (Backup.kind_name bg.kind);
+      let warned part = List.exists (fun w ->
+          let n = String.length part in
+          let rec at i = i + n <= String.length w && (String.sub w i n = part || at (i + 1)) in at 0) b.warnings in
+      Alcotest.(check bool) "the option's task is a warning" true (warned "SC_CBC");
+      Alcotest.(check bool) "the encrypted module is a warning" true (warned "Enc.mod:1: warning: an encrypted module")
+
+(* Errors of a backup: FILE:LINE:COL, never an exception. *)
+let refused () =
+  List.iter (fun (files, expected) ->
+      let dir = temp_backup files in
+      match Backup.read dir with
+      | Ok _ -> Alcotest.failf "accepted: %s" expected
+      | Error m ->
+          let expected = dir // expected in
+          if not (String.length m >= String.length expected && String.sub m 0 (String.length expected) = expected) then
+            Alcotest.failf "%s (expected %s)" m expected)
+    [ ([ ("SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\nCAB_TASKS:\n -Name \"A\"\n -Name \"a\"\n");
+         ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A") ], "SYSPAR/SYS.cfg:4:1: cfg error: the task a is configured twice");
+      ([ ("SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\nCAB_TASKS:\n -Name \"A\" -Type \"FAST\"\n");
+         ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A") ], "SYSPAR/SYS.cfg:3:12: cfg error: task A: -Type");
+      ([ ("SYSPAR/MOC.cfg", "MOC:CFG_1.0:6:0::\nROBOT:\n -name \"R\" -use_joint_0 \"j\"\nARM:\n \
+                             -name \"j\" -upper_joint_bound x -lower_joint_bound 0\n");
+         ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A") ], "SYSPAR/MOC.cfg:5:12: cfg error: -upper_joint_bound x");
+      ([ ("BACKINFO/backinfo.txt", ">>TASK: broken\n") ], "BACKINFO/backinfo.txt:1:1: backup error");
+      ([ ("SYSPAR/EIO.cfg", "EIO:CFG_1.0:6:1::\n") ], "RAPID:1:1: backup error: no task to run") ]
+
+(* R-bk-5: the arm's bounds (radians) narrow the description's range, never widen it. *)
+let narrowed () =
+  let r = Rapid_motion_model.Robot.irb120 in
+  let b axis lower upper = { Backup.axis; lower; upper; bound_at = "MOC.cfg:1" } in
+  let n, warnings = Rapid_run.Backup_setup.narrow r [ b 1 (-. Float.pi /. 2.) (Float.pi /. 2.); b 2 (-10.) 10. ] in
+  Alcotest.(check (float 1e-9)) "axis 1 min" (-90.) n.axes.(0).min;
+  Alcotest.(check (float 1e-9)) "axis 1 max" 90. n.axes.(0).max;
+  Alcotest.(check (float 1e-9)) "axis 2 not widened" r.axes.(1).max n.axes.(1).max;
+  Alcotest.(check int) "no warning" 0 (List.length warnings);
+  let _, warnings = Rapid_run.Backup_setup.narrow r [ b 1 4. 5. ] in
+  Alcotest.(check int) "bounds outside the range: kept, with a warning" 1 (List.length warnings)
+
+(* A program file: its modules beside it, in order; a malformed one is an error with its place. *)
+let program_file () =
+  let dir = temp_backup [ ("p.pgf", "<?xml version=\"1.0\" ?>\n<Program>\n <Module>a.mod</Module>\n \
+                                     <Module>b.mod</Module>\n</Program>");
+                          ("bad.pgf", "<Program><Module>a.mod</Modul></Program>");
+                          ("empty.pgf", "<Program></Program>") ] in
+  Alcotest.(check (result (list string) string)) "modules" (Ok [ dir // "a.mod"; dir // "b.mod" ])
+    (Backup.read_pgf (dir // "p.pgf"));
+  List.iter (fun f -> match Backup.read_pgf (dir // f) with
+      | Ok _ -> Alcotest.failf "%s accepted" f
+      | Error m -> Alcotest.(check bool) (f ^ ": " ^ m) true
+                     (String.length m > String.length (dir // f) && String.sub m 0 (String.length (dir // f)) = dir // f))
+    [ "bad.pgf"; "empty.pgf"; "missing.pgf" ]
+
+let suite =
+  ( "backup",
+    [ Alcotest.test_case "cfg format" `Quick format;
+      Alcotest.test_case "malformed cfg" `Quick malformed;
+      Alcotest.test_case "hostile cfg" `Quick hostile;
+      Alcotest.test_case "task folders alone" `Quick bare_folders;
+      Alcotest.test_case "tasks configured" `Quick configured;
+      Alcotest.test_case "refused backups" `Quick refused;
+      Alcotest.test_case "joint bounds" `Quick narrowed;
+      Alcotest.test_case "program file" `Quick program_file ] )

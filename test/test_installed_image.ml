@@ -1,0 +1,58 @@
+(* The installed environment computed at build time (lib/load/installed_image.ml) is the one
+   computed now: the test process takes it from the image, and the environment parsed, checked
+   and lowered here afresh, from the same files' table and record ids as the build started from,
+   marshals to the same bytes (so it holds no functional value either: Marshal would refuse it).
+   The process's own table of files and record ids are put back afterwards. *)
+
+module Level = Rapid_runtime.Installed_level
+
+let image () : Level.t = Marshal.from_string Rapid_load.Installed_image.data 0
+
+let in_use () =
+  Alcotest.(check bool) "the installed environment comes from the image" true (Rapid_load.Installed_image.in_use ());
+  match Rapid_typing.Installed_env.modules () with
+  | Error _ -> Alcotest.fail "the installed environment does not parse"
+  | Ok modules ->
+      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules)
+
+let same_as_now () =
+  let files, records = Level.before (image ()) in
+  let saved_files = Rapid_syntax.Source.registry () and saved_records = Rapid_typing.Types.record_ids_used () in
+  Rapid_syntax.Source.restore_registry files;
+  Rapid_typing.Types.restore_record_ids records;
+  let now = Level.compute () in
+  Rapid_syntax.Source.restore_registry saved_files;
+  Rapid_typing.Types.restore_record_ids saved_records;
+  match now with
+  | Error e -> Alcotest.fail e
+  | Ok now ->
+      Alcotest.(check bool) "the same bytes as the image's" true
+        (Marshal.to_string now [] = Rapid_load.Installed_image.data)
+
+(* A program over the image's environment: its routines and globals come after the installed
+   ones, and an installed routine, a record type and an installed constant are found. *)
+let program_runs () =
+  let text = {|MODULE m
+  VAR robtarget p := [[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    TPWrite "x" \Num:=p.trans.x + StrLen("abc");
+    TPWrite ValToStr(v100);
+  ENDPROC
+ENDMODULE
+|} in
+  let m = match Rapid_syntax.Parse.parse_string ~name:"image.mod" text with
+    | Ok m -> m | Error _ -> Alcotest.fail "the program does not parse" in
+  match Rapid_fuzz.Fuzz_run.load m with
+  | Error _ -> Alcotest.fail "the program does not check"
+  | Ok l ->
+      List.iter (fun (e : Rapid_fuzz.Fuzz_run.engine) ->
+          let o = e.run l.program ~max_steps:10_000 in
+          let lines = List.filter (fun l -> String.length l > 7 && String.sub l 0 7 = "output ") o.events in
+          Alcotest.(check (list string)) e.engine_name [ "output x4"; "output [100,500,5000,1000]" ] lines)
+        [ Rapid_fuzz.Fuzz_run.machine; Rapid_fuzz.Fuzz_run.closure ]
+
+let suite =
+  ( "installed image",
+    [ Alcotest.test_case "the environment comes from the image" `Quick in_use;
+      Alcotest.test_case "the image is the environment computed now" `Quick same_as_now;
+      Alcotest.test_case "a program over the image's environment" `Quick program_runs ] )
