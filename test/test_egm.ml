@@ -183,6 +183,17 @@ let egm_joint engine () =
           List.iter (fun (r : E.robot) ->
               List.iter2 (fun t v -> if Float.abs v > Float.abs t +. 1e-6 then Alcotest.failf "feedback %g beyond %g" v t)
                 targets (joints r)) feedback;
+          (* An axis moves at most \MaxSpeedDeviation (200 degrees/s) for a cycle of 4 ms, ramped in
+             over \RampInTime (0.05 s): 0.8 degrees a cycle, 0.064 in the first. *)
+          let steps = List.mapi (fun i (r : E.robot) -> (i, joints r)) feedback in
+          List.iter (fun (i, q) ->
+              if i > 0 then begin
+                let before = snd (List.nth steps (i - 1)) in
+                let limit = 0.8 *. Float.min 1. (float_of_int i *. 0.004 /. 0.05) +. 1e-6 in
+                List.iter2 (fun a b -> if Float.abs (b -. a) > limit then
+                               Alcotest.failf "cycle %d: a step of %g degrees, at most %g" i (b -. a) limit) before q
+              end) steps;
+          Alcotest.(check bool) "J6 needs 56 cycles of 0.8 degrees at least" true (List.length feedback > 56);
           (* The Cartesian feedback is the flange where CRobT finds it. *)
           let x, y, z = match last.feedback_pose with
             | Some { E.pos = Some p; _ } -> p | _ -> Alcotest.fail "no Cartesian feedback" in

@@ -13,7 +13,15 @@ let in_use () =
   match Rapid_typing.Installed_env.modules () with
   | Error _ -> Alcotest.fail "the installed environment does not parse"
   | Ok modules ->
-      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules)
+      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules);
+      (* the checker's and the lowering's kept work is found by this list, compared physically *)
+      Alcotest.(check bool) "the same list at every call" true
+        (match Rapid_typing.Installed_env.modules () with Ok again -> again == modules | Error _ -> false);
+      Alcotest.(check bool) "without the assertions of rapid-sem test" true
+        (List.for_all (fun (m : Rapid_syntax.Ast.module_declaration) ->
+             match m.module_name.it with
+             | Rapid_syntax.Ast.Ident n -> String.lowercase_ascii n <> "installed_unit_test"
+             | ID_placeholder -> true) modules)
 
 let same_as_now () =
   let files, records = Level.before (image ()) in
@@ -51,8 +59,17 @@ ENDMODULE
           Alcotest.(check (list string)) e.engine_name [ "output x4"; "output [100,500,5000,1000]" ] lines)
         [ Rapid_fuzz.Fuzz_run.machine; Rapid_fuzz.Fuzz_run.closure ]
 
+(* A task without signals or assertions is checked against the image's list itself: the checker
+   and the lowering know the installed level by that list, and a copy of it (an append of
+   nothing) would check and lower the whole installed environment again at every start. *)
+let same_list () =
+  match Rapid_typing.Installed_env.modules (), Rapid_load.Session.installed () with
+  | Ok image, Ok session -> Alcotest.(check bool) "the same list" true (image == session)
+  | _ -> Alcotest.fail "the installed environment does not parse"
+
 let suite =
   ( "installed image",
     [ Alcotest.test_case "the environment comes from the image" `Quick in_use;
       Alcotest.test_case "the image is the environment computed now" `Quick same_as_now;
-      Alcotest.test_case "a program over the image's environment" `Quick program_runs ] )
+      Alcotest.test_case "a program over the image's environment" `Quick program_runs;
+      Alcotest.test_case "a plain task's installed modules are the image's list" `Quick same_list ] )

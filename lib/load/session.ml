@@ -34,10 +34,13 @@ let () = ignore (Installed_image.in_use ())
 
 let installed ?(testing = false) ?(io = Io.empty) () =
   let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
+  (* the installed modules' list itself when nothing is added: the checker and the lowering know
+     the build-time image's level by that list (Check.installed_state) *)
+  let ( @@@ ) l = function [] -> l | more -> l @ more in
   match Rapid_typing.Installed_env.modules (), tests, signal_module io with
   | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
-  | Ok installed, Ok tests, Ok None -> Ok (installed @ tests)
-  | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @ tests @ [ m ])
+  | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
+  | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ])
 
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)

@@ -85,7 +85,8 @@ val one_task :
     of one task run. *)
 
 val fresh_world :
-  ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list -> (Run.world, failure) result
+  ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list ->
+  (Run.world, failure) result
 (** Another world of the same options for the task buffer of these files, as {!single} makes it:
     each start of the program {!single} loaded in one of them begins afresh (module data, clock,
     signals, robot), without loading the files again (rapid-sem test: a world per test). *)

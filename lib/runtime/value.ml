@@ -69,9 +69,18 @@ let handle_id h = h.id
 (* ------------------------------------------------------------------------------ value semantics *)
 
 let rec copy = function
-  | Record a -> Record (Array.map copy a)
-  | Array a -> Array (Array.map copy a)
+  | Record a -> Record (copy_parts a)
+  | Array a -> Array (copy_parts a)
   | (Num _ | Dnum _ | Bool _ | String _ | Handle _) as v -> v
+
+(* The small ones (pos, orient, confdata...) built in place: Array.map is a call to the runtime. *)
+and copy_parts a =
+  match Array.length a with
+  | 1 -> [| copy a.(0) |]
+  | 2 -> [| copy a.(0); copy a.(1) |]
+  | 3 -> [| copy a.(0); copy a.(1); copy a.(2) |]
+  | 4 -> [| copy a.(0); copy a.(1); copy a.(2); copy a.(3) |]
+  | _ -> Array.map copy a
 
 let rec equal a b =
   match a, b with
@@ -111,7 +120,12 @@ let rec default_of = function
   | S_bool -> Bool false
   | S_string -> String ""
   | S_handle kind -> Handle { kind; id = 0 }
-  | S_record components -> Record (Array.map default_of components)
+  | S_record c -> (
+      (* the small ones built in place, as in [copy_parts] *)
+      match Array.length c with
+      | 3 -> Record [| default_of c.(0); default_of c.(1); default_of c.(2) |]
+      | 4 -> Record [| default_of c.(0); default_of c.(1); default_of c.(2); default_of c.(3) |]
+      | _ -> Record (Array.map default_of c))
   | S_array (n, element) -> Array (Array.init n (fun _ -> default_of element))
 
 (* ------------------------------------------------------------------------------ memory *)

@@ -1,11 +1,12 @@
 open Rapid_syntax
 
 (* The assertions of rapid-sem test (doc/testing.md) are installed only in the task buffers
-   that command runs (doc/rulings.md R-test-a). *)
-let file_names =
-  List.filter (( <> ) "installed/unit_test.sys") (List.map fst Installed_sources.files)
+   that command runs (doc/rulings.md R-test-a): they are parsed apart, and only by that command,
+   so that every other run's installed modules are the build-time image's list itself (the
+   checker knows an installed level it has seen by that list). *)
+let test_file = "installed/unit_test.sys"
 
-let parse () =
+let parse_files files =
   let modules =
     List.fold_left (fun acc (name, text) ->
         match acc with
@@ -13,11 +14,13 @@ let parse () =
         | Ok ms -> (
             match Parse.parse_string ~options:{ Parse.default_options with installed = true } ~name text with
             | Ok m -> Ok (m :: ms)
-            | Error d -> Error d)) (Ok []) Installed_sources.files
+            | Error d -> Error d)) (Ok []) files
     |> Result.map List.rev in
   (* Their file ids stay theirs for the life of the process (Source.keep). *)
   Source.keep ();
   modules
+
+let parse () = parse_files (List.filter (fun (name, _) -> name <> test_file) Installed_sources.files)
 
 let image : (unit -> Ast.module_declaration list) option ref = ref None
 
@@ -26,9 +29,10 @@ let set_image f = image := Some f
 let parsed =
   lazy (match !image with Some f -> Ok (f ()) | None -> parse ())
 
-let is_test (m : Ast.module_declaration) =
-  match m.module_name.it with Ast.Ident n -> String.lowercase_ascii n = "installed_unit_test" | ID_placeholder -> false
+let modules () = Lazy.force parsed
 
-let modules () = Result.map (List.filter (fun m -> not (is_test m))) (Lazy.force parsed)
+let tests = lazy (parse_files (List.filter (fun (name, _) -> name = test_file) Installed_sources.files))
 
-let test_modules () = Result.map (List.filter is_test) (Lazy.force parsed)
+let test_modules () = Result.bind (modules ()) (fun _ -> Lazy.force tests)
+
+let file_names = List.map fst Installed_sources.files

@@ -24,3 +24,4 @@ val test_modules : unit -> (Ast.module_declaration list, Diagnostic.t) result
     the task buffers that command runs have them (doc/rulings.md R-test-a). *)
 
 val file_names : string list
+(** The names of every installed file, the assertions' among them. *)
