@@ -67,14 +67,14 @@ let exit_stopped = 1
 let exit_exhausted = 3
 let exit_unsupported = 4
 
+let stopped_text at name about chain =
+  Printf.sprintf "%s: execution error: %s%s: the system error handler stopped the task (%s)"
+    (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "") (EJ.chain_text chain)
+
 let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
   match o with
   | Ended -> exit_ok
-  | Stopped { name; at; chain; about; _ } ->
-      Printf.eprintf "%s: execution error: %s%s: the system error handler stopped the task (%s)\n"
-        (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
-        (EJ.chain_text chain);
-      exit_stopped
+  | Stopped { name; at; chain; about; _ } -> prerr_endline (stopped_text at name about chain); exit_stopped
   | Resource_exhausted (m, _) -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported { reason; at; _ } ->
@@ -86,6 +86,24 @@ let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
         m steps;
       exit_internal
   | Running -> Printf.eprintf "rapid-sem: the step limit (%d) is exhausted\n" max_steps; exit_exhausted
+
+(* With several tasks the run's end names one outcome (the exit status's); a task that an error
+   stopped, or a routine not modelled, before another task's end decided the run (a deadlock, the
+   --max-time limit, an error of its own) would otherwise leave no word on standard error. *)
+let report_task_stops tasks (run : Rapid_runtime.Outcome.t) =
+  let key (o : Rapid_runtime.Outcome.t) = match o with
+    | Stopped { name; at; _ } | Unsupported { name; at; _ } -> Some (name, Source.to_string at)
+    | _ -> None in
+  List.iter (fun (task, (o : Rapid_runtime.Outcome.t)) ->
+      if key o <> None && key o <> key run then
+        match o with
+        | Stopped { name; at; chain; about; _ } ->
+            Printf.eprintf "task %s: %s\n%!" task (stopped_text at name about chain)
+        | Unsupported { reason; at; _ } ->
+            Printf.eprintf "task %s: %s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n%!"
+              task (Source.to_string at) reason
+        | _ -> ())
+    tasks
 
 let report_load_failure ?(json = false) failure =
   (* With --json, a program refused before it runs still gives an event stream: the start line

@@ -30,6 +30,10 @@ val finish : Rapid_runtime.Outcome.t -> int -> max_steps:int -> int
 (** The exit status of a run's end (0 ended, 1 stopped, 3 exhausted, 4 not modelled, 125 stuck),
     what it means said on standard error. *)
 
+val report_task_stops : (string * Rapid_runtime.Outcome.t) list -> Rapid_runtime.Outcome.t -> unit
+(** Of several tasks' outcomes (name, outcome), each error stop and each routine not modelled
+    that is not the run's outcome (given last), one line on standard error naming its task. *)
+
 val report_load_failure : ?json:bool -> Rapid_load.Session.failure -> int
 (** A task buffer refused: its diagnostics on standard error; with [json] the stream of a
     refused run on standard output too (doc/oracle.md). *)

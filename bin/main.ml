@@ -113,7 +113,9 @@ let run_sink ~json ~closure_single : Drive.sink =
     task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ends := (name, o) :: !ends);
     run_end = (fun ?entry_at o steps ->
         if json then framing (EJ.outcome ?entry_at o steps)
-        else Option.iter (fun s -> Cli.flush_output (); print_summary s !ends) !summary);
+        else match !summary with
+          | Some s -> Cli.flush_output (); print_summary s !ends
+          | None -> Cli.report_task_stops (List.rev !ends) o);
     flush = Cli.flush_output }
 
 let run_cmd =

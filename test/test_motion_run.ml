@@ -118,12 +118,29 @@ let palletiser_runs () =
   if List.length (planned r) < 100 then Alcotest.failf "only %d moves" (List.length (planned r));
   Alcotest.(check bool) "both pallets filled" true (List.mem "Both pallets full, waiting for exchange" r.output)
 
+(* test/realworld: the polishing cell's targets give the track's position (eax_a, 950 to 2000 mm);
+   on the large arm carried by a track (large-arm-track.robot) it runs to its end, and on the same
+   arm without the track its first move to a work object is out of reach. *)
+let polishing_runs_on_its_track () =
+  let d = Filename.concat "realworld" in
+  let r = run ~robot:(d "large-arm-track.robot") ~io:(d "polishing.io") [ d "CadPolishCover.mod" ] in
+  Alcotest.(check bool) "ended" true (r.outcome = Rapid_runtime.Outcome.Ended);
+  Alcotest.(check int) "moves" 189 (List.length (planned r));
+  ignore (lifecycle r);
+  let fixed = run ~robot:(d "large-arm.robot") ~io:(d "polishing.io") [ d "CadPolishCover.mod" ] in
+  match fixed.outcome with
+  | Rapid_runtime.Outcome.Stopped { name; at; _ } ->
+      Alcotest.(check string) "without the track" "ERR_ROBLIMIT" name;
+      Alcotest.(check int) "at the first move to a work object" 344 (Rapid_syntax.Source.start at).line
+  | _ -> Alcotest.fail "expected ERR_ROBLIMIT without the track"
+
 let suite =
   ( "motion-run",
     [ Alcotest.test_case "move events: every move starts and ends once, in order" `Quick events_of_a_run;
       Alcotest.test_case "the program pointer waits at stop points" `Quick program_pointer_at_stop_points;
       Alcotest.test_case "realworld: the deburring cell runs to its end" `Quick deburring_runs;
-      Alcotest.test_case "realworld: the palletiser palletises" `Quick palletiser_runs ] )
+      Alcotest.test_case "realworld: the palletiser palletises" `Quick palletiser_runs;
+      Alcotest.test_case "realworld: the polishing cell runs on its track" `Quick polishing_runs_on_its_track ] )
 
 (* The stimulus's collisions (doc/controller.md). *)
 let collision_lines () =

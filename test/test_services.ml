@@ -311,6 +311,56 @@ let first_line_before_wait () =
           ("run --json", [ "--json" ], {|{"event":"output","text":"listening"}|});
           ("run --json --engine machine", [ "--json"; "--engine"; "machine" ], {|{"event":"output","text":"listening"}|}) ])
 
+(* The warning of a routine that --stub-unmodelled ran as a no-op reaches standard error when the
+   call runs, in both engines, while the program then waits on the host: a run killed there has
+   said it (before, the closure engine kept its warnings until the run ended). *)
+let stubbed_server port = Printf.sprintf {|MODULE stubbed
+  VAR socketdev listener;
+  VAR socketdev client;
+  VAR num count;
+  PROC main()
+    TPReadNum count, "How many?";
+    SocketCreate listener;
+    SocketBind listener, "127.0.0.1", %d;
+    SocketListen listener;
+    SocketAccept listener, client \Time:=30;
+  ENDPROC
+ENDMODULE
+|} port
+
+let stub_warning_before_wait () =
+  let dir = temp_dir () in
+  Fun.protect ~finally:(fun () -> ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))) (fun () ->
+      let file = Filename.concat dir "stubbed.mod" in
+      write_file file (stubbed_server (free_port ()));
+      let expected = "/stubbed.mod:6:5: warning: TPReadNum is not modelled; --stub-unmodelled ran it as a no-op" in
+      List.iter (fun engine ->
+          let err_r, err_w = Unix.pipe ~cloexec:true () in
+          let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
+          let pid = Unix.create_process binary
+              [| binary; "run"; "--engine"; engine; "--stub-unmodelled"; "--fs"; Filename.concat dir "fs"; file |]
+              devnull devnull err_w in
+          Unix.close err_w; Unix.close devnull;
+          let seen = Buffer.create 64 and chunk = Bytes.create 4096 in
+          let deadline = Unix.gettimeofday () +. 10. in
+          let has_line () = List.exists (fun l -> String.ends_with ~suffix:expected l)
+              (String.split_on_char '\n' (Buffer.contents seen)) in
+          let rec read () =
+            if not (has_line ()) then
+              let left = deadline -. Unix.gettimeofday () in
+              if left > 0. then
+                match Unix.select [ err_r ] [] [] left with
+                | [], _, _ -> ()
+                | _ -> let n = Unix.read err_r chunk 0 4096 in if n > 0 then (Buffer.add_subbytes seen chunk 0 n; read ()) in
+          read ();
+          let still_running = match Unix.waitpid [ Unix.WNOHANG ] pid with 0, _ -> true | _ -> false in
+          (try Unix.kill pid Sys.sigkill with Unix.Unix_error _ -> ());
+          ignore (Unix.waitpid [] pid); Unix.close err_r;
+          Alcotest.(check bool) (engine ^ ": the run still waits for its client") true still_running;
+          Alcotest.(check bool) (engine ^ ": the warning was read meanwhile: " ^ String.escaped (Buffer.contents seen))
+            true (has_line ()))
+        [ "closure"; "machine" ])
+
 (* 200 clients connecting at once all get their connection within a bound, while the server
    accepts them one by one: the listen backlog holds them (R-13-cli1); with a backlog of 8 the
    kernel drops the rest's SYNs, and they retry after 1 s, 3 s, 7 s ... *)
@@ -438,6 +488,7 @@ let suite = ("services", [
     Alcotest.test_case "--save: a killed run leaves the old or the new module" `Quick kill_during_save;
     Alcotest.test_case "--save: both engines write the same modules" `Quick save_engines;
     Alcotest.test_case "a line is read while the run waits on the host" `Quick first_line_before_wait;
+    Alcotest.test_case "a stub's warning is read while the run waits on the host" `Quick stub_warning_before_wait;
     Alcotest.test_case "200 simultaneous clients connect at once" `Quick simultaneous_clients;
     Alcotest.test_case "a wait beyond --max-time answers its client (R-13-sockwait1)" `Quick wait_beyond_max_time;
   ])

@@ -49,8 +49,9 @@ let write_back dir files data =
 let closure ~notify sink ~json ~save (o : Run_options.t) files ~entry =
   let* s = Run_setup.single ~notify o files in
   sink.start None;
-  let stubbed = ref [] in
-  let on_event e = (match e with Event.Stubbed _ -> stubbed := e :: !stubbed | _ -> ()); sink.event None e in
+  (* Each warning of a routine stubbed goes out when the call runs, as the machine's do, so that a
+     run that waits on the host afterwards (or is killed there) has said it. *)
+  let on_event e = sink.stubbed [ e ]; sink.event None e in
   let data = ref [] in
   let module_data = Option.map (fun _ d -> data := d) save in
   match Rapid_closure.Closure_engine.run ~limits:o.limits ~fuel:o.max_steps ~stub_unmodelled:o.stub_unmodelled
@@ -58,7 +59,6 @@ let closure ~notify sink ~json ~save (o : Run_options.t) files ~entry =
           s.loaded.program ~entry with
   | Error reason -> Error (Run_setup.Cannot_start { entry; reason })
   | Ok { outcome; fuel_used } ->
-      sink.stubbed (List.rev !stubbed);
       sink.run_end ?entry_at:(entry_region s.loaded.program entry) outcome fuel_used;
       let* () = match save with
         | None -> Ok ()
