@@ -333,21 +333,9 @@ let accept_server name port = Printf.sprintf {|MODULE accept_%s
 ENDMODULE
 |} name port name name
 
-let free_port () =
-  let s0 = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
-  Unix.bind s0 (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
-  let port = match Unix.getsockname s0 with Unix.ADDR_INET (_, p) -> p | _ -> 0 in
-  Unix.close s0; port
-
-let connect_retrying port =
-  let deadline = Unix.gettimeofday () +. 10. in
-  let rec go () =
-    let s = Unix.socket Unix.PF_INET Unix.SOCK_STREAM 0 in
-    match Unix.connect s (Unix.ADDR_INET (Unix.inet_addr_loopback, port)) with
-    | () -> s
-    | exception Unix.Unix_error (Unix.ECONNREFUSED, _, _) when Unix.gettimeofday () < deadline ->
-        Unix.close s; Unix.sleepf 0.05; go () in
-  go ()
+(* The loopback helpers of the services' tests. *)
+let free_port = Test_services.free_port
+let connect_retrying = Test_services.connect_retrying
 
 let test_two_accepts () =
   List.iter (fun engine ->
