@@ -20,7 +20,8 @@ let cmd =
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot () in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
     match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
     | Error f -> Cli.failure f

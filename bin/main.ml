@@ -135,10 +135,11 @@ let run_cmd =
                               $(b,machine) (the small-step machine, the definition, which $(b,trace) and \
                               $(b,debug) run). Without this option, a run with --samples runs on the machine, \
                               which alone has it (doc/semantics.md, \"The second engine\").") in
-  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller (robot, base_frames)
-      samples save engine =
+  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller
+      (robot, base_frames) samples save engine =
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot () in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     let engine = Drive.engine ?requested:engine ~samples () in
     let sink = run_sink ~json ~closure_single:(engine = `Closure && tasks.tasks = []) in
     match Drive.run ~notify:Cli.notify sink ~engine ~json ~samples ~save options tasks with

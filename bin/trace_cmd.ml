@@ -263,12 +263,15 @@ let cmd =
                    ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN"
                      ~doc:"Print only the steps whose rule name contains PATTERN (reduction level).") in
-  let run tasks max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller (robot, base_frames) samples =
+  let run tasks max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller
+      (robot, base_frames) samples =
     Cli.guard @@ fun () ->
     match Rapid_run.Tcp_samples.check samples with
     | Error m -> prerr_endline m; Cli.exit_static_error
     | Ok () ->
-        let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot () in
+        let options =
+          Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+        in
         match Steps.start ~history:(samples <> None && format = `Jsonl) ~notify:Cli.notify options tasks with
         | Error f -> Cli.failure f
         | Ok run -> trace run ~format ~level ~from_ ~to_ ~rules ~samples ~max_steps

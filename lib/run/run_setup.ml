@@ -256,7 +256,8 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let unknown = List.find_map (fun (tk, _) -> match tk with
               | Some n when not (List.exists (same n) names) ->
                   Some (Printf.sprintf "rapid-sem: --base-frame %s=...: there is no task %s" n n)
-              | Some n when cell <> None && not (is_motion n) && not (List.exists (fun (c, _) -> same c n) cell_robots) ->
+              | Some n when cell <> None && not (is_motion n)
+                            && not (List.exists (fun (c, _) -> same c n) cell_robots) ->
                   Some (Printf.sprintf "rapid-sem: --base-frame %s=...: the task %s has no robot in the backup" n n)
               | _ -> None) frames in
           let own = List.filter_map (fun n ->
