@@ -132,7 +132,8 @@ let run_tasks engine case expected (run : Spec_case.run) =
   | Ok io, Ok robot ->
   let io =
     let modules = List.concat_map (fun (_, files) ->
-        List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
+        let options = { Parse.default_options with robotware = case.robotware } in
+        List.filter_map (fun f -> Result.to_option (Parse.parse_file ~options f)) files) run.tasks in
     fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
            ~stub_unmodelled:case.stub_unmodelled modules io) in
   let limits = { Rapid_runtime.Limits.default with
@@ -168,16 +169,16 @@ let run_tasks engine case expected (run : Spec_case.run) =
             in
             loop ();
             (List.rev !output, TS.outcome ts)))
-          (Rapid_run.Run.machine_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
-             ~controller:world ~motion specs)
+          (Rapid_run.Run.machine_tasks ~limits ~stub_unmodelled ~allow_unknown ~robotware:case.robotware ~io ?seed
+             ?motion_task ~controller:world ~motion specs)
     | Closure ->
         Result.map (fun (ct, _) -> (fun () ->
             let output = ref [] in
             let r = CT.run ~fuel:max_steps ~all_events:false
                 ~on_event:(fun _ -> function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) ct in
             (List.rev !output, r.outcome)))
-          (Rapid_run.Run.closure_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
-             ~controller:world ~motion specs) in
+          (Rapid_run.Run.closure_tasks ~limits ~stub_unmodelled ~allow_unknown ~robotware:case.robotware ~io ?seed
+             ?motion_task ~controller:world ~motion specs) in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
@@ -195,7 +196,7 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
           (String.concat ", " Spec_case.known_formats) }
   else if case.problems <> [] then fail case (String.concat "; " case.problems)
   else
-    let options = { Parse.default_options with strict = case.strict } in
+    let options = { Parse.default_options with strict = case.strict; robotware = case.robotware } in
     let expected = Option.get case.expectation in
     match case.run with
     | Some ({ tasks = _ :: _; _ } as run) -> Loopback_lock.exclusive case (fun () -> run_tasks engine case expected run)

@@ -37,6 +37,8 @@ type t = {
   connected : (string * string) list;    (** a task without a robot and the motion task of its group *)
   eio : string option;                   (** SYSPAR/EIO.cfg when there is one *)
   retry_limit : int option;              (** SYS.cfg SYS_MISC NoOfRetry *)
+  robotware : Rapid_syntax.Robotware.t option;
+      (** backinfo.txt's "RobotWare Version:" (R-2.4-rw6) *)
   warnings : string list;                (** what is not modelled: FILE:LINE: warning: ... (R-bk-7) *)
 }
 
