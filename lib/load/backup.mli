@@ -49,6 +49,10 @@ val read : string -> (t, string) result
 (** The backup in this folder. An error is one line with FILE:LINE:COL: a malformed cfg file
     ({!Cfg_file}), a task SYS.cfg names twice, a backup with no task to run. *)
 
+val robotware_of_backinfo : string -> Rapid_syntax.Robotware.t option
+(** The release of this backinfo.txt's "RobotWare Version:" line (R-2.4-rw6); [None] when the
+    file cannot be read or names none. *)
+
 val read_pgf : string -> (string list, string) result
 (** The module files a program file lists, as paths beside it, in its order. *)
 
