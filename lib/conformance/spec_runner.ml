@@ -44,21 +44,25 @@ let robot_of (run : Spec_case.run) =
   | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name)
 
 (* The run's output lines and outcome, by the chosen engine. *)
-let execute engine case (run : Spec_case.run) ~io program =
-  let limits = { Rapid_runtime.Limits.default with
-                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
-  let max_steps = Option.value run.max_steps ~default:10_000_000 in
-  let output = ref [] in
-  let collect = function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> () in
+
+(* The controller of a run case: its clock, and a mass memory of its own, empty at the start but
+   for @home (doc/services.md); [release] closes its services and removes the mass memory. *)
+let case_world (run : Spec_case.run) io =
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
   let sandbox = Rapid_controller.File_sandbox.temporary () in
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
   let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
       run.egm_devices in
   let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
   Rapid_controller.World.set_services world services;
-  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+  (world, fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
+let execute engine case (run : Spec_case.run) ~io program =
+  let limits = { Rapid_runtime.Limits.default with
+                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let output = ref [] in
+  let collect = function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> () in
+  let world, release = case_world run io in
   let module E = (val Rapid_run.Run.engine (match engine with Machine -> `Machine | Closure -> `Closure)) in
   match Result.bind (robot_of run) (fun robot ->
       let motion = Rapid_installed.Motion_routines.create ?robot () in
@@ -139,14 +143,7 @@ let run_tasks engine case expected (run : Spec_case.run) =
   let limits = { Rapid_runtime.Limits.default with
                  retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
-  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  let sandbox = Rapid_controller.File_sandbox.temporary () in
-  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-  let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
-      run.egm_devices in
-  let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
-  Rapid_controller.World.set_services world services;
-  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+  let world, release = case_world run io in
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
     | Some (_, r) -> r | None -> run.entry in
