@@ -26,9 +26,10 @@ let parse_cmd =
                  before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
                  without a final line break, \\\\Continue as an argument (doc/dialect.md).")
   in
-  let run files print ast strict =
+  let run files print ast strict robotware =
     Cli.guard @@ fun () ->
-    let options = { Parse.default_options with strict } in
+    let robotware = Option.value robotware ~default:Rapid_syntax.Robotware.default in
+    let options = { Parse.default_options with strict; robotware } in
     let ok = List.fold_left (fun ok file ->
         match Parse.parse_file ~options file with
         | Ok m ->
@@ -50,7 +51,7 @@ let parse_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every file parses; 2 when one does not.";
   ] in
-  Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict)
+  Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict $ Run_args.robotware_arg)
 
 (* What rapid-sem run writes of a run as it goes: with --json every event as a JSON object (each
    naming its task, with several), else the program's output. The closure engine's run of one

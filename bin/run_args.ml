@@ -79,6 +79,19 @@ let services_args =
   Term.(const (fun fs fs_quota net map_address egm_device -> { O.fs; fs_quota; net; map_address; egm_device })
         $ fs $ quota $ net $ map $ egm)
 
+let robotware_conv =
+  let parse s = match Rapid_syntax.Robotware.of_string s with
+    | Some r -> Ok r
+    | None -> Error (`Msg (Printf.sprintf "expected 5, 6 or 7 (a RobotWare release), found %S" s)) in
+  Arg.conv (parse, fun f r -> Format.pp_print_string f (Rapid_syntax.Robotware.to_string r))
+
+(* R-2.4-rw6. *)
+let robotware_arg =
+  Arg.(value & opt (some robotware_conv) None & info [ "robotware" ] ~docv:"RELEASE"
+         ~doc:"The RobotWare release the modules are written for: 7 (the manual's, the default) or 5 and 6, \
+               where BREAK and CONTINUE are names and Break is an instruction (doc/dialect.md). A backup's \
+               backinfo.txt gives it when this option does not.")
+
 let controller_args =
   let module W = Rapid_controller.World in
   let statement_time =
@@ -91,8 +104,9 @@ let controller_args =
   let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default \
                            2024-01-01T00:00:00).") in
-  Term.(const (fun io statement_time max_time epoch services -> { O.io; statement_time; max_time; epoch; services })
-        $ io_arg $ statement_time $ max_time $ epoch $ services_args)
+  Term.(const (fun io statement_time max_time epoch services robotware ->
+      { O.io; statement_time; max_time; epoch; services; robotware })
+        $ io_arg $ statement_time $ max_time $ epoch $ services_args $ robotware_arg)
 
 let base_frame_arg =
   Arg.(value & opt_all string [] & info [ "base-frame" ] ~docv:"[TASK=]X,Y,Z,Q1,Q2,Q3,Q4"

@@ -12,6 +12,9 @@ val count : what:string -> int Arg.conv
 val io_arg : string option Term.t
 (** --io FILE *)
 
+val robotware_arg : Rapid_syntax.Robotware.t option Term.t
+(** --robotware 5|6|7 (doc/dialect.md, R-2.4-rw6). *)
+
 val controller_args : Rapid_run.Run_options.controller Term.t
 (** --io, --statement-time, --max-time, --epoch and the services' options (doc/controller.md,
     doc/services.md). *)

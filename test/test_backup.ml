@@ -96,6 +96,36 @@ let temp_backup files =
 
 let main_mod name = Printf.sprintf "MODULE %s\n  PROC main()\n  ENDPROC\nENDMODULE\n" name
 
+(* R-2.4-rw6: the release of backinfo.txt's "RobotWare Version:", and what reading a module as
+   RobotWare 6 changes: BREAK and CONTINUE are names there, reserved words by the manual's (7). *)
+let robotware () =
+  let module R = Rapid_syntax.Robotware in
+  let release = Alcotest.testable (fun f r -> Format.pp_print_string f (R.to_string r)) ( = ) in
+  List.iter (fun (text, expected) -> Alcotest.(check (option release)) text expected (R.of_string text))
+    [ ("6.13.02.00", Some R.Rw6); ("5.15.9100.10", Some R.Rw6); ("7.12", Some R.Rw7); ("7", Some R.Rw7);
+      ("6", Some R.Rw6); ("8.0", None); ("", None); ("six", None) ];
+  let info version = Printf.sprintf "#\n>>SYSTEM_ID:\n1\n\n>>PRODUCTS_ID:\n%s\n\n>>TASK1: (T_ROB1,P,)\n\
+                                     PROGMOD/A.mod @ a.mod\n" version in
+  let module_text = "MODULE A\n  VAR bool continue := TRUE;\n  PROC main()\n    Break;\n  ENDPROC\nENDMODULE\n" in
+  let read version =
+    let dir = temp_backup [ ("BACKINFO/backinfo.txt", info version); ("RAPID/TASK1/PROGMOD/A.mod", module_text) ] in
+    match Backup.read dir with Error m -> Alcotest.fail m | Ok b -> b in
+  Alcotest.(check (option release)) "RobotWare 6" (Some R.Rw6) (read "RobotWare Version: 6.13.02.00").robotware;
+  Alcotest.(check (option release)) "RobotWare 7" (Some R.Rw7) (read "RobotWare Version: 7.12.0").robotware;
+  Alcotest.(check (option release)) "no version" None (read "").robotware;
+  let files = (List.hd (read "RobotWare Version: 6.13.02.00").tasks).files in
+  (match Rapid_load.Session.load ~robotware:R.Rw6 files with
+   | Ok _ -> ()
+   | Error _ -> Alcotest.fail "a RobotWare 6 module naming a variable continue is refused as RobotWare 6");
+  match Rapid_load.Session.load files with
+  | Error (Front_end [ d ]) ->
+      Alcotest.(check bool) "refused at CONTINUE" true
+        (let m = Rapid_syntax.Diagnostic.to_string d in
+         let part = "found CONTINUE" in
+         let n = String.length part in
+         let rec at i = i + n <= String.length m && (String.sub m i n = part || at (i + 1)) in at 0)
+  | _ -> Alcotest.fail "as RobotWare 7, CONTINUE is a reserved word"
+
 (* Without SYS.cfg and backinfo.txt: the folders' tasks, SYSMOD's modules before PROGMOD's, the
    first task with the robot (R-bk-1 to R-bk-3). *)
 let bare_folders () =
@@ -315,4 +345,5 @@ let suite =
       Alcotest.test_case "joint bounds" `Quick narrowed;
       Alcotest.test_case "base frames" `Quick base_frames;
       Alcotest.test_case "--base-frame text" `Quick base_frame_text;
-      Alcotest.test_case "program file" `Quick program_file ] )
+      Alcotest.test_case "program file" `Quick program_file;
+      Alcotest.test_case "RobotWare release" `Quick robotware ] )

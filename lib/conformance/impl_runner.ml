@@ -14,6 +14,8 @@ let options (case : Spec_case.t) =
   let tasks = several_tasks case in
   List.concat [
     (if case.strict then [ "--strict" ] else []);
+    (let module R = Rapid_syntax.Robotware in
+     if case.robotware <> R.default then [ "--robotware"; R.to_string case.robotware ] else []);
     (if case.allow_unknown then [ "--allow-unknown" ] else []);
     (if case.stub_unmodelled then [ "--stub-unmodelled" ] else []);
     (match run with Some { io = Some f; _ } -> [ "--io"; Filename.quote f ] | _ -> []);

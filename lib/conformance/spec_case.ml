@@ -8,6 +8,7 @@ type t = {
   sections : string list;
   expectation : expectation option;
   strict : bool;
+  robotware : Rapid_syntax.Robotware.t;
   allow_unknown : bool;
   stub_unmodelled : bool;
   description : string option;
@@ -114,7 +115,9 @@ let read path =
       | exception Sys_error m -> listing_problem := Some m; []
     else [ path ]
   in
-  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false;
+  let empty = { path; files; sections = []; expectation = None; strict = false;
+                robotware = Rapid_syntax.Robotware.default;
+                allow_unknown = false;
                 stub_unmodelled = false; description = None; problems = []; format = "1"; run = None } in
   let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
   (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
@@ -148,6 +151,7 @@ let read path =
                   List.fold_left (fun case w ->
                       match w with
                       | "strict" -> { case with strict = true }
+                      | "robotware-6" -> { case with robotware = Rapid_syntax.Robotware.Rw6 }
                       | "allow-unknown" -> { case with allow_unknown = true }
                       | "stub-unmodelled" -> { case with stub_unmodelled = true }
                       | other -> add_problem case ("unknown option " ^ other))

@@ -13,6 +13,8 @@ type t = {
   sections : string list;         (** [! @section 2.5], in order *)
   expectation : expectation option;
   strict : bool;                  (** [! @options strict] *)
+  robotware : Rapid_syntax.Robotware.t;
+      (** [! @options robotware-6]: read as RobotWare 5 and 6 read modules (R-2.4-rw6) *)
   allow_unknown : bool;           (** [! @options allow-unknown]: unknown names are warnings *)
   stub_unmodelled : bool;
       (** [! @options stub-unmodelled] (format 3): installed routines rapid-sem does not model

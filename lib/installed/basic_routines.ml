@@ -60,7 +60,7 @@ let dim args =
 
 let specials = [
   "TPWrite"; "TPErase"; "ErrWrite"; "Present"; "Dim"; "IsVar"; "IsPers"; "Incr"; "Decr"; "Add";
-  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "CallByVar"; "StrToVal";
+  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "Break"; "CallByVar"; "StrToVal";
 ]
 
 let modelled name =
@@ -113,6 +113,9 @@ let call ctx name args =
           Returned None
       | _ -> Failed "ERR_ARGVALERR")
   | "stop" -> Stop_requested
+  (* RobotWare 6's Break (R-2.4-rw6): the program stops at once, as Stop stops it; the
+     virtual controller has no path to regain. *)
+  | "break" -> Stop_requested
   | "callbyvar" -> (
       match value_of args.(0), value_of args.(1) with
       | Some (V.String n), Some (V.Num k) when Float.is_integer k && k >= 0. ->

@@ -22,6 +22,7 @@ type t = {
   connected : (string * string) list;
   eio : string option;
   retry_limit : int option;
+  robotware : Rapid_syntax.Robotware.t option;
   warnings : string list;
 }
 
@@ -98,6 +99,20 @@ let read_backinfo file =
   let* () = each 1 (lines text) in
   close ();
   Ok (List.rev !tasks)
+
+(* R-2.4-rw6: ">>PRODUCTS_ID:" ... "RobotWare Version: 6.13.02.00" names the release the modules
+   were written for. A line that does not read as a release names none. *)
+let robotware_of_backinfo file =
+  match read_text file with
+  | Error _ -> None
+  | Ok text ->
+      let key = "robotware version:" in
+      List.find_map (fun l ->
+          let l = String.trim l in
+          let n = String.length key in
+          if String.length l > n && String.lowercase_ascii (String.sub l 0 n) = key then
+            Rapid_syntax.Robotware.of_string (String.trim (String.sub l n (String.length l - n)))
+          else None) (lines text)
 
 let sort_names l = List.sort (fun a b -> compare (String.lowercase_ascii a) (String.lowercase_ascii b)) l
 
@@ -436,7 +451,8 @@ let read dir =
                         t.at t.name (Option.get t.group) m.name);
               Some (t.name, m.name)
           | None, [] -> None) tasks in
-    Ok { dir; tasks; robots; connected; eio; retry_limit; warnings = List.rev !warnings }
+    let robotware = Option.bind info_file robotware_of_backinfo in
+    Ok { dir; tasks; robots; connected; eio; retry_limit; robotware; warnings = List.rev !warnings }
   end
 
 (* A program file: <Program><Module>FILE</Module>...</Program>, the files beside it. *)

@@ -49,6 +49,8 @@ type t = {
   connected : (string * string) list;    (** a task without a robot and the motion task of its group *)
   eio : string option;                   (** SYSPAR/EIO.cfg when there is one *)
   retry_limit : int option;              (** SYS.cfg SYS_MISC NoOfRetry *)
+  robotware : Rapid_syntax.Robotware.t option;
+      (** backinfo.txt's "RobotWare Version:" (R-2.4-rw6) *)
   warnings : string list;                (** what is not modelled: FILE:LINE: warning: ... (R-bk-7) *)
 }
 
@@ -58,6 +60,10 @@ val is_backup : string -> bool
 val read : string -> (t, string) result
 (** The backup in this folder. An error is one line with FILE:LINE:COL: a malformed cfg file
     ({!Cfg_file}), a task SYS.cfg names twice, a backup with no task to run. *)
+
+val robotware_of_backinfo : string -> Rapid_syntax.Robotware.t option
+(** The release of this backinfo.txt's "RobotWare Version:" line (R-2.4-rw6); [None] when the
+    file cannot be read or names none. *)
 
 val read_pgf : string -> (string list, string) result
 (** The module files a program file lists, as paths beside it, in its order. *)

@@ -165,6 +165,7 @@ let lines = [
   ("ProcerrRecovery", "Generates a process error during a move, so that the program can recover from it.");
   ("ExitCycle", "Ends the current cycle: the program starts again at the beginning of main.");
   ("Stop", "Stops the program (\\NoRegain: without regaining the path when restarted).");
+  ("Break", "RobotWare 6: breaks the program at once, for debugging (a RobotWare 7 module cannot name it).");
   ("DebugBreak", "Stops the program here when it runs in the debugger.");
   (* Program flow, data and late binding *)
   ("CallByVar", "Calls a procedure whose name is a string and a number: Name followed by Number.");

@@ -43,8 +43,8 @@ val engine : [ `Machine | `Closure ] -> (module ENGINE)
 (** {1 Several tasks (ch. 14)} *)
 
 val machine_tasks :
-  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
-  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?robotware:Rapid_syntax.Robotware.t ->
+  ?observe:bool -> ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
   ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
   (Rapid_semantics.Task_set.t * Task_load.loaded, Task_load.failure) Stdlib.result
@@ -52,7 +52,7 @@ val machine_tasks :
     a task that cannot start is [Refused]. *)
 
 val closure_tasks :
-  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?robotware:Rapid_syntax.Robotware.t ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
   ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->

@@ -2,7 +2,8 @@ type services = {
   fs : string option; fs_quota : int option; net : string list; map_address : string list; egm_device : string list }
 
 type controller = {
-  io : string option; statement_time : float; max_time : float; epoch : float; services : services }
+  io : string option; statement_time : float; max_time : float; epoch : float; services : services;
+  robotware : Rapid_syntax.Robotware.t option }
 
 type t = {
   max_steps : int; allow_unknown : bool; stub_unmodelled : bool; limits : Limits.t; controller : controller;

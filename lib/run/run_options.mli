@@ -19,6 +19,9 @@ type controller = {
   max_time : float;               (** --max-time: the virtual time a run may take *)
   epoch : float;                  (** --epoch: the wall-clock time at virtual time 0, in seconds *)
   services : services;
+  robotware : Rapid_syntax.Robotware.t option;
+      (** --robotware: the controller's RobotWare release, whose reserved words apply (R-2.4-rw6);
+          [None]: a backup's backinfo.txt, else the manual's (7) *)
 }
 (** The controller around the run. *)
 

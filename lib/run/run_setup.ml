@@ -98,7 +98,9 @@ let entry (t : Run_options.tasks) =
 let with_inferred_signals ~notify (o : Run_options.t) files io =
   if not (o.allow_unknown && o.stub_unmodelled) then io
   else
-    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let robotware = Option.value o.controller.robotware ~default:Rapid_syntax.Robotware.default in
+    let options = { Rapid_syntax.Parse.default_options with robotware } in
+    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file ~options f)) files in
     let io, added =
       Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
         modules io in
@@ -130,7 +132,8 @@ let io_and_robot ?robot ~notify (o : Run_options.t) files =
 
 let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
   Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
-      match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
+      match Rapid_load.Session.load ?robotware:o.controller.robotware ?testing ~allow_unknown:o.allow_unknown ~io files
+      with
       | Error f -> Error (Refused f)
       | Ok loaded ->
           notify (Warnings (loaded.warnings, loaded.unknown_summary));
@@ -154,7 +157,8 @@ let one_task ~notify (o : Run_options.t) files ~entry =
             notify (Backup_warning (Printf.sprintf "%s: warning: this command runs one task: %s, the motion task, \
                                                     alone (the backup's other tasks are not started)" t.at t.name));
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
-          let o = { o with controller = { o.controller with io } } in
+          let robotware = match o.controller.robotware with Some _ as r -> r | None -> c.backup.robotware in
+          let o = { o with controller = { o.controller with io; robotware } } in
           Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots))
 
 let machine ?(observe = false) (o : Run_options.t) s ~entry =
@@ -179,10 +183,15 @@ type several = {
   connected : (string * string) list;
   motion_task : string option;
   summary : Backup_setup.summary option;
+  robotware : Rapid_syntax.Robotware.t option;
 }
 
 let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
   machine_gc ();
+  (* R-2.4-rw6: --robotware, else the backup's release. *)
+  let o = match o.controller.robotware, cell with
+    | None, Some (c : Backup_setup.cell) -> { o with controller = { o.controller with robotware = c.backup.robotware } }
+    | _ -> o in
   let split s = (String.sub s 0 (String.index s '='),
                  String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
   let well_formed s = match String.index_opt s '=' with
@@ -273,8 +282,9 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let robots = List.map (fun (n, r) -> (n, MR.create ~robot:r ?history:history_budget ())) others in
           let connected = match cell with Some c -> c.backup.connected | None -> [] in
           let summary = Option.map (fun c -> Backup_setup.summary c ~run:specs ~io) cell in
+          let robotware = o.controller.robotware in
           Result.map (fun (controller, motion) ->
-              { specs; names; io; controller; motion; robots; connected; motion_task; summary })
+              { specs; names; io; controller; motion; robots; connected; motion_task; summary; robotware })
             (world o ~history io robot)
 
 let refused : Task_load.failure -> failure = function
@@ -287,12 +297,14 @@ let loaded ~notify = function
 
 let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
-    (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+    (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
+       ?robotware:s.robotware ~io:s.io
        ~observe ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
        ~controller:s.controller ~motion:s.motion s.specs)
 
 let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
-    (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+    (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
+       ?robotware:s.robotware ~io:s.io
        ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
        ~controller:s.controller ~motion:s.motion s.specs)

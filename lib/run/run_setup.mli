@@ -122,6 +122,7 @@ type several = {
   connected : (string * string) list;   (** a task without a robot, the motion task it reads *)
   motion_task : string option;          (** --motion-task, else a backup's first motion task *)
   summary : Backup_setup.summary option;   (** a backup's *)
+  robotware : Rapid_syntax.Robotware.t option;   (** --robotware, else a backup's (R-2.4-rw6) *)
 }
 
 val several :

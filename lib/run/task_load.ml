@@ -116,21 +116,23 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
                 | Some j when j <> first_program.errno && j <> first_program.intno -> link k i (first, j)
                 | _ -> ()) program.globals) rest
 
-let parse_all files =
-  let parsed = List.map (Parse.parse_file ~options:Parse.default_options) files in
+let parse_all ~robotware files =
+  let options = { Parse.default_options with robotware } in
+  let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
   | [] -> Ok (List.filter_map Result.to_option parsed)
   | errors -> Error (Session.Front_end errors)
 
 let same = Rapid_typing.Types.same_name
 
-let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = []) ~world ~motion (specs : spec list) =
+let load ?(allow_unknown = false) ?(robotware = Rapid_syntax.Robotware.default) ?io ?motion_task ?(robots = [])
+    ?(connected = []) ~world ~motion (specs : spec list) =
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
   let rec load acc = function
     | [] -> Ok (List.rev acc)
     | (s : spec) :: rest -> (
-        match parse_all s.files with
+        match parse_all ~robotware s.files with
         | Error f -> Error (Load (s.name, f))
         | Ok modules -> (
             match Session.load_modules ~allow_unknown ?io modules with

@@ -22,11 +22,13 @@ type task = {
 type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
 
 val load :
-  ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> ?motion_task:string ->
-  ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
+  ?allow_unknown:bool -> ?robotware:Rapid_syntax.Robotware.t -> ?io:Rapid_controller.Io_config.t ->
+  ?motion_task:string -> ?robots:(string * Rapid_installed.Motion_routines.state) list ->
+  ?connected:(string * string) list ->
   world:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> spec list ->
   (loaded, failure) result
-(** The tasks in order, and the warnings of their checks. [world] becomes the first task's
+(** The tasks in order, and the warnings of their checks. [robotware]: the release whose reserved
+    words the modules are read with (R-2.4-rw6). [world] becomes the first task's
     world; [motion] the motion task's robot ([motion_task], default the first task). More than
     {!Task_rules.max_tasks} tasks are [Refused]. [robots]: the other motion tasks (MultiMove,
     R-bk-4), each with its robot; [connected]: a task without a robot and the motion task whose
