@@ -12,7 +12,7 @@ let cmd =
                            ~doc:"Write TEXT before each command read, whether standard input is a terminal or not \
                                  (default: $(b,(rapid-sem) ) on a terminal, nothing from a pipe or a script); \
                                  an empty TEXT writes none.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit controller robot script prompt_text =
+  let run files entry max_steps allow_unknown max_depth retry_limit controller (robot, base_frames) script prompt_text =
     let input = match script with
       | None -> Ok stdin
       | Some f -> (try Ok (open_in_bin f) with Sys_error m -> Error m) in
@@ -20,7 +20,8 @@ let cmd =
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
     match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
     | Error f -> Cli.failure f
@@ -92,4 +93,4 @@ let cmd =
   ] in
   Cmd.v (Cmd.info "debug" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
-          $ Run_args.robot_arg $ script $ prompt_text)
+          $ Run_args.robot_and_base_frames $ script $ prompt_text)

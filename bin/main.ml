@@ -136,10 +136,11 @@ let run_cmd =
                               $(b,machine) (the small-step machine, the definition, which $(b,trace) and \
                               $(b,debug) run). Without this option, a run with --samples runs on the machine, \
                               which alone has it (doc/semantics.md, \"The second engine\").") in
-  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller robot
-      samples save engine =
+  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller
+      (robot, base_frames) samples save engine =
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     let engine = Drive.engine ?requested:engine ~samples () in
     let sink = run_sink ~json ~closure_single:(engine = `Closure && tasks.tasks = []) in
     match Drive.run ~notify:Cli.notify sink ~engine ~json ~samples ~save options tasks with
@@ -165,7 +166,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ Run_args.tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json
-          $ Run_args.controller_args $ Run_args.robot_arg $ Run_args.samples_arg $ save $ engine)
+          $ Run_args.controller_args $ Run_args.robot_and_base_frames $ Run_args.samples_arg $ save $ engine)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in

@@ -16,6 +16,7 @@ let () =
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;
+      Test_base_frame.suite;
       Test_robot_library.suite;
       Test_controller.suite;
       Test_installed.suite;

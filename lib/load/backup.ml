@@ -9,7 +9,11 @@ type task = {
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }
-type robot = { robot_name : string; robot_type : string; bounds : bound list; robot_at : string }
+type base_frame = {
+  pos : float * float * float; orient : float * float * float * float; coordinated : string option; base_at : string;
+}
+type robot = { robot_name : string; robot_type : string; bounds : bound list; robot_at : string;
+               base_frame : base_frame }
 
 type t = {
   dir : string;
@@ -244,6 +248,48 @@ let groups ~warn (c : Cfg_file.t) =
           unmodelled_attributes ~warn c ~what:("mechanical unit group " ^ name) i [ "Name"; "Robot" ];
           Some (name, Cfg_file.text i "Robot")) (instances c "MECHANICAL_UNIT_GROUP")
 
+(* R-bk-8: a ROBOT's base frame (ABB, system parameters, topic Motion, type Robot: "Base Frame"
+   x, y, z in metres, q1 .. q4, "Base Frame Moved by"; MOC.cfg writes them -base_frame_pos_x ..
+   _z, -base_frame_orient_u0 .. _u3, -base_frame_coordinated). An attribute not given is the
+   world frame's (0, and u0 = 1); a value that is not a number is a warning and that default. *)
+let base_frame_keys =
+  [ "base_frame_pos_x"; "base_frame_pos_y"; "base_frame_pos_z";
+    "base_frame_orient_u0"; "base_frame_orient_u1"; "base_frame_orient_u2"; "base_frame_orient_u3" ]
+
+let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
+  let of_base (a : Cfg_file.attribute) =
+    String.length a.key > 11 && same (String.sub a.key 0 11) "base_frame_" in
+  let given = List.filter of_base i.attributes in
+  let value key default =
+    match Cfg_file.find i key with
+    | None -> default
+    | Some { value = Text v; _ } when (match float_of_string_opt (String.trim v) with
+        | Some f -> Float.is_finite f && String.for_all (function
+            | '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false) (String.trim v)
+        | None -> false) -> float_of_string (String.trim v)
+    | Some a ->
+        warn (Printf.sprintf "%s: warning: robot %s: -%s %s is not a number: %g is taken instead"
+                (cfg_place c a.line) name a.key
+                (match a.value with Flag -> "(no value)" | Text v -> Printf.sprintf "\"%s\"" v) default);
+        default in
+  List.iter (fun (a : Cfg_file.attribute) ->
+      if not (List.exists (same a.key) ("base_frame_coordinated" :: base_frame_keys)) then
+        warn (Printf.sprintf "%s: warning: robot %s: -%s is not modelled" (cfg_place c a.line) name a.key)) given;
+  let coordinated = match Cfg_file.find i "base_frame_coordinated" with
+    | None -> None
+    | Some ({ value = Text u; _ } as a) ->
+        warn (Printf.sprintf "%s: warning: robot %s: its base frame is moved by the mechanical unit %s \
+                              (-base_frame_coordinated), which is not modelled: the base frame stands where the \
+                              unit's 0 puts it, given in the world frame" (cfg_place c a.line) name u);
+        Some u
+    | Some a ->
+        warn (Printf.sprintf "%s: warning: robot %s: -base_frame_coordinated without a unit: not read"
+                (cfg_place c a.line) name);
+        None in
+  let v k d = value (List.nth base_frame_keys k) d in
+  { pos = (v 0 0., v 1 0., v 2 0.); orient = (v 3 1., v 4 0., v 5 0., v 6 0.); coordinated;
+    base_at = (match given with a :: _ -> cfg_place c a.line | [] -> cfg_place c i.at_line) }
+
 (* R-bk-5: MOC.cfg's robots and the joint bounds of their arms. *)
 let robots ~warn (c : Cfg_file.t) =
   let arms = instances c "ARM" in
@@ -281,15 +327,8 @@ let robots ~warn (c : Cfg_file.t) =
         match axes 1 [] with
         | Error e -> Error e
         | Ok bounds ->
-            let base = List.filter (fun (a : Cfg_file.attribute) ->
-                String.length a.key > 11 && same (String.sub a.key 0 11) "base_frame_"
-                && (match a.value with Text v -> float_of_string_opt v <> Some 0. | Flag -> false)) i.attributes in
-            if base <> [] then
-              warn (Printf.sprintf "%s: warning: robot %s: its base frame (%s) is not modelled: it stands at the \
-                                    world's origin" (cfg_place c i.at_line) name
-                      (String.concat ", " (List.map (fun (a : Cfg_file.attribute) -> "-" ^ a.key) base)));
             each ({ robot_name = name; robot_type = Option.value (Cfg_file.text i "use_robot_type") ~default:"";
-                    bounds; robot_at = cfg_place c i.at_line } :: acc) rest in
+                    bounds; robot_at = cfg_place c i.at_line; base_frame = base_frame ~warn c ~name i } :: acc) rest in
   let* rs = each [] (instances c "ROBOT") in
   List.iter (fun (i : Cfg_file.instance) ->
       warn (Printf.sprintf "%s: warning: the mechanical unit %s (an external axis) is not modelled"

@@ -47,6 +47,14 @@ val load_robot : string option -> (Rapid_motion_model.Robot.t, string) result
 (** --robot: the robot description of the file, or the built-in IRB 120; an error reads
     FILE:LINE:COL: robot description error: MESSAGE. *)
 
+val parse_base_frames : string list -> ((string option * Rapid_motion_model.Geom.pose) list, string) result
+(** Each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 ({!Rapid_motion_model.Base_frame.of_text}): the task
+    it names, [None] for the run's robot; an error is the whole message, one line (R-bk-8). *)
+
+val base_frame_for :
+  (string option * Rapid_motion_model.Geom.pose) list -> string option -> Rapid_motion_model.Geom.pose option
+(** The last base frame given for this task ([None]: the run's robot), letter case aside. *)
+
 val install_services : Run_options.services -> Rapid_controller.World.t -> (unit, string) result
 (** The services of the options given to the world (its file sandbox, its sockets). *)
 
