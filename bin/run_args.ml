@@ -111,7 +111,7 @@ let controller_args =
 let base_frame_arg =
   Arg.(value & opt_all string [] & info [ "base-frame" ] ~docv:"[TASK=]X,Y,Z,Q1,Q2,Q3,Q4"
          ~doc:"Where the cell mounts the robot: its base frame in the world frame, the origin in mm and the \
-               orientation as a unit quaternion, as a RAPID pose (doc/rulings.md R-bk-8). Robtargets in wobj0 are in \
+               orientation as a unit quaternion, as a RAPID pose (doc/rulings.md R-bk-12). Robtargets in wobj0 are in \
                the world frame; CRobT, CPos and CalcRobT answer through the base frame. Without TASK= the run's \
                robot (the one task's, or the motion task's); with TASK=, with several tasks, that task's robot: a \
                backup's motion task, or any task of --task, which then has a robot of its own. Overrides MOC.cfg's \

@@ -23,7 +23,7 @@ val robot_arg : string option Term.t
 (** --robot FILE (doc/motion.md) *)
 
 val base_frame_arg : string list Term.t
-(** each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (doc/rulings.md R-bk-8) *)
+(** each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (doc/rulings.md R-bk-12) *)
 
 val robot_and_base_frames : (string option * string list) Term.t
 (** --robot and --base-frame, as the commands that run a task take them *)

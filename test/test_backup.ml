@@ -203,7 +203,7 @@ let narrowed () =
   let _, warnings = Rapid_run.Backup_setup.narrow r [ b 1 4. 5. ] in
   Alcotest.(check int) "bounds outside the range: kept, with a warning" 1 (List.length warnings)
 
-(* R-bk-8: a ROBOT's base frame: metres to mm, the quaternion u0 .. u3 (u0 1 when not given),
+(* R-bk-12: a ROBOT's base frame: metres to mm, the quaternion u0 .. u3 (u0 1 when not given),
    -base_frame_coordinated a warning; values that are not numbers, a quaternion that is not a unit
    one and an origin beyond the bound are warnings at their FILE:LINE with the world frame's value,
    never an error or an exception. *)

@@ -1,4 +1,4 @@
-(* A robot's base frame (doc/motion.md, law F-base; doc/rulings.md R-bk-8): targets in the world
+(* A robot's base frame (doc/motion.md, law F-base; doc/rulings.md R-bk-12): targets in the world
    brought into the base frame before the inverse kinematics, the position functions answering
    through it, a track moving it, the path drawn where the cell mounts the robot. *)
 
@@ -85,7 +85,7 @@ let test_move () =
          Motion_data.tool0 wobj) in
   close_pose "CRobT reads the work object's coordinates" rt.pose in_wobj.pose
 
-(* R-bk-8 with law X-track: a track carries the base frame, which is given at the track's 0. *)
+(* R-bk-12 with law X-track: a track carries the base frame, which is given at the track's 0. *)
 let test_track () =
   let text = Robot.irb120_text ^ "external eax_a linear 0 2000 1000 track 1 0 0\n" in
   let r = match Robot.parse ~file:"track" text with Ok r -> r | Error e -> Alcotest.fail (Robot.error_to_string e) in

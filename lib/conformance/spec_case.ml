@@ -217,7 +217,7 @@ let read path =
                   (* A UdpUc device of EGM (rapid-sem run --egm-device, doc/services.md). *)
                   with_run case (fun r -> { r with egm_devices = r.egm_devices @ [ v ] })
               | Some ("base-frame", v) when Result.is_ok (Rapid_run.Run_setup.parse_base_frames [ v ]) ->
-                  (* where the cell mounts a robot (rapid-sem run --base-frame, doc/rulings.md R-bk-8) *)
+                  (* where the cell mounts a robot (rapid-sem run --base-frame, doc/rulings.md R-bk-12) *)
                   with_run case (fun r -> { r with base_frames = r.base_frames @ [ v ] })
               | Some (("statement-time" | "max-time") as k, v) -> (
                   match float_of_string_opt v with

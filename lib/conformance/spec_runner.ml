@@ -42,7 +42,7 @@ let robot_of (run : Spec_case.run) =
   let arm = match run.robot with
     | None -> Ok None
     | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name) in
-  (* ! @base-frame X,Y,Z,Q1,Q2,Q3,Q4: the run's robot at that base frame (R-bk-8) *)
+  (* ! @base-frame X,Y,Z,Q1,Q2,Q3,Q4: the run's robot at that base frame (R-bk-12) *)
   Result.bind arm (fun arm ->
       Result.map (fun frames ->
           match Rapid_run.Run_setup.base_frame_for frames None with
@@ -54,7 +54,7 @@ let robot_of (run : Spec_case.run) =
 
 (* ! @base-frame TASK=X,Y,Z,Q1,Q2,Q3,Q4 in a format 4 case: that task's robot of its own (the
    run's arm) at that base frame, as rapid-sem run --task ... --base-frame TASK=... makes it; the
-   motion task's robot is the run's (R-bk-8). *)
+   motion task's robot is the run's (R-bk-12). *)
 let task_robots (run : Spec_case.run) robot =
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let motion = match run.motion_task, run.tasks with Some m, _ -> Some m | None, (n, _) :: _ -> Some n | _ -> None in

@@ -248,7 +248,7 @@ let groups ~warn (c : Cfg_file.t) =
           unmodelled_attributes ~warn c ~what:("mechanical unit group " ^ name) i [ "Name"; "Robot" ];
           Some (name, Cfg_file.text i "Robot")) (instances c "MECHANICAL_UNIT_GROUP")
 
-(* R-bk-8: a ROBOT's base frame (ABB, system parameters, topic Motion, type Robot: "Base Frame"
+(* R-bk-12: a ROBOT's base frame (ABB, system parameters, topic Motion, type Robot: "Base Frame"
    x, y, z in metres, q1 .. q4, "Base Frame Moved by"; MOC.cfg writes them -base_frame_pos_x ..
    _z, -base_frame_orient_u0 .. _u3, -base_frame_coordinated). An attribute not given is the
    world frame's (0, and u0 = 1); a value that is not a number is a warning and that default. *)

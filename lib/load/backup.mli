@@ -31,7 +31,7 @@ type base_frame = {
   coordinated : string option;                 (** -base_frame_coordinated: the unit that moves it *)
   base_at : string;                            (** FILE:LINE of its first attribute, else of the ROBOT *)
 }
-(** A robot's base frame in the world frame (doc/rulings.md R-bk-8): where the cell mounts the
+(** A robot's base frame in the world frame (doc/rulings.md R-bk-12): where the cell mounts the
     arm. A value that is not a number was a warning, and the world frame's value is taken. *)
 
 type robot = {

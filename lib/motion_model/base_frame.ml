@@ -4,7 +4,7 @@ let is_world (b : pose) =
   b.trans.x = 0. && b.trans.y = 0. && b.trans.z = 0.
   && b.rot.q1 = 1. && b.rot.q2 = 0. && b.rot.q3 = 0. && b.rot.q4 = 0.
 
-(* Law F-base with law X-track (R-bk-8): a track translates the base frame it carries along its
+(* Law F-base with law X-track (R-bk-12): a track translates the base frame it carries along its
    direction of the world. *)
 let in_world (r : Robot.t) e =
   match Ext_axes.base r.externals e with

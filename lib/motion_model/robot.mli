@@ -47,7 +47,7 @@ type t = {
       (** where the cell mounts the arm: its base frame in the world frame (mm, quaternion), at
           the track's 0 when a track carries it ({!Base_frame}). The cell's, not the arm's: a
           description never sets it ({!parse} gives the world frame); a backup's MOC.cfg (ROBOT's
-          base_frame attributes) or --base-frame does (doc/rulings.md R-bk-8) *)
+          base_frame attributes) or --base-frame does (doc/rulings.md R-bk-12) *)
 }
 
 val irb120 : t

@@ -29,7 +29,7 @@ let narrow (robot : Robot.t) (bounds : Backup.bound list) =
           end else { a with min = lo; max = hi }) robot.axes in
   ({ robot with axes }, List.rev !warnings)
 
-(* R-bk-8: the cell's base frame of a robot, in mm; a quaternion that is not a unit one, or an
+(* R-bk-12: the cell's base frame of a robot, in mm; a quaternion that is not a unit one, or an
    origin beyond the model's bound, is a warning and the world frame's orientation (origin) kept. *)
 let base_frame (r : Backup.robot) =
   let b = r.base_frame in

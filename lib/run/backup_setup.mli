@@ -22,14 +22,14 @@ val input : robot:string option -> string list -> (input, string) result
 (** The files of a run: one folder that is a backup is that backup; one [.pgf] file is its
     modules; anything else the files as they are. [robot] (--robot) is every motion task's
     arm instead of MOC.cfg's type (options override the backup), at MOC.cfg's base frame (the
-    cell's, R-bk-8). *)
+    cell's, R-bk-12). *)
 
 val narrow : Rapid_motion_model.Robot.t -> Backup.bound list -> Rapid_motion_model.Robot.t * string list
 (** The description's axis ranges narrowed to the arms' joint bounds (radians), never widened; a
     bound that leaves nothing of a range keeps the range, with a warning (R-bk-5). *)
 
 val base_frame : Backup.robot -> Rapid_motion_model.Geom.pose * string list
-(** The robot's base frame in the world (mm, a unit quaternion: R-bk-8), with a warning at its
+(** The robot's base frame in the world (mm, a unit quaternion: R-bk-12), with a warning at its
     FILE:LINE for an orientation that is not a unit quaternion (the world's orientation taken)
     or an origin beyond {!Rapid_motion_model.Base_frame.max_offset} (the world's origin taken). *)
 

@@ -26,7 +26,7 @@ let load_robot = function
   | None -> Ok Robot.irb120
   | Some name -> Rapid_motion_model.Robot_library.load name
 
-(* --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (R-bk-8): each read, the task it names (None: the run's
+(* --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (R-bk-12): each read, the task it names (None: the run's
    robot). A TASK= form is one with a name before '=' (a pose has none). *)
 let parse_base_frames texts =
   List.fold_right (fun text acc ->
@@ -254,7 +254,7 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let robot = match motion_task with
             | Some m -> Option.value (List.assoc_opt m cell_robots) ~default:robot
             | None -> robot in
-          (* R-bk-8: --base-frame without TASK= places the run's robot, TASK= that task's; with --task
+          (* R-bk-12: --base-frame without TASK= places the run's robot, TASK= that task's; with --task
              alone, a task other than the motion task gets a robot of its own there. *)
           let is_motion n = match motion_task with Some m -> same n m | None -> false in
           let first_task = match motion_task, names with Some m, _ -> Some m | None, n :: _ -> Some n | _ -> None in

@@ -49,7 +49,7 @@ val load_robot : string option -> (Rapid_motion_model.Robot.t, string) result
 
 val parse_base_frames : string list -> ((string option * Rapid_motion_model.Geom.pose) list, string) result
 (** Each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 ({!Rapid_motion_model.Base_frame.of_text}): the task
-    it names, [None] for the run's robot; an error is the whole message, one line (R-bk-8). *)
+    it names, [None] for the run's robot; an error is the whole message, one line (R-bk-12). *)
 
 val base_frame_for :
   (string option * Rapid_motion_model.Geom.pose) list -> string option -> Rapid_motion_model.Geom.pose option

@@ -4,7 +4,7 @@ MODULE base_frame_moved
 ! @expect ok
 ! @statement-time 0
 ! @base-frame 1000,500,200,1,0,0,0
-! @description The cell mounts the robot with its base frame at [1000,500,200] in the world, not turned (MOC.cfg's ROBOT -base_frame_pos_*, --base-frame; law F-base, R-bk-8). Robtargets in wobj0 are in the world: at the axes home the flange stands at [302,0,558] in the base frame, so CRobT reads [1302,500,758]. p1, 100 mm below, is 1400 mm from the world's origin, beyond the arm's reach from there, and is reached (v100: 1 s); CalcJointT of it is the axes reached. A work object at [1000,500,0] in the world: a target [302,0,658] in it is the same point, and CRobT and CPos in it read the work object's coordinates.
+! @description The cell mounts the robot with its base frame at [1000,500,200] in the world, not turned (MOC.cfg's ROBOT -base_frame_pos_*, --base-frame; law F-base, R-bk-12). Robtargets in wobj0 are in the world: at the axes home the flange stands at [302,0,558] in the base frame, so CRobT reads [1302,500,758]. p1, 100 mm below, is 1400 mm from the world's origin, beyond the arm's reach from there, and is reached (v100: 1 s); CalcJointT of it is the axes reached. A work object at [1000,500,0] in the world: a target [302,0,658] in it is the same point, and CRobT and CPos in it read the work object's coordinates.
 ! @output home 1302 500 758
 ! @output calc 1302 500 758
 ! @output t 1000 at 1302 500 658
