@@ -24,8 +24,10 @@ let cmd =
     (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
     match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
     | Error f -> Cli.failure f
-    | Ok (options, files, entry, robot) ->
-    match Rapid_run.Run_setup.start_machine ?robot ~notify:ignore options files ~entry with
+    | Ok (options, files, entry, robot, events) ->
+    match Rapid_run.Run_setup.start_machine ?robot ~events
+            ~notify:(function Rapid_run.Run_setup.Backup_warning _ as n -> Cli.notify n | _ -> ()) options files ~entry
+    with
     | Error f -> Cli.failure f
     | Ok (cfg, _) ->
     let echo = script <> None in

@@ -9,6 +9,13 @@
 
 type kind = Normal | Static | Semistatic
 
+type event_routine = {
+  routine : string;            (** CAB_EXEC_HOOKS' -Routine *)
+  event : string;              (** its -Shelf: POWER_ON, START, RESTART, STOP, QSTOP, RESET, STEP *)
+  hook_at : string;            (** FILE:LINE of its instance *)
+}
+(** An event routine (SYS.cfg, CAB_EXEC_HOOKS; doc/rulings.md R-bk-8). *)
+
 type task = {
   name : string;               (** the task's name (SYS.cfg, backinfo.txt) *)
   folder : string;             (** its folder, RAPID/TASKn *)
@@ -18,6 +25,10 @@ type task = {
   entry : string;              (** -Entry, else main *)
   files : string list;         (** its modules, in the order backinfo.txt gives (R-bk-2) *)
   at : string;                 (** FILE:LINE of its CAB_TASKS instance *)
+  before : event_routine list;
+      (** the event routines a run makes the task run before its entry routine, in order:
+          POWER_ON's, then in a NORMAL task RESET's and START's (R-bk-8) *)
+  after : event_routine list;  (** those it runs once the entry routine returned: a NORMAL task's STOP *)
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }

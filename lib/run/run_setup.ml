@@ -82,6 +82,8 @@ let world (o : Run_options.t) ~history io robot =
   | Error m -> Error (Usage ("rapid-sem: " ^ m))
   | Ok () -> Ok (controller, motion)
 
+type one_task_events = string * (Task_load.event_routine list * Task_load.event_routine list)
+
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
 (* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
@@ -111,7 +113,7 @@ let fresh_world ?robot ~notify (o : Run_options.t) files =
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with
   | Error m -> Error (Usage m)
-  | Ok (Files files) -> Ok (o, files, entry, None)
+  | Ok (Files files) -> Ok (o, files, entry, None, ("", ([], [])))
   | Ok (Cell c) -> (
       List.iter (fun w -> notify (Backup_warning w)) c.warnings;
       match List.find_opt (fun (t : Rapid_load.Backup.task) -> t.motion) c.backup.tasks with
@@ -122,19 +124,26 @@ let one_task ~notify (o : Run_options.t) files ~entry =
                                                     alone (the backup's other tasks are not started)" t.at t.name));
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
           let o = { o with controller = { o.controller with io } } in
-          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots))
+          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
+              (t.name, (t.before, t.after))))
 
-let machine ?(observe = false) (o : Run_options.t) s ~entry =
+let machine ?(observe = false) ?(events = ("", ([], []))) ?(notify = ignore) (o : Run_options.t) s ~entry =
+  (* R-bk-8: a backup's event routines, those the task buffer has. *)
+  let task, events = events in
+  let note n = notify (Backup_warning n) in
+  let before = Task_load.runnable ~note ~task s.loaded.program (fst events)
+  and after = Task_load.runnable ~note ~task s.loaded.program (snd events) in
   Result.map_error (fun reason -> Cannot_start { entry; reason })
     (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
-       s.loaded.program ~entry)
+       ~before ~after s.loaded.program ~entry)
 
-let start_machine ?observe ?history ?robot ~notify o files ~entry =
+let start_machine ?observe ?history ?robot ?events ~notify o files ~entry =
   machine_gc ();
-  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot) ->
+  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot, cell_events) ->
       let robot = match robot with Some _ -> robot | None -> cell_robot in
+      let events = match events with Some e -> e | None -> cell_events in
       Result.bind (single ?history ?robot ~notify o files) (fun s ->
-          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry)))
+          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe ~events ~notify o s ~entry)))
 
 type several = {
   specs : Task_load.spec list;
@@ -146,6 +155,7 @@ type several = {
   connected : (string * string) list;
   motion_task : string option;
   summary : Backup_setup.summary option;
+  events : (string * (Task_load.event_routine list * Task_load.event_routine list)) list;
 }
 
 let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
@@ -217,8 +227,13 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let robots = List.map (fun (n, r) -> (n, MR.create ~robot:r ?history:history_budget ())) others in
           let connected = match cell with Some c -> c.backup.connected | None -> [] in
           let summary = Option.map (fun c -> Backup_setup.summary c ~run:specs ~io) cell in
+          (* R-bk-8: the event routines of the backup's tasks (of a task --task gives other files
+             too: those its buffer has run). *)
+          let events = match cell with
+            | Some c -> List.map (fun (b : Rapid_load.Backup.task) -> (b.name, (b.before, b.after))) c.backup.tasks
+            | None -> [] in
           Result.map (fun (controller, motion) ->
-              { specs; names; io; controller; motion; robots; connected; motion_task; summary })
+              { specs; names; io; controller; motion; robots; connected; motion_task; summary; events })
             (world o ~history io robot)
 
 let refused : Task_load.failure -> failure = function
@@ -227,16 +242,18 @@ let refused : Task_load.failure -> failure = function
 
 let loaded ~notify = function
   | Error f -> Error (refused f)
-  | Ok (t, (l : Task_load.loaded)) -> notify (Warnings (l.warnings, None)); Ok (t, l)
+  | Ok (t, (l : Task_load.loaded)) ->
+      List.iter (fun n -> notify (Backup_warning n)) l.notes;
+      notify (Warnings (l.warnings, None)); Ok (t, l)
 
 let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
        ~observe ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)
 
 let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
        ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)

@@ -19,9 +19,26 @@ type task = {
   motion : Rapid_installed.Motion_routines.state;
 }
 
-type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
+type loaded = {
+  tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list; notes : string list;
+}
+
+type event_routine = Rapid_load.Backup.event_routine
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+(* R-bk-8: the event routines of a task that its buffer has as procedures without parameters;
+   each other one is a note, FILE:LINE of its CAB_EXEC_HOOKS instance, and not run. *)
+let runnable ~note ~task (program : Ir.program) (routines : event_routine list) =
+  List.filter_map (fun (e : event_routine) ->
+      match Task_rules.entry_routine program e.routine with
+      | Ok _ -> Some e.routine
+      | Error _ ->
+          let what = if Array.exists (fun (r : Ir.routine) -> same r.name e.routine) program.routines
+            then "is not a procedure without parameters" else "is not in the task" in
+          note (Printf.sprintf "%s: warning: the event routine %s (%s) %s %s: not run" e.hook_at e.routine e.event what
+                  task);
+          None) routines
 
 (* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
    nor LOCAL: module, name, type (its name and dimensions), whether it has an initial value. *)
@@ -124,7 +141,10 @@ let parse_all files =
 
 let same = Rapid_typing.Types.same_name
 
-let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = []) ~world ~motion (specs : spec list) =
+let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = []) ?(events = []) ~world ~motion
+    (specs : spec list) =
+  let notes = ref [] in
+  let note n = notes := n :: !notes in
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
   let rec load acc = function
@@ -172,7 +192,11 @@ let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = 
                   let motion = if same s.name motion_name then motion
                     else match own with Some (_, m) -> m | None -> Rapid_installed.Motion_routines.create () in
                   let host = Rapid_installed.World_host.make w motion in
-                  { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host };
+                  let before, after = match List.find_opt (fun (n, _) -> same n s.name) events with
+                    | Some (_, (b, a)) ->
+                        (runnable ~note ~task:s.name programs.(k) b, runnable ~note ~task:s.name programs.(k) a)
+                    | None -> ([], []) in
+                  { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host; before; after };
                     world = w; motion }) loaded in
               (* R-14-pos1: the position functions of a task without a robot reach the motion
                  task's by its name, and read it by default (its mechanical unit group's). *)
@@ -188,4 +212,4 @@ let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = 
                       (first @ List.filter (fun r -> not (List.memq r first)) robots))
                 tasks;
               let warnings = List.concat_map (fun (_, _, (l : Session.loaded)) -> l.warnings) loaded in
-              Ok { tasks; links = List.rev !links; warnings })
+              Ok { tasks; links = List.rev !links; warnings; notes = List.rev !notes })

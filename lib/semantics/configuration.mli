@@ -161,4 +161,9 @@ type config = {
   observe : bool;                       (* the run observes store writes, arguments, values (schema rapid-sem/2) *)
   mutable entered : bool;               (* the entry routine's routine-entered has been said *)
   mutable propagated : bool;            (* the error in focus arrives by propagation (§7.1) *)
+  (* A controller backup's event routines (doc/rulings.md R-bk-8): the routines the task runs
+     after the current one, each with whether it is the entry routine; whether the current one
+     is. *)
+  mutable phases : (Ir.routine * bool) list;
+  mutable at_entry : bool;
 }
