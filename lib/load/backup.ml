@@ -190,8 +190,17 @@ let cab_tasks ~warn (c : Cfg_file.t) =
             match kind with
             | Error e -> Error e
             | Ok kind ->
+                (* R-bk-9: -TrustLevel NoSafety (written "None") is what a run does: an error that
+                   stops a STATIC or SEMISTATIC task stops that task alone. *)
+                let no_safety = match Cfg_file.text i "TrustLevel" with
+                  | Some t -> same t "None" || same t "NoSafety" | None -> false in
                 unmodelled_attributes ~warn c ~what:("task " ^ name) i
-                  [ "Name"; "Type"; "MotionTask"; "UseMechanicalUnitGroup"; "Entry" ];
+                  ([ "Name"; "Type"; "MotionTask"; "UseMechanicalUnitGroup"; "Entry" ]
+                   @ if no_safety then [ "TrustLevel" ] else []);
+                if kind <> Normal && Cfg_file.find i "TrustLevel" = None then
+                  warn (Printf.sprintf "%s: warning: task %s: its trust level SysFail (no -TrustLevel) is not \
+                                        modelled: an error that stops the task stops it alone" (cfg_place c i.at_line)
+                          name);
                 let entry = Option.value (Cfg_file.text i "Entry") ~default:"main" in
                 go ({ c_name = name; c_kind = kind; c_motion = Cfg_file.flag i "MotionTask";
                       c_group = Cfg_file.text i "UseMechanicalUnitGroup"; c_entry = entry;

@@ -37,7 +37,8 @@ val runnable : note:(string -> unit) -> task:string -> Ir.program -> event_routi
 val load :
   ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> ?motion_task:string ->
   ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
-  ?events:(string * (event_routine list * event_routine list)) list -> world:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> spec list ->
+  ?events:(string * (event_routine list * event_routine list)) list -> world:Rapid_controller.World.t ->
+  motion:Rapid_installed.Motion_routines.state -> spec list ->
   (loaded, failure) result
 (** The tasks in order, and the warnings of their checks. [world] becomes the first task's
     world; [motion] the motion task's robot ([motion_task], default the first task). More than
