@@ -1,4 +1,4 @@
-(* A controller backup, read as the controller reads it at start (R-bk-1 to R-bk-7). Every
+(* A controller backup, read as the controller reads it at start (R-bk-1 to R-bk-10). Every
    choice where the backup could be read two ways is a ruling of doc/rulings.md. *)
 
 type kind = Normal | Static | Semistatic

@@ -1,5 +1,5 @@
 (** A controller backup read as the controller reads it at start (doc/user-guide.md, "Controller
-    backups"; doc/rulings.md R-bk-1 to R-bk-7): the folder a controller or RobotStudio writes,
+    backups"; doc/rulings.md R-bk-1 to R-bk-10): the folder a controller or RobotStudio writes,
     [BACKINFO/backinfo.txt] (which task folder is which task, and its modules in load order),
     [SYSPAR/SYS.cfg] (the tasks: [CAB_TASKS], [MECHANICAL_UNIT_GROUP]), [SYSPAR/MOC.cfg] (the
     robots: [ROBOT -use_robot_type], the arms' joint bounds), [SYSPAR/EIO.cfg] (the signals),
