@@ -54,7 +54,8 @@ let which_run () =
       let names l = List.map (fun (e : Backup.event_routine) -> e.routine ^ "/" ^ e.event) l in
       let task n = List.find (fun (t : Backup.task) -> t.name = n) b.tasks in
       let l = Alcotest.(list string) in
-      Alcotest.check l "T_ROB1 before" [ "p/POWER_ON"; "r/RESET"; "s1/START"; "s2/START" ] (names (task "T_ROB1").before);
+      Alcotest.check l "T_ROB1 before" [ "p/POWER_ON"; "r/RESET"; "s1/START"; "s2/START" ]
+        (names (task "T_ROB1").before);
       Alcotest.check l "T_ROB1 after" [] (names (task "T_ROB1").after);
       Alcotest.check l "SEMISTATIC: POWER_ON only" [ "p/POWER_ON" ] (names (task "T_BG").before);
       Alcotest.check l "SEMISTATIC: no STOP" [] (names (task "T_BG").after);
@@ -64,7 +65,8 @@ let which_run () =
           Alcotest.(check bool) what true (List.exists (contains part) b.warnings))
         [ ("RESTART never happens", "SYS.cfg:14: warning: the event routine x (RESTART) is not run in task T_ROB1");
           ("QSTOP never happens", "the event routine q (QSTOP) is not run in task T_BG");
-          ("RESET not in a SEMISTATIC task", "the event routine r (RESET) is not run in task T_BG: the task is SEMISTATIC");
+          ("RESET not in a SEMISTATIC task",
+           "the event routine r (RESET) is not run in task T_BG: the task is SEMISTATIC");
           ("an unknown event", "SYS.cfg:16: warning: the event routine y: -Shelf \"BOOT\" is none of");
           ("no task named", "SYS.cfg:17: warning: the event routine z names no task");
           ("a task not run", "SYS.cfg:18: warning: the event routine w (START): no task T_NONE runs") ]
@@ -82,8 +84,8 @@ let machine_events program ~before ~after =
 
 let closure_events program ~before ~after =
   let events = ref [] in
-  match C.run ~host:(Rapid_run.Run.setup ()).host ~observe:true ~before ~after ~on_event:(fun e -> events := e :: !events)
-          program ~entry:"main" with
+  match C.run ~host:(Rapid_run.Run.setup ()).host ~observe:true ~before ~after
+          ~on_event:(fun e -> events := e :: !events) program ~entry:"main" with
   | Error m -> Error m
   | Ok r -> Ok (List.rev !events, r.outcome)
 

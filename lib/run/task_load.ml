@@ -60,7 +60,9 @@ let first_move (program : Ir.program) start =
     | For f -> block f.loop_body
     | While (_, b) -> block b
     | Test (_, cases, default) ->
-        (match Array.to_list cases |> List.find_map (fun (_, b) -> block b) with Some m -> Some m | None -> block default)
+        (match Array.to_list cases |> List.find_map (fun (_, b) -> block b) with
+         | Some m -> Some m
+         | None -> block default)
     | _ -> None in
   routine start
 
@@ -73,9 +75,9 @@ let runnable ~note ~task (program : Ir.program) (routines : event_routine list) 
           (if e.event = "STOP" || e.event = "QSTOP" then
              match first_move program i with
              | Some (name, at) ->
-                 note (Printf.sprintf "%s: warning: the %s event routine %s of task %s moves the robot (%s at %s): ABB \
-                                       allows no motion instruction in STOP and QSTOP event routines; it runs as written"
-                         e.hook_at e.event e.routine task name (Source.to_string at))
+                 note (Printf.sprintf "%s: warning: the %s event routine %s of task %s moves the robot (%s at %s): \
+                                       ABB allows no motion instruction in STOP and QSTOP event routines; it runs as \
+                                       written" e.hook_at e.event e.routine task name (Source.to_string at))
              | None -> ());
           Some e.routine
       | Error _ ->
