@@ -8,6 +8,7 @@ type event_routine = { routine : string; event : string; hook_at : string }
 type task = {
   name : string; folder : string; kind : kind; motion : bool; group : string option; entry : string;
   files : string list; at : string; before : event_routine list; after : event_routine list;
+  debug_events : event_routine list;
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }
@@ -257,8 +258,10 @@ let task_events ~warn hooks ~name ~kind ~motion =
   List.iter (fun h ->
       if mine h then
         let why = match h.h_event with
-          | "RESTART" -> Some "a run never restarts a stopped program"
-          | "STEP" -> Some "a run does not step"
+          | "RESTART" when normal -> Some "a run never restarts a stopped program (debug runs it at each continue \
+                                          after a stop)"
+          | "STEP" when normal -> Some "a run does not step (debug runs it at each step)"
+          | ("RESTART" | "STEP") -> Some (Printf.sprintf "the task is %s" (kind_name kind))
           | "QSTOP" -> Some "a run has no quick stop"
           | ("START" | "STOP" | "RESET") when not normal ->
               Some (Printf.sprintf "the task is %s: the start and stop buttons and PP to main act on NORMAL tasks"
@@ -269,7 +272,9 @@ let task_events ~warn hooks ~name ~kind ~motion =
                     h.h_event name why)) why) hooks;
   let before = of_event "POWER_ON" @ (if normal then of_event "RESET" @ of_event "START" else []) in
   let after = if normal then of_event "STOP" else [] in
-  (before, after)
+  (* R-bk-11: what debug makes happen besides POWER_ON and RESET, by the commands. *)
+  let debug = if normal then List.concat_map of_event [ "START"; "RESTART"; "STEP"; "STOP" ] else [] in
+  (before, after, debug)
 
 (* SYS.cfg's other sections that change what runs: the modules loaded into every task at cold
    start, SYS_MISC's NoOfRetry (§7.1's retry limit). *)
@@ -423,7 +428,7 @@ let read dir =
             | None -> { c_name = name; c_kind = Normal; c_motion = false; c_group = None; c_entry = "main";
                         c_at = info_at } in
           Some { name; folder; kind = c.c_kind; motion = c.c_motion; group = c.c_group; entry = c.c_entry; files;
-                 at = c.c_at; before = []; after = [] }) named in
+                 at = c.c_at; before = []; after = []; debug_events = [] }) named in
   List.iter (fun c ->
       if not (List.exists (fun t -> same t.name c.c_name) tasks) then
         warn (Printf.sprintf "%s: warning: the task %s has no folder in RAPID/: not run" c.c_at c.c_name)) cab;
@@ -442,8 +447,8 @@ let read dir =
                   h.h_event n)
       | _ -> ()) hooks;
   let tasks = List.map (fun t ->
-      let before, after = task_events ~warn hooks ~name:t.name ~kind:t.kind ~motion:t.motion in
-      { t with before; after }) tasks in
+      let before, after, debug_events = task_events ~warn hooks ~name:t.name ~kind:t.kind ~motion:t.motion in
+      { t with before; after; debug_events }) tasks in
   if tasks = [] then
     Error (Printf.sprintf "%s:1:1: backup error: no task to run (no RAPID/TASKn folder of a configured task)"
              (Option.value rapid ~default:(dir // "RAPID")))

@@ -29,6 +29,9 @@ type task = {
       (** the event routines a run makes the task run before its entry routine, in order:
           POWER_ON's, then in a NORMAL task RESET's and START's (R-bk-8) *)
   after : event_routine list;  (** those it runs once the entry routine returned: a NORMAL task's STOP *)
+  debug_events : event_routine list;
+      (** a NORMAL task's START, RESTART, STEP and STOP routines, which rapid-sem debug's
+          commands make happen (R-bk-11) *)
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }

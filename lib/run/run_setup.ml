@@ -82,7 +82,12 @@ let world (o : Run_options.t) ~history io robot =
   | Error m -> Error (Usage ("rapid-sem: " ^ m))
   | Ok () -> Ok (controller, motion)
 
-type one_task_events = string * (Task_load.event_routine list * Task_load.event_routine list)
+type one_task_events = {
+  task : string; before : Task_load.event_routine list; after : Task_load.event_routine list;
+  debug : Task_load.event_routine list;
+}
+
+let no_events = { task = ""; before = []; after = []; debug = [] }
 
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
@@ -113,7 +118,7 @@ let fresh_world ?robot ~notify (o : Run_options.t) files =
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with
   | Error m -> Error (Usage m)
-  | Ok (Files files) -> Ok (o, files, entry, None, ("", ([], [])))
+  | Ok (Files files) -> Ok (o, files, entry, None, no_events)
   | Ok (Cell c) -> (
       List.iter (fun w -> notify (Backup_warning w)) c.warnings;
       match List.find_opt (fun (t : Rapid_load.Backup.task) -> t.motion) c.backup.tasks with
@@ -125,14 +130,13 @@ let one_task ~notify (o : Run_options.t) files ~entry =
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
           let o = { o with controller = { o.controller with io } } in
           Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
-              (t.name, (t.before, t.after))))
+              { task = t.name; before = t.before; after = t.after; debug = t.debug_events }))
 
-let machine ?(observe = false) ?(events = ("", ([], []))) ?(notify = ignore) (o : Run_options.t) s ~entry =
+let machine ?(observe = false) ?(events = no_events) ?(notify = ignore) (o : Run_options.t) s ~entry =
   (* R-bk-8: a backup's event routines, those the task buffer has. *)
-  let task, events = events in
   let note n = notify (Backup_warning n) in
-  let before = Task_load.runnable ~note ~task s.loaded.program (fst events)
-  and after = Task_load.runnable ~note ~task s.loaded.program (snd events) in
+  let before = Task_load.runnable ~note ~task:events.task s.loaded.program events.before
+  and after = Task_load.runnable ~note ~task:events.task s.loaded.program events.after in
   Result.map_error (fun reason -> Cannot_start { entry; reason })
     (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
        ~before ~after s.loaded.program ~entry)

@@ -76,9 +76,15 @@ val single :
     rapid-sem test are installed (doc/rulings.md R-test-a). [robot]: a backup's robot, unless
     --robot gives one. *)
 
-type one_task_events = string * (Task_load.event_routine list * Task_load.event_routine list)
-(** A backup task's name and its event routines, before and after its entry routine (R-bk-8);
-    ("", ([], [])) for files. *)
+type one_task_events = {
+  task : string;                              (** the backup task's name *)
+  before : Task_load.event_routine list;      (** its event routines before its entry routine (R-bk-8) *)
+  after : Task_load.event_routine list;       (** after it *)
+  debug : Task_load.event_routine list;       (** those debug's commands make happen (R-bk-11) *)
+}
+
+val no_events : one_task_events
+(** Files: none. *)
 
 val one_task :
   notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->

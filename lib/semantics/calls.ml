@@ -59,6 +59,7 @@ let return_from cfg value =
   | None -> (
       match next_phase cfg with
       | Some next -> (Rule.Return_entry, [ Routine_left act.routine.name; Routine_entered next.name ])
+      | None when resume cfg -> (Rule.Return_entry, [ Routine_left act.routine.name ])
       | None ->
           cfg.focus <- F_done Ended;
           (Rule.Return_entry, [ Routine_left act.routine.name; Task_ended ]))

@@ -173,7 +173,7 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
           count = 0; memory = !memory; by_name; unmarked = false; host;
           stub_unmodelled; stubbed = Hashtbl.create 8; move_owners = []; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
-          observe; entered = false; propagated = false; phases; at_entry;
+          observe; entered = false; propagated = false; phases; at_entry; resumes = [];
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -181,6 +181,39 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
          | None -> Statements.settle cfg);
         Ok cfg
       end
+
+(* R-bk-11: the debugger's events (a step, a start, a restart, a stop) run their routines where
+   the program pointer is, one after the other, each in a new activation; the control comes back
+   when the last has ended. *)
+let interpose cfg names =
+  match names with
+  | [] -> Ok []
+  | _ -> (
+      let by_name = cfg.by_name in
+      let found = List.fold_right (fun name acc ->
+          match routine_index_in by_name name, acc with
+          | Some i, Ok rs when cfg.program.routines.(i).kind = Procedure
+                               && Array.length cfg.program.routines.(i).parameters = 0 ->
+              Ok (cfg.program.routines.(i) :: rs)
+          | _, Error m -> Error m
+          | _ -> Error (Printf.sprintf "the event routine %s is not a procedure without parameters" name)) names (Ok []) in
+      match found with
+      | Error m -> Error m
+      | Ok routines ->
+          cfg.resumes <- { r_act = cfg.act; r_stack = cfg.stack; r_mark = cfg.mark; r_focus = cfg.focus;
+                           r_unmarked = cfg.unmarked; r_kept = cfg.kept; r_charged = cfg.charged; r_held = cfg.held;
+                           r_phases = cfg.phases; r_at_entry = cfg.at_entry } :: cfg.resumes;
+          cfg.phases <- List.map (fun r -> (r, false)) routines;
+          cfg.at_entry <- false;
+          cfg.unmarked <- false; cfg.charged <- false; cfg.held <- None;
+          (* The current activation stays the resumed one's: next_phase must not release it. *)
+          let saved = cfg.act in
+          cfg.act <- { saved with memory = 0; resume = None };
+          match Store.next_phase cfg with
+          | None -> Ok []
+          | Some r -> Statements.settle cfg; Ok [ Routine_entered r.name ])
+
+let in_event_routine cfg = (not cfg.at_entry) || cfg.resumes <> []
 
 (* ------------------------------------------------------------------ the step *)
 

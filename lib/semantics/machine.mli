@@ -47,6 +47,18 @@ val start :
     the next; ExitCycle in an event routine ends that routine as its end does; an error the
     system error handler takes, EXIT or Stop ends the task. *)
 
+val interpose : config -> string list -> (event list, string) result
+(** The debugger's events of a controller backup (a step, a start, a restart, a stop;
+    doc/rulings.md R-bk-11): these routines, each a procedure without parameters, run from
+    here one after the other, each in a new activation; when the last has ended (its end,
+    RETURN, ExitCycle) the control comes back as it stood, the program pointer where it was.
+    An error the system error handler takes, EXIT or Stop in one ends the task. The events
+    are those of entering the first. *)
+
+val in_event_routine : config -> bool
+(** Whether the task runs an event routine: one of its sequence other than the entry routine
+    (R-bk-8), or one interposed. *)
+
 val step_rule : config -> Rule.t * event list
 (** One reduction: the rule applied and what it made observable. Only valid while [outcome] is
     [Running]. *)

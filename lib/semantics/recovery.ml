@@ -157,6 +157,7 @@ let leave_abandoned cfg after rule rule_entry =
       let routine = act.routine in
       match next_phase cfg with
       | Some next -> (Rule.Cycle_restart, [ Routine_left routine.name; Routine_entered next.name ])
+      | None when resume cfg -> (Rule.Cycle_restart, [ Routine_left routine.name ])
       | None -> cfg.focus <- F_done Ended; (rule_entry, [ Routine_left routine.name; Task_ended ]))
   | None when (match after with Go_on_exit_cycle -> true | _ -> false) ->
       (* R-13-exitcycle1: the next cycle, a new activation of the entry routine (its routine

@@ -138,6 +138,19 @@ let next_phase cfg =
       cfg.focus <- F_next;
       Some routine
 
+(* R-bk-11: the last routine of an interposed sequence has ended: the task's control comes back
+   as it stood before it. *)
+let resume cfg =
+  match cfg.resumes with
+  | [] -> false
+  | r :: rest ->
+      release cfg cfg.act;
+      cfg.resumes <- rest;
+      cfg.act <- r.r_act; cfg.stack <- r.r_stack; cfg.mark <- r.r_mark; cfg.focus <- r.r_focus;
+      cfg.unmarked <- r.r_unmarked; cfg.kept <- r.r_kept; cfg.charged <- r.r_charged; cfg.held <- r.r_held;
+      cfg.phases <- r.r_phases; cfg.at_entry <- r.r_at_entry;
+      true
+
 (* ------------------------------------------------------------------ values the rules read *)
 
 let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n))

@@ -74,6 +74,10 @@ val next_phase : config -> Ir.routine option
     backup's event routines and the entry routine, doc/rulings.md R-bk-8) has another: it is
     made current, in a new activation at its first statement; [None] when none follows. *)
 
+val resume : config -> bool
+(** The last routine of a sequence the debugger interposed has ended: the control it found comes
+    back (R-bk-11); [false] when none was interposed. *)
+
 (** {1 Values the rules read} *)
 
 val bool_of : Value.t -> bool option

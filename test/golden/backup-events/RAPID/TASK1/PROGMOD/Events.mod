@@ -47,14 +47,14 @@ MODULE Events
   ENDPROC
 
   PROC on_restart()
-    TPWrite "rob1: restart (never in a run)";
+    TPWrite "rob1: restart (debug only)";
   ENDPROC
 
   PROC on_step()
-    TPWrite "rob1: step (never in a run)";
+    TPWrite "rob1: step (debug only)";
   ENDPROC
 
   PROC on_qstop()
-    TPWrite "rob1: quick stop (never in a run)";
+    TPWrite "rob1: quick stop (never)";
   ENDPROC
 ENDMODULE
