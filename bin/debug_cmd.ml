@@ -63,7 +63,8 @@ let cmd =
     let type_of = Rapid_tools.Debug_types.type_of parsed in
     let files = List.map (fun f -> if f = "-" then Rapid_syntax.Parse.stdin_name else f) files in
     let note w = notify (Rapid_run.Run_setup.Backup_warning w) in
-    let debug = Rapid_run.Task_load.runnable ~note ~task:events.task (Rapid_semantics.Machine.program cfg) events.debug in
+    let debug =
+      Rapid_run.Task_load.runnable ~note ~task:events.task (Rapid_semantics.Machine.program cfg) events.debug in
     let events = List.map (fun e ->
         (e, List.filter_map (fun (r : Rapid_run.Task_load.event_routine) ->
              if r.event = e && List.exists (fun n -> String.lowercase_ascii n = String.lowercase_ascii r.routine) debug

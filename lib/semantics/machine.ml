@@ -85,7 +85,8 @@ let sequence program by_name ~before ~entry ~after =
         let r = program.Ir.routines.(i) in
         if r.kind <> Procedure || Array.length r.parameters > 0 then
           Error (if is_entry then
-                   Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" name
+                   Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)"
+                     name
                  else Printf.sprintf "the event routine %s is not a procedure without parameters" name)
         else Ok (r, is_entry) in
   List.fold_right (fun (name, is_entry) acc ->
@@ -196,7 +197,8 @@ let interpose cfg names =
                                && Array.length cfg.program.routines.(i).parameters = 0 ->
               Ok (cfg.program.routines.(i) :: rs)
           | _, Error m -> Error m
-          | _ -> Error (Printf.sprintf "the event routine %s is not a procedure without parameters" name)) names (Ok []) in
+          | _ -> Error (Printf.sprintf "the event routine %s is not a procedure without parameters" name))
+          names (Ok []) in
       match found with
       | Error m -> Error m
       | Ok routines ->
