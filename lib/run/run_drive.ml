@@ -88,7 +88,12 @@ let machine ~notify sink ~json ~samples ~save (o : Run_options.t) files ~entry =
 
 (* The warnings of a backup counted with those its loading gave (event routines not run). *)
 let with_notes summary (loaded : Task_load.loaded) =
-  Option.map (fun (s : Backup_setup.summary) -> { s with warned = s.warned + List.length loaded.notes }) summary
+  let runs task (routine, _) = List.exists (fun (t : Task_load.task) ->
+      t.rules.name = task && List.exists (fun n -> n = routine) (t.rules.before @ t.rules.after)) loaded.tasks in
+  Option.map (fun (s : Backup_setup.summary) ->
+      { s with warned = s.warned + List.length loaded.notes;
+               tasks = List.map (fun (t : Backup_setup.task_summary) ->
+                   { t with event_routines = List.filter (runs t.task) t.event_routines }) s.tasks }) summary
 
 (* Several tasks by the closure engine (Closure_tasks): the same events, in the same order, as
    the machine's; --max-steps is each task's fuel. *)
