@@ -216,6 +216,7 @@ let interpose cfg names =
           | Some r -> Statements.settle cfg; Ok [ Routine_entered r.name ])
 
 let in_event_routine cfg = (not cfg.at_entry) || cfg.resumes <> []
+let interposed cfg = List.length cfg.resumes
 
 (* ------------------------------------------------------------------ the step *)
 

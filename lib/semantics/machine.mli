@@ -59,6 +59,9 @@ val in_event_routine : config -> bool
 (** Whether the task runs an event routine: one of its sequence other than the entry routine
     (R-bk-8), or one interposed. *)
 
+val interposed : config -> int
+(** How many {!interpose}d sequences are running (their control not yet given back). *)
+
 val step_rule : config -> Rule.t * event list
 (** One reduction: the rule applied and what it made observable. Only valid while [outcome] is
     [Running]. *)

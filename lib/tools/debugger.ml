@@ -117,8 +117,9 @@ let run_until s stop =
 
 (* R-bk-11: the event routines the task runs before it stands at its entry routine (POWER_ON,
    RESET), or that a command made happen, run to their end, what they write shown. *)
-let run_events s =
-  while M.outcome s.cfg = Outcome.Running && M.in_event_routine s.cfg && M.steps s.cfg < s.max_steps do
+let run_events ?until s =
+  let until = match until with Some f -> f | None -> fun () -> not (M.in_event_routine s.cfg) in
+  while M.outcome s.cfg = Outcome.Running && not (until ()) && M.steps s.cfg < s.max_steps do
     let rule, events = M.step s.cfg in
     note_rule s rule;
     show_events s events
@@ -132,9 +133,10 @@ let event s name =
   match List.assoc_opt name s.events with
   | None | Some [] -> ()
   | Some routines when M.outcome s.cfg = Outcome.Running -> (
+      let depth = M.interposed s.cfg in
       match M.interpose s.cfg routines with
       | Error m -> s.out ("event routines: " ^ m)
-      | Ok events -> show_events s events; run_events s)
+      | Ok events -> show_events s events; run_events ~until:(fun () -> M.interposed s.cfg <= depth) s)
   | Some _ -> ()
 
 (* The program pointer stops only at a statement (doc/debugger.md), on the line it begins on: a
