@@ -85,7 +85,10 @@ let print_summary (s : Rapid_run.Backup_setup.summary) ends =
             | _ -> "")
         | None, Some m -> "reads " ^ m ^ "'s robot"
         | None, None -> "no robot" in
-      Printf.eprintf "  %s (%s): entry %s, %d module%s, %s: %s\n" t.task t.kind t.entry t.modules
+      let events = match t.event_routines with
+        | [] -> ""
+        | l -> ", event routines " ^ String.concat ", " (List.map (fun (r, e) -> Printf.sprintf "%s (%s)" r e) l) in
+      Printf.eprintf "  %s (%s): entry %s%s, %d module%s, %s: %s\n" t.task t.kind t.entry events t.modules
         (if t.modules = 1 then "" else "s") robot
         (match List.assoc_opt t.task ends with Some o -> outcome_text o | None -> "not started")) s.tasks;
   flush stderr
@@ -109,7 +112,7 @@ let run_sink ~json ~closure_single : Drive.sink =
                   (List.map (fun (t : Rapid_run.Backup_setup.task_summary) ->
                        { EJ.name = t.task; kind = t.kind; entry = t.entry; motion = t.motion; robot = t.robot;
                          robot_type = t.robot_type; stand_in = t.stand_in; reads = t.reads;
-                         modules = t.modules }) s.tasks))
+                         modules = t.modules; event_routines = t.event_routines }) s.tasks))
         else summary := Some s);
     task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ends := (name, o) :: !ends);
     run_end = (fun ?entry_at o steps ->

@@ -42,6 +42,7 @@ let () =
       Test_observation.suite;
       Test_realprog2.suite;
       Test_backup.suite;
+      Test_event_routines.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;

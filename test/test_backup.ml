@@ -313,7 +313,9 @@ let program_file () =
 let hostile_backup () =
   let rs = Random.State.make [| 23 |] in
   let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n \
-             -Name \"T_B\" -UseMechanicalUnitGroup \"rob1\"\n#\nMECHANICAL_UNIT_GROUP:\n -Name \"rob1\" -Robot \"ROB_1\"\n#\n"
+             -Name \"T_B\" -UseMechanicalUnitGroup \"rob1\"\n#\nMECHANICAL_UNIT_GROUP:\n -Name \"rob1\" -Robot \"ROB_1\"\n#\n\
+             CAB_EXEC_HOOKS:\n -Routine \"p\" -Shelf \"POWER_ON\" -AllTask -SeqNo 2\n\
+             \ -Routine \"s\" -Shelf \"STOP\" -Task \"T_B\"\n#\n"
   and moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\" -use_joint_0 \"j\"\n#\n\
              ARM:\n -name \"j\" -upper_joint_bound 1 -lower_joint_bound -1\n#\n"
   and info = ">>TASK1: (T_ROB1,,)\nPROGMOD/A.mod @ a.mod\n\n>>TASK2: (T_B,,)\nPROGMOD/B.mod @ b.mod\n>>EOF:\n" in

@@ -1,5 +1,5 @@
 (** A controller backup read as the controller reads it at start (doc/user-guide.md, "Controller
-    backups"; doc/rulings.md R-bk-1 to R-bk-7): the folder a controller or RobotStudio writes,
+    backups"; doc/rulings.md R-bk-1 to R-bk-10): the folder a controller or RobotStudio writes,
     [BACKINFO/backinfo.txt] (which task folder is which task, and its modules in load order),
     [SYSPAR/SYS.cfg] (the tasks: [CAB_TASKS], [MECHANICAL_UNIT_GROUP]), [SYSPAR/MOC.cfg] (the
     robots: [ROBOT -use_robot_type], their base frames, the arms' joint bounds), [SYSPAR/EIO.cfg] (the signals),
@@ -8,6 +8,13 @@
     here; the robots themselves are made in lib/run, which knows the motion model. *)
 
 type kind = Normal | Static | Semistatic
+
+type event_routine = {
+  routine : string;            (** CAB_EXEC_HOOKS' -Routine *)
+  event : string;              (** its -Shelf: POWER_ON, START, RESTART, STOP, QSTOP, RESET, STEP *)
+  hook_at : string;            (** FILE:LINE of its instance *)
+}
+(** An event routine (SYS.cfg, CAB_EXEC_HOOKS; doc/rulings.md R-bk-8). *)
 
 type task = {
   name : string;               (** the task's name (SYS.cfg, backinfo.txt) *)
@@ -18,6 +25,13 @@ type task = {
   entry : string;              (** -Entry, else main *)
   files : string list;         (** its modules, in the order backinfo.txt gives (R-bk-2) *)
   at : string;                 (** FILE:LINE of its CAB_TASKS instance *)
+  before : event_routine list;
+      (** the event routines a run makes the task run before its entry routine, in order:
+          POWER_ON's, then in a NORMAL task RESET's and START's (R-bk-8) *)
+  after : event_routine list;  (** those it runs once the entry routine returned: a NORMAL task's STOP *)
+  debug_events : event_routine list;
+      (** a NORMAL task's START, RESTART, STEP and STOP routines, which rapid-sem debug's
+          commands make happen (R-bk-11) *)
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }

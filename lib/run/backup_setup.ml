@@ -91,7 +91,7 @@ let input ~robot files =
 
 type task_summary = {
   task : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
-  stand_in : string option; reads : string option; modules : int;
+  stand_in : string option; reads : string option; modules : int; event_routines : (string * string) list;
 }
 
 type summary = { dir : string; tasks : task_summary list; io : string option; signals : int; warned : int }
@@ -110,6 +110,9 @@ let summary c ~run ~(io : Rapid_controller.Io_config.t) =
            else None);
         stand_in = Option.map snd (List.find_opt (fun (n, _) -> same n s.name) c.stand_in);
         reads = (if motion then None else List.assoc_opt s.name b.connected);
-        modules = List.length s.files }) run in
+        modules = List.length s.files;
+        event_routines = (match t with
+            | Some t -> List.map (fun (e : Backup.event_routine) -> (e.routine, e.event)) (t.before @ t.after)
+            | None -> []) }) run in
   { dir = b.dir; tasks; io = (if io.file = "" then None else Some io.file); signals = List.length io.signals;
     warned = List.length c.warnings }

@@ -50,6 +50,9 @@ type task_summary = {
   stand_in : string option;   (** why the robot is not that type's (then --robot's, or the default IRB 120) *)
   reads : string option;      (** a task without a robot: the motion task whose robot it reads *)
   modules : int;
+  event_routines : (string * string) list;
+      (** its event routines, in the order it runs them, each with its event (R-bk-8): the
+          backup's; those the task runs once loaded ({!Run_drive}) *)
 }
 
 type summary = { dir : string; tasks : task_summary list; io : string option; signals : int; warned : int }

@@ -117,6 +117,13 @@ let world (o : Run_options.t) ~history io robot =
   | Error m -> Error (Usage ("rapid-sem: " ^ m))
   | Ok () -> Ok (controller, motion)
 
+type one_task_events = {
+  task : string; before : Task_load.event_routine list; after : Task_load.event_routine list;
+  debug : Task_load.event_routine list;
+}
+
+let no_events = { task = ""; before = []; after = []; debug = [] }
+
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
 (* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
@@ -147,7 +154,7 @@ let fresh_world ?robot ~notify (o : Run_options.t) files =
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with
   | Error m -> Error (Usage m)
-  | Ok (Files files) -> Ok (o, files, entry, None)
+  | Ok (Files files) -> Ok (o, files, entry, None, no_events)
   | Ok (Cell c) -> (
       List.iter (fun w -> notify (Backup_warning w)) c.warnings;
       match List.find_opt (fun (t : Rapid_load.Backup.task) -> t.motion) c.backup.tasks with
@@ -159,19 +166,25 @@ let one_task ~notify (o : Run_options.t) files ~entry =
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
           let robotware = match o.controller.robotware with Some _ as r -> r | None -> c.backup.robotware in
           let o = { o with controller = { o.controller with io; robotware } } in
-          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots))
+          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
+              { task = t.name; before = t.before; after = t.after; debug = t.debug_events }))
 
-let machine ?(observe = false) (o : Run_options.t) s ~entry =
+let machine ?(observe = false) ?(events = no_events) ?(notify = ignore) (o : Run_options.t) s ~entry =
+  (* R-bk-8: a backup's event routines, those the task buffer has. *)
+  let note n = notify (Backup_warning n) in
+  let before = Task_load.runnable ~note ~task:events.task s.loaded.program events.before
+  and after = Task_load.runnable ~note ~task:events.task s.loaded.program events.after in
   Result.map_error (fun reason -> Cannot_start { entry; reason })
     (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
-       s.loaded.program ~entry)
+       ~before ~after s.loaded.program ~entry)
 
-let start_machine ?observe ?history ?robot ~notify o files ~entry =
+let start_machine ?observe ?history ?robot ?events ~notify o files ~entry =
   machine_gc ();
-  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot) ->
+  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot, cell_events) ->
       let robot = match robot with Some _ -> robot | None -> cell_robot in
+      let events = match events with Some e -> e | None -> cell_events in
       Result.bind (single ?history ?robot ~notify o files) (fun s ->
-          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry)))
+          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe ~events ~notify o s ~entry)))
 
 type several = {
   specs : Task_load.spec list;
@@ -184,6 +197,7 @@ type several = {
   motion_task : string option;
   summary : Backup_setup.summary option;
   robotware : Rapid_syntax.Robotware.t option;
+  events : (string * (Task_load.event_routine list * Task_load.event_routine list)) list;
 }
 
 let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
@@ -283,8 +297,13 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let connected = match cell with Some c -> c.backup.connected | None -> [] in
           let summary = Option.map (fun c -> Backup_setup.summary c ~run:specs ~io) cell in
           let robotware = o.controller.robotware in
+          (* R-bk-8: the event routines of the backup's tasks (of a task --task gives other files
+             too: those its buffer has run). *)
+          let events = match cell with
+            | Some c -> List.map (fun (b : Rapid_load.Backup.task) -> (b.name, (b.before, b.after))) c.backup.tasks
+            | None -> [] in
           Result.map (fun (controller, motion) ->
-              { specs; names; io; controller; motion; robots; connected; motion_task; summary; robotware })
+              { specs; names; io; controller; motion; robots; connected; motion_task; summary; robotware; events })
             (world o ~history io robot)
 
 let refused : Task_load.failure -> failure = function
@@ -293,18 +312,20 @@ let refused : Task_load.failure -> failure = function
 
 let loaded ~notify = function
   | Error f -> Error (refused f)
-  | Ok (t, (l : Task_load.loaded)) -> notify (Warnings (l.warnings, None)); Ok (t, l)
+  | Ok (t, (l : Task_load.loaded)) ->
+      List.iter (fun n -> notify (Backup_warning n)) l.notes;
+      notify (Warnings (l.warnings, None)); Ok (t, l)
 
 let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
        ?robotware:s.robotware ~io:s.io
        ~observe ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)
 
 let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
     (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
        ?robotware:s.robotware ~io:s.io
        ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)

@@ -84,13 +84,23 @@ val single :
     rapid-sem test are installed (doc/rulings.md R-test-a). [robot]: a backup's robot, unless
     --robot gives one. *)
 
+type one_task_events = {
+  task : string;                              (** the backup task's name *)
+  before : Task_load.event_routine list;      (** its event routines before its entry routine (R-bk-8) *)
+  after : Task_load.event_routine list;       (** after it *)
+  debug : Task_load.event_routine list;       (** those debug's commands make happen (R-bk-11) *)
+}
+
+val no_events : one_task_events
+(** Files: none. *)
+
 val one_task :
   notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->
-  (Run_options.t * string list * string * Rapid_motion_model.Robot.t option, failure) result
+  (Run_options.t * string list * string * Rapid_motion_model.Robot.t option * one_task_events, failure) result
 (** The one task buffer of these files: as they are, the modules of a .pgf file, or a controller
     backup's first motion task alone (its modules, its entry routine when [entry] is main, its
-    robot, its EIO.cfg unless --io), the backup's warnings notified: what debug, motion and trace
-    of one task run. *)
+    robot, its EIO.cfg unless --io, its event routines), the backup's warnings notified: what
+    debug, motion and trace of one task run. *)
 
 val fresh_world :
   ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list ->
@@ -100,11 +110,14 @@ val fresh_world :
     signals, robot), without loading the files again (rapid-sem test: a world per test). *)
 
 val machine :
-  ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
-(** The machine started on the entry routine, with the limits of the options. *)
+  ?observe:bool -> ?events:one_task_events -> ?notify:(notice -> unit) -> Run_options.t -> single -> entry:string ->
+  (Rapid_semantics.Machine.config, failure) result
+(** The machine started on the entry routine, with the limits of the options; with [events], a
+    backup task's event routines before and after it (R-bk-8), those the buffer lacks notified. *)
 
 val start_machine :
-  ?observe:bool -> ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) ->
+  ?observe:bool -> ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> ?events:one_task_events ->
+  notify:(notice -> unit) ->
   Run_options.t -> string list -> entry:string ->
   (Rapid_semantics.Machine.config * Run.world, failure) result
 (** {!one_task}, {!single}, then {!machine}, the collector paced for the machine first: what trace,
@@ -123,6 +136,8 @@ type several = {
   motion_task : string option;          (** --motion-task, else a backup's first motion task *)
   summary : Backup_setup.summary option;   (** a backup's *)
   robotware : Rapid_syntax.Robotware.t option;   (** --robotware, else a backup's (R-2.4-rw6) *)
+  events : (string * (Task_load.event_routine list * Task_load.event_routine list)) list;
+      (** a backup's event routines by task: before and after the entry routine (R-bk-8) *)
 }
 
 val several :
