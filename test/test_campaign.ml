@@ -251,20 +251,23 @@ let read file =
   let ic = open_in_bin file in
   Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
 
-let no_output = Rapid_fuzz.Fuzz_run.{ engine_name = "no-output";
-                                      run = (fun p ~max_steps ->
-                                          let o = machine.run p ~max_steps in
-                                          { o with events = List.filter (fun e -> String.sub e 0 6 <> "output") o.events }) }
+let no_output =
+  Rapid_fuzz.Fuzz_run.{ engine_name = "no-output";
+                        run = (fun p ~max_steps ->
+                            let o = machine.run p ~max_steps in
+                            { o with events = List.filter (fun e -> String.sub e 0 6 <> "output") o.events }) }
 
 let settings = [ ("seed", "11"); ("count", "30"); ("engine", "no-output") ]
 
 let shard_report shard =
   let s = C.run ~engines:[ no_output ] ~seed:11 ~count:30 ~shard () in
-  let r = R.of_summary ~settings ~shard ~host:"test" ~reproducer:(fun f -> Printf.sprintf "fuzz-%d.mod" f.program_index) s in
+  let reproducer (f : C.failure_found) = Printf.sprintf "fuzz-%d.mod" f.program_index in
+  let r = R.of_summary ~settings ~shard ~host:"test" ~reproducer s in
   (* through its JSON, as the merge reads it *)
   match R.of_json (Yojson.Safe.from_string (Yojson.Safe.to_string (R.to_json r))) with
   | Ok r' ->
-      Alcotest.(check string) "the JSON reads back" (Yojson.Safe.to_string (R.to_json r)) (Yojson.Safe.to_string (R.to_json r'));
+      Alcotest.(check string) "the JSON reads back" (Yojson.Safe.to_string (R.to_json r))
+        (Yojson.Safe.to_string (R.to_json r'));
       r'
   | Error m -> Alcotest.failf "its own report: %s" m
 
@@ -299,8 +302,8 @@ let merge_is_unsharded () =
       let where = Printf.sprintf "shard-%d/fuzz-%d.mod" (f.program mod 3 + 1) f.program in
       Alcotest.(check bool) (where ^ " in the report") true (has md where)) sharded.m_failures;
   (* the coverage of the merge is that of the unsharded run too *)
-  Alcotest.(check string) "coverage" (Yojson.Safe.to_string (Rapid_fuzz.Coverage.to_json { (R.coverage one) with cpu_seconds = 0. }))
-    (Yojson.Safe.to_string (Rapid_fuzz.Coverage.to_json { (R.coverage sharded) with cpu_seconds = 0. }))
+  let coverage m = Yojson.Safe.to_string (Rapid_fuzz.Coverage.to_json { (R.coverage m) with cpu_seconds = 0. }) in
+  Alcotest.(check string) "coverage" (coverage one) (coverage sharded)
 
 let merge_refuses () =
   let reports = Lazy.force shard_reports in
@@ -310,7 +313,8 @@ let merge_refuses () =
     | Error m -> Alcotest.(check bool) (Printf.sprintf "%s: %s" what m) true (has m fragment) in
   refused "a shard missing" (List.tl reports) "missing";
   refused "a shard twice" (List.hd reports :: reports) "more than once";
-  refused "another campaign" ({ (List.hd reports) with settings = [ ("seed", "12") ] } :: List.tl reports) "same campaign";
+  refused "another campaign" ({ (List.hd reports) with settings = [ ("seed", "12") ] } :: List.tl reports)
+    "same campaign";
   refused "nothing" [] "no shard";
   List.iter (fun text ->
       match R.of_json (Yojson.Safe.from_string text) with
@@ -328,14 +332,16 @@ let merge_script () =
   let dir = Filename.temp_file "rapid-fuzz-merge" "" in
   Sys.remove dir; Sys.mkdir dir 0o755;
   let write name text = let oc = open_out_bin (Filename.concat dir name) in output_string oc text; close_out oc in
-  List.iter (fun (r : R.t) -> write (Printf.sprintf "shard-%d.json" r.shard.index) (Yojson.Safe.to_string (R.to_json r)))
+  List.iter (fun (r : R.t) ->
+      write (Printf.sprintf "shard-%d.json" r.shard.index) (Yojson.Safe.to_string (R.to_json r)))
     (Lazy.force shard_reports);
-  let merge () = Sys.command (Printf.sprintf "RAPID_SEM=%s bash %s %s 3 > %s 2>&1" (Filename.quote binary)
-                                (Filename.quote script) (Filename.quote dir) (Filename.quote (Filename.concat dir "out"))) in
+  let merge () =
+    Sys.command (Printf.sprintf "RAPID_SEM=%s bash %s %s 3 > %s 2>&1" (Filename.quote binary) (Filename.quote script)
+                   (Filename.quote dir) (Filename.quote (Filename.concat dir "out"))) in
   Alcotest.(check int) "exit 1: failures" 1 (merge ());
   let report = Yojson.Safe.from_file (Filename.concat dir "report.json") in
-  Alcotest.(check string) "report.json is the unsharded run's" (comparable (R.merged_to_json (merged_or_fail [ Lazy.force whole_report ])))
-    (comparable report);
+  let unsharded = R.merged_to_json (merged_or_fail [ Lazy.force whole_report ]) in
+  Alcotest.(check string) "report.json is the unsharded run's" (comparable unsharded) (comparable report);
   List.iter (fun f -> Alcotest.(check bool) f true (Sys.file_exists (Filename.concat dir f)))
     [ "report.md"; "coverage.json"; "coverage.md" ];
   Sys.remove (Filename.concat dir "shard-2.json");

@@ -59,7 +59,8 @@ array=1-$shards${max:+%$max}
 submitted=$(date +%s.%N)
 job=$(sbatch --parsable --array="$array" ${time_limit:+--time="$time_limit"} --chdir="$dir" \
         --output="$dir/shard-%a.log" \
-        --export=ALL,RAPID_SEM="$dir/rapid-sem",CAMPAIGN_DIR="$dir",CAMPAIGN_COUNT="$n",CAMPAIGN_SEED="$seed",CAMPAIGN_SHARDS="$shards" \
+        --export=ALL,RAPID_SEM="$dir/rapid-sem",CAMPAIGN_DIR="$dir",CAMPAIGN_COUNT="$n",CAMPAIGN_SEED="$seed"\
+,CAMPAIGN_SHARDS="$shards" \
         "$dir/shard.sbatch" "$@")
 job=${job%%;*}
 echo "campaign: job array $job, $shards shards of $n programs, seed $seed, in $dir"

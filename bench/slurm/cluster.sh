@@ -129,7 +129,7 @@ status() {
   for d in munged slurmctld slurmd; do
     printf '%-10s %s\n' "$d" "$(alive "$d" || echo 'not running')"
   done
-  [ -n "$(alive slurmctld)" ] && SLURM_CONF=$conf sinfo -N -o '%N %c CPUs %m MB %t' || true
+  [ -n "$(alive slurmctld)" ] && SLURM_CONF=$conf sinfo -h -N -o 'node %N: %c CPUs, %m MB, %t' || true
 }
 
 case ${1:-} in

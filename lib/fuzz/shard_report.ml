@@ -80,7 +80,8 @@ let of_json j =
       raise (Bad (Printf.sprintf "format %S, not %S (rapid-sem fuzz --json)" (string_of l "format") format));
     let shard = obj "shard" (field l "shard") in
     let settings = List.map (fun (k, v) -> match v with
-        | `String s -> (k, s) | _ -> raise (Bad ("settings." ^ k ^ " is not a string"))) (obj "settings" (field l "settings")) in
+        | `String s -> (k, s) | _ -> raise (Bad ("settings." ^ k ^ " is not a string")))
+        (obj "settings" (field l "settings")) in
     let failures = match field l "failures" with
       | `List fs -> List.map failure_of fs | _ -> raise (Bad "failures is not a list") in
     let index = int_of shard "index" and count = int_of shard "count" in
