@@ -2,7 +2,7 @@
 # A fuzzing campaign as a Slurm job array (bench/README.md, "Campaigns across machines"): one
 # shard of `rapid-sem fuzz` per array task, then the shards' reports merged into one.
 #
-#   bench/slurm/campaign.sh [-n N] [-j SHARDS] [-s SEED] [-o DIR] [-m MAX] [-t TIME] [-d]
+#   bench/slurm/campaign.sh [-n N] [-j SHARDS] [-s SEED] [-o DIR] [-m MAX] [-t TIME] [-r LIST] [-d]
 #                           [-- MORE FUZZ OPTIONS]
 #
 # N programs (default 100000) in SHARDS array tasks (default 8), seed SEED (default 1); DIR
@@ -11,7 +11,9 @@
 # their expected events), shard-K.json (its report), then report.md, report.json, coverage.md
 # and coverage.json of the whole campaign. -m MAX: at most MAX tasks at once (--array=1-J%MAX);
 # -t TIME: each task's time limit (sbatch --time). SBATCH_PARTITION, SBATCH_ACCOUNT and
-# Slurm's other SBATCH_* variables pass through to sbatch.
+# Slurm's other SBATCH_* variables pass through to sbatch. -r LIST (Slurm's syntax: 3,7 or 2-4)
+# runs only those shards again, in the DIR of an earlier run with the same N, SHARDS and SEED,
+# keeping the other shards' reports, then merges them all: for a task that did not finish.
 #
 # Without -d it waits for the array, merges and prints the report; its exit status is 0 when no
 # program failed, 1 when one did, 2 when a shard did not finish. With -d it submits the array
@@ -29,7 +31,8 @@ dir=$root/_build/slurm-campaign
 max=
 time_limit=
 detach=
-while getopts "n:j:s:o:m:t:d" opt; do
+rerun=
+while getopts "n:j:s:o:m:t:r:d" opt; do
   case $opt in
     n) n=$OPTARG ;;
     j) shards=$OPTARG ;;
@@ -37,8 +40,9 @@ while getopts "n:j:s:o:m:t:d" opt; do
     o) dir=$OPTARG ;;
     m) max=$OPTARG ;;
     t) time_limit=$OPTARG ;;
+    r) rerun=$OPTARG ;;
     d) detach=1 ;;
-    *) sed -n '2,22p' "$0"; exit 2 ;;
+    *) sed -n '2,25p' "$0"; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
@@ -49,13 +53,19 @@ bin=${RAPID_SEM:-$root/_build/install/default/bin/rapid-sem}
 [ -x "$bin" ] || { echo "campaign: $bin not found: run make build first, or set RAPID_SEM" >&2; exit 2; }
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
-# a campaign's folder holds one campaign: the reports of an earlier one would be merged too
-rm -rf "$dir"/shard-* "$dir"/report.* "$dir"/coverage.*
-# the shards run this copy: a build during the campaign cannot mix two binaries
-cp "$bin" "$dir/rapid-sem"
-cp "$here/shard.sbatch" "$here/merge.sh" "$dir/"
+if [ -z "$rerun" ]; then
+  # a campaign's folder holds one campaign: the reports of an earlier one would be merged too
+  rm -rf "$dir"/shard-* "$dir"/report.* "$dir"/coverage.*
+  # the shards run this copy: a build during the campaign cannot mix two binaries
+  cp "$bin" "$dir/rapid-sem"
+  cp "$here/shard.sbatch" "$here/merge.sh" "$dir/"
+  array=1-$shards${max:+%$max}
+else
+  # the earlier run's binary and scripts; the merge refuses a report of other settings
+  [ -x "$dir/rapid-sem" ] || { echo "campaign: -r: $dir holds no earlier campaign" >&2; exit 2; }
+  array=$rerun${max:+%$max}
+fi
 
-array=1-$shards${max:+%$max}
 submitted=$(date +%s.%N)
 job=$(sbatch --parsable --array="$array" ${time_limit:+--time="$time_limit"} --chdir="$dir" \
         --output="$dir/shard-%a.log" \

@@ -195,8 +195,10 @@ let merged_to_markdown m =
     Printf.bprintf b "## Failures (%d)\n\n| program | kind | statements (from) | reproducer | what |\n\
                       |---:|---|---:|---|---|\n" (List.length m.m_failures);
     List.iter (fun f ->
-        Printf.bprintf b "| %d | %s | %d (%d) | shard-%d/%s | %s |\n" f.program f.kind f.minimal_size f.original_size
-          ((f.program mod n) + 1) f.reproducer (cell f.message)) m.m_failures;
+        (* an unsharded run's failures are in its --out itself *)
+        let where = if n = 1 then f.reproducer else Printf.sprintf "shard-%d/%s" ((f.program mod n) + 1) f.reproducer in
+        Printf.bprintf b "| %d | %s | %d (%d) | %s | %s |\n" f.program f.kind f.minimal_size f.original_size where
+          (cell f.message)) m.m_failures;
     Buffer.add_char b '\n'
   end;
   Buffer.add_string b "## Shards\n\n| shard | host | programs | failures | rules applied | wall s | cpu s | \

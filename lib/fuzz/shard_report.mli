@@ -70,4 +70,5 @@ val merged_to_json : merged -> Yojson.Safe.t
     host and figures of time. *)
 
 val merged_to_markdown : merged -> string
-(** Totals, failures with their reproducers ([shard-K/NAME]), and a table of the shards. *)
+(** Totals, failures with their reproducers ([shard-K/NAME], or [NAME] when the one report is unsharded), and a
+    table of the shards. *)
