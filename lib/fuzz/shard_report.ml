@@ -94,8 +94,9 @@ let of_json j =
 let read path =
   match Yojson.Safe.from_file path with
   | j -> Result.map_error (fun m -> path ^ ": " ^ m) (of_json j)
-  | exception Yojson.Json_error m -> Error (path ^ ": " ^ m)
-  | exception Sys_error m -> Error m
+  | exception Yojson.Json_error m -> Error (path ^ ": " ^ String.escaped m)
+  | exception Sys_error m -> Error (if String.length m >= String.length path
+                                       && String.sub m 0 (String.length path) = path then m else path ^ ": " ^ m)
 
 type merged = {
   m_settings : (string * string) list;
