@@ -584,15 +584,23 @@ let search ctx st name args =
     | "searchj" -> Some (P.Joint (robtarget_of target))
     | "searchc" -> Option.map (fun c -> P.Circular (robtarget_of c, robtarget_of target)) (get "CirPoint")
     | _ -> Some (P.Linear (robtarget_of target)) in
-  let signal = match arg ctx args "Signal" with
-    | Location (box, i, _) -> (
+  (* "Signal | PersBool" (ABB, RobotWare 6 and later): the search watches a digital input or a
+     persistent bool alike, its value read at every poll as 0 or 1 (FALSE or TRUE). *)
+  let signal = match arg ctx args "Signal", arg ctx args "PersBool" with
+    | Location (box, i, _), _ -> (
         match box.(i) with
-        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
+        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None ->
+            let id = V.handle_id h in
+            Some (fun () -> W.read w id)
+        | _ -> None)
+    | _, Location (box, i, _) -> (
+        match box.(i) with
+        | V.Bool _ -> Some (fun () -> match box.(i) with V.Bool true -> 1. | _ -> 0.)
         | _ -> None)
     | _ -> None in
   match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
   | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
-  | Some id, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
+  | Some read, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
       let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
       let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
       let hit ~old ~now =
@@ -622,7 +630,7 @@ let search ctx st name args =
                                      joints; ready_time; start_time; end_time });
           add_track st { t_id = move; t_label = target_label; started = false; ended = false };
           st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
-          let previous = ref (W.read w id) and found = ref false and asked = ref nan in
+          let previous = ref (read ()) and found = ref false and asked = ref nan in
           let record () =
             found := true;
             let t = W.now w in
@@ -636,7 +644,7 @@ let search ctx st name args =
                            emit st (E.Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
-            let v = W.read w id in
+            let v = read () in
             if (not !found) && v <> !previous && hit ~old:!previous ~now:v then record ();
             previous := v;
             let r = P.ready_time st.planner move in
