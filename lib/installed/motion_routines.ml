@@ -56,6 +56,7 @@ type state = {
   mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
   mutable drain_hooks : (W.t -> unit) list;
   mutable robots : (string * state) list;      (* a task without a robot: the motion tasks (R-14-pos1) *)
+  mutable speed_limit : MM.Profile.speed_limit; (* SpeedLimCheckPoint, SpeedLimAxis (R-13-speedlim1) *)
 }
 
 let dummy = V.Bool false
@@ -67,7 +68,7 @@ let create ?(robot = MM.Robot.irb120) ?history () =
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
-    extensions = []; drain_hooks = []; robots = [] }
+    extensions = []; drain_hooks = []; robots = []; speed_limit = MM.Profile.no_speed_limit }
 
 let set_backward st b = st.backward <- b
 let retracing st = st.backward
@@ -386,6 +387,32 @@ let world_flange st id joints =
   let f = MM.Kinematics.forward st.kin joints in
   match P.base st.planner (P.target_external st.planner id) with Some b -> G.pmult b f | None -> f
 
+(* SpeedLimCheckPoint, SpeedLimAxis (ABB, RAPID Instructions): the limits act while the system
+   input LimitSpeed is 1, on the moves planned then (R-13-speedlim1). *)
+let apply_speed_limit st w =
+  let active = st.speed_limit <> MM.Profile.no_speed_limit && W.system_input_active w ~action:"LimitSpeed" in
+  (P.settings st.planner).speed_limit <- (if active then Some st.speed_limit else None)
+
+(* SpeedLimCheckPoint RobSpeed: the speed of the checkpoints in mm/s; SpeedLimAxis MechUnit AxisNo
+   AxisSpeed: the speed of one axis (degrees/s, mm/s for a linear one). A speed below 0 or not
+   finite: ERR_SPEEDLIM_VALUE; 0 leaves that speed unlimited; an axis that is not one of the
+   robot's 1 to 6: ERR_ARGVALERR (R-13-speedlim1). The MechUnit is the task's robot. *)
+let speed_lim_check_point ctx st args =
+  match num ctx args "RobSpeed" with
+  | Some v when v >= 0. && Float.is_finite v ->
+      st.speed_limit <- { st.speed_limit with check_point = (if v > 0. then Some v else None) }; Returned None
+  | _ -> Failed "ERR_SPEEDLIM_VALUE"
+
+let speed_lim_axis ctx st args =
+  match num ctx args "AxisNo", num ctx args "AxisSpeed" with
+  | Some a, _ when not (Float.is_integer a && a >= 1. && a <= 6.) -> Failed "ERR_ARGVALERR"
+  | Some a, Some v when v >= 0. && Float.is_finite v ->
+      let axis = int_of_float a in
+      let axes = List.remove_assoc axis st.speed_limit.axes in
+      let axes = if v > 0. then (axis, v) :: axes else axes in
+      st.speed_limit <- { st.speed_limit with axes = List.sort compare axes }; Returned None
+  | _ -> Failed "ERR_SPEEDLIM_VALUE"
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
@@ -456,7 +483,8 @@ let move ctx st name args =
           (* What the robot did before this move is observed before it is planned. *)
           if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
           forget st ~now;
-          match P.plan st.planner ~now m with
+          apply_speed_limit st ctx.world;
+      match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
               planned st id;
@@ -616,6 +644,7 @@ let search ctx st name args =
       let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
           ~label:target_label ~eax:(eax_of_robtarget target) (speed_of speed) fine (Option.get (path target)) in
       let now = W.now w in
+      apply_speed_limit st ctx.world;
       match P.plan st.planner ~now m with
       | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
@@ -666,6 +695,7 @@ let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
   "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning";
+  "SpeedLimCheckPoint"; "SpeedLimAxis";
   "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
@@ -816,6 +846,8 @@ let call_unguarded (ctx : context) st name args =
           else Some (Failed "ERR_ARGVALERR")
       | _ -> None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
+  | "speedlimcheckpoint" -> Some (speed_lim_check_point ctx st args)
+  | "speedlimaxis" -> Some (speed_lim_axis ctx st args)
   | "velset" -> (
       match num ctx args "Override", num ctx args "Max" with
       | Some o, Some m when o > 0. && m > 0. && Float.is_finite o && Float.is_finite m ->
@@ -956,6 +988,7 @@ let servo ctx st q ~duration =
   let now = W.now ctx.world in
   let fine = Option.get (D.find D.zonedata "fine") and speed = Option.get (D.find D.speeddata "v1000") in
   forget st ~now;
+  apply_speed_limit st ctx.world;
   match P.plan st.planner ~now (P.move ~t:duration ~label:"EGM" speed fine (P.Abs_joint q)) with
   | Error e -> ctx.log (Printf.sprintf "EGM: %s" (MM.Motion_error.name e)); Error (error_name e)
   | Ok { id; _ } -> planned st id; st.last_planned <- Some id; Ok ()
