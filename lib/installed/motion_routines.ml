@@ -57,6 +57,8 @@ type state = {
   mutable drain_hooks : (W.t -> unit) list;
   mutable robots : (string * state) list;      (* a task without a robot: the motion tasks (R-14-pos1) *)
   mutable speed_limit : MM.Profile.speed_limit; (* SpeedLimCheckPoint, SpeedLimAxis (R-13-speedlim1) *)
+  mutable tool_name : string;                  (* the names of the active tool and work object, *)
+  mutable wobj_name : string;                  (* for GetSysData \ObjectName *)
 }
 
 let dummy = V.Bool false
@@ -68,7 +70,8 @@ let create ?(robot = MM.Robot.irb120) ?history () =
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
-    extensions = []; drain_hooks = []; robots = []; speed_limit = MM.Profile.no_speed_limit }
+    extensions = []; drain_hooks = []; robots = []; speed_limit = MM.Profile.no_speed_limit;
+    tool_name = "tool0"; wobj_name = "wobj0" }
 
 let set_backward st b = st.backward <- b
 let retracing st = st.backward
@@ -484,14 +487,16 @@ let move ctx st name args =
           if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
           forget st ~now;
           apply_speed_limit st ctx.world;
-      match P.plan st.planner ~now m with
+          match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
               planned st id;
               (* MoveExtJ has no tool: the active tool and work object stay. *)
               if not ext then begin
                 st.tool <- V.copy tool;
-                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy)
+                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+                st.tool_name <- label ctx "Tool";
+                st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj")
               end;
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
@@ -652,6 +657,8 @@ let search ctx st name args =
           st.conc_run <- 0;
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+          st.tool_name <- label ctx "Tool";
+          st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj");
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
           emit st (E.Segment_planned { time = now; id = move; instruction = name; label = target_label;
@@ -699,7 +706,7 @@ let names = [
   "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
-  "SetSysData";
+  "SetSysData"; "GetSysData";
   "IsStopMoveAct";
   "ExitCycle";
 ]
@@ -865,11 +872,40 @@ let call_unguarded (ctx : context) st name args =
          name) is not modelled. *)
       match get "SourceObject" with
       | Some (V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] as t) when Array.length l = 6 ->
-          st.tool <- V.copy t; Some (Returned None)
+          st.tool <- V.copy t; st.tool_name <- label ctx "SourceObject"; Some (Returned None)
       | Some (V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] as o) ->
-          st.wobj <- V.copy o; Some (Returned None)
+          st.wobj <- V.copy o; st.wobj_name <- label ctx "SourceObject"; Some (Returned None)
       | Some (V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |]) -> Some (Returned None)
       | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "getsysdata" -> (
+      (* GetSysData DestObject [\ObjectName] (ABB, RAPID Instructions): the active tool or work
+         object (CTool, CWObj) copied into DestObject, told apart by its components as for
+         SetSysData (R-13-y); \ObjectName receives its name. A loaddata: load0, which the
+         motion model does not track (R-13-getsysdata1). *)
+      let wobj0 () = V.Record [| V.Bool false; V.Bool true; V.String "";
+                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |] in
+      let load0 () = V.Record [| V.num 0.; V.pos 0. 0. 0.; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] in
+      let answer = match arg ctx args "DestObject" with
+        | Location (box, i, _) -> (
+            match box.(i) with
+            | V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] when Array.length l = 6 ->
+                Some (box, i, (match active_tool st with Some t -> V.copy t | None -> tool0_value ()),
+                      st.tool_name)
+            | V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] ->
+                Some (box, i, (if st.wobj == dummy then wobj0 () else V.copy st.wobj), st.wobj_name)
+            | V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |] ->
+                Some (box, i, load0 (), "load0")
+            | _ -> None)
+        | _ -> None in
+      match answer with
+      | None -> Some (Failed "ERR_ARGVALERR")
+      | Some (box, i, v, object_name) ->
+          box.(i) <- v;
+          (match arg ctx args "ObjectName" with
+           | Location (nb, ni, _) -> nb.(ni) <- V.String object_name
+           | _ -> ());
+          Some (Returned None))
   | "confl" -> settings.conf_l <- not (present ctx args "Off"); Some (Returned None)
   | "confj" -> settings.conf_j <- not (present ctx args "Off"); Some (Returned None)
   | "singarea" ->
