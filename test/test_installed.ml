@@ -102,7 +102,8 @@ let required_choice () =
   Alcotest.(check (list string)) "a wrong name" [ "8:13 argument-name" ]
     (errors (prog "SearchL Sensor:=pb, f, t, v100, tool0;"));
   Alcotest.(check bool) "\\PersBool is not optional" true
-    (List.exists (fun e -> e = "8:19 argument-required") (errors (prog "SearchL \\Stop \\PersBool:=pb, f, t, v100, tool0;")))
+    (List.exists (fun e -> e = "8:19 argument-required")
+       (errors (prog "SearchL \\Stop \\PersBool:=pb, f, t, v100, tool0;")))
 
 let suite =
   ( "installed",
