@@ -20,6 +20,7 @@ let move ?v ?t ?z ?inpos ?(conc = false) ?(tool = Motion_data.tool0) ?(wobj = Mo
 type settings = {
   mutable velset : Profile.velset; mutable conf_l : bool; mutable conf_j : bool;
   mutable sing_area_wrist : bool; mutable look_ahead : float;
+  mutable speed_limit : Profile.speed_limit option;
 }
 
 type warning = Corner_path_failure of int
@@ -221,7 +222,8 @@ let create ?(joints = Array.make 6 0.) kin =
   let joints = join joints (Ext_axes.initial (Kinematics.robot kin).externals) in
   let cur = new_level kin joints ~from:0. in
   { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
-                      sing_area_wrist = false; look_ahead = 0.1 };
+                      sing_area_wrist = false; look_ahead = 0.1;
+                      speed_limit = None };
     moves = Vec.create (); forgotten_ready = neg_infinity; cur; stored = None }
 
 let settings t = t.settings
@@ -409,6 +411,14 @@ let build t ~now_p m id =
         let* te = Ext_axes.time robot.externals ~override:st.velset.override ~v_leax:sp.v_leax
             ~v_reax:sp.v_reax ~from:(ext q_start) e_end in
         Ok (Float.max duration te) in
+    (* The speed limitation while LimitSpeed is active (R-13-speedlim1): no faster than the
+       TCP's and the axes' limits allow, \T or not. *)
+    let duration = match st.speed_limit with
+      | None -> duration
+      | Some lim ->
+          let n = min 6 (min (Array.length q_start) (Array.length q_end)) in
+          let deltas = Array.init n (fun i -> q_end.(i) -. q_start.(i)) in
+          Float.max duration (Profile.limited_time lim ~length ~deltas) in
     let* () =
       if Float.is_finite duration && Float.is_finite length then Ok ()
       else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in

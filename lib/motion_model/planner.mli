@@ -42,6 +42,9 @@ type settings = {
   mutable look_ahead : float;
       (** how long before a fly-by point's zone the program pointer may leave its move, s
           (default 0.1: ABB's planning time DT, installed-facts.md §5, CONFIRMED as approximate) *)
+  mutable speed_limit : Profile.speed_limit option;
+      (** the limits of SpeedLimCheckPoint and SpeedLimAxis while the system input LimitSpeed is
+          active, for the moves planned now; [None]: not active *)
 }
 
 type warning =

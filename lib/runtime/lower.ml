@@ -226,7 +226,7 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
       | _ -> None)
 
 and parameters_of (r : Env.routine) =
-  List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
+  List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps | Required_choice ps -> ps) r.r_slots
 
 (* A loop variable, ERRNO or INTNO: a read-only variable of the access-mode table (§5.2). *)
 and read_only ctx (e : A.expression) =
@@ -431,13 +431,13 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.slot_names i p.p_name) params;
         ctx.local_count <- List.length params;
         let optionals = List.concat_map (function
-            | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) r.r_slots in
+            | Env.Optional_slot ps | Env.Required_choice ps -> ps | Env.Required_slot _ -> []) r.r_slots in
         let optional p = optionals <> [] && List.memq p optionals in
         (* §5.2: the alternatives of one optional slot are mutually exclusive. *)
         let group p =
           let rec find k = function
             | [] -> -1
-            | Env.Optional_slot ps :: _ when List.memq p ps -> k
+            | (Env.Optional_slot ps | Env.Required_choice ps) :: _ when List.memq p ps -> k
             | _ :: rest -> find (k + 1) rest in
           find 0 r.r_slots in
         let parameters = Array.of_list (List.map (fun (p : Env.parameter) ->
