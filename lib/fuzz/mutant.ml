@@ -16,25 +16,30 @@ let is_ident_char c = c = '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'
    two words of a text of a few thousand bytes, and the list of every word, each copied, was
    most of what making a mutant cost. Drawing [Random.State.int rs (count_words text)] and
    taking that word is what picking from the list did. *)
+(* Which bytes are name characters, looked up rather than tested (every byte of every mutant
+   is). *)
+let ident_table = String.init 256 (fun i -> if is_ident_char (Char.chr i) then '\001' else '\000')
+let ident text i = String.unsafe_get ident_table (Char.code (String.unsafe_get text i)) = '\001'
+
 let count_words text =
   let n = String.length text in
-  let rec go i count =
-    if i >= n then count
-    else if is_ident_char (String.unsafe_get text i) then begin
-      let j = ref i in
-      while !j < n && is_ident_char (String.unsafe_get text !j) do incr j done;
-      go !j (count + 1)
+  let count = ref 0 and i = ref 0 in
+  while !i < n do
+    if ident text !i then begin
+      incr count;
+      while !i < n && ident text !i do incr i done
     end
-    else go (i + 1) count in
-  go 0 0
+    else incr i
+  done;
+  !count
 
 let nth_word text k =
   let n = String.length text in
   let rec go i k =
     if i >= n then invalid_arg "Mutant.nth_word"
-    else if is_ident_char (String.unsafe_get text i) then begin
+    else if ident text i then begin
       let j = ref i in
-      while !j < n && is_ident_char (String.unsafe_get text !j) do incr j done;
+      while !j < n && ident text !j do incr j done;
       if k = 0 then (i, String.sub text i (!j - i)) else go !j (k - 1)
     end
     else go (i + 1) k in
@@ -137,6 +142,7 @@ let mutate rs text =
 (* [String.concat "" (List.init n (fun _ -> s))], without the list of n strings. *)
 let repeat n s =
   let l = String.length s in
+  if l = 1 then String.make n s.[0] else
   let b = Bytes.create (n * l) in
   for i = 0 to n - 1 do Bytes.blit_string s 0 b (i * l) l done;
   Bytes.unsafe_to_string b
@@ -164,7 +170,8 @@ let hostile rs =
       in_main (Printf.sprintf "    x := 1%s;" (repeat d " + 1"))
   | 12 -> let d = min 10_000 (depth ()) in
       Printf.sprintf "MODULE h\n%s\nENDMODULE\n"
-        (String.concat "\n" (List.init d (fun i -> Printf.sprintf "  PROC p%d() p%d; ENDPROC" i (i + 1))))
+        (String.concat "\n"
+           (List.init d (fun i -> "  PROC p" ^ string_of_int i ^ "() p" ^ string_of_int (i + 1) ^ "; ENDPROC")))
   | _ ->
       (* a valid program's words in random order *)
       let vocabulary = keywords @ tokens @ type_names @ [ "x"; "main"; "1"; "\"s\"" ] in

@@ -61,7 +61,7 @@ let closest name candidates =
            nothing. *)
         if abs (String.length c - length) > limit then None
         else
-          let k = String.lowercase_ascii c in
+          let k = if String.exists (fun ch -> ch >= 'A' && ch <= 'Z') c then String.lowercase_ascii c else c in
           if k = lower then None
           else
             let d = bounded_distance ~within:limit lower k in
