@@ -108,11 +108,22 @@ let controller_args =
       { O.io; statement_time; max_time; epoch; services; robotware })
         $ io_arg $ statement_time $ max_time $ epoch $ services_args $ robotware_arg)
 
+let base_frame_arg =
+  Arg.(value & opt_all string [] & info [ "base-frame" ] ~docv:"[TASK=]X,Y,Z,Q1,Q2,Q3,Q4"
+         ~doc:"Where the cell mounts the robot: its base frame in the world frame, the origin in mm and the \
+               orientation as a unit quaternion, as a RAPID pose (doc/rulings.md R-bk-12). Robtargets in wobj0 are in \
+               the world frame; CRobT, CPos and CalcRobT answer through the base frame. Without TASK= the run's \
+               robot (the one task's, or the motion task's); with TASK=, with several tasks, that task's robot: a \
+               backup's motion task, or any task of --task, which then has a robot of its own. Overrides MOC.cfg's \
+               base frame.")
+
 let robot_arg =
   Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE|NAME"
          ~doc:"The robot: a description file (doc/motion.md, \"The robot description\"), or else a robot of the \
                library by its name (irb2400-10-1.5), its model (irb7600) or a MOC.cfg robot type \
                (ROB1_2400_1.5_10; doc/motion.md, \"The robot library\"); default the built-in ABB IRB 120.")
+
+let robot_and_base_frames = Term.(const (fun r b -> (r, b)) $ robot_arg $ base_frame_arg)
 
 let samples_arg =
   Arg.(value & opt (some float) None & info [ "samples" ] ~docv:"HZ"
@@ -163,7 +174,7 @@ let tasks_args =
   Term.(const (fun files entries tasks schedule motion_task -> { O.files; entries; tasks; schedule; motion_task })
         $ files $ entry $ tasks $ schedule $ motion_task)
 
-let options ~max_steps ~allow_unknown:(allow_unknown, stub_unmodelled) ~max_depth ~retry_limit:(retry_limit, max_memory)
-    ~controller ~robot =
-  { O.max_steps; allow_unknown; stub_unmodelled; controller; robot;
+let options ?(base_frames = []) ~max_steps ~allow_unknown:(allow_unknown, stub_unmodelled) ~max_depth
+    ~retry_limit:(retry_limit, max_memory) ~controller ~robot () =
+  { O.max_steps; allow_unknown; stub_unmodelled; controller; robot; base_frames;
     limits = { max_call_depth = max_depth; retry_limit; max_memory } }

@@ -17,6 +17,7 @@ let () =
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;
+      Test_base_frame.suite;
       Test_robot_library.suite;
       Test_controller.suite;
       Test_installed.suite;
@@ -42,6 +43,7 @@ let () =
       Test_observation.suite;
       Test_realprog2.suite;
       Test_backup.suite;
+      Test_event_routines.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;

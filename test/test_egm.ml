@@ -149,7 +149,7 @@ let euler_of (w, x, y, z) =
    deg (Float.asin (Float.max (-1.) (Float.min 1. (2. *. ((w *. y) -. (x *. z)))))),
    deg (Float.atan2 (2. *. ((x *. y) +. (w *. z))) (1. -. (2. *. ((y *. y) +. (z *. z))))))
 
-let egm_pose ?(euler = false) engine () =
+let egm_pose ?(euler = false) ?(extra = []) engine () =
   with_dir (fun dir ->
       let goal = ref None in
       let reply (r : E.robot) =
@@ -167,7 +167,7 @@ let egm_pose ?(euler = false) engine () =
               else { E.pos = Some p; orient = Some q; euler = None } in
             { E.empty_sensor with set_pose = Some set }
         | None -> E.empty_sensor in
-      let feedback, out = run_with_sensor ~reply ~driver:"drivers/EgmPose.mod" engine dir in
+      let feedback, out = run_with_sensor ~extra ~reply ~driver:"drivers/EgmPose.mod" engine dir in
       let (gx, gy, gz), (g1, g2, g3, g4) = match !goal with Some g -> g | None -> Alcotest.fail "no feedback pose" in
       Alcotest.(check bool) "more than 50 cycles" true (List.length feedback > 50);
       let last = List.nth feedback (List.length feedback - 1) in
@@ -261,5 +261,9 @@ let suite = ("egm", [
     Alcotest.test_case "a collision during the run, the machine" `Quick (egm_collision "machine");
     Alcotest.test_case "pose-mode EGM with a sensor on the loopback" `Quick (egm_pose "closure");
     Alcotest.test_case "pose-mode EGM with a sensor, Euler angles, the machine" `Quick (egm_pose ~euler:true "machine");
+    (* The robot at a base frame 30 degrees about z and away from the world's origin (R-bk-12):
+       the work object frame of the guidance is brought into the base frame. *)
+    Alcotest.test_case "pose-mode EGM, the robot at a moved and turned base frame" `Quick
+      (egm_pose ~extra:[ "--base-frame"; "300,-200,100,0.9659258,0,0,0.2588190" ] "closure");
     Alcotest.test_case "no sensor: ERR_UDPUC_COMM after CommTimeout" `Quick egm_timeout;
   ])

@@ -15,7 +15,7 @@ let options = Rapid_run.Run_options.{
     controller = { io = None; statement_time = Rapid_controller.World.default_statement_time;
                    max_time = Rapid_controller.World.default_max_time; epoch = Rapid_controller.World.default_epoch; robotware = None;
                    services = { fs = None; fs_quota = None; net = []; map_address = []; egm_device = [] } };
-    robot = None }
+    robot = None; base_frames = [] }
 
 let cell = "../examples/pickcell"
 

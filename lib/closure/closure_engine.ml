@@ -2127,21 +2127,40 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> Outcome.Stuck ("a value of the wrong type: " ^ what)
   | e -> Outcome.Stuck (Printexc.to_string e)
 
-let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ~host
-    ?cooperation ?module_data (program : program) ~entry =
+(* The routines a task runs one after the other (doc/rulings.md R-bk-8): the event routines
+   [before], the entry routine, the event routines [after], as the machine's [sequence] finds
+   them: each a procedure without parameters (the program's entry points). *)
+let sequence (program : program) ~before ~entry ~after =
+  let find ~is_entry name =
+    let lower = String.lowercase_ascii name in
+    match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
+    | Some (_, k) -> Ok (k, is_entry)
+    | None when is_entry -> Error (Rapid_runtime.Task_rules.no_entry program name)
+    | None ->
+        let named = Array.exists (fun (r : routine) -> String.lowercase_ascii r.name = lower) program.routines in
+        Error (if named then Printf.sprintf "the event routine %s is not a procedure without parameters" name
+               else Printf.sprintf "no procedure %s for the event routine" name) in
+  List.fold_right (fun (name, is_entry) acc ->
+      match find ~is_entry name, acc with
+      | Ok r, Ok rs -> Ok (r :: rs)
+      | Error m, _ | _, Error m -> Error m)
+    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?(before = [])
+    ?(after = []) ~host ?cooperation ?module_data (program : program) ~entry =
   try
     run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program
-      ~entry
+      ~before ~entry ~after
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
 and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event
-    ~(host : Host.t) (program : program) ~entry =
+    ~(host : Host.t) (program : program) ~before ~entry ~after =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
   let program = host.prepare program in
-  let lower = String.lowercase_ascii entry in
-  match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
-  | None -> Error (Rapid_runtime.Task_rules.no_entry program entry)
-  | Some (_, k) ->
+  match sequence program ~before ~entry ~after with
+  | Error m -> Error m
+  | Ok [] -> Error (Rapid_runtime.Task_rules.no_entry program entry)
+  | Ok ((k, first_is_entry) :: phases) ->
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
@@ -2174,19 +2193,34 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                   | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
               | Init_default _ -> ()) program.globals;
           Option.iter (fun c -> c.share st.globals) cooperation;
-          let code = Lazy.force st.compiled.(k) in
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit; cycle-restart: the
-             entry routine runs again, in a new activation, after ExitCycle (R-13-exitcycle1). *)
+             entry routine runs again, in a new activation, after ExitCycle (R-13-exitcycle1).
+             The routines of the task's sequence (R-bk-8) follow one another, each in a new
+             activation, when one ends by its end, RETURN, or ExitCycle in an event routine. *)
           if all_events then on_event (Event.Routine_entered r.name);
-          let rec cycle () =
+          let rec cycle (k, at_entry) phases =
+            let r = program.routines.(k) in
+            let code = Lazy.force st.compiled.(k) in
             let a = new_act (activation_shape r) r sentinel in
             a.nest <- code.c_nest;
             st.native <- code.c_nest;
             st.depth <- 1;
+            let next () =
+              match phases with
+              | [] ->
+                  if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
+                  Outcome.Ended
+              | ((k', _) as phase) :: phases ->
+                  pop st a;
+                  st.in_trap <- false; st.kept <- []; st.undoing <- []; st.resuming <- []; st.skip_undo <- [];
+                  st.user_calls <- [];
+                  if all_events then begin
+                    on_event (Event.Routine_left r.name);
+                    on_event (Event.Routine_entered program.routines.(k').name)
+                  end;
+                  cycle phase phases in
             match code.c_init r.at a; code.c_body a with
-            | _ ->
-                if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
-                Outcome.Ended
+            | _ -> next ()
             | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
             | exception Exit_task ->
                 (match code.c_undo with
@@ -2196,7 +2230,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                       | _ -> ()
                       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
                  | None -> ());
-                if st.next_cycle then begin
+                if st.next_cycle && not at_entry then begin st.next_cycle <- false; next () end
+                else if st.next_cycle then begin
                   st.next_cycle <- false;
                   pop st a;
                   st.in_trap <- false; st.kept <- []; st.undoing <- []; st.resuming <- []; st.skip_undo <- [];
@@ -2205,13 +2240,13 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                   if all_events then begin
                     on_event (Event.Routine_left r.name); on_event (Event.Routine_entered r.name)
                   end;
-                  cycle ()
+                  cycle (k, at_entry) phases
                 end
                 else begin
                   if all_events then on_event Event.Task_ended;
                   Outcome.Ended
                 end in
-          cycle ()
+          cycle (k, first_is_entry) phases
         with
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
         | Observer_failed ex -> raise ex

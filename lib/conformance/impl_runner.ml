@@ -29,6 +29,9 @@ let options (case : Spec_case.t) =
     (match run with Some { max_steps = Some n; _ } -> [ "--max-steps"; string_of_int n ] | _ -> []);
     (match run with Some { robot = Some f; _ } -> [ "--robot"; Filename.quote f ] | _ -> []);
     (match run with Some { egm_devices; _ } -> List.concat_map (fun d -> [ "--egm-device"; d ]) egm_devices | _ -> []);
+    (match run with
+     | Some { base_frames; _ } -> List.concat_map (fun b -> [ "--base-frame"; Filename.quote b ]) base_frames
+     | _ -> []);
   ]
 
 (* Format 4 as rapid-sem run spells several tasks: a task's entry as the case's runner takes it,

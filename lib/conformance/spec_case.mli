@@ -49,6 +49,8 @@ and run = {
       (** format 4, [! @entry TASK=ROUTINE]: that task's entry routine (the others: [entry]) *)
   robot : string option;          (** [! @robot FILE]: the robot description (rapid-sem run --robot), beside the case *)
   egm_devices : string list;      (** [! @egm-device NAME=HOST:PORT]: UdpUc devices of EGM (--egm-device) *)
+  base_frames : string list;
+      (** each [! @base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4]: where the cell mounts a robot (--base-frame, R-bk-12) *)
 }
 
 val read : string -> t

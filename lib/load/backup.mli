@@ -1,13 +1,20 @@
 (** A controller backup read as the controller reads it at start (doc/user-guide.md, "Controller
-    backups"; doc/rulings.md R-bk-1 to R-bk-7): the folder a controller or RobotStudio writes,
+    backups"; doc/rulings.md R-bk-1 to R-bk-10): the folder a controller or RobotStudio writes,
     [BACKINFO/backinfo.txt] (which task folder is which task, and its modules in load order),
     [SYSPAR/SYS.cfg] (the tasks: [CAB_TASKS], [MECHANICAL_UNIT_GROUP]), [SYSPAR/MOC.cfg] (the
-    robots: [ROBOT -use_robot_type], the arms' joint bounds), [SYSPAR/EIO.cfg] (the signals),
+    robots: [ROBOT -use_robot_type], their base frames, the arms' joint bounds), [SYSPAR/EIO.cfg] (the signals),
     [RAPID/TASKn/PROGMOD] and [SYSMOD] (the modules, [.mod], [.modx], [.sys], [.sysx]), [HOME/].
     Also a program file [.pgf] (an XML list of modules). Only what the backup says is gathered
     here; the robots themselves are made in lib/run, which knows the motion model. *)
 
 type kind = Normal | Static | Semistatic
+
+type event_routine = {
+  routine : string;            (** CAB_EXEC_HOOKS' -Routine *)
+  event : string;              (** its -Shelf: POWER_ON, START, RESTART, STOP, QSTOP, RESET, STEP *)
+  hook_at : string;            (** FILE:LINE of its instance *)
+}
+(** An event routine (SYS.cfg, CAB_EXEC_HOOKS; doc/rulings.md R-bk-8). *)
 
 type task = {
   name : string;               (** the task's name (SYS.cfg, backinfo.txt) *)
@@ -18,16 +25,35 @@ type task = {
   entry : string;              (** -Entry, else main *)
   files : string list;         (** its modules, in the order backinfo.txt gives (R-bk-2) *)
   at : string;                 (** FILE:LINE of its CAB_TASKS instance *)
+  before : event_routine list;
+      (** the event routines a run makes the task run before its entry routine, in order:
+          POWER_ON's, then in a NORMAL task RESET's and START's (R-bk-8) *)
+  after : event_routine list;  (** those it runs once the entry routine returned: a NORMAL task's STOP *)
+  debug_events : event_routine list;
+      (** a NORMAL task's START, RESTART, STEP and STOP routines, which rapid-sem debug's
+          commands make happen (R-bk-11) *)
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }
 (** An arm's -lower_joint_bound and -upper_joint_bound, radians (or metres for a linear axis). *)
+
+type base_frame = {
+  pos : float * float * float;                 (** -base_frame_pos_x, _y, _z: metres, 0 when not given *)
+  orient : float * float * float * float;
+      (** -base_frame_orient_u0 .. _u3: the quaternion q1 .. q4 as written (not yet normalised), 1, 0, 0, 0
+          when not given *)
+  coordinated : string option;                 (** -base_frame_coordinated: the unit that moves it *)
+  base_at : string;                            (** FILE:LINE of its first attribute, else of the ROBOT *)
+}
+(** A robot's base frame in the world frame (doc/rulings.md R-bk-12): where the cell mounts the
+    arm. A value that is not a number was a warning, and the world frame's value is taken. *)
 
 type robot = {
   robot_name : string;         (** MOC.cfg's ROBOT -name, ROB_1 *)
   robot_type : string;         (** -use_robot_type, ROB1_2400_1.5_10; [""] when not given *)
   bounds : bound list;         (** the arms of its joints, axis 1 first *)
   robot_at : string;           (** FILE:LINE of its ROBOT instance *)
+  base_frame : base_frame;
 }
 
 type t = {

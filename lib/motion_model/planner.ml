@@ -54,15 +54,16 @@ let arm q = Array.sub q 0 6
 let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
 let join q e = Array.append (Array.sub q 0 6) e
 
-(* The flange in the world: the robot's base moves with a track (law X-track). *)
+(* The flange in the world: through the robot's base frame (law F-base), which a track moves
+   (law X-track). *)
 let world_flange k q =
   let f = Kinematics.forward k (arm q) in
-  match Ext_axes.base (Kinematics.robot k).externals (ext q) with
+  match Base_frame.in_world (Kinematics.robot k) (ext q) with
   | None -> f
   | Some b -> pmult b f
 
 let base_inverse k e flange =
-  match Ext_axes.base (Kinematics.robot k).externals e with
+  match Base_frame.in_world (Kinematics.robot k) e with
   | None -> flange
   | Some b -> pmult (pinv b) flange
 
@@ -647,7 +648,7 @@ let target_external t id =
   if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_external: unknown move"
   else ext (Vec.get t.moves id).seg.q_end
 
-let base t e = Ext_axes.base (Kinematics.robot t.kin).externals e
+let base t e = Base_frame.in_world (Kinematics.robot t.kin) e
 
 let piece_ids pc = match pc.shape with
   | Part sg -> (sg.id, sg.id) | Blend b -> (b.a.id, b.b.id) | Joint_blend b -> (b.a.id, b.b.id)

@@ -80,8 +80,8 @@ val external_at : t -> float -> (float array, Motion_error.t) result
     are, 9E9 for the others. *)
 
 val base : t -> float array -> Geom.pose option
-(** The robot's base in the world at these extjoint components, when a track carries it
-    ({!Ext_axes.base}). *)
+(** The robot's base in the world at these extjoint components, when the cell's base frame or a
+    track moves it from the world frame ({!Base_frame.in_world}). *)
 
 val finished_by : t -> float
 (** When the robot will stand still at the end of all it has been given ([infinity] while
@@ -122,7 +122,7 @@ val pieces : t -> piece_info list
 
 type segment_info = {
   seg_id : int; seg_label : string; seg_kind : string;  (** "MoveL", "MoveC", "MoveJ", "MoveAbsJ" *)
-  target : Geom.pos;  (** the programmed point's TCP position, base frame *)
+  target : Geom.pos;  (** the programmed point's TCP position, world frame *)
   seg_fine : bool; seg_length : float; seg_duration : float;
 }
 

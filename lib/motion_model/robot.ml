@@ -16,7 +16,7 @@ let absent_axis = { a = 0.; alpha = 0.; d = 0.; offset = 0.; min = 0.; max = 0.;
 
 type t = {
   name : string; structure : structure; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list;
-  reach : float option;
+  reach : float option; base_frame : Geom.pose;
 }
 
 type error = { file : string; line : int; col : int; message : string }
@@ -293,7 +293,7 @@ let parse ~file text =
     | None, Some max_tcp_speed ->
         let r = { name = Option.value !name ~default:file; structure = kind;
                   axes = Array.map Option.get axes; max_tcp_speed; externals = !externals;
-                  reach = !reach } in
+                  reach = !reach; base_frame = Geom.identity } in
         (match structure_problem r with
          | Some (k, m) -> fail axis_line.(k - 1) 1 m
          | None -> Ok r)

@@ -43,6 +43,11 @@ type t = {
   reach : float option;
       (** mm: the reach of the wrist centre its product specification gives, where the description
           states it (informative: the library's tests compare the kinematics with it) *)
+  base_frame : Geom.pose;
+      (** where the cell mounts the arm: its base frame in the world frame (mm, quaternion), at
+          the track's 0 when a track carries it ({!Base_frame}). The cell's, not the arm's: a
+          description never sets it ({!parse} gives the world frame); a backup's MOC.cfg (ROBOT's
+          base_frame attributes) or --base-frame does (doc/rulings.md R-bk-12) *)
 }
 
 val irb120 : t

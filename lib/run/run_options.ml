@@ -7,7 +7,7 @@ type controller = {
 
 type t = {
   max_steps : int; allow_unknown : bool; stub_unmodelled : bool; limits : Limits.t; controller : controller;
-  robot : string option }
+  robot : string option; base_frames : string list }
 
 type tasks = {
   files : string list; entries : string list; tasks : string list; schedule : int option;

@@ -32,6 +32,8 @@ type t = {
   limits : Limits.t;              (** --max-call-depth, --retry-limit, --max-memory *)
   controller : controller;
   robot : string option;          (** --robot: the robot description, default the IRB 120 *)
+  base_frames : string list;
+      (** each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4: where the cell mounts a robot (R-bk-12) *)
 }
 (** The options every run shares. *)
 
