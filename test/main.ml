@@ -13,6 +13,7 @@ let () =
       Test_semantics.suite;
       Test_values.suite;
       Test_campaign.suite;
+      Test_fuzz_verdicts.suite;
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;

@@ -35,9 +35,9 @@ let unit_names (io : Io.t) =
       if List.mem k taken || List.exists (fun a -> String.lowercase_ascii a = k) acc || not (identifier u) then acc
       else acc @ [ u ]) [] io.mechanical_units
 
-let signal_module (io : Io.t) =
+let signal_text (io : Io.t) =
   let units = unit_names io in
-  if io.signals = [] && units = [] then Ok None
+  if io.signals = [] && units = [] then None
   else
     let text = Buffer.create 256 in
     Buffer.add_string text ("MODULE " ^ signal_module_name ^ " (SYSMODULE)\n");
@@ -45,24 +45,43 @@ let signal_module (io : Io.t) =
         Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
     List.iter (fun u -> Buffer.add_string text (Printf.sprintf "  VAR mecunit %s;\n" u)) units;
     Buffer.add_string text "ENDMODULE\n";
-    match Parse.parse_string ~options:{ Parse.default_options with installed = true }
-            ~name:signal_file_name (Buffer.contents text) with
-    | Ok m -> Ok (Some m)
-    | Error d -> Error d
+    Some (Buffer.contents text)
+
+let signal_module text =
+  match text with
+  | None -> Ok None
+  | Some text -> (
+      match Parse.parse_string ~options:{ Parse.default_options with installed = true }
+              ~name:signal_file_name text with
+      | Ok m -> Ok (Some m)
+      | Error d -> Error d)
 
 (* The installed environment computed at build time (Installed_image), which this reference
    links into every program that loads a task. *)
 let () = ignore (Installed_image.in_use ())
 
+(* The last list made, with what it was made from: the checker and the lowering keep what they
+   compute for the installed level by the list itself (compared physically), so a new list for
+   the same signals (each task of a run, each scenario of the fuzzer) would have the whole
+   installed level checked and lowered again. *)
+let last_installed = ref None
+
 let installed ?(testing = false) ?(io = Io.empty) () =
-  let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
-  (* the installed modules' list itself when nothing is added: the checker and the lowering know
-     the build-time image's level by that list (Check.installed_state) *)
-  let ( @@@ ) l = function [] -> l | more -> l @ more in
-  match Rapid_typing.Installed_env.modules (), tests, signal_module io with
-  | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
-  | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
-  | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ])
+  let text = signal_text io in
+  match !last_installed with
+  | Some (testing', text', result) when testing' = testing && text' = text -> result
+  | _ ->
+      let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
+      (* the installed modules' list itself when nothing is added: the checker and the lowering
+         know the build-time image's level by that list (Check.installed_state) *)
+      let ( @@@ ) l = function [] -> l | more -> l @ more in
+      let result =
+        match Rapid_typing.Installed_env.modules (), tests, signal_module text with
+        | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
+        | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
+        | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ]) in
+      last_installed := Some (testing, text, result);
+      result
 
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)

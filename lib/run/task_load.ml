@@ -100,12 +100,19 @@ let system_global_pers (modules : Ast.module_declaration list) =
               Some (module_name, name, type_name, List.length dims, initial_value <> None, d.at)
           | _ -> None) m.data_declarations) modules
 
-let global_index (program : Ir.program) ~module_name ~name =
-  let found = ref None in
+(* The first global of [program] declared in [module_name] with [name] (case-insensitive),
+   through a table made once per program: a task's 400 and more installed globals were each
+   looked up by a scan of the first task's, lowering both names at every step. *)
+let key module_name name = String.lowercase_ascii module_name ^ "\000" ^ String.lowercase_ascii name
+
+let global_table (program : Ir.program) =
+  let table = Hashtbl.create (2 * Array.length program.globals) in
   Array.iteri (fun i (g : Ir.global) ->
-      if !found = None && same g.g_module module_name && same g.g_name name then found := Some i)
-    program.globals;
-  !found
+      let k = key g.g_module g.g_name in
+      if not (Hashtbl.mem table k) then Hashtbl.replace table k i) program.globals;
+  table
+
+let global_index table ~module_name ~name = Hashtbl.find_opt table (key module_name name)
 
 type shared_pers = { owner : int; slot : int; type_text : string; mutable has_init : bool; task_name : string }
 
@@ -118,10 +125,11 @@ let share_persistents ~link (programs : Ir.program array) (tasks : (int * string
     | [] -> Ok ()
     | (k, task_name, modules) :: rest ->
         let program = programs.(k) in
+        let globals_by_name = lazy (global_table program) in
         let rec each = function
           | [] -> go rest
           | (module_name, name, type_name, ndims, has_init, at) :: more -> (
-              match global_index program ~module_name ~name with
+              match global_index (Lazy.force globals_by_name) ~module_name ~name with
               | None -> each more
               | Some j -> (
                   (* The type: its name and, for an array, the sizes its value has (a dimension
@@ -168,6 +176,7 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
   | [] -> ()
   | (first, _, _) :: rest ->
       let first_program = programs.(first) in
+      let first_table = global_table first_program in
       List.iter (fun (k, _, modules) ->
           let own = List.filter_map (fun (m : Ast.module_declaration) ->
               match m.module_name.it with
@@ -176,7 +185,7 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
           let program = programs.(k) in
           Array.iteri (fun i (g : Ir.global) ->
               if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then
-                match global_index first_program ~module_name:g.g_module ~name:g.g_name with
+                match global_index first_table ~module_name:g.g_module ~name:g.g_name with
                 | Some j when j <> first_program.errno && j <> first_program.intno -> link k i (first, j)
                 | _ -> ()) program.globals) rest
 

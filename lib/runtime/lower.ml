@@ -73,6 +73,26 @@ let rec root_at (r : A.data_reference) =
   | Component (r, _) -> root_at r
   | VAR_placeholder -> None
 
+
+(* §2.5: the value of a numeric literal, rounded to num or dnum: a pure function of its text,
+   kept for the texts already met (the same few literals recur in every program of a fuzzing
+   campaign, and reading one goes through exact rationals). Values are immutable. The table is
+   emptied when it grows large, so that long literals of hostile texts do not pile up. *)
+let literal_values : (string * bool, Value.t) Hashtbl.t = Hashtbl.create 256
+
+let literal_value text precision =
+  let key = (text, precision = `Dnum) in
+  match Hashtbl.find_opt literal_values key with
+  | Some v -> Some v
+  | None -> (
+      match Num_literal.of_text text with
+      | Ok t ->
+          let v = Value.of_literal t precision in
+          if Hashtbl.length literal_values >= 4096 then Hashtbl.reset literal_values;
+          Hashtbl.replace literal_values key v;
+          Some v
+      | Error _ -> None)
+
 let rec place ctx (r : A.data_reference) : Ir.place =
   match r.it with
   | VAR_placeholder -> Unresolved "<VAR>"
@@ -100,9 +120,9 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
   | Num_literal text -> (
-      match Num_literal.of_text text with
-      | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
-      | Error _ -> make Placeholder)
+      match literal_value text (if dnum then `Dnum else `Num) with
+      | Some v -> make (Literal v)
+      | None -> make Placeholder)
   | String_literal s -> make (Literal (Value.String s.bytes))
   | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
