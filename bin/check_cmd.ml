@@ -49,8 +49,8 @@ let cmd =
     match Rapid_run.Backup_setup.input ~robot files with
     | Error m -> prerr_endline m; Cli.exit_static_error
     | Ok input ->
-    let files, own, io, several, robotware = match input with
-      | Files fs -> (fs, [], io, tasks <> [], robotware)
+    let files, own, io, several, robotware, units = match input with
+      | Files fs -> (fs, [], io, tasks <> [], robotware, [])
       | Cell c ->
           if format = Check_output.Text then List.iter prerr_endline c.warnings;
           let given = List.filter_map (fun t -> match String.index_opt t '=' with
@@ -59,7 +59,7 @@ let cmd =
           let own = List.filter_map (fun (t : Rapid_load.Backup.task) ->
               if List.exists (same t.name) given then None else Some (t.name, t.files)) c.backup.tasks in
           ([], own, (match io with Some _ -> io | None -> c.backup.eio), true,
-           (match robotware with Some _ -> robotware | None -> c.backup.robotware)) in
+           (match robotware with Some _ -> robotware | None -> c.backup.robotware), c.backup.units) in
     let buffers = match own, buffers files tasks with
       | [], b -> b
       | own, Ok [ ("", []) ] -> Ok own
@@ -70,6 +70,7 @@ let cmd =
     | Ok [ (_, []) ], _, _ ->
         prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; Cli.exit_static_error
     | Ok buffers, Ok io, Ok _ ->
+    let io = { io with Rapid_controller.Io_config.mechanical_units = units } in
     let robotware = Option.value robotware ~default:Rapid_syntax.Robotware.default in
     let options = { Parse.default_options with strict; robotware } in
     let parsed = List.map (fun (name, files) -> (name, List.map (Parse.parse_file ~options) files)) buffers in

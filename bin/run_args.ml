@@ -105,7 +105,7 @@ let controller_args =
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default \
                            2024-01-01T00:00:00).") in
   Term.(const (fun io statement_time max_time epoch services robotware ->
-      { O.io; statement_time; max_time; epoch; services; robotware })
+      { O.io; statement_time; max_time; epoch; services; robotware; units = [] })
         $ io_arg $ statement_time $ max_time $ epoch $ services_args $ robotware_arg)
 
 let base_frame_arg =

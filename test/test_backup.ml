@@ -96,6 +96,37 @@ let temp_backup files =
 
 let main_mod name = Printf.sprintf "MODULE %s\n  PROC main()\n  ENDPROC\nENDMODULE\n" name
 
+(* R-bk-13: MOC.cfg's mechanical units are mecunit data of the backup's tasks: a gantry's unit named
+   in a call checks, as ROB_1 does; without the backup it is unknown. *)
+let mechanical_units () =
+  let module_text = "MODULE A\n  PROC main()\n    ActUnit Gantry11;\n    DeactUnit ROB_1;\n  ENDPROC\nENDMODULE\n" in
+  let dir = temp_backup [
+      ("SYSPAR/MOC.cfg", "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT:\n      -name \"ROB_1\" -use_robot \"ROB_1\"\n\n\
+                         \      -name \"Gantry11\" -use_robot \"Gantry11\"\n\n      -name \"9bad\"\n#\n");
+      ("RAPID/TASK1/PROGMOD/A.mod", module_text) ] in
+  match Backup.read dir with
+  | Error m -> Alcotest.fail m
+  | Ok b ->
+      Alcotest.(check (list string)) "the units" [ "ROB_1"; "Gantry11"; "9bad" ] b.units;
+      let files = (List.hd b.tasks).files in
+      let io = { Rapid_controller.Io_config.empty with mechanical_units = b.units } in
+      (match Rapid_load.Session.load ~io files with
+       | Ok _ -> ()
+       | Error _ -> Alcotest.fail "Gantry11 is a mecunit of the backup");
+      (match Rapid_load.Session.load files with
+       | Error (Static _) -> ()
+       | _ -> Alcotest.fail "without the backup, Gantry11 is unknown");
+      (* A name that is no identifier (9bad) declares nothing, and ROB_1 is installed once. *)
+      match Rapid_load.Session.installed ~io () with
+      | Error _ -> Alcotest.fail "the installed environment with the units does not parse"
+      | Ok modules ->
+          let last = List.nth modules (List.length modules - 1) in
+          let text = Rapid_syntax.Printer.module_declaration last in
+          let has part = let n = String.length part in
+            let rec at i = i + n <= String.length text && (String.sub text i n = part || at (i + 1)) in at 0 in
+          Alcotest.(check (list bool)) "declared: Gantry11, not ROB_1, not 9bad" [ true; false; false ]
+            [ has "mecunit Gantry11"; has "mecunit ROB_1"; has "9bad" ]
+
 (* R-2.4-rw6: the release of backinfo.txt's "RobotWare Version:", and what reading a module as
    RobotWare 6 changes: BREAK and CONTINUE are names there, reserved words by the manual's (7). *)
 let robotware () =
@@ -348,4 +379,5 @@ let suite =
       Alcotest.test_case "base frames" `Quick base_frames;
       Alcotest.test_case "--base-frame text" `Quick base_frame_text;
       Alcotest.test_case "program file" `Quick program_file;
-      Alcotest.test_case "RobotWare release" `Quick robotware ] )
+      Alcotest.test_case "RobotWare release" `Quick robotware;
+      Alcotest.test_case "mechanical units as mecunit data" `Quick mechanical_units ] )

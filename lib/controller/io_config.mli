@@ -28,6 +28,9 @@ type t = {
   stimuli : stimulus list;          (** in the order of the file *)
   collisions : float list;          (** [at TIME collision]: the robot collides (doc/motion.md) *)
   system_inputs : system_input list; (** in the order of the file; each names a configured DI *)
+  mechanical_units : string list;
+      (** the mechanical units a backup's MOC.cfg configures (R-bk-13): installed data objects of
+          type mecunit, beside ROB_1 .. ROB_4; never read from an I/O file *)
 }
 
 val empty : t

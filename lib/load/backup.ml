@@ -26,6 +26,7 @@ type t = {
   eio : string option;
   retry_limit : int option;
   robotware : Rapid_syntax.Robotware.t option;
+  units : string list;
   warnings : string list;
 }
 
@@ -537,7 +538,11 @@ let read dir =
               Some (t.name, m.name)
           | None, [] -> None) tasks in
     let robotware = Option.bind info_file robotware_of_backinfo in
-    Ok { dir; tasks; robots; connected; eio; retry_limit; robotware; warnings = List.rev !warnings }
+    (* R-bk-13: MOC.cfg's mechanical units, by their names. *)
+    let units = match moc with
+      | None -> []
+      | Some c -> List.filter_map (fun i -> Cfg_file.text i "name") (instances c "MECHANICAL_UNIT") in
+    Ok { dir; tasks; robots; connected; eio; retry_limit; robotware; units; warnings = List.rev !warnings }
   end
 
 (* A program file: <Program><Module>FILE</Module>...</Program>, the files beside it. *)

@@ -65,6 +65,8 @@ type t = {
   retry_limit : int option;              (** SYS.cfg SYS_MISC NoOfRetry *)
   robotware : Rapid_syntax.Robotware.t option;
       (** backinfo.txt's "RobotWare Version:" (R-2.4-rw6) *)
+  units : string list;
+      (** MOC.cfg's MECHANICAL_UNIT names, in its order: mecunit data of every task (R-bk-13) *)
   warnings : string list;                (** what is not modelled: FILE:LINE: warning: ... (R-bk-7) *)
 }
 

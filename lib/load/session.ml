@@ -15,13 +15,35 @@ let signal_module_name = "Installed_signals"
 
 let signal_file_name = "the signals of the I/O configuration"
 
+(* A name MOC.cfg gives that is a RAPID identifier (§2.3): at most 32 letters, digits and
+   underscores, a letter first, no reserved word. *)
+let identifier u =
+  let ok = function 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false in
+  String.length u > 0 && String.length u <= 32 && (match u.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
+  && String.for_all ok u
+  && (match Parse.parse_string ~options:{ Parse.default_options with installed = true } ~name:"unit"
+              (Printf.sprintf "MODULE m\n  VAR num %s;\nENDMODULE\n" u) with Ok _ -> true | Error _ -> false)
+
+(* R-bk-13: a backup's mechanical units are mecunit data objects as ROB_1 .. ROB_4 are; those
+   four are installed already, and a unit named as a signal is the signal. *)
+let installed_units = [ "rob_1"; "rob_2"; "rob_3"; "rob_4" ]
+
+let unit_names (io : Io.t) =
+  let taken = installed_units @ List.map (fun (s : Io.signal) -> String.lowercase_ascii s.name) io.signals in
+  List.fold_left (fun acc u ->
+      let k = String.lowercase_ascii u in
+      if List.mem k taken || List.exists (fun a -> String.lowercase_ascii a = k) acc || not (identifier u) then acc
+      else acc @ [ u ]) [] io.mechanical_units
+
 let signal_text (io : Io.t) =
-  if io.signals = [] then None
+  let units = unit_names io in
+  if io.signals = [] && units = [] then None
   else
     let text = Buffer.create 256 in
     Buffer.add_string text ("MODULE " ^ signal_module_name ^ " (SYSMODULE)\n");
     List.iter (fun (s : Io.signal) ->
         Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
+    List.iter (fun u -> Buffer.add_string text (Printf.sprintf "  VAR mecunit %s;\n" u)) units;
     Buffer.add_string text "ENDMODULE\n";
     Some (Buffer.contents text)
 

@@ -3,7 +3,7 @@ type services = {
 
 type controller = {
   io : string option; statement_time : float; max_time : float; epoch : float; services : services;
-  robotware : Rapid_syntax.Robotware.t option }
+  robotware : Rapid_syntax.Robotware.t option; units : string list }
 
 type t = {
   max_steps : int; allow_unknown : bool; stub_unmodelled : bool; limits : Limits.t; controller : controller;

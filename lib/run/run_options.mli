@@ -22,6 +22,8 @@ type controller = {
   robotware : Rapid_syntax.Robotware.t option;
       (** --robotware: the controller's RobotWare release, whose reserved words apply (R-2.4-rw6);
           [None]: a backup's backinfo.txt, else the manual's (7) *)
+  units : string list;
+      (** a backup's mechanical units (MOC.cfg), installed as mecunit data (R-bk-13); no option *)
 }
 (** The controller around the run. *)
 

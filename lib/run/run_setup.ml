@@ -22,6 +22,10 @@ let read_io = function
   | None -> Ok Io.empty
   | Some file -> Io.read_file file
 
+(* The I/O configuration of a run, with its backup's mechanical units (R-bk-13). *)
+let run_io (o : Run_options.t) file =
+  Result.map (fun (io : Io.t) -> { io with mechanical_units = o.controller.units }) (read_io file)
+
 let load_robot = function
   | None -> Ok Robot.irb120
   | Some name -> Rapid_motion_model.Robot_library.load name
@@ -129,7 +133,7 @@ type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 (* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
    of the options, or the backup's robot when --robot does not name one. *)
 let io_and_robot ?robot ~notify (o : Run_options.t) files =
-  match read_io o.controller.io, robot_of ?robot o with
+  match run_io o o.controller.io, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
@@ -165,7 +169,7 @@ let one_task ~notify (o : Run_options.t) files ~entry =
                                                     alone (the backup's other tasks are not started)" t.at t.name));
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
           let robotware = match o.controller.robotware with Some _ as r -> r | None -> c.backup.robotware in
-          let o = { o with controller = { o.controller with io; robotware } } in
+          let o = { o with controller = { o.controller with io; robotware; units = c.backup.units } } in
           Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
               { task = t.name; before = t.before; after = t.after; debug = t.debug_events }))
 
@@ -206,6 +210,9 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
   let o = match o.controller.robotware, cell with
     | None, Some (c : Backup_setup.cell) -> { o with controller = { o.controller with robotware = c.backup.robotware } }
     | _ -> o in
+  let o = match cell with
+    | Some c -> { o with controller = { o.controller with units = c.backup.units } }
+    | None -> o in
   let split s = (String.sub s 0 (String.index s '='),
                  String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
   let well_formed s = match String.index_opt s '=' with
@@ -234,7 +241,7 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
     | Some f, _ -> Some f
     | None, Some c -> c.backup.eio
     | None, None -> None in
-  match all parse_task t.tasks, all parse_entry t.entries, read_io io_file, load_robot o.robot, base_frames o with
+  match all parse_task t.tasks, all parse_entry t.entries, run_io o io_file, load_robot o.robot, base_frames o with
   | Error m, _, _, _, _ | _, Error m, _, _, _ | _, _, Error m, _, _ | _, _, _, Error m, _ | _, _, _, _, Error m ->
       Error (Usage m)
   | Ok given, Ok entries, Ok io, Ok robot, Ok frames ->
