@@ -127,6 +127,25 @@ let mechanical_units () =
           Alcotest.(check (list bool)) "declared: Gantry11, not ROB_1, not 9bad" [ true; false; false ]
             [ has "mecunit Gantry11"; has "mecunit ROB_1"; has "9bad" ]
 
+(* R-bk-14: without SYS.cfg, a folder of system modules alone is not started; with SYS.cfg
+   configuring it, it is a task (its missing entry routine is then the run's error). *)
+let no_program () =
+  let files = [ ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A");
+                ("RAPID/TASK2/SYSMOD/user.sys", "MODULE user (SYSMODULE)\nENDMODULE\n") ] in
+  let names dir = match Backup.read dir with
+    | Error m -> Alcotest.fail m
+    | Ok b -> (List.map (fun (t : Backup.task) -> t.name) b.tasks, b.warnings) in
+  let tasks, warnings = names (temp_backup files) in
+  Alcotest.(check (list string)) "TASK2 not started" [ "TASK1" ] tasks;
+  Alcotest.(check bool) "a warning says so" true
+    (List.exists (fun w -> let part = "the task TASK2 has no program module" in
+                   let n = String.length part in
+                   let rec at i = i + n <= String.length w && (String.sub w i n = part || at (i + 1)) in at 0) warnings);
+  let sys = ("SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n      -Name \"TASK1\" -MotionTask\n\n\
+                                \      -Name \"TASK2\"\n#\n") in
+  let tasks, _ = names (temp_backup (sys :: files)) in
+  Alcotest.(check (list string)) "configured by SYS.cfg: a task" [ "TASK1"; "TASK2" ] tasks
+
 (* R-2.4-rw6: the release of backinfo.txt's "RobotWare Version:", and what reading a module as
    RobotWare 6 changes: BREAK and CONTINUE are names there, reserved words by the manual's (7). *)
 let robotware () =
@@ -380,4 +399,5 @@ let suite =
       Alcotest.test_case "--base-frame text" `Quick base_frame_text;
       Alcotest.test_case "program file" `Quick program_file;
       Alcotest.test_case "RobotWare release" `Quick robotware;
-      Alcotest.test_case "mechanical units as mecunit data" `Quick mechanical_units ] )
+      Alcotest.test_case "mechanical units as mecunit data" `Quick mechanical_units;
+      Alcotest.test_case "a task folder without a program" `Quick no_program ] )

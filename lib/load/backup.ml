@@ -478,6 +478,14 @@ let read dir =
           None
       | _ ->
           let files = task_files ~warn ~info_file:info_file_name folder listed in
+          (* R-bk-14: without SYS.cfg, a folder of system modules alone is a task without a
+             program (an option's task, an idle one): nothing says it is started. *)
+          let program_module f = same (Filename.basename (Filename.dirname f)) "PROGMOD" in
+          if sys = None && files <> [] && not (List.exists program_module files) then begin
+            warn (Printf.sprintf "%s: warning: the task %s has no program module (PROGMOD) and no SYS.cfg \
+                                  configures it: not started" info_at name);
+            None
+          end else
           let c = match cab_task with
             | Some c -> c
             | None -> { c_name = name; c_kind = Normal; c_motion = false; c_group = None; c_entry = "main";

@@ -55,6 +55,7 @@ let lines = [
   ("ActUnit", "Activates a mechanical unit (an external axis).");
   ("DeactUnit", "Deactivates a mechanical unit, so that moves no longer command it.");
   ("IsMechUnitActive", "Whether a mechanical unit is active.");
+  ("GetMotorTorque", "The motor torque of an axis, Nm (not modelled: the motion model has no dynamics).");
   ("GetMecUnitName", "The name of a mechanical unit, as a string.");
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");
   ("SpeedLimCheckPoint", "Limits the speed of the robot's checkpoints (mm/s) while LimitSpeed is active.");
