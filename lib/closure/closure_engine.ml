@@ -966,7 +966,14 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
 
 and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
+  let by_values = Array.for_all (function By_value _ -> true | _ -> false) arguments
+                  && Array.for_all (fun p -> not (is_alias p)) callee.parameters in
   match callee.primitive with
+  | Some name when by_values && (match st.host.routine name with
+      | Some { IR.values = Some _; reach = Values; _ } -> true | _ -> false) ->
+      (match st.host.routine name with
+       | Some { IR.values = Some f; _ } -> values_call st caller ~at callee f arguments
+       | _ -> assert false)
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
@@ -974,9 +981,10 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       let cost = Array.mapi (fun i arg ->
           let p = callee.parameters.(i) in
           let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
+          let what = "the copy for the parameter " ^ p.p_name in
           match arg with
           | By_value _ -> fun (v : Argument.t) ->
-              (match v with Argument.Value x -> ("the copy for the parameter " ^ p.p_name, V.bytes x) | _ -> ("", 0))
+              (match v with Argument.Value x -> (what, V.bytes x) | _ -> ("", 0))
           | Absent -> fun _ -> absent
           | Pass_on _ -> (function Argument.Missing -> absent | _ -> ("", 0))
           | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
@@ -1074,6 +1082,33 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             let c = new_act shape callee a in
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+
+(* A call of an installed function that only computes (IR.values: the library's functions,
+   rule call-primitive) with every argument a value: its copies counted in the memory budget
+   as [call_routine_core]'s general path counts them, in order, then the function on the
+   values; an error it gives occurs at the statement (call-primitive-error). *)
+and values_call st (caller : routine) ~at (callee : routine) f (arguments : argument array) : act -> V.t =
+  let args = Array.map (function By_value e -> expr st caller ~at e | _ -> assert false) arguments in
+  let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  let limits = st.limits in
+  let result = function Ok v -> v | Error name -> fail st ~at name [@@inline] in
+  let n = Array.length args in
+  match args with
+  | [| f0 |] -> let w0 = whats.(0) in fun a ->
+      let v0 = f0 a in
+      if value_bytes v0 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+      result (f [| Some v0 |])
+  | _ -> fun a ->
+      let values = Array.make n None in
+      let pending = ref 0 in
+      for i = 0 to n - 1 do
+        let v = args.(i) a in
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
+        pending := !pending + b;
+        values.(i) <- Some v
+      done;
+      result (f values)
 
 (* A call that needs no binder (Closure_call.direct): every argument a copy (§5.2) of a value,
    the callee without an error handler or UNDO, so its activation shares the empty extension.
