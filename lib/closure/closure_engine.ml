@@ -487,7 +487,12 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
         let v = ix a in
         let elements = V.components (container a) in
         elements.(index st ~at v (Array.length elements))
-  | Element _ | Component _ | Unresolved _ ->
+  | Component (q, k) ->
+      (* A component of a record, read where it is: [locate]'s component rule without building
+         the location (the record's place is read as [locate] finds it). *)
+      let container = read st r ~at q in
+      fun a -> (V.components (container a)).(k)
+  | Element _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
 
@@ -532,6 +537,11 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
       let f = read st r ~at p in
       fun a -> let v = f a in watch st; check st ~at (st.host.read_signal v)
+  | Unary ((Num_neg | Num_plus | Dnum_neg | Dnum_plus | Not) as op, { e = Literal v; _ })
+    when (match Arith.unary op v with Ok _ -> true | Error _ | exception _ -> false) ->
+      (* -k on a scalar literal: its value, computed once (the same rule, §3.12) *)
+      let w = match Arith.unary op v with Ok w -> w | Error _ -> v in
+      fun _ -> w
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
@@ -1210,11 +1220,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
           else start a store pending
       | _ -> start a store pending
   in
-  let fresh () = match size with
-    | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
-    | _ -> Array.make size v_false [@@inline] in
   match args with
-  | [||] -> fun a -> quick a (fresh ()) 0
+  | [||] -> fun a -> quick a (small_store size) 0
   | [| _ |] when size = 1 && own_step (fun i -> local_access caller i = Own) sources.(0) <> None ->
       let i, op, v, q = Option.get (own_step (fun i -> local_access caller i = Own) sources.(0)) in
       let w0 = whats.(0) in
@@ -1272,11 +1279,11 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let v = f0 a in
       let b = value_bytes v in
       if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
-      let store =
-        match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
+      let store = small_store size in
+      store.(0) <- copy v;
       quick a store b
   | _ -> fun a ->
-      let store = fresh () in
+      let store = small_store size in
       let pending = ref 0 in
       for i = 0 to n - 1 do
         let v = args.(i) a in
@@ -1720,6 +1727,17 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Component (q, k) ->
+          (* As the general case below, the record located (its components) before the value,
+             without building the location. *)
+          let container = read st r ~at q in
+          fun a ->
+            let comps = V.components (container a) in
+            let v = value a in
+            (match comps.(k) with
+             | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
+             | _ -> comps.(k) <- copy v);
+            true
       | Element (Whole w, [| ix |]) when plain_whole r w ->
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
@@ -2098,9 +2116,9 @@ let compile_routine st k =
       | Init_default shape ->
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)
-          let bytes = V.shape_bytes shape in
+          let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
           fun at (a : act) ->
-            charge_active st a bytes ("the routine data of " ^ r.name) at;
+            charge_active st a bytes what at;
             a.store.(slot) <- V.default_of shape
       | Init_expr e ->
           let f = expr st r ~at:e.at e in
@@ -2108,6 +2126,8 @@ let compile_routine st k =
             a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
   let c_init = match inits with
     | [] -> fun _ _ -> ()
+    | [ f ] -> f
+    | [ f; g ] -> fun at a -> f at a; g at a
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
     c_value = valued_body st r ~gotos;

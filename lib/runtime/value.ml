@@ -153,7 +153,14 @@ let shape_bytes shape =
 let rec bytes = function
   | Num _ | Dnum _ | Bool _ | Handle _ -> 32
   | String s -> 32 + String.length s
-  | Record a | Array a -> Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (bytes c))) 16 a
+  | Record a | Array a ->
+      (* a loop, not a fold: a record argument's bytes are counted at every call *)
+      let acc = ref 16 in
+      for k = 0 to Array.length a - 1 do
+        let b = match a.(k) with Num _ | Dnum _ | Bool _ | Handle _ -> 32 | c -> bytes c in
+        acc := add_sat !acc (add_sat 8 b)
+      done;
+      !acc
 
 let rec conform shape v =
   let all shapes vs =
