@@ -417,6 +417,11 @@ let index st ~at (v : V.t) n =
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
 
+(* [index] of a num given as a float (an index expression computed without its box). *)
+let index_float st ~at x n =
+  let k = int_of_float x in
+  if float_of_int k = x && k >= 1 && k <= n then k - 1 else index st ~at (V.Num x) n [@@inline]
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole (r : routine) = function
   | Global _ -> true
@@ -482,11 +487,19 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Element (Whole w, [| ix |]) when plain_whole r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
-      let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
-      fun a ->
-        let v = ix a in
-        let elements = V.components (container a) in
-        elements.(index st ~at v (Array.length elements))
+      let container = read st r ~at (Whole w) in
+      (match index_at st r ~at ix, w with
+       | Some j, Global g ->
+           let globals = st.globals in
+           fun a -> let elements = V.components globals.(g) in elements.(j a (Array.length elements))
+       | Some j, _ ->
+           fun a -> let elements = V.components (container a) in elements.(j a (Array.length elements))
+       | None, _ ->
+           let ix = expr st r ~at ix in
+           fun a ->
+             let v = ix a in
+             let elements = V.components (container a) in
+             elements.(index st ~at v (Array.length elements)))
   | Component (q, k) ->
       (* A component of a record, read where it is: [locate]'s component rule without building
          the location (the record's place is read as [locate] finds it). *)
@@ -527,6 +540,27 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
   | Unresolved name -> fun _ -> fail ~about:name st ~at "ERR_REFUNKDAT"
 
 (* ------------------------------------------------------------------ expressions *)
+
+(* An index expression that is an own slot, or an own slot and a num literal added or taken
+   away (a{j}, a{j + 1}), as [index] finds the position in a dimension of n: the sum rounded to
+   single as [binary_literal] rounds it (R-2.13-a; infinite: ERR_OVERFLOW), without building
+   the num. Any other value goes through the expression's closure, then [index]. Neither form
+   can change the container, so the container may be read first. *)
+and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
+  match ix.e with
+  | Read (Whole (Local i)) when local_access r i = Own ->
+      Some (fun a n -> match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n)
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+    when local_access r i = Own ->
+      let general = expr st r ~at ix in
+      let q = if op = Arith.Num_sub then -. q else q in
+      Some (fun a n ->
+          match a.store.(i) with
+          | V.Num p ->
+              let x = p +. q in
+              if is_small_integer x then index_float st ~at x n else index st ~at (general a) n
+          | _ -> index st ~at (general a) n)
+  | _ -> None
 
 (* [at] is the statement evaluating the expression: where its errors occur (spec/README.md). *)
 and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
@@ -1741,14 +1775,26 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       | Element (Whole w, [| ix |]) when plain_whole r w ->
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
-          let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
-          fun a ->
-            let iv = ix a in
-            let elements = V.components (container a) in
-            let j = index st ~at iv (Array.length elements) in
-            let v = value a in
-            if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
-            true
+          let container = read st r ~at (Whole w) in
+          (match index_at st r ~at ix with
+           | Some j ->
+               fun a ->
+                 let elements = V.components (container a) in
+                 let j = j a (Array.length elements) in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | None ->
+               let ix = expr st r ~at ix in
+               fun a ->
+                 let iv = ix a in
+                 let elements = V.components (container a) in
+                 let j = index st ~at iv (Array.length elements) in
+                 let v = value a in
+                 if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
+                 true)
       | _ ->
           let l = locate st r ~at place in
           fun a ->
