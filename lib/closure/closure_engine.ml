@@ -579,6 +579,12 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ })
+    when local_access r i = Alias ->
+      (* x +- k on an alias parameter, read where it is bound without a call *)
+      let slow u = check st ~at (Arith.binary op u v) in
+      let q = if op = Num_sub then -. q else q in
+      fun a -> (match a.ext.boxes.(i).(a.ext.idx.(i)) with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
@@ -814,6 +820,7 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
   let by_reference place kind =
     if not (is_alias p) then by_value (read st caller ~at place)
     else
+      let kind_const = kind in
       let l = locate st caller ~at place in
       let kind = effective_kind caller place kind in
       let module_data = denotes_module_data caller place in
@@ -829,16 +836,31 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
             | _ -> fun _ -> None)
         | _ -> fun _ -> None
       in
+      (* For a place whose root is not an alias parameter, what it is bound to and whether it
+         denotes module data are known here (as [effective_kind], [denotes_module_data]). *)
+      let through_alias = match root place with
+        | Some (Local s) -> s < Array.length caller.parameters && is_alias caller.parameters.(s)
+        | _ -> false in
+      let known_data = match root place with Some (Global _) -> true | _ -> false in
       match place with
-      | Whole (Global g) ->
+      | Whole (Global g) when not through_alias && not p.p_optional ->
           (* module data: its location is known; [refused] is for a caller's INOUT parameter *)
+          let globals = st.globals in
+          fun _ (c : act) ->
+            c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind_const;
+            c.ext.module_data.(i) <- known_data
+      | Whole (Local s) when local_access caller s = Own && not through_alias && not p.p_optional ->
+          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind_const;
+            c.ext.module_data.(i) <- known_data
+      | Whole (Global g) ->
           let globals = st.globals in
           fun a (c : act) ->
             c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
             if p.p_optional then c.ext.present.(i) <- true
       | Whole (Local s) when local_access caller s = Own ->
-          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
           fun a (c : act) ->
             c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
@@ -1120,6 +1142,14 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       | [| b0; b1 |] -> fun a ->
           let c = new_act shape callee a in
           b0 a c; b1 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1; b2 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c; b2 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1; b2; b3 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c; b2 a c; b3 a c;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
           fun a ->
@@ -1761,6 +1791,15 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Alias ->
+          (* an alias parameter: where it is bound, located before the value (as below) *)
+          fun a ->
+            let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+            let v = value a in
+            (match box.(j) with
+             | V.Handle _ as old when CC.is_signal old -> store_signal box j v
+             | _ -> box.(j) <- copy v);
+            true
       | Component (q, k) ->
           (* As the general case below, the record located (its components) before the value,
              without building the location. *)
