@@ -240,6 +240,20 @@ let no_value = V.String "(no value)"
 let v_true = V.Bool true
 let v_false = V.Bool false
 
+(* A deep recursion keeps its chain of activations alive: with the default minor heap
+   (256 k words) each minor collection promotes the chain and scans the deep native stack, most
+   of a recursion 9,000 deep (bench/peers/depth.mod). The first call deeper than [deep_calls]
+   in the process gives the minor heap 2 M words (16 MB), once; a run that stays shallow keeps
+   the default, and its small resident set. Nothing a program observes depends on it. *)
+let deep_calls = ref 1024
+
+let deeper_heap () =
+  deep_calls := max_int;
+  let g = Gc.get () in
+  if g.minor_heap_size < 2_097_152 then Gc.set { g with minor_heap_size = 2_097_152 }
+
+let deepen level = if level >= !deep_calls then deeper_heap () [@@inline]
+
 (* An activation's end: what it counted is given back ([pop], here to be inlined). *)
 let release st (c : act) =
   st.depth <- c.level; st.native <- st.native - c.nest;
@@ -1217,7 +1231,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
     let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
     st.native <- st.native + nest;
     st.memory <- st.memory + memory;
-    st.depth <- level + 1;
+    st.depth <- level + 1; deepen level;
     entered st callee c ~code ~at ~is_function ~has_init
   in
   (* A run that observes nothing (schema rapid-sem/2) needs of [entered] only the routine's
@@ -1240,7 +1254,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
       st.native <- st.native + nest;
       st.memory <- st.memory + memory;
-      st.depth <- level + 1;
+      st.depth <- level + 1; deepen level;
       if events then st.emit entered_event;
       match if has_init then code.c_init at c; body c with
       | v -> release st c; if events then st.emit left_event; v
@@ -1263,7 +1277,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
               { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
             st.native <- st.native + nest;
             st.memory <- st.memory + memory;
-            st.depth <- level + 1;
+            st.depth <- level + 1; deepen level;
             if events then st.emit entered_event;
             match code.c_value with
             | Some body -> (
@@ -1326,7 +1340,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                             result = no_value; nest; memory } in
                   st.native <- st.native + nest;
                   st.memory <- st.memory + memory;
-                  st.depth <- level + 1;
+                  st.depth <- level + 1; deepen level;
                   if events then st.emit entered_event;
                   match if has_init then code.c_init at c; body c with
                   | v -> release st c; if events then st.emit left_event; v
@@ -1562,7 +1576,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   st.native <- st.native + code.c_nest;
   c.memory <- c.memory + bytes;
   st.memory <- st.memory + c.memory;
-  st.depth <- c.level + 1;
+  st.depth <- c.level + 1; deepen c.level;
   entered st r c ~code ~at ~is_function ~has_init
 
 (* The activation is counted: it runs. *)
@@ -1642,7 +1656,7 @@ and serve_trap st (a : act) number k =
   let c = new_act (activation_shape r) r a in
   c.nest <- code.c_nest;
   st.native <- st.native + code.c_nest;
-  st.depth <- c.level + 1;
+  st.depth <- c.level + 1; deepen c.level;
   st.in_trap <- true;
   let resume () = st.in_trap <- false; st.depth <- a.level + 1 in
   match code.c_init r.at c; code.c_body c with
