@@ -503,9 +503,29 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
          then its bounds), without building the location. *)
       let container = read st r ~at (Whole w) in
       (match index_at st r ~at ix, w with
-       | Some j, Global g ->
+       | Some _, Global g -> (
+           (* module data's array, its index computed in the same closure ([index_at]'s two forms) *)
            let globals = st.globals in
-           fun a -> let elements = V.components globals.(g) in elements.(j a (Array.length elements))
+           match ix.e with
+           | Read (Whole (Local i)) ->
+               fun a ->
+                 let elements = V.components globals.(g) in
+                 let n = Array.length elements in
+                 (match a.store.(i) with
+                  | V.Num x -> elements.(index_float st ~at x n)
+                  | v -> elements.(index st ~at v n))
+           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+               let general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               fun a ->
+                 let elements = V.components globals.(g) in
+                 let n = Array.length elements in
+                 (match a.store.(i) with
+                  | V.Num p when is_small_integer (p +. q) -> elements.(index_float st ~at (p +. q) n)
+                  | _ -> elements.(index st ~at (general a) n))
+           | _ ->
+               let j = Option.get (index_at st r ~at ix) in
+               fun a -> let elements = V.components globals.(g) in elements.(j a (Array.length elements)))
        | Some j, _ ->
            fun a -> let elements = V.components (container a) in elements.(j a (Array.length elements))
        | None, _ ->
@@ -1360,6 +1380,23 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let store = small_store size in
       store.(0) <- copy v;
       quick a store b
+  | [| f0; f1; f2; f3 |] when size <= 6 ->
+      (* four arguments, each counted as it is made (the loop below), the slots built at once
+         (no write barrier for each copy) *)
+      let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
+      let counted w v pending =
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - pending then memory_exhausted st w at;
+        pending + b [@@inline] in
+      fun a ->
+        let v0 = f0 a in let p = counted w0 v0 0 in let v0 = copy v0 in
+        let v1 = f1 a in let p = counted w1 v1 p in let v1 = copy v1 in
+        let v2 = f2 a in let p = counted w2 v2 p in let v2 = copy v2 in
+        let v3 = f3 a in let p = counted w3 v3 p in let v3 = copy v3 in
+        let store = match size with
+          | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
+          | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
+        quick a store p
   | _ -> fun a ->
       let store = small_store size in
       let pending = ref 0 in
