@@ -431,6 +431,9 @@ let index st ~at (v : V.t) n =
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
 
+(* Value.components, inlined here: the parts of a record or an array. *)
+let parts (v : V.t) = match v with V.Record e | V.Array e -> e | _ -> V.components v [@@inline]
+
 (* [index] of a num given as a float (an index expression computed without its box). *)
 let index_float st ~at x n =
   let k = int_of_float x in
@@ -509,7 +512,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
            match ix.e with
            | Read (Whole (Local i)) ->
                fun a ->
-                 let elements = V.components globals.(g) in
+                 let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
                   | V.Num x -> elements.(index_float st ~at x n)
@@ -518,27 +521,27 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                let general = expr st r ~at ix in
                let q = if op = Arith.Num_sub then -. q else q in
                fun a ->
-                 let elements = V.components globals.(g) in
+                 let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
                   | V.Num p when is_small_integer (p +. q) -> elements.(index_float st ~at (p +. q) n)
                   | _ -> elements.(index st ~at (general a) n))
            | _ ->
                let j = Option.get (index_at st r ~at ix) in
-               fun a -> let elements = V.components globals.(g) in elements.(j a (Array.length elements)))
+               fun a -> let elements = parts globals.(g) in elements.(j a (Array.length elements)))
        | Some j, _ ->
-           fun a -> let elements = V.components (container a) in elements.(j a (Array.length elements))
+           fun a -> let elements = parts (container a) in elements.(j a (Array.length elements))
        | None, _ ->
            let ix = expr st r ~at ix in
            fun a ->
              let v = ix a in
-             let elements = V.components (container a) in
+             let elements = parts (container a) in
              elements.(index st ~at v (Array.length elements)))
   | Component (q, k) ->
       (* A component of a record, read where it is: [locate]'s component rule without building
          the location (the record's place is read as [locate] finds it). *)
       let container = read st r ~at q in
-      fun a -> (V.components (container a)).(k)
+      fun a -> (parts (container a)).(k)
   | Element _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
@@ -557,7 +560,7 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
           fun a -> if a.ext.present.(i) then (a.ext.boxes.(i), a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
   | Component (q, k) ->
       let l = locate st r ~at q in
-      fun a -> let box, i = l a in (V.components box.(i), k)
+      fun a -> let box, i = l a in (parts box.(i), k)
   | Element (q, indexes) ->
       let l = locate st r ~at q in
       let indexes = Array.map (expr st r ~at) indexes in
@@ -566,7 +569,7 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
         let values = Array.map (fun e -> e a) indexes in
         let n = Array.length values in
         let rec down (container : V.t) k =
-          let elements = V.components container in
+          let elements = parts container in
           let j = index st ~at values.(k) (Array.length elements) in
           if k = n - 1 then (elements, j) else down elements.(j) (k + 1)
         in
@@ -1856,7 +1859,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              without building the location. *)
           let container = read st r ~at q in
           fun a ->
-            let comps = V.components (container a) in
+            let comps = parts (container a) in
             let v = value a in
             (match comps.(k) with
              | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
@@ -1866,21 +1869,48 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
           let container = read st r ~at (Whole w) in
-          (match index_at st r ~at ix with
-           | Some j ->
+          (match index_at st r ~at ix, w, ix.e with
+           | Some _, Global g, Read (Whole (Local i)) ->
+               (* module data's array, its index computed in the same closure *)
+               let globals = st.globals in
                fun a ->
-                 let elements = V.components (container a) in
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 let j = match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+               let general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               let globals = st.globals in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 let j = match a.store.(i) with
+                   | V.Num p when is_small_integer (p +. q) -> index_float st ~at (p +. q) n
+                   | _ -> index st ~at (general a) n in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some j, _, _ ->
+               fun a ->
+                 let elements = parts (container a) in
                  let j = j a (Array.length elements) in
                  let v = value a in
                  (match elements.(j) with
                   | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
                   | _ -> elements.(j) <- copy v);
                  true
-           | None ->
+           | None, _, _ ->
                let ix = expr st r ~at ix in
                fun a ->
                  let iv = ix a in
-                 let elements = V.components (container a) in
+                 let elements = parts (container a) in
                  let j = index st ~at iv (Array.length elements) in
                  let v = value a in
                  if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
@@ -2073,6 +2103,11 @@ and block ?top st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
       else if n = 2 && not jumps then
         (let s0 = body.(0) and s1 = body.(1) in
          fun a -> tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a) && (at_end st a; true))
+      else if n = 3 && not jumps then
+        (let s0 = body.(0) and s1 = body.(1) and s2 = body.(2) in
+         fun a ->
+           tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a)
+           && (tick st; at_statement st a; s2 a) && (at_end st a; true))
       else if jumps then
         fun a ->
           let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
