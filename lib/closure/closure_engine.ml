@@ -1159,6 +1159,52 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         | By_value e when not (is_alias callee.parameters.(i)) && not callee.parameters.(i).p_optional ->
             Some (expr st caller ~at e)
         | _ -> None in
+      (* Up to four arguments, each a value for an in parameter or, for an alias parameter,
+         module data or an own slot of the caller (not optional): bound as the binders bind
+         them, the extension's arrays built at once; what an argument is bound to, its index
+         and whether it is module data are the same at every call of this site, so those
+         arrays are made once (nothing writes them after the binding). *)
+      let simple = Array.mapi (fun i (arg : argument) ->
+          let p = callee.parameters.(i) in
+          if p.p_optional then None
+          else match arg, is_alias p with
+            | By_value e, false -> Some (`Value (expr st caller ~at e, "the copy for the parameter " ^ p.p_name))
+            | By_reference (Whole (Global g), kind), true -> Some (`Global (g, kind))
+            | By_reference (Whole (Local s), kind), true
+              when local_access caller s = Own && not (s < Array.length caller.parameters
+                                                       && is_alias caller.parameters.(s)) ->
+                Some (`Own (s, kind))
+            | _ -> None) arguments in
+      let (_, aliases, optional, size, _) = shape in
+      if n >= 1 && n <= 4 && aliases && not optional && Array.for_all Option.is_some simple then begin
+        let d = Array.map Option.get simple in
+        let idx = Array.map (function `Global (g, _) -> g | `Own (s, _) -> s | `Value _ -> 0) d in
+        let bound = Array.map (function `Global (_, k) | `Own (_, k) -> k | `Value _ -> Ref_other) d in
+        let module_data = Array.map (function `Global _ -> true | _ -> false) d in
+        let values = List.filter_map (fun i -> match d.(i) with `Value (f, w) -> Some (i, f, w) | _ -> None)
+            (List.init n Fun.id) |> Array.of_list in
+        let nv = Array.length values in
+        let globals = st.globals in
+        let box (a : act) = function `Global _ -> globals | `Own _ -> a.store | `Value _ -> [||] in
+        let boxes_of = match d with
+          | [| d0 |] -> fun a -> [| box a d0 |]
+          | [| d0; d1 |] -> fun a -> [| box a d0; box a d1 |]
+          | [| d0; d1; d2 |] -> fun a -> [| box a d0; box a d1; box a d2 |]
+          | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
+              fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
+        fun a ->
+          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None } in
+          let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
+                    result = no_value; nest = 0; memory = 0 } in
+          for m = 0 to nv - 1 do
+            let i, f, what = values.(m) in
+            let v = f a in
+            charge_pending st c (value_bytes v) what at;
+            c.store.(i) <- copy v
+          done;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      end
+      else
       (* The common numbers of arguments without a loop over the binders. *)
       match binders, (if n = 1 then plain 0 else None) with
       | [| _ |], Some f ->
