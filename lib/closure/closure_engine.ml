@@ -2089,6 +2089,26 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
+        let small x = Float.is_integer x && Float.abs x < 8388608. [@@inline] in
+        if small lo && small hi && small step && not (lo = 0. && 1. /. lo < 0.) && not st.observe then begin
+          (* FROM, TO and STEP integers below 2^23 in magnitude (and FROM not -0): every value
+             of the variable, and each sum, is an integer of at most 24 bits, which a num holds
+             exactly (the sum needs no rounding): the rounds counted on an int *)
+          let hi = int_of_float hi and s = int_of_float step in
+          let i = ref (int_of_float lo) and continue = ref true and goes_on = ref true and round = ref false in
+          while !continue && (if s >= 0 then !i <= hi else !i >= hi) do
+            tick st;
+            a.store.(variable) <- V.Num (float_of_int !i);
+            (match body a with
+             | true -> if empty then (if !round then pass_turn st else round := true); at_round st a
+             | false -> continue := false; goes_on := false
+             | exception Continue_loop -> at_round st a
+             | exception Break_loop -> continue := false);
+            if !continue then i := !i + s
+          done;
+          !goes_on
+        end
+        else
         let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
