@@ -216,6 +216,13 @@ let memory_exhausted st what at =
 (* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
 let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
 
+(* And a record of three scalars (pos, and the like): 16 + 3 x (8 + 32) bytes by Value.bytes. *)
+let value_bytes (v : V.t) =
+  match v with
+  | V.Record [| (V.Num _ | V.Dnum _ | V.Bool _); (V.Num _ | V.Dnum _ | V.Bool _); (V.Num _ | V.Dnum _ | V.Bool _) |] ->
+      136
+  | _ -> value_bytes v [@@inline]
+
 (* An activation itself counts, so that a deep recursion stays within the budget too. *)
 let activation_bytes (r : routine) = 256 + 16 * r.locals
 

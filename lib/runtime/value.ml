@@ -75,11 +75,13 @@ let rec copy = function
 
 (* The small ones (pos, orient, confdata...) built in place: Array.map is a call to the runtime. *)
 and copy_parts a =
+  (* a scalar part is itself, without a call *)
+  let c v = match v with Record _ | Array _ -> copy v | _ -> v [@@inline] in
   match Array.length a with
-  | 1 -> [| copy a.(0) |]
-  | 2 -> [| copy a.(0); copy a.(1) |]
-  | 3 -> [| copy a.(0); copy a.(1); copy a.(2) |]
-  | 4 -> [| copy a.(0); copy a.(1); copy a.(2); copy a.(3) |]
+  | 1 -> [| c a.(0) |]
+  | 2 -> [| c a.(0); c a.(1) |]
+  | 3 -> [| c a.(0); c a.(1); c a.(2) |]
+  | 4 -> [| c a.(0); c a.(1); c a.(2); c a.(3) |]
   | _ -> Array.map copy a
 
 let rec equal a b =
