@@ -639,6 +639,25 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
       if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u)
       else fun a -> (match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u)
+  | Binary ((Num_add | Num_sub | Num_mul | Dnum_add | Dnum_sub | Dnum_mul) as op,
+            { e = Read (Whole (Local i)); _ }, { e = Read (Whole (Local j)); _ })
+    when local_access r i = Own && local_access r j = Own ->
+      (* two own slots (s + i): read without a call each, as [binary]'s rows compute them *)
+      let slow u v = check st ~at (Arith.binary op u v) in
+      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+      (match op with
+       | Num_add -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p +. q) | u, v -> slow u v)
+       | Num_sub -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p -. q) | u, v -> slow u v)
+       | Num_mul -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p *. q) | u, v -> slow u v)
+       | Dnum_add -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p +. q) | u, v -> slow u v)
+       | Dnum_sub -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p -. q) | u, v -> slow u v)
+       | _ -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p *. q) | u, v -> slow u v))
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
