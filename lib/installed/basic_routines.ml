@@ -135,6 +135,8 @@ let call ctx name args =
 
 (* A function of the library that no special case above takes: its body is the library's, on
    the arguments' values, and a registry entry may call it without the name dispatch. *)
-let pure name =
+let pure_values name =
   if List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials then None
-  else Option.map (fun f args -> result (f (Array.map value_of args))) (Library.find name)
+  else Library.find name
+
+let pure name = Option.map (fun f args -> result (f (Array.map value_of args))) (pure_values name)
