@@ -146,6 +146,31 @@ let no_program () =
   let tasks, _ = names (temp_backup (sys :: files)) in
   Alcotest.(check (list string)) "configured by SYS.cfg: a task" [ "TASK1"; "TASK2" ] tasks
 
+(* R-bk-15: a robot's -base_frame_coordinated naming a track (MECHANICAL_UNIT -use_single_0, the
+   SINGLE's joint, the arm of that joint) gives the track and its travel; a gantry's unit does not,
+   and is warned as not modelled. test/golden/backup-track runs a robot on such a track. *)
+let tracks () =
+  let moc = "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT:\n      -name \"T1\" -use_single_0 \"T1\"\n\n\
+             \      -name \"G1\" -use_robot \"G1\"\n#\nROBOT:\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\\\n\
+             \      -base_frame_coordinated \"T1\"\n\n      -name \"ROB_2\" -use_robot_type \"ROB2_120_0.58_3\"\\\n\
+             \      -base_frame_coordinated \"G1\"\n\n      -name \"G1\" -use_robot_type \"G1_X_Y_Z_NOTCP\"\n#\n\
+             SINGLE:\n      -name \"T1\" -use_joint \"t1\" -base_frame_orient_u0 0.707107 -base_frame_orient_u3 0.707107\n#\n\
+             ARM:\n      -name \"a\" -use_arm_type \"t1\" -upper_joint_bound 3.9 -lower_joint_bound -0.1\n#\n" in
+  let dir = temp_backup [ ("SYSPAR/MOC.cfg", moc); ("RAPID/TASK1/PROGMOD/A.mod", main_mod "A") ] in
+  match Backup.read dir with
+  | Error m -> Alcotest.fail m
+  | Ok b ->
+      (match Option.bind (List.assoc_opt "TASK1" b.robots) (fun (r : Backup.robot) -> r.track) with
+       | Some t ->
+           Alcotest.(check string) "the unit" "T1" t.track_unit;
+           Alcotest.(check (pair (float 1e-9) (float 1e-9))) "the travel, m" (-0.1, 3.9) t.travel
+       | None -> Alcotest.fail "ROB_1 rides the track T1");
+      let warned part = List.exists (fun w ->
+          let n = String.length part in
+          let rec at i = i + n <= String.length w && (String.sub w i n = part || at (i + 1)) in at 0) b.warnings in
+      Alcotest.(check (list bool)) "the gantry warned, the track not" [ true; false ]
+        [ warned "moved by the mechanical unit G1"; warned "the mechanical unit T1 (an external axis)" ]
+
 (* R-2.4-rw6: the release of backinfo.txt's "RobotWare Version:", and what reading a module as
    RobotWare 6 changes: BREAK and CONTINUE are names there, reserved words by the manual's (7). *)
 let robotware () =
@@ -400,4 +425,5 @@ let suite =
       Alcotest.test_case "program file" `Quick program_file;
       Alcotest.test_case "RobotWare release" `Quick robotware;
       Alcotest.test_case "mechanical units as mecunit data" `Quick mechanical_units;
-      Alcotest.test_case "a task folder without a program" `Quick no_program ] )
+      Alcotest.test_case "a task folder without a program" `Quick no_program;
+      Alcotest.test_case "a track of MOC.cfg carrying a robot" `Quick tracks ] )

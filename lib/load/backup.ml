@@ -15,8 +15,10 @@ type bound = { axis : int; lower : float; upper : float; bound_at : string }
 type base_frame = {
   pos : float * float * float; orient : float * float * float * float; coordinated : string option; base_at : string;
 }
+type track = { track_unit : string; travel : float * float; track_orient : float * float * float * float;
+               track_at : string }
 type robot = { robot_name : string; robot_type : string; bounds : bound list; robot_at : string;
-               base_frame : base_frame }
+               base_frame : base_frame; track : track option }
 
 type t = {
   dir : string;
@@ -353,11 +355,7 @@ let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
         warn (Printf.sprintf "%s: warning: robot %s: -%s is not modelled" (cfg_place c a.line) name a.key)) given;
   let coordinated = match Cfg_file.find i "base_frame_coordinated" with
     | None -> None
-    | Some ({ value = Text u; _ } as a) ->
-        warn (Printf.sprintf "%s: warning: robot %s: its base frame is moved by the mechanical unit %s \
-                              (-base_frame_coordinated), which is not modelled: the base frame stands where the \
-                              unit's 0 puts it, given in the world frame" (cfg_place c a.line) name u);
-        Some u
+    | Some { value = Text u; _ } -> Some u
     | Some a ->
         warn (Printf.sprintf "%s: warning: robot %s: -base_frame_coordinated without a unit: not read"
                 (cfg_place c a.line) name);
@@ -365,6 +363,35 @@ let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
   let v k d = value (List.nth base_frame_keys k) d in
   { pos = (v 0 0., v 1 0., v 2 0.); orient = (v 3 1., v 4 0., v 5 0., v 6 0.); coordinated;
     base_at = (match given with a :: _ -> cfg_place c a.line | [] -> cfg_place c i.at_line) }
+
+(* R-bk-15: the unit that moves a robot's base frame, when it is a track: a MECHANICAL_UNIT whose
+   -use_single_0 names a SINGLE, the arm of that single's joint (ARM -use_arm_type) giving its
+   travel in metres, the single's base frame orientation the direction it moves along (its x
+   axis). Anything else (a gantry, a unit not found) is None, and the caller warns. *)
+let track_of (c : Cfg_file.t) unit_name =
+  let named section n =
+    List.find_opt (fun i -> match Cfg_file.text i "name" with Some m -> same m n | None -> false)
+      (instances c section) in
+  let finite k i = match Cfg_file.text i k with
+    | Some v -> (match float_of_string_opt (String.trim v) with Some f when Float.is_finite f -> Some f | _ -> None)
+    | None -> None in
+  let ( let* ) = Option.bind in
+  let* mu = named "MECHANICAL_UNIT" unit_name in
+  let* single_name = Cfg_file.text mu "use_single_0" in
+  let* single = named "SINGLE" single_name in
+  let* joint = Cfg_file.text single "use_joint" in
+  let* arm = List.find_opt (fun i -> match Cfg_file.text i "use_arm_type" with
+      | Some t -> same t joint | None -> false) (instances c "ARM") in
+  let* lower = finite "lower_joint_bound" arm in
+  let* upper = finite "upper_joint_bound" arm in
+  let q k d = Option.value (finite ("base_frame_orient_u" ^ string_of_int k) single) ~default:d in
+  if lower >= upper then None
+  else Some { track_unit = unit_name; travel = (lower, upper); track_orient = (q 0 1., q 1 0., q 2 0., q 3 0.);
+              track_at = cfg_place c single.at_line }
+
+(* A gantry's "robot" (Gantry11_X_Y_Z_NOTCP) moves external axes, not an arm of the library. *)
+let has_joint_type r = String.length r.robot_type >= 5
+                       && same (String.sub r.robot_type (String.length r.robot_type - 5) 5) "NOTCP"
 
 (* R-bk-5: MOC.cfg's robots and the joint bounds of their arms. *)
 let robots ~warn (c : Cfg_file.t) =
@@ -403,12 +430,29 @@ let robots ~warn (c : Cfg_file.t) =
         match axes 1 [] with
         | Error e -> Error e
         | Ok bounds ->
+            let base_frame = base_frame ~warn c ~name i in
+            let track = Option.bind base_frame.coordinated (track_of c) in
+            Option.iter (fun u ->
+                if track = None then
+                  warn (Printf.sprintf "%s: warning: robot %s: its base frame is moved by the mechanical unit %s \
+                                        (-base_frame_coordinated), which is not modelled (not a track): the base frame \
+                                        stands where the unit's 0 puts it, given in the world frame"
+                          (match Cfg_file.find i "base_frame_coordinated" with
+                           | Some a -> cfg_place c a.line | None -> base_frame.base_at) name u)) base_frame.coordinated;
             each ({ robot_name = name; robot_type = Option.value (Cfg_file.text i "use_robot_type") ~default:"";
-                    bounds; robot_at = cfg_place c i.at_line; base_frame = base_frame ~warn c ~name i } :: acc) rest in
+                    bounds; robot_at = cfg_place c i.at_line; base_frame; track } :: acc) rest in
   let* rs = each [] (instances c "ROBOT") in
+  (* A track that carries a robot is modelled (R-bk-15). *)
+  let is_track n = List.exists (fun r -> match r.track with Some t -> same t.track_unit n | None -> false) rs in
+  (* A unit that is a robot of the library's (-use_robot naming a ROBOT with a type) is that robot. *)
+  let is_robot (i : Cfg_file.instance) = match Cfg_file.text i "use_robot" with
+    | Some r -> List.exists (fun x -> same x.robot_name r && x.robot_type <> "" && not (has_joint_type x)) rs
+    | None -> false in
   List.iter (fun (i : Cfg_file.instance) ->
-      warn (Printf.sprintf "%s: warning: the mechanical unit %s (an external axis) is not modelled"
-              (cfg_place c i.at_line) (Option.value (Cfg_file.text i "name") ~default:"?")))
+      let name = Option.value (Cfg_file.text i "name") ~default:"?" in
+      if not (is_track name || is_robot i) then
+        warn (Printf.sprintf "%s: warning: the mechanical unit %s (an external axis) is not modelled"
+                (cfg_place c i.at_line) name))
     (instances c "MECHANICAL_UNIT");
   Ok rs
 
@@ -432,7 +476,7 @@ let read dir =
   let* moc_robots = match moc with Some c -> robots ~warn c | None -> Ok [] in
   Option.iter (fun c -> unread_sections ~warn c
                   [ "CAB_TASKS"; "CAB_EXEC_HOOKS"; "CAB_TASK_MODULES"; "SYS_MISC"; "MECHANICAL_UNIT_GROUP" ]) sys;
-  Option.iter (fun c -> unread_sections ~warn c [ "ROBOT"; "ARM"; "MECHANICAL_UNIT" ]) moc;
+  Option.iter (fun c -> unread_sections ~warn c [ "ROBOT"; "ARM"; "MECHANICAL_UNIT"; "SINGLE" ]) moc;
   (* The other files of SYSPAR, and HOME: once each. *)
   Option.iter (fun s ->
       List.iter (fun f ->

@@ -48,12 +48,22 @@ type base_frame = {
 (** A robot's base frame in the world frame (doc/rulings.md R-bk-12): where the cell mounts the
     arm. A value that is not a number was a warning, and the world frame's value is taken. *)
 
+type track = {
+  track_unit : string;         (** the MECHANICAL_UNIT that moves the robot's base frame *)
+  travel : float * float;      (** its arm's -lower_joint_bound, -upper_joint_bound: metres *)
+  track_orient : float * float * float * float;
+      (** its SINGLE's base frame orientation, u0 .. u3 as written: the track moves along its x axis *)
+  track_at : string;           (** FILE:LINE of the SINGLE *)
+}
+(** A track carrying a robot (doc/rulings.md R-bk-15). *)
+
 type robot = {
   robot_name : string;         (** MOC.cfg's ROBOT -name, ROB_1 *)
   robot_type : string;         (** -use_robot_type, ROB1_2400_1.5_10; [""] when not given *)
   bounds : bound list;         (** the arms of its joints, axis 1 first *)
   robot_at : string;           (** FILE:LINE of its ROBOT instance *)
   base_frame : base_frame;
+  track : track option;        (** the track its -base_frame_coordinated names, when it is one *)
 }
 
 type t = {

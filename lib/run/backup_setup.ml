@@ -1,5 +1,6 @@
 module Backup = Rapid_load.Backup
 module Robot = Rapid_motion_model.Robot
+module Ext_axes = Rapid_motion_model.Ext_axes
 
 type cell = {
   backup : Backup.t; robots : (string * Robot.t) list; stand_in : (string * string) list; warnings : string list;
@@ -43,10 +44,38 @@ let base_frame (r : Backup.robot) =
     | Ok q -> (q, []) | Error m -> (Rapid_motion_model.Geom.unit_orient, [ warn "orientation" m ]) in
   ({ Rapid_motion_model.Geom.trans; rot }, w1 @ w2)
 
-(* The robot placed in the cell (the arm of its type, or --robot's): the base frame is the cell's. *)
+(* R-bk-15: IRBT 4004, 6004 and 7004 tracks travel at up to 2 m/s in ABB's product
+   specifications as recalled, not checked against ABB's PDFs: an estimate. *)
+let track_speed = 2000.
+
+(* R-bk-15: a track of MOC.cfg is the external axis eax_a, linear, its travel the arm's bounds in
+   mm, carrying the base along the x axis of the track's base frame. A description that has its
+   own eax_a (--robot FILE with an external line) keeps it. *)
+let with_track (arm : Robot.t) (r : Backup.robot) =
+  match r.track with
+  | None -> (arm, [])
+  | Some t when List.exists (fun (a : Ext_axes.axis) -> a.index = 0) arm.externals ->
+      (arm, [ Printf.sprintf "%s: warning: robot %s: the track %s is not added: the robot description has its own \
+                              eax_a" t.track_at r.robot_name t.track_unit ])
+  | Some t ->
+      let q1, q2, q3, q4 = t.track_orient in
+      let module BF = Rapid_motion_model.Base_frame in
+      let module G = Rapid_motion_model.Geom in
+      let rot, w = match BF.orientation q1 q2 q3 q4 with
+        | Ok q -> (q, [])
+        | Error m -> (G.unit_orient, [ Printf.sprintf "%s: warning: track %s: its base frame's orientation: %s; the \
+                                                       world's x axis is taken" t.track_at t.track_unit m ]) in
+      let lower, upper = t.travel in
+      let axis = { Ext_axes.name = "eax_a"; index = 0; kind = Ext_axes.Linear; min = 1000. *. lower;
+                   max = 1000. *. upper; speed = track_speed; track = Some (G.rotate rot { G.x = 1.; y = 0.; z = 0. }) } in
+      ({ arm with externals = axis :: arm.externals }, w)
+
+(* The robot placed in the cell (the arm of its type, or --robot's): the base frame is the cell's,
+   and a track of the cell carries it. *)
 let placed (arm : Robot.t) (r : Backup.robot) =
   let b, w = base_frame r in
-  ({ arm with base_frame = b }, w)
+  let arm, wt = with_track { arm with base_frame = b } r in
+  (arm, w @ wt)
 
 let robot_of_type (r : Backup.robot) =
   match library_find r.robot_type with
