@@ -11,17 +11,8 @@ module E = Rapid_runtime.Event
 
 let ( // ) = Filename.concat
 
-let write path text =
-  let rec mkdir d = if not (Sys.file_exists d) then (mkdir (Filename.dirname d); Sys.mkdir d 0o755) in
-  mkdir (Filename.dirname path);
-  let oc = open_out_bin path in
-  output_string oc text; close_out oc
-
-let temp_backup files =
-  let dir = Filename.temp_file "rapid-sem-events" "" in
-  Sys.remove dir; Sys.mkdir dir 0o755;
-  List.iter (fun (p, t) -> write (dir // p) t) files;
-  dir
+let write = Test_backup.write
+let temp_backup = Test_backup.temp_backup
 
 let contains part w =
   let n = String.length part in
