@@ -2411,6 +2411,14 @@ let error_number_table error_numbers =
 
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
 
+(* [Array.make n x] without its minor collection: for more than 256 elements and a young [x]
+   (not_compiled, allocated at initialisation, is young until the first one) caml_make_vect
+   empties the minor heap first, promoting all that start-up built (1.2 M instructions of an
+   empty main); Array.concat copies the small arrays into the major heap without it. *)
+let make_filled n x =
+  if n <= 256 then Array.make n x
+  else Array.concat (List.init ((n + 255) / 256) (fun i -> Array.make (min 256 (n - (256 * i))) x))
+
 let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
   let numbers = error_number_table program.error_numbers in
@@ -2431,7 +2439,7 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
     next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
-  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  st.compiled <- make_filled (Array.length program.routines) not_compiled;
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st
