@@ -2404,8 +2404,10 @@ let error_number_table error_numbers =
   match !last_numbers with
   | Some (l, t) when l == error_numbers -> t
   | _ ->
-      let numbers = Hashtbl.create 128 in
-      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      let numbers = Hashtbl.create (2 * List.length error_numbers) in
+      (* the names are upper case already, but for a user's: no copy of those *)
+      let upper n = if String.exists (fun c -> c >= 'a' && c <= 'z') n then String.uppercase_ascii n else n in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (upper n) v) error_numbers;
       last_numbers := Some (error_numbers, numbers);
       numbers
 
