@@ -2404,12 +2404,22 @@ let error_number_table error_numbers =
   match !last_numbers with
   | Some (l, t) when l == error_numbers -> t
   | _ ->
-      let numbers = Hashtbl.create 128 in
-      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      let numbers = Hashtbl.create (2 * List.length error_numbers) in
+      (* the names are upper case already, but for a user's: no copy of those *)
+      let upper n = if String.exists (fun c -> c >= 'a' && c <= 'z') n then String.uppercase_ascii n else n in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (upper n) v) error_numbers;
       last_numbers := Some (error_numbers, numbers);
       numbers
 
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
+
+(* [Array.make n x] without its minor collection: for more than 256 elements and a young [x]
+   (not_compiled, allocated at initialisation, is young until the first one) caml_make_vect
+   empties the minor heap first, promoting all that start-up built (1.2 M instructions of an
+   empty main); Array.concat copies the small arrays into the major heap without it. *)
+let make_filled n x =
+  if n <= 256 then Array.make n x
+  else Array.concat (List.init ((n + 255) / 256) (fun i -> Array.make (min 256 (n - (256 * i))) x))
 
 let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
@@ -2431,7 +2441,7 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
     next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
-  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  st.compiled <- make_filled (Array.length program.routines) not_compiled;
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st
