@@ -419,9 +419,9 @@ let scara () =
   refused_description ~file:"s.robot" (replace "axis 2   250" "axis 2   0")
     (Printf.sprintf "s.robot:%d:1: robot description error: axis 2: a SCARA's arm length a must be positive"
        (line_of "axis 2 "));
-  refused_description ~file:"s.robot" (replace "max_tcp_speed" "axis 6 0 0 0 0 -1 1 1\nmax_tcp_speed")
+  refused_description ~file:"s.robot" (replace "max_tcp_speed 6000" "axis 6 0 0 0 0 -1 1 1\nmax_tcp_speed 6000")
     (Printf.sprintf "s.robot:%d:1: robot description error: axis 6: a SCARA has no axis 6 (its axes are 1 to 4)"
-       (line_of "max_tcp_speed"))
+       (line_of "max_tcp_speed 6000"))
 
 let suite =
   ( "robot library",
