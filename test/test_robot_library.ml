@@ -74,7 +74,8 @@ let backup_types () =
       ("ROB1_1660ID_1.55_4", "ABB IRB 1660ID-4/1.55");
       ("ROB1_1660_ID_1.55_4", "ABB IRB 1660ID-4/1.55");
       ("irb1660id", "ABB IRB 1660ID-4/1.55");
-      ("ROB1_910SC_0.55_3", "ABB IRB 910SC-3/0.55") ];
+      ("ROB1_910SC_0.55_3", "ABB IRB 910SC-3/0.55");
+      ("ROB1_360_1.6_6", "ABB IRB 360-6/1600") ];
   (* the two IRB 6700 and the IRB 2600 and 2600ID stay apart *)
   Alcotest.(check string) "6700-200" "ABB IRB 6700-200/2.60" (name "ROB1_6700_2.6_200");
   Alcotest.(check string) "2600" "ABB IRB 2600-12/1.65" (name "irb2600");
