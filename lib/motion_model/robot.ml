@@ -191,9 +191,10 @@ let scara_problem r =
   List.iter (fun k -> if (ax k).alpha <> 0. || (ax k).offset <> 0. then
                 say k (Printf.sprintf "axis %d: a SCARA's alpha and offset must be 0 (doc/motion.md)" k))
     [ 1; 2; 3; 4 ];
-  List.iter (fun k -> if (ax k).a <= 0. then say k (Printf.sprintf "axis %d: a SCARA's arm length a must be positive" k))
-    [ 1; 2 ];
-  List.iter (fun k -> if (ax k).d <> 0. then say k (Printf.sprintf "axis %d: a SCARA's d must be 0 (axis 1's d is the height)" k))
+  List.iter (fun k ->
+      if (ax k).a <= 0. then say k (Printf.sprintf "axis %d: a SCARA's arm length a must be positive" k)) [ 1; 2 ];
+  List.iter (fun k ->
+      if (ax k).d <> 0. then say k (Printf.sprintf "axis %d: a SCARA's d must be 0 (axis 1's d is the height)" k))
     [ 2; 3; 4 ];
   List.iter (fun k -> if (ax k).a <> 0. then say k (Printf.sprintf "axis %d: a SCARA's a must be 0" k)) [ 3; 4 ];
   !bad
@@ -250,8 +251,8 @@ let parse ~file text =
         | [ (_, "structure"); (c, w) ] ->
             (match List.assoc_opt w structure_names with
              | None -> raise (Bad (ln, c, Printf.sprintf
-                                         "structure: expected serial, coupled-axis3, palletiser, delta or scara, found %S"
-                                         (Rapid_syntax.Decimal.shown w)))
+                                    "structure: expected serial, coupled-axis3, palletiser, delta or scara, found %S"
+                                    (Rapid_syntax.Decimal.shown w)))
              | Some k ->
                  if !structure <> None then raise (Bad (ln, 1, "structure given twice"));
                  structure := Some k)
