@@ -67,7 +67,8 @@ let with_track (arm : Robot.t) (r : Backup.robot) =
                                                        world's x axis is taken" t.track_at t.track_unit m ]) in
       let lower, upper = t.travel in
       let axis = { Ext_axes.name = "eax_a"; index = 0; kind = Ext_axes.Linear; min = 1000. *. lower;
-                   max = 1000. *. upper; speed = track_speed; track = Some (G.rotate rot { G.x = 1.; y = 0.; z = 0. }) } in
+                   max = 1000. *. upper; speed = track_speed;
+                   track = Some (G.rotate rot { G.x = 1.; y = 0.; z = 0. }) } in
       ({ arm with externals = axis :: arm.externals }, w)
 
 (* The robot placed in the cell (the arm of its type, or --robot's): the base frame is the cell's,
