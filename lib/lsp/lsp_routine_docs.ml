@@ -44,6 +44,7 @@ let lines = [
   ("MaxRobSpeed", "The maximum TCP speed of the robot type, in mm/s.");
   ("MaxRobReorientSpeed", "The maximum reorientation speed of the robot type, in degrees per second.");
   ("GripLoad", "Declares the payload the robot now holds in its gripper (loaddata).");
+  ("MotionSup", "Switches collision detection (motion supervision) on or off; \\TuneValue its sensitivity, percent.");
   ("SoftAct", "Activates soft servo on an axis (Softness in percent).");
   ("SoftDeact", "Deactivates soft servo on all axes.");
   ("PDispOn", "Activates a program displacement, defined from the current position and a programmed point.");
