@@ -31,7 +31,7 @@ let same = Rapid_typing.Types.same_name
 let names = [
   "GetSysInfo"; "OpMode"; "RobOS"; "DecToHex"; "HexToDec"; "BitSet"; "BitClear"; "BitSetDnum"; "BitClearDnum";
   "MaxRobReorientSpeed"; "SoftAct"; "SoftDeact"; "PathAccLim"; "UIClientExist";
-  "MotionSup";
+  "MotionSup"; "TuneReset";
 ]
 
 let modelled name = List.exists (same name) names
@@ -190,4 +190,7 @@ let call ctx motion name args =
      off. The motion model has no dynamics and detects no collision: accepted, changes nothing
      (R-13-motset1). *)
   | "motionsup" -> Some (Returned None)
+  (* TuneReset (ABB, RAPID Instructions): the servo tuning back to normal; the model has no
+     tuning to reset (R-13-motset1). *)
+  | "tunereset" -> Some (Returned None)
   | _ -> None

@@ -56,6 +56,9 @@ let lines = [
   ("ActUnit", "Activates a mechanical unit (an external axis).");
   ("DeactUnit", "Deactivates a mechanical unit, so that moves no longer command it.");
   ("IsMechUnitActive", "Whether a mechanical unit is active.");
+  ("TuneReset", "Sets every servo tuning of TuneServo back to its normal value.");
+  ("LoadIdentify", "ABB's service routine that identifies a tool's or payload's load (not modelled).");
+  ("IOUnitState", "The state of an I/O device: general, or \\Logic or \\Phys (not modelled).");
   ("GetMotorTorque", "The motor torque of an axis, Nm (not modelled: the motion model has no dynamics).");
   ("GetMecUnitName", "The name of a mechanical unit, as a string.");
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");
