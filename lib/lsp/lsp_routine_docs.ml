@@ -56,7 +56,7 @@ let lines = [
   ("ActUnit", "Activates a mechanical unit (an external axis).");
   ("DeactUnit", "Deactivates a mechanical unit, so that moves no longer command it.");
   ("IsMechUnitActive", "Whether a mechanical unit is active.");
-  ("Linked_m_exe", "RobotWare's service routine for electronically linked motors, called by LINKEDM.sys (not modelled).");
+  ("Linked_m_exe", "The service routine of linked motors that LINKEDM.sys calls (not modelled).");
   ("TuneReset", "Sets every servo tuning of TuneServo back to its normal value.");
   ("LoadIdentify", "ABB's service routine that identifies a tool's or payload's load (not modelled).");
   ("IOUnitState", "The state of an I/O device: general, or \\Logic or \\Phys (not modelled).");
