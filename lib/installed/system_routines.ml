@@ -31,6 +31,7 @@ let same = Rapid_typing.Types.same_name
 let names = [
   "GetSysInfo"; "OpMode"; "RobOS"; "DecToHex"; "HexToDec"; "BitSet"; "BitClear"; "BitSetDnum"; "BitClearDnum";
   "MaxRobReorientSpeed"; "SoftAct"; "SoftDeact"; "PathAccLim"; "UIClientExist";
+  "MotionSup"; "TuneReset";
 ]
 
 let modelled name = List.exists (same name) names
@@ -185,4 +186,11 @@ let call ctx motion name args =
   | "softact" -> Some (soft_act ctx args)
   | "softdeact" -> Some (soft_deact ctx args)
   | "pathacclim" -> Some (path_acc_lim ctx args)
+  (* MotionSup [\On] | [\Off] [\TuneValue] (ABB, RAPID Instructions): collision detection on or
+     off. The motion model has no dynamics and detects no collision: accepted, changes nothing
+     (R-13-motset1). *)
+  | "motionsup" -> Some (Returned None)
+  (* TuneReset (ABB, RAPID Instructions): the servo tuning back to normal; the model has no
+     tuning to reset (R-13-motset1). *)
+  | "tunereset" -> Some (Returned None)
   | _ -> None

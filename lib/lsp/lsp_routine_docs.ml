@@ -44,6 +44,7 @@ let lines = [
   ("MaxRobSpeed", "The maximum TCP speed of the robot type, in mm/s.");
   ("MaxRobReorientSpeed", "The maximum reorientation speed of the robot type, in degrees per second.");
   ("GripLoad", "Declares the payload the robot now holds in its gripper (loaddata).");
+  ("MotionSup", "Switches collision detection (motion supervision) on or off; \\TuneValue its sensitivity, percent.");
   ("SoftAct", "Activates soft servo on an axis (Softness in percent).");
   ("SoftDeact", "Deactivates soft servo on all axes.");
   ("PDispOn", "Activates a program displacement, defined from the current position and a programmed point.");
@@ -55,6 +56,10 @@ let lines = [
   ("ActUnit", "Activates a mechanical unit (an external axis).");
   ("DeactUnit", "Deactivates a mechanical unit, so that moves no longer command it.");
   ("IsMechUnitActive", "Whether a mechanical unit is active.");
+  ("Linked_m_exe", "The service routine of linked motors that LINKEDM.sys calls (not modelled).");
+  ("TuneReset", "Sets every servo tuning of TuneServo back to its normal value.");
+  ("LoadIdentify", "ABB's service routine that identifies a tool's or payload's load (not modelled).");
+  ("IOUnitState", "The state of an I/O device: general, or \\Logic or \\Phys (not modelled).");
   ("GetMotorTorque", "The motor torque of an axis, Nm (not modelled: the motion model has no dynamics).");
   ("GetMecUnitName", "The name of a mechanical unit, as a string.");
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");

@@ -1766,8 +1766,9 @@ let builtin_environment report options =
     const_cache = Const_eval.create_cache (); signal_argument = None;
   }
 
-(* ch. 12: ERRNO and INTNO are variables that only the system updates. *)
-let read_only_system_variables = [ "ERRNO"; "INTNO" ]
+(* ch. 12: ERRNO and INTNO are variables that only the system updates; C_MOTSET likewise (ABB's
+   motsetdata: only the motion settings instructions change it; R-13-motset1). *)
+let read_only_system_variables = [ "ERRNO"; "INTNO"; "C_MOTSET" ]
 
 (* The installed level is checked once and shared (fuzzing checks thousands of small tasks
    over the same installed environment): nothing of it depends on the user modules, since an
