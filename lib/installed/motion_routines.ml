@@ -49,8 +49,11 @@ type state = {
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
   mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
-  mutable history : (P.motion * float array * float array) list;
-      (* forward moves and their start axes (the arm's, the external ones), newest first *)
+  history : (P.motion * float array * float array) option array;
+      (* the last [history_moves] forward moves and their start axes (the arm's, the external
+         ones): a ring, its newest at [history_top - 1] *)
+  mutable history_top : int;
+  mutable history_len : int;
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
   mutable cleared_at : float option;           (* the last ClearPath: when the moves it drops are dropped *)
   mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
@@ -60,13 +63,31 @@ type state = {
 
 let dummy = V.Bool false
 
+(* The forward moves a BACKWARD handler can retrace: the last 256. *)
+let history_moves = 256
+
+let push_history st h =
+  st.history.(st.history_top) <- Some h;
+  st.history_top <- (st.history_top + 1) mod history_moves;
+  st.history_len <- min history_moves (st.history_len + 1)
+
+let pop_history st =
+  if st.history_len = 0 then None
+  else begin
+    let top = (st.history_top + history_moves - 1) mod history_moves in
+    let h = st.history.(top) in
+    st.history.(top) <- None; st.history_top <- top; st.history_len <- st.history_len - 1;
+    h
+  end
+
 let create ?(robot = MM.Robot.irb120) ?history () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; tracks_back = []; outputs = []; fresh = [];
     check_at = infinity; dirty = false; reshaped = false; history_budget = history; first_target = None;
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
-    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
+    async_raised = false; conc_run = 0; collision_handling = true;
+    history = Array.make history_moves None; history_top = 0; history_len = 0; backward = false; cleared_at = None;
     extensions = []; drain_hooks = []; robots = [] }
 
 let set_backward st b = st.backward <- b
@@ -400,9 +421,8 @@ let move ctx st name args =
       let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
          mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
-      let retraced = match st.history with
-        | (forward, from, from_ext) :: older when st.backward && not ext ->
-            st.history <- older;
+      let retraced = match if st.backward && not ext then pop_history st else None with
+        | Some (forward, from, from_ext) ->
             back_eax := Some from_ext;
             let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
             let back () = MM.Frames.calc_rob_t ?base:(P.base st.planner from_ext) st.kin from (tool_of tool) wobj_d in
@@ -411,7 +431,7 @@ let move ctx st name args =
              | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
              | P.Joint _ | P.Abs_joint _ | P.External_only -> Some (P.Abs_joint from))
         | _ -> None in
-      let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
+      let motion = if Option.is_some retraced then retraced else match String.lowercase_ascii name with
         | "moveextj" -> Some P.External_only
         | "movel" | "moveldo" | "triggl" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" | "triggj" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
@@ -421,7 +441,7 @@ let move ctx st name args =
       let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
       (* The external axes the move goes to (law X-target); a retraced move goes back to
          where they were at the start of the forward move (R-6.3-m). *)
-      let eax = if retraced <> None then !back_eax
+      let eax = if Option.is_some retraced then !back_eax
         else if same name "MoveAbsJ" || ext then Option.map eax_of_jointtarget (get "ToJointPos")
         else Option.map eax_of_robtarget (get "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
@@ -496,7 +516,7 @@ let move ctx st name args =
               st.last_planned <- Some id; st.new_move <- Some id;
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
-                st.history <- (motion, start, start_ext) :: List.filteri (fun i _ -> i < 255) st.history;
+                push_history st (motion, start, start_ext);
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
