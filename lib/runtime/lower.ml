@@ -64,6 +64,13 @@ let shape_default (t : Types.object_type) =
 
 (* ------------------------------------------------------------------ expressions *)
 
+(* A literal of at most seven decimal digits (§2.5): its value without the exact arithmetic. *)
+let small_integer text =
+  let n = String.length text in
+  n >= 1 && n <= 7
+  && (let rec digits i = i >= n || (match String.unsafe_get text i with '0' .. '9' -> digits (i + 1) | _ -> false) in
+      digits 0)
+
 (* The region of the name a reference starts with, under which the checker recorded what the
    name denotes (an entire variable's name has the reference's region, ast.ml). *)
 let rec root_at (r : A.data_reference) =
@@ -99,6 +106,10 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
+  | Num_literal text when small_integer text ->
+      (* Below 2^24 an integer is exact in single and double precision alike. *)
+      let n = float_of_int (int_of_string text) in
+      make (Literal (if dnum then Value.Dnum n else Value.Num n))
   | Num_literal text -> (
       match Num_literal.of_text text with
       | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
