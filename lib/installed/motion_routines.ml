@@ -469,10 +469,13 @@ let move ctx st name args =
             (fun () -> P.ready_time st.planner id)
       | Some motion, _, _ -> (
           let wobj = get "WObj" in
+          (* The tool's and work object's data once (both raise only Illegal_quaternion). *)
+          let tool_d = tool_of tool and wobj_d = Option.map wobj_of wobj in
+          let zone_d = zone_of zone in
           let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ?z:(num ctx args "Z")
-              ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc:(present ctx args "Conc")
-              ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label ?eax
-              (speed_of speed) (zone_of zone) motion in
+              ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc
+              ~tool:tool_d ?wobj:wobj_d ~label:target_label ?eax
+              (speed_of speed) zone_d motion in
           (* What the robot did before this move is observed before it is planned. *)
           if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
           forget st ~now;
@@ -488,13 +491,12 @@ let move ctx st name args =
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
               let tframe =
-                match MM.Frames.as_robot_held (tool_of tool)
-                        (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
-                | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
+                match MM.Frames.as_robot_held tool_d (match wobj_d with Some o -> o | None -> D.wobj0) with
+                | Some (t, _, _) -> t.tframe | None -> tool_d.tframe in
               let target = G.pmult (world_flange st id joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
-              let zone_name = if (zone_of zone).finep then "fine" else label ctx "Zone" in
+              let zone_name = if zone_d.finep then "fine" else label ctx "Zone" in
               emit st (E.Segment_planned { time = now; id; instruction = name; label = target_label;
                                          zone = zone_name; target; joints; ready_time; start_time; end_time });
               List.iter (fun (P.Corner_path_failure k) ->
