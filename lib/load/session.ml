@@ -99,8 +99,6 @@ let load_modules ?testing ?(allow_unknown = false) ?(io = Io.empty) modules =
             Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
         | Error reports -> Error (Static (result.reports @ reports))
 
-let load_space_overhead = 1000
-
 let load_files ~strict ?testing ?allow_unknown ?io files =
   let options = { Parse.default_options with strict } in
   let parsed = List.map (Parse.parse_file ~options) files in
@@ -108,15 +106,10 @@ let load_files ~strict ?testing ?allow_unknown ?io files =
   | [] -> load_modules ?testing ?allow_unknown ?io (List.filter_map Result.to_option parsed)
   | errors -> Error (Front_end errors)
 
-(* Most of what loading allocates lives on (the trees, the elaboration's tables, the lowered
-   program): the major collector would mark it again and again as it grows, for little to free.
-   While a program loads it runs at a tenth of its pace or less; after, at the pace it had
-   (a module of 10,000 moves: 16 % fewer instructions in all, the same peak resident set). *)
+(* Most of what loading allocates lives on: the collector is slowed down meanwhile
+   (Build_pace). *)
 let load ?(strict = false) ?testing ?allow_unknown ?io files =
-  let before = Gc.get () in
-  Gc.set { before with space_overhead = max before.space_overhead load_space_overhead };
-  Fun.protect ~finally:(fun () -> Gc.set { (Gc.get ()) with space_overhead = before.space_overhead })
-    (fun () -> load_files ~strict ?testing ?allow_unknown ?io files)
+  Build_pace.building (fun () -> load_files ~strict ?testing ?allow_unknown ?io files)
 
 (* rapid-sem test (doc/testing.md, R-test-a): a test is a parameterless procedure named test_...,
    letter case aside (§2.3). *)
