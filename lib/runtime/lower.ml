@@ -64,6 +64,8 @@ let shape_default (t : Types.object_type) =
 
 (* ------------------------------------------------------------------ expressions *)
 
+let recent_parameters : (Env.routine * Env.parameter array) list ref = ref []
+
 (* A literal of at most seven decimal digits (§2.5): its value without the exact arithmetic. *)
 let small_integer text =
   let n = String.length text in
@@ -186,7 +188,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       match routine_number ctx r.r_region with
       | None -> unknown ()
       | Some index ->
-          let params = parameters_of r in
+          let params = parameter_array r in
           (* The bound arguments are in parameter order (Elaboration): one walk along both lists,
              not a search per parameter, since a call may have thousands of arguments. *)
           let bound = ref binding.bound in
@@ -200,7 +202,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
                        match argument_type ctx a with Some t -> types := (i, t) :: !types | None -> ())
                    | _ -> ());
                   argument ctx p a
-              | _ -> Ir.Absent) (Array.of_list params) in
+              | _ -> Ir.Absent) params in
           if !types <> [] then begin
             let named = Array.make (Array.length arguments) None in
             List.iter (fun (i, t) -> named.(i) <- Some t) !types;
@@ -238,6 +240,16 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
 
 and parameters_of (r : Env.routine) =
   List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
+
+(* A call's callee's parameters, kept for the last routines called (a module of moves calls
+   MoveL and Offs ten thousand times each): the routine records are never changed. *)
+and parameter_array (r : Env.routine) =
+  match List.find_opt (fun (r', _) -> r' == r) !recent_parameters with
+  | Some (_, a) -> a
+  | None ->
+      let a = Array.of_list (parameters_of r) in
+      recent_parameters := (r, a) :: List.filteri (fun i _ -> i < 7) !recent_parameters;
+      a
 
 (* A loop variable, ERRNO or INTNO: a read-only variable of the access-mode table (§5.2). *)
 and read_only ctx (e : A.expression) =
