@@ -42,15 +42,15 @@ let cmd =
                    both on standard output: every diagnostic with its file, region, class, \
                    sections, message and hint (doc/user-guide.md).")
   in
-  let run files tasks allow_unknown strict format io robot =
+  let run files tasks allow_unknown strict format io robot robotware =
     Cli.guard @@ fun () ->
     (* A controller backup: its tasks, each --task NAME=FILE,... replacing a task's files, and its
        EIO.cfg unless --io names another; a .pgf file: its modules. *)
     match Rapid_run.Backup_setup.input ~robot files with
     | Error m -> prerr_endline m; Cli.exit_static_error
     | Ok input ->
-    let files, own, io, several = match input with
-      | Files fs -> (fs, [], io, tasks <> [])
+    let files, own, io, several, robotware, units = match input with
+      | Files fs -> (fs, [], io, tasks <> [], robotware, [])
       | Cell c ->
           if format = Check_output.Text then List.iter prerr_endline c.warnings;
           let given = List.filter_map (fun t -> match String.index_opt t '=' with
@@ -58,7 +58,8 @@ let cmd =
           let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
           let own = List.filter_map (fun (t : Rapid_load.Backup.task) ->
               if List.exists (same t.name) given then None else Some (t.name, t.files)) c.backup.tasks in
-          ([], own, (match io with Some _ -> io | None -> c.backup.eio), true) in
+          ([], own, (match io with Some _ -> io | None -> c.backup.eio), true,
+           (match robotware with Some _ -> robotware | None -> c.backup.robotware), c.backup.units) in
     let buffers = match own, buffers files tasks with
       | [], b -> b
       | own, Ok [ ("", []) ] -> Ok own
@@ -69,7 +70,9 @@ let cmd =
     | Ok [ (_, []) ], _, _ ->
         prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; Cli.exit_static_error
     | Ok buffers, Ok io, Ok _ ->
-    let options = { Parse.default_options with strict } in
+    let io = { io with Rapid_controller.Io_config.mechanical_units = units } in
+    let robotware = Option.value robotware ~default:Rapid_syntax.Robotware.default in
+    let options = { Parse.default_options with strict; robotware } in
     let parsed = List.map (fun (name, files) -> (name, List.map (Parse.parse_file ~options) files)) buffers in
     let syntax_errors =
       List.concat_map (fun (_, p) -> List.filter_map (function Error d -> Some d | Ok _ -> None) p) parsed in
@@ -116,4 +119,5 @@ let cmd =
     `P "0 when there is no static error (warnings allowed); 2 when there is one.";
   ] in
   Cmd.v (Cmd.info "check" ~doc ~man)
-    Term.(const run $ files $ tasks $ allow_unknown $ strict $ format $ Run_args.io_arg $ Run_args.robot_arg)
+    Term.(const run $ files $ tasks $ allow_unknown $ strict $ format $ Run_args.io_arg $ Run_args.robot_arg
+          $ Run_args.robotware_arg)

@@ -12,7 +12,7 @@ let cmd =
                            ~doc:"Write TEXT before each command read, whether standard input is a terminal or not \
                                  (default: $(b,(rapid-sem) ) on a terminal, nothing from a pipe or a script); \
                                  an empty TEXT writes none.") in
-  let run files entry max_steps allow_unknown max_depth retry_limit controller robot script prompt_text =
+  let run files entry max_steps allow_unknown max_depth retry_limit controller (robot, base_frames) script prompt_text =
     let input = match script with
       | None -> Ok stdin
       | Some f -> (try Ok (open_in_bin f) with Sys_error m -> Error m) in
@@ -20,12 +20,20 @@ let cmd =
     | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
     | Ok ic ->
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     (* A controller backup or a .pgf file: its one task's modules, read once here and for the data's names. *)
     match Rapid_run.Run_setup.one_task ~notify:Cli.notify options files ~entry with
     | Error f -> Cli.failure f
-    | Ok (options, files, entry, robot) ->
-    match Rapid_run.Run_setup.start_machine ?robot ~notify:ignore options files ~entry with
+    | Ok (options, files, entry, robot, events) ->
+    (* R-bk-11: START happens at the first continue, not before the session; each warning once. *)
+    let said = Hashtbl.create 4 in
+    let notify = function
+      | Rapid_run.Run_setup.Backup_warning w as n when not (Hashtbl.mem said w) -> Hashtbl.add said w (); Cli.notify n
+      | _ -> () in
+    let before = List.filter (fun (e : Rapid_run.Task_load.event_routine) -> e.event <> "START") events.before in
+    match Rapid_run.Run_setup.start_machine ?robot ~events:{ events with before } ~notify options files ~entry
+    with
     | Error f -> Cli.failure f
     | Ok (cfg, _) ->
     let echo = script <> None in
@@ -55,7 +63,14 @@ let cmd =
         then [ ident m.module_name ] else []) parsed in
     let type_of = Rapid_tools.Debug_types.type_of parsed in
     let files = List.map (fun f -> if f = "-" then Rapid_syntax.Parse.stdin_name else f) files in
-    let session = D.create ~max_steps ~routine_data ~type_of ~files
+    let note w = notify (Rapid_run.Run_setup.Backup_warning w) in
+    let debug =
+      Rapid_run.Task_load.runnable ~note ~task:events.task (Rapid_semantics.Machine.program cfg) events.debug in
+    let events = List.map (fun e ->
+        (e, List.filter_map (fun (r : Rapid_run.Task_load.event_routine) ->
+             if r.event = e && List.exists (fun n -> String.lowercase_ascii n = String.lowercase_ascii r.routine) debug
+             then Some r.routine else None) events.debug)) [ "START"; "RESTART"; "STEP"; "STOP" ] in
+    let session = D.create ~max_steps ~routine_data ~type_of ~files ~events
         ~hidden:(fun m -> List.mem (String.lowercase_ascii m) hidden) ~out:print_endline cfg in
     (* A person typing commands sees when the session waits for the next one; a script or a
        pipe gets the transcript alone (doc/debugger.md). *)
@@ -92,4 +107,4 @@ let cmd =
   ] in
   Cmd.v (Cmd.info "debug" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
-          $ Run_args.robot_arg $ script $ prompt_text)
+          $ Run_args.robot_and_base_frames $ script $ prompt_text)

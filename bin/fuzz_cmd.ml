@@ -2,6 +2,7 @@
 
 open Cmdliner
 module C = Rapid_fuzz.Campaign
+module R = Rapid_fuzz.Shard_report
 
 let shard_conv =
   let parse s =
@@ -30,6 +31,37 @@ let progress_line started ~done_ ~total ~failures ~rules_seen =
       (String.make filled '#') (String.make (width - filled) '.') done_ total
       (if elapsed > 0. then float done_ /. elapsed else 0.) failures rules_seen
   end
+
+let write_file path text =
+  match open_out_bin path with
+  | oc -> Fun.protect ~finally:(fun () -> close_out_noerr oc) (fun () -> output_string oc text); Ok ()
+  | exception Sys_error m -> Error m
+
+(* --merge-report: the shards' reports into one (Shard_report.merge), written beside their
+   coverage. *)
+let merge_reports ~out files =
+  let dir = Option.value out ~default:"fuzz-report" in
+  let reports = List.map R.read files in
+  match List.find_map (function Error m -> Some m | Ok _ -> None) reports with
+  | Some m -> Printf.eprintf "rapid-sem: %s\n" m; 2
+  | None ->
+  match R.merge (List.filter_map Result.to_option reports) with
+  | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
+  | Ok m ->
+  match
+    (try if not (Sys.file_exists dir) then Sys.mkdir dir 0o755; Ok () with Sys_error e -> Error e)
+    |> Fun.flip Result.bind (fun () ->
+        write_file (Filename.concat dir "report.json")
+          (Rapid_runtime.Json_text.pretty_to_string (R.merged_to_json m) ^ "\n"))
+    |> Fun.flip Result.bind (fun () -> write_file (Filename.concat dir "report.md") (R.merged_to_markdown m))
+    |> Fun.flip Result.bind (fun () ->
+        try Rapid_fuzz.Coverage.write ~dir (R.coverage m); Ok () with Sys_error e -> Error e)
+  with
+  | Error e -> Printf.eprintf "rapid-sem: %s\n" e; 2
+  | Ok () ->
+      print_string (R.merged_to_markdown m);
+      Printf.printf "\nreport: %s, %s\n" (Filename.concat dir "report.md") (Filename.concat dir "report.json");
+      if m.m_failures = [] then 0 else 1
 
 let cmd =
   let count = Arg.(value & opt (positive_int "--count") 1000 & info [ "count" ] ~docv:"N"
@@ -75,11 +107,22 @@ let cmd =
                                  (%s), and stop at the first failure, which a working harness finds (exit 1 then; \
                                  0 would mean the harness missed it)."
                    (String.concat ", " (List.map fst names)))) in
+  let json = Arg.(value & opt (some string) None & info [ "json" ] ~docv:"FILE"
+                    ~doc:"Also write this shard's results to FILE as JSON: its settings, shard, host, programs, \
+                          failures with their reproducers and minimal programs, outcomes, rule counts and times, \
+                          for $(b,--merge-report) (doc/fuzz-campaign.md, \"Campaigns across machines\").") in
+  let merge_report = Arg.(value & opt_all file [] & info [ "merge-report" ] ~docv:"FILE"
+                            ~doc:"Merge the shard reports FILE (written with $(b,--json); repeatable, every shard of \
+                                  one campaign once) into one report, and run no program: DIR/report.json, \
+                                  DIR/report.md, DIR/coverage.json and DIR/coverage.md with DIR from $(b,--out) \
+                                  (default fuzz-report). Exit 0 without failures, 1 with, 2 when the reports are \
+                                  not the shards of one campaign.") in
   let coverage = Arg.(value & flag & info [ "coverage" ]
                         ~doc:"List every rule of the machine with how often it applied, and the rules never \
                               applied.") in
   let run count seed shard (out, merge, break_rule) impl (mismatching, matching_only, no_controller, signal_stores)
-      (mutants, hostile_every, scenarios) coverage =
+      (mutants, hostile_every, scenarios) (json, merge_report) coverage =
+    if merge_report <> [] then merge_reports ~out merge_report else begin
     C.tune_gc ();
     let started = Unix.gettimeofday () in
     let progress = if Unix.isatty Unix.stderr then Some (progress_line started) else None in
@@ -105,7 +148,7 @@ let cmd =
     let s = C.run ~options ~engines:[ engine ] ?external_check ?progress ~mutants ~hostile_every ~scenarios
         ?max_failures ~seed ~count ~shard () in
     if progress <> None then prerr_newline ();
-    List.iter (fun (f : C.failure_found) ->
+    let saved = List.map (fun (f : C.failure_found) ->
         let path = C.save ~dir:(Option.value out ~default:"fuzz-failures") f in
         Printf.printf "FAIL program %d: %s\n  minimal program (%d statements, from %d): %s\n" f.program_index
           (Rapid_fuzz.Fuzz_run.failure_to_string f.failure) f.minimal_size f.original_size path;
@@ -114,7 +157,25 @@ let cmd =
         if List.length lines <= 40 && String.length f.source <= 4000 then
           List.iter (fun l ->
               let printable = String.for_all (fun c -> c >= ' ' && c <= '~') l in
-              if l <> "" then Printf.printf "    | %s\n" (if printable then l else String.escaped l)) lines) s.failures;
+              if l <> "" then Printf.printf "    | %s\n" (if printable then l else String.escaped l)) lines;
+        (f, Filename.basename path)) s.failures in
+    let json_written = match json with
+      | None -> Ok ()
+      | Some file ->
+          let bool b = if b then "true" else "false" in
+          let settings = [ ("seed", string_of_int seed); ("count", string_of_int count);
+                           ("mutants", string_of_int mutants); ("hostile_every", string_of_int hostile_every);
+                           ("scenarios", string_of_int scenarios); ("mismatching", bool options.mismatching);
+                           ("controller", bool options.controller); ("signal_stores", bool options.signal_stores);
+                           ("break_rule", (match break_rule with
+                                | Some m -> Rapid_fuzz.Mutation.name m | None -> "none"));
+                           ("impl", Option.value impl ~default:"none") ] in
+          let reproducer f = List.assq f saved in
+          let r = R.of_summary ~settings ~shard ~host:(Unix.gethostname ()) ~reproducer s in
+          write_file file (Rapid_runtime.Json_text.pretty_to_string (R.to_json r) ^ "\n") in
+    match json_written with
+    | Error m -> Printf.eprintf "rapid-sem: %s\n" m; 2
+    | Ok () ->
     let merged = List.map Rapid_fuzz.Coverage.read merge in
     match List.find_map (function Error m -> Some m | Ok _ -> None) merged with
     | Some m -> Printf.eprintf "rapid-sem: %s\n" m; 2
@@ -136,6 +197,7 @@ let cmd =
       List.iter (fun (r, n) -> Printf.printf "  %-28s %d\n" r n) cov.rules;
     Printf.printf "%d passed, %d failed\n" (s.programs - List.length s.failures) (List.length s.failures);
     if s.failures = [] && cov.failures = 0 then 0 else 1
+    end
   in
   let doc = "generate well-typed RAPID programs and check the semantics' properties on each" in
   let man = [
@@ -147,8 +209,8 @@ let cmd =
         minimal program, saved in DIR with its expected events.";
     `S Manpage.s_exit_status; `P "0 when every program passes; 1 when one fails.";
   ] in
-  let triple a b c = (a, b, c) and quadruple a b c d = (a, b, c, d) in
+  let pair a b = (a, b) and triple a b c = (a, b, c) and quadruple a b c d = (a, b, c, d) in
   Cmd.v (Cmd.info "fuzz" ~doc ~man)
     Term.(const run $ count $ seed $ shard $ (const triple $ out $ merge $ break_rule) $ impl
           $ (const quadruple $ mismatching $ matching_only $ no_controller $ signal_stores)
-          $ (const triple $ mutants $ hostile_every $ scenarios) $ coverage)
+          $ (const triple $ mutants $ hostile_every $ scenarios) $ (const pair $ json $ merge_report) $ coverage)

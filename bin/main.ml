@@ -26,9 +26,10 @@ let parse_cmd =
                  before MODULE or alone on their line inside RECORD, a byte-order mark, a file \
                  without a final line break, \\\\Continue as an argument (doc/dialect.md).")
   in
-  let run files print ast strict =
+  let run files print ast strict robotware =
     Cli.guard @@ fun () ->
-    let options = { Parse.default_options with strict } in
+    let robotware = Option.value robotware ~default:Rapid_syntax.Robotware.default in
+    let options = { Parse.default_options with strict; robotware } in
     let ok = List.fold_left (fun ok file ->
         match Parse.parse_file ~options file with
         | Ok m ->
@@ -50,7 +51,7 @@ let parse_cmd =
     `S Manpage.s_exit_status;
     `P "0 when every file parses; 2 when one does not.";
   ] in
-  Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict)
+  Cmd.v (Cmd.info "parse" ~doc ~man) Term.(const run $ files $ print $ ast $ strict $ Run_args.robotware_arg)
 
 (* What rapid-sem run writes of a run as it goes: with --json every event as a JSON object (each
    naming its task, with several), else the program's output. The closure engine's run of one
@@ -84,7 +85,10 @@ let print_summary (s : Rapid_run.Backup_setup.summary) ends =
             | _ -> "")
         | None, Some m -> "reads " ^ m ^ "'s robot"
         | None, None -> "no robot" in
-      Printf.eprintf "  %s (%s): entry %s, %d module%s, %s: %s\n" t.task t.kind t.entry t.modules
+      let events = match t.event_routines with
+        | [] -> ""
+        | l -> ", event routines " ^ String.concat ", " (List.map (fun (r, e) -> Printf.sprintf "%s (%s)" r e) l) in
+      Printf.eprintf "  %s (%s): entry %s%s, %d module%s, %s: %s\n" t.task t.kind t.entry events t.modules
         (if t.modules = 1 then "" else "s") robot
         (match List.assoc_opt t.task ends with Some o -> outcome_text o | None -> "not started")) s.tasks;
   flush stderr
@@ -108,7 +112,7 @@ let run_sink ~json ~closure_single : Drive.sink =
                   (List.map (fun (t : Rapid_run.Backup_setup.task_summary) ->
                        { EJ.name = t.task; kind = t.kind; entry = t.entry; motion = t.motion; robot = t.robot;
                          robot_type = t.robot_type; stand_in = t.stand_in; reads = t.reads;
-                         modules = t.modules }) s.tasks))
+                         modules = t.modules; event_routines = t.event_routines }) s.tasks))
         else summary := Some s);
     task_end = (fun name o steps -> if json then line (EJ.task_end name o steps) else ends := (name, o) :: !ends);
     run_end = (fun ?entry_at o steps ->
@@ -135,10 +139,11 @@ let run_cmd =
                               $(b,machine) (the small-step machine, the definition, which $(b,trace) and \
                               $(b,debug) run). Without this option, a run with --samples runs on the machine, \
                               which alone has it (doc/semantics.md, \"The second engine\").") in
-  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller robot
-      samples save engine =
+  let run (tasks : Rapid_run.Run_options.tasks) max_steps allow_unknown max_depth retry_limit json controller
+      (robot, base_frames) samples save engine =
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     let engine = Drive.engine ?requested:engine ~samples () in
     let sink = run_sink ~json ~closure_single:(engine = `Closure && tasks.tasks = []) in
     match Drive.run ~notify:Cli.notify sink ~engine ~json ~samples ~save options tasks with
@@ -164,7 +169,7 @@ let run_cmd =
   ] in
   Cmd.v (Cmd.info "run" ~doc ~man)
     Term.(const run $ Run_args.tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ json
-          $ Run_args.controller_args $ Run_args.robot_arg $ Run_args.samples_arg $ save $ engine)
+          $ Run_args.controller_args $ Run_args.robot_and_base_frames $ Run_args.samples_arg $ save $ engine)
 
 let spec_cmd =
   let dir = Arg.(value & pos 0 dir "spec" & info [] ~docv:"DIR" ~doc:"The suite's folder.") in

@@ -69,12 +69,14 @@ let cmd =
   let csv = out "csv" "Write TCP and axis samples as CSV to FILE (t,x,y,z,q1,q2,q3,q4,j1..j6)." in
   let step_ = Arg.(value & opt float 0.01 & info [ "csv-step" ] ~docv:"SECONDS"
                      ~doc:"The CSV's sampling step (default 0.01 s).") in
-  let run files entry max_steps allow_unknown max_depth retry_limit controller robot svg timeline csv csv_step =
+  let run files entry max_steps allow_unknown max_depth retry_limit controller (robot, base_frames) svg timeline csv
+      csv_step =
     if not (csv_step > 0. && csv_step <= 1000.) then (prerr_endline "rapid-sem: --csv-step takes a step above 0 and at \
                                                                      most 1000 s"; 2)
     else
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+    in
     match Rapid_run.Run_setup.start_machine ~history:true ~notify:Cli.notify options files ~entry with
     | Error f -> Cli.failure f
     | Ok (cfg, w) ->
@@ -119,4 +121,4 @@ let cmd =
   ] in
   Cmd.v (Cmd.info "motion" ~doc ~man)
     Term.(const run $ files $ entry $ max_steps $ allow_unknown $ max_depth $ retry_limit $ Run_args.controller_args
-          $ Run_args.robot_arg $ svg $ timeline $ csv $ step_)
+          $ Run_args.robot_and_base_frames $ svg $ timeline $ csv $ step_)

@@ -79,6 +79,19 @@ let services_args =
   Term.(const (fun fs fs_quota net map_address egm_device -> { O.fs; fs_quota; net; map_address; egm_device })
         $ fs $ quota $ net $ map $ egm)
 
+let robotware_conv =
+  let parse s = match Rapid_syntax.Robotware.of_string s with
+    | Some r -> Ok r
+    | None -> Error (`Msg (Printf.sprintf "expected 5, 6 or 7 (a RobotWare release), found %S" s)) in
+  Arg.conv (parse, fun f r -> Format.pp_print_string f (Rapid_syntax.Robotware.to_string r))
+
+(* R-2.4-rw6. *)
+let robotware_arg =
+  Arg.(value & opt (some robotware_conv) None & info [ "robotware" ] ~docv:"RELEASE"
+         ~doc:"The RobotWare release the modules are written for: 7 (the manual's, the default) or 5 and 6, \
+               where BREAK and CONTINUE are names and Break is an instruction (doc/dialect.md). A backup's \
+               backinfo.txt gives it when this option does not.")
+
 let controller_args =
   let module W = Rapid_controller.World in
   let statement_time =
@@ -91,14 +104,26 @@ let controller_args =
   let epoch = Arg.(value & opt epoch_conv W.default_epoch & info [ "epoch" ] ~docv:"YYYY-MM-DDTHH:MM:SS"
                      ~doc:"The wall-clock time at virtual time 0, for CDate, CTime and GetTime (default \
                            2024-01-01T00:00:00).") in
-  Term.(const (fun io statement_time max_time epoch services -> { O.io; statement_time; max_time; epoch; services })
-        $ io_arg $ statement_time $ max_time $ epoch $ services_args)
+  Term.(const (fun io statement_time max_time epoch services robotware ->
+      { O.io; statement_time; max_time; epoch; services; robotware; units = [] })
+        $ io_arg $ statement_time $ max_time $ epoch $ services_args $ robotware_arg)
+
+let base_frame_arg =
+  Arg.(value & opt_all string [] & info [ "base-frame" ] ~docv:"[TASK=]X,Y,Z,Q1,Q2,Q3,Q4"
+         ~doc:"Where the cell mounts the robot: its base frame in the world frame, the origin in mm and the \
+               orientation as a unit quaternion, as a RAPID pose (doc/rulings.md R-bk-12). Robtargets in wobj0 are in \
+               the world frame; CRobT, CPos and CalcRobT answer through the base frame. Without TASK= the run's \
+               robot (the one task's, or the motion task's); with TASK=, with several tasks, that task's robot: a \
+               backup's motion task, or any task of --task, which then has a robot of its own. Overrides MOC.cfg's \
+               base frame.")
 
 let robot_arg =
   Arg.(value & opt (some string) None & info [ "robot" ] ~docv:"FILE|NAME"
          ~doc:"The robot: a description file (doc/motion.md, \"The robot description\"), or else a robot of the \
                library by its name (irb2400-10-1.5), its model (irb7600) or a MOC.cfg robot type \
                (ROB1_2400_1.5_10; doc/motion.md, \"The robot library\"); default the built-in ABB IRB 120.")
+
+let robot_and_base_frames = Term.(const (fun r b -> (r, b)) $ robot_arg $ base_frame_arg)
 
 let samples_arg =
   Arg.(value & opt (some float) None & info [ "samples" ] ~docv:"HZ"
@@ -149,7 +174,7 @@ let tasks_args =
   Term.(const (fun files entries tasks schedule motion_task -> { O.files; entries; tasks; schedule; motion_task })
         $ files $ entry $ tasks $ schedule $ motion_task)
 
-let options ~max_steps ~allow_unknown:(allow_unknown, stub_unmodelled) ~max_depth ~retry_limit:(retry_limit, max_memory)
-    ~controller ~robot =
-  { O.max_steps; allow_unknown; stub_unmodelled; controller; robot;
+let options ?(base_frames = []) ~max_steps ~allow_unknown:(allow_unknown, stub_unmodelled) ~max_depth
+    ~retry_limit:(retry_limit, max_memory) ~controller ~robot () =
+  { O.max_steps; allow_unknown; stub_unmodelled; controller; robot; base_frames;
     limits = { max_call_depth = max_depth; retry_limit; max_memory } }

@@ -12,12 +12,21 @@ val count : what:string -> int Arg.conv
 val io_arg : string option Term.t
 (** --io FILE *)
 
+val robotware_arg : Rapid_syntax.Robotware.t option Term.t
+(** --robotware 5|6|7 (doc/dialect.md, R-2.4-rw6). *)
+
 val controller_args : Rapid_run.Run_options.controller Term.t
 (** --io, --statement-time, --max-time, --epoch and the services' options (doc/controller.md,
     doc/services.md). *)
 
 val robot_arg : string option Term.t
 (** --robot FILE (doc/motion.md) *)
+
+val base_frame_arg : string list Term.t
+(** each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (doc/rulings.md R-bk-12) *)
+
+val robot_and_base_frames : (string option * string list) Term.t
+(** --robot and --base-frame, as the commands that run a task take them *)
 
 val samples_arg : float option Term.t
 (** --samples HZ *)
@@ -32,6 +41,6 @@ val tasks_args : Rapid_run.Run_options.tasks Term.t
     them. *)
 
 val options :
-  max_steps:int -> allow_unknown:bool * bool -> max_depth:int -> retry_limit:int * int ->
-  controller:Rapid_run.Run_options.controller -> robot:string option -> Rapid_run.Run_options.t
+  ?base_frames:string list -> max_steps:int -> allow_unknown:bool * bool -> max_depth:int -> retry_limit:int * int ->
+  controller:Rapid_run.Run_options.controller -> robot:string option -> unit -> Rapid_run.Run_options.t
 (** The options of a run, from the values of the terms above. *)

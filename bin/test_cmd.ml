@@ -31,7 +31,7 @@ let cmd =
   let run files max_steps allow_unknown max_depth retry_limit controller robot filter jobs junit coverage cobertura
       progress engine =
     Cli.guard @@ fun () ->
-    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+    let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot () in
     let want_coverage = coverage <> None || cobertura <> None in
     let regex = match filter with
       | None -> Ok None

@@ -263,12 +263,15 @@ let cmd =
                    ~doc:"Last step printed.") in
   let rules = Arg.(value & opt (some string) None & info [ "rules" ] ~docv:"PATTERN"
                      ~doc:"Print only the steps whose rule name contains PATTERN (reduction level).") in
-  let run tasks max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller robot samples =
+  let run tasks max_steps allow_unknown max_depth retry_limit format level from_ to_ rules controller
+      (robot, base_frames) samples =
     Cli.guard @@ fun () ->
     match Rapid_run.Tcp_samples.check samples with
     | Error m -> prerr_endline m; Cli.exit_static_error
     | Ok () ->
-        let options = Run_args.options ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot in
+        let options =
+          Run_args.options ~base_frames ~max_steps ~allow_unknown ~max_depth ~retry_limit ~controller ~robot ()
+        in
         match Steps.start ~history:(samples <> None && format = `Jsonl) ~notify:Cli.notify options tasks with
         | Error f -> Cli.failure f
         | Ok run -> trace run ~format ~level ~from_ ~to_ ~rules ~samples ~max_steps
@@ -287,4 +290,4 @@ let cmd =
   ] in
   Cmd.v (Cmd.info "trace" ~doc ~man)
     Term.(const run $ Run_args.tasks_args $ max_steps $ allow_unknown $ max_depth $ retry_limit $ format $ level
-          $ from_ $ to_ $ rules $ Run_args.controller_args $ Run_args.robot_arg $ Run_args.samples_arg)
+          $ from_ $ to_ $ rules $ Run_args.controller_args $ Run_args.robot_and_base_frames $ Run_args.samples_arg)

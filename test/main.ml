@@ -13,9 +13,11 @@ let () =
       Test_semantics.suite;
       Test_values.suite;
       Test_campaign.suite;
+      Test_fuzz_verdicts.suite;
       Test_memory.suite;
       Test_motion.suite;
       Test_ext_axes.suite;
+      Test_base_frame.suite;
       Test_robot_library.suite;
       Test_controller.suite;
       Test_installed.suite;
@@ -41,6 +43,7 @@ let () =
       Test_observation.suite;
       Test_realprog2.suite;
       Test_backup.suite;
+      Test_event_routines.suite;
       Test_utf8_output.suite;
       Test_layers.suite;
       Test_drivers.suite;

@@ -237,6 +237,133 @@ let scenario_reproduces () =
     Rapid_fuzz.Scenario_gen.kinds;
   ignore (Sys.command (Printf.sprintf "rm -rf %s %s" (Filename.quote dir) (Filename.quote bin)))
 
+(* Shard reports (rapid-sem fuzz --json, bench/slurm): the merge of shards 1/3, 2/3 and 3/3 has
+   the totals and failures of one unsharded run of the same programs. An engine that drops the
+   output events makes failures (each shrunk) to merge; mutants and hostile texts are on. *)
+module R = Rapid_fuzz.Shard_report
+
+let has text part =
+  let n = String.length part in
+  let rec at i = i + n <= String.length text && (String.sub text i n = part || at (i + 1)) in
+  at 0
+
+let read file =
+  let ic = open_in_bin file in
+  Fun.protect ~finally:(fun () -> close_in ic) (fun () -> really_input_string ic (in_channel_length ic))
+
+let no_output =
+  Rapid_fuzz.Fuzz_run.{ engine_name = "no-output";
+                        run = (fun p ~max_steps ->
+                            let o = machine.run p ~max_steps in
+                            { o with events = List.filter (fun e -> String.sub e 0 6 <> "output") o.events }) }
+
+let settings = [ ("seed", "11"); ("count", "30"); ("engine", "no-output") ]
+
+let shard_report shard =
+  let s = C.run ~engines:[ no_output ] ~seed:11 ~count:30 ~shard () in
+  let reproducer (f : C.failure_found) = Printf.sprintf "fuzz-%d.mod" f.program_index in
+  let r = R.of_summary ~settings ~shard ~host:"test" ~reproducer s in
+  (* through its JSON, as the merge reads it *)
+  match R.of_json (Yojson.Safe.from_string (Yojson.Safe.to_string (R.to_json r))) with
+  | Ok r' ->
+      Alcotest.(check string) "the JSON reads back" (Yojson.Safe.to_string (R.to_json r))
+        (Yojson.Safe.to_string (R.to_json r'));
+      r'
+  | Error m -> Alcotest.failf "its own report: %s" m
+
+let shard_reports = lazy (List.map (fun k -> shard_report { C.index = k; count = 3 }) [ 3; 1; 2 ])
+let whole_report = lazy (shard_report whole)
+
+let merged_or_fail reports = match R.merge reports with Ok m -> m | Error e -> Alcotest.failf "merge: %s" e
+
+(* what an unsharded run and a merge must share: all but the shards' hosts and times *)
+let comparable (j : Yojson.Safe.t) =
+  match j with
+  | `Assoc l -> Yojson.Safe.to_string (`Assoc (List.filter (fun (k, _) -> k <> "shards") l))
+  | _ -> Alcotest.fail "a report is an object"
+
+let merge_is_unsharded () =
+  let sharded = merged_or_fail (Lazy.force shard_reports) and one = merged_or_fail [ Lazy.force whole_report ] in
+  Alcotest.(check bool) "there are failures to merge" true (List.length one.m_failures >= 3);
+  Alcotest.(check int) "programs" 30 sharded.m_programs;
+  (* the unsharded run's own report, not its merge: the same failures in the same order *)
+  let run = Lazy.force whole_report in
+  Alcotest.(check (list int)) "failures in the order of the unsharded run"
+    (List.map (fun (f : R.failure_entry) -> f.program) run.failures)
+    (List.map (fun (f : R.failure_entry) -> f.program) sharded.m_failures);
+  Alcotest.(check (list (pair string int))) "rule counts" run.rules sharded.m_rules;
+  Alcotest.(check (list (pair string int))) "outcomes" run.outcomes sharded.m_outcomes;
+  Alcotest.(check bool) "the failures themselves" true (run.failures = sharded.m_failures);
+  Alcotest.(check string) "the report but its shards' figures" (comparable (R.merged_to_json one))
+    (comparable (R.merged_to_json sharded));
+  Alcotest.(check int) "shards listed" 3 (List.length sharded.shards);
+  let md = R.merged_to_markdown sharded in
+  List.iter (fun (f : R.failure_entry) ->
+      let where = Printf.sprintf "shard-%d/fuzz-%d.mod" (f.program mod 3 + 1) f.program in
+      Alcotest.(check bool) (where ^ " in the report") true (has md where)) sharded.m_failures;
+  (* the coverage of the merge is that of the unsharded run too *)
+  let coverage m = Yojson.Safe.to_string (Rapid_fuzz.Coverage.to_json { (R.coverage m) with cpu_seconds = 0. }) in
+  Alcotest.(check string) "coverage" (coverage one) (coverage sharded)
+
+let merge_refuses () =
+  let reports = Lazy.force shard_reports in
+  let refused what reports fragment =
+    match R.merge reports with
+    | Ok _ -> Alcotest.failf "%s: merged" what
+    | Error m -> Alcotest.(check bool) (Printf.sprintf "%s: %s" what m) true (has m fragment) in
+  refused "a shard missing" (List.tl reports) "missing";
+  refused "a shard twice" (List.hd reports :: reports) "more than once";
+  refused "another campaign" ({ (List.hd reports) with settings = [ ("seed", "12") ] } :: List.tl reports)
+    "same campaign";
+  refused "nothing" [] "no shard";
+  List.iter (fun text ->
+      match R.of_json (Yojson.Safe.from_string text) with
+      | Ok _ -> Alcotest.failf "read %s" text
+      | Error m -> Alcotest.(check bool) m true (has m "not a shard report"))
+    [ "[]"; "{}"; {|{"format": "rapid-sem fuzz shard 0"}|};
+      Yojson.Safe.to_string (match R.to_json (List.hd reports) with
+          | `Assoc l -> `Assoc (List.remove_assoc "rules" l) | j -> j) ]
+
+(* The scripts of bench/slurm without Slurm: merge.sh on shard reports written here, and
+   rapid-sem fuzz --json as a task runs it, its usual output unchanged. *)
+let merge_script () =
+  let binary = Filename.concat (Sys.getcwd ()) "../bin/main.exe" in
+  let script = Filename.concat (Sys.getcwd ()) "../bench/slurm/merge.sh" in
+  let dir = Filename.temp_file "rapid-fuzz-merge" "" in
+  Sys.remove dir; Sys.mkdir dir 0o755;
+  let write name text = let oc = open_out_bin (Filename.concat dir name) in output_string oc text; close_out oc in
+  List.iter (fun (r : R.t) ->
+      write (Printf.sprintf "shard-%d.json" r.shard.index) (Yojson.Safe.to_string (R.to_json r)))
+    (Lazy.force shard_reports);
+  let merge () =
+    Sys.command (Printf.sprintf "RAPID_SEM=%s bash %s %s 3 > %s 2>&1" (Filename.quote binary) (Filename.quote script)
+                   (Filename.quote dir) (Filename.quote (Filename.concat dir "out"))) in
+  Alcotest.(check int) "exit 1: failures" 1 (merge ());
+  let report = Yojson.Safe.from_file (Filename.concat dir "report.json") in
+  let unsharded = R.merged_to_json (merged_or_fail [ Lazy.force whole_report ]) in
+  Alcotest.(check string) "report.json is the unsharded run's" (comparable unsharded) (comparable report);
+  List.iter (fun f -> Alcotest.(check bool) f true (Sys.file_exists (Filename.concat dir f)))
+    [ "report.md"; "coverage.json"; "coverage.md" ];
+  Sys.remove (Filename.concat dir "shard-2.json");
+  Alcotest.(check int) "exit 2: a shard missing" 2 (merge ());
+  let out = read (Filename.concat dir "out") in
+  Alcotest.(check bool) ("names the shard: " ^ out) true (has out "shard 2 of 3");
+  (* --json beside the usual output, which it leaves as it was *)
+  let fuzz extra = Sys.command (Printf.sprintf "%s fuzz --count 20 --seed 4 --shard 2/2 --out %s %s > %s 2>&1"
+                                  (Filename.quote binary) (Filename.quote (Filename.concat dir "f")) extra
+                                  (Filename.quote (Filename.concat dir "log"))) in
+  let log () =
+    read (Filename.concat dir "log")
+    |> String.split_on_char '\n' |> List.filter (fun l -> not (has l " programs/s ")) in
+  Alcotest.(check int) "plain" 0 (fuzz "");
+  let plain = log () in
+  Alcotest.(check int) "with --json" 0 (fuzz ("--json " ^ Filename.quote (Filename.concat dir "s.json")));
+  Alcotest.(check (list string)) "the same output" plain (log ());
+  (match R.read (Filename.concat dir "s.json") with
+   | Ok r -> Alcotest.(check (pair int int)) "shard 2/2, 10 programs" (2, 10) (r.shard.index, r.programs)
+   | Error m -> Alcotest.fail m);
+  ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))
+
 let suite =
   ("campaign", [
       Alcotest.test_case "a bounded campaign" `Slow bounded_campaign;
@@ -251,4 +378,7 @@ let suite =
       Alcotest.test_case "coverage merges" `Quick coverage_merges;
       Alcotest.test_case "generator forms" `Quick generator_forms;
       Alcotest.test_case "scenarios reach every rule" `Slow scenarios_reach_rules;
-      Alcotest.test_case "a saved scenario runs again" `Quick scenario_reproduces ])
+      Alcotest.test_case "a saved scenario runs again" `Quick scenario_reproduces;
+      Alcotest.test_case "shard reports merge to the unsharded run's" `Quick merge_is_unsharded;
+      Alcotest.test_case "shard reports of another campaign refused" `Quick merge_refuses;
+      Alcotest.test_case "bench/slurm/merge.sh and fuzz --json" `Quick merge_script ])

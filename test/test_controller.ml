@@ -28,7 +28,7 @@ let stimulus_errors () =
   check "digital" "t.io:2:10: io error: a digital signal takes the value 0 or 1" "signal di1 di\nat 1 di1 2";
   check "twice" "t.io:2:8: io error: the signal DI1 is declared twice" "signal di1 di\nsignal DI1 do";
   check "name" "t.io:1:8: io error: \"1x\" is not a RAPID identifier (§2.3), so it cannot name a signal" "signal 1x di";
-  check "entry" "t.io:1:1: io error: unknown entry \"sig\" (signal or at)" "sig di1 di";
+  check "entry" "t.io:1:1: io error: unknown entry \"sig\" (signal, at or system-input)" "sig di1 di";
   check "number" "t.io:2:4: io error: \"soon\" is not a decimal number (such as 1, 0.25 or 1e-3)"
     "signal di1 di\nat soon di1 1";
   Alcotest.(check string) "missing file" "no-such.io:1:1: io error: cannot read the file (no-such.io: No such file or directory)"
@@ -43,6 +43,32 @@ let eio_file () =
       Alcotest.(check (float 0.)) "default" 2.5 (List.nth c.signals 1).initial;
       Alcotest.(check string) "missing type" "t.io:2:1: io error: an EIO_SIGNAL entry without -SignalType"
         (error_of "EIO_SIGNAL:\n  -Name \"a\"\n")
+
+(* R-13-speedlim1: EIO.cfg's SYSSIG_IN and a stimulus's system-input lines; LimitSpeed is active
+   while its digital input is 1. A SYSSIG_IN entry of an unconfigured signal starts nothing; a
+   system-input line names a declared DI. *)
+let system_inputs () =
+  let eio = "EIO:CFG_1.0:6:1::\nEIO_SIGNAL:\n  -Name \"diLim\" -SignalType \"DI\"\n#\nSYSSIG_IN:\n\n\
+             \  -Signal \"diMotOn\" -Action \"MotorOn\"\n  -Signal \"diLim\" -Action \"LimitSpeed\" \\\n\
+             \    -Arg6 \"ROB_1\"\n#\n" in
+  (match parse eio with
+   | Error m -> Alcotest.fail m
+   | Ok c ->
+       Alcotest.(check (list (pair string string))) "SYSSIG_IN" [ ("LimitSpeed", "diLim") ]
+         (List.map (fun (si : Io.system_input) -> (si.action, si.input)) c.system_inputs);
+       Alcotest.(check string) "-Arg6" "ROB_1" (List.hd c.system_inputs).arg6);
+  (match parse "signal di_lim di\nsystem-input LimitSpeed di_lim ROB_1\nat 1 di_lim 1\n" with
+   | Error m -> Alcotest.fail m
+   | Ok c ->
+       let w = W.create c in
+       Alcotest.(check bool) "inactive at 0" false (W.system_input_active w ~action:"LimitSpeed");
+       W.advance_to w 1.;
+       Alcotest.(check bool) "active at 1" true (W.system_input_active w ~action:"limitspeed");
+       Alcotest.(check bool) "another action" false (W.system_input_active w ~action:"MotorOn"));
+  Alcotest.(check string) "undeclared" "t.io:1:25: io error: the signal di_x is not declared above"
+    (error_of "system-input LimitSpeed di_x\n");
+  Alcotest.(check string) "not a DI" "t.io:2:25: io error: do1 is not a digital input: a system input is one"
+    (error_of "signal do1 do\nsystem-input LimitSpeed do1\n")
 
 (* A million statements of 1 microsecond are exactly one second: the clock counts
    microseconds, not sums of floats. *)
@@ -278,6 +304,7 @@ let suite =
       Alcotest.test_case "the stimulus file" `Quick stimulus_file;
       Alcotest.test_case "errors in the stimulus file: FILE:LINE:COL" `Quick stimulus_errors;
       Alcotest.test_case "EIO.cfg: EIO_SIGNAL entries" `Quick eio_file;
+      Alcotest.test_case "system inputs: SYSSIG_IN, system-input (R-13-speedlim1)" `Quick system_inputs;
       Alcotest.test_case "the io reader never raises" `Quick never_raises;
       Alcotest.test_case "numbers checked against what they feed (R-8-numbers1)" `Quick numbers_checked;
       Alcotest.test_case "EIO.cfg numbers: -DeviceMap, -MinLog/-MaxLog, at the word" `Quick eio_numbers;

@@ -46,7 +46,9 @@ let golden_sessions () =
   |> List.filter (fun f -> Filename.check_suffix f ".cmd")
   |> List.filter_map (fun f ->
       match String.split_on_char ' ' (String.trim (read_file (Filename.concat "golden" f))) with
-      | "debug" :: "--script" :: script :: files ->
+      | "debug" :: "--script" :: script :: files
+        when not (List.exists (fun p -> Sys.is_directory (Filename.concat "golden" p)) files) ->
+          (* A backup's session (a folder, test/golden/backup-events-debug) is the command line's. *)
           let in_golden p = Filename.concat "golden" p in
           Some (List.map in_golden files,
                 String.split_on_char '\n' (read_file (in_golden script)))

@@ -149,7 +149,7 @@ let euler_of (w, x, y, z) =
    deg (Float.asin (Float.max (-1.) (Float.min 1. (2. *. ((w *. y) -. (x *. z)))))),
    deg (Float.atan2 (2. *. ((x *. y) +. (w *. z))) (1. -. (2. *. ((y *. y) +. (z *. z))))))
 
-let egm_pose ?(euler = false) engine () =
+let egm_pose ?(euler = false) ?(extra = []) engine () =
   with_dir (fun dir ->
       let goal = ref None in
       let reply (r : E.robot) =
@@ -167,7 +167,7 @@ let egm_pose ?(euler = false) engine () =
               else { E.pos = Some p; orient = Some q; euler = None } in
             { E.empty_sensor with set_pose = Some set }
         | None -> E.empty_sensor in
-      let feedback, out = run_with_sensor ~reply ~driver:"drivers/EgmPose.mod" engine dir in
+      let feedback, out = run_with_sensor ~extra ~reply ~driver:"drivers/EgmPose.mod" engine dir in
       let (gx, gy, gz), (g1, g2, g3, g4) = match !goal with Some g -> g | None -> Alcotest.fail "no feedback pose" in
       Alcotest.(check bool) "more than 50 cycles" true (List.length feedback > 50);
       let last = List.nth feedback (List.length feedback - 1) in
@@ -199,58 +199,43 @@ let egm_collision engine () =
 
 let egm_joint engine () =
   with_dir (fun dir ->
-      let sock = Unix.socket Unix.PF_INET Unix.SOCK_DGRAM 0 in
-      Fun.protect ~finally:(fun () -> Unix.close sock) (fun () ->
-          Unix.bind sock (Unix.ADDR_INET (Unix.inet_addr_loopback, 0));
-          let port = match Unix.getsockname sock with Unix.ADDR_INET (_, p) -> p | _ -> assert false in
-          let out = Filename.concat dir "out.txt" in
-          let fd_out = Unix.openfile out [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC ] 0o600 in
-          let devnull = Unix.openfile "/dev/null" [ Unix.O_RDWR ] 0 in
-          let args = [ binary; "run"; "--engine"; engine; "--max-time"; "30";
-                       "--egm-device"; Printf.sprintf "EGMSensor=127.0.0.1:%d" port; "drivers/EgmJoint.mod" ] in
-          let pid = Unix.create_process binary (Array.of_list args) devnull fd_out fd_out in
-          Unix.close fd_out; Unix.close devnull;
-          let feedback = try sense sock with e -> ignore (wait_bounded pid 0.); raise e in
-          (match wait_bounded pid 10. with
-           | Some (Unix.WEXITED 0) -> ()
-           | _ -> Alcotest.fail ("the program did not end with status 0: " ^ read_file out));
-          Alcotest.(check bool) "more than 50 cycles" true (List.length feedback > 50);
-          (* The sequence numbers count the cycles; the time stamps go on by 4 ms a cycle. *)
-          List.iteri (fun i (r : E.robot) ->
-              Alcotest.(check (option int)) "seqno" (Some (i + 1)) r.r_header.seqno;
-              Alcotest.(check (option int)) "mtype" (Some E.mtype_data) r.r_header.mtype) feedback;
-          let tms = List.filter_map (fun (r : E.robot) -> r.r_header.tm) feedback in
-          List.iteri (fun i t -> if i > 0 && t - List.nth tms (i - 1) <> 4 then
-                         Alcotest.failf "time stamps %d then %d" (List.nth tms (i - 1)) t) tms;
-          let joints (r : E.robot) = Option.value r.feedback_joints ~default:[] in
-          let first = List.hd feedback and last = List.nth feedback (List.length feedback - 1) in
-          List.iter (fun v -> Alcotest.(check (float 1e-9)) "first feedback: the robot at 0" 0. v) (joints first);
-          List.iter2 (fun t v -> if Float.abs (t -. v) > 0.1 then Alcotest.failf "last feedback %g, target %g" v t)
-            targets (joints last);
-          Alcotest.(check (option bool)) "convergence met at the end" (Some true) last.convergence_met;
-          (* The feedback moves towards the targets and never beyond them. *)
-          List.iter (fun (r : E.robot) ->
-              List.iter2 (fun t v -> if Float.abs v > Float.abs t +. 1e-6 then Alcotest.failf "feedback %g beyond %g" v t)
-                targets (joints r)) feedback;
-          (* An axis moves at most \MaxSpeedDeviation (200 degrees/s) for a cycle of 4 ms, ramped in
-             over \RampInTime (0.05 s): 0.8 degrees a cycle, 0.064 in the first. *)
-          let steps = List.mapi (fun i (r : E.robot) -> (i, joints r)) feedback in
-          List.iter (fun (i, q) ->
-              if i > 0 then begin
-                let before = snd (List.nth steps (i - 1)) in
-                let limit = 0.8 *. Float.min 1. (float_of_int i *. 0.004 /. 0.05) +. 1e-6 in
-                List.iter2 (fun a b -> if Float.abs (b -. a) > limit then
-                               Alcotest.failf "cycle %d: a step of %g degrees, at most %g" i (b -. a) limit) before q
-              end) steps;
-          Alcotest.(check bool) "J6 needs 56 cycles of 0.8 degrees at least" true (List.length feedback > 56);
-          (* The Cartesian feedback is the flange where CRobT finds it. *)
-          let x, y, z = match last.feedback_pose with
-            | Some { E.pos = Some p; _ } -> p | _ -> Alcotest.fail "no Cartesian feedback" in
-          let out = read_file out in
-          let flange = Printf.sprintf "flange %.2f %.2f %.2f" x y z in
-          Alcotest.(check string) "program output"
-            ("egm state before the run 1\negm state after the run 1\n\
-              joints 10.00 -20.00 15.00 5.00 30.00 -45.00\n" ^ flange ^ "\negm state after the reset 0\n") out))
+      let feedback, out = run_with_sensor engine dir in
+      Alcotest.(check bool) "more than 50 cycles" true (List.length feedback > 50);
+      (* The sequence numbers count the cycles; the time stamps go on by 4 ms a cycle. *)
+      List.iteri (fun i (r : E.robot) ->
+          Alcotest.(check (option int)) "seqno" (Some (i + 1)) r.r_header.seqno;
+          Alcotest.(check (option int)) "mtype" (Some E.mtype_data) r.r_header.mtype) feedback;
+      let tms = List.filter_map (fun (r : E.robot) -> r.r_header.tm) feedback in
+      List.iteri (fun i t -> if i > 0 && t - List.nth tms (i - 1) <> 4 then
+                     Alcotest.failf "time stamps %d then %d" (List.nth tms (i - 1)) t) tms;
+      let joints (r : E.robot) = Option.value r.feedback_joints ~default:[] in
+      let first = List.hd feedback and last = List.nth feedback (List.length feedback - 1) in
+      List.iter (fun v -> Alcotest.(check (float 1e-9)) "first feedback: the robot at 0" 0. v) (joints first);
+      List.iter2 (fun t v -> if Float.abs (t -. v) > 0.1 then Alcotest.failf "last feedback %g, target %g" v t)
+        targets (joints last);
+      Alcotest.(check (option bool)) "convergence met at the end" (Some true) last.convergence_met;
+      (* The feedback moves towards the targets and never beyond them. *)
+      List.iter (fun (r : E.robot) ->
+          List.iter2 (fun t v -> if Float.abs v > Float.abs t +. 1e-6 then Alcotest.failf "feedback %g beyond %g" v t)
+            targets (joints r)) feedback;
+      (* An axis moves at most \MaxSpeedDeviation (200 degrees/s) for a cycle of 4 ms, ramped in
+         over \RampInTime (0.05 s): 0.8 degrees a cycle, 0.064 in the first. *)
+      let steps = List.mapi (fun i (r : E.robot) -> (i, joints r)) feedback in
+      List.iter (fun (i, q) ->
+          if i > 0 then begin
+            let before = snd (List.nth steps (i - 1)) in
+            let limit = 0.8 *. Float.min 1. (float_of_int i *. 0.004 /. 0.05) +. 1e-6 in
+            List.iter2 (fun a b -> if Float.abs (b -. a) > limit then
+                           Alcotest.failf "cycle %d: a step of %g degrees, at most %g" i (b -. a) limit) before q
+          end) steps;
+      Alcotest.(check bool) "J6 needs 56 cycles of 0.8 degrees at least" true (List.length feedback > 56);
+      (* The Cartesian feedback is the flange where CRobT finds it. *)
+      let x, y, z = match last.feedback_pose with
+        | Some { E.pos = Some p; _ } -> p | _ -> Alcotest.fail "no Cartesian feedback" in
+      let flange = Printf.sprintf "flange %.2f %.2f %.2f" x y z in
+      Alcotest.(check string) "program output"
+        ("egm state before the run 1\negm state after the run 1\n\
+          joints 10.00 -20.00 15.00 5.00 30.00 -45.00\n" ^ flange ^ "\negm state after the reset 0\n") out)
 
 (* No sensor answers: EGMRunJoint ends with ERR_UDPUC_COMM after \CommTimeout, which the
    program's handler takes. *)
@@ -276,5 +261,9 @@ let suite = ("egm", [
     Alcotest.test_case "a collision during the run, the machine" `Quick (egm_collision "machine");
     Alcotest.test_case "pose-mode EGM with a sensor on the loopback" `Quick (egm_pose "closure");
     Alcotest.test_case "pose-mode EGM with a sensor, Euler angles, the machine" `Quick (egm_pose ~euler:true "machine");
+    (* The robot at a base frame 30 degrees about z and away from the world's origin (R-bk-12):
+       the work object frame of the guidance is brought into the base frame. *)
+    Alcotest.test_case "pose-mode EGM, the robot at a moved and turned base frame" `Quick
+      (egm_pose ~extra:[ "--base-frame"; "300,-200,100,0.9659258,0,0,0.2588190" ] "closure");
     Alcotest.test_case "no sensor: ERR_UDPUC_COMM after CommTimeout" `Quick egm_timeout;
   ])

@@ -862,6 +862,7 @@ let controller_runs () =
 let memory_budget () =
   let text = {rapid|MODULE mem
   VAR num table{20} := [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20];
+  VAR num calls := 0;
   PROC down(num n, string s, \num extra{*})
     VAR num work{8};
     TPWrite "depth " \Num:=n;
@@ -886,6 +887,25 @@ let memory_budget () =
   PROC main3()
     down3 1;
   ENDPROC
+  FUNC pos shift(pos p, num dx, string s, num dz)
+    VAR pos q;
+    q := p;
+    q.x := p.x + dx + StrLen(s);
+    q.z := dz;
+    RETURN q;
+  ENDFUNC
+  PROC down4(num n, string s, INOUT num total, VAR num count)
+    VAR pos p;
+    total := total + StrLen(StrPart(s + "abc", 1, 2));
+    count := count + 1;
+    p := shift(p, n, s + "x", StrLen(s));
+    TPWrite "depth4 " \Num:=p.x;
+    down4 n + 1, s, total, calls;
+  ENDPROC
+  PROC main4()
+    VAR num t := 0;
+    down4 1, "abcdefghijabcdefghijabcdefghijabcdefghijabcdefghij", t, calls;
+  ENDPROC
 ENDMODULE
 |rapid} in
   let program = load_text "mem" text in
@@ -899,7 +919,7 @@ ENDMODULE
            | _ -> Alcotest.failf "budget %d, %s: %s / %s" max_memory entry (outcome_text m_outcome) (outcome_text c_outcome));
           (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "budget %d, %s: %s" max_memory entry d);
           Alcotest.(check bool) "some calls ran" true (List.length c_events > 4))
-        [ "main"; "main2"; "main3" ])
+        [ "main"; "main2"; "main3"; "main4" ])
     [ 40_000; 60_000; 90_001 ]
 
 (* Found by the fuzzing campaign (rapid-sem fuzz --seed 7 --mismatching, program 771): an index

@@ -80,6 +80,31 @@ let installed_ids_kept () =
   Alcotest.(check (list string)) "the installed modules' files" before (names ());
   Alcotest.(check bool) "they have names" true (List.for_all (fun n -> n <> "") before)
 
+(* R-13-choice1: SearchL's "Signal | PersBool" is a required choice (Installed_choices): a signal
+   or a PERS bool in that place, by type or by name; a VAR bool is refused for PersBool (PERS),
+   and a missing argument names both alternatives. *)
+let required_choice () =
+  let errors text =
+    let m = parse "c.mod" text in
+    List.filter_map (fun (r : Rapid_typing.Report.t) ->
+        if r.severity = Rapid_typing.Report.Error then
+          let p = Source.start r.region in Some (Printf.sprintf "%d:%d %s" p.line p.col r.rule)
+        else None) (check [ m ]).reports in
+  let prog call =
+    "MODULE c\n  PERS bool pb := FALSE;\n  VAR bool vb;\n  VAR signaldi sdi;\n  VAR robtarget f;\n\
+     \  CONST robtarget t := [[300,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n\
+     \  PROC main()\n    " ^ call ^ "\n  ENDPROC\nENDMODULE\n" in
+  Alcotest.(check (list string)) "a signal" [] (errors (prog "SearchL \\Stop, sdi, f, t, v100, tool0;"));
+  Alcotest.(check (list string)) "a PERS bool" [] (errors (prog "SearchL \\SStop, pb, f, t, v100, tool0;"));
+  Alcotest.(check (list string)) "named" [] (errors (prog "SearchJ PersBool:=pb, f, t, v100, tool0;"));
+  Alcotest.(check (list string)) "a VAR bool" [ "8:20 access-mode" ]
+    (errors (prog "SearchL \\Stop, vb, f, t, v100, tool0;"));
+  Alcotest.(check (list string)) "a wrong name" [ "8:13 argument-name" ]
+    (errors (prog "SearchL Sensor:=pb, f, t, v100, tool0;"));
+  Alcotest.(check bool) "\\PersBool is not optional" true
+    (List.exists (fun e -> e = "8:19 argument-required")
+       (errors (prog "SearchL \\Stop \\PersBool:=pb, f, t, v100, tool0;")))
+
 let suite =
   ( "installed",
     [ Alcotest.test_case "--allow-unknown: one report per name, first use in source order" `Quick
@@ -87,4 +112,5 @@ let suite =
       Alcotest.test_case "without --allow-unknown: an error per use" `Quick errors_stay_per_use;
       Alcotest.test_case "--stub-unmodelled: a record result is its initial value" `Quick
         stubbed_record_result;
-      Alcotest.test_case "the installed modules keep their source ids" `Quick installed_ids_kept ] )
+      Alcotest.test_case "the installed modules keep their source ids" `Quick installed_ids_kept;
+      Alcotest.test_case "a required choice: SearchL Signal | PersBool (R-13-choice1)" `Quick required_choice ] )

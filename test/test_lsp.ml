@@ -232,6 +232,19 @@ let backup () =
   s.out <- [];
   notify s "textDocument/didSave" (`Assoc [ text_doc u ]);
   Alcotest.(check int) "nCycles is now unknown" 1 (List.length (diagnostics_of s u));
+  (* R-2.4-rw6: the backup's backinfo.txt names RobotWare 6, where CONTINUE is a name. *)
+  let rw6 = file [ "RAPID"; "TASK3"; "PROGMOD"; "Rw6.mod" ]
+      "MODULE Rw6\n  VAR bool continue := TRUE;\n  PROC main()\n    Break;\n  ENDPROC\nENDMODULE\n" in
+  let open_rw6 () =
+    s.out <- [];
+    notify s "textDocument/didOpen"
+      (`Assoc [ ("textDocument", `Assoc [ ("uri", `String (Lsp_uri.of_path rw6)); ("languageId", `String "rapid");
+                                          ("version", `Int 1); ("text", `String (read rw6)) ]) ]);
+    List.length (diagnostics_of s (Lsp_uri.of_path rw6)) in
+  Alcotest.(check int) "without backinfo.txt: RobotWare 7, CONTINUE reserved" 1 (open_rw6 ());
+  ignore (file [ "BACKINFO"; "backinfo.txt" ] ">>PRODUCTS_ID:\nRobotWare Version: 6.13.02.00\n");
+  notify s "textDocument/didClose" (`Assoc [ text_doc (Lsp_uri.of_path rw6) ]);
+  Alcotest.(check int) "backinfo.txt's RobotWare 6: no error" 0 (open_rw6 ());
   ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote root)))
 
 (* A module of rapid-sem test's tests is checked with the assertions installed, as that command

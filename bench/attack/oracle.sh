@@ -145,8 +145,9 @@ one() {
   verdict=ok
   if [ -s "$WORK/res/$i.child" ]; then
     pid=$(cat "$WORK/res/$i.child")
-    # SIGKILL takes a moment to land; a zombie is dead, waiting for init.
-    for _ in $(seq 50); do
+    # SIGKILL takes a moment to land, longer on a loaded machine (1 s was seen to fall short
+    # with eight test runs on two cores); a zombie is dead, waiting for init.
+    for _ in $(seq 250); do
       state=$(sed 's/.*) //' "/proc/$pid/stat" 2>/dev/null | cut -c1)
       { [ -z "$state" ] || [ "$state" = Z ] || [ "$state" = X ]; } && break
       sleep 0.02

@@ -216,6 +216,13 @@ let memory_exhausted st what at =
 (* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
 let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
 
+(* And a record of three scalars (pos, and the like): 16 + 3 x (8 + 32) bytes by Value.bytes. *)
+let value_bytes (v : V.t) =
+  match v with
+  | V.Record [| (V.Num _ | V.Dnum _ | V.Bool _); (V.Num _ | V.Dnum _ | V.Bool _); (V.Num _ | V.Dnum _ | V.Bool _) |] ->
+      136
+  | _ -> value_bytes v [@@inline]
+
 (* An activation itself counts, so that a deep recursion stays within the budget too. *)
 let activation_bytes (r : routine) = 256 + 16 * r.locals
 
@@ -239,6 +246,20 @@ let no_value = V.String "(no value)"
 
 let v_true = V.Bool true
 let v_false = V.Bool false
+
+(* A deep recursion keeps its chain of activations alive: with the default minor heap
+   (256 k words) each minor collection promotes the chain and scans the deep native stack, most
+   of a recursion 9,000 deep (bench/peers/depth.mod). The first call deeper than [deep_calls]
+   in the process gives the minor heap 2 M words (16 MB), once; a run that stays shallow keeps
+   the default, and its small resident set. Nothing a program observes depends on it. *)
+let deep_calls = ref 1024
+
+let deeper_heap () =
+  deep_calls := max_int;
+  let g = Gc.get () in
+  if g.minor_heap_size < 2_097_152 then Gc.set { g with minor_heap_size = 2_097_152 }
+
+let deepen level = if level >= !deep_calls then deeper_heap () [@@inline]
 
 (* An activation's end: what it counted is given back ([pop], here to be inlined). *)
 let release st (c : act) =
@@ -417,6 +438,14 @@ let index st ~at (v : V.t) n =
       else int_of_float x - 1
   | _ -> V.type_mismatch "index"
 
+(* Value.components, inlined here: the parts of a record or an array. *)
+let parts (v : V.t) = match v with V.Record e | V.Array e -> e | _ -> V.components v [@@inline]
+
+(* [index] of a num given as a float (an index expression computed without its box). *)
+let index_float st ~at x n =
+  let k = int_of_float x in
+  if float_of_int k = x && k >= 1 && k <= n then k - 1 else index st ~at (V.Num x) n [@@inline]
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole (r : routine) = function
   | Global _ -> true
@@ -482,12 +511,45 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Element (Whole w, [| ix |]) when plain_whole r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
-      let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
-      fun a ->
-        let v = ix a in
-        let elements = V.components (container a) in
-        elements.(index st ~at v (Array.length elements))
-  | Element _ | Component _ | Unresolved _ ->
+      let container = read st r ~at (Whole w) in
+      (match index_at st r ~at ix, w with
+       | Some _, Global g -> (
+           (* module data's array, its index computed in the same closure ([index_at]'s two forms) *)
+           let globals = st.globals in
+           match ix.e with
+           | Read (Whole (Local i)) ->
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 (match a.store.(i) with
+                  | V.Num x -> elements.(index_float st ~at x n)
+                  | v -> elements.(index st ~at v n))
+           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+               let general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 (match a.store.(i) with
+                  | V.Num p when is_small_integer (p +. q) -> elements.(index_float st ~at (p +. q) n)
+                  | _ -> elements.(index st ~at (general a) n))
+           | _ ->
+               let j = Option.get (index_at st r ~at ix) in
+               fun a -> let elements = parts globals.(g) in elements.(j a (Array.length elements)))
+       | Some j, _ ->
+           fun a -> let elements = parts (container a) in elements.(j a (Array.length elements))
+       | None, _ ->
+           let ix = expr st r ~at ix in
+           fun a ->
+             let v = ix a in
+             let elements = parts (container a) in
+             elements.(index st ~at v (Array.length elements)))
+  | Component (q, k) ->
+      (* A component of a record, read where it is: [locate]'s component rule without building
+         the location (the record's place is read as [locate] finds it). *)
+      let container = read st r ~at q in
+      fun a -> (parts (container a)).(k)
+  | Element _ | Unresolved _ ->
       let l = locate st r ~at p in
       fun a -> let box, i = l a in box.(i)
 
@@ -505,7 +567,7 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
           fun a -> if a.ext.present.(i) then (a.ext.boxes.(i), a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
   | Component (q, k) ->
       let l = locate st r ~at q in
-      fun a -> let box, i = l a in (V.components box.(i), k)
+      fun a -> let box, i = l a in (parts box.(i), k)
   | Element (q, indexes) ->
       let l = locate st r ~at q in
       let indexes = Array.map (expr st r ~at) indexes in
@@ -514,7 +576,7 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
         let values = Array.map (fun e -> e a) indexes in
         let n = Array.length values in
         let rec down (container : V.t) k =
-          let elements = V.components container in
+          let elements = parts container in
           let j = index st ~at values.(k) (Array.length elements) in
           if k = n - 1 then (elements, j) else down elements.(j) (k + 1)
         in
@@ -522,6 +584,27 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
   | Unresolved name -> fun _ -> fail ~about:name st ~at "ERR_REFUNKDAT"
 
 (* ------------------------------------------------------------------ expressions *)
+
+(* An index expression that is an own slot, or an own slot and a num literal added or taken
+   away (a{j}, a{j + 1}), as [index] finds the position in a dimension of n: the sum rounded to
+   single as [binary_literal] rounds it (R-2.13-a; infinite: ERR_OVERFLOW), without building
+   the num. Any other value goes through the expression's closure, then [index]. Neither form
+   can change the container, so the container may be read first. *)
+and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
+  match ix.e with
+  | Read (Whole (Local i)) when local_access r i = Own ->
+      Some (fun a n -> match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n)
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+    when local_access r i = Own ->
+      let general = expr st r ~at ix in
+      let q = if op = Arith.Num_sub then -. q else q in
+      Some (fun a n ->
+          match a.store.(i) with
+          | V.Num p ->
+              let x = p +. q in
+              if is_small_integer x then index_float st ~at x n else index st ~at (general a) n
+          | _ -> index st ~at (general a) n)
+  | _ -> None
 
 (* [at] is the statement evaluating the expression: where its errors occur (spec/README.md). *)
 and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
@@ -532,9 +615,20 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       (* §2.16: a signal in value context is its value (signal-value, signal-not-connected). *)
       let f = read st r ~at p in
       fun a -> let v = f a in watch st; check st ~at (st.host.read_signal v)
+  | Unary ((Num_neg | Num_plus | Dnum_neg | Dnum_plus | Not) as op, { e = Literal v; _ })
+    when (match Arith.unary op v with Ok _ -> true | Error _ | exception _ -> false) ->
+      (* -k on a scalar literal: its value, computed once (the same rule, §3.12) *)
+      let w = match Arith.unary op v with Ok w -> w | Error _ -> v in
+      fun _ -> w
   | Unary (op, x) ->
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ })
+    when local_access r i = Alias ->
+      (* x +- k on an alias parameter, read where it is bound without a call *)
+      let slow u = check st ~at (Arith.binary op u v) in
+      let q = if op = Num_sub then -. q else q in
+      fun a -> (match a.ext.boxes.(i).(a.ext.idx.(i)) with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
@@ -545,6 +639,25 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
       if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u)
       else fun a -> (match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u)
+  | Binary ((Num_add | Num_sub | Num_mul | Dnum_add | Dnum_sub | Dnum_mul) as op,
+            { e = Read (Whole (Local i)); _ }, { e = Read (Whole (Local j)); _ })
+    when local_access r i = Own && local_access r j = Own ->
+      (* two own slots (s + i): read without a call each, as [binary]'s rows compute them *)
+      let slow u v = check st ~at (Arith.binary op u v) in
+      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+      (match op with
+       | Num_add -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p +. q) | u, v -> slow u v)
+       | Num_sub -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p -. q) | u, v -> slow u v)
+       | Num_mul -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Num p, V.Num q -> single_num st ~at (p *. q) | u, v -> slow u v)
+       | Dnum_add -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p +. q) | u, v -> slow u v)
+       | Dnum_sub -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p -. q) | u, v -> slow u v)
+       | _ -> fun a -> (match a.store.(i), a.store.(j) with
+           | V.Dnum p, V.Dnum q -> dnum (p *. q) | u, v -> slow u v))
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -770,6 +883,7 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
   let by_reference place kind =
     if not (is_alias p) then by_value (read st caller ~at place)
     else
+      let kind_const = kind in
       let l = locate st caller ~at place in
       let kind = effective_kind caller place kind in
       let module_data = denotes_module_data caller place in
@@ -785,16 +899,31 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
             | _ -> fun _ -> None)
         | _ -> fun _ -> None
       in
+      (* For a place whose root is not an alias parameter, what it is bound to and whether it
+         denotes module data are known here (as [effective_kind], [denotes_module_data]). *)
+      let through_alias = match root place with
+        | Some (Local s) -> s < Array.length caller.parameters && is_alias caller.parameters.(s)
+        | _ -> false in
+      let known_data = match root place with Some (Global _) -> true | _ -> false in
       match place with
-      | Whole (Global g) ->
+      | Whole (Global g) when not through_alias && not p.p_optional ->
           (* module data: its location is known; [refused] is for a caller's INOUT parameter *)
+          let globals = st.globals in
+          fun _ (c : act) ->
+            c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind_const;
+            c.ext.module_data.(i) <- known_data
+      | Whole (Local s) when local_access caller s = Own && not through_alias && not p.p_optional ->
+          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
+          fun a (c : act) ->
+            c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind_const;
+            c.ext.module_data.(i) <- known_data
+      | Whole (Global g) ->
           let globals = st.globals in
           fun a (c : act) ->
             c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
             if p.p_optional then c.ext.present.(i) <- true
       | Whole (Local s) when local_access caller s = Own ->
-          (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
           fun a (c : act) ->
             c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
@@ -966,7 +1095,14 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
 
 and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
+  let by_values = Array.for_all (function By_value _ -> true | _ -> false) arguments
+                  && Array.for_all (fun p -> not (is_alias p)) callee.parameters in
   match callee.primitive with
+  | Some name when by_values && (match st.host.routine name with
+      | Some { IR.values = Some _; reach = Values; _ } -> true | _ -> false) ->
+      (match st.host.routine name with
+       | Some { IR.values = Some f; _ } -> values_call st caller ~at callee f arguments
+       | _ -> assert false)
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
@@ -1053,6 +1189,52 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         | By_value e when not (is_alias callee.parameters.(i)) && not callee.parameters.(i).p_optional ->
             Some (expr st caller ~at e)
         | _ -> None in
+      (* Up to four arguments, each a value for an in parameter or, for an alias parameter,
+         module data or an own slot of the caller (not optional): bound as the binders bind
+         them, the extension's arrays built at once; what an argument is bound to, its index
+         and whether it is module data are the same at every call of this site, so those
+         arrays are made once (nothing writes them after the binding). *)
+      let simple = Array.mapi (fun i (arg : argument) ->
+          let p = callee.parameters.(i) in
+          if p.p_optional then None
+          else match arg, is_alias p with
+            | By_value e, false -> Some (`Value (expr st caller ~at e, "the copy for the parameter " ^ p.p_name))
+            | By_reference (Whole (Global g), kind), true -> Some (`Global (g, kind))
+            | By_reference (Whole (Local s), kind), true
+              when local_access caller s = Own && not (s < Array.length caller.parameters
+                                                       && is_alias caller.parameters.(s)) ->
+                Some (`Own (s, kind))
+            | _ -> None) arguments in
+      let (_, aliases, optional, size, _) = shape in
+      if n >= 1 && n <= 4 && aliases && not optional && Array.for_all Option.is_some simple then begin
+        let d = Array.map Option.get simple in
+        let idx = Array.map (function `Global (g, _) -> g | `Own (s, _) -> s | `Value _ -> 0) d in
+        let bound = Array.map (function `Global (_, k) | `Own (_, k) -> k | `Value _ -> Ref_other) d in
+        let module_data = Array.map (function `Global _ -> true | _ -> false) d in
+        let values = List.filter_map (fun i -> match d.(i) with `Value (f, w) -> Some (i, f, w) | _ -> None)
+            (List.init n Fun.id) |> Array.of_list in
+        let nv = Array.length values in
+        let globals = st.globals in
+        let box (a : act) = function `Global _ -> globals | `Own _ -> a.store | `Value _ -> [||] in
+        let boxes_of = match d with
+          | [| d0 |] -> fun a -> [| box a d0 |]
+          | [| d0; d1 |] -> fun a -> [| box a d0; box a d1 |]
+          | [| d0; d1; d2 |] -> fun a -> [| box a d0; box a d1; box a d2 |]
+          | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
+              fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
+        fun a ->
+          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None } in
+          let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
+                    result = no_value; nest = 0; memory = 0 } in
+          for m = 0 to nv - 1 do
+            let i, f, what = values.(m) in
+            let v = f a in
+            charge_pending st c (value_bytes v) what at;
+            c.store.(i) <- copy v
+          done;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      end
+      else
       (* The common numbers of arguments without a loop over the binders. *)
       match binders, (if n = 1 then plain 0 else None) with
       | [| _ |], Some f ->
@@ -1074,11 +1256,46 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           let c = new_act shape callee a in
           b0 a c; b1 a c;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1; b2 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c; b2 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+      | [| b0; b1; b2; b3 |] -> fun a ->
+          let c = new_act shape callee a in
+          b0 a c; b1 a c; b2 a c; b3 a c;
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
       | _ ->
           fun a ->
             let c = new_act shape callee a in
             for i = 0 to n - 1 do binders.(i) a c done;
             enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+
+(* A call of an installed function that only computes (IR.values: the library's functions,
+   rule call-primitive) with every argument a value: its copies counted in the memory budget
+   as [call_routine_core]'s general path counts them, in order, then the function on the
+   values; an error it gives occurs at the statement (call-primitive-error). *)
+and values_call st (caller : routine) ~at (callee : routine) f (arguments : argument array) : act -> V.t =
+  let args = Array.map (function By_value e -> expr st caller ~at e | _ -> assert false) arguments in
+  let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  let limits = st.limits in
+  let result = function Ok v -> v | Error name -> fail st ~at name [@@inline] in
+  let n = Array.length args in
+  match args with
+  | [| f0 |] -> let w0 = whats.(0) in fun a ->
+      let v0 = f0 a in
+      if value_bytes v0 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+      result (f [| Some v0 |])
+  | _ -> fun a ->
+      let values = Array.make n None in
+      let pending = ref 0 in
+      for i = 0 to n - 1 do
+        let v = args.(i) a in
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
+        pending := !pending + b;
+        values.(i) <- Some v
+      done;
+      result (f values)
 
 (* A call that needs no binder (Closure_call.direct): every argument a copy (§5.2) of a value,
    the callee without an error handler or UNDO, so its activation shares the empty extension.
@@ -1113,7 +1330,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
     let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
     st.native <- st.native + nest;
     st.memory <- st.memory + memory;
-    st.depth <- level + 1;
+    st.depth <- level + 1; deepen level;
     entered st callee c ~code ~at ~is_function ~has_init
   in
   (* A run that observes nothing (schema rapid-sem/2) needs of [entered] only the routine's
@@ -1136,7 +1353,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
       st.native <- st.native + nest;
       st.memory <- st.memory + memory;
-      st.depth <- level + 1;
+      st.depth <- level + 1; deepen level;
       if events then st.emit entered_event;
       match if has_init then code.c_init at c; body c with
       | v -> release st c; if events then st.emit left_event; v
@@ -1159,7 +1376,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
               { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
             st.native <- st.native + nest;
             st.memory <- st.memory + memory;
-            st.depth <- level + 1;
+            st.depth <- level + 1; deepen level;
             if events then st.emit entered_event;
             match code.c_value with
             | Some body -> (
@@ -1180,11 +1397,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
           else start a store pending
       | _ -> start a store pending
   in
-  let fresh () = match size with
-    | 1 -> [| v_false |] | 2 -> [| v_false; v_false |] | 3 -> [| v_false; v_false; v_false |]
-    | _ -> Array.make size v_false [@@inline] in
   match args with
-  | [||] -> fun a -> quick a (fresh ()) 0
+  | [||] -> fun a -> quick a (small_store size) 0
   | [| _ |] when size = 1 && own_step (fun i -> local_access caller i = Own) sources.(0) <> None ->
       let i, op, v, q = Option.get (own_step (fun i -> local_access caller i = Own) sources.(0)) in
       let w0 = whats.(0) in
@@ -1225,7 +1439,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                             result = no_value; nest; memory } in
                   st.native <- st.native + nest;
                   st.memory <- st.memory + memory;
-                  st.depth <- level + 1;
+                  st.depth <- level + 1; deepen level;
                   if events then st.emit entered_event;
                   match if has_init then code.c_init at c; body c with
                   | v -> release st c; if events then st.emit left_event; v
@@ -1242,11 +1456,28 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let v = f0 a in
       let b = value_bytes v in
       if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
-      let store =
-        match size with 1 -> [| copy v |] | 2 -> [| copy v; v_false |] | _ -> let s = fresh () in s.(0) <- copy v; s in
+      let store = small_store size in
+      store.(0) <- copy v;
       quick a store b
+  | [| f0; f1; f2; f3 |] when size <= 6 ->
+      (* four arguments, each counted as it is made (the loop below), the slots built at once
+         (no write barrier for each copy) *)
+      let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
+      let counted w v pending =
+        let b = value_bytes v in
+        if b > limits.max_memory - st.memory - pending then memory_exhausted st w at;
+        pending + b [@@inline] in
+      fun a ->
+        let v0 = f0 a in let p = counted w0 v0 0 in let v0 = copy v0 in
+        let v1 = f1 a in let p = counted w1 v1 p in let v1 = copy v1 in
+        let v2 = f2 a in let p = counted w2 v2 p in let v2 = copy v2 in
+        let v3 = f3 a in let p = counted w3 v3 p in let v3 = copy v3 in
+        let store = match size with
+          | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
+          | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
+        quick a store p
   | _ -> fun a ->
-      let store = fresh () in
+      let store = small_store size in
       let pending = ref 0 in
       for i = 0 to n - 1 do
         let v = args.(i) a in
@@ -1461,7 +1692,7 @@ and enter st (r : routine) (c : act) ~code ~r_index ~at ~is_function ~has_init :
   st.native <- st.native + code.c_nest;
   c.memory <- c.memory + bytes;
   st.memory <- st.memory + c.memory;
-  st.depth <- c.level + 1;
+  st.depth <- c.level + 1; deepen c.level;
   entered st r c ~code ~at ~is_function ~has_init
 
 (* The activation is counted: it runs. *)
@@ -1541,7 +1772,7 @@ and serve_trap st (a : act) number k =
   let c = new_act (activation_shape r) r a in
   c.nest <- code.c_nest;
   st.native <- st.native + code.c_nest;
-  st.depth <- c.level + 1;
+  st.depth <- c.level + 1; deepen c.level;
   st.in_trap <- true;
   let resume () = st.in_trap <- false; st.depth <- a.level + 1 in
   match code.c_init r.at c; code.c_body c with
@@ -1690,17 +1921,76 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Alias ->
+          (* an alias parameter: where it is bound, located before the value (as below) *)
+          fun a ->
+            let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+            let v = value a in
+            (match box.(j) with
+             | V.Handle _ as old when CC.is_signal old -> store_signal box j v
+             | _ -> box.(j) <- copy v);
+            true
+      | Component (q, k) ->
+          (* As the general case below, the record located (its components) before the value,
+             without building the location. *)
+          let container = read st r ~at q in
+          fun a ->
+            let comps = parts (container a) in
+            let v = value a in
+            (match comps.(k) with
+             | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
+             | _ -> comps.(k) <- copy v);
+            true
       | Element (Whole w, [| ix |]) when plain_whole r w ->
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
-          let container = read st r ~at (Whole w) and ix = expr st r ~at ix in
-          fun a ->
-            let iv = ix a in
-            let elements = V.components (container a) in
-            let j = index st ~at iv (Array.length elements) in
-            let v = value a in
-            if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
-            true
+          let container = read st r ~at (Whole w) in
+          (match index_at st r ~at ix, w, ix.e with
+           | Some _, Global g, Read (Whole (Local i)) ->
+               (* module data's array, its index computed in the same closure *)
+               let globals = st.globals in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 let j = match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+               let general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               let globals = st.globals in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let n = Array.length elements in
+                 let j = match a.store.(i) with
+                   | V.Num p when is_small_integer (p +. q) -> index_float st ~at (p +. q) n
+                   | _ -> index st ~at (general a) n in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some j, _, _ ->
+               fun a ->
+                 let elements = parts (container a) in
+                 let j = j a (Array.length elements) in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | None, _, _ ->
+               let ix = expr st r ~at ix in
+               fun a ->
+                 let iv = ix a in
+                 let elements = parts (container a) in
+                 let j = index st ~at iv (Array.length elements) in
+                 let v = value a in
+                 if CC.is_signal elements.(j) then store_signal elements j v else elements.(j) <- copy v;
+                 true)
       | _ ->
           let l = locate st r ~at place in
           fun a ->
@@ -1829,6 +2119,26 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
+        let small x = Float.is_integer x && Float.abs x < 8388608. [@@inline] in
+        if small lo && small hi && small step && not (lo = 0. && 1. /. lo < 0.) && not st.observe then begin
+          (* FROM, TO and STEP integers below 2^23 in magnitude (and FROM not -0): every value
+             of the variable, and each sum, is an integer of at most 24 bits, which a num holds
+             exactly (the sum needs no rounding): the rounds counted on an int *)
+          let hi = int_of_float hi and s = int_of_float step in
+          let i = ref (int_of_float lo) and continue = ref true and goes_on = ref true and round = ref false in
+          while !continue && (if s >= 0 then !i <= hi else !i >= hi) do
+            tick st;
+            a.store.(variable) <- V.Num (float_of_int !i);
+            (match body a with
+             | true -> if empty then (if !round then pass_turn st else round := true); at_round st a
+             | false -> continue := false; goes_on := false
+             | exception Continue_loop -> at_round st a
+             | exception Break_loop -> continue := false);
+            if !continue then i := !i + s
+          done;
+          !goes_on
+        end
+        else
         let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
@@ -1889,6 +2199,11 @@ and block ?top st (r : routine) ~handler ~gotos (b : Ir.block) : act -> bool =
       else if n = 2 && not jumps then
         (let s0 = body.(0) and s1 = body.(1) in
          fun a -> tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a) && (at_end st a; true))
+      else if n = 3 && not jumps then
+        (let s0 = body.(0) and s1 = body.(1) and s2 = body.(2) in
+         fun a ->
+           tick st; at_statement st a; s0 a && (tick st; at_statement st a; s1 a)
+           && (tick st; at_statement st a; s2 a) && (at_end st a; true))
       else if jumps then
         fun a ->
           let rec go i = match from a i with v -> v | exception Goto_label (l, j) when l = id -> go j in
@@ -2068,9 +2383,9 @@ let compile_routine st k =
       | Init_default shape ->
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)
-          let bytes = V.shape_bytes shape in
+          let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
           fun at (a : act) ->
-            charge_active st a bytes ("the routine data of " ^ r.name) at;
+            charge_active st a bytes what at;
             a.store.(slot) <- V.default_of shape
       | Init_expr e ->
           let f = expr st r ~at:e.at e in
@@ -2078,6 +2393,8 @@ let compile_routine st k =
             a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
   let c_init = match inits with
     | [] -> fun _ _ -> ()
+    | [ f ] -> f
+    | [ f; g ] -> fun at a -> f at a; g at a
     | _ -> fun at a -> List.iter (fun f -> f at a) inits in
   { c_init; c_body; c_handler; c_undo; c_nest = Native_stack.routine_nest r;
     c_value = valued_body st r ~gotos;
@@ -2091,12 +2408,22 @@ let error_number_table error_numbers =
   match !last_numbers with
   | Some (l, t) when l == error_numbers -> t
   | _ ->
-      let numbers = Hashtbl.create 128 in
-      List.iter (fun (n, v) -> Hashtbl.replace numbers (String.uppercase_ascii n) v) error_numbers;
+      let numbers = Hashtbl.create (2 * List.length error_numbers) in
+      (* the names are upper case already, but for a user's: no copy of those *)
+      let upper n = if String.exists (fun c -> c >= 'a' && c <= 'z') n then String.uppercase_ascii n else n in
+      List.iter (fun (n, v) -> Hashtbl.replace numbers (upper n) v) error_numbers;
       last_numbers := Some (error_numbers, numbers);
       numbers
 
 let not_compiled : compiled Lazy.t = lazy (invalid_arg "Closure_engine: a routine not compiled")
+
+(* [Array.make n x] without its minor collection: for more than 256 elements and a young [x]
+   (not_compiled, allocated at initialisation, is young until the first one) caml_make_vect
+   empties the minor heap first, promoting all that start-up built (1.2 M instructions of an
+   empty main); Array.concat copies the small arrays into the major heap without it. *)
+let make_filled n x =
+  if n <= 256 then Array.make n x
+  else Array.concat (List.init ((n + 255) / 256) (fun i -> Array.make (min 256 (n - (256 * i))) x))
 
 let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
@@ -2118,7 +2445,7 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
     next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
-  st.compiled <- Array.make (Array.length program.routines) not_compiled;
+  st.compiled <- make_filled (Array.length program.routines) not_compiled;
   Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
   st.serve_trap <- serve_trap st;
   st
@@ -2132,21 +2459,40 @@ let outcome_of_exception st = function
   | V.Type_mismatch what -> Outcome.Stuck ("a value of the wrong type: " ^ what)
   | e -> Outcome.Stuck (Printexc.to_string e)
 
-let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ~host
-    ?cooperation ?module_data (program : program) ~entry =
+(* The routines a task runs one after the other (doc/rulings.md R-bk-8): the event routines
+   [before], the entry routine, the event routines [after], as the machine's [sequence] finds
+   them: each a procedure without parameters (the program's entry points). *)
+let sequence (program : program) ~before ~entry ~after =
+  let find ~is_entry name =
+    let lower = String.lowercase_ascii name in
+    match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
+    | Some (_, k) -> Ok (k, is_entry)
+    | None when is_entry -> Error (Rapid_runtime.Task_rules.no_entry program name)
+    | None ->
+        let named = Array.exists (fun (r : routine) -> String.lowercase_ascii r.name = lower) program.routines in
+        Error (if named then Printf.sprintf "the event routine %s is not a procedure without parameters" name
+               else Printf.sprintf "no procedure %s for the event routine" name) in
+  List.fold_right (fun (name, is_entry) acc ->
+      match find ~is_entry name, acc with
+      | Ok r, Ok rs -> Ok (r :: rs)
+      | Error m, _ | _, Error m -> Error m)
+    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+
+let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?(before = [])
+    ?(after = []) ~host ?cooperation ?module_data (program : program) ~entry =
   try
     run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event ~host program
-      ~entry
+      ~before ~entry ~after
   with Initial_value_failed (g, name) -> Error (Printf.sprintf "the initial value of %s: %s" g name)
 
 and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?module_data ~on_event
-    ~(host : Host.t) (program : program) ~entry =
+    ~(host : Host.t) (program : program) ~before ~entry ~after =
   (* The installed data that depend on the robot (vmax), as the machine has them. *)
   let program = host.prepare program in
-  let lower = String.lowercase_ascii entry in
-  match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
-  | None -> Error (Rapid_runtime.Task_rules.no_entry program entry)
-  | Some (_, k) ->
+  match sequence program ~before ~entry ~after with
+  | Error m -> Error m
+  | Ok [] -> Error (Rapid_runtime.Task_rules.no_entry program entry)
+  | Ok ((k, first_is_entry) :: phases) ->
       (* What the caller's [on_event] raises (a closed standard output) is the caller's, not the
          program's: it leaves the run as it came, instead of ending it as Stuck. *)
       let on_event e = try on_event e with ex -> raise (Observer_failed ex) in
@@ -2179,19 +2525,34 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                   | exception Raised err -> raise (Initial_value_failed (g.g_name, err.name)))
               | Init_default _ -> ()) program.globals;
           Option.iter (fun c -> c.share st.globals) cooperation;
-          let code = Lazy.force st.compiled.(k) in
           (* Rules return-entry, raise-unhandled, raise-again-unhandled, exit; cycle-restart: the
-             entry routine runs again, in a new activation, after ExitCycle (R-13-exitcycle1). *)
+             entry routine runs again, in a new activation, after ExitCycle (R-13-exitcycle1).
+             The routines of the task's sequence (R-bk-8) follow one another, each in a new
+             activation, when one ends by its end, RETURN, or ExitCycle in an event routine. *)
           if all_events then on_event (Event.Routine_entered r.name);
-          let rec cycle () =
+          let rec cycle (k, at_entry) phases =
+            let r = program.routines.(k) in
+            let code = Lazy.force st.compiled.(k) in
             let a = new_act (activation_shape r) r sentinel in
             a.nest <- code.c_nest;
             st.native <- code.c_nest;
             st.depth <- 1;
+            let next () =
+              match phases with
+              | [] ->
+                  if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
+                  Outcome.Ended
+              | ((k', _) as phase) :: phases ->
+                  pop st a;
+                  st.in_trap <- false; st.kept <- []; st.undoing <- []; st.resuming <- []; st.skip_undo <- [];
+                  st.user_calls <- [];
+                  if all_events then begin
+                    on_event (Event.Routine_left r.name);
+                    on_event (Event.Routine_entered program.routines.(k').name)
+                  end;
+                  cycle phase phases in
             match code.c_init r.at a; code.c_body a with
-            | _ ->
-                if all_events then begin on_event (Event.Routine_left r.name); on_event Event.Task_ended end;
-                Outcome.Ended
+            | _ -> next ()
             | exception (Raised e | Leaving e | Long_jump (_, e)) -> stopped (caught a e)
             | exception Exit_task ->
                 (match code.c_undo with
@@ -2201,7 +2562,8 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                       | _ -> ()
                       | exception (Raised e | Leaving e | Long_jump (_, e)) -> raise (Halt (stopped (caught a e))))
                  | None -> ());
-                if st.next_cycle then begin
+                if st.next_cycle && not at_entry then begin st.next_cycle <- false; next () end
+                else if st.next_cycle then begin
                   st.next_cycle <- false;
                   pop st a;
                   st.in_trap <- false; st.kept <- []; st.undoing <- []; st.resuming <- []; st.skip_undo <- [];
@@ -2210,13 +2572,13 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
                   if all_events then begin
                     on_event (Event.Routine_left r.name); on_event (Event.Routine_entered r.name)
                   end;
-                  cycle ()
+                  cycle (k, at_entry) phases
                 end
                 else begin
                   if all_events then on_event Event.Task_ended;
                   Outcome.Ended
                 end in
-          cycle ()
+          cycle (k, first_is_entry) phases
         with
         | Initial_value_failed (g, name) -> raise (Initial_value_failed (g, name))
         | Observer_failed ex -> raise ex

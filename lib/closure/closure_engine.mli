@@ -53,8 +53,8 @@ type cooperation = {
 
 val run :
   ?limits:Limits.t -> ?fuel:int -> ?stub_unmodelled:bool -> ?all_events:bool -> ?observe:bool ->
-  ?on_event:(Event.t -> unit) -> host:Host.t -> ?cooperation:cooperation ->
-  ?module_data:((string * string * Value.t) list -> unit) ->
+  ?on_event:(Event.t -> unit) -> ?before:string list -> ?after:string list -> host:Host.t ->
+  ?cooperation:cooperation -> ?module_data:((string * string * Value.t) list -> unit) ->
   Ir.program -> entry:string -> (result, string) Stdlib.result
 (** Initialises the module data (§2.21), then runs the entry routine to its end, calling
     [on_event] on each observable event as it happens; with [all_events:false] only on [Output],
@@ -71,6 +71,9 @@ val run :
     ({!Closure_tasks}), whose waits yield instead of moving the clock. [module_data] is given the
     module data at the end of a run that started (module, name, value, as
     {!Machine.module_data}: [run --save]).
+
+    [before], [after] (default none): a controller backup's event routines run before the entry
+    routine and after it has returned, as {!Machine.start}'s (doc/rulings.md R-bk-8).
 
     Resources are bounded: the call depth by [limits.max_call_depth] (beyond it,
     [Resource_exhausted], as the machine), the work by [fuel]. A call chain deeper than the

@@ -22,6 +22,8 @@ type task = {
   name : string;
   program : Ir.program;
   entry : string;
+  before : string list;                    (* its event routines (R-bk-8) *)
+  after : string list;
   host : Host.t;
   entry_taken : bool;                      (* its start took its first statement's time *)
   mutable globals : Value.t array;         (* its module data, once initialised *)
@@ -75,7 +77,7 @@ let start ?limits ?stub_unmodelled ?seed (loaded : Task_rules.task list) (links 
          the tasks, as the machine's start settles into it: when the entry routine's data has no
          initial value to compute and its body a statement (doc/semantics.md, "Settling"). *)
       let take_entry (l : Task_rules.task) =
-        match Task_rules.entry_routine l.program l.entry with
+        match Task_rules.entry_routine l.program (Task_rules.first_routine l) with
         | Error _ -> false
         | Ok k ->
             let r = l.program.routines.(k) in
@@ -83,7 +85,8 @@ let start ?limits ?stub_unmodelled ?seed (loaded : Task_rules.task list) (links 
             if quiet && Array.length r.body.body > 0 then (l.host.statement (); true) else false in
       let tasks = Array.of_list (List.map (fun (l : Task_rules.task) ->
           let entry_taken = take_entry l in
-          { name = l.name; program = l.program; entry = l.entry; host = l.host; entry_taken;
+          { name = l.name; program = l.program; entry = l.entry; before = l.before; after = l.after; host = l.host;
+            entry_taken;
             globals = [||]; links = []; reply = None; command = None; idle = false; wake = None; what = None;
             finished = None; fuel_used = 0; thread = None; wakeup = Condition.create () }) loaded) in
       let objects = Hashtbl.create 64 in
@@ -195,8 +198,8 @@ let body t task ~limits ~fuel ~stub_unmodelled ~all_events ~observe ~on_event ()
         yield = (fun ~wake ~what ~pure -> hand_over t task (Yielded { wake; what; pure }));
         native_budget = thread_budget () } in
       let on_event e = if not t.aborting then on_event task.name e in
-      match C.run ~limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~host:task.host
-              ~cooperation task.program ~entry:task.entry with
+      match C.run ~limits ~fuel ?stub_unmodelled ~all_events ~observe ~on_event ~before:task.before
+              ~after:task.after ~host:task.host ~cooperation task.program ~entry:task.entry with
       | r -> if task.globals <> [||] then publish t task; Finished r
       | exception e -> Crashed e
   in

@@ -14,6 +14,8 @@ let options (case : Spec_case.t) =
   let tasks = several_tasks case in
   List.concat [
     (if case.strict then [ "--strict" ] else []);
+    (let module R = Rapid_syntax.Robotware in
+     if case.robotware <> R.default then [ "--robotware"; R.to_string case.robotware ] else []);
     (if case.allow_unknown then [ "--allow-unknown" ] else []);
     (if case.stub_unmodelled then [ "--stub-unmodelled" ] else []);
     (match run with Some { io = Some f; _ } -> [ "--io"; Filename.quote f ] | _ -> []);
@@ -27,6 +29,9 @@ let options (case : Spec_case.t) =
     (match run with Some { max_steps = Some n; _ } -> [ "--max-steps"; string_of_int n ] | _ -> []);
     (match run with Some { robot = Some f; _ } -> [ "--robot"; Filename.quote f ] | _ -> []);
     (match run with Some { egm_devices; _ } -> List.concat_map (fun d -> [ "--egm-device"; d ]) egm_devices | _ -> []);
+    (match run with
+     | Some { base_frames; _ } -> List.concat_map (fun b -> [ "--base-frame"; Filename.quote b ]) base_frames
+     | _ -> []);
   ]
 
 (* Format 4 as rapid-sem run spells several tasks: a task's entry as the case's runner takes it,

@@ -8,6 +8,7 @@ type t = {
   sections : string list;
   expectation : expectation option;
   strict : bool;
+  robotware : Rapid_syntax.Robotware.t;
   allow_unknown : bool;
   stub_unmodelled : bool;
   description : string option;
@@ -34,12 +35,13 @@ and run = {
   task_entries : (string * string) list;
   robot : string option;
   egm_devices : string list;
+  base_frames : string list;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
                max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
                tasks = []; schedule = None; motion_task = None; task_entries = [];
-               robot = None; egm_devices = [] }
+               robot = None; egm_devices = []; base_frames = [] }
 
 let known_formats = [ "1"; "2"; "3"; "4" ]
 let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
@@ -113,7 +115,9 @@ let read path =
       | exception Sys_error m -> listing_problem := Some m; []
     else [ path ]
   in
-  let empty = { path; files; sections = []; expectation = None; strict = false; allow_unknown = false;
+  let empty = { path; files; sections = []; expectation = None; strict = false;
+                robotware = Rapid_syntax.Robotware.default;
+                allow_unknown = false;
                 stub_unmodelled = false; description = None; problems = []; format = "1"; run = None } in
   let with_run case f = { case with run = Some (f (Option.value case.run ~default:no_run)) } in
   (* [! @output TEXT]: TEXT is everything after "@output" and one space, verbatim. *)
@@ -147,6 +151,7 @@ let read path =
                   List.fold_left (fun case w ->
                       match w with
                       | "strict" -> { case with strict = true }
+                      | "robotware-6" -> { case with robotware = Rapid_syntax.Robotware.Rw6 }
                       | "allow-unknown" -> { case with allow_unknown = true }
                       | "stub-unmodelled" -> { case with stub_unmodelled = true }
                       | other -> add_problem case ("unknown option " ^ other))
@@ -211,6 +216,9 @@ let read path =
               | Some ("egm-device", v) when Result.is_ok (Rapid_controller.Egm_channel.parse_devices v) ->
                   (* A UdpUc device of EGM (rapid-sem run --egm-device, doc/services.md). *)
                   with_run case (fun r -> { r with egm_devices = r.egm_devices @ [ v ] })
+              | Some ("base-frame", v) when Result.is_ok (Rapid_run.Run_setup.parse_base_frames [ v ]) ->
+                  (* where the cell mounts a robot (rapid-sem run --base-frame, doc/rulings.md R-bk-12) *)
+                  with_run case (fun r -> { r with base_frames = r.base_frames @ [ v ] })
               | Some (("statement-time" | "max-time") as k, v) -> (
                   match float_of_string_opt v with
                   | Some f when f >= 0. && Float.is_finite f ->

@@ -13,6 +13,8 @@ type t = {
   sections : string list;         (** [! @section 2.5], in order *)
   expectation : expectation option;
   strict : bool;                  (** [! @options strict] *)
+  robotware : Rapid_syntax.Robotware.t;
+      (** [! @options robotware-6]: read as RobotWare 5 and 6 read modules (R-2.4-rw6) *)
   allow_unknown : bool;           (** [! @options allow-unknown]: unknown names are warnings *)
   stub_unmodelled : bool;
       (** [! @options stub-unmodelled] (format 3): installed routines rapid-sem does not model
@@ -47,6 +49,8 @@ and run = {
       (** format 4, [! @entry TASK=ROUTINE]: that task's entry routine (the others: [entry]) *)
   robot : string option;          (** [! @robot FILE]: the robot description (rapid-sem run --robot), beside the case *)
   egm_devices : string list;      (** [! @egm-device NAME=HOST:PORT]: UdpUc devices of EGM (--egm-device) *)
+  base_frames : string list;
+      (** each [! @base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4]: where the cell mounts a robot (--base-frame, R-bk-12) *)
 }
 
 val read : string -> t

@@ -39,26 +39,57 @@ let accepted case expected =
 (* Format 3: the program runs; its output, exit status and error must be those expected. *)
 (* The robot description of [! @robot FILE], or the default robot. *)
 let robot_of (run : Spec_case.run) =
-  match run.robot with
-  | None -> Ok None
-  | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name)
+  let arm = match run.robot with
+    | None -> Ok None
+    | Some name -> Result.map Option.some (Rapid_motion_model.Robot_library.load name) in
+  (* ! @base-frame X,Y,Z,Q1,Q2,Q3,Q4: the run's robot at that base frame (R-bk-12) *)
+  Result.bind arm (fun arm ->
+      Result.map (fun frames ->
+          match Rapid_run.Run_setup.base_frame_for frames None with
+          | None -> arm
+          | Some b ->
+              let r = Option.value arm ~default:Rapid_motion_model.Robot.irb120 in
+              Some { r with Rapid_motion_model.Robot.base_frame = b })
+        (Rapid_run.Run_setup.parse_base_frames run.base_frames))
+
+(* ! @base-frame TASK=X,Y,Z,Q1,Q2,Q3,Q4 in a format 4 case: that task's robot of its own (the
+   run's arm) at that base frame, as rapid-sem run --task ... --base-frame TASK=... makes it; the
+   motion task's robot is the run's (R-bk-12). *)
+let task_robots (run : Spec_case.run) robot =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let motion = match run.motion_task, run.tasks with Some m, _ -> Some m | None, (n, _) :: _ -> Some n | _ -> None in
+  let frames = Result.value (Rapid_run.Run_setup.parse_base_frames run.base_frames) ~default:[] in
+  let arm = Option.value robot ~default:Rapid_motion_model.Robot.irb120 in
+  let motion_frame = match motion with Some m -> Rapid_run.Run_setup.base_frame_for frames (Some m) | None -> None in
+  let robot = match motion_frame with
+    | Some b -> Some { arm with Rapid_motion_model.Robot.base_frame = b } | None -> robot in
+  let others = List.filter_map (fun (n, _) ->
+      if (match motion with Some m -> same m n | None -> false) then None
+      else Option.map (fun b -> (n, Rapid_installed.Motion_routines.create
+                                     ~robot:{ arm with Rapid_motion_model.Robot.base_frame = b } ()))
+          (Rapid_run.Run_setup.base_frame_for frames (Some n))) run.tasks in
+  (robot, others)
 
 (* The run's output lines and outcome, by the chosen engine. *)
-let execute engine case (run : Spec_case.run) ~io program =
-  let limits = { Rapid_runtime.Limits.default with
-                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
-  let max_steps = Option.value run.max_steps ~default:10_000_000 in
-  let output = ref [] in
-  let collect = function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> () in
+
+(* The controller of a run case: its clock, and a mass memory of its own, empty at the start but
+   for @home (doc/services.md); [release] closes its services and removes the mass memory. *)
+let case_world (run : Spec_case.run) io =
   let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  (* Each case has a mass memory of its own, empty at the start (doc/services.md). *)
   let sandbox = Rapid_controller.File_sandbox.temporary () in
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
   let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
       run.egm_devices in
   let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
   Rapid_controller.World.set_services world services;
-  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+  (world, fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
+let execute engine case (run : Spec_case.run) ~io program =
+  let limits = { Rapid_runtime.Limits.default with
+                 retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
+  let max_steps = Option.value run.max_steps ~default:10_000_000 in
+  let output = ref [] in
+  let collect = function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> () in
+  let world, release = case_world run io in
   let module E = (val Rapid_run.Run.engine (match engine with Machine -> `Machine | Closure -> `Closure)) in
   match Result.bind (robot_of run) (fun robot ->
       let motion = Rapid_installed.Motion_routines.create ?robot () in
@@ -132,24 +163,19 @@ let run_tasks engine case expected (run : Spec_case.run) =
   | Ok io, Ok robot ->
   let io =
     let modules = List.concat_map (fun (_, files) ->
-        List.filter_map (fun f -> Result.to_option (Parse.parse_file f)) files) run.tasks in
+        let options = { Parse.default_options with robotware = case.robotware } in
+        List.filter_map (fun f -> Result.to_option (Parse.parse_file ~options f)) files) run.tasks in
     fst (Rapid_load.Signal_inference.for_run ~allow_unknown:case.allow_unknown
            ~stub_unmodelled:case.stub_unmodelled modules io) in
   let limits = { Rapid_runtime.Limits.default with
                  retry_limit = Option.value run.retry_limit ~default:Rapid_runtime.Limits.default.retry_limit } in
   let max_steps = Option.value run.max_steps ~default:10_000_000 in
-  let world = Rapid_controller.World.create ?statement_time:run.statement_time ?max_time:run.max_time io in
-  let sandbox = Rapid_controller.File_sandbox.temporary () in
-  Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
-  let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
-      run.egm_devices in
-  let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
-  Rapid_controller.World.set_services world services;
-  let release () = Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox in
+  let world, release = case_world run io in
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   let entry_of name = match List.find_opt (fun (t, _) -> same t name) (List.rev run.task_entries) with
     | Some (_, r) -> r | None -> run.entry in
   let specs = List.map (fun (name, files) -> { TL.name; files; entry = entry_of name }) run.tasks in
+  let robot, robots = task_robots run robot in
   let motion = Rapid_installed.Motion_routines.create ?robot () in
   let stub_unmodelled = case.Spec_case.stub_unmodelled and allow_unknown = case.allow_unknown in
   let seed = run.schedule and motion_task = run.motion_task in
@@ -168,16 +194,16 @@ let run_tasks engine case expected (run : Spec_case.run) =
             in
             loop ();
             (List.rev !output, TS.outcome ts)))
-          (Rapid_run.Run.machine_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
-             ~controller:world ~motion specs)
+          (Rapid_run.Run.machine_tasks ~limits ~stub_unmodelled ~allow_unknown ~robotware:case.robotware ~io ?seed
+             ?motion_task ~robots ~controller:world ~motion specs)
     | Closure ->
         Result.map (fun (ct, _) -> (fun () ->
             let output = ref [] in
             let r = CT.run ~fuel:max_steps ~all_events:false
                 ~on_event:(fun _ -> function Rapid_runtime.Event.Output s -> output := s :: !output | _ -> ()) ct in
             (List.rev !output, r.outcome)))
-          (Rapid_run.Run.closure_tasks ~limits ~stub_unmodelled ~allow_unknown ~io ?seed ?motion_task
-             ~controller:world ~motion specs) in
+          (Rapid_run.Run.closure_tasks ~limits ~stub_unmodelled ~allow_unknown ~robotware:case.robotware ~io ?seed
+             ?motion_task ~robots ~controller:world ~motion specs) in
   let verdict = match result with
     | Error (Load (_, Front_end (d :: _))) -> compare_refusal case expected d
     | Error (Load (_, Front_end [])) -> fail case "refused without a diagnostic"
@@ -195,7 +221,7 @@ let run_case ?(engine = Machine) (case : Spec_case.t) =
           (String.concat ", " Spec_case.known_formats) }
   else if case.problems <> [] then fail case (String.concat "; " case.problems)
   else
-    let options = { Parse.default_options with strict = case.strict } in
+    let options = { Parse.default_options with strict = case.strict; robotware = case.robotware } in
     let expected = Option.get case.expectation in
     match case.run with
     | Some ({ tasks = _ :: _; _ } as run) -> Loopback_lock.exclusive case (fun () -> run_tasks engine case expected run)

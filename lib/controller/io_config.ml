@@ -2,9 +2,13 @@ type signal_type = DI | DO | AI | AO | GI | GO
 
 type signal = { name : string; kind : signal_type; initial : float; line : int; col : int }
 type stimulus = { time : float; signal : string; value : float }
-type t = { file : string; signals : signal list; stimuli : stimulus list; collisions : float list }
+type system_input = { action : string; input : string; arg6 : string; si_line : int; si_col : int }
+type t = {
+  file : string; signals : signal list; stimuli : stimulus list; collisions : float list;
+  system_inputs : system_input list; mechanical_units : string list;
+}
 
-let empty = { file = ""; signals = []; stimuli = []; collisions = [] }
+let empty = { file = ""; signals = []; stimuli = []; collisions = []; system_inputs = []; mechanical_units = [] }
 
 let type_name = function
   | DI -> "signaldi" | DO -> "signaldo" | AI -> "signalai" | AO -> "signalao"
@@ -99,6 +103,7 @@ let time_of ln (t, tc) last_time =
 
 let parse_stimulus ~file lines =
   let signals = ref [] and stimuli = ref [] and collisions = ref [] and last_time = ref 0. in
+  let system_inputs = ref [] in
   let by_name = Hashtbl.create 16 in
   List.iteri (fun i line ->
       let ln = i + 1 in
@@ -138,10 +143,29 @@ let parse_stimulus ~file lines =
               last_time := time;
               stimuli := { time; signal = s.name; value } :: !stimuli
           | _ -> raise (Bad (ln, 1, "expected: at TIME NAME VALUE, or at TIME collision")))
+      | ("system-input", _) :: rest -> (
+          (* A system input (EIO.cfg's SYSSIG_IN): the action a digital input starts, and the
+             mechanical unit it acts on (-Arg6 of LimitSpeed). *)
+          match rest with
+          | (action, _) :: (name, nc) :: unit_name ->
+              let s = match Hashtbl.find_opt by_name (String.lowercase_ascii name) with
+                | Some s -> s
+                | None -> raise (Bad (ln, nc, Printf.sprintf "the signal %s is not declared above"
+                                                (Rapid_syntax.Decimal.shown name))) in
+              if s.kind <> DI then
+                raise (Bad (ln, nc, Printf.sprintf "%s is not a digital input: a system input is one" s.name));
+              let arg6 = match unit_name with
+                | [] -> ""
+                | [ (u, _) ] -> u
+                | _ :: (_, c) :: _ -> raise (Bad (ln, c, "more than an action, a signal and a mechanical unit")) in
+              system_inputs := { action; input = s.name; arg6; si_line = ln; si_col = nc } :: !system_inputs
+          | _ -> raise (Bad (ln, 1, "expected: system-input ACTION SIGNAL [MECHUNIT]")))
       | (w, c) :: _ ->
-          raise (Bad (ln, c, Printf.sprintf "unknown entry %S (signal or at)" (Rapid_syntax.Decimal.shown w))))
+          raise (Bad (ln, c, Printf.sprintf "unknown entry %S (signal, at or system-input)"
+                               (Rapid_syntax.Decimal.shown w))))
     lines;
-  { file; signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions }
+  { file; signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions;
+    system_inputs = List.rev !system_inputs; mechanical_units = [] }
 
 (* -DeviceMap of a group signal: bits "0-7", or a list of them "0-3,8-11"; its width is the
    number of distinct bits it maps: "0-3,2-5" maps bits 0 to 5, six bits (R-8-small3; no ABB
@@ -241,14 +265,31 @@ let eio_signal ~seen signals ln words =
   | None, _ -> raise (Bad (ln, 1, "an EIO_SIGNAL entry without -Name"))
   | Some _, None -> raise (Bad (ln, 1, "an EIO_SIGNAL entry without -SignalType"))
 
+(* SYSSIG_IN: "-Signal NAME -Action ACTION [-Arg6 MECHUNIT]"; an entry that names no signal or no
+   action is left out, as the controller would not start it. *)
+let eio_system_input words =
+  let rec get key = function
+    | (`Bare w, _, _) :: ((`Quoted v | `Bare v), l, c) :: _ when String.lowercase_ascii w = key -> Some (v, l, c)
+    | _ :: rest -> get key rest
+    | [] -> None in
+  match get "-signal" words, get "-action" words with
+  | Some (input, l, c), Some (action, _, _) when input <> "" && action <> "" ->
+      let arg6 = match get "-arg6" words with Some (u, _, _) -> u | None -> "" in
+      Some { action; input; arg6; si_line = l; si_col = c }
+  | _ -> None
+
 let parse_eio ~file lines =
   let signals = ref [] and seen = Hashtbl.create 16 in
-  let in_signals = ref false in
+  let system_inputs = ref [] in
+  let in_signals = ref false and in_system_inputs = ref false in
   (* the entry being read: its first line, its words, whether its last line ended in \ *)
   let pending = ref None in
   let finish () =
     match !pending with
     | None -> ()
+    | Some (_, words, _) when !in_system_inputs ->
+        pending := None;
+        Option.iter (fun si -> system_inputs := si :: !system_inputs) (eio_system_input (List.rev words))
     | Some (ln, words, _) -> pending := None; signals := eio_signal ~seen !signals ln (List.rev words) in
   List.iteri (fun i raw ->
       let ln = i + 1 in
@@ -264,14 +305,18 @@ let parse_eio ~file lines =
       | Some (l, words, true) ->
           pending := Some (l, List.rev_append (eio_words ln body first_col) words, ends_continued)
       | _ ->
-          if is_section then (finish (); in_signals := (line = "EIO_SIGNAL:"))
+          if is_section then (finish (); in_signals := (line = "EIO_SIGNAL:");
+                              in_system_inputs := (line = "SYSSIG_IN:"))
           else if line = "" || line.[0] = '#' then finish ()
-          else if !in_signals && line.[0] = '-' then
+          else if (!in_signals || !in_system_inputs) && line.[0] = '-' then
             (finish (); pending := Some (ln, List.rev (eio_words ln body first_col), ends_continued))
           else finish ())
     lines;
   finish ();
-  { file; signals = List.rev !signals; stimuli = []; collisions = [] }
+  (* A system input whose signal is not configured starts nothing. *)
+  let configured si = Hashtbl.mem seen (String.lowercase_ascii si.input) in
+  { file; signals = List.rev !signals; stimuli = []; collisions = [];
+    system_inputs = List.filter configured (List.rev !system_inputs); mechanical_units = [] }
 
 let is_eio lines =
   List.exists (fun l ->

@@ -16,11 +16,21 @@ type signal = {
 (** At [time] seconds of virtual time, the input [signal] takes [value]. *)
 type stimulus = { time : float; signal : string; value : float }
 
+(** A system input (EIO.cfg's SYSSIG_IN, a stimulus file's [system-input] line): the digital input
+    [input] starts the system action [action] (ABB's names: [LimitSpeed], [MotorOn], ...) while it
+    is 1; [arg6] is the mechanical unit it acts on where the action takes one (LimitSpeed's
+    -Arg6), [""] otherwise. *)
+type system_input = { action : string; input : string; arg6 : string; si_line : int; si_col : int }
+
 type t = {
   file : string;                    (** the file read; [""] for none *)
   signals : signal list;            (** in the order of the file *)
   stimuli : stimulus list;          (** in the order of the file *)
   collisions : float list;          (** [at TIME collision]: the robot collides (doc/motion.md) *)
+  system_inputs : system_input list; (** in the order of the file; each names a configured DI *)
+  mechanical_units : string list;
+      (** the mechanical units a backup's MOC.cfg configures (R-bk-13): installed data objects of
+          type mecunit, beside ROB_1 .. ROB_4; never read from an I/O file *)
 }
 
 val empty : t

@@ -116,6 +116,7 @@ and t = {
   clocks : (int, clock) Hashtbl.t;
   mutable observations : observation list;      (* newest first *)
   collisions : float list;                      (* of the stimulus, for the motion model *)
+  system_inputs : Io_config.system_input list;  (* of the configuration (SYSSIG_IN) *)
   mutable services : Services.t option;         (* files, sockets, text resources: made on first use *)
 }
 
@@ -141,7 +142,8 @@ let create ?(statement_time = default_statement_time) ?(max_time = default_max_t
             statement_time = max 0 (seconds statement_time); max_time; epoch; signals;
             interrupts = Hashtbl.create 8; watching = false;
             queue = Queue.create (); disabled = false; served_datum = None; data = []; clocks = Hashtbl.create 4;
-            observations = []; collisions = config.collisions; services = None } in
+            observations = []; collisions = config.collisions; system_inputs = config.system_inputs;
+            services = None } in
   c.members <- [ w ];
   (* The stimulus is in order of time already (Io_config): its events are the list as it is. *)
   let ids = Hashtbl.create 16 in
@@ -203,6 +205,12 @@ let find_signal w name =
 let signal_name w id = match signal_of w id with Some s -> s.s_name | None -> "?"
 let signal_kind w id = Option.map (fun s -> s.s_kind) (signal_of w id)
 let read w id = match signal_of w id with Some s -> s.value | None -> 0.
+
+(* A system input (Io_config.system_input) acts while its digital input is 1. *)
+let system_input_active w ~action =
+  List.exists (fun (si : Io_config.system_input) ->
+      String.lowercase_ascii si.action = String.lowercase_ascii action
+      && (match find_signal w si.input with Some id -> read w id <> 0. | None -> false)) w.system_inputs
 
 let write w id value =
   match signal_of w id with

@@ -69,6 +69,10 @@ val epoch : t -> float
 val collisions : t -> float list
 (** The times of the stimulus's [at TIME collision] lines, for the motion model. *)
 
+val system_input_active : t -> action:string -> bool
+(** Whether a system input of this action (ABB's name, letter case aside: [LimitSpeed]) is 1 now,
+    whatever mechanical unit it names (R-13-speedlim1: the task's robot stands for them). *)
+
 val statement : t -> unit
 (** The time of one statement passes (the events due meanwhile happen). *)
 

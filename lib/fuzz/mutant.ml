@@ -11,18 +11,39 @@ let file_name = "fuzz.mod"
 
 let is_ident_char c = c = '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
 
-(* The text's words (names, keywords, numbers) with their offsets. *)
-let words text =
+(* The text's words (names, keywords, numbers: the longest runs of name characters), counted,
+   and the k-th of them with its offset, without a list of them all: a mutation draws one or
+   two words of a text of a few thousand bytes, and the list of every word, each copied, was
+   most of what making a mutant cost. Drawing [Random.State.int rs (count_words text)] and
+   taking that word is what picking from the list did. *)
+(* Which bytes are name characters, looked up rather than tested (every byte of every mutant
+   is). *)
+let ident_table = String.init 256 (fun i -> if is_ident_char (Char.chr i) then '\001' else '\000')
+let ident text i = String.unsafe_get ident_table (Char.code (String.unsafe_get text i)) = '\001'
+
+let count_words text =
   let n = String.length text in
-  let rec go i acc =
-    if i >= n then List.rev acc
-    else if is_ident_char text.[i] then begin
-      let j = ref i in
-      while !j < n && is_ident_char text.[!j] do incr j done;
-      go !j ((i, String.sub text i (!j - i)) :: acc)
+  let count = ref 0 and i = ref 0 in
+  while !i < n do
+    if ident text !i then begin
+      incr count;
+      while !i < n && ident text !i do incr i done
     end
-    else go (i + 1) acc in
-  go 0 []
+    else incr i
+  done;
+  !count
+
+let nth_word text k =
+  let n = String.length text in
+  let rec go i k =
+    if i >= n then invalid_arg "Mutant.nth_word"
+    else if ident text i then begin
+      let j = ref i in
+      while !j < n && ident text !j do incr j done;
+      if k = 0 then (i, String.sub text i (!j - i)) else go !j (k - 1)
+    end
+    else go (i + 1) k in
+  go 0 k
 
 let replace_at text offset length by =
   String.sub text 0 offset ^ by ^ String.sub text (offset + length) (String.length text - offset - length)
@@ -54,32 +75,33 @@ let lines text = String.split_on_char '\n' text
 let unlines l = String.concat "\n" l
 
 let one_mutation rs text =
-  let ws = words text in
+  let count = count_words text in
   let n = String.length text in
-  if n = 0 || ws = [] then text
+  let pick_word rs = nth_word text (Random.State.int rs count) in
+  if n = 0 || count = 0 then text
   else
     match Random.State.int rs 12 with
     | 0 ->
         (* a literal or name of another type: ill-typed, mostly *)
-        let off, w = pick rs ws in
+        let off, w = pick_word rs in
         replace_at text off (String.length w) (pick rs literal_swaps)
     | 1 ->
         (* a name swapped for another word of the program: a routine for a datum, a type for a
            name, a keyword for a name *)
-        let off, w = pick rs ws in
-        let _, w' = pick rs ws in
+        let off, w = pick_word rs in
+        let _, w' = pick_word rs in
         replace_at text off (String.length w) w'
     | 2 ->
-        let off, w = pick rs ws in
+        let off, w = pick_word rs in
         replace_at text off (String.length w) ""
     | 3 ->
         let off = Random.State.int rs n in
         replace_at text off 0 (" " ^ pick rs tokens ^ " ")
     | 4 ->
-        let off, w = pick rs ws in
+        let off, w = pick_word rs in
         replace_at text off (String.length w) (pick rs keywords)
     | 5 ->
-        let off, w = pick rs ws in
+        let off, w = pick_word rs in
         replace_at text off (String.length w) (pick rs type_names)
     | 6 ->
         let l = Array.of_list (lines text) in
@@ -97,7 +119,7 @@ let one_mutation rs text =
         unlines (Array.to_list l)
     | 9 ->
         (* a parameter mode, or a storage class, where it may or may not be allowed *)
-        let off, w = pick rs ws in
+        let off, w = pick_word rs in
         replace_at text off 0 (pick rs [ "VAR "; "PERS "; "INOUT "; "REF "; "\\"; "LOCAL "; "CONST " ])
         |> fun t -> ignore w; t
     | 10 ->
@@ -117,7 +139,13 @@ let mutate rs text =
 
 (* ------------------------------------------------------------------ hostile texts *)
 
-let repeat n s = String.concat "" (List.init n (fun _ -> s))
+(* [String.concat "" (List.init n (fun _ -> s))], without the list of n strings. *)
+let repeat n s =
+  let l = String.length s in
+  if l = 1 then String.make n s.[0] else
+  let b = Bytes.create (n * l) in
+  for i = 0 to n - 1 do Bytes.blit_string s 0 b (i * l) l done;
+  Bytes.unsafe_to_string b
 
 let in_main body = Printf.sprintf "MODULE h\n  PROC main()\n%s\n  ENDPROC\nENDMODULE\n" body
 
@@ -142,7 +170,8 @@ let hostile rs =
       in_main (Printf.sprintf "    x := 1%s;" (repeat d " + 1"))
   | 12 -> let d = min 10_000 (depth ()) in
       Printf.sprintf "MODULE h\n%s\nENDMODULE\n"
-        (String.concat "\n" (List.init d (fun i -> Printf.sprintf "  PROC p%d() p%d; ENDPROC" i (i + 1))))
+        (String.concat "\n"
+           (List.init d (fun i -> "  PROC p" ^ string_of_int i ^ "() p" ^ string_of_int (i + 1) ^ "; ENDPROC")))
   | _ ->
       (* a valid program's words in random order *)
       let vocabulary = keywords @ tokens @ type_names @ [ "x"; "main"; "1"; "\"s\"" ] in

@@ -60,7 +60,7 @@ let dim args =
 
 let specials = [
   "TPWrite"; "TPErase"; "ErrWrite"; "Present"; "Dim"; "IsVar"; "IsPers"; "Incr"; "Decr"; "Add";
-  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "CallByVar"; "StrToVal";
+  "Clear"; "BookErrNo"; "SkipWarn"; "ErrLog"; "Stop"; "Break"; "CallByVar"; "StrToVal";
 ]
 
 let modelled name =
@@ -113,6 +113,9 @@ let call ctx name args =
           Returned None
       | _ -> Failed "ERR_ARGVALERR")
   | "stop" -> Stop_requested
+  (* RobotWare 6's Break (R-2.4-rw6): the program stops at once, as Stop stops it; the
+     virtual controller has no path to regain. *)
+  | "break" -> Stop_requested
   | "callbyvar" -> (
       match value_of args.(0), value_of args.(1) with
       | Some (V.String n), Some (V.Num k) when Float.is_integer k && k >= 0. ->
@@ -132,6 +135,8 @@ let call ctx name args =
 
 (* A function of the library that no special case above takes: its body is the library's, on
    the arguments' values, and a registry entry may call it without the name dispatch. *)
-let pure name =
+let pure_values name =
   if List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials then None
-  else Option.map (fun f args -> result (f (Array.map value_of args))) (Library.find name)
+  else Library.find name
+
+let pure name = Option.map (fun f args -> result (f (Array.map value_of args))) (pure_values name)

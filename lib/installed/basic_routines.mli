@@ -17,3 +17,7 @@ val modelled : string -> bool
 val pure : string -> (argument array -> outcome) option
 (** The body of a function of {!Library} by name, when no special case of {!call} takes it: what
     {!call} does for it, without the look-up by name at each call. *)
+
+val pure_values : string -> (Value.t option array -> Library.result) option
+(** The same function on the arguments' values (None for an absent one): {!pure} is
+    [Array.map value_of] and then this. *)

@@ -328,15 +328,23 @@ let run_joint ctx st args =
 
 (* egm.sys's egmframetype: EGM_FRAME_BASE 0, TOOL 1, WOBJ 2, WORLD 3, JOINT 4. R-13-egm6: a
    frame of pose mode is given relative to one of base, tool (the TCP where it is at
-   EGMActPose), work object (its uframe . oframe) or world (the base frame: the model's arm
-   stands at the world's origin); JOINT is no frame of pose mode (ERR_ARGVALERR). *)
-let frame_in_base st q tframe wobj kind relative =
-  let kin = Rapid_motion_model.Planner.kinematics (MR.planner st) in
+   EGMActPose), work object (its uframe . oframe, in the world) or world; the guidance works in
+   the robot's base frame, so a world or work object frame is brought into it through where the
+   cell puts the base (R-bk-12, law F-base; the world frame itself when nothing moves it). JOINT
+   is no frame of pose mode (ERR_ARGVALERR). *)
+let frame_in_base st ~now q tframe wobj kind relative =
+  let module P = Rapid_motion_model.Planner in
+  let planner = MR.planner st in
+  let kin = P.kinematics planner in
+  let in_base (world : G.pose) =
+    let base = match P.external_at planner now with Ok e -> P.base planner e | Error _ -> None in
+    match base with Some base -> G.pmult (G.pinv base) world | None -> world in
   match int_of_float kind with
-  | 0 | 3 when Float.is_integer kind -> Ok relative
+  | 0 when Float.is_integer kind -> Ok relative
+  | 3 when Float.is_integer kind -> Ok (in_base relative)
   | 1 when Float.is_integer kind ->
       Ok (G.pmult (G.pmult (Rapid_motion_model.Kinematics.forward kin q) tframe) relative)
-  | 2 when Float.is_integer kind -> Ok (G.pmult (Rapid_motion_model.Frames.object_frame wobj) relative)
+  | 2 when Float.is_integer kind -> Ok (in_base (G.pmult (Rapid_motion_model.Frames.object_frame wobj) relative))
   | _ -> Error "ERR_ARGVALERR"
 
 (* Euler angles as ABB's EGM gives them (degrees, R-13-egm6: z, y, x about the moving axes, as
@@ -373,9 +381,10 @@ let act_pose ctx st args =
     let wobj = match value_of ctx args "WObj" with Some v -> MR.wobjdata_of v | None -> D.wobj0 in
     let pose_arg name = match value_of ctx args name with Some v -> MR.pose_of v | None -> G.identity in
     let kind name = match named_num ctx args name with Some k -> k | None -> -1. in
-    let q = MR.axes_now st ~now:(W.now ctx.world) in
-    let* _ = frame_in_base st q tool.tframe wobj (kind "CorrFrType") (pose_arg "CorrFrame") in
-    let* sensor_frame = frame_in_base st q tool.tframe wobj (kind "SensorFrType") (pose_arg "SensorFrame") in
+    let now = W.now ctx.world in
+    let q = MR.axes_now st ~now in
+    let* _ = frame_in_base st ~now q tool.tframe wobj (kind "CorrFrType") (pose_arg "CorrFrame") in
+    let* sensor_frame = frame_in_base st ~now q tool.tframe wobj (kind "SensorFrType") (pose_arg "SensorFrame") in
     if not (Float.is_integer (rate /. 4.)) then Failed "ERR_ARGVALERR"
     else if (not tool.tool_robhold) || wobj.wobj_robhold then Failed "ERR_ARGVALERR"
     else begin

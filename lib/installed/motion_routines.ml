@@ -59,6 +59,9 @@ type state = {
   mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
   mutable drain_hooks : (W.t -> unit) list;
   mutable robots : (string * state) list;      (* a task without a robot: the motion tasks (R-14-pos1) *)
+  mutable speed_limit : MM.Profile.speed_limit; (* SpeedLimCheckPoint, SpeedLimAxis (R-13-speedlim1) *)
+  mutable tool_name : string;                  (* the names of the active tool and work object, *)
+  mutable wobj_name : string;                  (* for GetSysData \ObjectName *)
 }
 
 let dummy = V.Bool false
@@ -88,7 +91,8 @@ let create ?(robot = MM.Robot.irb120) ?history () =
     last_planned = None; new_move = None; collisions = None; move_waits = [];
     async_raised = false; conc_run = 0; collision_handling = true;
     history = Array.make history_moves None; history_top = 0; history_len = 0; backward = false; cleared_at = None;
-    extensions = []; drain_hooks = []; robots = [] }
+    extensions = []; drain_hooks = []; robots = []; speed_limit = MM.Profile.no_speed_limit;
+    tool_name = "tool0"; wobj_name = "wobj0" }
 
 let set_backward st b = st.backward <- b
 let retracing st = st.backward
@@ -407,6 +411,32 @@ let world_flange st id joints =
   let f = MM.Kinematics.forward st.kin joints in
   match P.base st.planner (P.target_external st.planner id) with Some b -> G.pmult b f | None -> f
 
+(* SpeedLimCheckPoint, SpeedLimAxis (ABB, RAPID Instructions): the limits act while the system
+   input LimitSpeed is 1, on the moves planned then (R-13-speedlim1). *)
+let apply_speed_limit st w =
+  let active = st.speed_limit <> MM.Profile.no_speed_limit && W.system_input_active w ~action:"LimitSpeed" in
+  (P.settings st.planner).speed_limit <- (if active then Some st.speed_limit else None)
+
+(* SpeedLimCheckPoint RobSpeed: the speed of the checkpoints in mm/s; SpeedLimAxis MechUnit AxisNo
+   AxisSpeed: the speed of one axis (degrees/s, mm/s for a linear one). A speed below 0 or not
+   finite: ERR_SPEEDLIM_VALUE; 0 leaves that speed unlimited; an axis that is not one of the
+   robot's 1 to 6: ERR_ARGVALERR (R-13-speedlim1). The MechUnit is the task's robot. *)
+let speed_lim_check_point ctx st args =
+  match num ctx args "RobSpeed" with
+  | Some v when v >= 0. && Float.is_finite v ->
+      st.speed_limit <- { st.speed_limit with check_point = (if v > 0. then Some v else None) }; Returned None
+  | _ -> Failed "ERR_SPEEDLIM_VALUE"
+
+let speed_lim_axis ctx st args =
+  match num ctx args "AxisNo", num ctx args "AxisSpeed" with
+  | Some a, _ when not (Float.is_integer a && a >= 1. && a <= 6.) -> Failed "ERR_ARGVALERR"
+  | Some a, Some v when v >= 0. && Float.is_finite v ->
+      let axis = int_of_float a in
+      let axes = List.remove_assoc axis st.speed_limit.axes in
+      let axes = if v > 0. then (axis, v) :: axes else axes in
+      st.speed_limit <- { st.speed_limit with axes = List.sort compare axes }; Returned None
+  | _ -> Failed "ERR_SPEEDLIM_VALUE"
+
 let move ctx st name args =
   let w = ctx.world in
   let now = W.now w in
@@ -479,6 +509,7 @@ let move ctx st name args =
           (* What the robot did before this move is observed before it is planned. *)
           if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
           forget st ~now;
+          apply_speed_limit st ctx.world;
           match P.plan st.planner ~now m with
           | Error e -> fail ctx name e
           | Ok { id; ready_time; warnings } ->
@@ -486,7 +517,9 @@ let move ctx st name args =
               (* MoveExtJ has no tool: the active tool and work object stay. *)
               if not ext then begin
                 st.tool <- V.copy tool;
-                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy)
+                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+                st.tool_name <- label ctx "Tool";
+                st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj")
               end;
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
@@ -606,15 +639,23 @@ let search ctx st name args =
     | "searchj" -> Some (P.Joint (robtarget_of target))
     | "searchc" -> Option.map (fun c -> P.Circular (robtarget_of c, robtarget_of target)) (get "CirPoint")
     | _ -> Some (P.Linear (robtarget_of target)) in
-  let signal = match arg ctx args "Signal" with
-    | Location (box, i, _) -> (
+  (* "Signal | PersBool" (ABB, RobotWare 6 and later): the search watches a digital input or a
+     persistent bool alike, its value read at every poll as 0 or 1 (FALSE or TRUE). *)
+  let signal = match arg ctx args "Signal", arg ctx args "PersBool" with
+    | Location (box, i, _), _ -> (
         match box.(i) with
-        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None -> Some (V.handle_id h)
+        | V.Handle h when V.handle_id h > 0 && W.signal_kind w (V.handle_id h) <> None ->
+            let id = V.handle_id h in
+            Some (fun () -> W.read w id)
+        | _ -> None)
+    | _, Location (box, i, _) -> (
+        match box.(i) with
+        | V.Bool _ -> Some (fun () -> match box.(i) with V.Bool true -> 1. | _ -> 0.)
         | _ -> None)
     | _ -> None in
   match signal, get "ToPoint", get "Speed", get "Tool", arg ctx args "SearchPoint" with
   | None, _, _, _, _ -> Failed "ERR_NO_ALIASIO_DEF"
-  | Some id, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
+  | Some read, Some target, Some speed, Some tool, Location (box, i, _) when path target <> None -> (
       let stops = present ctx args "Stop" || present ctx args "PStop" || present ctx args "SStop" in
       let level = present ctx args "HighLevel" || present ctx args "LowLevel" in
       let hit ~old ~now =
@@ -630,6 +671,7 @@ let search ctx st name args =
       let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ~tool:tool_d ?wobj:(Option.map wobj_of wobj)
           ~label:target_label ~eax:(eax_of_robtarget target) (speed_of speed) fine (Option.get (path target)) in
       let now = W.now w in
+      apply_speed_limit st ctx.world;
       match P.plan st.planner ~now m with
       | Error e -> fail ctx name e
       | Ok { id = move; ready_time; _ } ->
@@ -637,6 +679,8 @@ let search ctx st name args =
           st.conc_run <- 0;
           st.tool <- V.copy tool;
           st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+          st.tool_name <- label ctx "Tool";
+          st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj");
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
           emit st (E.Segment_planned { time = now; id = move; instruction = name; label = target_label;
@@ -644,7 +688,7 @@ let search ctx st name args =
                                      joints; ready_time; start_time; end_time });
           add_track st { t_id = move; t_label = target_label; started = false; ended = false };
           st.dirty <- true; st.last_planned <- Some move; st.new_move <- Some move;
-          let previous = ref (W.read w id) and found = ref false and asked = ref nan in
+          let previous = ref (read ()) and found = ref false and asked = ref nan in
           let record () =
             found := true;
             let t = W.now w in
@@ -658,7 +702,7 @@ let search ctx st name args =
                            emit st (E.Path_command { time = t; command = name ^ " stop" })) in
           if level && hit ~old:!previous ~now:!previous then record ();
           let satisfied () =
-            let v = W.read w id in
+            let v = read () in
             if (not !found) && v <> !previous && hit ~old:!previous ~now:v then record ();
             previous := v;
             let r = P.ready_time st.planner move in
@@ -680,10 +724,11 @@ let names = [
   "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "MoveLDO"; "MoveJDO"; "StopMove"; "StartMove"; "StopMoveReset";
   "ClearPath"; "PathLevel"; "StorePath"; "RestoPath"; "WaitRob"; "VelSet"; "AccSet"; "ConfL"; "ConfJ";
   "SingArea"; "MaxRobSpeed"; "ProcerrRecovery"; "StartMoveRetry"; "SearchL"; "SearchJ"; "SearchC"; "CornerPathWarning";
+  "SpeedLimCheckPoint"; "SpeedLimAxis";
   "CSpeedOverride"; "Offs"; "RelTool"; "CRobT"; "CJointT";
   "CPos"; "CalcRobT"; "CalcJointT"; "MirPos"; "CTool"; "CWObj"; "GripLoad";
   "WriteCfgData";
-  "SetSysData";
+  "SetSysData"; "GetSysData";
   "IsStopMoveAct";
   "ExitCycle";
 ]
@@ -830,6 +875,8 @@ let call_unguarded (ctx : context) st name args =
           else Some (Failed "ERR_ARGVALERR")
       | _ -> None)
   | "pathlevel" -> Some (Returned (Some (V.num (float_of_int (P.path_level st.planner)))))
+  | "speedlimcheckpoint" -> Some (speed_lim_check_point ctx st args)
+  | "speedlimaxis" -> Some (speed_lim_axis ctx st args)
   | "velset" -> (
       match num ctx args "Override", num ctx args "Max" with
       | Some o, Some m when o > 0. && m > 0. && Float.is_finite o && Float.is_finite m ->
@@ -847,11 +894,40 @@ let call_unguarded (ctx : context) st name args =
          name) is not modelled. *)
       match get "SourceObject" with
       | Some (V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] as t) when Array.length l = 6 ->
-          st.tool <- V.copy t; Some (Returned None)
+          st.tool <- V.copy t; st.tool_name <- label ctx "SourceObject"; Some (Returned None)
       | Some (V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] as o) ->
-          st.wobj <- V.copy o; Some (Returned None)
+          st.wobj <- V.copy o; st.wobj_name <- label ctx "SourceObject"; Some (Returned None)
       | Some (V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |]) -> Some (Returned None)
       | _ -> Some (Failed "ERR_ARGVALERR"))
+  | "getsysdata" -> (
+      (* GetSysData DestObject [\ObjectName] (ABB, RAPID Instructions): the active tool or work
+         object (CTool, CWObj) copied into DestObject, told apart by its components as for
+         SetSysData (R-13-y); \ObjectName receives its name. A loaddata: load0, which the
+         motion model does not track (R-13-getsysdata1). *)
+      let wobj0 () = V.Record [| V.Bool false; V.Bool true; V.String "";
+                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |] in
+      let load0 () = V.Record [| V.num 0.; V.pos 0. 0. 0.; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] in
+      let answer = match arg ctx args "DestObject" with
+        | Location (box, i, _) -> (
+            match box.(i) with
+            | V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] when Array.length l = 6 ->
+                Some (box, i, (match active_tool st with Some t -> V.copy t | None -> tool0_value ()),
+                      st.tool_name)
+            | V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] ->
+                Some (box, i, (if st.wobj == dummy then wobj0 () else V.copy st.wobj), st.wobj_name)
+            | V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |] ->
+                Some (box, i, load0 (), "load0")
+            | _ -> None)
+        | _ -> None in
+      match answer with
+      | None -> Some (Failed "ERR_ARGVALERR")
+      | Some (box, i, v, object_name) ->
+          box.(i) <- v;
+          (match arg ctx args "ObjectName" with
+           | Location (nb, ni, _) -> nb.(ni) <- V.String object_name
+           | _ -> ());
+          Some (Returned None))
   | "confl" -> settings.conf_l <- not (present ctx args "Off"); Some (Returned None)
   | "confj" -> settings.conf_j <- not (present ctx args "Off"); Some (Returned None)
   | "singarea" ->
@@ -970,6 +1046,7 @@ let servo ctx st q ~duration =
   let now = W.now ctx.world in
   let fine = Option.get (D.find D.zonedata "fine") and speed = Option.get (D.find D.speeddata "v1000") in
   forget st ~now;
+  apply_speed_limit st ctx.world;
   match P.plan st.planner ~now (P.move ~t:duration ~label:"EGM" speed fine (P.Abs_joint q)) with
   | Error e -> ctx.log (Printf.sprintf "EGM: %s" (MM.Motion_error.name e)); Error (error_name e)
   | Ok { id; _ } -> planned st id; st.last_planned <- Some id; Ok ()

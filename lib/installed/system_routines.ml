@@ -30,7 +30,7 @@ let same = Rapid_typing.Types.same_name
 
 let names = [
   "GetSysInfo"; "OpMode"; "RobOS"; "DecToHex"; "HexToDec"; "BitSet"; "BitClear"; "BitSetDnum"; "BitClearDnum";
-  "MaxRobReorientSpeed"; "SoftAct"; "SoftDeact"; "PathAccLim";
+  "MaxRobReorientSpeed"; "SoftAct"; "SoftDeact"; "PathAccLim"; "UIClientExist";
 ]
 
 let modelled name = List.exists (same name) names
@@ -61,6 +61,10 @@ let get_sys_info ctx motion args =
 (* OpMode: OP_AUTO (system.sys: 1), the mode in which a program runs with nobody at the pendant;
    RobOS: FALSE, rapid-sem is no robot controller (R-13-sys2). *)
 let op_auto = 1.
+
+(* UIClientExist (ABB, RAPID Instructions: is a user device such as the FlexPendant connected):
+   FALSE, a run has no FlexPendant and no answers from one (R-13-ui1). *)
+let ui_client_exists = false
 
 (* ------------------------------------------------------------------ DecToHex, HexToDec *)
 
@@ -170,6 +174,7 @@ let call ctx motion name args =
   | "getsysinfo" -> Some (get_sys_info ctx motion args)
   | "opmode" -> Some (returned (V.num op_auto))
   | "robos" -> Some (returned (V.Bool false))
+  | "uiclientexist" -> Some (returned (V.Bool ui_client_exists))
   | "dectohex" -> Some (text_function dec_to_hex ctx args)
   | "hextodec" -> Some (text_function hex_to_dec ctx args)
   | "bitset" | "bitsetdnum" -> Some (bit_update ~set:true ctx args)

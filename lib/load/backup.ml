@@ -1,15 +1,24 @@
-(* A controller backup, read as the controller reads it at start (R-bk-1 to R-bk-7). Every
+(* A controller backup, read as the controller reads it at start (R-bk-1 to R-bk-10). Every
    choice where the backup could be read two ways is a ruling of doc/rulings.md. *)
 
 type kind = Normal | Static | Semistatic
 
+type event_routine = { routine : string; event : string; hook_at : string }
+
 type task = {
   name : string; folder : string; kind : kind; motion : bool; group : string option; entry : string;
-  files : string list; at : string;
+  files : string list; at : string; before : event_routine list; after : event_routine list;
+  debug_events : event_routine list;
 }
 
 type bound = { axis : int; lower : float; upper : float; bound_at : string }
-type robot = { robot_name : string; robot_type : string; bounds : bound list; robot_at : string }
+type base_frame = {
+  pos : float * float * float; orient : float * float * float * float; coordinated : string option; base_at : string;
+}
+type track = { track_unit : string; travel : float * float; track_orient : float * float * float * float;
+               track_at : string }
+type robot = { robot_name : string; robot_type : string; bounds : bound list; robot_at : string;
+               base_frame : base_frame; track : track option }
 
 type t = {
   dir : string;
@@ -18,6 +27,8 @@ type t = {
   connected : (string * string) list;
   eio : string option;
   retry_limit : int option;
+  robotware : Rapid_syntax.Robotware.t option;
+  units : string list;
   warnings : string list;
 }
 
@@ -94,6 +105,20 @@ let read_backinfo file =
   let* () = each 1 (lines text) in
   close ();
   Ok (List.rev !tasks)
+
+(* R-2.4-rw6: ">>PRODUCTS_ID:" ... "RobotWare Version: 6.13.02.00" names the release the modules
+   were written for. A line that does not read as a release names none. *)
+let robotware_of_backinfo file =
+  match read_text file with
+  | Error _ -> None
+  | Ok text ->
+      let key = "robotware version:" in
+      List.find_map (fun l ->
+          let l = String.trim l in
+          let n = String.length key in
+          if String.length l > n && String.lowercase_ascii (String.sub l 0 n) = key then
+            Rapid_syntax.Robotware.of_string (String.trim (String.sub l n (String.length l - n)))
+          else None) (lines text)
 
 let sort_names l = List.sort (fun a b -> compare (String.lowercase_ascii a) (String.lowercase_ascii b)) l
 
@@ -188,8 +213,17 @@ let cab_tasks ~warn (c : Cfg_file.t) =
             match kind with
             | Error e -> Error e
             | Ok kind ->
+                (* R-bk-9: -TrustLevel NoSafety (written "None") is what a run does: an error that
+                   stops a STATIC or SEMISTATIC task stops that task alone. *)
+                let no_safety = match Cfg_file.text i "TrustLevel" with
+                  | Some t -> same t "None" || same t "NoSafety" | None -> false in
                 unmodelled_attributes ~warn c ~what:("task " ^ name) i
-                  [ "Name"; "Type"; "MotionTask"; "UseMechanicalUnitGroup"; "Entry" ];
+                  ([ "Name"; "Type"; "MotionTask"; "UseMechanicalUnitGroup"; "Entry" ]
+                   @ if no_safety then [ "TrustLevel" ] else []);
+                if kind <> Normal && Cfg_file.find i "TrustLevel" = None then
+                  warn (Printf.sprintf "%s: warning: task %s: its trust level SysFail (no -TrustLevel) is not \
+                                        modelled: an error that stops the task stops it alone" (cfg_place c i.at_line)
+                          name);
                 let entry = Option.value (Cfg_file.text i "Entry") ~default:"main" in
                 go ({ c_name = name; c_kind = kind; c_motion = Cfg_file.flag i "MotionTask";
                       c_group = Cfg_file.text i "UseMechanicalUnitGroup"; c_entry = entry;
@@ -197,13 +231,76 @@ let cab_tasks ~warn (c : Cfg_file.t) =
   in
   go [] (instances c "CAB_TASKS")
 
-(* SYS.cfg's other sections that change what runs: the event routines (not run, R-bk-6), the
-   modules loaded into every task at cold start, SYS_MISC's NoOfRetry (§7.1's retry limit). *)
+(* R-bk-8: CAB_EXEC_HOOKS, the event routines: -Routine, -Shelf (the event), the tasks it runs
+   in (-Task, -AllTask, -AllMotionTask), -SeqNo (their order within one event, then SYS.cfg's). *)
+type hook = { h_routine : string; h_event : string; h_task : string option; h_all : bool; h_all_motion : bool;
+              h_seq : int; h_at : string; h_index : int }
+
+let events = [ "POWER_ON"; "START"; "RESTART"; "STOP"; "QSTOP"; "RESET"; "STEP" ]
+
+let hooks ~warn (c : Cfg_file.t) =
+  List.filter_map Fun.id (List.mapi (fun index (i : Cfg_file.instance) ->
+      let at = cfg_place c i.at_line in
+      match Cfg_file.text i "Routine", Cfg_file.text i "Shelf" with
+      | None, _ -> warn (Printf.sprintf "%s: warning: an event routine without -Routine: not run" at); None
+      | Some r, None -> warn (Printf.sprintf "%s: warning: the event routine %s has no -Shelf: not run" at r); None
+      | Some r, Some e when not (List.exists (same e) events) ->
+          warn (Printf.sprintf "%s: warning: the event routine %s: -Shelf \"%s\" is none of %s: not run" at r e
+                  (String.concat ", " events)); None
+      | Some r, Some e ->
+          unmodelled_attributes ~warn c ~what:("event routine " ^ r) i
+            [ "Routine"; "Shelf"; "Task"; "AllTask"; "AllMotionTask"; "SeqNo" ];
+          let seq = match Cfg_file.text i "SeqNo" with
+            | None -> 0
+            | Some v -> (match int_of_string_opt v with
+                | Some n -> n
+                | None -> warn (Printf.sprintf "%s: warning: the event routine %s: -SeqNo %s is not a whole number: 0"
+                                  at r v); 0) in
+          let task = Cfg_file.text i "Task" and all = Cfg_file.flag i "AllTask"
+          and all_motion = Cfg_file.flag i "AllMotionTask" in
+          if task = None && not all && not all_motion then begin
+            warn (Printf.sprintf "%s: warning: the event routine %s names no task (-Task, -AllTask, -AllMotionTask): \
+                                  not run" at r); None
+          end else
+            Some { h_routine = r; h_event = String.uppercase_ascii e; h_task = task; h_all = all;
+                   h_all_motion = all_motion; h_seq = seq; h_at = at; h_index = index })
+      (instances c "CAB_EXEC_HOOKS"))
+
+(* R-bk-8: which events a run makes happen in a task, in their order: POWER_ON in every task (the
+   controller's start); then, in a NORMAL task (the one the program's buttons and PP to main act
+   on), RESET (PP to main) and START (a start from the beginning) before the entry routine, STOP
+   after it returned (the program's end stops it). RESTART, STEP and QSTOP do not happen in a
+   run, nor the events of the buttons in a STATIC or SEMISTATIC task. *)
+let task_events ~warn hooks ~name ~kind ~motion =
+  let mine h = h.h_all || (h.h_all_motion && motion) || Option.fold ~none:false ~some:(same name) h.h_task in
+  let of_event e = List.filter (fun h -> h.h_event = e && mine h) hooks
+                   |> List.stable_sort (fun a b -> compare (a.h_seq, a.h_index) (b.h_seq, b.h_index))
+                   |> List.map (fun h -> { routine = h.h_routine; event = h.h_event; hook_at = h.h_at }) in
+  let normal = kind = Normal in
+  List.iter (fun h ->
+      if mine h then
+        let why = match h.h_event with
+          | "RESTART" when normal -> Some "a run never restarts a stopped program (debug runs it at each continue \
+                                          after a stop)"
+          | "STEP" when normal -> Some "a run does not step (debug runs it at each step)"
+          | ("RESTART" | "STEP") -> Some (Printf.sprintf "the task is %s" (kind_name kind))
+          | "QSTOP" -> Some "a run has no quick stop"
+          | ("START" | "STOP" | "RESET") when not normal ->
+              Some (Printf.sprintf "the task is %s: the start and stop buttons and PP to main act on NORMAL tasks"
+                      (kind_name kind))
+          | _ -> None in
+        Option.iter (fun why ->
+            warn (Printf.sprintf "%s: warning: the event routine %s (%s) is not run in task %s: %s" h.h_at h.h_routine
+                    h.h_event name why)) why) hooks;
+  let before = of_event "POWER_ON" @ (if normal then of_event "RESET" @ of_event "START" else []) in
+  let after = if normal then of_event "STOP" else [] in
+  (* R-bk-11: what debug makes happen besides POWER_ON and RESET, by the commands. *)
+  let debug = if normal then List.concat_map of_event [ "START"; "RESTART"; "STEP"; "STOP" ] else [] in
+  (before, after, debug)
+
+(* SYS.cfg's other sections that change what runs: the modules loaded into every task at cold
+   start, SYS_MISC's NoOfRetry (§7.1's retry limit). *)
 let sys_misc ~warn (c : Cfg_file.t) =
-  List.iter (fun (i : Cfg_file.instance) ->
-      warn (Printf.sprintf "%s: warning: the event routine %s (%s) is not run: event routines are not modelled"
-              (cfg_place c i.at_line) (Option.value (Cfg_file.text i "Routine") ~default:"?")
-              (Option.value (Cfg_file.text i "Shelf") ~default:"?"))) (instances c "CAB_EXEC_HOOKS");
   List.iter (fun (i : Cfg_file.instance) ->
       warn (Printf.sprintf "%s: warning: the module %s of every task at cold start is not loaded from there: the \
                             task folders hold what was loaded"
@@ -228,6 +325,73 @@ let groups ~warn (c : Cfg_file.t) =
       | Some name ->
           unmodelled_attributes ~warn c ~what:("mechanical unit group " ^ name) i [ "Name"; "Robot" ];
           Some (name, Cfg_file.text i "Robot")) (instances c "MECHANICAL_UNIT_GROUP")
+
+(* R-bk-12: a ROBOT's base frame (ABB, system parameters, topic Motion, type Robot: "Base Frame"
+   x, y, z in metres, q1 .. q4, "Base Frame Moved by"; MOC.cfg writes them -base_frame_pos_x ..
+   _z, -base_frame_orient_u0 .. _u3, -base_frame_coordinated). An attribute not given is the
+   world frame's (0, and u0 = 1); a value that is not a number is a warning and that default. *)
+let base_frame_keys =
+  [ "base_frame_pos_x"; "base_frame_pos_y"; "base_frame_pos_z";
+    "base_frame_orient_u0"; "base_frame_orient_u1"; "base_frame_orient_u2"; "base_frame_orient_u3" ]
+
+let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
+  let of_base (a : Cfg_file.attribute) =
+    String.length a.key > 11 && same (String.sub a.key 0 11) "base_frame_" in
+  let given = List.filter of_base i.attributes in
+  let value key default =
+    match Cfg_file.find i key with
+    | None -> default
+    | Some { value = Text v; _ } when (match float_of_string_opt (String.trim v) with
+        | Some f -> Float.is_finite f && String.for_all (function
+            | '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false) (String.trim v)
+        | None -> false) -> float_of_string (String.trim v)
+    | Some a ->
+        warn (Printf.sprintf "%s: warning: robot %s: -%s %s is not a number: %g is taken instead"
+                (cfg_place c a.line) name a.key
+                (match a.value with Flag -> "(no value)" | Text v -> Printf.sprintf "\"%s\"" v) default);
+        default in
+  List.iter (fun (a : Cfg_file.attribute) ->
+      if not (List.exists (same a.key) ("base_frame_coordinated" :: base_frame_keys)) then
+        warn (Printf.sprintf "%s: warning: robot %s: -%s is not modelled" (cfg_place c a.line) name a.key)) given;
+  let coordinated = match Cfg_file.find i "base_frame_coordinated" with
+    | None -> None
+    | Some { value = Text u; _ } -> Some u
+    | Some a ->
+        warn (Printf.sprintf "%s: warning: robot %s: -base_frame_coordinated without a unit: not read"
+                (cfg_place c a.line) name);
+        None in
+  let v k d = value (List.nth base_frame_keys k) d in
+  { pos = (v 0 0., v 1 0., v 2 0.); orient = (v 3 1., v 4 0., v 5 0., v 6 0.); coordinated;
+    base_at = (match given with a :: _ -> cfg_place c a.line | [] -> cfg_place c i.at_line) }
+
+(* R-bk-15: the unit that moves a robot's base frame, when it is a track: a MECHANICAL_UNIT whose
+   -use_single_0 names a SINGLE, the arm of that single's joint (ARM -use_arm_type) giving its
+   travel in metres, the single's base frame orientation the direction it moves along (its x
+   axis). Anything else (a gantry, a unit not found) is None, and the caller warns. *)
+let track_of (c : Cfg_file.t) unit_name =
+  let named section n =
+    List.find_opt (fun i -> match Cfg_file.text i "name" with Some m -> same m n | None -> false)
+      (instances c section) in
+  let finite k i = match Cfg_file.text i k with
+    | Some v -> (match float_of_string_opt (String.trim v) with Some f when Float.is_finite f -> Some f | _ -> None)
+    | None -> None in
+  let ( let* ) = Option.bind in
+  let* mu = named "MECHANICAL_UNIT" unit_name in
+  let* single_name = Cfg_file.text mu "use_single_0" in
+  let* single = named "SINGLE" single_name in
+  let* joint = Cfg_file.text single "use_joint" in
+  let* arm = List.find_opt (fun i -> match Cfg_file.text i "use_arm_type" with
+      | Some t -> same t joint | None -> false) (instances c "ARM") in
+  let* lower = finite "lower_joint_bound" arm in
+  let* upper = finite "upper_joint_bound" arm in
+  let q k d = Option.value (finite ("base_frame_orient_u" ^ string_of_int k) single) ~default:d in
+  if lower >= upper then None
+  else Some { track_unit = unit_name; travel = (lower, upper); track_orient = (q 0 1., q 1 0., q 2 0., q 3 0.);
+              track_at = cfg_place c single.at_line }
+
+(* A gantry's "robot" (Gantry11_X_Y_Z_NOTCP) moves external axes, not an arm of the library. *)
+let has_joint_type r = String.length r.robot_type >= 5
+                       && same (String.sub r.robot_type (String.length r.robot_type - 5) 5) "NOTCP"
 
 (* R-bk-5: MOC.cfg's robots and the joint bounds of their arms. *)
 let robots ~warn (c : Cfg_file.t) =
@@ -266,19 +430,29 @@ let robots ~warn (c : Cfg_file.t) =
         match axes 1 [] with
         | Error e -> Error e
         | Ok bounds ->
-            let base = List.filter (fun (a : Cfg_file.attribute) ->
-                String.length a.key > 11 && same (String.sub a.key 0 11) "base_frame_"
-                && (match a.value with Text v -> float_of_string_opt v <> Some 0. | Flag -> false)) i.attributes in
-            if base <> [] then
-              warn (Printf.sprintf "%s: warning: robot %s: its base frame (%s) is not modelled: it stands at the \
-                                    world's origin" (cfg_place c i.at_line) name
-                      (String.concat ", " (List.map (fun (a : Cfg_file.attribute) -> "-" ^ a.key) base)));
+            let base_frame = base_frame ~warn c ~name i in
+            let track = Option.bind base_frame.coordinated (track_of c) in
+            Option.iter (fun u ->
+                if track = None then
+                  warn (Printf.sprintf "%s: warning: robot %s: its base frame is moved by the mechanical unit %s \
+                                        (-base_frame_coordinated), which is not modelled (not a track): the base frame \
+                                        stands where the unit's 0 puts it, given in the world frame"
+                          (match Cfg_file.find i "base_frame_coordinated" with
+                           | Some a -> cfg_place c a.line | None -> base_frame.base_at) name u)) base_frame.coordinated;
             each ({ robot_name = name; robot_type = Option.value (Cfg_file.text i "use_robot_type") ~default:"";
-                    bounds; robot_at = cfg_place c i.at_line } :: acc) rest in
+                    bounds; robot_at = cfg_place c i.at_line; base_frame; track } :: acc) rest in
   let* rs = each [] (instances c "ROBOT") in
+  (* A track that carries a robot is modelled (R-bk-15). *)
+  let is_track n = List.exists (fun r -> match r.track with Some t -> same t.track_unit n | None -> false) rs in
+  (* A unit that is a robot of the library's (-use_robot naming a ROBOT with a type) is that robot. *)
+  let is_robot (i : Cfg_file.instance) = match Cfg_file.text i "use_robot" with
+    | Some r -> List.exists (fun x -> same x.robot_name r && x.robot_type <> "" && not (has_joint_type x)) rs
+    | None -> false in
   List.iter (fun (i : Cfg_file.instance) ->
-      warn (Printf.sprintf "%s: warning: the mechanical unit %s (an external axis) is not modelled"
-              (cfg_place c i.at_line) (Option.value (Cfg_file.text i "name") ~default:"?")))
+      let name = Option.value (Cfg_file.text i "name") ~default:"?" in
+      if not (is_track name || is_robot i) then
+        warn (Printf.sprintf "%s: warning: the mechanical unit %s (an external axis) is not modelled"
+                (cfg_place c i.at_line) name))
     (instances c "MECHANICAL_UNIT");
   Ok rs
 
@@ -302,7 +476,7 @@ let read dir =
   let* moc_robots = match moc with Some c -> robots ~warn c | None -> Ok [] in
   Option.iter (fun c -> unread_sections ~warn c
                   [ "CAB_TASKS"; "CAB_EXEC_HOOKS"; "CAB_TASK_MODULES"; "SYS_MISC"; "MECHANICAL_UNIT_GROUP" ]) sys;
-  Option.iter (fun c -> unread_sections ~warn c [ "ROBOT"; "ARM"; "MECHANICAL_UNIT" ]) moc;
+  Option.iter (fun c -> unread_sections ~warn c [ "ROBOT"; "ARM"; "MECHANICAL_UNIT"; "SINGLE" ]) moc;
   (* The other files of SYSPAR, and HOME: once each. *)
   Option.iter (fun s ->
       List.iter (fun f ->
@@ -348,12 +522,20 @@ let read dir =
           None
       | _ ->
           let files = task_files ~warn ~info_file:info_file_name folder listed in
+          (* R-bk-14: without SYS.cfg, a folder of system modules alone is a task without a
+             program (an option's task, an idle one): nothing says it is started. *)
+          let program_module f = same (Filename.basename (Filename.dirname f)) "PROGMOD" in
+          if sys = None && files <> [] && not (List.exists program_module files) then begin
+            warn (Printf.sprintf "%s: warning: the task %s has no program module (PROGMOD) and no SYS.cfg \
+                                  configures it: not started" info_at name);
+            None
+          end else
           let c = match cab_task with
             | Some c -> c
             | None -> { c_name = name; c_kind = Normal; c_motion = false; c_group = None; c_entry = "main";
                         c_at = info_at } in
           Some { name; folder; kind = c.c_kind; motion = c.c_motion; group = c.c_group; entry = c.c_entry; files;
-                 at = c.c_at }) named in
+                 at = c.c_at; before = []; after = []; debug_events = [] }) named in
   List.iter (fun c ->
       if not (List.exists (fun t -> same t.name c.c_name) tasks) then
         warn (Printf.sprintf "%s: warning: the task %s has no folder in RAPID/: not run" c.c_at c.c_name)) cab;
@@ -364,6 +546,16 @@ let read dir =
           warn (Printf.sprintf "%s: warning: no task is a -MotionTask: %s, the first, has the robot" t.at t.name);
           { t with motion = true } :: rest
       | [] -> [] in
+  (* R-bk-8: each task's event routines, once the motion tasks are known. *)
+  let hooks = Option.fold ~none:[] ~some:(hooks ~warn) sys in
+  List.iter (fun h -> match h.h_task with
+      | Some n when not h.h_all && not (List.exists (fun t -> same t.name n) tasks) ->
+          warn (Printf.sprintf "%s: warning: the event routine %s (%s): no task %s runs: not run" h.h_at h.h_routine
+                  h.h_event n)
+      | _ -> ()) hooks;
+  let tasks = List.map (fun t ->
+      let before, after, debug_events = task_events ~warn hooks ~name:t.name ~kind:t.kind ~motion:t.motion in
+      { t with before; after; debug_events }) tasks in
   if tasks = [] then
     Error (Printf.sprintf "%s:1:1: backup error: no task to run (no RAPID/TASKn folder of a configured task)"
              (Option.value rapid ~default:(dir // "RAPID")))
@@ -397,7 +589,12 @@ let read dir =
                         t.at t.name (Option.get t.group) m.name);
               Some (t.name, m.name)
           | None, [] -> None) tasks in
-    Ok { dir; tasks; robots; connected; eio; retry_limit; warnings = List.rev !warnings }
+    let robotware = Option.bind info_file robotware_of_backinfo in
+    (* R-bk-13: MOC.cfg's mechanical units, by their names. *)
+    let units = match moc with
+      | None -> []
+      | Some c -> List.filter_map (fun i -> Cfg_file.text i "name") (instances c "MECHANICAL_UNIT") in
+    Ok { dir; tasks; robots; connected; eio; retry_limit; robotware; units; warnings = List.rev !warnings }
   end
 
 (* A program file: <Program><Module>FILE</Module>...</Program>, the files beside it. *)

@@ -15,32 +15,73 @@ let signal_module_name = "Installed_signals"
 
 let signal_file_name = "the signals of the I/O configuration"
 
-let signal_module (io : Io.t) =
-  if io.signals = [] then Ok None
+(* A name MOC.cfg gives that is a RAPID identifier (§2.3): at most 32 letters, digits and
+   underscores, a letter first, no reserved word. *)
+let identifier u =
+  let ok = function 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false in
+  String.length u > 0 && String.length u <= 32 && (match u.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
+  && String.for_all ok u
+  && (match Parse.parse_string ~options:{ Parse.default_options with installed = true } ~name:"unit"
+              (Printf.sprintf "MODULE m\n  VAR num %s;\nENDMODULE\n" u) with Ok _ -> true | Error _ -> false)
+
+(* R-bk-13: a backup's mechanical units are mecunit data objects as ROB_1 .. ROB_4 are; those
+   four are installed already, and a unit named as a signal is the signal. *)
+let installed_units = [ "rob_1"; "rob_2"; "rob_3"; "rob_4" ]
+
+let unit_names (io : Io.t) =
+  let taken = installed_units @ List.map (fun (s : Io.signal) -> String.lowercase_ascii s.name) io.signals in
+  List.fold_left (fun acc u ->
+      let k = String.lowercase_ascii u in
+      if List.mem k taken || List.exists (fun a -> String.lowercase_ascii a = k) acc || not (identifier u) then acc
+      else acc @ [ u ]) [] io.mechanical_units
+
+let signal_text (io : Io.t) =
+  let units = unit_names io in
+  if io.signals = [] && units = [] then None
   else
     let text = Buffer.create 256 in
     Buffer.add_string text ("MODULE " ^ signal_module_name ^ " (SYSMODULE)\n");
     List.iter (fun (s : Io.signal) ->
         Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
+    List.iter (fun u -> Buffer.add_string text (Printf.sprintf "  VAR mecunit %s;\n" u)) units;
     Buffer.add_string text "ENDMODULE\n";
-    match Parse.parse_string ~options:{ Parse.default_options with installed = true }
-            ~name:signal_file_name (Buffer.contents text) with
-    | Ok m -> Ok (Some m)
-    | Error d -> Error d
+    Some (Buffer.contents text)
+
+let signal_module text =
+  match text with
+  | None -> Ok None
+  | Some text -> (
+      match Parse.parse_string ~options:{ Parse.default_options with installed = true }
+              ~name:signal_file_name text with
+      | Ok m -> Ok (Some m)
+      | Error d -> Error d)
 
 (* The installed environment computed at build time (Installed_image), which this reference
    links into every program that loads a task. *)
 let () = ignore (Installed_image.in_use ())
 
+(* The last list made, with what it was made from: the checker and the lowering keep what they
+   compute for the installed level by the list itself (compared physically), so a new list for
+   the same signals (each task of a run, each scenario of the fuzzer) would have the whole
+   installed level checked and lowered again. *)
+let last_installed = ref None
+
 let installed ?(testing = false) ?(io = Io.empty) () =
-  let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
-  (* the installed modules' list itself when nothing is added: the checker and the lowering know
-     the build-time image's level by that list (Check.installed_state) *)
-  let ( @@@ ) l = function [] -> l | more -> l @ more in
-  match Rapid_typing.Installed_env.modules (), tests, signal_module io with
-  | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
-  | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
-  | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ])
+  let text = signal_text io in
+  match !last_installed with
+  | Some (testing', text', result) when testing' = testing && text' = text -> result
+  | _ ->
+      let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
+      (* the installed modules' list itself when nothing is added: the checker and the lowering
+         know the build-time image's level by that list (Check.installed_state) *)
+      let ( @@@ ) l = function [] -> l | more -> l @ more in
+      let result =
+        match Rapid_typing.Installed_env.modules (), tests, signal_module text with
+        | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
+        | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
+        | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ]) in
+      last_installed := Some (testing, text, result);
+      result
 
 (* Each declared signal object denotes its signal of the world: identity i for the i-th signal
    of the configuration (Rapid_controller.World.signals). *)
@@ -99,8 +140,8 @@ let load_modules ?testing ?(allow_unknown = false) ?(io = Io.empty) modules =
             Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
         | Error reports -> Error (Static (result.reports @ reports))
 
-let load_files ~strict ?testing ?allow_unknown ?io files =
-  let options = { Parse.default_options with strict } in
+let load_files ~strict ~robotware ?testing ?allow_unknown ?io files =
+  let options = { Parse.default_options with strict; robotware } in
   let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
   | [] -> load_modules ?testing ?allow_unknown ?io (List.filter_map Result.to_option parsed)
@@ -108,8 +149,8 @@ let load_files ~strict ?testing ?allow_unknown ?io files =
 
 (* Most of what loading allocates lives on: the collector is slowed down meanwhile
    (Build_pace). *)
-let load ?(strict = false) ?testing ?allow_unknown ?io files =
-  Build_pace.building (fun () -> load_files ~strict ?testing ?allow_unknown ?io files)
+let load ?(strict = false) ?(robotware = Robotware.default) ?testing ?allow_unknown ?io files =
+  Build_pace.building (fun () -> load_files ~strict ~robotware ?testing ?allow_unknown ?io files)
 
 (* rapid-sem test (doc/testing.md, R-test-a): a test is a parameterless procedure named test_...,
    letter case aside (§2.3). *)

@@ -15,10 +15,11 @@ type failure =
   | Internal of string                          (** the installed environment does not load *)
 
 val load :
-  ?strict:bool -> ?testing:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> string list ->
-  (loaded, failure) result
+  ?strict:bool -> ?robotware:Robotware.t -> ?testing:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t ->
+  string list -> (loaded, failure) result
 (** [io]: the I/O configuration; its signals are installed data objects (§2.16). [testing]: the
-    assertions of rapid-sem test are installed too (doc/rulings.md R-test-a). *)
+    assertions of rapid-sem test are installed too (doc/rulings.md R-test-a). [robotware]: the
+    release whose reserved words the files are read with (R-2.4-rw6). *)
 
 val load_modules :
   ?testing:bool -> ?allow_unknown:bool -> ?io:Rapid_controller.Io_config.t -> Ast.module_declaration list ->

@@ -206,7 +206,9 @@ let index_installed modules =
      List.iter (add level) decls;
      { i_decls = decls; i_level = level; i_members = members })
 
-let current = ref (index_installed (Rapid_typing.Installed_env.modules ()))
+(* The installed modules taken at the first use, not at initialisation: a command that needs no
+   installed environment (a usage error, --version) does not read the image. *)
+let current = ref (lazy (Lazy.force (index_installed (Rapid_typing.Installed_env.modules ()))))
 
 let use_installed modules = current := index_installed (Ok modules)
 

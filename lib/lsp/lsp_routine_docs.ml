@@ -55,7 +55,12 @@ let lines = [
   ("ActUnit", "Activates a mechanical unit (an external axis).");
   ("DeactUnit", "Deactivates a mechanical unit, so that moves no longer command it.");
   ("IsMechUnitActive", "Whether a mechanical unit is active.");
+  ("GetMotorTorque", "The motor torque of an axis, Nm (not modelled: the motion model has no dynamics).");
   ("GetMecUnitName", "The name of a mechanical unit, as a string.");
+  ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");
+  ("SpeedLimCheckPoint", "Limits the speed of the robot's checkpoints (mm/s) while LimitSpeed is active.");
+  ("SpeedLimAxis", "Limits the speed of one axis of a mechanical unit while LimitSpeed is active.");
+  ("UIClientExist", "Whether a user device such as the FlexPendant is connected (FALSE in a run).");
   ("GetNextMechUnit", "Steps through the mechanical units of the system, giving each one's name.");
   ("CRobT", "The current robot position as a robtarget, for the given tool and work object.");
   ("CJointT", "The current joint angles of the robot and the external axes, as a jointtarget.");
@@ -165,6 +170,7 @@ let lines = [
   ("ProcerrRecovery", "Generates a process error during a move, so that the program can recover from it.");
   ("ExitCycle", "Ends the current cycle: the program starts again at the beginning of main.");
   ("Stop", "Stops the program (\\NoRegain: without regaining the path when restarted).");
+  ("Break", "RobotWare 6: breaks the program at once, for debugging (a RobotWare 7 module cannot name it).");
   ("DebugBreak", "Stops the program here when it runs in the debugger.");
   (* Program flow, data and late binding *)
   ("CallByVar", "Calls a procedure whose name is a string and a number: Name followed by Number.");

@@ -77,7 +77,19 @@ let task_key t uri =
 
 let invalidate t uri = Hashtbl.remove t.cache (task_key t uri)
 
-let parses raw = match Parse.parse_string ~name:"check" raw with Ok _ -> true | Error _ -> false
+(* R-2.4-rw6: a backup's task (RAPID/TASKn) is read with the release of the backup's
+   BACKINFO/backinfo.txt; any other folder as the manual's release. *)
+let robotware_of_key key =
+  let rapid = Filename.dirname key in
+  let backinfo = Filename.concat (Filename.concat (Filename.dirname rapid) "BACKINFO") "backinfo.txt" in
+  if String.uppercase_ascii (Filename.basename rapid) = "RAPID" && Sys.file_exists backinfo then
+    Option.value (Rapid_load.Backup.robotware_of_backinfo backinfo) ~default:Robotware.default
+  else Robotware.default
+
+let parse_options key = { Parse.default_options with robotware = robotware_of_key key }
+
+let parses ~key raw =
+  match Parse.parse_string ~options:(parse_options key) ~name:"check" raw with Ok _ -> true | Error _ -> false
 
 let set_root t root = t.root <- root
 
@@ -85,7 +97,7 @@ let open_document t uri raw =
   invalidate t uri;
   let text = Lsp_text.of_bytes raw in
   let d = { uri; path = doc_path uri; text; last_good = None } in
-  if parses raw then d.last_good <- Some raw;
+  if parses ~key:(match d.path with Some p -> fst (task_of_path p) | None -> "") raw then d.last_good <- Some raw;
   Hashtbl.replace t.docs uri d;
   invalidate t uri
 
@@ -157,12 +169,13 @@ let file_name (r : Source.region) = match Source.file_of r with Some f -> Source
 
 let analyse t key =
   let modules = task_modules t key in
+  let options = parse_options key in
   (* Each module is registered under a name of its own in this analysis, so that a report is
      told to belong to it by the name of its region's file. *)
   let parsed = List.mapi (fun i (uri, raw, doc) ->
       let name = Printf.sprintf "%d:%s" i uri in
       let text = match doc with Some d -> d.text | None -> Lsp_text.of_bytes raw in
-      match Parse.parse_string ~name raw with
+      match Parse.parse_string ~options ~name raw with
       | Ok ast ->
           Option.iter (fun d -> d.last_good <- Some raw) doc;
           (uri, name, text, doc, Some { Lsp_index.uri; text; ast; fresh = true }, None)
@@ -170,7 +183,7 @@ let analyse t key =
           (* The last text that parsed stands in, for the names it declares. *)
           let stale = match doc with
             | Some { last_good = Some good; _ } -> (
-                match Parse.parse_string ~name:(name ^ " (stale)") good with
+                match Parse.parse_string ~options ~name:(name ^ " (stale)") good with
                 | Ok ast -> Some { Lsp_index.uri; text = Lsp_text.of_bytes good; ast; fresh = false }
                 | Error _ -> None)
             | _ -> None in

@@ -27,7 +27,7 @@ let as_robot_held tool wobj =
             fun target -> pmult tool.tframe (pinv target))
   | _ -> None
 
-(* Law X-track: on a track the base is not the world frame; robtargets stay in the world. *)
+(* Laws F-base and X-track: the base is not the world frame; robtargets stay in the world. *)
 let on_base base f = match base with None -> f | Some b -> pmult b f
 let off_base base f = match base with None -> f | Some b -> pmult (pinv b) f
 

@@ -1,6 +1,6 @@
 (** Frames (doc/motion.md, "Frames"): a robtarget is in the work object (uframe · oframe) and is
-    reached by the tool's TCP (tframe); the base frame is the world frame unless a track moves it
-    ([?base] below). The position
+    reached by the tool's TCP (tframe); the robot's base frame is placed in the world by the cell
+    (law F-base) and moved by a track (law X-track): [?base] below. The position
     functions CRobT, CPos, CalcRobT, CalcJointT and CJointT in floats. *)
 
 type robtarget = { pose : Geom.pose; conf : Kinematics.conf }
@@ -49,5 +49,5 @@ val c_pos :
   (Geom.pos, Motion_error.t) result
 (** CPos([\Tool] [\WObj]): the translation of CRobT.
 
-    [?base] (all four): the robot's base in the world when a track carries it (law X-track);
-    the world frame by default. *)
+    [?base] (all four): the robot's base in the world ({!Planner.base}: the cell's base frame,
+    law F-base, moved by a track, law X-track); the world frame by default. *)

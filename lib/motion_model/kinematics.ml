@@ -71,12 +71,12 @@ let set_link m (ax : Robot.axis) theta =
    arm's attitude, and joint 3 its angle against the lower arm (doc/motion.md R-structure). *)
 let to_chain (r : Robot.t) q =
   match r.structure with
-  | Serial | Palletiser | Delta -> q
+  | Serial | Palletiser | Delta | Scara -> q
   | Coupled_axis3 -> let c = Array.copy q in c.(2) <- q.(2) -. q.(1); c
 
 let of_chain (r : Robot.t) c =
   match r.structure with
-  | Serial | Palletiser | Delta -> c
+  | Serial | Palletiser | Delta | Scara -> c
   | Coupled_axis3 -> let q = Array.copy c in q.(2) <- c.(2) +. c.(1); q
 
 (* The transform of the first [n] links into k.acc. *)
@@ -174,8 +174,21 @@ let delta_forward r q =
   | Some p -> { trans = { p with z = p.z -. drop }; rot = delta_rot (rad q.(3)) }
   | None -> { trans = { x = nan; y = nan; z = nan }; rot = delta_rot (rad q.(3)) }
 
+(* The SCARA (Robot.Scara, doc/rulings.md R-structure-scara), in closed form: the inner arm turned
+   by axis 1 and the outer arm by axis 2 against it, about vertical axes; the quill at axis 1's d
+   plus axis 3 (mm, positive up); the flange pointing down, as the palletiser's, turned about its
+   z by axis 4. *)
+let scara_dims (r : Robot.t) = (r.axes.(0).a, r.axes.(1).a, r.axes.(0).d)
+
+let scara_forward r q =
+  let l1, l2, d1 = scara_dims r in
+  let t1 = rad q.(0) and t12 = rad (q.(0) +. q.(1)) in
+  { trans = { x = (l1 *. cos t1) +. (l2 *. cos t12); y = (l1 *. sin t1) +. (l2 *. sin t12); z = d1 +. q.(2) };
+    rot = pal_rot t12 (rad q.(3)) }
+
 let forward_computed k q =
-  if k.robot.structure = Robot.Delta then delta_forward k.robot q
+  if k.robot.structure = Robot.Scara then scara_forward k.robot q
+  else if k.robot.structure = Robot.Delta then delta_forward k.robot q
   else if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
   chain k 6 q;
   let g = Gsl.Matrix.get k.acc in
@@ -199,7 +212,7 @@ let quadrant a = int_of_float (Float.floor ((a +. 1e-9) /. 90.))
 let singular_zone = 1.0
 
 let wrist_singular ?(zone = singular_zone) k q =
-  k.robot.structure <> Robot.Palletiser && k.robot.structure <> Robot.Delta &&
+  k.robot.structure <> Robot.Palletiser && k.robot.structure <> Robot.Delta && k.robot.structure <> Robot.Scara &&
   let t5 = rad (q.(4) +. k.robot.axes.(4).offset) in
   Float.abs (sin t5) < sin (rad zone)
 
@@ -378,12 +391,38 @@ let delta_solution (r : Robot.t) (p : pose) ~t4_hint =
         Some { angles = [| wrap (deg a); wrap (deg b); wrap (deg c); q4; 0.; 0. |]; raw_cfx = 0 }
     | _ -> None
 
-(* Each axis at a turn within its range nearest to its target, or the first axis that has none. *)
+(* A SCARA's solutions: the flange level as the palletiser's; two elbows (axis 2 positive or
+   negative), cfx's bit 2 the negative one (doc/rulings.md R-structure-scara). *)
+let scara_solutions (r : Robot.t) (p : pose) =
+  let l1, l2, d1 = scara_dims r in
+  let m = to_matrix p.rot in
+  if -. m.(8) < cos (rad level_tolerance) then []
+  else
+    let psi = atan2 (-. m.(3)) (-. m.(0)) in
+    let x = p.trans.x and y = p.trans.y in
+    let c2 = ((x *. x) +. (y *. y) -. (l1 *. l1) -. (l2 *. l2)) /. (2. *. l1 *. l2) in
+    if Float.abs c2 > 1. +. 1e-12 then []
+    else
+      let c2 = Float.max (-1.) (Float.min 1. c2) in
+      List.map (fun negative ->
+          let t2 = if negative then -. acos c2 else acos c2 in
+          let t1 = atan2 y x -. atan2 (l2 *. sin t2) (l1 +. (l2 *. cos t2)) in
+          let q = [| wrap (deg t1); wrap (deg t2); p.trans.z -. d1; wrap (deg (t1 +. t2 -. psi)); 0.; 0. |] in
+          { angles = q; raw_cfx = (if q.(1) < 0. then 2 else 0) })
+        [ false; true ]
+
+(* Each axis at a turn within its range nearest to its target, or the first axis that has none;
+   a SCARA's axis 3 is linear: no turns. *)
 let place (r : Robot.t) raw targets =
   let q = Array.make 6 0. in
   let bad = ref 0 in
   for i = 5 downto 0 do
-    let c = representative r.axes.(i) raw.angles.(i) targets.(i) in
+    let ax = r.axes.(i) in
+    let c =
+      if r.structure = Robot.Scara && i = 2 then
+        (let a = raw.angles.(i) in
+         if a >= ax.min -. 1e-9 && a <= ax.max +. 1e-9 then Float.min ax.max (Float.max ax.min a) else nan)
+      else representative ax raw.angles.(i) targets.(i) in
     if Float.is_nan c then bad := i + 1 else q.(i) <- c
   done;
   if !bad = 0 then Ok q else Error (Joint_out_of_range !bad)
@@ -392,6 +431,7 @@ let place (r : Robot.t) raw targets =
    from the planar geometry of axes 2 and 3 alone. *)
 let arm_of k q =
   if k.robot.structure = Robot.Delta then (false, false)
+  else if k.robot.structure = Robot.Scara then (false, q.(1) < 0.)
   else if k.robot.structure = Robot.Palletiser then pal_arm k.robot q else
   let q = to_chain k.robot q in
   let ax = k.robot.axes in
@@ -402,7 +442,9 @@ let arm_of k q =
   (radial < 0., sin (t3 +. ps) < 0.)
 
 let conf_of k q =
-  if k.robot.structure = Robot.Delta then { cf1 = 0; cf4 = quadrant q.(3); cf6 = 0; cfx = 0 } else
+  if k.robot.structure = Robot.Delta then { cf1 = 0; cf4 = quadrant q.(3); cf6 = 0; cfx = 0 }
+  else if k.robot.structure = Robot.Scara then
+    { cf1 = quadrant q.(0); cf4 = quadrant q.(3); cf6 = 0; cfx = if q.(1) < 0. then 2 else 0 } else
   let behind, elbow = arm_of k q in
   let wrist = k.robot.structure <> Robot.Palletiser && q.(4) < 0. in
   let cfx = (if behind then 4 else 0) + (if elbow then 2 else 0) + (if wrist then 1 else 0) in
@@ -575,6 +617,7 @@ let significant k c =
   match k.robot.structure with
   | Robot.Palletiser -> { c with cf4 = 0; cfx = c.cfx land 6 }
   | Robot.Delta -> { cf1 = 0; cf4 = c.cf4; cf6 = 0; cfx = 0 }
+  | Robot.Scara -> { c with cf6 = 0; cfx = c.cfx land 2 }
   | Robot.Serial | Robot.Coupled_axis3 -> c
 
 let rec inverse k p choice =
@@ -593,6 +636,9 @@ and inverse_computed k p choice =
   let choice = match choice with With_conf c -> With_conf (significant k c) | n -> n in
   let solutions ?arm k p ~t4_hint =
     if r.structure = Robot.Delta then Option.to_list (delta_solution r p ~t4_hint:t4_hint.(3))
+    else if r.structure = Robot.Scara then
+      List.filter (fun s -> match arm with None -> true | Some (_, e) -> s.raw_cfx = if e then 2 else 0)
+        (scara_solutions r p)
     else if offset_wrist r then offset_solutions ?arm k p ~t4_hint
     else if r.structure = Robot.Palletiser then
       List.filter (fun s -> match arm with

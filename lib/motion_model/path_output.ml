@@ -107,8 +107,16 @@ let path_svg ?(title = "TCP path") p =
   let runs = sampled p in
   let segs = Planner.segments p in
   (* For the ranges only, in no order: [@] and [List.map] overflowed the stack on long paths. *)
+  (* The robot's base where the cell mounts it (law F-base), when that is not the world's origin:
+     drawn in the world frame with the path, at the start's external axes. *)
+  let robot = Kinematics.robot (Planner.kinematics p) in
+  let base =
+    if Base_frame.is_world robot.base_frame then None
+    else
+      let e = match Planner.external_at p 0. with Ok e -> e | Error _ -> Ext_axes.initial robot.externals in
+      Option.map (fun (b : pose) -> b.trans) (Base_frame.in_world robot e) in
   let all = List.rev_append (List.rev_map (fun (s : Planner.segment_info) -> s.target) segs)
-      ((Planner.pose_at p 0.).trans :: List.concat_map snd runs) in
+      ((Planner.pose_at p 0.).trans :: (Option.to_list base @ List.concat_map snd runs)) in
   let range f =
     List.fold_left (fun (lo, hi) q -> (Float.min lo (f q), Float.max hi (f q))) (infinity, neg_infinity) all in
   let pad (lo, hi) = let m = Float.max 10. ((hi -. lo) *. 0.08) in (lo -. m, hi +. m) in
@@ -167,6 +175,11 @@ let path_svg ?(title = "TCP path") p =
           (if corner then "#e67e00" else "#1f5fbf") (if corner then "3" else "1.6");
         List.iter (fun q -> buf_printf b "%.2f,%.2f " (px q) (py q)) pts;
         Buffer.add_string b "\"/>\n") runs;
+    Option.iter (fun at ->
+        buf_printf b "<g class=\"robot-base\"><polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#2e7d32\"/>\
+                      <text x=\"%.1f\" y=\"%.1f\" fill=\"#2e7d32\">base</text></g>\n"
+          (px at) (py at -. 7.) (px at -. 6.) (py at +. 5.) (px at +. 6.) (py at +. 5.) (px at +. 8.) (py at +. 4.))
+      base;
     let start = (Planner.pose_at p 0.).trans in
     buf_printf b "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"#333\"/>\n"
       (px start -. 4.) (py start -. 4.);

@@ -13,7 +13,8 @@ val csv : ?step:float -> Planner.t -> string
 val csv_max_rows : int
 
 val path_svg : ?title:string -> Planner.t -> string
-(** The TCP path in the world frame (the base frame unless a track moves it), two views. *)
+(** The TCP path in the world frame, two views; the robot's base (a triangle, class
+    [robot-base]) where the cell mounts it, when its base frame is not the world's (law F-base). *)
 
 (** What the program did, for the timeline: the program pointer waiting (a move, WaitTime, ...),
     traps, signal changes (a mark at [m_from]). *)

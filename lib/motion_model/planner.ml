@@ -20,6 +20,7 @@ let move ?v ?t ?z ?inpos ?(conc = false) ?(tool = Motion_data.tool0) ?(wobj = Mo
 type settings = {
   mutable velset : Profile.velset; mutable conf_l : bool; mutable conf_j : bool;
   mutable sing_area_wrist : bool; mutable look_ahead : float;
+  mutable speed_limit : Profile.speed_limit option;
 }
 
 type warning = Corner_path_failure of int
@@ -54,15 +55,16 @@ let arm q = Array.sub q 0 6
 let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
 let join q e = Array.append (Array.sub q 0 6) e
 
-(* The flange in the world: the robot's base moves with a track (law X-track). *)
+(* The flange in the world: through the robot's base frame (law F-base), which a track moves
+   (law X-track). *)
 let world_flange k q =
   let f = Kinematics.forward k (arm q) in
-  match Ext_axes.base (Kinematics.robot k).externals (ext q) with
+  match Base_frame.in_world (Kinematics.robot k) (ext q) with
   | None -> f
   | Some b -> pmult b f
 
 let base_inverse k e flange =
-  match Ext_axes.base (Kinematics.robot k).externals e with
+  match Base_frame.in_world (Kinematics.robot k) e with
   | None -> flange
   | Some b -> pmult (pinv b) flange
 
@@ -220,7 +222,8 @@ let create ?(joints = Array.make 6 0.) kin =
   let joints = join joints (Ext_axes.initial (Kinematics.robot kin).externals) in
   let cur = new_level kin joints ~from:0. in
   { kin; settings = { velset = Profile.velset_default; conf_l = true; conf_j = true;
-                      sing_area_wrist = false; look_ahead = 0.1 };
+                      sing_area_wrist = false; look_ahead = 0.1;
+                      speed_limit = None };
     moves = Vec.create (); forgotten_ready = neg_infinity; cur; stored = None }
 
 let settings t = t.settings
@@ -408,6 +411,14 @@ let build t ~now_p m id =
         let* te = Ext_axes.time robot.externals ~override:st.velset.override ~v_leax:sp.v_leax
             ~v_reax:sp.v_reax ~from:(ext q_start) e_end in
         Ok (Float.max duration te) in
+    (* The speed limitation while LimitSpeed is active (R-13-speedlim1): no faster than the
+       TCP's and the axes' limits allow, \T or not. *)
+    let duration = match st.speed_limit with
+      | None -> duration
+      | Some lim ->
+          let n = min 6 (min (Array.length q_start) (Array.length q_end)) in
+          let deltas = Array.init n (fun i -> q_end.(i) -. q_start.(i)) in
+          Float.max duration (Profile.limited_time lim ~length ~deltas) in
     let* () =
       if Float.is_finite duration && Float.is_finite length then Ok ()
       else Error (Motion_error.Invalid_speed "the move's time is not a finite number") in
@@ -647,7 +658,7 @@ let target_external t id =
   if id < Vec.first t.moves || id >= Vec.stop t.moves then invalid_arg "Planner.target_external: unknown move"
   else ext (Vec.get t.moves id).seg.q_end
 
-let base t e = Ext_axes.base (Kinematics.robot t.kin).externals e
+let base t e = Base_frame.in_world (Kinematics.robot t.kin) e
 
 let piece_ids pc = match pc.shape with
   | Part sg -> (sg.id, sg.id) | Blend b -> (b.a.id, b.b.id) | Joint_blend b -> (b.a.id, b.b.id)

@@ -42,6 +42,9 @@ type settings = {
   mutable look_ahead : float;
       (** how long before a fly-by point's zone the program pointer may leave its move, s
           (default 0.1: ABB's planning time DT, installed-facts.md §5, CONFIRMED as approximate) *)
+  mutable speed_limit : Profile.speed_limit option;
+      (** the limits of SpeedLimCheckPoint and SpeedLimAxis while the system input LimitSpeed is
+          active, for the moves planned now; [None]: not active *)
 }
 
 type warning =
@@ -80,8 +83,8 @@ val external_at : t -> float -> (float array, Motion_error.t) result
     are, 9E9 for the others. *)
 
 val base : t -> float array -> Geom.pose option
-(** The robot's base in the world at these extjoint components, when a track carries it
-    ({!Ext_axes.base}). *)
+(** The robot's base in the world at these extjoint components, when the cell's base frame or a
+    track moves it from the world frame ({!Base_frame.in_world}). *)
 
 val finished_by : t -> float
 (** When the robot will stand still at the end of all it has been given ([infinity] while
@@ -122,7 +125,7 @@ val pieces : t -> piece_info list
 
 type segment_info = {
   seg_id : int; seg_label : string; seg_kind : string;  (** "MoveL", "MoveC", "MoveJ", "MoveAbsJ" *)
-  target : Geom.pos;  (** the programmed point's TCP position, base frame *)
+  target : Geom.pos;  (** the programmed point's TCP position, world frame *)
   seg_fine : bool; seg_length : float; seg_duration : float;
 }
 

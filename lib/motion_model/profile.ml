@@ -4,6 +4,16 @@ type velset = { override : float; max : float }
 
 let velset_default = { override = 100.; max = 5000. }
 
+type speed_limit = { check_point : float option; axes : (int * float) list }
+
+let no_speed_limit = { check_point = None; axes = [] }
+
+let limited_time lim ~length ~deltas =
+  let t_tcp = match lim.check_point with Some v when v > 0. -> length /. v | _ -> 0. in
+  List.fold_left (fun acc (i, v) ->
+      if i >= 1 && i <= Array.length deltas && v > 0. then Float.max acc (Float.abs deltas.(i - 1) /. v) else acc)
+    t_tcp lim.axes
+
 type timing = { speed : speeddata; v : float option; t : float option }
 
 let tcp_speed (r : Robot.t) vs tm =

@@ -8,6 +8,19 @@ type velset = { override : float; max : float }
 val velset_default : velset
 (** 100 %, 5000 mm/s (VelSet's value at a cold start; UNCERTAIN). *)
 
+type speed_limit = { check_point : float option; axes : (int * float) list }
+(** SpeedLimCheckPoint RobSpeed (mm/s, the TCP standing for every checkpoint) and SpeedLimAxis
+    AxisSpeed for axis AxisNo (1-6; degrees/s, mm/s for a linear axis): the limits that apply
+    while the system input LimitSpeed is active (ABB, RAPID Instructions; doc/rulings.md
+    R-13-speedlim1). [None] or no entry: that speed is not limited. *)
+
+val no_speed_limit : speed_limit
+
+val limited_time : speed_limit -> length:float -> deltas:float array -> float
+(** The least time a move of TCP path [length] (mm) and axis travels [deltas] (Δq_i, axis i at
+    index i-1) takes under the limits: max(length / RobSpeed, |Δq_i| / AxisSpeed_i); 0 when
+    nothing is limited. *)
+
 type timing = { speed : Motion_data.speeddata; v : float option; t : float option }
 (** A move's Speed argument with its \V (replaces v_tcp) and \T (the whole time, s). *)
 

@@ -3,20 +3,24 @@ type axis = {
   min : float; max : float; speed : float;
 }
 
-type structure = Serial | Coupled_axis3 | Palletiser | Delta
+type structure = Serial | Coupled_axis3 | Palletiser | Delta | Scara
 
 let structure_names =
-  [ ("serial", Serial); ("coupled-axis3", Coupled_axis3); ("palletiser", Palletiser); ("delta", Delta) ]
+  [ ("serial", Serial); ("coupled-axis3", Coupled_axis3); ("palletiser", Palletiser); ("delta", Delta);
+    ("scara", Scara) ]
 
-(* A palletiser has axes 1, 2, 3 and 6 (ABB numbers them so), a delta 1 to 4; the others stand
-   still at 0. *)
-let absent_axes = function Palletiser -> [ 4; 5 ] | Delta -> [ 5; 6 ] | Serial | Coupled_axis3 -> []
+(* A palletiser has axes 1, 2, 3 and 6 (ABB numbers them so), a delta and a SCARA 1 to 4; the
+   others stand still at 0. *)
+let absent_axes = function Palletiser -> [ 4; 5 ] | Delta | Scara -> [ 5; 6 ] | Serial | Coupled_axis3 -> []
+
+let structure_word = function
+  | Palletiser -> "palletiser" | Delta -> "delta" | Scara -> "SCARA" | Serial | Coupled_axis3 -> "serial arm"
 
 let absent_axis = { a = 0.; alpha = 0.; d = 0.; offset = 0.; min = 0.; max = 0.; speed = 1. }
 
 type t = {
   name : string; structure : structure; axes : axis array; max_tcp_speed : float; externals : Ext_axes.axis list;
-  reach : float option;
+  reach : float option; base_frame : Geom.pose;
 }
 
 type error = { file : string; line : int; col : int; message : string }
@@ -177,10 +181,29 @@ let delta_problem r =
   if (ax 4).a < 0. || (ax 4).d < 0. then say 4 "axis 4: a delta's a and d must not be negative";
   !bad
 
+(* A SCARA (IRB 910SC): axes 1 and 2 turn the two arms about vertical axes, axis 3 moves the
+   quill up and down (mm), axis 4 turns the flange; only axis 1's d (the flange's height at axis
+   3 = 0) and the two arms' a are lengths. *)
+let scara_problem r =
+  let ax k = r.axes.(k - 1) in
+  let bad = ref None in
+  let say k m = if !bad = None then bad := Some (k, m) in
+  List.iter (fun k -> if (ax k).alpha <> 0. || (ax k).offset <> 0. then
+                say k (Printf.sprintf "axis %d: a SCARA's alpha and offset must be 0 (doc/motion.md)" k))
+    [ 1; 2; 3; 4 ];
+  List.iter (fun k ->
+      if (ax k).a <= 0. then say k (Printf.sprintf "axis %d: a SCARA's arm length a must be positive" k)) [ 1; 2 ];
+  List.iter (fun k ->
+      if (ax k).d <> 0. then say k (Printf.sprintf "axis %d: a SCARA's d must be 0 (axis 1's d is the height)" k))
+    [ 2; 3; 4 ];
+  List.iter (fun k -> if (ax k).a <> 0. then say k (Printf.sprintf "axis %d: a SCARA's a must be 0" k)) [ 3; 4 ];
+  !bad
+
 let structure_problem r =
   match r.structure with
   | Palletiser -> palletiser_problem r
   | Delta -> delta_problem r
+  | Scara -> scara_problem r
   | Serial | Coupled_axis3 ->
   let ax i = r.axes.(i - 1) in
   let expect = [| -90.; 0.; -90.; 90.; -90.; 0. |] in
@@ -228,8 +251,8 @@ let parse ~file text =
         | [ (_, "structure"); (c, w) ] ->
             (match List.assoc_opt w structure_names with
              | None -> raise (Bad (ln, c, Printf.sprintf
-                                         "structure: expected serial, coupled-axis3, palletiser or delta, found %S"
-                                         (Rapid_syntax.Decimal.shown w)))
+                                    "structure: expected serial, coupled-axis3, palletiser, delta or scara, found %S"
+                                    (Rapid_syntax.Decimal.shown w)))
              | Some k ->
                  if !structure <> None then raise (Bad (ln, 1, "structure given twice"));
                  structure := Some k)
@@ -282,8 +305,8 @@ let parse ~file text =
     List.iter (fun k -> if axes.(k - 1) <> None then
                   raise (Bad (axis_line.(k - 1), 1, Printf.sprintf
                                 "axis %d: a %s has no axis %d (its axes are %s)" k
-                                (if kind = Delta then "delta" else "palletiser") k
-                                (if kind = Delta then "1 to 4" else "1, 2, 3 and 6")))) absent;
+                                (structure_word kind) k
+                                (if kind = Palletiser then "1, 2, 3 and 6" else "1 to 4")))) absent;
     List.iter (fun k -> axes.(k - 1) <- Some absent_axis) absent;
     let missing = ref None in
     Array.iteri (fun i a -> if a = None && !missing = None then missing := Some (i + 1)) axes;
@@ -293,7 +316,7 @@ let parse ~file text =
     | None, Some max_tcp_speed ->
         let r = { name = Option.value !name ~default:file; structure = kind;
                   axes = Array.map Option.get axes; max_tcp_speed; externals = !externals;
-                  reach = !reach } in
+                  reach = !reach; base_frame = Geom.identity } in
         (match structure_problem r with
          | Some (k, m) -> fail axis_line.(k - 1) 1 m
          | None -> Ok r)

@@ -33,16 +33,28 @@ type structure =
           level; axis 4 turns the flange about its z. Axes 1 to 3 [a]: the upper arm, [d]: the
           rod (the same for all three); axis 4 [a]: the base's radius less the plate's, [d]: the
           flange below the plate. Axes 5 and 6 are not given and stand at 0. *)
+  | Scara
+      (** four axes, 1 to 4 (IRB 910SC): axis 1 turns the inner arm and axis 2 the outer arm about
+          vertical axes (0: in line along the base's x), axis 3 moves the quill along z (mm,
+          positive up; its speed in mm/s) and axis 4 turns the flange, which points down, about
+          its z. Axis 1 [a]: the inner arm, [d]: the flange's height above the base at axis 3 =
+          0; axis 2 [a]: the outer arm; the other lengths, twists and offsets 0. Axes 5 and 6 are
+          not given and stand at 0 (doc/rulings.md R-structure-scara). *)
 
 type t = {
   name : string;
-  structure : structure;  (** [structure serial|coupled-axis3] *)
+  structure : structure;  (** [structure serial|coupled-axis3|palletiser|delta|scara] *)
   axes : axis array;  (** six axes, axis 1 first *)
   max_tcp_speed : float;  (** mm/s: vmax's v_tcp and MaxRobSpeed() *)
   externals : Ext_axes.axis list;  (** external axes, in the order of the description; none by default *)
   reach : float option;
       (** mm: the reach of the wrist centre its product specification gives, where the description
           states it (informative: the library's tests compare the kinematics with it) *)
+  base_frame : Geom.pose;
+      (** where the cell mounts the arm: its base frame in the world frame (mm, quaternion), at
+          the track's 0 when a track carries it ({!Base_frame}). The cell's, not the arm's: a
+          description never sets it ({!parse} gives the world frame); a backup's MOC.cfg (ROBOT's
+          base_frame attributes) or --base-frame does (doc/rulings.md R-bk-12) *)
 }
 
 val irb120 : t
@@ -67,7 +79,8 @@ val load : string -> (t, error) result
 (** [parse] of a file's contents; an unreadable file is an error at 1:1. *)
 
 val present : t -> int -> bool
-(** Whether the arm has axis [k] (1 to 6): a palletiser has no axes 4 and 5, a delta no 5 and 6. *)
+(** Whether the arm has axis [k] (1 to 6): a palletiser has no axes 4 and 5, a delta and a SCARA
+    no 5 and 6. *)
 
 val structure_error : t -> string option
 (** Why the analytic inverse kinematics cannot solve this arm, or [None]. *)

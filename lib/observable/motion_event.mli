@@ -8,7 +8,7 @@ type t =
       instruction : string;              (** MoveL, MoveJ, MoveC, MoveAbsJ, MoveLDO, MoveJDO, SearchL *)
       label : string;                    (** the target's data object, or [*] *)
       zone : string;                     (** [fine], or the zonedata's object, or [*] *)
-      target : Pose.t;                   (** the programmed TCP pose, base frame *)
+      target : Pose.t;                   (** the programmed TCP pose, world frame *)
       joints : float array;              (** the axis angles there, degrees *)
       ready_time : float;                (** when the program pointer may go on *)
       start_time : float;                (** when the robot begins the move, as planned now *)

@@ -187,7 +187,7 @@ let task_end name o steps =
 
 type cell_task = {
   name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
-  stand_in : string option; reads : string option; modules : int;
+  stand_in : string option; reads : string option; modules : int; event_routines : (string * string) list;
 }
 
 let cell ~backup ~io ~signals ~warnings tasks : Yojson.Safe.t =
@@ -197,7 +197,9 @@ let cell ~backup ~io ~signals ~warnings tasks : Yojson.Safe.t =
                 `Assoc [ ("task", text t.name); ("type", `String t.kind); ("entry", text t.entry);
                          ("motion", `Bool t.motion); ("robot", opt t.robot); ("robot_type", opt t.robot_type);
                          ("stand_in", opt t.stand_in);
-                         ("reads", opt t.reads); ("modules", `Int t.modules) ]) tasks));
+                         ("reads", opt t.reads); ("modules", `Int t.modules);
+                         ("event_routines", `List (List.map (fun (r, e) ->
+                              `Assoc [ ("routine", text r); ("event", `String e) ]) t.event_routines)) ]) tasks));
            ("io", opt io); ("signals", `Int signals); ("warnings", `Int warnings) ]
 
 let refused_entry ~files ~entry : Yojson.Safe.t =

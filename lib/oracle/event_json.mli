@@ -68,6 +68,7 @@ val task_end : string -> Rapid_runtime.Outcome.t -> int -> Yojson.Safe.t
 type cell_task = {
   name : string; kind : string; entry : string; motion : bool; robot : string option; robot_type : string option;
   stand_in : string option; reads : string option; modules : int;
+  event_routines : (string * string) list;   (** the routines run and their events (R-bk-8) *)
 }
 
 val cell : backup:string -> io:string option -> signals:int -> warnings:int -> cell_task list -> Yojson.Safe.t
@@ -76,8 +77,8 @@ val cell : backup:string -> io:string option -> signals:int -> warnings:int -> c
     SEMISTATIC), entry routine, whether it has a robot, the robot's name and MOC.cfg type (and
     [stand_in]: why another robot moves in place of that type's: ["--robot"], ["not in the robot
     library"], ["no robot in MOC.cfg"], else null), the
-    motion task whose robot a task without one reads, and its number of modules
-    (doc/trace-format.md). *)
+    motion task whose robot a task without one reads, its number of modules, and the event
+    routines it runs, in order, each [{"routine":NAME,"event":EVENT}] (doc/trace-format.md). *)
 
 val refused_entry : files:string list -> entry:string -> Yojson.Safe.t
 (** R-9.1-m: a task buffer without the entry procedure is refused before it runs; the stream

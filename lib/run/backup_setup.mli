@@ -21,17 +21,24 @@ type input =
 val input : robot:string option -> string list -> (input, string) result
 (** The files of a run: one folder that is a backup is that backup; one [.pgf] file is its
     modules; anything else the files as they are. [robot] (--robot) is every motion task's
-    robot instead of MOC.cfg's (options override the backup). *)
+    arm instead of MOC.cfg's type (options override the backup), at MOC.cfg's base frame (the
+    cell's, R-bk-12). *)
 
 val narrow : Rapid_motion_model.Robot.t -> Backup.bound list -> Rapid_motion_model.Robot.t * string list
 (** The description's axis ranges narrowed to the arms' joint bounds (radians), never widened; a
     bound that leaves nothing of a range keeps the range, with a warning (R-bk-5). *)
 
+val base_frame : Backup.robot -> Rapid_motion_model.Geom.pose * string list
+(** The robot's base frame in the world (mm, a unit quaternion: R-bk-12), with a warning at its
+    FILE:LINE for an orientation that is not a unit quaternion (the world's orientation taken)
+    or an origin beyond {!Rapid_motion_model.Base_frame.max_offset} (the world's origin taken). *)
+
 val robot_of_type :
   Backup.robot -> ((Rapid_motion_model.Robot.t * string list) * bool, string) result
 (** The robot of a MOC.cfg ROBOT: its type's description from the robot library, its axis ranges
-    narrowed to the arms' joint bounds (radians); an unknown type is the default IRB 120, with a
-    warning naming the type and its FILE:LINE (R-bk-5); [false] then. *)
+    narrowed to the arms' joint bounds (radians), standing at its base frame ({!base_frame}); an
+    unknown type is the default IRB 120 (at the base frame too), with a warning naming the type and
+    its FILE:LINE (R-bk-5); [false] then. *)
 
 type task_summary = {
   task : string;
@@ -43,6 +50,9 @@ type task_summary = {
   stand_in : string option;   (** why the robot is not that type's (then --robot's, or the default IRB 120) *)
   reads : string option;      (** a task without a robot: the motion task whose robot it reads *)
   modules : int;
+  event_routines : (string * string) list;
+      (** its event routines, in the order it runs them, each with its event (R-bk-8): the
+          backup's; those the task runs once loaded ({!Run_drive}) *)
 }
 
 type summary = { dir : string; tasks : task_summary list; io : string option; signals : int; warned : int }

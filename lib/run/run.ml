@@ -59,15 +59,17 @@ let started start loaded =
       | Error m -> Error (Task_load.Refused m)
       | Ok t -> Ok (t, l))
 
-let machine_tasks ?limits ?stub_unmodelled ?allow_unknown ?observe ?io ?seed ?motion_task ?robots ?connected
-    ~controller ~motion specs =
+let machine_tasks ?limits ?stub_unmodelled ?allow_unknown ?robotware ?observe ?io ?seed ?motion_task ?robots
+    ?connected ?events ~controller ~motion specs =
   started (Rapid_semantics.Task_set.start ?limits ?stub_unmodelled ?observe ?seed)
-    (Task_load.load ?allow_unknown ?io ?motion_task ?robots ?connected ~world:controller ~motion specs)
+    (Task_load.load ?allow_unknown ?robotware ?io ?motion_task ?robots ?connected ?events ~world:controller ~motion
+       specs)
 
-let closure_tasks ?limits ?stub_unmodelled ?allow_unknown ?io ?seed ?motion_task ?robots ?connected
+let closure_tasks ?limits ?stub_unmodelled ?allow_unknown ?robotware ?io ?seed ?motion_task ?robots ?connected ?events
     ~controller ~motion specs =
   started (Rapid_closure.Closure_tasks.start ?limits ?stub_unmodelled ?seed)
-    (Task_load.load ?allow_unknown ?io ?motion_task ?robots ?connected ~world:controller ~motion specs)
+    (Task_load.load ?allow_unknown ?robotware ?io ?motion_task ?robots ?connected ?events ~world:controller ~motion
+       specs)
 
 let motion_task (l : Task_load.loaded) =
   List.find_opt (fun (t : Task_load.task) -> Rapid_controller.World.motion_task t.world) l.tasks

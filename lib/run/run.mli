@@ -43,18 +43,21 @@ val engine : [ `Machine | `Closure ] -> (module ENGINE)
 (** {1 Several tasks (ch. 14)} *)
 
 val machine_tasks :
-  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?observe:bool ->
-  ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?robotware:Rapid_syntax.Robotware.t ->
+  ?observe:bool -> ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
   ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
+  ?events:(string * (Task_load.event_routine list * Task_load.event_routine list)) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
   (Rapid_semantics.Task_set.t * Task_load.loaded, Task_load.failure) Stdlib.result
 (** The tasks loaded ({!Task_load.load}) and started as machines ({!Rapid_semantics.Task_set});
-    a task that cannot start is [Refused]. *)
+    a task that cannot start is [Refused]. [events]: a backup's event routines by task
+    ({!Task_load.load}). *)
 
 val closure_tasks :
-  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool ->
+  ?limits:Limits.t -> ?stub_unmodelled:bool -> ?allow_unknown:bool -> ?robotware:Rapid_syntax.Robotware.t ->
   ?io:Rapid_controller.Io_config.t -> ?seed:int -> ?motion_task:string ->
   ?robots:(string * Rapid_installed.Motion_routines.state) list -> ?connected:(string * string) list ->
+  ?events:(string * (Task_load.event_routine list * Task_load.event_routine list)) list ->
   controller:Rapid_controller.World.t -> motion:Rapid_installed.Motion_routines.state -> Task_load.spec list ->
   (Rapid_closure.Closure_tasks.t * Task_load.loaded, Task_load.failure) Stdlib.result
 (** The same tasks for the closure engine ({!Rapid_closure.Closure_tasks}). *)

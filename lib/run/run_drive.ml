@@ -86,13 +86,22 @@ let machine ~notify sink ~json ~samples ~save (o : Run_options.t) files ~entry =
   let* () = match save with None -> Ok () | Some dir -> write_back dir files (M.module_data cfg) in
   Ok { outcome = M.outcome cfg; work = M.steps cfg }
 
+(* The warnings of a backup counted with those its loading gave (event routines not run). *)
+let with_notes summary (loaded : Task_load.loaded) =
+  let runs task (routine, _) = List.exists (fun (t : Task_load.task) ->
+      t.rules.name = task && List.exists (fun n -> n = routine) (t.rules.before @ t.rules.after)) loaded.tasks in
+  Option.map (fun (s : Backup_setup.summary) ->
+      { s with warned = s.warned + List.length loaded.notes;
+               tasks = List.map (fun (t : Backup_setup.task_summary) ->
+                   { t with event_routines = List.filter (runs t.task) t.event_routines }) s.tasks }) summary
+
 (* Several tasks by the closure engine (Closure_tasks): the same events, in the same order, as
    the machine's; --max-steps is each task's fuel. *)
 let closure_tasks ?cell ~notify sink ~json (o : Run_options.t) (t : Run_options.tasks) =
   let* s = Run_setup.several ?cell ~notify o t in
-  let* ct, _ = Run_setup.closure_tasks ~notify o t s in
+  let* ct, loaded = Run_setup.closure_tasks ~notify o t s in
   sink.start (Some s.names);
-  Option.iter sink.cell s.summary;
+  Option.iter sink.cell (with_notes s.summary loaded);
   let on_event name e = sink.stubbed [ e ]; sink.event (Some name) e in
   let r = CT.run ~fuel:o.max_steps ~all_events:(json || o.stub_unmodelled) ~observe:json ~on_event ct in
   let work = List.fold_left (fun n (t : CT.task_result) -> n + t.fuel_used) 0 r.tasks in
@@ -107,7 +116,7 @@ let machine_tasks ?cell ~notify sink ~json ~samples (o : Run_options.t) (t : Run
   let* s = Run_setup.several ?cell ~history:(samples <> None && json) ~notify o t in
   let* ts, loaded = Run_setup.machine_tasks ~observe:json ~notify o t s in
   sink.start (Some s.names);
-  Option.iter sink.cell s.summary;
+  Option.iter sink.cell (with_notes s.summary loaded);
   let robot_task = Option.map (fun (t : Task_load.task) ->
       (t.rules.name, List.assoc t.rules.name (TS.tasks ts), Run.task_world t)) (Run.motion_task loaded) in
   let sampler = match samples, robot_task with Some hz, Some _ when json -> Some (sampler ~notify hz) | _ -> None in

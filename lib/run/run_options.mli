@@ -19,6 +19,11 @@ type controller = {
   max_time : float;               (** --max-time: the virtual time a run may take *)
   epoch : float;                  (** --epoch: the wall-clock time at virtual time 0, in seconds *)
   services : services;
+  robotware : Rapid_syntax.Robotware.t option;
+      (** --robotware: the controller's RobotWare release, whose reserved words apply (R-2.4-rw6);
+          [None]: a backup's backinfo.txt, else the manual's (7) *)
+  units : string list;
+      (** a backup's mechanical units (MOC.cfg), installed as mecunit data (R-bk-13); no option *)
 }
 (** The controller around the run. *)
 
@@ -29,6 +34,8 @@ type t = {
   limits : Limits.t;              (** --max-call-depth, --retry-limit, --max-memory *)
   controller : controller;
   robot : string option;          (** --robot: the robot description, default the IRB 120 *)
+  base_frames : string list;
+      (** each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4: where the cell mounts a robot (R-bk-12) *)
 }
 (** The options every run shares. *)
 

@@ -22,14 +22,51 @@ let read_io = function
   | None -> Ok Io.empty
   | Some file -> Io.read_file file
 
+(* The I/O configuration of a run, with its backup's mechanical units (R-bk-13). *)
+let run_io (o : Run_options.t) file =
+  Result.map (fun (io : Io.t) -> { io with mechanical_units = o.controller.units }) (read_io file)
+
 let load_robot = function
   | None -> Ok Robot.irb120
   | Some name -> Rapid_motion_model.Robot_library.load name
 
-(* A backup's robot, unless --robot gives one (the options override the backup). *)
-let robot_of ?robot (o : Run_options.t) = match robot, o.robot with
-  | Some r, None -> Ok r
-  | _ -> load_robot o.robot
+(* --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (R-bk-12): each read, the task it names (None: the run's
+   robot). A TASK= form is one with a name before '=' (a pose has none). *)
+let parse_base_frames texts =
+  List.fold_right (fun text acc ->
+      Result.bind acc (fun l ->
+          let task, pose = match String.index_opt text '=' with
+            | Some i -> (Some (String.trim (String.sub text 0 i)), String.sub text (i + 1) (String.length text - i - 1))
+            | None -> (None, text) in
+          match task, Rapid_motion_model.Base_frame.of_text pose with
+          | Some "", _ -> Error (Printf.sprintf "rapid-sem: --base-frame %s: expected TASK=X,Y,Z,Q1,Q2,Q3,Q4" text)
+          | _, Error m -> Error (Printf.sprintf "rapid-sem: --base-frame %s: %s" text m)
+          | _, Ok b -> Ok ((task, b) :: l))) texts (Ok [])
+
+let base_frames (o : Run_options.t) = parse_base_frames o.base_frames
+
+(* The last --base-frame for this task ([None]: the run's robot, without TASK=). *)
+let base_frame_for frames task =
+  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  List.fold_left (fun acc (t, b) -> match t, task with
+      | None, None -> Some b
+      | Some t, Some n when same t n -> Some b
+      | _ -> acc) None frames
+
+let placed robot = function None -> robot | Some b -> { robot with Robot.base_frame = b }
+
+(* A backup's robot (--robot's arm at the cell's base frame, Backup_setup.input), or --robot's,
+   at the base frame of --base-frame without TASK= when one is given; one task runs here, so a
+   TASK= form is refused. *)
+let robot_of ?robot (o : Run_options.t) =
+  Result.bind (base_frames o) (fun frames ->
+      if List.exists (fun (t, _) -> t <> None) frames then
+        Error "rapid-sem: --base-frame TASK=...: this run has one task: --base-frame X,Y,Z,Q1,Q2,Q3,Q4 places its robot"
+      else
+        let b = base_frame_for frames None in
+        match robot with
+        | Some r -> Ok (placed r b)
+        | None -> Result.map (fun r -> placed r b) (load_robot o.robot))
 
 let install_services (s : Run_options.services) world =
   let module K = Rapid_controller.Sockets in
@@ -65,7 +102,9 @@ let entry (t : Run_options.tasks) =
 let with_inferred_signals ~notify (o : Run_options.t) files io =
   if not (o.allow_unknown && o.stub_unmodelled) then io
   else
-    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file f)) files in
+    let robotware = Option.value o.controller.robotware ~default:Rapid_syntax.Robotware.default in
+    let options = { Rapid_syntax.Parse.default_options with robotware } in
+    let modules = List.filter_map (fun f -> Result.to_option (Rapid_syntax.Parse.parse_file ~options f)) files in
     let io, added =
       Rapid_load.Signal_inference.for_run ~allow_unknown:o.allow_unknown ~stub_unmodelled:o.stub_unmodelled
         modules io in
@@ -82,12 +121,19 @@ let world (o : Run_options.t) ~history io robot =
   | Error m -> Error (Usage ("rapid-sem: " ^ m))
   | Ok () -> Ok (controller, motion)
 
+type one_task_events = {
+  task : string; before : Task_load.event_routine list; after : Task_load.event_routine list;
+  debug : Task_load.event_routine list;
+}
+
+let no_events = { task = ""; before = []; after = []; debug = [] }
+
 type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 
 (* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
    of the options, or the backup's robot when --robot does not name one. *)
 let io_and_robot ?robot ~notify (o : Run_options.t) files =
-  match read_io o.controller.io, robot_of ?robot o with
+  match run_io o o.controller.io, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
@@ -97,7 +143,8 @@ let io_and_robot ?robot ~notify (o : Run_options.t) files =
 
 let single ?(history = false) ?testing ?robot ~notify (o : Run_options.t) files =
   Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
-      match Rapid_load.Session.load ?testing ~allow_unknown:o.allow_unknown ~io files with
+      match Rapid_load.Session.load ?robotware:o.controller.robotware ?testing ~allow_unknown:o.allow_unknown ~io files
+      with
       | Error f -> Error (Refused f)
       | Ok loaded ->
           notify (Warnings (loaded.warnings, loaded.unknown_summary));
@@ -111,7 +158,7 @@ let fresh_world ?robot ~notify (o : Run_options.t) files =
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with
   | Error m -> Error (Usage m)
-  | Ok (Files files) -> Ok (o, files, entry, None)
+  | Ok (Files files) -> Ok (o, files, entry, None, no_events)
   | Ok (Cell c) -> (
       List.iter (fun w -> notify (Backup_warning w)) c.warnings;
       match List.find_opt (fun (t : Rapid_load.Backup.task) -> t.motion) c.backup.tasks with
@@ -121,20 +168,27 @@ let one_task ~notify (o : Run_options.t) files ~entry =
             notify (Backup_warning (Printf.sprintf "%s: warning: this command runs one task: %s, the motion task, \
                                                     alone (the backup's other tasks are not started)" t.at t.name));
           let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
-          let o = { o with controller = { o.controller with io } } in
-          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots))
+          let robotware = match o.controller.robotware with Some _ as r -> r | None -> c.backup.robotware in
+          let o = { o with controller = { o.controller with io; robotware; units = c.backup.units } } in
+          Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
+              { task = t.name; before = t.before; after = t.after; debug = t.debug_events }))
 
-let machine ?(observe = false) (o : Run_options.t) s ~entry =
+let machine ?(observe = false) ?(events = no_events) ?(notify = ignore) (o : Run_options.t) s ~entry =
+  (* R-bk-8: a backup's event routines, those the task buffer has. *)
+  let note n = notify (Backup_warning n) in
+  let before = Task_load.runnable ~note ~task:events.task s.loaded.program events.before
+  and after = Task_load.runnable ~note ~task:events.task s.loaded.program events.after in
   Result.map_error (fun reason -> Cannot_start { entry; reason })
     (Rapid_semantics.Machine.start ~limits:o.limits ~host:s.world.host ~stub_unmodelled:o.stub_unmodelled ~observe
-       s.loaded.program ~entry)
+       ~before ~after s.loaded.program ~entry)
 
-let start_machine ?observe ?history ?robot ~notify o files ~entry =
+let start_machine ?observe ?history ?robot ?events ~notify o files ~entry =
   machine_gc ();
-  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot) ->
+  Result.bind (one_task ~notify o files ~entry) (fun (o, files, entry, cell_robot, cell_events) ->
       let robot = match robot with Some _ -> robot | None -> cell_robot in
+      let events = match events with Some e -> e | None -> cell_events in
       Result.bind (single ?history ?robot ~notify o files) (fun s ->
-          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe o s ~entry)))
+          Result.map (fun cfg -> (cfg, s.world)) (machine ?observe ~events ~notify o s ~entry)))
 
 type several = {
   specs : Task_load.spec list;
@@ -146,10 +200,19 @@ type several = {
   connected : (string * string) list;
   motion_task : string option;
   summary : Backup_setup.summary option;
+  robotware : Rapid_syntax.Robotware.t option;
+  events : (string * (Task_load.event_routine list * Task_load.event_routine list)) list;
 }
 
 let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
   machine_gc ();
+  (* R-2.4-rw6: --robotware, else the backup's release. *)
+  let o = match o.controller.robotware, cell with
+    | None, Some (c : Backup_setup.cell) -> { o with controller = { o.controller with robotware = c.backup.robotware } }
+    | _ -> o in
+  let o = match cell with
+    | Some c -> { o with controller = { o.controller with units = c.backup.units } }
+    | None -> o in
   let split s = (String.sub s 0 (String.index s '='),
                  String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
   let well_formed s = match String.index_opt s '=' with
@@ -178,9 +241,10 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
     | Some f, _ -> Some f
     | None, Some c -> c.backup.eio
     | None, None -> None in
-  match all parse_task t.tasks, all parse_entry t.entries, read_io io_file, load_robot o.robot with
-  | Error m, _, _, _ | _, Error m, _, _ | _, _, Error m, _ | _, _, _, Error m -> Error (Usage m)
-  | Ok given, Ok entries, Ok io, Ok robot ->
+  match all parse_task t.tasks, all parse_entry t.entries, run_io o io_file, load_robot o.robot, base_frames o with
+  | Error m, _, _, _, _ | _, Error m, _, _, _ | _, _, Error m, _, _ | _, _, _, Error m, _ | _, _, _, _, Error m ->
+      Error (Usage m)
+  | Ok given, Ok entries, Ok io, Ok robot, Ok frames ->
       let replaced = List.map (fun (n, files, entry) ->
           match List.find_opt (fun (g, _) -> same g n) given with
           | Some (_, f) -> (n, f, entry) | None -> (n, files, entry)) backup_tasks in
@@ -207,18 +271,46 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
           let cell_robots = match cell with Some c -> c.robots | None -> [] in
           let motion_task = match t.motion_task, cell_robots with
             | Some m, _ -> Some m | None, (m, _) :: _ -> Some m | None, [] -> None in
+          (* the backup's robot of the motion task: --robot's arm when given, at the cell's base frame *)
           let robot = match motion_task with
-            | Some m when o.robot = None ->
-                Option.value (List.assoc_opt m cell_robots) ~default:robot
-            | _ -> robot in
+            | Some m -> Option.value (List.assoc_opt m cell_robots) ~default:robot
+            | None -> robot in
+          (* R-bk-12: --base-frame without TASK= places the run's robot, TASK= that task's; with --task
+             alone, a task other than the motion task gets a robot of its own there. *)
+          let is_motion n = match motion_task with Some m -> same n m | None -> false in
+          let first_task = match motion_task, names with Some m, _ -> Some m | None, n :: _ -> Some n | _ -> None in
+          let robot = placed robot (match base_frame_for frames None, first_task with
+              | Some b, _ -> Some b
+              | None, Some m -> base_frame_for frames (Some m)
+              | None, None -> None) in
+          let unknown = List.find_map (fun (tk, _) -> match tk with
+              | Some n when not (List.exists (same n) names) ->
+                  Some (Printf.sprintf "rapid-sem: --base-frame %s=...: there is no task %s" n n)
+              | Some n when cell <> None && not (is_motion n)
+                            && not (List.exists (fun (c, _) -> same c n) cell_robots) ->
+                  Some (Printf.sprintf "rapid-sem: --base-frame %s=...: the task %s has no robot in the backup" n n)
+              | _ -> None) frames in
+          let own = List.filter_map (fun n ->
+              if is_motion n || first_task = Some n || List.exists (fun (c, _) -> same c n) cell_robots then None
+              else Option.map (fun b -> (n, placed robot (Some b))) (base_frame_for frames (Some n))) names in
+          let cell_robots = List.map (fun (n, r) -> (n, placed r (base_frame_for frames (Some n)))) cell_robots in
+          match unknown with
+          | Some m -> Error (Usage m)
+          | None ->
           let others = List.filter (fun (n, _) -> match motion_task with Some m -> not (same n m) | None -> true)
-              cell_robots in
+              cell_robots @ own in
           let history_budget = if history then Some o.limits.max_memory else None in
           let robots = List.map (fun (n, r) -> (n, MR.create ~robot:r ?history:history_budget ())) others in
           let connected = match cell with Some c -> c.backup.connected | None -> [] in
           let summary = Option.map (fun c -> Backup_setup.summary c ~run:specs ~io) cell in
+          let robotware = o.controller.robotware in
+          (* R-bk-8: the event routines of the backup's tasks (of a task --task gives other files
+             too: those its buffer has run). *)
+          let events = match cell with
+            | Some c -> List.map (fun (b : Rapid_load.Backup.task) -> (b.name, (b.before, b.after))) c.backup.tasks
+            | None -> [] in
           Result.map (fun (controller, motion) ->
-              { specs; names; io; controller; motion; robots; connected; motion_task; summary })
+              { specs; names; io; controller; motion; robots; connected; motion_task; summary; robotware; events })
             (world o ~history io robot)
 
 let refused : Task_load.failure -> failure = function
@@ -227,16 +319,20 @@ let refused : Task_load.failure -> failure = function
 
 let loaded ~notify = function
   | Error f -> Error (refused f)
-  | Ok (t, (l : Task_load.loaded)) -> notify (Warnings (l.warnings, None)); Ok (t, l)
+  | Ok (t, (l : Task_load.loaded)) ->
+      List.iter (fun n -> notify (Backup_warning n)) l.notes;
+      notify (Warnings (l.warnings, None)); Ok (t, l)
 
 let machine_tasks ?(observe = false) ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
-    (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+    (Run.machine_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
+       ?robotware:s.robotware ~io:s.io
        ~observe ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)
 
 let closure_tasks ~notify (o : Run_options.t) (t : Run_options.tasks) s =
   loaded ~notify
-    (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown ~io:s.io
+    (Run.closure_tasks ~limits:o.limits ~stub_unmodelled:o.stub_unmodelled ~allow_unknown:o.allow_unknown
+       ?robotware:s.robotware ~io:s.io
        ?seed:t.schedule ?motion_task:s.motion_task ~robots:s.robots ~connected:s.connected
-       ~controller:s.controller ~motion:s.motion s.specs)
+       ~events:s.events ~controller:s.controller ~motion:s.motion s.specs)

@@ -47,6 +47,14 @@ val load_robot : string option -> (Rapid_motion_model.Robot.t, string) result
 (** --robot: the robot description of the file, or the built-in IRB 120; an error reads
     FILE:LINE:COL: robot description error: MESSAGE. *)
 
+val parse_base_frames : string list -> ((string option * Rapid_motion_model.Geom.pose) list, string) result
+(** Each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 ({!Rapid_motion_model.Base_frame.of_text}): the task
+    it names, [None] for the run's robot; an error is the whole message, one line (R-bk-12). *)
+
+val base_frame_for :
+  (string option * Rapid_motion_model.Geom.pose) list -> string option -> Rapid_motion_model.Geom.pose option
+(** The last base frame given for this task ([None]: the run's robot), letter case aside. *)
+
 val install_services : Run_options.services -> Rapid_controller.World.t -> (unit, string) result
 (** The services of the options given to the world (its file sandbox, its sockets). *)
 
@@ -76,13 +84,23 @@ val single :
     rapid-sem test are installed (doc/rulings.md R-test-a). [robot]: a backup's robot, unless
     --robot gives one. *)
 
+type one_task_events = {
+  task : string;                              (** the backup task's name *)
+  before : Task_load.event_routine list;      (** its event routines before its entry routine (R-bk-8) *)
+  after : Task_load.event_routine list;       (** after it *)
+  debug : Task_load.event_routine list;       (** those debug's commands make happen (R-bk-11) *)
+}
+
+val no_events : one_task_events
+(** Files: none. *)
+
 val one_task :
   notify:(notice -> unit) -> Run_options.t -> string list -> entry:string ->
-  (Run_options.t * string list * string * Rapid_motion_model.Robot.t option, failure) result
+  (Run_options.t * string list * string * Rapid_motion_model.Robot.t option * one_task_events, failure) result
 (** The one task buffer of these files: as they are, the modules of a .pgf file, or a controller
     backup's first motion task alone (its modules, its entry routine when [entry] is main, its
-    robot, its EIO.cfg unless --io), the backup's warnings notified: what debug, motion and trace
-    of one task run. *)
+    robot, its EIO.cfg unless --io, its event routines), the backup's warnings notified: what
+    debug, motion and trace of one task run. *)
 
 val fresh_world :
   ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) -> Run_options.t -> string list ->
@@ -92,11 +110,14 @@ val fresh_world :
     signals, robot), without loading the files again (rapid-sem test: a world per test). *)
 
 val machine :
-  ?observe:bool -> Run_options.t -> single -> entry:string -> (Rapid_semantics.Machine.config, failure) result
-(** The machine started on the entry routine, with the limits of the options. *)
+  ?observe:bool -> ?events:one_task_events -> ?notify:(notice -> unit) -> Run_options.t -> single -> entry:string ->
+  (Rapid_semantics.Machine.config, failure) result
+(** The machine started on the entry routine, with the limits of the options; with [events], a
+    backup task's event routines before and after it (R-bk-8), those the buffer lacks notified. *)
 
 val start_machine :
-  ?observe:bool -> ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> notify:(notice -> unit) ->
+  ?observe:bool -> ?history:bool -> ?robot:Rapid_motion_model.Robot.t -> ?events:one_task_events ->
+  notify:(notice -> unit) ->
   Run_options.t -> string list -> entry:string ->
   (Rapid_semantics.Machine.config * Run.world, failure) result
 (** {!one_task}, {!single}, then {!machine}, the collector paced for the machine first: what trace,
@@ -114,6 +135,9 @@ type several = {
   connected : (string * string) list;   (** a task without a robot, the motion task it reads *)
   motion_task : string option;          (** --motion-task, else a backup's first motion task *)
   summary : Backup_setup.summary option;   (** a backup's *)
+  robotware : Rapid_syntax.Robotware.t option;   (** --robotware, else a backup's (R-2.4-rw6) *)
+  events : (string * (Task_load.event_routine list * Task_load.event_routine list)) list;
+      (** a backup's event routines by task: before and after the entry routine (R-bk-8) *)
 }
 
 val several :

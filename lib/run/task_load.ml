@@ -19,9 +19,73 @@ type task = {
   motion : Rapid_installed.Motion_routines.state;
 }
 
-type loaded = { tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list }
+type loaded = {
+  tasks : task list; links : Task_rules.link list; warnings : Rapid_typing.Report.t list; notes : string list;
+}
+
+type event_routine = Rapid_load.Backup.event_routine
 
 let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+
+(* R-bk-9: ABB allows no motion instruction in a STOP or QSTOP event routine. The first move
+   instruction the routine calls, directly or through the task's routines, with where. *)
+let move_instructions =
+  [ "MoveL"; "MoveJ"; "MoveC"; "MoveAbsJ"; "MoveExtJ"; "SearchL"; "SearchC"; "SearchExtJ"; "TriggL"; "TriggJ";
+    "TriggC"; "MoveLDO"; "MoveJDO"; "MoveCDO"; "MoveLSync"; "MoveJSync"; "MoveCSync"; "MoveLAO"; "MoveJAO";
+    "MoveCAO"; "MoveLGO"; "MoveJGO"; "MoveCGO" ]
+
+let first_move (program : Ir.program) start =
+  let seen = Hashtbl.create 16 in
+  let rec routine i =
+    if Hashtbl.mem seen i then None
+    else begin
+      Hashtbl.replace seen i ();
+      let r = program.routines.(i) in
+      if r.primitive <> None then None
+      else
+        let blocks = r.body :: List.filter_map Fun.id [ Option.map (fun (h : Ir.error_handler) -> h.handler) r.error;
+                                                       r.undo ] in
+        List.find_map block blocks
+    end
+  and block (b : Ir.block) = Array.to_list b.body |> List.find_map stmt
+  and stmt (s : Ir.stmt) =
+    match s.s with
+    | Call_procedure { callee = Routine i; call_at; _ } ->
+        let callee = program.routines.(i) in
+        if List.exists (same callee.name) move_instructions && callee.primitive <> None then
+          Some (callee.name, call_at)
+        else routine i
+    | If (_, a, b) | Elseif (_, a, b) -> (match block a with Some m -> Some m | None -> block b)
+    | Compact_if (_, s) -> stmt s
+    | For f -> block f.loop_body
+    | While (_, b) -> block b
+    | Test (_, cases, default) ->
+        (match Array.to_list cases |> List.find_map (fun (_, b) -> block b) with
+         | Some m -> Some m
+         | None -> block default)
+    | _ -> None in
+  routine start
+
+(* R-bk-8: the event routines of a task that its buffer has as procedures without parameters;
+   each other one is a note, FILE:LINE of its CAB_EXEC_HOOKS instance, and not run. *)
+let runnable ~note ~task (program : Ir.program) (routines : event_routine list) =
+  List.filter_map (fun (e : event_routine) ->
+      match Task_rules.entry_routine program e.routine with
+      | Ok i ->
+          (if e.event = "STOP" || e.event = "QSTOP" then
+             match first_move program i with
+             | Some (name, at) ->
+                 note (Printf.sprintf "%s: warning: the %s event routine %s of task %s moves the robot (%s at %s): \
+                                       ABB allows no motion instruction in STOP and QSTOP event routines; it runs as \
+                                       written" e.hook_at e.event e.routine task name (Source.to_string at))
+             | None -> ());
+          Some e.routine
+      | Error _ ->
+          let what = if Array.exists (fun (r : Ir.routine) -> same r.name e.routine) program.routines
+            then "is not a procedure without parameters" else "is not in the task" in
+          note (Printf.sprintf "%s: warning: the event routine %s (%s) %s %s: not run" e.hook_at e.routine e.event what
+                  task);
+          None) routines
 
 (* ch. 14: the system-global persistents of a task buffer, that is PERS declared neither TASK
    nor LOCAL: module, name, type (its name and dimensions), whether it has an initial value. *)
@@ -36,12 +100,19 @@ let system_global_pers (modules : Ast.module_declaration list) =
               Some (module_name, name, type_name, List.length dims, initial_value <> None, d.at)
           | _ -> None) m.data_declarations) modules
 
-let global_index (program : Ir.program) ~module_name ~name =
-  let found = ref None in
+(* The first global of [program] declared in [module_name] with [name] (case-insensitive),
+   through a table made once per program: a task's 400 and more installed globals were each
+   looked up by a scan of the first task's, lowering both names at every step. *)
+let key module_name name = String.lowercase_ascii module_name ^ "\000" ^ String.lowercase_ascii name
+
+let global_table (program : Ir.program) =
+  let table = Hashtbl.create (2 * Array.length program.globals) in
   Array.iteri (fun i (g : Ir.global) ->
-      if !found = None && same g.g_module module_name && same g.g_name name then found := Some i)
-    program.globals;
-  !found
+      let k = key g.g_module g.g_name in
+      if not (Hashtbl.mem table k) then Hashtbl.replace table k i) program.globals;
+  table
+
+let global_index table ~module_name ~name = Hashtbl.find_opt table (key module_name name)
 
 type shared_pers = { owner : int; slot : int; type_text : string; mutable has_init : bool; task_name : string }
 
@@ -54,10 +125,11 @@ let share_persistents ~link (programs : Ir.program array) (tasks : (int * string
     | [] -> Ok ()
     | (k, task_name, modules) :: rest ->
         let program = programs.(k) in
+        let globals_by_name = lazy (global_table program) in
         let rec each = function
           | [] -> go rest
           | (module_name, name, type_name, ndims, has_init, at) :: more -> (
-              match global_index program ~module_name ~name with
+              match global_index (Lazy.force globals_by_name) ~module_name ~name with
               | None -> each more
               | Some j -> (
                   (* The type: its name and, for an array, the sizes its value has (a dimension
@@ -104,6 +176,7 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
   | [] -> ()
   | (first, _, _) :: rest ->
       let first_program = programs.(first) in
+      let first_table = global_table first_program in
       List.iter (fun (k, _, modules) ->
           let own = List.filter_map (fun (m : Ast.module_declaration) ->
               match m.module_name.it with
@@ -112,25 +185,29 @@ let share_installed ~link (programs : Ir.program array) (tasks : (int * string *
           let program = programs.(k) in
           Array.iteri (fun i (g : Ir.global) ->
               if i <> program.errno && i <> program.intno && not (List.mem (String.lowercase_ascii g.g_module) own) then
-                match global_index first_program ~module_name:g.g_module ~name:g.g_name with
+                match global_index first_table ~module_name:g.g_module ~name:g.g_name with
                 | Some j when j <> first_program.errno && j <> first_program.intno -> link k i (first, j)
                 | _ -> ()) program.globals) rest
 
-let parse_all files =
-  let parsed = List.map (Parse.parse_file ~options:Parse.default_options) files in
+let parse_all ~robotware files =
+  let options = { Parse.default_options with robotware } in
+  let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
   | [] -> Ok (List.filter_map Result.to_option parsed)
   | errors -> Error (Session.Front_end errors)
 
 let same = Rapid_typing.Types.same_name
 
-let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = []) ~world ~motion (specs : spec list) =
+let load ?(allow_unknown = false) ?(robotware = Rapid_syntax.Robotware.default) ?io ?motion_task ?(robots = [])
+    ?(connected = []) ?(events = []) ~world ~motion (specs : spec list) =
+  let notes = ref [] in
+  let note n = notes := n :: !notes in
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
   let rec load acc = function
     | [] -> Ok (List.rev acc)
     | (s : spec) :: rest -> (
-        match parse_all s.files with
+        match parse_all ~robotware s.files with
         | Error f -> Error (Load (s.name, f))
         | Ok modules -> (
             match Session.load_modules ~allow_unknown ?io modules with
@@ -172,7 +249,11 @@ let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = 
                   let motion = if same s.name motion_name then motion
                     else match own with Some (_, m) -> m | None -> Rapid_installed.Motion_routines.create () in
                   let host = Rapid_installed.World_host.make w motion in
-                  { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host };
+                  let before, after = match List.find_opt (fun (n, _) -> same n s.name) events with
+                    | Some (_, (b, a)) ->
+                        (runnable ~note ~task:s.name programs.(k) b, runnable ~note ~task:s.name programs.(k) a)
+                    | None -> ([], []) in
+                  { rules = { Task_rules.name = s.name; program = programs.(k); entry = s.entry; host; before; after };
                     world = w; motion }) loaded in
               (* R-14-pos1: the position functions of a task without a robot reach the motion
                  task's by its name, and read it by default (its mechanical unit group's). *)
@@ -188,4 +269,4 @@ let load ?(allow_unknown = false) ?io ?motion_task ?(robots = []) ?(connected = 
                       (first @ List.filter (fun r -> not (List.memq r first)) robots))
                 tasks;
               let warnings = List.concat_map (fun (_, _, (l : Session.loaded)) -> l.warnings) loaded in
-              Ok { tasks; links = List.rev !links; warnings })
+              Ok { tasks; links = List.rev !links; warnings; notes = List.rev !notes })

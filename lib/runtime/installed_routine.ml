@@ -26,6 +26,7 @@ type entry = {
   reach : reach;
   condition : string option;
   call : context -> Argument.t array -> outcome;
+  values : (Value.t option array -> (Value.t, string) Stdlib.result) option;
 }
 
 let returned v = { result = Returned v; events = []; new_move = None }

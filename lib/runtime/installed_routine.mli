@@ -60,6 +60,11 @@ type entry = {
       (** the parameter whose expression the engine evaluates again at every poll of the wait
           the call returns (WaitUntil's [Cond]) *)
   call : context -> Argument.t array -> outcome;
+  values : (Value.t option array -> (Value.t, string) Stdlib.result) option;
+      (** a function of {!Values} reach that only computes (ch. 11, the library's functions):
+          [call] on arguments that are all values (None for an absent one) is [Returned (Some v)]
+          for [Ok v] and [Failed] (not at a move) for [Error name], without events or move; an
+          engine with the values at hand may call it instead *)
 }
 
 val returned : Value.t option -> outcome

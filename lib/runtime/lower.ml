@@ -82,6 +82,26 @@ let rec root_at (r : A.data_reference) =
   | Component (r, _) -> root_at r
   | VAR_placeholder -> None
 
+
+(* §2.5: the value of a numeric literal, rounded to num or dnum: a pure function of its text,
+   kept for the texts already met (the same few literals recur in every program of a fuzzing
+   campaign, and reading one goes through exact rationals). Values are immutable. The table is
+   emptied when it grows large, so that long literals of hostile texts do not pile up. *)
+let literal_values : (string * bool, Value.t) Hashtbl.t = Hashtbl.create 256
+
+let literal_value text precision =
+  let key = (text, precision = `Dnum) in
+  match Hashtbl.find_opt literal_values key with
+  | Some v -> Some v
+  | None -> (
+      match Num_literal.of_text text with
+      | Ok t ->
+          let v = Value.of_literal t precision in
+          if Hashtbl.length literal_values >= 4096 then Hashtbl.reset literal_values;
+          Hashtbl.replace literal_values key v;
+          Some v
+      | Error _ -> None)
+
 let rec place ctx (r : A.data_reference) : Ir.place =
   match r.it with
   | VAR_placeholder -> Unresolved "<VAR>"
@@ -113,9 +133,9 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
       let n = float_of_int (int_of_string text) in
       make (Literal (if dnum then Value.Dnum n else Value.Num n))
   | Num_literal text -> (
-      match Num_literal.of_text text with
-      | Ok t -> make (Literal (Value.of_literal t (if dnum then `Dnum else `Num)))
-      | Error _ -> make Placeholder)
+      match literal_value text (if dnum then `Dnum else `Num) with
+      | Some v -> make (Literal v)
+      | None -> make Placeholder)
   | String_literal s -> make (Literal (Value.String s.bytes))
   | Bool_literal b -> make (Literal (Value.Bool b))
   | Data_reference r ->
@@ -239,7 +259,7 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
       | _ -> None)
 
 and parameters_of (r : Env.routine) =
-  List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps -> ps) r.r_slots
+  List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps | Required_choice ps -> ps) r.r_slots
 
 (* A call's callee's parameters, kept for the last routines called (a module of moves calls
    MoveL and Offs ten thousand times each): the routine records are never changed. *)
@@ -454,13 +474,13 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.slot_names i p.p_name) params;
         ctx.local_count <- List.length params;
         let optionals = List.concat_map (function
-            | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) r.r_slots in
+            | Env.Optional_slot ps | Env.Required_choice ps -> ps | Env.Required_slot _ -> []) r.r_slots in
         let optional p = optionals <> [] && List.memq p optionals in
         (* §5.2: the alternatives of one optional slot are mutually exclusive. *)
         let group p =
           let rec find k = function
             | [] -> -1
-            | Env.Optional_slot ps :: _ when List.memq p ps -> k
+            | (Env.Optional_slot ps | Env.Required_choice ps) :: _ when List.memq p ps -> k
             | _ :: rest -> find (k + 1) rest in
           find 0 r.r_slots in
         let parameters = Array.of_list (List.map (fun (p : Env.parameter) ->

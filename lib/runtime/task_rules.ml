@@ -1,6 +1,10 @@
 (* Several tasks on one clock (ch. 14): what both engines' task sets share. *)
 
-type task = { name : string; program : Ir.program; entry : string; host : Host.t }
+type task = {
+  name : string; program : Ir.program; entry : string; host : Host.t; before : string list; after : string list;
+}
+
+let first_routine t = match t.before with r :: _ -> r | [] -> t.entry
 
 type link = { task : int; slot : int; owner : int; owner_slot : int }
 

@@ -8,7 +8,14 @@ type task = {
   program : Ir.program;        (** checked and lowered, its shared persistents initialised *)
   entry : string;              (** the entry routine, a procedure without parameters *)
   host : Host.t;               (** the task's world: its controller shares the clock *)
+  before : string list;
+      (** a controller backup's event routines the task runs before its entry routine, in order
+          (doc/rulings.md R-bk-8); each a procedure without parameters *)
+  after : string list;         (** those it runs once the entry routine has returned *)
 }
+
+val first_routine : task -> string
+(** The routine the task starts in: its first event routine, else its entry routine. *)
 
 type link = { task : int; slot : int; owner : int; owner_slot : int }
 (** A data object the tasks share (system-global persistents, installed data): task [task]'s

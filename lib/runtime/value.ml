@@ -75,11 +75,13 @@ let rec copy = function
 
 (* The small ones (pos, orient, confdata...) built in place: Array.map is a call to the runtime. *)
 and copy_parts a =
+  (* a scalar part is itself, without a call *)
+  let c v = match v with Record _ | Array _ -> copy v | _ -> v [@@inline] in
   match Array.length a with
-  | 1 -> [| copy a.(0) |]
-  | 2 -> [| copy a.(0); copy a.(1) |]
-  | 3 -> [| copy a.(0); copy a.(1); copy a.(2) |]
-  | 4 -> [| copy a.(0); copy a.(1); copy a.(2); copy a.(3) |]
+  | 1 -> [| c a.(0) |]
+  | 2 -> [| c a.(0); c a.(1) |]
+  | 3 -> [| c a.(0); c a.(1); c a.(2) |]
+  | 4 -> [| c a.(0); c a.(1); c a.(2); c a.(3) |]
   | _ -> Array.map copy a
 
 let rec equal a b =
@@ -153,7 +155,14 @@ let shape_bytes shape =
 let rec bytes = function
   | Num _ | Dnum _ | Bool _ | Handle _ -> 32
   | String s -> 32 + String.length s
-  | Record a | Array a -> Array.fold_left (fun acc c -> add_sat acc (add_sat 8 (bytes c))) 16 a
+  | Record a | Array a ->
+      (* a loop, not a fold: a record argument's bytes are counted at every call *)
+      let acc = ref 16 in
+      for k = 0 to Array.length a - 1 do
+        let b = match a.(k) with Num _ | Dnum _ | Bool _ | Handle _ -> 32 | c -> bytes c in
+        acc := add_sat !acc (add_sat 8 b)
+      done;
+      !acc
 
 let rec conform shape v =
   let all shapes vs =

@@ -56,9 +56,13 @@ let enter_routine cfg (cs : call_state) =
 let return_from cfg value =
   let act = cfg.act in
   match act.caller with
-  | None ->
-      cfg.focus <- F_done Ended;
-      (Rule.Return_entry, [ Routine_left act.routine.name; Task_ended ])
+  | None -> (
+      match next_phase cfg with
+      | Some next -> (Rule.Return_entry, [ Routine_left act.routine.name; Routine_entered next.name ])
+      | None when resume cfg -> (Rule.Return_entry, [ Routine_left act.routine.name ])
+      | None ->
+          cfg.focus <- F_done Ended;
+          (Rule.Return_entry, [ Routine_left act.routine.name; Task_ended ]))
   | Some caller when act.routine.kind = Trap ->
       (* ch. 8: after ENDTRAP or RETURN, execution goes on where the interrupt came in. *)
       cfg.act <- caller; cfg.stack <- act.return_to; cfg.mark <- act.caller_mark;

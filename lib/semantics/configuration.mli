@@ -130,7 +130,16 @@ type focus =
   | F_abandon of after_abandon          (* leave the current activation, running its UNDO *)
   | F_done of Outcome.t
 
-type config = {
+(* What an event routine the debugger interposes (a STEP, START, RESTART or STOP routine of a
+   controller backup, doc/rulings.md R-bk-11) finds and gives back: the task's control as it
+   stood. *)
+type resume = {
+  r_act : activation; r_stack : frame list; r_mark : frame list; r_focus : focus; r_unmarked : bool;
+  r_kept : kept list; r_charged : bool; r_held : (int * int) option; r_phases : (Ir.routine * bool) list;
+  r_at_entry : bool;
+}
+
+and config = {
   program : Ir.program;
   limits : Limits.t;
   globals : loc array;
@@ -161,4 +170,10 @@ type config = {
   observe : bool;                       (* the run observes store writes, arguments, values (schema rapid-sem/2) *)
   mutable entered : bool;               (* the entry routine's routine-entered has been said *)
   mutable propagated : bool;            (* the error in focus arrives by propagation (§7.1) *)
+  (* A controller backup's event routines (doc/rulings.md R-bk-8): the routines the task runs
+     after the current one, each with whether it is the entry routine; whether the current one
+     is. *)
+  mutable phases : (Ir.routine * bool) list;
+  mutable at_entry : bool;
+  mutable resumes : resume list;        (* the control an interposed event routine gives back *)
 }

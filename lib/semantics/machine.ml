@@ -74,17 +74,36 @@ let routines_by_name (program : Ir.program) =
 let routine_index_in by_name name =
   match Hashtbl.find_opt by_name (String.lowercase_ascii name) with Some (i :: _) -> Some i | _ -> None
 
+(* The routines a task runs one after the other (R-bk-8): the event routines [before], the entry
+   routine, the event routines [after]; each a procedure without parameters. *)
+let sequence program by_name ~before ~entry ~after =
+  let find ~is_entry name =
+    match routine_index_in by_name name with
+    | None when is_entry -> Error (Task_rules.no_entry program name)
+    | None -> Error (Printf.sprintf "no procedure %s for the event routine" name)
+    | Some i ->
+        let r = program.Ir.routines.(i) in
+        if r.kind <> Procedure || Array.length r.parameters > 0 then
+          Error (if is_entry then
+                   Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)"
+                     name
+                 else Printf.sprintf "the event routine %s is not a procedure without parameters" name)
+        else Ok (r, is_entry) in
+  List.fold_right (fun (name, is_entry) acc ->
+      match find ~is_entry name, acc with
+      | Ok r, Ok rs -> Ok (r :: rs)
+      | Error m, _ | _, Error m -> Error m)
+    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+
 let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = false)
-    ?(observe = false) ~(host : Host.t) (program : Ir.program) ~entry =
+    ?(observe = false) ?(before = []) ?(after = []) ~(host : Host.t) (program : Ir.program) ~entry =
   let program = host.prepare program in
   let by_name = routines_by_name program in
-  match routine_index_in by_name entry with
-  | None -> Error (Task_rules.no_entry program entry)
-  | Some i ->
-      let routine = program.routines.(i) in
-      if routine.kind <> Procedure || Array.length routine.parameters > 0 then
-        Error (Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" entry)
-      else begin
+  match sequence program by_name ~before ~entry ~after with
+  | Error m -> Error m
+  | Ok [] -> Error (Task_rules.no_entry program entry)
+  | Ok ((routine, at_entry) :: phases) ->
+      begin
         (* §2.21: module data first takes its type's initial value, within the memory budget. *)
         let memory = ref 0 in
         let too_big = ref None in
@@ -155,7 +174,7 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
           count = 0; memory = !memory; by_name; unmarked = false; host;
           stub_unmodelled; stubbed = Hashtbl.create 8; move_owners = Recent.create Limits.move_owners; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
-          observe; entered = false; propagated = false;
+          observe; entered = false; propagated = false; phases; at_entry; resumes = [];
         } in
         cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
         (match !too_big with
@@ -163,6 +182,41 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
          | None -> Statements.settle cfg);
         Ok cfg
       end
+
+(* R-bk-11: the debugger's events (a step, a start, a restart, a stop) run their routines where
+   the program pointer is, one after the other, each in a new activation; the control comes back
+   when the last has ended. *)
+let interpose cfg names =
+  match names with
+  | [] -> Ok []
+  | _ -> (
+      let by_name = cfg.by_name in
+      let found = List.fold_right (fun name acc ->
+          match routine_index_in by_name name, acc with
+          | Some i, Ok rs when cfg.program.routines.(i).kind = Procedure
+                               && Array.length cfg.program.routines.(i).parameters = 0 ->
+              Ok (cfg.program.routines.(i) :: rs)
+          | _, Error m -> Error m
+          | _ -> Error (Printf.sprintf "the event routine %s is not a procedure without parameters" name))
+          names (Ok []) in
+      match found with
+      | Error m -> Error m
+      | Ok routines ->
+          cfg.resumes <- { r_act = cfg.act; r_stack = cfg.stack; r_mark = cfg.mark; r_focus = cfg.focus;
+                           r_unmarked = cfg.unmarked; r_kept = cfg.kept; r_charged = cfg.charged; r_held = cfg.held;
+                           r_phases = cfg.phases; r_at_entry = cfg.at_entry } :: cfg.resumes;
+          cfg.phases <- List.map (fun r -> (r, false)) routines;
+          cfg.at_entry <- false;
+          cfg.unmarked <- false; cfg.charged <- false; cfg.held <- None;
+          (* The current activation stays the resumed one's: next_phase must not release it. *)
+          let saved = cfg.act in
+          cfg.act <- { saved with memory = 0; resume = None };
+          match Store.next_phase cfg with
+          | None -> Ok []
+          | Some r -> Statements.settle cfg; Ok [ Routine_entered r.name ])
+
+let in_event_routine cfg = (not cfg.at_entry) || cfg.resumes <> []
+let interposed cfg = List.length cfg.resumes
 
 (* ------------------------------------------------------------------ the step *)
 

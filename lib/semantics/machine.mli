@@ -27,8 +27,8 @@ type outcome = Outcome.t
 type limits = Limits.t
 
 val start :
-  ?limits:limits -> ?stub_unmodelled:bool -> ?cooperative:bool -> ?observe:bool -> host:Host.t ->
-  Ir.program -> entry:string -> (config, string) result
+  ?limits:limits -> ?stub_unmodelled:bool -> ?cooperative:bool -> ?observe:bool -> ?before:string list ->
+  ?after:string list -> host:Host.t -> Ir.program -> entry:string -> (config, string) result
 (** The configuration that runs the entry routine, after the module data has been initialised
     (§2.21: static data initialised on load). [Error] when there is no such procedure.
     [~stub_unmodelled] (default false): an installed routine rapid-sem does not model runs as a
@@ -39,7 +39,28 @@ val start :
     clock to the scheduler ({!Task_set}).
     [~observe] (default false): the steps also say the store writes, the
     arguments of calls and the values functions return ({!Observation.t}: texts built only then,
-    schema rapid-sem/2). *)
+    schema rapid-sem/2).
+    [~before], [~after] (default none): a controller backup's event routines (doc/rulings.md
+    R-bk-8), run one after the other in a new activation each, those of [before] before the
+    entry routine, those of [after] once it has returned; each a procedure without parameters
+    ([Error] otherwise). A routine of the sequence that ends by its end or RETURN is followed by
+    the next; ExitCycle in an event routine ends that routine as its end does; an error the
+    system error handler takes, EXIT or Stop ends the task. *)
+
+val interpose : config -> string list -> (event list, string) result
+(** The debugger's events of a controller backup (a step, a start, a restart, a stop;
+    doc/rulings.md R-bk-11): these routines, each a procedure without parameters, run from
+    here one after the other, each in a new activation; when the last has ended (its end,
+    RETURN, ExitCycle) the control comes back as it stood, the program pointer where it was.
+    An error the system error handler takes, EXIT or Stop in one ends the task. The events
+    are those of entering the first. *)
+
+val in_event_routine : config -> bool
+(** Whether the task runs an event routine: one of its sequence other than the entry routine
+    (R-bk-8), or one interposed. *)
+
+val interposed : config -> int
+(** How many {!interpose}d sequences are running (their control not yet given back). *)
 
 val step_rule : config -> Rule.t * event list
 (** One reduction: the rule applied and what it made observable. Only valid while [outcome] is

@@ -152,6 +152,13 @@ let handler_end cfg =
 let leave_abandoned cfg after rule rule_entry =
   let act = cfg.act in
   match act.caller with
+  | None when (match after with Go_on_exit_cycle -> true | _ -> false) && not cfg.at_entry -> (
+      (* R-bk-8: ExitCycle in an event routine ends it; the task's sequence goes on. *)
+      let routine = act.routine in
+      match next_phase cfg with
+      | Some next -> (Rule.Cycle_restart, [ Routine_left routine.name; Routine_entered next.name ])
+      | None when resume cfg -> (Rule.Cycle_restart, [ Routine_left routine.name ])
+      | None -> cfg.focus <- F_done Ended; (rule_entry, [ Routine_left routine.name; Task_ended ]))
   | None when (match after with Go_on_exit_cycle -> true | _ -> false) ->
       (* R-13-exitcycle1: the next cycle, a new activation of the entry routine (its routine
          data initialised again); module data, interrupts, files and the clock are kept. *)

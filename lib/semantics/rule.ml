@@ -364,9 +364,14 @@ let after = function
   | Motion_history_exhausted -> None
 
 let all =
+  (* the rules met, in a table: a list's memq made this check quadratic at every start *)
+  let seen = Hashtbl.create 256 in
   let rec from r acc =
-    if List.memq r acc then invalid_arg ("Rule.after comes back to " ^ name r)
-    else match after r with Some next -> from next (r :: acc) | None -> List.rev (r :: acc) in
+    if Hashtbl.mem seen r then invalid_arg ("Rule.after comes back to " ^ name r)
+    else begin
+      Hashtbl.add seen r ();
+      match after r with Some next -> from next (r :: acc) | None -> List.rev (r :: acc)
+    end in
   from Label []
 
 let backward = function

@@ -117,6 +117,40 @@ let rec release cfg (act : activation) =
         end in
       up inner
 
+(* The event routines of a controller backup (doc/rulings.md R-bk-8): the routine at the bottom
+   of the stack has ended (its end, RETURN, or ExitCycle in an event routine) and another of the
+   task's sequence follows: it begins in a new activation, its routine data initialised; module
+   data, interrupts, files and the clock are kept. [None] when it was the last. *)
+let next_phase cfg =
+  match cfg.phases with
+  | [] -> None
+  | (routine, at_entry) :: rest ->
+      release cfg cfg.act;
+      cfg.phases <- rest;
+      cfg.at_entry <- at_entry;
+      let slots = Array.init routine.Ir.locals (fun _ -> fresh_loc (Value.Bool false)) in
+      let act = activation ~routine ~slots ~present:[||] ~kinds:[||] ~module_data:[||] ~caller:None
+          ~return_to:[ K_task_end ] ~caller_mark:[] in
+      cfg.act <- act;
+      cfg.stack <- [ K_local_init (act, routine.local_inits); K_seq (routine.body, 0); K_routine_end; K_task_end ];
+      cfg.mark <- [];
+      cfg.kept <- [];
+      cfg.focus <- F_next;
+      Some routine
+
+(* R-bk-11: the last routine of an interposed sequence has ended: the task's control comes back
+   as it stood before it. *)
+let resume cfg =
+  match cfg.resumes with
+  | [] -> false
+  | r :: rest ->
+      release cfg cfg.act;
+      cfg.resumes <- rest;
+      cfg.act <- r.r_act; cfg.stack <- r.r_stack; cfg.mark <- r.r_mark; cfg.focus <- r.r_focus;
+      cfg.unmarked <- r.r_unmarked; cfg.kept <- r.r_kept; cfg.charged <- r.r_charged; cfg.held <- r.r_held;
+      cfg.phases <- r.r_phases; cfg.at_entry <- r.r_at_entry;
+      true
+
 (* ------------------------------------------------------------------ values the rules read *)
 
 let set_errno cfg n = set cfg.globals.(cfg.program.errno) (V.num (float_of_int n))

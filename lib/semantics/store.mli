@@ -69,6 +69,15 @@ val release : config -> activation -> unit
 (** Gives back the activation's bytes, and those of the NOSTEPIN routines a handler at user
     level could have gone on in (R-7.3-p). *)
 
+val next_phase : config -> Ir.routine option
+(** The routine at the bottom of the stack has ended and the task's sequence (a controller
+    backup's event routines and the entry routine, doc/rulings.md R-bk-8) has another: it is
+    made current, in a new activation at its first statement; [None] when none follows. *)
+
+val resume : config -> bool
+(** The last routine of a sequence the debugger interposed has ended: the control it found comes
+    back (R-bk-11); [false] when none was interposed. *)
+
 (** {1 Values the rules read} *)
 
 val bool_of : Value.t -> bool option

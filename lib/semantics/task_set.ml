@@ -26,8 +26,8 @@ let start ?limits ?(stub_unmodelled = false) ?(observe = false) ?seed (tasks : T
   let rec start_all acc = function
     | [] -> Ok (List.rev acc)
     | (task : Task_rules.task) :: rest -> (
-        match M.start ~limits ~stub_unmodelled ~cooperative:true ~observe ~host:task.host task.program
-                ~entry:task.entry with
+        match M.start ~limits ~stub_unmodelled ~cooperative:true ~observe ~before:task.before ~after:task.after
+                ~host:task.host task.program ~entry:task.entry with
         | Error m -> Error (Printf.sprintf "task %s: %s" task.name m)
         | Ok cfg -> start_all ({ t_name = task.name; cfg; idle = false } :: acc) rest)
   in

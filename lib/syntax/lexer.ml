@@ -150,14 +150,16 @@ type t = {
   mutable token_start : int;            (* start of a token read by a sub-lexer, else -1 *)
   mutable last_stop : Lexing.position;  (* where the previous token stopped *)
   installed : bool;                     (* reading the installed environment: REF is a word *)
+  robotware : Robotware.t;              (* RobotWare 5 and 6: BREAK and CONTINUE are names *)
   mutable after_switch : bool;          (* the previous token is the name "switch" *)
+  mutable after_proc : bool;            (* in the installed environment, the previous token is PROC *)
 }
 
 let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
 
-let create ?(installed = false) file (decoded : Decode.t) =
+let create ?(installed = false) ?(robotware = Robotware.default) file (decoded : Decode.t) =
   { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1;
-    last_stop = position (-1); installed; after_switch = false }
+    last_stop = position (-1); installed; robotware; after_switch = false; after_proc = false }
 
 (* The current lexeme, as UTF-8, without its first [skip] bytes. *)
 let text_of ?(skip = 0) lx =
@@ -331,6 +333,15 @@ let number lx text start stop =
   NUM (if stop - start <= 5 then Names.find_or_add lx.names text start stop
        else String.sub text start (stop - start))
 
+(* R-2.4-rw6: RobotWare 5 and 6 reserve neither BREAK nor CONTINUE (the statements of §4.8 and §4.9
+   are RobotWare 7's). The installed environment declares RobotWare 6's instruction Break (the
+   name right after PROC), which a RobotWare 7 module cannot name. *)
+let loop_word_is_name lx token =
+  match token with
+  | BREAK -> (lx.installed && lx.after_proc) || not (Robotware.reserves_loop_words lx.robotware)
+  | CONTINUE -> not (Robotware.reserves_loop_words lx.robotware)
+  | _ -> false
+
 (* §2.3, §2.4: the token of the name text.[start..stop-1], [chars] characters long, which is
    the current lexeme (an error is reported at it). *)
 let name lx text start stop chars =
@@ -338,6 +349,8 @@ let name lx text start stop chars =
   if reserved >= 0 && lx.installed && lx.after_switch && Reserved.tokens.(reserved) = CONTINUE then
     (* The installed RaiseToUser declares ABB's switch Continue (doc/rulings.md R-7.3-m): in the
        installed environment, right after "switch", the word is the parameter's name. *)
+    IDENT (Names.find_or_add lx.names text start stop)
+  else if reserved >= 0 && loop_word_is_name lx Reserved.tokens.(reserved) then
     IDENT (Names.find_or_add lx.names text start stop)
   else if reserved >= 0 then Reserved.tokens.(reserved)
   else begin
@@ -580,4 +593,5 @@ let next lx =
   let stopp = position stop in
   lx.last_stop <- stopp;
   lx.after_switch <- lx.installed && (match t with IDENT w -> String.lowercase_ascii w = "switch" | _ -> false);
+  lx.after_proc <- lx.installed && t = PROC;
   (t, startp, stopp)

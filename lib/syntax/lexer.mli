@@ -5,8 +5,9 @@ exception Error of Source.region * string
 
 type t
 
-val create : ?installed:bool -> Source.file -> Decode.t -> t
-(** [~installed:true] reads the installed environment, where REF is an access mode (ch. 11). *)
+val create : ?installed:bool -> ?robotware:Robotware.t -> Source.file -> Decode.t -> t
+(** [~installed:true] reads the installed environment, where REF is an access mode (ch. 11).
+    [robotware] (default {!Robotware.default}): the release whose reserved words apply. *)
 
 val next : t -> Parser.token * Lexing.position * Lexing.position
 (** The next token and the character offsets ([pos_cnum]) where it starts and stops.

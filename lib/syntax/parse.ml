@@ -1,6 +1,6 @@
-type options = { strict : bool; installed : bool }
+type options = { strict : bool; installed : bool; robotware : Robotware.t }
 
-let default_options = { strict = false; installed = false }
+let default_options = { strict = false; installed = false; robotware = Robotware.default }
 
 (* §1.4 names "program too complex (nested)" as a fatal static error without giving a bound;
    ruling R-1.4 in doc/rulings.md fixes it. Every later phase may then recurse on the tree. *)
@@ -257,7 +257,8 @@ let run_parser options file decoded lexer =
   | exception Parser.Error state ->
       let (token, (s : Lexing.position), _) = !last in
       let hint =
-        Syntax_hint.hint file decoded ~installed:options.installed ~error_start:s.pos_cnum in
+        Syntax_hint.hint file decoded ~installed:options.installed ~robotware:options.robotware
+          ~error_start:s.pos_cnum in
       raise (Refused (Diagnostic.make ?hint Syntax_error (region_of !last)
                         (Printf.sprintf "%s; found %s" (syntax_message state) (describe_token token))))
 
@@ -271,7 +272,8 @@ let parse_decoded options name (decoded : Decode.t) =
       refuse Lexical_error at_start
         "byte-order mark at the start of the file: §2.1 defines no such character; accepted \
          without --strict (doc/dialect.md)";
-    let m = run_parser options file decoded (Lexer.create ~installed:options.installed file decoded) in
+    let lexer = Lexer.create ~installed:options.installed ~robotware:options.robotware file decoded in
+    let m = run_parser options file decoded lexer in
     if options.strict && not decoded.final_newline then
       refuse Syntax_error (Source.region file (decoded.length - 1) decoded.length)
         "the file does not end with a line break (§2.10: a line ends with <newline>); \

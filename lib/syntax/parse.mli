@@ -7,6 +7,9 @@ type options = {
   installed : bool;
       (** reading the installed environment (lib/typing/installed): REF is an access mode
           (ch. 11) *)
+  robotware : Robotware.t;
+      (** the RobotWare release whose reserved words apply (R-2.4-rw6): RobotWare 5 and 6
+          reserve neither BREAK nor CONTINUE *)
 }
 
 val default_options : options

@@ -429,8 +429,8 @@ let window = 512
    sought for every syntax error a fuzzer's mutants meet. *)
 let no_token = { token = EOF; start = 0; stop = 0 }
 
-let hint file (decoded : Decode.t) ~installed ~error_start =
-  let lexer = Lexer.create ~installed file decoded in
+let hint file (decoded : Decode.t) ~installed ~robotware ~error_start =
+  let lexer = Lexer.create ~installed ~robotware file decoded in
   let sc = new_scanner file in
   (* The last [window] tokens before the error, in a ring. *)
   let ring = Array.make window no_token in

@@ -3,8 +3,8 @@
     THEN, a compound statement or routine left open), found from the tokens around the error. *)
 
 val hint :
-  Source.file -> Decode.t -> installed:bool -> error_start:int -> string option
-(** [hint file decoded ~installed ~error_start]: the hint for a syntax error at the token that
+  Source.file -> Decode.t -> installed:bool -> robotware:Robotware.t -> error_start:int -> string option
+(** [hint file decoded ~installed ~robotware ~error_start]: the hint for a syntax error at the token that
     starts at character offset [error_start], from the tokens of [decoded] read again from its
     start. [None] when no mistake is recognised. Never raises. *)
 

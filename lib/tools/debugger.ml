@@ -20,6 +20,9 @@ type t = {
       (* a name's declared type in a routine's scope, and whether it may be written *)
   statement_lines : (string * int list) list;
       (* the task's files and the lines a statement begins on, where a breakpoint can stop *)
+  events : (string * string list) list;
+      (* a controller backup's event routines that the commands make happen, by event (R-bk-11) *)
+  mutable started : bool;                             (* a command has run the program *)
 }
 
 let config s = s.cfg
@@ -112,6 +115,30 @@ let run_until s stop =
   in
   go true
 
+(* R-bk-11: the event routines the task runs before it stands at its entry routine (POWER_ON,
+   RESET), or that a command made happen, run to their end, what they write shown. *)
+let run_events ?until s =
+  let until = match until with Some f -> f | None -> fun () -> not (M.in_event_routine s.cfg) in
+  while M.outcome s.cfg = Outcome.Running && not (until ()) && M.steps s.cfg < s.max_steps do
+    let rule, events = M.step s.cfg in
+    note_rule s rule;
+    show_events s events
+  done;
+  match M.outcome s.cfg with Outcome.Running -> () | o -> s.out (outcome_text o)
+
+(* R-bk-11: a command makes the event happen: START (the first continue), RESTART (a continue
+   after a stop), STEP (a step forward or backward), STOP (a continue that stopped at a
+   breakpoint); its routines run where the program pointer is, which then stays there. *)
+let event s name =
+  match List.assoc_opt name s.events with
+  | None | Some [] -> ()
+  | Some routines when M.outcome s.cfg = Outcome.Running -> (
+      let depth = M.interposed s.cfg in
+      match M.interpose s.cfg routines with
+      | Error m -> s.out ("event routines: " ^ m)
+      | Ok events -> show_events s events; run_events ~until:(fun () -> M.interposed s.cfg <= depth) s)
+  | Some _ -> ()
+
 (* The program pointer stops only at a statement (doc/debugger.md), on the line it begins on: a
    breakpoint on any other line could never stop [continue]. Every statement list of every
    routine of the task's [files] (all files without them), handlers included. *)
@@ -142,12 +169,15 @@ let statement_lines ?files (program : Ir.program) =
   List.sort compare (List.map (fun (f, lines) -> (f, List.sort_uniq compare lines)) named)
 
 let create ?(max_steps = 100_000_000) ?(hidden = fun _ -> false) ?(routine_data = fun _ -> [])
-    ?(type_of = fun _ _ -> None) ?files ~out cfg =
+    ?(type_of = fun _ _ -> None) ?files ?(events = []) ~out cfg =
   let s = { cfg; out; max_steps; breakpoints = []; next_breakpoint = 1; sources = Hashtbl.create 4;
             rules_seen = Hashtbl.create 64; rules_order = []; hidden; routine_data; type_of;
-            statement_lines = statement_lines ?files (M.program cfg) } in
+            statement_lines = statement_lines ?files (M.program cfg); events; started = false } in
+  (* A backup's POWER_ON and RESET routines first (R-bk-11): the session begins at main. *)
+  run_events s;
   (* The machine starts settled, at the entry routine's first statement when it has one. *)
-  if not (M.pointer_statement cfg <> None && visible s) then run_until s (fun () -> true);
+  if M.outcome cfg = Outcome.Running && not (M.pointer_statement cfg <> None && visible s) then
+    run_until s (fun () -> true);
   show_pointer s;
   s
 
@@ -324,6 +354,9 @@ let breakable s file line =
       Error (if lines = [] then Printf.sprintf "%s has no statement" f
              else Printf.sprintf "no statement begins on line %d of %s; statements begin on lines %s" line f shown)
 
+(* R-bk-11: a step forward or backward makes the STEP event happen; the program has run. *)
+let step_event s = event s "STEP"; s.started <- true
+
 let words line =
   List.filter (fun w -> w <> "") (String.split_on_char ' ' (String.trim line))
 
@@ -347,21 +380,39 @@ let command s line =
       match count_arg (words rest) with
       | None -> s.out "step: step [N], N at least 1"; `Go_on
       | Some n ->
-          let rec go k = if k > 0 && running s then (run_until s (fun () -> true); show_pointer s; go (k - 1)) in
+          let rec go k =
+            if k > 0 && running s then begin
+              step_event s;
+              if M.outcome s.cfg = Outcome.Running then run_until s (fun () -> true);
+              show_pointer s; go (k - 1)
+            end in
           go n; `Go_on)
   | "next" | "n" ->
       if running s then begin
+        step_event s;
         let d = M.depth s.cfg in
-        run_until s (fun () -> M.depth s.cfg <= d); show_pointer s
+        if M.outcome s.cfg = Outcome.Running then run_until s (fun () -> M.depth s.cfg <= d);
+        show_pointer s
       end; `Go_on
   | "finish" ->
       if running s then begin
+        step_event s;
         let d = M.depth s.cfg in
-        run_until s (fun () -> M.depth s.cfg < d); show_pointer s
+        if M.outcome s.cfg = Outcome.Running then run_until s (fun () -> M.depth s.cfg < d);
+        show_pointer s
       end; `Go_on
   | "continue" | "c" ->
-      if running s then (run_until s (fun () -> at_breakpoint s); show_pointer s); `Go_on
-  | "back" | "b" -> back s; `Go_on
+      if running s then begin
+        event s (if s.started then "RESTART" else "START");
+        s.started <- true;
+        if M.outcome s.cfg = Outcome.Running then begin
+          run_until s (fun () -> at_breakpoint s);
+          (* At a breakpoint the program stops: the STOP routines (its end ran them already). *)
+          if M.outcome s.cfg = Outcome.Running then event s "STOP"
+        end;
+        show_pointer s
+      end; `Go_on
+  | "back" | "b" -> if running s then step_event s; back s; `Go_on
   | "break" -> (
       match String.rindex_opt rest ':' with
       | Some i when i > 0 && (match int_of_string_opt (String.sub rest (i + 1) (String.length rest - i - 1)) with

@@ -684,7 +684,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   in
   let optional_names = List.concat_map (function
       | Env.Optional_slot ps -> List.map (fun (p : Env.parameter) -> p.p_name) ps
-      | Env.Required_slot _ -> []) routine.r_slots in
+      | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots in
   (* An optional or conditional argument that names no optional parameter of the routine. *)
   let unknown_optional (a : argument) =
     match a.it, arg_name a with
@@ -714,6 +714,17 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
         argument ~call ctx place a (operand e at) p;
         bind p a;
         go slots rest
+    | Env.Required_choice ps :: slots, ({ it = Required_argument (name, e, e_at); _ } as a) :: rest ->
+        required_choice slots rest a ps (Option.bind name name_of_identifier) (operand e e_at)
+    | Env.Required_choice ps :: slots, ({ it = Positional_argument e; at } as a) :: rest ->
+        required_choice slots rest a ps None (operand e at)
+    | Env.Required_choice ps :: _, (a :: _) ->
+        error ctx ~rule:"argument-required" ~section:call a.at
+          "the required argument %s must come here" (choice_names ps)
+    | Env.Required_choice ps :: _, [] ->
+        if not has_placeholder then
+          error ctx ~rule:"argument-required" ~section:call call_region
+            "the required argument %s of %s is missing" (choice_names ps) routine.r_name
     | Env.Required_slot p :: _, (a :: _) ->
         error ctx ~rule:"argument-required" ~section:call a.at
           "the required argument %s must come here" p.p_name
@@ -756,7 +767,31 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
                 go slots (exclusive rest)
             | None -> go slots args)
         | [] -> go slots [])
-  in
+  (* ABB's "Signal | PersBool" (Installed_choices): the alternative the argument names, or else
+     the one whose type it has; an argument of neither type is judged against the first. *)
+  and required_choice slots rest (a : argument) (ps : Env.parameter list) named e =
+    let chosen = match named with
+      | Some n -> (
+          match List.find_opt (fun (p : Env.parameter) -> T.same_name p.p_name n) ps with
+          | Some p -> Some p
+          | None ->
+              Report.error ctx.report ~rule:"argument-name" ~section:call a.at
+                (Printf.sprintf "the argument is named %s, but the parameter in this place is %s" n
+                   (choice_names ps));
+              None)
+      | None ->
+          let quiet = { ctx with report = Report.create (); unknown_reported = Hashtbl.copy ctx.unknown_reported } in
+          let ty = infer quiet place e in
+          let fits (p : Env.parameter) = match ty, p.p_type with
+            | Known t, Some pt -> T.equal_types ~value_context:false t pt
+            | Numeric_literal, Some pt -> pt.base = T.Num && pt.dims = T.Scalar
+            | _ -> false in
+          Some (match List.find_opt fits ps with Some p -> p | None -> List.hd ps) in
+    (match chosen with
+     | Some p -> argument ~call ctx place a e p; bind p a
+     | None -> ());
+    go slots rest
+  and choice_names ps = String.concat " or " (List.map (fun (p : Env.parameter) -> p.p_name) ps) in
   go routine.r_slots args;
   Hashtbl.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
   (* Optional or conditional arguments that match no parameter. *)
@@ -791,7 +826,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
    ("TPWrite "a = ", a;"), most likely lacks the backslash: the hint writes it out. *)
 and backslash_hint ctx place (routine : Env.routine) (a : argument) =
   let optionals = List.concat_map (function
-      | Env.Optional_slot ps -> ps | Env.Required_slot _ -> []) routine.r_slots in
+      | Env.Optional_slot ps -> ps | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots in
   let written e = Rapid_syntax.Printer.expression e in
   match a.it with
   | Required_argument (Some { it = Ident n; _ }, e, e_at) -> (
@@ -1471,7 +1506,7 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
   in
   List.iter (function
       | Env.Required_slot p -> parameter p ~optional:false
-      | Env.Optional_slot ps -> List.iter (parameter ~optional:true) ps)
+      | Env.Optional_slot ps | Env.Required_choice ps -> List.iter (parameter ~optional:true) ps)
     routine.r_slots;
   let place = { module_place with scope = { module_place.scope with routine = [ table ] };
                                   routine = Some routine } in
@@ -1659,6 +1694,7 @@ let routine_signature ctx info (r : routine_declaration) =
     | None -> None
     | Some n ->
         let slots = parameter_slots ctx place params in
+        let slots = if info.is_installed then Installed_choices.apply n slots else slots in
         (* A parameter list with placeholders (§2.9) is not known enough to check calls. *)
         let r_open = List.exists (fun (p : Ast.parameter) ->
             match p.it with

@@ -28,7 +28,10 @@ type parameter = {
   p_region : Source.region;
 }
 
-type parameter_slot = Required_slot of parameter | Optional_slot of parameter list
+type parameter_slot =
+  | Required_slot of parameter
+  | Optional_slot of parameter list
+  | Required_choice of parameter list
 type routine_kind = Procedure | Function of Types.object_type | Trap
 
 type routine = {

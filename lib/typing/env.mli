@@ -40,6 +40,9 @@ type parameter = {
 type parameter_slot =
   | Required_slot of parameter
   | Optional_slot of parameter list    (** one optional parameter, or mutually exclusive ones *)
+  | Required_choice of parameter list
+      (** ABB's "Signal | PersBool": exactly one of these required parameters takes the argument
+          in this place; only installed routines have it (Installed_choices) *)
 
 type routine_kind = Procedure | Function of Types.object_type | Trap
 

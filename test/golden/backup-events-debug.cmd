@@ -1,0 +1,1 @@
+debug --script backup-events-debug.script backup-events

@@ -1,0 +1,1 @@
+run --engine machine --json backup-events
