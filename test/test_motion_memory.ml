@@ -60,6 +60,32 @@ let bounded ~zone ~speed ~p2 ~moves () =
   if grown > 2_000_000 then
     Alcotest.failf "the live heap grew by %d bytes over %d moves" grown (moves - moves / 10)
 
+(* The same in the closure engine, the one `rapid-sem run` uses: the live heap measured from
+   inside the run, at the 2,000th move planned and at the last, without samples. *)
+let bounded_closure ~moves () =
+  let f = Filename.temp_file "memloop" ".mod" in
+  let oc = open_out_bin f in
+  output_string oc (loop ~moves ~zone:"z10" ~speed:"v1000" ~p2:"250"); close_out oc;
+  let loaded = match Rapid_load.Session.load ~io:Rapid_controller.Io_config.empty [ f ] with
+    | Ok l -> Sys.remove f; l
+    | Error _ -> Sys.remove f; Alcotest.fail "the loop does not load" in
+  let world = Rapid_controller.World.create ~statement_time:0. ~max_time:1e9 Rapid_controller.Io_config.empty in
+  let host = (Rapid_run.Run.setup ~controller:world ~motion:(MP.create ()) ()).host in
+  let planned = ref 0 and early = ref 0 and late = ref 0 in
+  let on_event = function
+    | Rapid_runtime.Event.Motion (Rapid_observable.Motion_event.Segment_planned _) ->
+        incr planned;
+        if !planned = moves / 10 then early := live_words ();
+        if !planned = moves + 1 then late := live_words ()
+    | _ -> () in
+  (match Rapid_closure.Closure_engine.run ~host ~all_events:true ~on_event loaded.program ~entry:"main" with
+   | Ok _ -> ()
+   | Error m -> Alcotest.fail m);
+  Alcotest.(check int) "every move planned" (moves + 1) !planned;
+  let grown = (!late - !early) * (Sys.word_size / 8) in
+  if grown > 2_000_000 then
+    Alcotest.failf "the live heap grew by %d bytes over %d moves (closure engine)" grown (moves - moves / 10)
+
 (* With history the moves kept are charged (Motion_primitives.history_bytes each) against the
    budget; the move beyond it ends the run as a resource exhausted, naming --max-memory. *)
 let history_budget () =
@@ -171,6 +197,8 @@ let suite =
         (bounded ~zone:"fine" ~speed:"v1000" ~p2:"250" ~moves:200_000);
       Alcotest.test_case "z200 moves of 1 mm at vmax: the live heap stays bounded" `Quick
         (bounded ~zone:"z200" ~speed:"vmax" ~p2:"-249" ~moves:20_000);
+      Alcotest.test_case "20,000 moves in the closure engine: the live heap stays bounded" `Quick
+        (bounded_closure ~moves:20_000);
       Alcotest.test_case "the history with samples is refused past its budget" `Quick history_budget;
       Alcotest.test_case "forgetting changes no answer from the present on" `Quick forget_same;
       Alcotest.test_case "a point passed often is named once; a long path's CSV is bounded" `Quick output_bounded ] )

@@ -122,7 +122,7 @@ type state = {
   mutable quiet_base : int;           (* [quiet] when the world's clock was last charged *)
   mutable moving : bool;              (* the motion may have something to report *)
   max_time : float;
-  mutable move_owners : (int * act) list;  (* recent moves and the activation that ran each *)
+  move_owners : (int, act) Recent.t;  (* recent moves and the activation that ran each *)
   mutable serve_trap : act -> int -> int -> unit;  (* [serve_trap], tied below *)
   mutable undoing : act list;         (* activations whose UNDO handler runs (§7.6's search) *)
   mutable kept : act list;            (* activations in the handler of a kept asynchronous error *)
@@ -1107,16 +1107,20 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
          a RAPID routine's, while its arguments are bound. *)
+      (* The bytes at each call; what they are for, only when they do not fit. *)
       let cost = Array.mapi (fun i arg ->
           let p = callee.parameters.(i) in
-          let absent = ("the absent parameter " ^ p.p_name, V.shape_bytes p.p_default) in
-          let what = "the copy for the parameter " ^ p.p_name in
           match arg with
-          | By_value _ -> fun (v : Argument.t) ->
-              (match v with Argument.Value x -> (what, V.bytes x) | _ -> ("", 0))
-          | Absent -> fun _ -> absent
-          | Pass_on _ -> (function Argument.Missing -> absent | _ -> ("", 0))
-          | By_reference _ | Present_switch -> fun _ -> ("", 0)) arguments in
+          | By_value _ -> fun (v : Argument.t) -> (match v with Argument.Value x -> V.bytes x | _ -> 0)
+          | Absent -> let absent = V.shape_bytes p.p_default in fun _ -> absent
+          | Pass_on _ -> let absent = V.shape_bytes p.p_default in (function Argument.Missing -> absent | _ -> 0)
+          | By_reference _ | Present_switch -> fun _ -> 0) arguments in
+      let what i (v : Argument.t) =
+        let p = callee.parameters.(i) in
+        match arguments.(i), v with
+        | By_value _, Argument.Value _ -> "the copy for the parameter " ^ p.p_name
+        | Absent, _ | Pass_on _, Argument.Missing -> "the absent parameter " ^ p.p_name
+        | _ -> "" in
       let n = Array.length args in
       let entry = st.host.routine name in
       let reach = match entry with Some e -> e.reach | None -> IR.Values in
@@ -1144,8 +1148,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         let values = small_arguments n in
         for i = 0 to n - 1 do
           let v = args.(i) a in
-          let what, bytes = cost.(i) v in
-          if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st what at;
+          let bytes = cost.(i) v in
+          if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st (what i v) at;
           pending := !pending + bytes;
           values.(i) <- v
         done;
@@ -1156,7 +1160,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         if reach <> Values then begin
           (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4). *)
           (match o.new_move with
-           | Some id -> st.move_owners <- (id, a) :: List.filteri (fun i _ -> i < Limits.move_owners - 1) st.move_owners
+           | Some id -> Recent.add st.move_owners id a
            | None -> ());
           (* The machine's order within a step: the world, the routine's own events, the motion. *)
           List.iter (function Event.Controller _ as e -> if st.all_events then st.emit e | _ -> ()) o.events;
@@ -1578,7 +1582,7 @@ and kept_async_error st (a : act) ~at name move handled =
   let rec in_chain (x : act) (b : act) = b.level >= 0 && (b == x || in_chain x b.parent) in
   let rec up acc (b : act) = if b.level < 0 then List.rev acc else up (b :: acc) b.parent in
   let rec live (b : act) = if b.level < 0 then [] else if in_chain b a then up [] b else live b.parent in
-  let owner = match move with Some id -> List.assoc_opt id st.move_owners | None -> None in
+  let owner = match move with Some id -> Recent.find_opt st.move_owners id | None -> None in
   let from_motion = match owner with
     | Some o when in_chain o a -> up [] o
     | Some o when name <> "ERR_COLL_STOP" -> live o.parent
@@ -2436,7 +2440,7 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     observing = host.next_event () <> None || host.collisions || cooperation <> None;
     quiet = 0; quiet_base = 0;
     moving = host.collisions;
-    max_time = host.max_time; move_owners = [];
+    max_time = host.max_time; move_owners = Recent.create Limits.move_owners;
     serve_trap = (fun _ _ _ -> ());
     undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
     next_cycle = false; cooperation } in

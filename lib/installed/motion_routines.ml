@@ -49,8 +49,11 @@ type state = {
   mutable async_raised : bool;                 (* the last failure was a \SyncLastMoveInst error *)
   mutable conc_run : int;                      (* \Conc moves in a row, for ERR_CONC_MAX *)
   mutable collision_handling : bool;           (* /SYS/SYS_MISC/CollisionErrorHandling (§7.6) *)
-  mutable history : (P.motion * float array * float array) list;
-      (* forward moves and their start axes (the arm's, the external ones), newest first *)
+  history : (P.motion * float array * float array) option array;
+      (* the last [history_moves] forward moves and their start axes (the arm's, the external
+         ones): a ring, its newest at [history_top - 1] *)
+  mutable history_top : int;
+  mutable history_len : int;
   mutable backward : bool;                     (* a BACKWARD handler runs (ch. 6) *)
   mutable cleared_at : float option;           (* the last ClearPath: when the moves it drops are dropped *)
   mutable extensions : extension list;         (* of the modules built on the motion (Trigg_routines) *)
@@ -63,13 +66,31 @@ type state = {
 
 let dummy = V.Bool false
 
+(* The forward moves a BACKWARD handler can retrace: the last 256. *)
+let history_moves = 256
+
+let push_history st h =
+  st.history.(st.history_top) <- Some h;
+  st.history_top <- (st.history_top + 1) mod history_moves;
+  st.history_len <- min history_moves (st.history_len + 1)
+
+let pop_history st =
+  if st.history_len = 0 then None
+  else begin
+    let top = (st.history_top + history_moves - 1) mod history_moves in
+    let h = st.history.(top) in
+    st.history.(top) <- None; st.history_top <- top; st.history_len <- st.history_len - 1;
+    h
+  end
+
 let create ?(robot = MM.Robot.irb120) ?history () =
   let kin = MM.Kinematics.create robot in
   { robot; kin; planner = P.create kin; tracks = []; tracks_back = []; outputs = []; fresh = [];
     check_at = infinity; dirty = false; reshaped = false; history_budget = history; first_target = None;
     tool = dummy; wobj = dummy; first_poll = None; async = None; interrupted = None;
     last_planned = None; new_move = None; collisions = None; move_waits = [];
-    async_raised = false; conc_run = 0; collision_handling = true; history = []; backward = false; cleared_at = None;
+    async_raised = false; conc_run = 0; collision_handling = true;
+    history = Array.make history_moves None; history_top = 0; history_len = 0; backward = false; cleared_at = None;
     extensions = []; drain_hooks = []; robots = []; speed_limit = MM.Profile.no_speed_limit;
     tool_name = "tool0"; wobj_name = "wobj0" }
 
@@ -430,9 +451,8 @@ let move ctx st name args =
       let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it
          mirrors, the last not yet retraced, from its end back to its start (R-6.3-m). *)
-      let retraced = match st.history with
-        | (forward, from, from_ext) :: older when st.backward && not ext ->
-            st.history <- older;
+      let retraced = match if st.backward && not ext then pop_history st else None with
+        | Some (forward, from, from_ext) ->
             back_eax := Some from_ext;
             let wobj_d = match get "WObj" with Some o -> wobj_of o | None -> D.wobj0 in
             let back () = MM.Frames.calc_rob_t ?base:(P.base st.planner from_ext) st.kin from (tool_of tool) wobj_d in
@@ -441,7 +461,7 @@ let move ctx st name args =
              | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
              | P.Joint _ | P.Abs_joint _ | P.External_only -> Some (P.Abs_joint from))
         | _ -> None in
-      let motion = if retraced <> None then retraced else match String.lowercase_ascii name with
+      let motion = if Option.is_some retraced then retraced else match String.lowercase_ascii name with
         | "moveextj" -> Some P.External_only
         | "movel" | "moveldo" | "triggl" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" | "triggj" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
@@ -451,7 +471,7 @@ let move ctx st name args =
       let target_label = label ctx (if same name "MoveAbsJ" || ext then "ToJointPos" else "ToPoint") in
       (* The external axes the move goes to (law X-target); a retraced move goes back to
          where they were at the start of the forward move (R-6.3-m). *)
-      let eax = if retraced <> None then !back_eax
+      let eax = if Option.is_some retraced then !back_eax
         else if same name "MoveAbsJ" || ext then Option.map eax_of_jointtarget (get "ToJointPos")
         else Option.map eax_of_robtarget (get "ToPoint") in
       let key = String.lowercase_ascii name ^ " " ^ target_label in
@@ -479,10 +499,13 @@ let move ctx st name args =
             (fun () -> P.ready_time st.planner id)
       | Some motion, _, _ -> (
           let wobj = get "WObj" in
+          (* The tool's and work object's data once (both raise only Illegal_quaternion). *)
+          let tool_d = tool_of tool and wobj_d = Option.map wobj_of wobj in
+          let zone_d = zone_of zone in
           let m = P.move ?v:(num ctx args "V") ?t:(num ctx args "T") ?z:(num ctx args "Z")
-              ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc:(present ctx args "Conc")
-              ~tool:(tool_of tool) ?wobj:(Option.map wobj_of wobj) ~label:target_label ?eax
-              (speed_of speed) (zone_of zone) motion in
+              ?inpos:(Option.map stoppoint_of (get "Inpos")) ~conc
+              ~tool:tool_d ?wobj:wobj_d ~label:target_label ?eax
+              (speed_of speed) zone_d motion in
           (* What the robot did before this move is observed before it is planned. *)
           if not (no_tracks st) then st.fresh <- List.rev_append (check st ~now) st.fresh;
           forget st ~now;
@@ -501,13 +524,12 @@ let move ctx st name args =
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
               let tframe =
-                match MM.Frames.as_robot_held (tool_of tool)
-                        (match wobj with Some o -> wobj_of o | None -> D.wobj0) with
-                | Some (t, _, _) -> t.tframe | None -> (tool_of tool).tframe in
+                match MM.Frames.as_robot_held tool_d (match wobj_d with Some o -> o | None -> D.wobj0) with
+                | Some (t, _, _) -> t.tframe | None -> tool_d.tframe in
               let target = G.pmult (world_flange st id joints) tframe in
               let start_time, end_time = match P.segment_span st.planner id with
                 | Some s -> s | None -> (now, now) in
-              let zone_name = if (zone_of zone).finep then "fine" else label ctx "Zone" in
+              let zone_name = if zone_d.finep then "fine" else label ctx "Zone" in
               emit st (E.Segment_planned { time = now; id; instruction = name; label = target_label;
                                          zone = zone_name; target; joints; ready_time; start_time; end_time });
               List.iter (fun (P.Corner_path_failure k) ->
@@ -529,7 +551,7 @@ let move ctx st name args =
               st.last_planned <- Some id; st.new_move <- Some id;
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
-                st.history <- (motion, start, start_ext) :: List.filteri (fun i _ -> i < 255) st.history;
+                push_history st (motion, start, start_ext);
               until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"

@@ -40,14 +40,14 @@ type outcome =
 (* The argument of the parameter of this name (letter case aside, §2.3): installed routines
    whose behaviour lives outside this module find their arguments by name. *)
 let named_argument (ctx : context) args name =
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  (* Without lowered copies: a move asks for a dozen arguments by name. *)
   let rec find i =
     if i >= Array.length ctx.parameters || i >= Array.length args then Missing
-    else if same ctx.parameters.(i) name then args.(i)
+    else if Rapid_typing.Types.same_name ctx.parameters.(i) name then args.(i)
     else find (i + 1) in
   find 0
 
-let named_present ctx args name = named_argument ctx args name <> Missing
+let named_present ctx args name = match named_argument ctx args name with Missing -> false | _ -> true
 
 (* The number an argument holds, given by value or by reference. *)
 let named_num ctx args name =

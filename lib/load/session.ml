@@ -140,12 +140,17 @@ let load_modules ?testing ?(allow_unknown = false) ?(io = Io.empty) modules =
             Ok { program; warnings = result.reports; unknown_summary = Rapid_typing.Check.unknown_summary result }
         | Error reports -> Error (Static (result.reports @ reports))
 
-let load ?(strict = false) ?(robotware = Robotware.default) ?testing ?allow_unknown ?io files =
+let load_files ~strict ~robotware ?testing ?allow_unknown ?io files =
   let options = { Parse.default_options with strict; robotware } in
   let parsed = List.map (Parse.parse_file ~options) files in
   match List.filter_map (function Error d -> Some d | Ok _ -> None) parsed with
   | [] -> load_modules ?testing ?allow_unknown ?io (List.filter_map Result.to_option parsed)
   | errors -> Error (Front_end errors)
+
+(* Most of what loading allocates lives on: the collector is slowed down meanwhile
+   (Build_pace). *)
+let load ?(strict = false) ?(robotware = Robotware.default) ?testing ?allow_unknown ?io files =
+  Build_pace.building (fun () -> load_files ~strict ~robotware ?testing ?allow_unknown ?io files)
 
 (* rapid-sem test (doc/testing.md, R-test-a): a test is a parameterless procedure named test_...,
    letter case aside (§2.3). *)

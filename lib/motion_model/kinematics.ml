@@ -6,16 +6,53 @@ type error = Motion_error.t
 
 open Motion_error
 
+type choice = With_conf of conf | Nearest of float array
+
+(* The last answers of [forward] and [inverse], by their exact arguments: a program that passes
+   the same points again (a loop, a cycle of targets) does not solve them again. Both are
+   functions of their arguments alone (the matrices are a workspace), so an answer found here is
+   the one computing would give, to the bit. *)
+let memo_size = 8
+
 type t = {
   robot : Robot.t;
   acc : Gsl.Matrix.matrix;
   link : Gsl.Matrix.matrix;
   tmp : Gsl.Matrix.matrix;
+  forwards : (float array * pose) option array;
+  mutable forward_next : int;
+  inverses : (pose * choice * (float array, error) result) option array;
+  mutable inverse_next : int;
 }
 
 let create robot =
   let m () = Gsl.Matrix.create ~init:0. 4 4 in
-  { robot; acc = m (); link = m (); tmp = m () }
+  { robot; acc = m (); link = m (); tmp = m (); forwards = Array.make memo_size None; forward_next = 0;
+    inverses = Array.make memo_size None; inverse_next = 0 }
+
+(* Equal to the bit for the answer's sake: a NaN is never found (it is computed again), and 0
+   and -0 differ. *)
+let same_float (a : float) b = a = b && (a <> 0. || 1. /. a = 1. /. b)
+
+let same_floats a b =
+  let n = Array.length a in
+  n = Array.length b && (let rec go i = i >= n || (same_float a.(i) b.(i) && go (i + 1)) in go 0)
+
+let same_pose (a : pose) (b : pose) =
+  same_float a.trans.x b.trans.x && same_float a.trans.y b.trans.y && same_float a.trans.z b.trans.z
+  && same_float a.rot.q1 b.rot.q1 && same_float a.rot.q2 b.rot.q2 && same_float a.rot.q3 b.rot.q3
+  && same_float a.rot.q4 b.rot.q4
+
+let same_choice a b = match a, b with
+  | With_conf c, With_conf d -> c.cf1 = d.cf1 && c.cf4 = d.cf4 && c.cf6 = d.cf6 && c.cfx = d.cfx
+  | Nearest q, Nearest r -> same_floats q r
+  | _ -> false
+
+let memo_find slots found =
+  let rec go i = if i >= memo_size then None else match slots.(i) with
+      | Some e -> (match found e with Some _ as r -> r | None -> go (i + 1))
+      | None -> None in
+  go 0
 
 let robot k = k.robot
 
@@ -149,7 +186,7 @@ let scara_forward r q =
   { trans = { x = (l1 *. cos t1) +. (l2 *. cos t12); y = (l1 *. sin t1) +. (l2 *. sin t12); z = d1 +. q.(2) };
     rot = pal_rot t12 (rad q.(3)) }
 
-let forward k q =
+let forward_computed k q =
   if k.robot.structure = Robot.Scara then scara_forward k.robot q
   else if k.robot.structure = Robot.Delta then delta_forward k.robot q
   else if k.robot.structure = Robot.Palletiser then pal_forward k.robot q else begin
@@ -157,6 +194,15 @@ let forward k q =
   let g = Gsl.Matrix.get k.acc in
   { trans = { x = g 0 3; y = g 1 3; z = g 2 3 }; rot = of_matrix (rotation_of k.acc) }
   end
+
+let forward k q =
+  match memo_find k.forwards (fun (q', f) -> if same_floats q q' then Some f else None) with
+  | Some f -> f
+  | None ->
+      let f = forward_computed k q in
+      k.forwards.(k.forward_next) <- Some (Array.copy q, f);
+      k.forward_next <- (k.forward_next + 1) mod memo_size;
+      f
 
 (* An angle a rounding error below a quadrant's edge (axis 4 at -1e-14 degrees for 0) is on the
    edge: the quadrant of a computed 0 is 0, as the programmed one is. *)
@@ -169,8 +215,6 @@ let wrist_singular ?(zone = singular_zone) k q =
   k.robot.structure <> Robot.Palletiser && k.robot.structure <> Robot.Delta && k.robot.structure <> Robot.Scara &&
   let t5 = rad (q.(4) +. k.robot.axes.(4).offset) in
   Float.abs (sin t5) < sin (rad zone)
-
-type choice = With_conf of conf | Nearest of float array
 
 let pi = 4. *. atan 1.
 
@@ -576,7 +620,18 @@ let significant k c =
   | Robot.Scara -> { c with cf6 = 0; cfx = c.cfx land 2 }
   | Robot.Serial | Robot.Coupled_axis3 -> c
 
-let inverse k p choice =
+let rec inverse k p choice =
+  let copy = Result.map Array.copy in
+  match memo_find k.inverses (fun (p', c', q) -> if same_pose p p' && same_choice choice c' then Some q else None) with
+  | Some q -> copy q
+  | None ->
+      let choice_kept = match choice with Nearest q0 -> Nearest (Array.copy q0) | c -> c in
+      let q = inverse_computed k p choice in
+      k.inverses.(k.inverse_next) <- Some (p, choice_kept, copy q);
+      k.inverse_next <- (k.inverse_next + 1) mod memo_size;
+      q
+
+and inverse_computed k p choice =
   let r = k.robot in
   let choice = match choice with With_conf c -> With_conf (significant k c) | n -> n in
   let solutions ?arm k p ~t4_hint =

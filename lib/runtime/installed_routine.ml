@@ -31,7 +31,7 @@ type entry = {
 
 let returned v = { result = Returned v; events = []; new_move = None }
 
-let same a b = String.lowercase_ascii a = String.lowercase_ascii b
+let same = Rapid_typing.Types.same_name  (* without lowered copies *)
 
 let type_suffix = ":type"
 

@@ -64,6 +64,15 @@ let shape_default (t : Types.object_type) =
 
 (* ------------------------------------------------------------------ expressions *)
 
+let recent_parameters : (Env.routine * Env.parameter array) list ref = ref []
+
+(* A literal of at most seven decimal digits (§2.5): its value without the exact arithmetic. *)
+let small_integer text =
+  let n = String.length text in
+  n >= 1 && n <= 7
+  && (let rec digits i = i >= n || (match String.unsafe_get text i with '0' .. '9' -> digits (i + 1) | _ -> false) in
+      digits 0)
+
 (* The region of the name a reference starts with, under which the checker recorded what the
    name denotes (an entire variable's name has the reference's region, ast.ml). *)
 let rec root_at (r : A.data_reference) =
@@ -119,6 +128,10 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
+  | Num_literal text when small_integer text ->
+      (* Below 2^24 an integer is exact in single and double precision alike. *)
+      let n = float_of_int (int_of_string text) in
+      make (Literal (if dnum then Value.Dnum n else Value.Num n))
   | Num_literal text -> (
       match literal_value text (if dnum then `Dnum else `Num) with
       | Some v -> make (Literal v)
@@ -195,7 +208,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
       match routine_number ctx r.r_region with
       | None -> unknown ()
       | Some index ->
-          let params = parameters_of r in
+          let params = parameter_array r in
           (* The bound arguments are in parameter order (Elaboration): one walk along both lists,
              not a search per parameter, since a call may have thousands of arguments. *)
           let bound = ref binding.bound in
@@ -209,7 +222,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
                        match argument_type ctx a with Some t -> types := (i, t) :: !types | None -> ())
                    | _ -> ());
                   argument ctx p a
-              | _ -> Ir.Absent) (Array.of_list params) in
+              | _ -> Ir.Absent) params in
           if !types <> [] then begin
             let named = Array.make (Array.length arguments) None in
             List.iter (fun (i, t) -> named.(i) <- Some t) !types;
@@ -247,6 +260,16 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
 
 and parameters_of (r : Env.routine) =
   List.concat_map (function Env.Required_slot p -> [ p ] | Optional_slot ps | Required_choice ps -> ps) r.r_slots
+
+(* A call's callee's parameters, kept for the last routines called (a module of moves calls
+   MoveL and Offs ten thousand times each): the routine records are never changed. *)
+and parameter_array (r : Env.routine) =
+  match List.find_opt (fun (r', _) -> r' == r) !recent_parameters with
+  | Some (_, a) -> a
+  | None ->
+      let a = Array.of_list (parameters_of r) in
+      recent_parameters := (r, a) :: List.filteri (fun i _ -> i < 7) !recent_parameters;
+      a
 
 (* A loop variable, ERRNO or INTNO: a read-only variable of the access-mode table (§5.2). *)
 and read_only ctx (e : A.expression) =

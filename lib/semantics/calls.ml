@@ -169,7 +169,7 @@ let call_primitive cfg (cs : call_state) name =
       events := List.rev_append (observed_store cfg { box; idx } box.(idx)) !events) (Observation.changed before);
   (* A move remembers the routine that ran it: its asynchronous errors go there (§7.4, §7.6). *)
   (match outcome.new_move with
-   | Some id -> cfg.move_owners <- (id, cfg.act) :: List.filteri (fun i _ -> i < Limits.move_owners - 1) cfg.move_owners
+   | Some id -> Recent.add cfg.move_owners id cfg.act
    | None -> ());
   match outcome.result with
   | History_exhausted m ->

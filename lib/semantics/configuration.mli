@@ -156,7 +156,7 @@ and config = {
   host : Host.t;                        (* the world around the program: its controller and motion *)
   stub_unmodelled : bool;               (* --stub-unmodelled: unmodelled routines are no-ops *)
   stubbed : (string, unit) Hashtbl.t;   (* the routines already reported as stubbed *)
-  mutable move_owners : (int * activation) list;  (* recent moves and the activation that ran each *)
+  move_owners : (int, activation) Recent.t;  (* recent moves and the activation that ran each *)
   mutable kept : kept list;             (* asynchronous errors in their handlers (§7.4) *)
   mutable backward_depth : int;         (* the call depth of a BACKWARD handler running, or -1 (ch. 6) *)
   (* Settling stops at a point of response (ch. 8) where something happens: the statement time

@@ -172,7 +172,7 @@ let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = 
         let cfg = {
           program; limits; globals; act; stack = [ K_task_end ]; mark = []; focus = F_next;
           count = 0; memory = !memory; by_name; unmarked = false; host;
-          stub_unmodelled; stubbed = Hashtbl.create 8; move_owners = []; kept = [];
+          stub_unmodelled; stubbed = Hashtbl.create 8; move_owners = Recent.create Limits.move_owners; kept = [];
           backward_depth = -1; charged = false; held = None; cooperative; wake = None;
           observe; entered = false; propagated = false; phases; at_entry; resumes = [];
         } in

@@ -217,7 +217,7 @@ let serve_async_error cfg =
     | Some { error = name; move; handled } ->
         let e = { (error cfg name (region_of_focus_stmt cfg)) with searched = true; asynchronous = true } in
         let raised = Error_raised { name = e.name; number = e.number; at = e.err_at } in
-        let owner = match move with Some id -> List.assoc_opt id cfg.move_owners | None -> None in
+        let owner = match move with Some id -> Recent.find_opt cfg.move_owners id | None -> None in
         let rec in_chain a = function None -> false | Some b -> b == a || in_chain a b.caller in
         let rec up acc = function None -> List.rev acc | Some b -> up (b :: acc) b.caller in
         let rec live = function

@@ -605,7 +605,10 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
   ctx.signal_argument <- (match p.p_type with
       | Some { base; dims = Scalar } when T.value_class base = T.Semi_value -> Some (T.name base)
       | _ -> None);
-  Fun.protect ~finally:(fun () -> ctx.signal_argument <- outer) (fun () -> argument_checked ~call ctx place arg e p)
+  (* Fun.protect's closures at every argument are not needed: nothing here raises but to leave. *)
+  match argument_checked ~call ctx place arg e p with
+  | () -> ctx.signal_argument <- outer
+  | exception x -> ctx.signal_argument <- outer; raise x
 
 and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
   let sections = call ^ ",5.2,2.17" in

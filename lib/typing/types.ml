@@ -124,11 +124,15 @@ let restore_record_ids n = counter := n
 (* Without building lowered copies: names are compared wherever components and labels are
    looked up, thousands of times in a large record. *)
 let same_name a b =
-  let n = String.length a in
-  n = String.length b
-  && (let rec from i =
-        i >= n || (Char.lowercase_ascii a.[i] = Char.lowercase_ascii b.[i] && from (i + 1)) in
-      from 0)
+  a == b
+  || (let n = String.length a in
+      n = String.length b
+      && (let lower c = if c >= 'A' && c <= 'Z' then Char.code c + 32 else Char.code c in
+          let rec from i =
+            i >= n
+            || ((let x = String.unsafe_get a i and y = String.unsafe_get b i in x = y || lower x = lower y)
+                && from (i + 1)) in
+          from 0))
 
 let component r name =
   List.find_map (fun (n, t) -> if same_name n name then Some t else None) r.components
