@@ -9,7 +9,8 @@ type t = {
   task_ids : string list;
 }
 
-let empty = { file = ""; signals = []; stimuli = []; collisions = []; system_inputs = []; mechanical_units = []; task_ids = [] }
+let empty =
+  { file = ""; signals = []; stimuli = []; collisions = []; system_inputs = []; mechanical_units = []; task_ids = [] }
 
 let type_name = function
   | DI -> "signaldi" | DO -> "signaldo" | AI -> "signalai" | AO -> "signalao"
