@@ -71,6 +71,8 @@ let cmd =
         prerr_endline "rapid-sem: required argument FILE is missing (or give --task NAME=FILE)"; Cli.exit_static_error
     | Ok buffers, Ok io, Ok _ ->
     let io = { io with Rapid_controller.Io_config.mechanical_units = units } in
+    (* R-14-taskid: the tasks' predefined taskid variables, as a run of these tasks has them. *)
+    let io = if several then { io with task_ids = List.filter (( <> ) "") (List.map fst buffers) } else io in
     let robotware = Option.value robotware ~default:Rapid_syntax.Robotware.default in
     let options = { Parse.default_options with strict; robotware } in
     let parsed = List.map (fun (name, files) -> (name, List.map (Parse.parse_file ~options) files)) buffers in

@@ -6,9 +6,11 @@ type system_input = { action : string; input : string; arg6 : string; si_line : 
 type t = {
   file : string; signals : signal list; stimuli : stimulus list; collisions : float list;
   system_inputs : system_input list; mechanical_units : string list;
+  task_ids : string list;
 }
 
-let empty = { file = ""; signals = []; stimuli = []; collisions = []; system_inputs = []; mechanical_units = [] }
+let empty =
+  { file = ""; signals = []; stimuli = []; collisions = []; system_inputs = []; mechanical_units = []; task_ids = [] }
 
 let type_name = function
   | DI -> "signaldi" | DO -> "signaldo" | AI -> "signalai" | AO -> "signalao"
@@ -165,7 +167,7 @@ let parse_stimulus ~file lines =
                                (Rapid_syntax.Decimal.shown w))))
     lines;
   { file; signals = List.rev !signals; stimuli = List.rev !stimuli; collisions = List.rev !collisions;
-    system_inputs = List.rev !system_inputs; mechanical_units = [] }
+    system_inputs = List.rev !system_inputs; mechanical_units = []; task_ids = [] }
 
 (* -DeviceMap of a group signal: bits "0-7", or a list of them "0-3,8-11"; its width is the
    number of distinct bits it maps: "0-3,2-5" maps bits 0 to 5, six bits (R-8-small3; no ABB
@@ -316,7 +318,7 @@ let parse_eio ~file lines =
   (* A system input whose signal is not configured starts nothing. *)
   let configured si = Hashtbl.mem seen (String.lowercase_ascii si.input) in
   { file; signals = List.rev !signals; stimuli = []; collisions = [];
-    system_inputs = List.filter configured (List.rev !system_inputs); mechanical_units = [] }
+    system_inputs = List.filter configured (List.rev !system_inputs); mechanical_units = []; task_ids = [] }
 
 let is_eio lines =
   List.exists (fun l ->

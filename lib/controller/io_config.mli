@@ -31,6 +31,9 @@ type t = {
   mechanical_units : string list;
       (** the mechanical units a backup's MOC.cfg configures (R-bk-13): installed data objects of
           type mecunit, beside ROB_1 .. ROB_4; never read from an I/O file *)
+  task_ids : string list;
+      (** the program tasks of a run of several tasks, in order (R-14-taskid): each has its
+          predefined taskid variable NAMEId in every task; never read from an I/O file *)
 }
 
 val empty : t

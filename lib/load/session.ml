@@ -35,15 +35,26 @@ let unit_names (io : Io.t) =
       if List.mem k taken || List.exists (fun a -> String.lowercase_ascii a = k) acc || not (identifier u) then acc
       else acc @ [ u ]) [] io.mechanical_units
 
+(* R-14-taskid: each program task's predefined taskid variable, NAMEId, when it is a name (§2.3)
+   no signal or unit has taken. *)
+let task_id_names (io : Io.t) =
+  let taken = installed_units @ List.map String.lowercase_ascii (unit_names io)
+              @ List.map (fun (s : Io.signal) -> String.lowercase_ascii s.name) io.signals in
+  List.filter_map (fun t ->
+      let v = t ^ "Id" in
+      if List.mem (String.lowercase_ascii v) taken || not (identifier v) then None else Some v) io.task_ids
+
 let signal_text (io : Io.t) =
   let units = unit_names io in
-  if io.signals = [] && units = [] then None
+  let ids = task_id_names io in
+  if io.signals = [] && units = [] && ids = [] then None
   else
     let text = Buffer.create 256 in
     Buffer.add_string text ("MODULE " ^ signal_module_name ^ " (SYSMODULE)\n");
     List.iter (fun (s : Io.signal) ->
         Buffer.add_string text (Printf.sprintf "  VAR %s %s;\n" (Io.type_name s.kind) s.name)) io.signals;
     List.iter (fun u -> Buffer.add_string text (Printf.sprintf "  VAR mecunit %s;\n" u)) units;
+    List.iter (fun v -> Buffer.add_string text (Printf.sprintf "  VAR taskid %s;\n" v)) ids;
     Buffer.add_string text "ENDMODULE\n";
     Some (Buffer.contents text)
 
@@ -93,11 +104,19 @@ let connect_signals (io : Io.t) (program : Ir.program) =
       let key = String.lowercase_ascii s.name in
       if not (Hashtbl.mem ids key) then Hashtbl.replace ids key (i + 1, s)) io.signals;
   let same = Rapid_typing.Types.same_name in
+  (* R-14-taskid: a taskid's identity is its task's number (1 for the first task of the run). *)
+  let task_numbers = Hashtbl.create 8 in
+  List.iteri (fun k t -> Hashtbl.replace task_numbers (String.lowercase_ascii (t ^ "Id")) (k + 1)) io.task_ids;
   let globals = Array.map (fun (g : Ir.global) ->
       if not (same g.g_module signal_module_name) then g
       else
         match Hashtbl.find_opt ids (String.lowercase_ascii g.g_name) with
-        | None -> g
+        | None -> (
+            match Hashtbl.find_opt task_numbers (String.lowercase_ascii g.g_name) with
+            | Some k ->
+                let handle = Value.Handle (Value.make_handle ~kind:"taskid" k) in
+                { g with g_init = Init_expr { e = Literal handle; at = g.g_at } }
+            | _ -> g)
         | Some (i, s) ->
             let handle = Value.Handle (Value.make_handle ~kind:(Io.type_name s.kind) i) in
             { g with g_init = Init_expr { e = Literal handle; at = g.g_at } }) program.globals in

@@ -60,6 +60,8 @@ let lines = [
   ("TuneReset", "Sets every servo tuning of TuneServo back to its normal value.");
   ("LoadIdentify", "ABB's service routine that identifies a tool's or payload's load (not modelled).");
   ("IOUnitState", "The state of an I/O device: general, or \\Logic or \\Phys (not modelled).");
+  ("MoveJSync", "MoveJ, calling ProcName at the corner path's middle (not modelled yet).");
+  ("MoveLSync", "MoveL, calling ProcName at the corner path's middle (not modelled yet).");
   ("GetMotorTorque", "The motor torque of an axis, Nm (not modelled: the motion model has no dynamics).");
   ("GetMecUnitName", "The name of a mechanical unit, as a string.");
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");

@@ -202,6 +202,9 @@ let load ?(allow_unknown = false) ?(robotware = Rapid_syntax.Robotware.default) 
     ?(connected = []) ?(events = []) ~world ~motion (specs : spec list) =
   let notes = ref [] in
   let note n = notes := n :: !notes in
+  (* R-14-taskid: every task has each program task's predefined taskid variable. *)
+  let io = Some { (Option.value io ~default:Rapid_controller.Io_config.empty) with
+                  task_ids = List.map (fun (s : spec) -> s.name) specs } in
   let motion_name = match motion_task, specs with
     | Some n, _ -> n | None, s :: _ -> s.name | None, [] -> "" in
   let rec load acc = function
