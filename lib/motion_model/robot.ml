@@ -155,49 +155,50 @@ let external_axis ln known rest =
             Some (Geom.scale (1. /. l) p) in
       { Ext_axes.name = n; index; kind; min; max; speed; track }
 
-let palletiser_problem r =
+(* The first problem a structure's checks find: each check says (axis, message) through [say]. *)
+let first_problem checks =
   let bad = ref None in
-  List.iter (fun k ->
-      let ax = r.axes.(k - 1) in
-      if !bad = None && (ax.alpha <> 0. || ax.offset <> 0.) then
-        bad := Some (k, Printf.sprintf "axis %d: a palletiser's alpha and offset must be 0 (doc/motion.md)" k))
-    [ 1; 2; 3; 6 ];
-  List.iter (fun k ->
-      if !bad = None && r.axes.(k - 1).a <= 0. then
-        bad := Some (k, Printf.sprintf "axis %d: a palletiser's arm length a must be positive" k))
-    [ 2; 3 ];
+  let say k m = if !bad = None then bad := Some (k, m) in
+  List.iter (fun check -> check say) checks;
   !bad
+
+(* Axes that turn about parallel vertical axes: no twist, no offset. *)
+let untwisted structure ks r say =
+  List.iter (fun k -> let ax = r.axes.(k - 1) in
+              if ax.alpha <> 0. || ax.offset <> 0. then
+                say k (Printf.sprintf "axis %d: a %s's alpha and offset must be 0 (doc/motion.md)" k structure)) ks
+
+let palletiser_problem r =
+  first_problem [
+    untwisted "palletiser" [ 1; 2; 3; 6 ] r;
+    (fun say -> List.iter (fun k ->
+         if r.axes.(k - 1).a <= 0. then
+           say k (Printf.sprintf "axis %d: a palletiser's arm length a must be positive" k)) [ 2; 3 ]) ]
 
 let delta_problem r =
   let ax k = r.axes.(k - 1) in
-  let bad = ref None in
-  let say k m = if !bad = None then bad := Some (k, m) in
-  List.iter (fun k -> if (ax k).alpha <> 0. || (ax k).offset <> 0. then
-                say k (Printf.sprintf "axis %d: a delta's alpha and offset must be 0 (doc/motion.md)" k))
-    [ 1; 2; 3; 4 ];
-  List.iter (fun k -> if (ax k).a <> (ax 1).a || (ax k).d <> (ax 1).d then
-                say k (Printf.sprintf "axis %d: a delta's three arms have axis 1's a and d" k)) [ 2; 3 ];
-  if (ax 1).a <= 0. || (ax 1).d <= 0. then say 1 "axis 1: a delta's upper arm a and rod d must be positive";
-  if (ax 4).a < 0. || (ax 4).d < 0. then say 4 "axis 4: a delta's a and d must not be negative";
-  !bad
+  first_problem [
+    untwisted "delta" [ 1; 2; 3; 4 ] r;
+    (fun say -> List.iter (fun k -> if (ax k).a <> (ax 1).a || (ax k).d <> (ax 1).d then
+                              say k (Printf.sprintf "axis %d: a delta's three arms have axis 1's a and d" k)) [ 2; 3 ]);
+    (fun say -> if (ax 1).a <= 0. || (ax 1).d <= 0. then
+        say 1 "axis 1: a delta's upper arm a and rod d must be positive");
+    (fun say -> if (ax 4).a < 0. || (ax 4).d < 0. then say 4 "axis 4: a delta's a and d must not be negative") ]
 
 (* A SCARA (IRB 910SC): axes 1 and 2 turn the two arms about vertical axes, axis 3 moves the
    quill up and down (mm), axis 4 turns the flange; only axis 1's d (the flange's height at axis
    3 = 0) and the two arms' a are lengths. *)
 let scara_problem r =
   let ax k = r.axes.(k - 1) in
-  let bad = ref None in
-  let say k m = if !bad = None then bad := Some (k, m) in
-  List.iter (fun k -> if (ax k).alpha <> 0. || (ax k).offset <> 0. then
-                say k (Printf.sprintf "axis %d: a SCARA's alpha and offset must be 0 (doc/motion.md)" k))
-    [ 1; 2; 3; 4 ];
-  List.iter (fun k ->
-      if (ax k).a <= 0. then say k (Printf.sprintf "axis %d: a SCARA's arm length a must be positive" k)) [ 1; 2 ];
-  List.iter (fun k ->
-      if (ax k).d <> 0. then say k (Printf.sprintf "axis %d: a SCARA's d must be 0 (axis 1's d is the height)" k))
-    [ 2; 3; 4 ];
-  List.iter (fun k -> if (ax k).a <> 0. then say k (Printf.sprintf "axis %d: a SCARA's a must be 0" k)) [ 3; 4 ];
-  !bad
+  first_problem [
+    untwisted "SCARA" [ 1; 2; 3; 4 ] r;
+    (fun say -> List.iter (fun k ->
+         if (ax k).a <= 0. then say k (Printf.sprintf "axis %d: a SCARA's arm length a must be positive" k)) [ 1; 2 ]);
+    (fun say -> List.iter (fun k ->
+         if (ax k).d <> 0. then say k (Printf.sprintf "axis %d: a SCARA's d must be 0 (axis 1's d is the height)" k))
+        [ 2; 3; 4 ]);
+    (fun say -> List.iter (fun k -> if (ax k).a <> 0. then say k (Printf.sprintf "axis %d: a SCARA's a must be 0" k))
+        [ 3; 4 ]) ]
 
 let structure_problem r =
   match r.structure with
