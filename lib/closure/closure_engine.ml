@@ -231,6 +231,13 @@ let charge_pending st (c : act) bytes what at =
   if bytes > st.limits.max_memory - st.memory - c.memory then memory_exhausted st what at
   else c.memory <- c.memory + bytes
 
+(* A call's argument copy counted with what the call has pending already: the new pending total,
+   or the budget's error naming the copy. *)
+let count_copy st ~at what v pending =
+  let b = value_bytes v in
+  if b > st.limits.max_memory - st.memory - pending then memory_exhausted st what at;
+  pending + b [@@inline]
+
 (* Routine data of an active routine. *)
 let charge_active st (a : act) bytes what at =
   if bytes > st.limits.max_memory - st.memory then memory_exhausted st what at
@@ -1290,9 +1297,7 @@ and values_call st (caller : routine) ~at (callee : routine) f (arguments : argu
       let pending = ref 0 in
       for i = 0 to n - 1 do
         let v = args.(i) a in
-        let b = value_bytes v in
-        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
-        pending := !pending + b;
+        pending := count_copy st ~at whats.(i) v !pending;
         values.(i) <- Some v
       done;
       result (f values)
@@ -1463,15 +1468,11 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       (* four arguments, each counted as it is made (the loop below), the slots built at once
          (no write barrier for each copy) *)
       let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
-      let counted w v pending =
-        let b = value_bytes v in
-        if b > limits.max_memory - st.memory - pending then memory_exhausted st w at;
-        pending + b [@@inline] in
       fun a ->
-        let v0 = f0 a in let p = counted w0 v0 0 in let v0 = copy v0 in
-        let v1 = f1 a in let p = counted w1 v1 p in let v1 = copy v1 in
-        let v2 = f2 a in let p = counted w2 v2 p in let v2 = copy v2 in
-        let v3 = f3 a in let p = counted w3 v3 p in let v3 = copy v3 in
+        let v0 = f0 a in let p = count_copy st ~at w0 v0 0 in let v0 = copy v0 in
+        let v1 = f1 a in let p = count_copy st ~at w1 v1 p in let v1 = copy v1 in
+        let v2 = f2 a in let p = count_copy st ~at w2 v2 p in let v2 = copy v2 in
+        let v3 = f3 a in let p = count_copy st ~at w3 v3 p in let v3 = copy v3 in
         let store = match size with
           | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
           | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
@@ -1481,9 +1482,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       let pending = ref 0 in
       for i = 0 to n - 1 do
         let v = args.(i) a in
-        let b = value_bytes v in
-        if b > limits.max_memory - st.memory - !pending then memory_exhausted st whats.(i) at;
-        pending := !pending + b;
+        pending := count_copy st ~at whats.(i) v !pending;
         store.(i) <- copy v
       done;
       quick a store !pending
