@@ -69,6 +69,18 @@ let lines text =
    "PROGMOD/x.mod @ x.mod", in the order the controller loaded them. *)
 type info_task = { number : int; info_name : string; info_files : (string * int) list; info_line : int }
 
+(* R-2.4-rw6: ">>PRODUCTS_ID:" ... "RobotWare Version: 6.13.02.00" names the release the modules
+   were written for. A line that does not read as a release names none. *)
+let release_of_backinfo text =
+  let key = "robotware version:" in
+  List.find_map (fun l ->
+      let l = String.trim l in
+      let n = String.length key in
+      if String.length l > n && String.lowercase_ascii (String.sub l 0 n) = key then
+        Rapid_syntax.Robotware.of_string (String.trim (String.sub l n (String.length l - n)))
+      else None) (lines text)
+
+(* The tasks of backinfo.txt and the release it names, from one reading of the file. *)
 let read_backinfo file =
   let* text = read_text file in
   let tasks = ref [] and current = ref None in
@@ -104,21 +116,10 @@ let read_backinfo file =
         end in
   let* () = each 1 (lines text) in
   close ();
-  Ok (List.rev !tasks)
+  Ok (List.rev !tasks, release_of_backinfo text)
 
-(* R-2.4-rw6: ">>PRODUCTS_ID:" ... "RobotWare Version: 6.13.02.00" names the release the modules
-   were written for. A line that does not read as a release names none. *)
 let robotware_of_backinfo file =
-  match read_text file with
-  | Error _ -> None
-  | Ok text ->
-      let key = "robotware version:" in
-      List.find_map (fun l ->
-          let l = String.trim l in
-          let n = String.length key in
-          if String.length l > n && String.lowercase_ascii (String.sub l 0 n) = key then
-            Rapid_syntax.Robotware.of_string (String.trim (String.sub l n (String.length l - n)))
-          else None) (lines text)
+  match read_text file with Error _ -> None | Ok text -> release_of_backinfo text
 
 let sort_names l = List.sort (fun a b -> compare (String.lowercase_ascii a) (String.lowercase_ascii b)) l
 
@@ -334,6 +335,14 @@ let base_frame_keys =
   [ "base_frame_pos_x"; "base_frame_pos_y"; "base_frame_pos_z";
     "base_frame_orient_u0"; "base_frame_orient_u1"; "base_frame_orient_u2"; "base_frame_orient_u3" ]
 
+(* A cfg value that is a finite decimal number ("0x10", which float_of_string reads, is not). *)
+let decimal v =
+  let v = String.trim v in
+  match float_of_string_opt v with
+  | Some f when Float.is_finite f
+                && String.for_all (function '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false) v -> Some f
+  | _ -> None
+
 let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
   let of_base (a : Cfg_file.attribute) =
     String.length a.key > 11 && same (String.sub a.key 0 11) "base_frame_" in
@@ -341,15 +350,14 @@ let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
   let value key default =
     match Cfg_file.find i key with
     | None -> default
-    | Some { value = Text v; _ } when (match float_of_string_opt (String.trim v) with
-        | Some f -> Float.is_finite f && String.for_all (function
-            | '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false) (String.trim v)
-        | None -> false) -> float_of_string (String.trim v)
     | Some a ->
-        warn (Printf.sprintf "%s: warning: robot %s: -%s %s is not a number: %g is taken instead"
-                (cfg_place c a.line) name a.key
-                (match a.value with Flag -> "(no value)" | Text v -> Printf.sprintf "\"%s\"" v) default);
-        default in
+        match (match a.value with Text v -> decimal v | Flag -> None) with
+        | Some f -> f
+        | None ->
+            warn (Printf.sprintf "%s: warning: robot %s: -%s %s is not a number: %g is taken instead"
+                    (cfg_place c a.line) name a.key
+                    (match a.value with Flag -> "(no value)" | Text v -> Printf.sprintf "\"%s\"" v) default);
+            default in
   List.iter (fun (a : Cfg_file.attribute) ->
       if not (List.exists (same a.key) ("base_frame_coordinated" :: base_frame_keys)) then
         warn (Printf.sprintf "%s: warning: robot %s: -%s is not modelled" (cfg_place c a.line) name a.key)) given;
@@ -372,9 +380,7 @@ let track_of (c : Cfg_file.t) unit_name =
   let named section n =
     List.find_opt (fun i -> match Cfg_file.text i "name" with Some m -> same m n | None -> false)
       (instances c section) in
-  let finite k i = match Cfg_file.text i k with
-    | Some v -> (match float_of_string_opt (String.trim v) with Some f when Float.is_finite f -> Some f | _ -> None)
-    | None -> None in
+  let finite k i = Option.bind (Cfg_file.text i k) decimal in
   let ( let* ) = Option.bind in
   let* mu = named "MECHANICAL_UNIT" unit_name in
   let* single_name = Cfg_file.text mu "use_single_0" in
@@ -390,7 +396,7 @@ let track_of (c : Cfg_file.t) unit_name =
               track_at = cfg_place c single.at_line }
 
 (* A gantry's "robot" (Gantry11_X_Y_Z_NOTCP) moves external axes, not an arm of the library. *)
-let has_joint_type r = String.length r.robot_type >= 5
+let no_tcp_type r = String.length r.robot_type >= 5
                        && same (String.sub r.robot_type (String.length r.robot_type - 5) 5) "NOTCP"
 
 (* R-bk-5: MOC.cfg's robots and the joint bounds of their arms. *)
@@ -446,7 +452,7 @@ let robots ~warn (c : Cfg_file.t) =
   let is_track n = List.exists (fun r -> match r.track with Some t -> same t.track_unit n | None -> false) rs in
   (* A unit that is a robot of the library's (-use_robot naming a ROBOT with a type) is that robot. *)
   let is_robot (i : Cfg_file.instance) = match Cfg_file.text i "use_robot" with
-    | Some r -> List.exists (fun x -> same x.robot_name r && x.robot_type <> "" && not (has_joint_type x)) rs
+    | Some r -> List.exists (fun x -> same x.robot_name r && x.robot_type <> "" && not (no_tcp_type x)) rs
     | None -> false in
   List.iter (fun (i : Cfg_file.instance) ->
       let name = Option.value (Cfg_file.text i "name") ~default:"?" in
@@ -468,7 +474,7 @@ let read dir =
   let eio = match Option.bind (child dir "SYSPAR") (fun s -> child s "EIO.cfg") with
     | Some f when is_file f -> Some f | _ -> None in
   let info_file = Option.bind (child dir "BACKINFO") (fun b -> child b "backinfo.txt") in
-  let* info = match info_file with Some f -> read_backinfo f | None -> Ok [] in
+  let* info, robotware = match info_file with Some f -> read_backinfo f | None -> Ok ([], None) in
   let info_file_name = Option.value info_file ~default:(dir // "BACKINFO" // "backinfo.txt") in
   let* cab = match sys with Some c -> cab_tasks ~warn c | None -> Ok [] in
   let retry_limit = Option.bind sys (sys_misc ~warn) in
@@ -589,7 +595,6 @@ let read dir =
                         t.at t.name (Option.get t.group) m.name);
               Some (t.name, m.name)
           | None, [] -> None) tasks in
-    let robotware = Option.bind info_file robotware_of_backinfo in
     (* R-bk-13: MOC.cfg's mechanical units, by their names. *)
     let units = match moc with
       | None -> []
