@@ -23,8 +23,8 @@ let read_io = function
   | Some file -> Io.read_file file
 
 (* The I/O configuration of a run, with its backup's mechanical units (R-bk-13). *)
-let run_io (o : Run_options.t) file =
-  Result.map (fun (io : Io.t) -> { io with mechanical_units = o.controller.units }) (read_io file)
+let run_io (o : Run_options.t) =
+  Result.map (fun (io : Io.t) -> { io with mechanical_units = o.controller.units }) (read_io o.controller.io)
 
 let load_robot = function
   | None -> Ok Robot.irb120
@@ -133,7 +133,7 @@ type single = { loaded : Rapid_load.Session.loaded; world : Run.world }
 (* The I/O configuration (with the signals --stub-unmodelled infers from the files) and the robot
    of the options, or the backup's robot when --robot does not name one. *)
 let io_and_robot ?robot ~notify (o : Run_options.t) files =
-  match run_io o o.controller.io, robot_of ?robot o with
+  match run_io o, robot_of ?robot o with
   | Error m, _ | _, Error m -> Error (Usage m)
   | Ok io, Ok robot ->
       let io = with_inferred_signals ~notify o files io in
@@ -155,6 +155,14 @@ let fresh_world ?robot ~notify (o : Run_options.t) files =
   Result.bind (io_and_robot ?robot ~notify o files) (fun (io, robot) ->
       Result.map (fun (controller, motion) -> Run.setup ~controller ~motion ()) (world o ~history:false io robot))
 
+(* What a backup gives the controller unless the options do: its EIO.cfg, its RobotWare release
+   (R-2.4-rw6); and its mechanical units (R-bk-13), which no option gives. *)
+let cell_controller (o : Run_options.t) (c : Backup_setup.cell) =
+  let given a b = match a with Some _ -> a | None -> b in
+  { o with controller = { o.controller with io = given o.controller.io c.backup.eio;
+                                            robotware = given o.controller.robotware c.backup.robotware;
+                                            units = c.backup.units } }
+
 let one_task ~notify (o : Run_options.t) files ~entry =
   match Backup_setup.input ~robot:o.robot files with
   | Error m -> Error (Usage m)
@@ -167,9 +175,7 @@ let one_task ~notify (o : Run_options.t) files ~entry =
           if List.length c.backup.tasks > 1 then
             notify (Backup_warning (Printf.sprintf "%s: warning: this command runs one task: %s, the motion task, \
                                                     alone (the backup's other tasks are not started)" t.at t.name));
-          let io = match o.controller.io with Some _ -> o.controller.io | None -> c.backup.eio in
-          let robotware = match o.controller.robotware with Some _ as r -> r | None -> c.backup.robotware in
-          let o = { o with controller = { o.controller with io; robotware; units = c.backup.units } } in
+          let o = cell_controller o c in
           Ok (o, t.files, (if entry = "main" then t.entry else entry), List.assoc_opt t.name c.robots,
               { task = t.name; before = t.before; after = t.after; debug = t.debug_events }))
 
@@ -206,13 +212,7 @@ type several = {
 
 let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_options.tasks) =
   machine_gc ();
-  (* R-2.4-rw6: --robotware, else the backup's release. *)
-  let o = match o.controller.robotware, cell with
-    | None, Some (c : Backup_setup.cell) -> { o with controller = { o.controller with robotware = c.backup.robotware } }
-    | _ -> o in
-  let o = match cell with
-    | Some c -> { o with controller = { o.controller with units = c.backup.units } }
-    | None -> o in
+  let o = match cell with Some c -> cell_controller o c | None -> o in
   let split s = (String.sub s 0 (String.index s '='),
                  String.sub s (String.index s '=' + 1) (String.length s - String.index s '=' - 1)) in
   let well_formed s = match String.index_opt s '=' with
@@ -232,16 +232,12 @@ let several ?(history = false) ?cell ~notify (o : Run_options.t) (t : Run_option
         | Error m, _ | _, Error m -> Error m) l (Ok []) in
   let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
   (* A backup's tasks (R-bk-3), each --task NAME=FILE,... replacing the files of the task NAME
-     or adding a task; its EIO.cfg unless --io names another configuration. *)
+     or adding a task; its EIO.cfg unless --io names another configuration (cell_controller). *)
   let backup_tasks = match cell with
     | None -> []
     | Some (c : Backup_setup.cell) ->
         List.map (fun (b : Rapid_load.Backup.task) -> (b.name, b.files, b.entry)) c.backup.tasks in
-  let io_file = match o.controller.io, cell with
-    | Some f, _ -> Some f
-    | None, Some c -> c.backup.eio
-    | None, None -> None in
-  match all parse_task t.tasks, all parse_entry t.entries, run_io o io_file, load_robot o.robot, base_frames o with
+  match all parse_task t.tasks, all parse_entry t.entries, run_io o, load_robot o.robot, base_frames o with
   | Error m, _, _, _, _ | _, Error m, _, _, _ | _, _, Error m, _, _ | _, _, _, Error m, _ | _, _, _, _, Error m ->
       Error (Usage m)
   | Ok given, Ok entries, Ok io, Ok robot, Ok frames ->
