@@ -29,11 +29,7 @@ exception Bad of int * int * string
 (* A signal becomes an installed data object of the program: its name must be a RAPID
    identifier (§2.3), at most 32 characters. *)
 let check_name line col name =
-  let ok_char = function 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false in
-  if name = "" || String.length name > 32
-     || not (match name.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
-     || not (String.for_all ok_char name)
-  then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal"
+  if not (Rapid_syntax.Lexer.is_ascii_name name) then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal"
                                (Rapid_syntax.Decimal.shown name)));
   if Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii name) then
     raise (Bad (line, col, Printf.sprintf "%s is a reserved word (§2.4), so it cannot name a signal" name))

@@ -338,10 +338,8 @@ let base_frame_keys =
 (* A cfg value that is a finite decimal number ("0x10", which float_of_string reads, is not). *)
 let decimal v =
   let v = String.trim v in
-  match float_of_string_opt v with
-  | Some f when Float.is_finite f
-                && String.for_all (function '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false) v -> Some f
-  | _ -> None
+  if not (Rapid_syntax.Decimal.is_decimal v) then None
+  else match float_of_string_opt v with Some f when Float.is_finite f -> Some f | _ -> None
 
 let base_frame ~warn (c : Cfg_file.t) ~name (i : Cfg_file.instance) =
   let of_base (a : Cfg_file.attribute) =

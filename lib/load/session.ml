@@ -15,14 +15,9 @@ let signal_module_name = "Installed_signals"
 
 let signal_file_name = "the signals of the I/O configuration"
 
-(* A name MOC.cfg gives that is a RAPID identifier (§2.3): at most 32 letters, digits and
-   underscores, a letter first, no reserved word. *)
+(* A name MOC.cfg gives that is a RAPID identifier (§2.3) and no reserved word (§2.4). *)
 let identifier u =
-  let ok = function 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false in
-  String.length u > 0 && String.length u <= 32 && (match u.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false)
-  && String.for_all ok u
-  && (match Parse.parse_string ~options:{ Parse.default_options with installed = true } ~name:"unit"
-              (Printf.sprintf "MODULE m\n  VAR num %s;\nENDMODULE\n" u) with Ok _ -> true | Error _ -> false)
+  Lexer.is_ascii_name u && not (Hashtbl.mem Lexer.reserved_words (String.uppercase_ascii u))
 
 (* R-bk-13: a backup's mechanical units are mecunit data objects as ROB_1 .. ROB_4 are; those
    four are installed already, and a unit named as a signal is the signal. *)

@@ -289,6 +289,11 @@ let plainly_in_range text start stop =
   end
 
 let max_identifier_length = 32       (* §2.3 *)
+
+let is_ascii_name name =
+  let ok_char = function 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' -> true | _ -> false in
+  name <> "" && String.length name <= max_identifier_length
+  && (match name.[0] with 'A' .. 'Z' | 'a' .. 'z' -> true | _ -> false) && String.for_all ok_char name
 let max_string_bytes = 80            (* §2.7, §2.13 *)
 
 (* §2.1 letters: A..Z, a..z and the Latin-1 letters À..Ö Ø..ö ø..ÿ (× and ÷ are not). *)

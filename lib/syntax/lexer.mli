@@ -17,4 +17,9 @@ val reserved_words : (string, Parser.token) Hashtbl.t
 (** §2.4, keyed by the upper-case spelling. *)
 
 val max_identifier_length : int
+
+val is_ascii_name : string -> bool
+(** An identifier of §2.3 in ASCII (a letter, then letters, digits and underscores, at most
+    {!max_identifier_length} characters), reserved or not: how the names of rapid-sem's
+    configuration files (EIO.cfg's signals, MOC.cfg's units) must be spelled. *)
 val max_string_bytes : int
