@@ -32,8 +32,8 @@ let unit_names (io : Io.t) =
 
 (* R-14-taskid: each program task's predefined taskid variable, NAMEId, when it is a name (§2.3)
    no signal or unit has taken. *)
-let task_id_names (io : Io.t) =
-  let taken = installed_units @ List.map String.lowercase_ascii (unit_names io)
+let task_id_names (io : Io.t) ~units =
+  let taken = installed_units @ List.map String.lowercase_ascii units
               @ List.map (fun (s : Io.signal) -> String.lowercase_ascii s.name) io.signals in
   List.filter_map (fun t ->
       let v = t ^ "Id" in
@@ -41,7 +41,7 @@ let task_id_names (io : Io.t) =
 
 let signal_text (io : Io.t) =
   let units = unit_names io in
-  let ids = task_id_names io in
+  let ids = task_id_names io ~units in
   if io.signals = [] && units = [] && ids = [] then None
   else
     let text = Buffer.create 256 in
