@@ -401,6 +401,24 @@ let tool0_value () =
   V.Record [| V.Bool true; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
               V.Record [| V.num 0.001; V.pos 0. 0. 0.001; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] |]
 
+(* CTool's and CWObj's answers, GetSysData's too: the active tool and work object (R-13-y),
+   tool0 and wobj0 before the first move. *)
+let active_tool_value st = match active_tool st with Some t -> V.copy t | None -> tool0_value ()
+
+let active_wobj_value st =
+  if st.wobj == dummy then
+    V.Record [| V.Bool false; V.Bool true; V.String ""; V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
+                V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
+  else V.copy st.wobj
+
+(* A move or a search makes its tool and work object the active ones, with the names its
+   arguments give them (GetSysData \ObjectName). *)
+let activate ctx st tool wobj =
+  st.tool <- V.copy tool;
+  st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
+  st.tool_name <- label ctx "Tool";
+  st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj")
+
 let current_external_at st now =
   match P.external_at st.planner now with
   | Ok e -> e
@@ -515,12 +533,7 @@ let move ctx st name args =
           | Ok { id; ready_time; warnings } ->
               planned st id;
               (* MoveExtJ has no tool: the active tool and work object stay. *)
-              if not ext then begin
-                st.tool <- V.copy tool;
-                st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
-                st.tool_name <- label ctx "Tool";
-                st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj")
-              end;
+              if not ext then activate ctx st tool wobj;
               let joints = P.target_joints st.planner id in
               (* A stationary tool: the pose drawn is the carried work object's (R-4.1-o). *)
               let tframe =
@@ -677,10 +690,7 @@ let search ctx st name args =
       | Ok { id = move; ready_time; _ } ->
           planned st move;
           st.conc_run <- 0;
-          st.tool <- V.copy tool;
-          st.wobj <- (match wobj with Some o -> V.copy o | None -> dummy);
-          st.tool_name <- label ctx "Tool";
-          st.wobj_name <- (if wobj = None then "wobj0" else label ctx "WObj");
+          activate ctx st tool wobj;
           let joints = P.target_joints st.planner move in
           let start_time, end_time = match P.segment_span st.planner move with Some s -> s | None -> (now, now) in
           emit st (E.Segment_planned { time = now; id = move; instruction = name; label = target_label;
@@ -904,18 +914,14 @@ let call_unguarded (ctx : context) st name args =
          object (CTool, CWObj) copied into DestObject, told apart by its components as for
          SetSysData (R-13-y); \ObjectName receives its name. A loaddata: load0, which the
          motion model does not track (R-13-getsysdata1). *)
-      let wobj0 () = V.Record [| V.Bool false; V.Bool true; V.String "";
-                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                                 V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |] in
       let load0 () = V.Record [| V.num 0.; V.pos 0. 0. 0.; V.orient 1. 0. 0. 0.; V.num 0.; V.num 0.; V.num 0. |] in
       let answer = match arg ctx args "DestObject" with
         | Location (box, i, _) -> (
             match box.(i) with
             | V.Record [| V.Bool _; V.Record [| _; _ |]; V.Record l |] when Array.length l = 6 ->
-                Some (box, i, (match active_tool st with Some t -> V.copy t | None -> tool0_value ()),
-                      st.tool_name)
+                Some (box, i, active_tool_value st, st.tool_name)
             | V.Record [| V.Bool _; V.Bool _; V.String _; V.Record _; V.Record _ |] ->
-                Some (box, i, (if st.wobj == dummy then wobj0 () else V.copy st.wobj), st.wobj_name)
+                Some (box, i, active_wobj_value st, st.wobj_name)
             | V.Record [| V.Num _; V.Record _; V.Record _; V.Num _; V.Num _; V.Num _ |] ->
                 Some (box, i, load0 (), "load0")
             | _ -> None)
@@ -940,16 +946,10 @@ let call_unguarded (ctx : context) st name args =
       Some (match robot_of ctx st args with Error e -> Failed e | Ok _ -> Failed "ERR_TASKNAME")
   | "ctool" ->
       let st = Result.get_ok (robot_of ctx st args) in
-      Some (Returned (Some (match active_tool st with
-      | Some t -> V.copy t
-      | None -> tool0_value ())))
+      Some (Returned (Some (active_tool_value st)))
   | "cwobj" ->
       let st = Result.get_ok (robot_of ctx st args) in
-      Some (Returned (Some (if st.wobj == dummy then
-                              V.Record [| V.Bool false; V.Bool true; V.String "";
-                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.);
-                                          V.pose (V.pos 0. 0. 0.) (V.orient 1. 0. 0. 0.) |]
-                            else V.copy st.wobj)))
+      Some (Returned (Some (active_wobj_value st)))
   | "offs" -> (
       match get "Point", num ctx args "XOffset", num ctx args "YOffset", num ctx args "ZOffset" with
       | Some p, Some x, Some y, Some z ->
