@@ -29,11 +29,8 @@ let position x y z =
 
 let of_text text =
   let parts = List.map String.trim (String.split_on_char ',' text) in
-  let number s =
-    (* decimal numbers only: no hexadecimal, no nan or infinity words, no underscores *)
-    let digit = function '0' .. '9' | '.' | '-' | '+' | 'e' | 'E' -> true | _ -> false in
-    let decimal = s <> "" && String.for_all digit s in
-    if decimal then float_of_string_opt s else None in
+  (* decimal numbers only: no hexadecimal, no nan or infinity words, no underscores *)
+  let number s = if Rapid_syntax.Decimal.is_decimal s then float_of_string_opt s else None in
   match List.map number parts with
   | [ Some x; Some y; Some z; Some q1; Some q2; Some q3; Some q4 ] ->
       Result.bind (position x y z) (fun trans -> Result.map (fun rot -> { trans; rot }) (orientation q1 q2 q3 q4))
