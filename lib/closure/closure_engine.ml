@@ -2462,20 +2462,13 @@ let outcome_of_exception st = function
    [before], the entry routine, the event routines [after], as the machine's [sequence] finds
    them: each a procedure without parameters (the program's entry points). *)
 let sequence (program : program) ~before ~entry ~after =
+  let module T = Rapid_runtime.Task_rules in
   let find ~is_entry name =
     let lower = String.lowercase_ascii name in
     match List.find_opt (fun (n, _) -> String.lowercase_ascii n = lower) program.entry_points with
     | Some (_, k) -> Ok (k, is_entry)
-    | None when is_entry -> Error (Rapid_runtime.Task_rules.no_entry program name)
-    | None ->
-        let named = Array.exists (fun (r : routine) -> String.lowercase_ascii r.name = lower) program.routines in
-        Error (if named then Printf.sprintf "the event routine %s is not a procedure without parameters" name
-               else Printf.sprintf "no procedure %s for the event routine" name) in
-  List.fold_right (fun (name, is_entry) acc ->
-      match find ~is_entry name, acc with
-      | Ok r, Ok rs -> Ok (r :: rs)
-      | Error m, _ | _, Error m -> Error m)
-    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+    | None -> Error (if is_entry then T.no_entry program name else T.not_an_event_routine program name) in
+  T.sequence ~find ~before ~entry ~after
 
 let rec run ?limits ?fuel ?stub_unmodelled ?(all_events = true) ?observe ?(on_event = ignore) ?(before = [])
     ?(after = []) ~host ?cooperation ?module_data (program : program) ~entry =

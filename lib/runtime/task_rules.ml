@@ -74,6 +74,19 @@ let no_entry (program : Ir.program) entry =
          Printf.sprintf "run another with --entry NAME; the task's procedures without parameters: %s, ... (%d in all)"
            (String.concat ", " (List.filteri (fun i _ -> i < 12) l)) (List.length l))
 
+let not_an_event_routine (program : Ir.program) name =
+  let lower = String.lowercase_ascii name in
+  if Array.exists (fun (r : Ir.routine) -> String.lowercase_ascii r.name = lower) program.routines then
+    Printf.sprintf "the event routine %s is not a procedure without parameters" name
+  else Printf.sprintf "no procedure %s for the event routine" name
+
+let sequence ~find ~before ~entry ~after =
+  List.fold_right (fun (name, is_entry) acc ->
+      match find ~is_entry name, acc with
+      | Ok r, Ok rs -> Ok (r :: rs)
+      | Error m, _ | _, Error m -> Error m)
+    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+
 let entry_routine (program : Ir.program) entry =
   let lower = String.lowercase_ascii entry in
   let rec find i =

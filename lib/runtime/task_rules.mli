@@ -48,6 +48,17 @@ val no_entry : Ir.program -> string -> string
 (** The message for a task without the procedure [entry]: what to do, with the task's procedures
     without parameters that --entry can run (§9.1). *)
 
+val not_an_event_routine : Ir.program -> string -> string
+(** Why the event routine of this name does not run (doc/rulings.md R-bk-8): the task has no
+    procedure so named, or it has parameters or is not a procedure; both engines' words. *)
+
+val sequence :
+  find:(is_entry:bool -> string -> ('a, string) result) -> before:string list -> entry:string -> after:string list ->
+  ('a list, string) result
+(** The routines a task runs one after the other (R-bk-8): the event routines [before], the
+    entry routine, the event routines [after], each found by [find] (its own way of each engine),
+    or the first error in that order. *)
+
 val entry_routine : Ir.program -> string -> (int, string) result
 (** The entry routine of this name (letter case aside): the first routine so named, which must
     be a procedure without parameters (§9.1); [Error] says why there is none, in the words both

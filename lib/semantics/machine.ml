@@ -76,24 +76,20 @@ let routine_index_in by_name name =
 
 (* The routines a task runs one after the other (R-bk-8): the event routines [before], the entry
    routine, the event routines [after]; each a procedure without parameters. *)
+let phase_routine program by_name ~is_entry name =
+  match routine_index_in by_name name with
+  | None when is_entry -> Error (Task_rules.no_entry program name)
+  | None -> Error (Task_rules.not_an_event_routine program name)
+  | Some i ->
+      let r = program.Ir.routines.(i) in
+      if r.kind <> Procedure || Array.length r.parameters > 0 then
+        Error (if is_entry then
+                 Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)" name
+               else Task_rules.not_an_event_routine program name)
+      else Ok (r, is_entry)
+
 let sequence program by_name ~before ~entry ~after =
-  let find ~is_entry name =
-    match routine_index_in by_name name with
-    | None when is_entry -> Error (Task_rules.no_entry program name)
-    | None -> Error (Printf.sprintf "no procedure %s for the event routine" name)
-    | Some i ->
-        let r = program.Ir.routines.(i) in
-        if r.kind <> Procedure || Array.length r.parameters > 0 then
-          Error (if is_entry then
-                   Printf.sprintf "%s is not a procedure without parameters: it cannot be the entry routine (§9.1)"
-                     name
-                 else Printf.sprintf "the event routine %s is not a procedure without parameters" name)
-        else Ok (r, is_entry) in
-  List.fold_right (fun (name, is_entry) acc ->
-      match find ~is_entry name, acc with
-      | Ok r, Ok rs -> Ok (r :: rs)
-      | Error m, _ | _, Error m -> Error m)
-    (List.map (fun n -> (n, false)) before @ [ (entry, true) ] @ List.map (fun n -> (n, false)) after) (Ok [])
+  Task_rules.sequence ~find:(phase_routine program by_name) ~before ~entry ~after
 
 let start ?(limits = Limits.default) ?(stub_unmodelled = false) ?(cooperative = false)
     ?(observe = false) ?(before = []) ?(after = []) ~(host : Host.t) (program : Ir.program) ~entry =
@@ -190,15 +186,10 @@ let interpose cfg names =
   match names with
   | [] -> Ok []
   | _ -> (
-      let by_name = cfg.by_name in
       let found = List.fold_right (fun name acc ->
-          match routine_index_in by_name name, acc with
-          | Some i, Ok rs when cfg.program.routines.(i).kind = Procedure
-                               && Array.length cfg.program.routines.(i).parameters = 0 ->
-              Ok (cfg.program.routines.(i) :: rs)
-          | _, Error m -> Error m
-          | _ -> Error (Printf.sprintf "the event routine %s is not a procedure without parameters" name))
-          names (Ok []) in
+          match phase_routine cfg.program cfg.by_name ~is_entry:false name, acc with
+          | Ok (r, _), Ok rs -> Ok (r :: rs)
+          | Error m, _ | _, Error m -> Error m) names (Ok []) in
       match found with
       | Error m -> Error m
       | Ok routines ->
