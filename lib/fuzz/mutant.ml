@@ -11,16 +11,16 @@ let file_name = "fuzz.mod"
 
 let is_ident_char c = c = '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
 
-(* The text's words (names, keywords, numbers: the longest runs of name characters), counted,
-   and the k-th of them with its offset, without a list of them all: a mutation draws one or
-   two words of a text of a few thousand bytes, and the list of every word, each copied, was
-   most of what making a mutant cost. Drawing [Random.State.int rs (count_words text)] and
-   taking that word is what picking from the list did. *)
 (* Which bytes are name characters, looked up rather than tested (every byte of every mutant
    is). *)
 let ident_table = String.init 256 (fun i -> if is_ident_char (Char.chr i) then '\001' else '\000')
 let ident text i = String.unsafe_get ident_table (Char.code (String.unsafe_get text i)) = '\001'
 
+(* The text's words (names, keywords, numbers: the longest runs of name characters), counted,
+   and the k-th of them with its offset, without a list of them all: a mutation draws one or
+   two words of a text of a few thousand bytes, and the list of every word, each copied, was
+   most of what making a mutant cost. Drawing [Random.State.int rs (count_words text)] and
+   taking that word is what picking from the list did. *)
 let count_words text =
   let n = String.length text in
   let count = ref 0 and i = ref 0 in
