@@ -29,8 +29,9 @@ exception Bad of int * int * string
 (* A signal becomes an installed data object of the program: its name must be a RAPID
    identifier (§2.3), at most 32 characters. *)
 let check_name line col name =
-  if not (Rapid_syntax.Lexer.is_ascii_name name) then raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal"
-                               (Rapid_syntax.Decimal.shown name)));
+  if not (Rapid_syntax.Lexer.is_ascii_name name) then
+    raise (Bad (line, col, Printf.sprintf "%S is not a RAPID identifier (§2.3), so it cannot name a signal"
+                             (Rapid_syntax.Decimal.shown name)));
   if Hashtbl.mem Rapid_syntax.Lexer.reserved_words (String.uppercase_ascii name) then
     raise (Bad (line, col, Printf.sprintf "%s is a reserved word (§2.4), so it cannot name a signal" name))
 
