@@ -10,8 +10,8 @@
 name "ABB IRB 2600-12/1.65"
 #     DH: a (mm)  alpha (deg)  d (mm)  offset (deg)   range (deg)   speed (deg/s)
 axis 1   150   -90   445    0    -180 180   175
-axis 2   700     0     0  -90    -155 95   175
-axis 3   115   -90     0    0    -155 75   175
+axis 2   700     0     0  -90    -95 155   175
+axis 3   115   -90     0    0    -180 75   175
 axis 4     0    90   795    0    -400 400   360
 axis 5     0   -90     0    0    -120 120   360
 axis 6     0     0   85  180    -400 400   500
