@@ -186,6 +186,20 @@ let egm_pose ?(euler = false) ?(extra = []) engine () =
         (Printf.sprintf "egm state before the run 1\negm state after the run 1\ntcp %.1f %.1f %.1f\n\
                          orient %.3f %.3f %.3f %.3f\n" gx gy gz (sign *. g1) (sign *. g2) (sign *. g3) (sign *. g4)) out)
 
+(* A set point the arm cannot reach (5 m along x of where the TCP is): the inverse kinematics of
+   the first step's goal has no answer, and EGMRunPose ends with ERR_ROBLIMIT (R-13-egm6), which
+   the program's handler takes; the robot stands where it was. *)
+let egm_pose_unreachable engine () =
+  with_dir (fun dir ->
+      let reply (r : E.robot) =
+        match r.feedback_pose with
+        | Some { E.pos = Some (x, y, z); orient; _ } ->
+            { E.empty_sensor with set_pose = Some { E.pos = Some (x +. 5000., y, z); orient; euler = None } }
+        | _ -> E.empty_sensor in
+      let feedback, out = run_with_sensor ~reply ~driver:"drivers/EgmPose.mod" engine dir in
+      Alcotest.(check bool) "the robot sent its feedback" true (feedback <> []);
+      Alcotest.(check string) "program output" "egm state before the run 1\nout of reach\n" out)
+
 (* A collision at 0.1 s, while the robot follows the sensor: ERR_COLL_STOP is taken by the
    handler of the routine (§7.6), which keeps EGMRunJoint's program point for RETRY (R-7.2-m): the
    process still runs, no cycle happens, and EGMStop connects it again. *)
@@ -265,5 +279,8 @@ let suite = ("egm", [
        the work object frame of the guidance is brought into the base frame. *)
     Alcotest.test_case "pose-mode EGM, the robot at a moved and turned base frame" `Quick
       (egm_pose ~extra:[ "--base-frame"; "300,-200,100,0.9659258,0,0,0.2588190" ] "closure");
+    Alcotest.test_case "pose-mode EGM, a set point out of reach: ERR_ROBLIMIT" `Quick (egm_pose_unreachable "closure");
+    Alcotest.test_case "pose-mode EGM, a set point out of reach, the machine" `Quick
+      (egm_pose_unreachable "machine");
     Alcotest.test_case "no sensor: ERR_UDPUC_COMM after CommTimeout" `Quick egm_timeout;
   ])
