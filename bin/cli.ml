@@ -78,8 +78,7 @@ let finish (o : Rapid_runtime.Outcome.t) steps ~max_steps =
   | Resource_exhausted (m, _) -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Deadlock m -> Printf.eprintf "rapid-sem: %s\n" m; exit_exhausted
   | Unsupported { reason; at; _ } ->
-      Printf.eprintf "%s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n"
-        (Source.to_string at) reason;
+      Printf.eprintf "%s: %s\n" (Source.to_string at) (Rapid_runtime.Outcome.unsupported_text reason);
       exit_unsupported
   | Stuck m ->
       Printf.eprintf "rapid-sem: internal error: no rule applies (%s) after %d steps; please report this program\n"
@@ -100,8 +99,8 @@ let report_task_stops tasks (run : Rapid_runtime.Outcome.t) =
         | Stopped { name; at; chain; about; _ } ->
             Printf.eprintf "task %s: %s\n%!" task (stopped_text at name about chain)
         | Unsupported { reason; at; _ } ->
-            Printf.eprintf "task %s: %s: not modelled: %s (run with --stub-unmodelled to run it as a no-op)\n%!"
-              task (Source.to_string at) reason
+            Printf.eprintf "task %s: %s: %s\n%!" task (Source.to_string at)
+              (Rapid_runtime.Outcome.unsupported_text reason)
         | _ -> ())
     tasks
 

@@ -58,7 +58,7 @@ let seconds_conv ~most =
 (* The longest statement: a day of virtual time. *)
 let most_statement_time = 86400.
 
-(* --fs, --fs-quota, --net, --map-address, --egm-device (doc/services.md). *)
+(* --fs, --fs-quota, --net, --map-address, --egm-device (doc/services.md), --operator. *)
 let services_args =
   let fs = Arg.(value & opt (some string) None & info [ "fs" ] ~docv:"ROOT"
                   ~doc:"The folder that holds the controller's mass memory: HOME:, TEMP:, RAMDISK: and \
@@ -76,8 +76,14 @@ let services_args =
   let egm = Arg.(value & opt_all string [] & info [ "egm-device" ] ~docv:"NAME=HOST:PORT,..."
                    ~doc:"A UdpUc device of Externally Guided Motion: EGMSetupUC's UCDevice NAME sends to the \
                          sensor at HOST:PORT, a loopback address (doc/services.md).") in
-  Term.(const (fun fs fs_quota net map_address egm_device -> { O.fs; fs_quota; net; map_address; egm_device })
-        $ fs $ quota $ net $ map $ egm)
+  let operator = Arg.(value & opt (some file) None & info [ "operator" ] ~docv:"FILE"
+                        ~doc:"The operator at the FlexPendant: FILE's lines answer the program's dialogues \
+                              (TPReadFK, TPReadNum, UIMsgBox, UIMessageBox, UINumEntry, UINumTune, UIAlphaEntry, \
+                              UIListView) in the order it asks, one line each, ROUTINE ANSWER; UIClientExist is \
+                              TRUE (doc/controller.md, \"The operator\").") in
+  Term.(const (fun fs fs_quota net map_address egm_device operator ->
+      { O.fs; fs_quota; net; map_address; egm_device; operator })
+        $ fs $ quota $ net $ map $ egm $ operator)
 
 let robotware_conv =
   let parse s = match Rapid_syntax.Robotware.of_string s with

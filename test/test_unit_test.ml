@@ -14,7 +14,7 @@ let options = Rapid_run.Run_options.{
     max_steps = 10_000_000; allow_unknown = false; stub_unmodelled = false; limits = Rapid_runtime.Limits.default;
     controller = { io = None; statement_time = Rapid_controller.World.default_statement_time;
                    max_time = Rapid_controller.World.default_max_time; epoch = Rapid_controller.World.default_epoch; robotware = None; units = [];
-                   services = { fs = None; fs_quota = None; net = []; map_address = []; egm_device = [] } };
+                   services = { fs = None; fs_quota = None; net = []; map_address = []; egm_device = []; operator = None } };
     robot = None; base_frames = [] }
 
 let cell = "../examples/pickcell"

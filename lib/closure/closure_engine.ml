@@ -1513,6 +1513,7 @@ and primitive_outcome st (caller : routine) caller_act ~at ~call_at ~condition (
        | Function -> IR.stub_value callee
        | Procedure | Trap -> no_value)
   | Not_modelled -> raise (Halt (Outcome.not_modelled callee.name call_at))
+  | Unanswered reason -> raise (Halt (Outcome.unanswered callee.name reason call_at))
   | Wait { wait = wt; first_poll } -> wait st caller_act ~at wt ~first_poll ~condition; no_value
   | History_exhausted m -> raise (Halt (Outcome.motion_history_exhausted m call_at))
   | Assertion_failed message ->

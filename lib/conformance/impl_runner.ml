@@ -28,6 +28,7 @@ let options (case : Spec_case.t) =
        states: an endless loop runs to the timeout, a track robot's moves fail. *)
     (match run with Some { max_steps = Some n; _ } -> [ "--max-steps"; string_of_int n ] | _ -> []);
     (match run with Some { robot = Some f; _ } -> [ "--robot"; Filename.quote f ] | _ -> []);
+    (match run with Some { operator = Some f; _ } -> [ "--operator"; Filename.quote f ] | _ -> []);
     (match run with Some { egm_devices; _ } -> List.concat_map (fun d -> [ "--egm-device"; d ]) egm_devices | _ -> []);
     (match run with
      | Some { base_frames; _ } -> List.concat_map (fun b -> [ "--base-frame"; Filename.quote b ]) base_frames

@@ -36,12 +36,13 @@ and run = {
   robot : string option;
   egm_devices : string list;
   base_frames : string list;
+  operator : string option;
 }
 
 let no_run = { entry = "main"; outputs = []; exit_status = 0; error = None; error_file = None;
                max_steps = None; retry_limit = None; io = None; statement_time = None; max_time = None; home = None;
                tasks = []; schedule = None; motion_task = None; task_entries = [];
-               robot = None; egm_devices = []; base_frames = [] }
+               robot = None; egm_devices = []; base_frames = []; operator = None }
 
 let known_formats = [ "1"; "2"; "3"; "4" ]
 let checks_semantics case = case.format = "2" || case.format = "3" || case.format = "4"
@@ -213,6 +214,13 @@ let read path =
                   (* The files HOME: holds at the start, a folder beside the case (doc/services.md). *)
                   let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
                   with_run case (fun r -> { r with home = Some (Filename.concat dir v) })
+              | Some ("operator", v) when v <> "" ->
+                  (* The FlexPendant operator's script, a file beside the case (--operator, R-13-ui2). *)
+                  let dir = if Sys.file_exists path && Sys.is_directory path then path else Filename.dirname path in
+                  let file = Filename.concat dir v in
+                  (match Rapid_controller.Operator_script.of_file file with
+                   | Ok _ -> with_run case (fun r -> { r with operator = Some file })
+                   | Error m -> add_problem case ("bad @operator " ^ m))
               | Some ("egm-device", v) when Result.is_ok (Rapid_controller.Egm_channel.parse_devices v) ->
                   (* A UdpUc device of EGM (rapid-sem run --egm-device, doc/services.md). *)
                   with_run case (fun r -> { r with egm_devices = r.egm_devices @ [ v ] })

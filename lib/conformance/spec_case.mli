@@ -51,6 +51,8 @@ and run = {
   egm_devices : string list;      (** [! @egm-device NAME=HOST:PORT]: UdpUc devices of EGM (--egm-device) *)
   base_frames : string list;
       (** each [! @base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4]: where the cell mounts a robot (--base-frame, R-bk-12) *)
+  operator : string option;
+      (** [! @operator FILE]: the FlexPendant operator's script beside the case (--operator, R-13-ui2) *)
 }
 
 val read : string -> t

@@ -80,7 +80,9 @@ let case_world (run : Spec_case.run) io =
   Option.iter (Rapid_controller.File_sandbox.seed sandbox ~device:"HOME:") run.home;
   let egm_devices = List.concat_map (fun d -> Result.value (Rapid_controller.Egm_channel.parse_devices d) ~default:[])
       run.egm_devices in
-  let services = Rapid_controller.Services.create ~sandbox ~egm_devices () in
+  (* A script that cannot be read is a problem of the case, caught when the case is read. *)
+  let operator = Option.bind run.operator (fun f -> Result.to_option (Rapid_controller.Operator_script.of_file f)) in
+  let services = Rapid_controller.Services.create ~sandbox ~egm_devices ?operator () in
   Rapid_controller.World.set_services world services;
   (world, fun () -> Rapid_controller.Services.close_all services; Rapid_controller.File_sandbox.remove sandbox)
 let execute engine case (run : Spec_case.run) ~io program =

@@ -15,22 +15,24 @@ type t = {
   mutable next : int;
   egm_devices : Egm_channel.device list;
   mutable egm_channels : Egm_channel.t list;  (* open, closed with the run's services *)
+  operator : Operator_script.t option;        (* the FlexPendant's scripted operator (R-13-ui2) *)
 }
 
 let max_file_size = 64 * 1024 * 1024
 let max_total_size = 256 * 1024 * 1024
 
 let create ?sandbox ?sockets ?(egm_devices = []) ?(max_file_size = max_file_size) ?(max_total_size = max_total_size)
-    () =
+    ?operator () =
   { sandbox = (match sandbox with Some s -> s | None -> File_sandbox.create File_sandbox.default_root);
     sockets = (match sockets with Some s -> s | None -> Sockets.create ());
     files = Hashtbl.create 4; dirs = Hashtbl.create 2; raw = Hashtbl.create 4; texts = Text_tables.create ();
     file_limit = max_file_size; quota = max_total_size; written = 0; next = 1;
-    egm_devices; egm_channels = [] }
+    egm_devices; egm_channels = []; operator }
 
 let sandbox t = t.sandbox
 let sockets t = t.sockets
 let egm_devices t = t.egm_devices
+let operator t = t.operator
 
 let open_egm t d =
   Result.map (fun c -> t.egm_channels <- c :: t.egm_channels; c) (Egm_channel.open_channel d)

@@ -7,13 +7,17 @@ type t
 
 val create :
   ?sandbox:File_sandbox.t -> ?sockets:Sockets.t -> ?egm_devices:Egm_channel.device list -> ?max_file_size:int ->
-  ?max_total_size:int -> unit -> t
+  ?max_total_size:int -> ?operator:Operator_script.t -> unit -> t
 (** Without [sandbox], {!File_sandbox.default_root}; without [sockets], loopback only;
     [max_file_size] bytes a file may hold (default {!max_file_size}), [max_total_size] bytes
-    the run may write into files in all (default {!max_total_size}). *)
+    the run may write into files in all (default {!max_total_size}); [operator] the answers of
+    the FlexPendant's operator (--operator, R-13-ui2), none by default. *)
 
 val sandbox : t -> File_sandbox.t
 val sockets : t -> Sockets.t
+
+val operator : t -> Operator_script.t option
+(** The scripted operator at the FlexPendant, shared by the run's tasks (R-13-ui2). *)
 
 val egm_devices : t -> Egm_channel.device list
 (** The UdpUc devices of EGM the run knows (--egm-device); none by default. *)

@@ -36,6 +36,7 @@ type outcome =
   | Wait of Rapid_controller.World.wait
   | Retry_requested
   | Assertion_failed of string
+  | Unanswered of string
 
 (* The argument of the parameter of this name (letter case aside, §2.3): installed routines
    whose behaviour lives outside this module find their arguments by name. *)

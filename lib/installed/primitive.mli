@@ -41,6 +41,7 @@ type outcome =
   | Wait of Rapid_controller.World.wait              (** a waiting instruction: the engine waits *)
   | Retry_requested                                  (** StartMoveRetry: RETRY, as the statement (§7.1) *)
   | Assertion_failed of string                       (** an assertion of rapid-sem test failed *)
+  | Unanswered of string                             (** no scripted answer for a dialogue (R-13-ui2) *)
 
 val named_argument : context -> argument array -> string -> argument
 (** The argument of the callee's parameter of this name ([context.parameters]), letter case

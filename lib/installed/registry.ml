@@ -28,6 +28,7 @@ let same = Rapid_typing.Types.same_name
    then to Basic_routines' log line; a motion instruction in a task without the robot is
    Task_routines' refusal (R-14-e). One line per module. *)
 let bodies = [
+  { module_name = "ui"; reach = (fun _ -> World); claims = Ui_routines.claims; answer = plain Ui_routines.call };
   { module_name = "task"; reach = (fun _ -> World);
     claims = (fun w name -> Task_routines.modelled name
                             || ((not (W.motion_task w)) && List.exists (same name) Task_routines.motion_instructions));
@@ -86,6 +87,7 @@ let convert_result (r : Primitive.outcome) (effects : Motion_routines.effects) :
   | Wait wait -> Wait { wait; first_poll = effects.first_poll }
   | Retry_requested -> Retry_requested
   | Assertion_failed m -> Assertion_failed m
+  | Unanswered m -> Unanswered m
 
 let make t name claimants : IR.entry =
   let reach = reach_of claimants name in

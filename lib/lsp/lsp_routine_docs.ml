@@ -67,7 +67,7 @@ let lines = [
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");
   ("SpeedLimCheckPoint", "Limits the speed of the robot's checkpoints (mm/s) while LimitSpeed is active.");
   ("SpeedLimAxis", "Limits the speed of one axis of a mechanical unit while LimitSpeed is active.");
-  ("UIClientExist", "Whether a user device such as the FlexPendant is connected (FALSE in a run).");
+  ("UIClientExist", "Whether a user device such as the FlexPendant is connected (FALSE in a run, TRUE under --operator).");
   ("GetNextMechUnit", "Steps through the mechanical units of the system, giving each one's name.");
   ("CRobT", "The current robot position as a robtarget, for the given tool and work object.");
   ("CJointT", "The current joint angles of the robot and the external axes, as a jointtarget.");
@@ -165,6 +165,8 @@ let lines = [
   ("UIMessageBox", "Shows a message box on the FlexPendant and returns the button pressed (a function).");
   ("UINumEntry", "Lets the operator enter a number on the FlexPendant, within limits.");
   ("UIListView", "Shows a list on the FlexPendant and returns the item chosen.");
+  ("UIAlphaEntry", "Lets the operator write a text on the FlexPendant.");
+  ("UINumTune", "Lets the operator tune a number on the FlexPendant, step by step from an initial value.");
   (* Errors and recovery *)
   ("BookErrNo", "Books a new error number for a user error, to be raised with RAISE.");
   ("ErrWrite", "Writes an error message to the event log (\\W: as a warning).");

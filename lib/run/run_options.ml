@@ -1,5 +1,6 @@
 type services = {
-  fs : string option; fs_quota : int option; net : string list; map_address : string list; egm_device : string list }
+  fs : string option; fs_quota : int option; net : string list; map_address : string list; egm_device : string list;
+  operator : string option }
 
 type controller = {
   io : string option; statement_time : float; max_time : float; epoch : float; services : services;

@@ -10,6 +10,7 @@ type services = {
   net : string list;              (** --net: the addresses beyond the loopback sockets may reach *)
   map_address : string list;      (** --map-address: FROM=TO, read before the --net check *)
   egm_device : string list;       (** --egm-device: NAME=HOST:PORT, the UdpUc devices of EGM *)
+  operator : string option;       (** --operator: the FlexPendant operator's script (R-13-ui2) *)
 }
 (** The services of the controller (doc/services.md). *)
 

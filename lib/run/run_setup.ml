@@ -80,11 +80,15 @@ let install_services (s : Run_options.services) world =
         (all Rapid_controller.Egm_channel.parse_devices s.egm_device)
   | _ when Option.fold ~none:false ~some:(fun q -> q < 0) s.fs_quota -> Error "--fs-quota: a number of bytes, 0 or more"
   | Ok allowed, Ok mapping ->
+      match Option.map Rapid_controller.Operator_script.of_file s.operator with
+      | Some (Error m) -> Error ("--operator " ^ m)
+      | (None | Some (Ok _)) as operator ->
+      let operator = Option.map Result.get_ok operator in
       let root = Option.value s.fs ~default:Rapid_controller.File_sandbox.default_root in
       let egm_devices = Result.value (all Rapid_controller.Egm_channel.parse_devices s.egm_device) ~default:[] in
       W.set_services world
         (Rapid_controller.Services.create ~sandbox:(Rapid_controller.File_sandbox.create root)
-           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ~egm_devices ());
+           ?max_total_size:s.fs_quota ~sockets:(K.create ~allowed ~mapping ()) ~egm_devices ?operator ());
       Ok ()
 
 let machine_gc () = Gc.set { (Gc.get ()) with space_overhead = 400 }

@@ -16,6 +16,7 @@ type result =
   | Retry_requested
   | History_exhausted of string
   | Assertion_failed of string
+  | Unanswered of string
 
 type outcome = { result : result; events : Event.t list; new_move : int option }
 

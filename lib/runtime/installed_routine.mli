@@ -37,6 +37,10 @@ type result =
       (** an assertion of rapid-sem test failed (lib/typing/installed/unit_test.sys): the task
           stops at the call with ERR_ASSERT and this message as what the error is about; no
           error handler takes it (doc/rulings.md R-test-b) *)
+  | Unanswered of string
+      (** a dialogue of the FlexPendant the scripted operator has no answer for (--operator,
+          doc/rulings.md R-13-ui2): the run ends at the call as for a routine not modelled, with
+          this reason *)
 
 type outcome = {
   result : result;

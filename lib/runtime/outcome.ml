@@ -24,6 +24,17 @@ let not_modelled name at =
     { name; at;
       reason = Printf.sprintf "%s is an installed routine whose behaviour rapid-sem does not model yet" name }
 
+(* The reason of a dialogue without an answer begins with this, so that it is not offered
+   --stub-unmodelled, which does not answer dialogues the script leaves open. *)
+let operator_prefix = "no answer from the operator: "
+
+let unanswered name reason at = Unsupported { name; at; reason = operator_prefix ^ reason }
+
+let unsupported_text reason =
+  let n = String.length operator_prefix in
+  if String.length reason >= n && String.sub reason 0 n = operator_prefix then reason
+  else Printf.sprintf "not modelled: %s (run with --stub-unmodelled to run it as a no-op)" reason
+
 let time_limit max_time =
   Resource_exhausted (Printf.sprintf "virtual time beyond %g s (the --max-time limit)" max_time, None)
 

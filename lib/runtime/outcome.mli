@@ -30,6 +30,13 @@ val retries_beyond : int -> string
 val not_modelled : string -> Rapid_syntax.Source.region -> t
 (** [Unsupported] for a call of this installed routine at this place. *)
 
+val unanswered : string -> string -> Rapid_syntax.Source.region -> t
+(** A dialogue of the FlexPendant the scripted operator has no answer for (R-13-ui2): the
+    routine, why, and the call. *)
+
+val unsupported_text : string -> string
+(** What the command line says of an [Unsupported] outcome's reason, after its place. *)
+
 val time_limit : float -> t
 (** The end of a run whose virtual time passed [--max-time] (this many seconds). *)
 

@@ -242,6 +242,10 @@ let call_primitive cfg (cs : call_state) name =
   | Not_modelled ->
       cfg.focus <- F_done (Outcome.not_modelled cs.callee.name cs.call.call_at);
       (Rule.Call_not_modelled, List.rev !events)
+  | Unanswered reason ->
+      (* R-13-ui2: the scripted operator has no answer for this dialogue; the run ends there. *)
+      cfg.focus <- F_done (Outcome.unanswered cs.callee.name reason cs.call.call_at);
+      (Rule.Call_not_modelled, List.rev !events)
 
 (* Does the place denote module data (a module variable), seen through the parameters it goes
    through? CONNECT needs it (§4.15). *)
