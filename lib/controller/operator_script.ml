@@ -27,7 +27,7 @@ let tokens_of line =
           while !j < n && not (List.mem line.[!j] [ ' '; '\t'; '\r'; '#'; '"' ]) do incr j done;
           let word = String.sub line i (!j - i) in
           let token = match float_of_string_opt word with
-            | Some f when Float.is_finite f && (match word.[0] with '0' .. '9' | '-' | '+' | '.' -> true | _ -> false) ->
+            | Some f when Float.is_finite f && String.contains "0123456789-+." word.[0] ->
                 Ok (Number (f, word))
             | _ when String.for_all is_name_char word && not (match word.[0] with '0' .. '9' -> true | _ -> false) ->
                 Ok (Name word)
@@ -54,7 +54,8 @@ let of_file path =
   match open_in_bin path with
   | exception Sys_error m -> Error m
   | ic ->
-      let text = Fun.protect ~finally:(fun () -> close_in_noerr ic) (fun () -> really_input_string ic (in_channel_length ic)) in
+      let read () = really_input_string ic (in_channel_length ic) in
+      let text = Fun.protect ~finally:(fun () -> close_in_noerr ic) read in
       of_text ~file:path text
 
 let place t a = Printf.sprintf "%s:%d" t.file a.line

@@ -56,6 +56,13 @@ let choice_text = function
 
 let lower = String.lowercase_ascii
 
+(* The place, from 1, of a text that is not empty in a list of texts. *)
+let index_of t l =
+  let rec index i = function
+    | [] -> None
+    | x :: r -> if x <> "" && x = t then Some (float_of_int i) else index (i + 1) r in
+  index 1 l
+
 (* The button a token names: a btnres by its name (resYes, or Yes) or number, or a \BtnArray
    label by its index or its text. *)
 let button choice (token : O.token) =
@@ -68,9 +75,7 @@ let button choice (token : O.token) =
   | Results l, Number (v, _) when List.mem v l -> Some v
   | Labels l, Number (v, _) when Float.is_integer v && v >= 1. && v <= float_of_int (List.length l)
                                  && List.nth l (int_of_float v - 1) <> "" -> Some v
-  | Labels l, Text t -> (
-      let rec index i = function [] -> None | x :: r -> if x <> "" && x = t then Some (float_of_int i) else index (i + 1) r in
-      index 1 l)
+  | Labels l, Text t -> index_of t l
   | _ -> None
 
 (* ------------------------------------------------------------------ breaks *)
@@ -174,8 +179,8 @@ let dialogue ctx args name ~checks ~value ~waits ~on_end answer =
           match deadline with
           | Some _ -> finish_with "ERR_TP_MAXTIME"
           | None ->
-              Unanswered (Printf.sprintf "the operator does not answer %s, which has no \\MaxTime: it would wait for ever"
-                            name)))
+              Unanswered
+                (Printf.sprintf "the operator does not answer %s, which has no \\MaxTime: it waits for ever" name)))
 
 let number = function [ O.Number (v, _) ] -> Some v | _ -> None
 
@@ -207,6 +212,9 @@ let entered ctx args ~outside tokens =
 
 let func v = Returned (Some v)
 
+let not_a_button tokens buttons =
+  Error (Printf.sprintf "%s is not a button of the box (%s)" (tokens_text tokens) (choice_text buttons))
+
 let call ctx name args : outcome option =
   let dialogue = dialogue ctx args name in
   let nothing () = () in
@@ -235,13 +243,13 @@ let call ctx name args : outcome option =
           match tokens with
           | [ t ] when button buttons t <> None ->
               store ctx args "Result" (V.num (Option.get (button buttons t))); Ok (Returned None)
-          | _ -> Error (Printf.sprintf "%s is not a button of the box (%s)" (tokens_text tokens) (choice_text buttons))))
+          | _ -> not_a_button tokens buttons))
   | "uimessagebox" ->
       let buttons = choice ctx args ~default:0. in
       Some (dialogue ~checks:(Ok ()) ~value:(Some (V.num res_unknown)) ~waits:false ~on_end:nothing (fun tokens ->
           match tokens with
           | [ t ] when button buttons t <> None -> Ok (func (V.num (Option.get (button buttons t))))
-          | _ -> Error (Printf.sprintf "%s is not a button of the box (%s)" (tokens_text tokens) (choice_text buttons))))
+          | _ -> not_a_button tokens buttons))
   | "uinumentry" | "uinumtune" ->
       let init = num ctx args "InitValue" in
       let checks = Result.map (fun _ -> ()) (limits ctx args ~init) in
@@ -265,9 +273,7 @@ let call ctx name args : outcome option =
       let on_end () = store ctx args "Result" (V.num res_unknown) in
       let item (t : O.token) = match t with
         | Number (v, _) when Float.is_integer v && v >= 1. && v <= float_of_int (List.length items) -> Some v
-        | Text s -> (
-            let rec index i = function [] -> None | x :: r -> if x = s then Some (float_of_int i) else index (i + 1) r in
-            index 1 items)
+        | Text s -> index_of s items
         | _ -> None in
       Some (dialogue ~checks:(Ok ()) ~value:(Some (V.num 0.)) ~waits:false ~on_end (fun tokens ->
           let chosen = match tokens with

@@ -67,7 +67,8 @@ let lines = [
   ("GetSysData", "Copies the active tool, work object or load into a persistent, and its name.");
   ("SpeedLimCheckPoint", "Limits the speed of the robot's checkpoints (mm/s) while LimitSpeed is active.");
   ("SpeedLimAxis", "Limits the speed of one axis of a mechanical unit while LimitSpeed is active.");
-  ("UIClientExist", "Whether a user device such as the FlexPendant is connected (FALSE in a run, TRUE under --operator).");
+  ("UIClientExist",
+   "Whether a user device such as the FlexPendant is connected (FALSE in a run, TRUE under --operator).");
   ("GetNextMechUnit", "Steps through the mechanical units of the system, giving each one's name.");
   ("CRobT", "The current robot position as a robtarget, for the given tool and work object.");
   ("CJointT", "The current joint angles of the robot and the external axes, as a jointtarget.");
