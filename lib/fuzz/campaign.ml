@@ -75,27 +75,54 @@ let minimise_case judge case failure = minimise_by Fuzz_case.shrink judge case f
 let is_scenario ~seed ~scenarios i =
   scenarios > 0 && Random.State.int (Random.State.make [| seed; i; 104729 |]) scenarios = 0
 
+(* What one text gives: the failure it shows, shrunk, if any. *)
+let judge_text i text =
+  match Mutant.check_text text with
+  | Ok () -> None
+  | Error m ->
+      let fails t = Result.is_error (Mutant.check_text t) in
+      let minimal = Mutant.shrink_text fails text in
+      let m = match Mutant.check_text minimal with Error m' -> m' | Ok () -> m in
+      let lines t = List.length (String.split_on_char '\n' t) in
+      Some { program_index = i; failure = Fuzz_run.Checker_crashed m; source = minimal;
+             original_size = lines text; minimal_size = lines minimal; case = None }
+
+(* Most hostile texts are one of some fifty fixed texts (Mutant.hostile: a kind and a depth,
+   drawn), the large ones 20 KB to 600 KB, and one in 14 a module of 10,000 procedures: checking
+   the same bytes again in every tenth program was a fifth of the default configuration's time
+   (bench/README.md, "What each program re-did"). The verdict of a text is a function of its
+   bytes (the machine that runs it is deterministic, which every program tests), so a large one
+   is judged once per process, and its verdict and the rules its run applied counted again at
+   each repetition. The random texts (bytes, words) are under 4 KB and rarely repeat: not kept. *)
+let judged_hostile : (string, failure_found option * (string * int) list) Hashtbl.t = Hashtbl.create 64
+let kept_from = 4096
+let forget_texts () = Hashtbl.reset judged_hostile
+
+let judge_hostile i text =
+  if String.length text < kept_from then judge_text i text
+  else
+    match Hashtbl.find_opt judged_hostile text with
+    | Some (verdict, rules) ->
+        Fuzz_run.note_rules rules;
+        Option.map (fun f -> { f with program_index = i }) verdict
+    | None ->
+        let verdict, rules = Fuzz_run.recording_rules (fun () -> judge_text i text) in
+        if Hashtbl.length judged_hostile < 256 then Hashtbl.replace judged_hostile text (verdict, rules);
+        verdict
+
 (* The mutants of program [i] and, every [hostile_every] programs, a hostile text: each failing
    text is shrunk by lines and characters. Their random states are apart from the program's, so
    that a campaign's programs do not change with the number of mutants. *)
 let check_texts ~seed ~mutants ~hostile_every i source =
   let hostile = hostile_every > 0 && i mod hostile_every = 0 in
   (* Making a random state digests its seed some hundred times: not done for no text. *)
-  let texts =
-    if mutants = 0 && not hostile then []
-    else
-      let rs = Random.State.make [| seed; i; 7919 |] in
-      List.init mutants (fun _ -> Mutant.mutate rs source) @ (if hostile then [ Mutant.hostile rs ] else []) in
-  List.filter_map (fun text ->
-      match Mutant.check_text text with
-      | Ok () -> None
-      | Error m ->
-          let fails t = Result.is_error (Mutant.check_text t) in
-          let minimal = Mutant.shrink_text fails text in
-          let m = match Mutant.check_text minimal with Error m' -> m' | Ok () -> m in
-          let lines t = List.length (String.split_on_char '\n' t) in
-          Some { program_index = i; failure = Fuzz_run.Checker_crashed m; source = minimal;
-                 original_size = lines text; minimal_size = lines minimal; case = None }) texts
+  if mutants = 0 && not hostile then []
+  else
+    let rs = Random.State.make [| seed; i; 7919 |] in
+    (* the hostile text drawn first, then the mutants, as they always were *)
+    let hostile_text = if hostile then Some (Mutant.hostile rs) else None in
+    let found = List.filter_map (judge_text i) (List.init mutants (fun _ -> Mutant.mutate rs source)) in
+    found @ Option.to_list (Option.bind hostile_text (judge_hostile i))
 
 let run ?(options = Program_gen.default_options) ?(engines = []) ?external_check ?progress
     ?(max_steps = 200_000) ?(mutants = 1) ?(hostile_every = 10) ?(scenarios = 10) ?max_failures ~seed ~count ~shard () =

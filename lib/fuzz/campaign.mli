@@ -53,6 +53,10 @@ val run :
     [external_check source] compares another implementation on a program that passed every
     property (the oracle); an [Error] is a failure too. *)
 
+val forget_texts : unit -> unit
+(** Forgets the verdicts of the large hostile texts judged so far: {!run} judges each such text
+    once per process and counts its verdict and rules again when it recurs. *)
+
 val save : dir:string -> failure_found -> string
 (** A scenario's failure is written as a folder [fuzz-I.case] (its modules, [fuzz.io] and
     [run.sh], the command that runs it) with [fuzz-I.failure] and [fuzz-I.expected]; returns

@@ -62,7 +62,23 @@ let outcome_text (o : Rapid_runtime.Outcome.t) =
   | Stuck m -> "stuck " ^ m
 
 let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
-let note_rule rule = Hashtbl.replace rule_table rule (1 + Option.value (Hashtbl.find_opt rule_table rule) ~default:0)
+let bump t rule n = Hashtbl.replace t rule (n + Option.value (Hashtbl.find_opt t rule) ~default:0)
+
+(* The tables of the calls of [recording_rules] under way, innermost first. *)
+let recording : (string, int) Hashtbl.t list ref = ref []
+
+let note_rule rule =
+  bump rule_table rule 1;
+  match !recording with [] -> () | ts -> List.iter (fun t -> bump t rule 1) ts
+
+let recording_rules f =
+  let t = Hashtbl.create 16 in
+  let saved = !recording in
+  recording := t :: saved;
+  let r = Fun.protect ~finally:(fun () -> recording := saved) f in
+  (r, List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) t []))
+
+let note_rules l = List.iter (fun (rule, n) -> bump rule_table rule n; List.iter (fun t -> bump t rule n) !recording) l
 let reset_rule_counts () = Hashtbl.reset rule_table
 let rule_counts () = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) rule_table [])
 

@@ -92,6 +92,12 @@ val check_program : ?engines:engine list -> ?max_steps:int -> string -> (observe
 val observe : ?max_steps:int -> string -> (observed, string) result
 (** The machine's observation of a source, without judging any property. *)
 
+val recording_rules : (unit -> 'a) -> 'a * (string * int) list
+(** [f ()], with the rules {!note_rule} counted while it ran, by name. *)
+
+val note_rules : (string * int) list -> unit
+(** Counts each rule as many times as it is paired with, as that many {!note_rule} would. *)
+
 val rule_counts : unit -> (string * int) list
 (** The machine's rules applied since the last {!reset_rule_counts}, with counts, by name. *)
 
