@@ -1948,6 +1948,37 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Alias
+                             && (match e.e with
+                                 | Binary ((Num_add | Num_sub), { e = Read (Whole (Local j)); _ }, _) -> j = i
+                                 | _ -> false) ->
+          (* x := x +- y on an alias parameter (an INOUT counter): located once where it is
+             bound, its value read there before y is evaluated (the left operand first, §3.1),
+             the sum as [binary] computes it, then stored as below *)
+          let op, y = match e.e with Binary (op, _, y) -> (op, y) | _ -> assert false in
+          let slow u v = check st ~at (Arith.binary op u v) in
+          let negate = op = Arith.Num_sub in
+          let store box j v =
+            match box.(j) with
+            | V.Handle _ as old when CC.is_signal old -> store_signal box j v
+            | _ -> box.(j) <- v [@@inline] in
+          (match y.e with
+           | Literal (V.Num q as k) ->
+               let q = if negate then -. q else q in
+               fun a ->
+                 let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+                 let v = match box.(j) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k in
+                 store box j v; true
+           | _ ->
+               let y = expr st r ~at y in
+               fun a ->
+                 let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+                 let u = box.(j) in
+                 let w = y a in
+                 let v = match u, w with
+                   | V.Num p, V.Num q -> single_num st ~at (if negate then p -. q else p +. q)
+                   | _ -> slow u w in
+                 store box j v; true)
       | Whole (Local i) when local_access r i = Alias ->
           (* an alias parameter: where it is bound, located before the value (as below) *)
           fun a ->
