@@ -105,6 +105,40 @@ let required_choice () =
     (List.exists (fun e -> e = "8:19 argument-required")
        (errors (prog "SearchL \\Stop \\PersBool:=pb, f, t, v100, tool0;")))
 
+(* Installed_routine.fixed: the closure engine calls a function of required parameters by their
+   number; its answer must be the general form's, on every kind of argument (a wrong type raises
+   the same way too). *)
+let fixed_arity_same_answers () =
+  let module V = Rapid_runtime.Value in
+  let module L = Rapid_installed.Library in
+  let values = [ V.Num 0.; V.Num 2.5; V.Num (-3.); V.Num 1e30; V.Dnum 7.; V.Dnum (-0.5); V.String "";
+                 V.String "abcdef"; V.Bool true; V.Record [| V.Num 1.; V.Num 2.; V.Num 3. |];
+                 V.Record [| V.Num 1.; V.Num 0.; V.Num 0.; V.Num 0. |] ] in
+  let answer f = match f () with r -> Ok r | exception V.Type_mismatch w -> Error w in
+  let same name general fixed =
+    if answer general <> answer fixed then Alcotest.failf "%s: the two forms differ" name in
+  let known = ref 0 in
+  List.iter (fun (name, arity, f) ->
+      match L.find_fixed name with
+      | None -> ()
+      | Some fixed ->
+          incr known;
+          let general args = fun () -> f (Array.of_list (List.map Option.some args)) in
+          (match fixed with
+           | Rapid_runtime.Installed_routine.One g ->
+               Alcotest.(check int) (name ^ ": one parameter") 1 arity;
+               List.iter (fun a -> same name (general [ a ]) (fun () -> g a)) values
+           | Two g ->
+               Alcotest.(check int) (name ^ ": two parameters") 2 arity;
+               List.iter (fun a -> List.iter (fun b -> same name (general [ a; b ]) (fun () -> g a b)) values) values
+           | Three g ->
+               Alcotest.(check int) (name ^ ": three parameters") 3 arity;
+               List.iter (fun a -> List.iter (fun b -> List.iter (fun c ->
+                   same name (general [ a; b; c ]) (fun () -> g a b c)) values) values) values))
+    L.functions;
+  Alcotest.(check bool) "most functions are known by their number of parameters" true (!known > 40);
+  Alcotest.(check bool) "StrFind (an optional switch) is not" true (L.find_fixed "StrFind" = None)
+
 let suite =
   ( "installed",
     [ Alcotest.test_case "--allow-unknown: one report per name, first use in source order" `Quick
@@ -113,4 +147,6 @@ let suite =
       Alcotest.test_case "--stub-unmodelled: a record result is its initial value" `Quick
         stubbed_record_result;
       Alcotest.test_case "the installed modules keep their source ids" `Quick installed_ids_kept;
-      Alcotest.test_case "a required choice: SearchL Signal | PersBool (R-13-choice1)" `Quick required_choice ] )
+      Alcotest.test_case "a required choice: SearchL Signal | PersBool (R-13-choice1)" `Quick required_choice;
+      Alcotest.test_case "a function by its number of parameters answers as its general form" `Quick
+        fixed_arity_same_answers ] )

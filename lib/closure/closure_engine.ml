@@ -213,8 +213,9 @@ let native_stack_exhausted level =
 let memory_exhausted st what at =
   raise (Halt (Limits.memory_exhausted_by st.limits what at))
 
-(* Value.bytes, with the scalars of most arguments recognised here (32 bytes each). *)
-let value_bytes (v : V.t) = match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | _ -> V.bytes v [@@inline]
+(* Value.bytes, with the scalars of most arguments (32 bytes each) and strings recognised here. *)
+let value_bytes (v : V.t) =
+  match v with V.Num _ | V.Dnum _ | V.Bool _ -> 32 | V.String s -> 32 + String.length s | _ -> V.bytes v [@@inline]
 
 (* And a record of three scalars (pos, and the like): 16 + 3 x (8 + 32) bytes by Value.bytes. *)
 let value_bytes (v : V.t) =
@@ -744,6 +745,13 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
       (match u, v with V.Dnum p, V.Dnum q -> if p > q then v_true else v_false | _ -> slow u v)
   | Dnum_ge -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Dnum p, V.Dnum q -> if p >= q then v_true else v_false | _ -> slow u v)
+  (* string + string: Arith's row (a result beyond 80 characters is ERR_STRTOOLNG, §3.12), its
+     length known before the copy *)
+  | String_concat -> fun a -> let u = x a in let v = y a in
+      (match u, v with
+       | V.String p, V.String q ->
+           if String.length p + String.length q > 80 then fail st ~at "ERR_STRTOOLNG" else V.String (p ^ q)
+       | _ -> slow u v)
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
 (* The same with a num literal on the right, which then costs no call. *)
@@ -1108,7 +1116,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
   | Some name when by_values && (match st.host.routine name with
       | Some { IR.values = Some _; reach = Values; _ } -> true | _ -> false) ->
       (match st.host.routine name with
-       | Some { IR.values = Some f; _ } -> values_call st caller ~at callee f arguments
+       | Some { IR.values = Some f; fixed; _ } -> values_call st caller ~at callee f fixed arguments
        | _ -> assert false)
   | Some name ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
@@ -1281,18 +1289,37 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
    rule call-primitive) with every argument a value: its copies counted in the memory budget
    as [call_routine_core]'s general path counts them, in order, then the function on the
    values; an error it gives occurs at the statement (call-primitive-error). *)
-and values_call st (caller : routine) ~at (callee : routine) f (arguments : argument array) : act -> V.t =
+and values_call st (caller : routine) ~at (callee : routine) f fixed (arguments : argument array) : act -> V.t =
   let args = Array.map (function By_value e -> expr st caller ~at e | _ -> assert false) arguments in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
   let limits = st.limits in
   let result = function Ok v -> v | Error name -> fail st ~at name [@@inline] in
   let n = Array.length args in
-  match args with
-  | [| f0 |] -> let w0 = whats.(0) in fun a ->
+  match args, fixed with
+  (* By the number of arguments: the same copies counted in the same order, no array. *)
+  | [| f0 |], Some (IR.One g) -> let w0 = whats.(0) in fun a ->
+      let v0 = f0 a in
+      if value_bytes v0 > limits.max_memory - st.memory then memory_exhausted st w0 at;
+      result (g v0)
+  | [| f0; f1 |], Some (IR.Two g) -> let w0 = whats.(0) and w1 = whats.(1) in fun a ->
+      let v0 = f0 a in
+      let pending = count_copy st ~at w0 v0 0 in
+      let v1 = f1 a in
+      ignore (count_copy st ~at w1 v1 pending);
+      result (g v0 v1)
+  | [| f0; f1; f2 |], Some (IR.Three g) -> let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) in fun a ->
+      let v0 = f0 a in
+      let pending = count_copy st ~at w0 v0 0 in
+      let v1 = f1 a in
+      let pending = count_copy st ~at w1 v1 pending in
+      let v2 = f2 a in
+      ignore (count_copy st ~at w2 v2 pending);
+      result (g v0 v1 v2)
+  | [| f0 |], _ -> let w0 = whats.(0) in fun a ->
       let v0 = f0 a in
       if value_bytes v0 > limits.max_memory - st.memory then memory_exhausted st w0 at;
       result (f [| Some v0 |])
-  | _ -> fun a ->
+  | _, _ -> fun a ->
       let values = Array.make n None in
       let pending = ref 0 in
       for i = 0 to n - 1 do
@@ -1921,6 +1948,37 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Alias
+                             && (match e.e with
+                                 | Binary ((Num_add | Num_sub), { e = Read (Whole (Local j)); _ }, _) -> j = i
+                                 | _ -> false) ->
+          (* x := x +- y on an alias parameter (an INOUT counter): located once where it is
+             bound, its value read there before y is evaluated (the left operand first, §3.1),
+             the sum as [binary] computes it, then stored as below *)
+          let op, y = match e.e with Binary (op, _, y) -> (op, y) | _ -> assert false in
+          let slow u v = check st ~at (Arith.binary op u v) in
+          let negate = op = Arith.Num_sub in
+          let store box j v =
+            match box.(j) with
+            | V.Handle _ as old when CC.is_signal old -> store_signal box j v
+            | _ -> box.(j) <- v [@@inline] in
+          (match y.e with
+           | Literal (V.Num q as k) ->
+               let q = if negate then -. q else q in
+               fun a ->
+                 let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+                 let v = match box.(j) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k in
+                 store box j v; true
+           | _ ->
+               let y = expr st r ~at y in
+               fun a ->
+                 let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+                 let u = box.(j) in
+                 let w = y a in
+                 let v = match u, w with
+                   | V.Num p, V.Num q -> single_num st ~at (if negate then p -. q else p +. q)
+                   | _ -> slow u w in
+                 store box j v; true)
       | Whole (Local i) when local_access r i = Alias ->
           (* an alias parameter: where it is bound, located before the value (as below) *)
           fun a ->

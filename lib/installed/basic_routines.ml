@@ -135,8 +135,9 @@ let call ctx name args =
 
 (* A function of the library that no special case above takes: its body is the library's, on
    the arguments' values, and a registry entry may call it without the name dispatch. *)
-let pure_values name =
-  if List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials then None
-  else Library.find name
+let special name = List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials
+
+let pure_values name = if special name then None else Library.find name
+let pure_fixed name = if special name then None else Library.find_fixed name
 
 let pure name = Option.map (fun f args -> result (f (Array.map value_of args))) (pure_values name)

@@ -21,3 +21,6 @@ val pure : string -> (argument array -> outcome) option
 val pure_values : string -> (Value.t option array -> Library.result) option
 (** The same function on the arguments' values (None for an absent one): {!pure} is
     [Array.map value_of] and then this. *)
+
+val pure_fixed : string -> Installed_routine.fixed option
+(** The same by its number of parameters ({!Library.find_fixed}), when {!pure_values} gives it. *)

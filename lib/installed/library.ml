@@ -537,25 +537,30 @@ let bit_clear_dnum = bit_update_w ~width:dnum_width (fun a m -> a land lnot m)
 let arg (a : Value.t option array) i =
   match a.(i) with Some v -> v | None -> type_mismatch "a required argument"
 
-let f1 f a = f (arg a 0)
-let f2 f a = f (arg a 0) (arg a 1)
-let f3 f a = f (arg a 0) (arg a 1) (arg a 2)
+(* A function of required parameters only is also known by its number of them, so that an engine
+   may call it without the array (Installed_routine.fixed). *)
+type implementation = { any : Value.t option array -> result; fixed : Installed_routine.fixed option }
+
+let any f = { any = f; fixed = None }
+let f1 f = { any = (fun a -> f (arg a 0)); fixed = Some (One f) }
+let f2 f = { any = (fun a -> f (arg a 0) (arg a 1)); fixed = Some (Two f) }
+let f3 f = { any = (fun a -> f (arg a 0) (arg a 1) (arg a 2)); fixed = Some (Three f) }
 let present (a : Value.t option array) i = Option.is_some a.(i)
 
 (* StrToByte and ByteToStr: the argument, then the switches \Hex, \Okt, \Bin, \Char. *)
 let byte_base a =
   Byte_text.base_of_switches ~hex:(present a 1) ~okt:(present a 2) ~bin:(present a 3) ~char:(present a 4)
 
-let functions =
+let implementations =
   [ ("StrLen", 1, f1 str_len);
     ("StrPart", 3, f3 str_part);
-    ("StrFind", 4, fun a -> str_find ~not_in_set:(present a 3) (arg a 0) (arg a 1) (arg a 2));
+    ("StrFind", 4, any @@ fun a -> str_find ~not_in_set:(present a 3) (arg a 0) (arg a 1) (arg a 2));
     ("StrMatch", 3, f3 str_match);
     ("StrMap", 3, f3 str_map);
     ("StrMemb", 3, f3 str_memb);
     ("StrOrder", 3, f3 str_order);
-    ("NumToStr", 3, fun a -> num_to_str (arg a 0) (arg a 1) ~exp:(present a 2));
-    ("DnumToStr", 3, fun a -> dnum_to_str (arg a 0) (arg a 1) ~exp:(present a 2));
+    ("NumToStr", 3, any @@ fun a -> num_to_str (arg a 0) (arg a 1) ~exp:(present a 2));
+    ("DnumToStr", 3, any @@ fun a -> dnum_to_str (arg a 0) (arg a 1) ~exp:(present a 2));
     ("ValToStr", 1, f1 val_to_str);
     ("Abs", 1, f1 abs_num);
     ("Sqrt", 1, f1 sqrt_num);
@@ -568,8 +573,8 @@ let functions =
     ("ACos", 1, f1 acos_num);
     ("ATan", 1, f1 atan_num);
     ("ATan2", 2, f2 atan2_num);
-    ("Round", 2, fun a -> round_num (arg a 0) ~dec:a.(1));
-    ("Trunc", 2, fun a -> trunc_num (arg a 0) ~dec:a.(1));
+    ("Round", 2, any @@ fun a -> round_num (arg a 0) ~dec:a.(1));
+    ("Trunc", 2, any @@ fun a -> trunc_num (arg a 0) ~dec:a.(1));
     ("Max", 2, f2 max_num);
     ("Min", 2, f2 min_num);
     ("Distance", 2, f2 distance);
@@ -577,7 +582,7 @@ let functions =
     ("CrossProd", 2, f2 cross_prod);
     ("VectMagn", 1, f1 vect_magn);
     ("NumToDnum", 1, f1 num_to_dnum);
-    ("DnumToNum", 2, fun a -> dnum_to_num (arg a 0) ~integer:(present a 1));
+    ("DnumToNum", 2, any @@ fun a -> dnum_to_num (arg a 0) ~integer:(present a 1));
     ("AbsDnum", 1, f1 abs_num);
     ("SqrtDnum", 1, f1 sqrt_num);
     ("PowDnum", 2, f2 pow_num);
@@ -588,14 +593,14 @@ let functions =
     ("ACosDnum", 1, f1 acos_num);
     ("ATanDnum", 1, f1 atan_num);
     ("ATan2Dnum", 2, f2 atan2_num);
-    ("RoundDnum", 2, fun a -> round_num (arg a 0) ~dec:a.(1));
-    ("TruncDnum", 2, fun a -> trunc_num (arg a 0) ~dec:a.(1));
+    ("RoundDnum", 2, any @@ fun a -> round_num (arg a 0) ~dec:a.(1));
+    ("TruncDnum", 2, any @@ fun a -> trunc_num (arg a 0) ~dec:a.(1));
     ("PoseMult", 2, f2 pose_mult);
     ("PoseInv", 1, f1 pose_inv);
     ("PoseVect", 2, f2 pose_vect);
     ("OrientZYX", 3, f3 orient_zyx);
     ( "EulerZYX", 4,
-      fun a ->
+      any @@ fun a ->
         let axis =
           if present a 0 then Some `X else if present a 1 then Some `Y
           else if present a 2 then Some `Z else None
@@ -616,12 +621,15 @@ let functions =
     ("BitLShDnum", 2, f2 bit_lsh_dnum);
     ("BitRShDnum", 2, f2 bit_rsh_dnum);
     ("BitCheckDnum", 2, f2 bit_check_dnum);
-    ("StrToByte", 5, fun a -> Byte_text.str_to_byte (byte_base a) (arg a 0));
-    ("ByteToStr", 5, fun a -> Byte_text.byte_to_str (byte_base a) (arg a 0)) ]
+    ("StrToByte", 5, any @@ fun a -> Byte_text.str_to_byte (byte_base a) (arg a 0));
+    ("ByteToStr", 5, any @@ fun a -> Byte_text.byte_to_str (byte_base a) (arg a 0)) ]
+
+let functions = List.map (fun (name, n, i) -> (name, n, i.any)) implementations
 
 let table =
   let t = Hashtbl.create 97 in
-  List.iter (fun (name, _, f) -> Hashtbl.replace t (String.lowercase_ascii name) f) functions;
+  List.iter (fun (name, _, i) -> Hashtbl.replace t (String.lowercase_ascii name) i) implementations;
   t
 
-let find name = Hashtbl.find_opt table (String.lowercase_ascii name)
+let find name = Option.map (fun i -> i.any) (Hashtbl.find_opt table (String.lowercase_ascii name))
+let find_fixed name = Option.bind (Hashtbl.find_opt table (String.lowercase_ascii name)) (fun i -> i.fixed)

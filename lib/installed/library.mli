@@ -209,3 +209,7 @@ val functions : (string * int * (Value.t option array -> result)) list
 
 val find : string -> (Value.t option array -> result) option
 (** {!functions} by name, without regard to letter case (§2.3). *)
+
+val find_fixed : string -> Installed_routine.fixed option
+(** The same function by its number of parameters, when none is optional and there are at most
+    three: [find name] applied to [[|Some a; Some b|]] is [f a b] for [Two f]. *)

@@ -145,10 +145,10 @@ let make t name claimants : IR.entry =
         | r -> { IR.result = convert_result r no_effects; events = []; new_move = None })
     | None -> call in
   let condition = if same name "WaitUntil" then Some "Cond" else None in
-  let values = match claimants with
-    | [ { module_name = "basic"; _ } ] -> Basic_routines.pure_values name
-    | _ -> None in
-  { name; reach; condition; call; values }
+  let values, fixed = match claimants with
+    | [ { module_name = "basic"; _ } ] -> Basic_routines.pure_values name, Basic_routines.pure_fixed name
+    | _ -> None, None in
+  { name; reach; condition; call; values; fixed }
 
 let find t name =
   let key = String.lowercase_ascii name in

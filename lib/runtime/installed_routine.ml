@@ -22,12 +22,18 @@ type outcome = { result : result; events : Event.t list; new_move : int option }
 
 type reach = Values | World | Moves
 
+type fixed =
+  | One of (Value.t -> (Value.t, string) Stdlib.result)
+  | Two of (Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+  | Three of (Value.t -> Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+
 type entry = {
   name : string;
   reach : reach;
   condition : string option;
   call : context -> Argument.t array -> outcome;
   values : (Value.t option array -> (Value.t, string) Stdlib.result) option;
+  fixed : fixed option;
 }
 
 let returned v = { result = Returned v; events = []; new_move = None }

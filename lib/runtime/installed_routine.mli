@@ -57,6 +57,13 @@ type reach =
   | World                  (** it reads or changes the controller (clock, signals, services) *)
   | Moves                  (** it reads or changes the motion too *)
 
+(** A function of {!entry.values} by its number of arguments, every one required: the engine
+    passes them without an array (the library's StrLen, StrPart, Abs...). *)
+type fixed =
+  | One of (Value.t -> (Value.t, string) Stdlib.result)
+  | Two of (Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+  | Three of (Value.t -> Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+
 type entry = {
   name : string;                               (** as declared *)
   reach : reach;
@@ -69,6 +76,9 @@ type entry = {
           [call] on arguments that are all values (None for an absent one) is [Returned (Some v)]
           for [Ok v] and [Failed] (not at a move) for [Error name], without events or move; an
           engine with the values at hand may call it instead *)
+  fixed : fixed option;
+      (** [values] again when the function has one, two or three parameters, none optional:
+          [values [|Some a; Some b|]] is [f a b] for [Two f] *)
 }
 
 val returned : Value.t option -> outcome
