@@ -355,6 +355,32 @@ let cobertura () =
   Alcotest.(check bool) "the TEST's three ways" true
     (List.exists (fun l -> attr "condition-coverage" l = Some "100% (3/3)") lines)
 
+(* A test whose dialogue the operator's script leaves unanswered fails with what happened, not
+   with "not modelled" (R-13-ui2); without a script the dialogue is not modelled. *)
+let operator_dialogue () =
+  let dir = temp_dir () in
+  let m = Filename.concat dir "t_ui.mod" and script = Filename.concat dir "answers.txt" in
+  write_file m "MODULE t_ui\n  PROC test_dialogue()\n    VAR num key;\n\
+               \    TPReadFK key, \"Go on?\", \"Yes\", \"No\", stEmpty, stEmpty, stEmpty;\n\
+               \    AssertEqual key, 1;\n\
+               \    TPReadFK key, \"Again?\", \"Yes\", \"No\", stEmpty, stEmpty, stEmpty;\n  ENDPROC\nENDMODULE\n";
+  write_file script "TPReadFK 1\n";
+  let with_operator operator =
+    { options with controller = { options.controller with
+                                  services = { options.controller.services with operator } } } in
+  let verdict operator =
+    match Suite.discover ~notify:ignore (with_operator operator) [ m ] with
+    | Error _ -> Alcotest.fail "the task buffer is refused"
+    | Ok s -> verdicts (run s) in
+  Alcotest.(check (list string)) "the second dialogue has no answer"
+    [ Printf.sprintf "test_dialogue failed at %s:6:5: no answer from the operator: the operator script %s has no \
+                      answer left for TPReadFK (its 1 answers are used)" m script ]
+    (verdict (Some script));
+  Alcotest.(check (list string)) "without an operator"
+    [ Printf.sprintf "test_dialogue failed at %s:4:5: not modelled: TPReadFK is an installed routine whose \
+                      behaviour rapid-sem does not model yet" m ]
+    (verdict None)
+
 let suite =
   ( "unit-test",
     [ Alcotest.test_case "the pick-and-place cell" `Quick pick_cell;
@@ -367,4 +393,5 @@ let suite =
       Alcotest.test_case "genhtml renders the lcov file" `Quick genhtml;
       Alcotest.test_case "JUnit XML read by a consumer" `Quick junit;
       Alcotest.test_case "JUnit XML escapes" `Quick junit_escapes;
-      Alcotest.test_case "Cobertura XML" `Quick cobertura ] )
+      Alcotest.test_case "Cobertura XML" `Quick cobertura;
+      Alcotest.test_case "a dialogue the operator's script leaves open" `Quick operator_dialogue ] )

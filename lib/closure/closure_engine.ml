@@ -797,11 +797,18 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
             | _ -> fun a -> (match x a with V.Num p -> not (p = q) | u -> slow u))
     | (Arith.Dnum_lt | Dnum_le | Dnum_gt | Dnum_ge), Literal (V.Dnum q as v) ->
         (* A dnum literal on the right: compared without a call. *)
+        let x0 = x in
         let x = match x.e with
           | Read (Whole (Local i)) when local_access r i = Own -> fun a -> a.store.(i)
           | _ -> expr st r ~at x in
         let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
-        Some (match op with
+        let own = match x0.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        Some (match op, own with
+            (* an own slot on the left, read without a call *)
+            | Dnum_lt, Some i -> fun a -> (match a.store.(i) with V.Dnum p -> p < q | u -> slow u)
+            | Dnum_gt, Some i -> fun a -> (match a.store.(i) with V.Dnum p -> p > q | u -> slow u)
+            | _ ->
+            match op with
             | Dnum_lt -> fun a -> (match x a with V.Dnum p -> p < q | u -> slow u)
             | Dnum_le -> fun a -> (match x a with V.Dnum p -> p <= q | u -> slow u)
             | Dnum_gt -> fun a -> (match x a with V.Dnum p -> p > q | u -> slow u)
@@ -1946,6 +1953,45 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             true
       | Whole (Global i) when not (CC.is_signal st.globals.(i)) ->
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
+      | Whole (Local i) when local_access r i = Own && not (own_signal i)
+                             && (match e.e with
+                                 | Binary ((Num_add | Num_sub | Dnum_add | Dnum_sub),
+                                           { e = Read (Whole (Local j)); _ }, _) -> j = i
+                                 | _ -> false) ->
+          (* x := x +- y on an own slot (a counter, a sum): its value read before y is evaluated
+             (the left operand first, §3.1), the sum as [binary] computes it (a num rounded to
+             single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c), stored in place *)
+          let op, y = match e.e with Binary (op, _, y) -> (op, y) | _ -> assert false in
+          let slow u v = check st ~at (Arith.binary op u v) in
+          let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
+          (match op, y.e with
+           | (Num_add | Num_sub), Literal (V.Num q as k) ->
+               let q = if op = Arith.Num_sub then -. q else q in
+               fun a ->
+                 (a.store.(i) <- match a.store.(i) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k);
+                 true
+           | Dnum_add, Literal (V.Dnum q as k) ->
+               fun a -> (a.store.(i) <- match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u k); true
+           | Dnum_sub, Literal (V.Dnum q as k) ->
+               fun a -> (a.store.(i) <- match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u k); true
+           | (Num_add | Num_sub), _ ->
+               let y = expr st r ~at y and sub = op = Arith.Num_sub in
+               fun a ->
+                 let u = a.store.(i) in
+                 let w = y a in
+                 (a.store.(i) <- match u, w with
+                     | V.Num p, V.Num q -> single_num st ~at (if sub then p -. q else p +. q)
+                     | _ -> slow u w);
+                 true
+           | _ ->
+               let y = expr st r ~at y and sub = op = Arith.Dnum_sub in
+               fun a ->
+                 let u = a.store.(i) in
+                 let w = y a in
+                 (a.store.(i) <- match u, w with
+                     | V.Dnum p, V.Dnum q -> dnum (if sub then p -. q else p +. q)
+                     | _ -> slow u w);
+                 true)
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Alias

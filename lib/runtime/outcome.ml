@@ -30,9 +30,14 @@ let operator_prefix = "no answer from the operator: "
 
 let unanswered name reason at = Unsupported { name; at; reason = operator_prefix ^ reason }
 
-let unsupported_text reason =
+let unanswered_reason reason =
   let n = String.length operator_prefix in
-  if String.length reason >= n && String.sub reason 0 n = operator_prefix then reason
+  String.length reason >= n && String.sub reason 0 n = operator_prefix
+
+let unsupported_what reason = if unanswered_reason reason then reason else "not modelled: " ^ reason
+
+let unsupported_text reason =
+  if unanswered_reason reason then reason
   else Printf.sprintf "not modelled: %s (run with --stub-unmodelled to run it as a no-op)" reason
 
 let time_limit max_time =

@@ -37,6 +37,10 @@ val unanswered : string -> string -> Rapid_syntax.Source.region -> t
 val unsupported_text : string -> string
 (** What the command line says of an [Unsupported] outcome's reason, after its place. *)
 
+val unsupported_what : string -> string
+(** The same without the hint of --stub-unmodelled (the debugger, rapid-sem test): "not
+    modelled: ..." or, for a dialogue, "no answer from the operator: ...". *)
+
 val time_limit : float -> t
 (** The end of a run whose virtual time passed [--max-time] (this many seconds). *)
 

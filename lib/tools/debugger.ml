@@ -68,7 +68,7 @@ let outcome_text = function
       Printf.sprintf "%s: execution error: %s%s: the system error handler stopped the task"
         (Source.to_string at) name (match about with Some a -> " (" ^ a ^ ")" | None -> "")
   | Resource_exhausted (m, _) -> "resource exhausted: " ^ m
-  | Unsupported { reason; at; _ } -> Printf.sprintf "%s: not modelled: %s" (Source.to_string at) reason
+  | Unsupported { reason; at; _ } -> Printf.sprintf "%s: %s" (Source.to_string at) (Outcome.unsupported_what reason)
   | Deadlock m -> m
   | Stuck m -> "internal error: no rule applies (" ^ m ^ ")"
 

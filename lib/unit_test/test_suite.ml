@@ -154,7 +154,7 @@ let verdict (t : test) (o : Outcome.t) ~max_steps =
                     (match about with Some a -> " (" ^ a ^ ")" | None -> "") (String.concat " <- " chain))
   | Resource_exhausted (m, at) -> failed ?at m
   | Deadlock m -> failed m
-  | Unsupported { reason; at; _ } -> failed ~at ("not modelled: " ^ reason)
+  | Unsupported { reason; at; _ } -> failed ~at (Outcome.unsupported_what reason)
   | Stuck m -> failed ("internal error of rapid-sem: no rule applies (" ^ m ^ ")")
   | Running -> failed (Printf.sprintf "the step limit (%d) is exhausted" max_steps)
 
