@@ -2272,15 +2272,20 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let cases = Array.map (fun (values, b) -> (Array.map (expr st r ~at) values, block b)) cases in
       let default = block default in
       let n = Array.length cases in
+      (* The CASE values evaluated in order until one equals the subject (§4.20); in loops,
+         local functions here would be closures allocated at every execution *)
       fun a ->
         let v = subject a in
-        let rec find k =
-          if k = n then default a
-          else
-            let values, b = cases.(k) in
-            if Array.exists (fun f -> V.equal v (f a)) values then b a else find (k + 1)
-        in
-        find 0
+        let k = ref 0 and chosen = ref (-1) in
+        while !chosen < 0 && !k < n do
+          let values = fst cases.(!k) in
+          let m = Array.length values and j = ref 0 in
+          while !chosen < 0 && !j < m do
+            if V.equal v (values.(!j) a) then chosen := !k else incr j
+          done;
+          incr k
+        done;
+        if !chosen < 0 then default a else (snd cases.(!chosen)) a
   | Label -> fun _ -> true
   | Placeholder_statement -> fun _ -> fail st ~at "ERR_EXECPHR"
 

@@ -73,15 +73,23 @@ let rec copy = function
   | Array a -> Array (copy_parts a)
   | (Num _ | Dnum _ | Bool _ | String _ | Handle _) as v -> v
 
-(* The small ones (pos, orient, confdata...) built in place: Array.map is a call to the runtime. *)
+(* The small ones (pos, orient, confdata...) built in place: Array.map is a call to the runtime.
+   A scalar part is itself, without a call; the test is written out at each part, since a local
+   function for it would be a closure allocated at every copy. *)
 and copy_parts a =
-  (* a scalar part is itself, without a call *)
-  let c v = match v with Record _ | Array _ -> copy v | _ -> v [@@inline] in
   match Array.length a with
-  | 1 -> [| c a.(0) |]
-  | 2 -> [| c a.(0); c a.(1) |]
-  | 3 -> [| c a.(0); c a.(1); c a.(2) |]
-  | 4 -> [| c a.(0); c a.(1); c a.(2); c a.(3) |]
+  | 1 -> let x = a.(0) in [| (match x with Record _ | Array _ -> copy x | _ -> x) |]
+  | 2 ->
+      let x = a.(0) and y = a.(1) in
+      [| (match x with Record _ | Array _ -> copy x | _ -> x); (match y with Record _ | Array _ -> copy y | _ -> y) |]
+  | 3 ->
+      let x = a.(0) and y = a.(1) and z = a.(2) in
+      [| (match x with Record _ | Array _ -> copy x | _ -> x); (match y with Record _ | Array _ -> copy y | _ -> y);
+         (match z with Record _ | Array _ -> copy z | _ -> z) |]
+  | 4 ->
+      let x = a.(0) and y = a.(1) and z = a.(2) and w = a.(3) in
+      [| (match x with Record _ | Array _ -> copy x | _ -> x); (match y with Record _ | Array _ -> copy y | _ -> y);
+         (match z with Record _ | Array _ -> copy z | _ -> z); (match w with Record _ | Array _ -> copy w | _ -> w) |]
   | _ -> Array.map copy a
 
 let rec equal a b =
