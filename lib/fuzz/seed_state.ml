@@ -1,11 +1,11 @@
 (* Stdlib's [Random.State.make] digests its seed 110 times, each time writing a seed element
    with [Int.to_string] (the C printf: some 900 instructions) before the MD5: three states a
    program were about 5 % of a campaign's instructions, the decimal writing half of that
-   (bench/README.md, "Seeds"). This is the same computation (OCaml 4.13's random.ml, full_init)
-   with each element written once. The state is that module's record, which the library does
-   not let one build: the representation is checked against [Random.State.make] by
-   test/test_fuzz.ml on thousands of seeds, and anything else than OCaml 4.13's layout would
-   fail it. *)
+   (bench/README.md, "What each program still re-did"). This is the same computation (OCaml
+   4.13's random.ml, full_init) with each element written once. The state is that module's
+   record, which the library does not let one build: the representation is checked against
+   [Random.State.make] by test/test_campaign.ml on thousands of seeds, and anything else than
+   OCaml 4.13's layout would fail it. *)
 
 type layout = { st : int array; mutable idx : int }
 
