@@ -123,7 +123,7 @@ let late_routine cfg name =
     | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
     | None -> (None, name)
   in
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let same = Rapid_typing.Types.same_name in
   let here = cfg.act.routine.module_name in
   let candidates =
     Option.value (Hashtbl.find_opt cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
