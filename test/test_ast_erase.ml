@@ -7,20 +7,28 @@ open Rapid_syntax
 
 let dump = Ast_dump.module_declaration
 
+(* Ast_erase.equal compares without building the erased trees: it must also agree with the
+   erased trees' structural equality, which it stands for. *)
 let agrees name a b =
   let by_dump = dump a = dump b and by_erase = Ast_erase.equal a b in
   if by_dump <> by_erase then
     Alcotest.failf "%s: the dumps are %s, the erased trees %s" name
-      (if by_dump then "equal" else "different") (if by_erase then "equal" else "different")
+      (if by_dump then "equal" else "different") (if by_erase then "equal" else "different");
+  let by_copies = Ast_erase.module_declaration a = Ast_erase.module_declaration b in
+  if by_copies <> by_erase then
+    Alcotest.failf "%s: the erased copies are %s, Ast_erase.equal says %s" name
+      (if by_copies then "equal" else "different") (if by_erase then "equal" else "different")
 
 let printer_pairs =
   Alcotest.test_case "the printer tests' pairs" `Quick (fun () ->
       let p = Test_printer.parse in
       List.iter (fun (a, b) ->
+          agrees (Printf.sprintf "%S / %S" a b) (p a) (p b);
           if not (Ast_erase.equal (p a) (p b)) then Alcotest.failf "%S and %S: one tree, but not equal" a b)
         Test_printer.same_tree_spellings;
       List.iter (fun (a, b) ->
           let a = p (Test_printer.in_routine a) and b = p (Test_printer.in_routine b) in
+          agrees "a different tree" a b;
           if Ast_erase.equal a b then Alcotest.failf "two trees found equal:\n%s" (dump a))
         Test_printer.different_trees)
 

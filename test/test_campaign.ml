@@ -364,8 +364,36 @@ let merge_script () =
    | Error m -> Alcotest.fail m);
   ignore (Sys.command (Printf.sprintf "rm -rf %s" (Filename.quote dir)))
 
+(* Seed_state.make stands for Random.State.make in every campaign: the same state for seeds of
+   one, two and three elements, negative, large and empty ones among them, and the same draws. *)
+let seed_states () =
+  let seeds = [ [||]; [| 0 |]; [| -1; max_int |]; [| min_int; 3; 7919 |]; [| 1; 2; 3; 4; 5; 6 |];
+                Array.init 60 (fun i -> i * 7 - 100) ] in
+  let seeds = seeds @ List.concat (List.init 2000 (fun i ->
+      [ [| i |]; [| 20261203 - i; i |]; [| i; i * 31; 104729 |]; [| -i; i; 7919 |] ])) in
+  List.iter (fun seed ->
+      let a = Random.State.make seed and b = Rapid_fuzz.Seed_state.make seed in
+      if a <> b then Alcotest.failf "seed [%s]: another state"
+          (String.concat "; " (Array.to_list (Array.map string_of_int seed)));
+      for _ = 1 to 5 do
+        Alcotest.(check int) "a draw" (Random.State.bits a) (Random.State.bits b)
+      done) seeds
+
+(* The mutants made from a program's text do not change with the way they are made: a digest of
+   1,000 of them, five from each of the first 200 programs of seed 5, as the lines' list made
+   them (bench/README.md, "What each program still re-did"). *)
+let mutants_pinned () =
+  let d = Buffer.create 16 in
+  for i = 0 to 199 do
+    let t = G.to_source (G.generate (C.program_seed ~seed:5 i)) in
+    for k = 0 to 4 do Buffer.add_string d (Digest.string (Rapid_fuzz.Mutant.mutate (Random.State.make [| i; k |]) t)) done
+  done;
+  Alcotest.(check string) "digest" "1055d01149443ae514cf1da9b3c09a8b" (Digest.to_hex (Digest.string (Buffer.contents d)))
+
 let suite =
   ("campaign", [
+      Alcotest.test_case "mutants pinned" `Quick mutants_pinned;
+      Alcotest.test_case "seed states as Random.State.make" `Quick seed_states;
       Alcotest.test_case "a bounded campaign" `Slow bounded_campaign;
       Alcotest.test_case "shards partition the programs" `Quick shards_partition;
       Alcotest.test_case "the seed decides the program" `Quick same_seed_same_program;

@@ -1639,7 +1639,7 @@ and kept_async_error st (a : act) ~at name move handled =
 (* §4.6, §5.3: the procedure a late-bound name denotes from the calling module, bound to its
    arguments (rules call-late, call-late-unknown, call-late-mismatch). *)
 and late_target st (caller : routine) ~at ~call_at name (args : late_argument array) : act -> V.t =
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let same = Rapid_typing.Types.same_name in
   let routines = st.program.routines in
   let candidates =
     match String.index_opt name ':' with

@@ -29,7 +29,7 @@ let tune_gc () =
   Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20; space_overhead = 400; allocation_policy = 0;
                             max_overhead = 500 }
 
-let program_seed ~seed i = Random.State.make [| seed; i |]
+let program_seed ~seed i = Seed_state.make [| seed; i |]
 
 (* A refusal's message without its place: a smaller program refused for another reason (a BREAK
    left outside its loop by the shrinking) is not the same failure. *)
@@ -73,7 +73,7 @@ let minimise_case judge case failure = minimise_by Fuzz_case.shrink judge case f
 (* Whether program [i] is a scenario (Scenario_gen): drawn from a state apart from the
    program's, so that the other programs are those of a campaign without scenarios. *)
 let is_scenario ~seed ~scenarios i =
-  scenarios > 0 && Random.State.int (Random.State.make [| seed; i; 104729 |]) scenarios = 0
+  scenarios > 0 && Random.State.int (Seed_state.make [| seed; i; 104729 |]) scenarios = 0
 
 (* What one text gives: the failure it shows, shrunk, if any. *)
 let judge_text i text =
@@ -118,7 +118,7 @@ let check_texts ~seed ~mutants ~hostile_every i source =
   (* Making a random state digests its seed some hundred times: not done for no text. *)
   if mutants = 0 && not hostile then []
   else
-    let rs = Random.State.make [| seed; i; 7919 |] in
+    let rs = Seed_state.make [| seed; i; 7919 |] in
     (* the hostile text drawn first, then the mutants, as they always were *)
     let hostile_text = if hostile then Some (Mutant.hostile rs) else None in
     let found = List.filter_map (judge_text i) (List.init mutants (fun _ -> Mutant.mutate rs source)) in

@@ -61,26 +61,34 @@ let outcome_text (o : Rapid_runtime.Outcome.t) =
   | Deadlock m -> "deadlock " ^ m
   | Stuck m -> "stuck " ^ m
 
-let rule_table : (string, int) Hashtbl.t = Hashtbl.create 200
-let bump t rule n = Hashtbl.replace t rule (n + Option.value (Hashtbl.find_opt t rule) ~default:0)
+(* Every step of every run counts its rule here: a counter per rule, found once, rather than a
+   find and a replace (two hashes of the name) per step. *)
+let rule_table : (string, int ref) Hashtbl.t = Hashtbl.create 200
+let counter t rule =
+  match Hashtbl.find_opt t rule with
+  | Some c -> c
+  | None -> let c = ref 0 in Hashtbl.add t rule c; c
+let bump t rule n = let c = counter t rule in c := !c + n
 
 (* The tables of the calls of [recording_rules] under way, innermost first. *)
-let recording : (string, int) Hashtbl.t list ref = ref []
+let recording : (string, int ref) Hashtbl.t list ref = ref []
 
 let note_rule rule =
-  bump rule_table rule 1;
+  incr (counter rule_table rule);
   match !recording with [] -> () | ts -> List.iter (fun t -> bump t rule 1) ts
+
+let counts t = List.sort compare (Hashtbl.fold (fun k v acc -> (k, !v) :: acc) t [])
 
 let recording_rules f =
   let t = Hashtbl.create 16 in
   let saved = !recording in
   recording := t :: saved;
   let r = Fun.protect ~finally:(fun () -> recording := saved) f in
-  (r, List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) t []))
+  (r, counts t)
 
 let note_rules l = List.iter (fun (rule, n) -> bump rule_table rule n; List.iter (fun t -> bump t rule n) !recording) l
 let reset_rule_counts () = Hashtbl.reset rule_table
-let rule_counts () = List.sort compare (Hashtbl.fold (fun k v acc -> (k, v) :: acc) rule_table [])
+let rule_counts () = counts rule_table
 
 (* The outside world of every generated program (doc/oracle.md, "Fuzzing"): two digital signals
    the generator uses, and an input that changes at fixed times so that waits and interrupts on

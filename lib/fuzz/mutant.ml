@@ -74,11 +74,37 @@ let literal_swaps = [
 let lines text = String.split_on_char '\n' text
 let unlines l = String.concat "\n" l
 
-let one_mutation rs text =
-  let count = count_words text in
+(* Whether the text has a word at all: what a mutation asks before drawing, when only some of its
+   kinds then draw a word. *)
+let has_word text =
   let n = String.length text in
-  let pick_word rs = nth_word text (Random.State.int rs count) in
-  if n = 0 || count = 0 then text
+  let rec go i = i < n && (ident text i || go (i + 1)) in
+  go 0
+
+(* Where each line starts, a line being a piece of [String.split_on_char '\n' text]: one more
+   line than there are newlines. Line [i] ends before [starts.(i + 1) - 1], the last at the end. *)
+let line_starts text =
+  let n = String.length text in
+  let k = ref 1 in
+  for i = 0 to n - 1 do if String.unsafe_get text i = '\n' then incr k done;
+  let starts = Array.make !k 0 and j = ref 1 in
+  for i = 0 to n - 1 do
+    if String.unsafe_get text i = '\n' then begin Array.unsafe_set starts !j (i + 1); incr j end
+  done;
+  starts
+
+let line_stop text starts i =
+  if i + 1 < Array.length starts then starts.(i + 1) - 1 else String.length text
+
+(* The line operations below give what splitting the text into its lines, changing the list and
+   joining it again gave (test/test_campaign.ml compares them on thousands of mutants), without
+   the list: a program has some hundred lines, and the array made of them went straight to the
+   major heap. *)
+let one_mutation rs text =
+  let n = String.length text in
+  let count = lazy (count_words text) in
+  let pick_word rs = nth_word text (Random.State.int rs (Lazy.force count)) in
+  if n = 0 || not (has_word text) then text
   else
     match Random.State.int rs 12 with
     | 0 ->
@@ -104,19 +130,31 @@ let one_mutation rs text =
         let off, w = pick_word rs in
         replace_at text off (String.length w) (pick rs type_names)
     | 6 ->
-        let l = Array.of_list (lines text) in
-        let i = Random.State.int rs (Array.length l) in
-        unlines (List.filteri (fun j _ -> j <> i) (Array.to_list l))
+        (* a line taken out, with the newline after it (before it, for the last line) *)
+        let starts = line_starts text in
+        let k = Array.length starts in
+        let i = Random.State.int rs k in
+        if k = 1 then ""
+        else if i < k - 1 then replace_at text starts.(i) (starts.(i + 1) - starts.(i)) ""
+        else replace_at text (starts.(i) - 1) (n - starts.(i) + 1) ""
     | 7 ->
-        let l = lines text in
-        let i = Random.State.int rs (List.length l) in
-        unlines (List.concat (List.mapi (fun j x -> if j = i then [ x; x ] else [ x ]) l))
+        let starts = line_starts text in
+        let i = Random.State.int rs (Array.length starts) in
+        replace_at text starts.(i) 0 (String.sub text starts.(i) (line_stop text starts i - starts.(i)) ^ "\n")
     | 8 ->
-        let l = Array.of_list (lines text) in
-        let i = Random.State.int rs (Array.length l) and j = Random.State.int rs (Array.length l) in
-        let t = l.(i) in
-        l.(i) <- l.(j); l.(j) <- t;
-        unlines (Array.to_list l)
+        let starts = line_starts text in
+        let k = Array.length starts in
+        let i = Random.State.int rs k and j = Random.State.int rs k in
+        if i = j then text
+        else begin
+          let b = Buffer.create (n + 1) in
+          for m = 0 to k - 1 do
+            let from = if m = i then j else if m = j then i else m in
+            Buffer.add_substring b text starts.(from) (line_stop text starts from - starts.(from));
+            if m < k - 1 then Buffer.add_char b '\n'
+          done;
+          Buffer.contents b
+        end
     | 9 ->
         (* a parameter mode, or a storage class, where it may or may not be allowed *)
         let off, w = pick_word rs in

@@ -64,7 +64,7 @@ let specials = [
 ]
 
 let modelled name =
-  List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials
+  List.exists (fun s -> Rapid_typing.Types.same_name s name) specials
   || Library.find name <> None
 
 let call ctx name args =
@@ -135,7 +135,7 @@ let call ctx name args =
 
 (* A function of the library that no special case above takes: its body is the library's, on
    the arguments' values, and a registry entry may call it without the name dispatch. *)
-let special name = List.exists (fun s -> String.lowercase_ascii s = String.lowercase_ascii name) specials
+let special name = List.exists (fun s -> Rapid_typing.Types.same_name s name) specials
 
 let pure_values name = if special name then None else Library.find name
 let pure_fixed name = if special name then None else Library.find_fixed name

@@ -98,11 +98,22 @@ let find ((box, idx) : V.t array * int) roots =
           | Some _ as found -> found
           | None -> in_global (roots.n_globals - 1)))
 
+(* A run that observes its stores asks this at every store, mostly for the routine of the store
+   before: the answer for the last routine asked is kept (one value, read at once, so that the
+   threads of several tasks never see half of it), and the search, from the first routine,
+   passes the 270 and more installed routines only when the routine changes. *)
+let last_index : (Ir.program * Ir.routine * int) option ref = ref None
+
 let routine_index (program : Ir.program) (r : Ir.routine) =
-  let rec go i =
-    if i >= Array.length program.routines then -1 else if program.routines.(i) == r then i else go (i + 1)
-  in
-  go 0
+  match !last_index with
+  | Some (p, r', i) when p == program && r' == r -> i
+  | _ ->
+      let rec go i =
+        if i >= Array.length program.routines then -1 else if program.routines.(i) == r then i else go (i + 1)
+      in
+      let i = go 0 in
+      last_index := Some (program, r, i);
+      i
 
 let slot_name (program : Ir.program) ri (s : Ir.slot) =
   match s with

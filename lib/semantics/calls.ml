@@ -117,16 +117,22 @@ let exec_ref : (config -> Ir.stmt -> Rule.t * Event.t list) ref = ref (fun _ _ -
    name1 (a LOCAL one too); a plain name by the scope rules of §5.3 from the calling module: its
    own routines, then the global ones. The routines of a name come from a table built once, so
    the look-up is O(1) in the size of the program. *)
+(* A name's routines in increasing order: those of the shared table come first in the program. *)
+let routines_named ((shared, own) : (string, int list) Hashtbl.t * (string, int list) Hashtbl.t) key =
+  match Hashtbl.find_opt shared key with
+  | None -> Hashtbl.find_opt own key
+  | Some l -> (match Hashtbl.find_opt own key with None -> Some l | Some l' -> Some (l @ l'))
+
 let late_routine cfg name =
   let module_name, routine_name =
     match String.index_opt name ':' with
     | Some i -> (Some (String.sub name 0 i), String.sub name (i + 1) (String.length name - i - 1))
     | None -> (None, name)
   in
-  let same a b = String.lowercase_ascii a = String.lowercase_ascii b in
+  let same = Rapid_typing.Types.same_name in
   let here = cfg.act.routine.module_name in
   let candidates =
-    Option.value (Hashtbl.find_opt cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
+    Option.value (routines_named cfg.by_name (String.lowercase_ascii routine_name)) ~default:[] in
   let find pred = List.find_opt (fun i -> pred cfg.program.routines.(i)) candidates in
   match module_name with
   | Some m -> find (fun (r : Ir.routine) -> same r.module_name m)

@@ -8,6 +8,10 @@
 
 open Configuration
 
+val routines_named : (string, int list) Hashtbl.t * (string, int list) Hashtbl.t -> string -> int list option
+(** The routines of a lower-case name in a program's table ([by_name] of {!Configuration}), in
+    increasing order; [None] when none has it. *)
+
 (** {1 Starting and ending calls} *)
 
 val begin_call : config -> Ir.call -> Rule.t

@@ -149,7 +149,9 @@ and config = {
   mutable focus : focus;
   mutable count : int;
   mutable memory : int;                 (* bytes of RAPID data: module data and activations *)
-  by_name : (string, int list) Hashtbl.t;  (* routines by lower-case name, for late binding *)
+  by_name : (string, int list) Hashtbl.t * (string, int list) Hashtbl.t;
+      (* routines by lower-case name, for late binding: the leading routines shared with other
+         programs (the installed ones), then the program's own (Calls.routines_named) *)
   (* Later issues: the user execution level, the motion queue, other tasks. The trap level is
      the activation's; the interrupt numbers and queue are the world's. *)
   mutable unmarked : bool;              (* the next statement is part of a compact IF (§4.17) *)

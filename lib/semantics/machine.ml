@@ -22,12 +22,14 @@ type config = Configuration.config
 (* Routines by lower-case name, built once: a late-bound call looks its name up in O(1). The
    table is only read, so the runs of one program share it: the last one built is kept, keyed
    by the program's routine array compared physically (a fuzzer runs each program three times). *)
-let last_by_name : (Ir.routine array * (string, int list) Hashtbl.t) option ref = ref None
+let last_by_name : (Ir.routine array * ((string, int list) Hashtbl.t * (string, int list) Hashtbl.t)) option ref =
+  ref None
 
 (* The leading routines that a program shares physically with the one before it (the installed
    ones, lowered once and numbered first for every task: Lower), with their table: the routine
    array they were found in, how many, the table. A program that starts with the same routines
-   starts from a copy of it. *)
+   has that table and one of its own routines after them (a copy of the shared table, made for
+   every program, was 1 % of a fuzzing campaign). *)
 let shared_by_name : (Ir.routine array * int * (string, int list) Hashtbl.t) option ref = ref None
 
 (* Routines [from] to [until - 1], in increasing order, each index after those of its name
@@ -43,6 +45,8 @@ let common_prefix (a : Ir.routine array) (b : Ir.routine array) =
   let rec go i = if i < n && a.(i) == b.(i) then go (i + 1) else i in
   go 0
 
+let no_routines : (string, int list) Hashtbl.t = Hashtbl.create 1
+
 let routines_by_name (program : Ir.program) =
   let routines = program.routines in
   let count = Array.length routines in
@@ -52,9 +56,9 @@ let routines_by_name (program : Ir.program) =
       let t =
         match !shared_by_name with
         | Some (a, n, shared) when n <= count && common_prefix a routines >= n ->
-            let t = Hashtbl.copy shared in
-            add_routines t routines ~from:n ~until:count;
-            t
+            let own = Hashtbl.create (2 * (count - n) + 1) in
+            add_routines own routines ~from:n ~until:count;
+            (shared, own)
         | _ ->
             let t = Hashtbl.create (2 * count + 1) in
             add_routines t routines ~from:0 ~until:count;
@@ -67,12 +71,12 @@ let routines_by_name (program : Ir.program) =
                    shared_by_name := Some (routines, n, shared)
                  end
              | None -> ());
-            t in
+            (no_routines, t) in
       last_by_name := Some (routines, t);
       t
 
 let routine_index_in by_name name =
-  match Hashtbl.find_opt by_name (String.lowercase_ascii name) with Some (i :: _) -> Some i | _ -> None
+  match Calls.routines_named by_name (String.lowercase_ascii name) with Some (i :: _) -> Some i | _ -> None
 
 (* The routines a task runs one after the other (R-bk-8): the event routines [before], the entry
    routine, the event routines [after]; each a procedure without parameters. *)

@@ -11,4 +11,5 @@ val module_declaration : Ast.module_declaration -> Ast.module_declaration
     argument a required one without a name. *)
 
 val equal : Ast.module_declaration -> Ast.module_declaration -> bool
-(** [equal a b] exactly when [Ast_dump.module_declaration a = Ast_dump.module_declaration b]. *)
+(** [equal a b] exactly when [Ast_dump.module_declaration a = Ast_dump.module_declaration b], and
+    when [module_declaration a = module_declaration b]; compared without building either. *)

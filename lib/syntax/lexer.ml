@@ -347,6 +347,14 @@ let loop_word_is_name lx token =
   | CONTINUE -> not (Robotware.reserves_loop_words lx.robotware)
   | _ -> false
 
+(* Whether text.[start..] spells [word] (lower case, as long as the name) in any case, without a
+   lowered copy: every name of four letters asks. *)
+let is_lower_word word text start =
+  let rec go i =
+    i >= String.length word
+    || (Char.lowercase_ascii (String.unsafe_get text (start + i)) = String.unsafe_get word i && go (i + 1)) in
+  go 0
+
 (* §2.3, §2.4: the token of the name text.[start..stop-1], [chars] characters long, which is
    the current lexeme (an error is reported at it). *)
 let name lx text start stop chars =
@@ -365,8 +373,8 @@ let name lx text start stop chars =
     let name = Names.find_or_add lx.names text start stop in
     (* TASK (§2.18) and, in the installed environment, REF (ch. 11) are not reserved
        words but begin constructs of their own: the parser accepts TASK as a name too. *)
-    if stop - start = 4 && String.lowercase_ascii name = "task" then TASK name
-    else if lx.installed && stop - start = 3 && String.lowercase_ascii name = "ref" then REF
+    if stop - start = 4 && is_lower_word "task" text start then TASK name
+    else if lx.installed && stop - start = 3 && is_lower_word "ref" text start then REF
     else IDENT name
   end
 

@@ -35,6 +35,10 @@ type ctx = {
       (* name -> (module, local, initial value), for every module constant *)
       (* module constants' initial values, known before their declarations are registered, so
          that an array dimension may name a constant declared later or in another module *)
+  installed_constants : (string, string * bool * expression) Hashtbl.t;
+      (* for a task's half: the installed half's [early_constants], shared and only read, whose
+         bindings come after the task's own (Hashtbl.find_all on one table holding both, the
+         task's added last, gave them in that order) *)
   unknown_uses : (string * string, unknown_name * string * string option) Hashtbl.t;
       (* --allow-unknown: (kind, name in lower case) -> the name, its first use, the number of
          uses, the sections; reported once per name when the task is checked *)
@@ -210,7 +214,8 @@ let constant_lookup ctx place name =
   | Some _ -> None
   | None ->
       (* Only constants in scope: the module's own, or global ones of other modules (§2.20). *)
-      let candidates = Hashtbl.find_all ctx.early_constants (key name) in
+      let k = key name in
+      let candidates = Hashtbl.find_all ctx.early_constants k @ Hashtbl.find_all ctx.installed_constants k in
       (match List.find_opt (fun (m, _, _) -> T.same_name m place.module_name) candidates with
        | Some (_, _, e) -> Some e
        | None ->
@@ -1734,6 +1739,11 @@ let entry_routine ctx (routine : Env.routine) =
     error ctx ~rule:"entry-routine-parameters" ~section:"9.1" routine.r_region
       "the entry routine main cannot have parameters"
 
+
+(* The installed constants of the installed half itself: none (never added to; [copy_ctx] tells
+   the installed half by it). *)
+let no_constants : (string, string * bool * expression) Hashtbl.t = Hashtbl.create 1
+
 let builtin_environment report options =
   let installed = Env.create_table () in
   let add_type ?(alias = false) name t =
@@ -1763,7 +1773,7 @@ let builtin_environment report options =
     switch_type = T.Installed_atomic { atomic_name = "switch"; atomic_class = Non_value; associated = None };
     module_names = Env.create_table ();
     elab = Elaboration.create ();
-    early_constants = Hashtbl.create 64;
+    early_constants = Hashtbl.create 64; installed_constants = no_constants;
     unknown_uses = Hashtbl.create 16;
     unknown_reported = Hashtbl.create 16;
     const_cache = Const_eval.create_cache (); signal_argument = None;
@@ -1837,9 +1847,14 @@ let check_installed options installed =
    task's elaboration keeps its own nodes apart from the installed modules' ones
    (Elaboration.installed). *)
 let copy_ctx report ctx =
+  (* the installed half's constants shared rather than copied for every task: 1 % of a fuzzing
+     campaign *)
+  let early_constants, installed_constants =
+    if ctx.installed_constants == no_constants then (Hashtbl.create 64, ctx.early_constants)
+    else (Hashtbl.copy ctx.early_constants, ctx.installed_constants) in
   { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
              elab = Elaboration.create ~installed:ctx.elab ();
-             early_constants = Hashtbl.copy ctx.early_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
+             early_constants; installed_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
              unknown_reported = Hashtbl.copy ctx.unknown_reported; const_cache = Const_eval.copy_cache ctx.const_cache }
 
 (* The last installed environment checked, when its check reported nothing: [installed] is
