@@ -2446,7 +2446,10 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
   st.compiled <- make_filled (Array.length program.routines) not_compiled;
-  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
+  (* A routine's closures live as long as the run: compiled at the collector's building pace
+     (Build_pace), as Session.load builds the program they come from. *)
+  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (Build_pace.building (fun () -> compile_routine st k)))
+    program.routines;
   st.serve_trap <- serve_trap st;
   st
 
