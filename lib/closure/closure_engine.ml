@@ -1134,7 +1134,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       (* Every installed routine finds its arguments by parameter name, and the motion names its
          targets (as the machine's call-primitive). *)
       let site : IR.context = {
-        parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
+        parameters = Installed_routine.parameter_names callee;
         argument_label = IR.argument_label st.program callee arguments;
         book_error = st.host.book_error;
         error_number = number_of st } in

@@ -74,6 +74,10 @@ type entry = {
 val returned : Value.t option -> outcome
 (** A call that returned, with no event and no move. *)
 
+val parameter_names : Ir.routine -> string array
+(** The names of the routine's parameters, in order: the same array for the same routine (of
+    the last few asked), which {!context.parameters} should be. *)
+
 val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
 (** The data object the argument of a call gives for a parameter (by the parameter's name), for
     the motion's output ([p10], [z10]), the expression as written for another one
