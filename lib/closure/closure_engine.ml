@@ -975,10 +975,6 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
 and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
   : act -> Argument.t =
   let p = callee.parameters.(i) in
-  let location place kind =
-    let l = locate st caller ~at place and kind = effective_kind caller place kind in
-    fun a -> let box, j = l a in Argument.Location (box, j, kind a)
-  in
   match arg with
   | Absent -> fun _ -> Argument.Missing
   | Present_switch -> fun _ -> Argument.Switch
@@ -988,7 +984,7 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
         (* §5.2, the execution-error cells of the access table, for an installed routine's
            parameter as for a RAPID one's: an INOUT parameter bound to a persistent passed on
            to a VAR parameter (ITimer's interrupt), or to a variable passed on to a PERS one. *)
-        let l = location place kind and bound = effective_kind caller place kind in
+        let l = primitive_location st caller ~at place kind and bound = effective_kind caller place kind in
         match p.p_mode with
         | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
         | Mode_pers when Late_binding.unresolved place -> l   (* ERR_REFUNKDAT (R-5.2-unknown1) *)
@@ -1001,10 +997,14 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
       let present = slot_present caller s in
       let pass =
         if p.p_switch then fun _ -> Argument.Switch
-        else if is_alias p then location (Whole s) Ref_variable
+        else if is_alias p then primitive_location st caller ~at (Whole s) Ref_variable
         else let f = read st caller ~at (Whole s) in fun a -> Argument.Value (f a)
       in
       fun a -> if present a then pass a else Argument.Missing
+
+and primitive_location st caller ~at place kind : act -> Argument.t =
+  let l = locate st caller ~at place and kind = effective_kind caller place kind in
+  fun a -> let box, j = l a in Argument.Location (box, j, kind a)
 
 (* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
    call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
@@ -1115,13 +1115,11 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       (* The memory budget counts an installed routine's in arguments and absent parameters as
          a RAPID routine's, while its arguments are bound. *)
       (* The bytes at each call; what they are for, only when they do not fit. *)
-      let cost = Array.mapi (fun i arg ->
-          let p = callee.parameters.(i) in
-          match arg with
-          | By_value _ -> fun (v : Argument.t) -> (match v with Argument.Value x -> V.bytes x | _ -> 0)
-          | Absent -> let absent = V.shape_bytes p.p_default in fun _ -> absent
-          | Pass_on _ -> let absent = V.shape_bytes p.p_default in (function Argument.Missing -> absent | _ -> 0)
-          | By_reference _ | Present_switch -> fun _ -> 0) arguments in
+      let absent = Installed_routine.default_bytes callee in
+      let cost i (v : Argument.t) = match Array.unsafe_get arguments i, v with
+        | By_value _, Argument.Value x -> V.bytes x
+        | Absent, _ | Pass_on _, Argument.Missing -> absent.(i)
+        | _ -> 0 in
       let what i (v : Argument.t) =
         let p = callee.parameters.(i) in
         match arguments.(i), v with
@@ -1155,7 +1153,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         let values = small_arguments n in
         for i = 0 to n - 1 do
           let v = args.(i) a in
-          let bytes = cost.(i) v in
+          let bytes = cost i v in
           if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st (what i v) at;
           pending := !pending + bytes;
           values.(i) <- v

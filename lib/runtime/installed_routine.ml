@@ -48,24 +48,33 @@ let argument_type (program : Ir.program) (callee : Ir.routine) arguments name =
       !found
 
 (* One array of names per routine (the last routines asked), so that the bodies' look-ups by
-   name (Primitive.named_argument) find the index they kept for it. *)
+   name (Primitive.named_argument) find the index they kept for it; with it the bytes of each
+   parameter's default, which the memory budget counts for an absent argument. *)
 let names_kept = 8
 let kept_parameters : Ir.parameter array array = Array.make names_kept [||]
 let kept_names : string array array = Array.make names_kept [||]
+let kept_bytes : int array array = Array.make names_kept [||]
 let next_kept = ref 0
 
-let parameter_names (callee : Ir.routine) =
+let kept (callee : Ir.routine) =
   let rec find i =
     if i >= names_kept then begin
-      let names = Array.map (fun (p : Ir.parameter) -> p.p_name) callee.parameters in
       let j = !next_kept in
-      kept_parameters.(j) <- callee.parameters; kept_names.(j) <- names;
+      kept_parameters.(j) <- callee.parameters;
+      kept_names.(j) <- Array.map (fun (p : Ir.parameter) -> p.p_name) callee.parameters;
+      kept_bytes.(j) <- Array.map (fun (p : Ir.parameter) -> Value.shape_bytes p.p_default) callee.parameters;
       next_kept := (j + 1) mod names_kept;
-      names
+      j
     end
-    else if kept_parameters.(i) == callee.parameters then kept_names.(i)
+    else if kept_parameters.(i) == callee.parameters then i
     else find (i + 1) in
-  if Array.length callee.parameters = 0 then [||] else find 0
+  find 0
+
+let parameter_names (callee : Ir.routine) =
+  if Array.length callee.parameters = 0 then [||] else kept_names.(kept callee)
+
+let default_bytes (callee : Ir.routine) =
+  if Array.length callee.parameters = 0 then [||] else kept_bytes.(kept callee)
 
 (* The parameters of this name, in order, by the parameters' array and the name (physically,
    the last ones asked): a move asks for its tool's, zone's and target's labels. *)
