@@ -113,7 +113,7 @@ let argument_label (program : Ir.program) (callee : Ir.routine) (arguments : Ir.
         | Ir.By_value { e = Read (Whole (Global g)); _ } | By_reference (Whole (Global g), _) ->
             found := Some program.globals.(g).g_name
         | By_value { at; _ } -> (
-            match Hashtbl.find_opt program.names.argument_texts at with
+            match Rapid_syntax.Source.Table.find_opt program.names.argument_texts at with
             | Some text -> found := Some text
             | None -> found := Some (Printf.sprintf "line %d" (Rapid_syntax.Source.start at).line))
         | _ -> ()) (matching callee.parameters name);

@@ -28,7 +28,7 @@ type ctx = {
   mutable routine_now : int;
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
-  argument_texts : (Source.region, string) Hashtbl.t;
+  argument_texts : string Source.Table.t;
   installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
       (* the routine and global numbers of the installed part, when it is shared (below) *)
   argument_types : string option array Ir.Argument_types.t;
@@ -109,7 +109,7 @@ let rec place ctx (r : A.data_reference) : Ir.place =
   | Element (name, indexes) ->
       Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
   | Component (inner, comp) -> (
-      match Hashtbl.find_opt ctx.elab.components comp.at with
+      match Source.Table.find_opt ctx.elab.components comp.at with
       | Some k ->
           let p = Ir.Component (place ctx inner, k) in
           (match name_path p with
@@ -120,12 +120,12 @@ let rec place ctx (r : A.data_reference) : Ir.place =
       | None -> Unresolved comp.it)
 
 and entire ctx (name : A.name) : Ir.place =
-  match Hashtbl.find_opt ctx.elab.names name.at with
+  match Source.Table.find_opt ctx.elab.names name.at with
   | Some (Data d) -> (match slot_of ctx d with Some s -> Whole s | None -> Unresolved name.it)
   | _ -> Unresolved name.it
 
 and expr ctx ~dnum (e : A.expression) : Ir.expr =
-  let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
+  let dnum = dnum || Source.Table.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
   | Num_literal text when small_integer text ->
@@ -141,18 +141,18 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | Data_reference r ->
       let r = A.reference e r in
       let semi_value =
-        match r.it, Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
+        match r.it, Option.bind (root_at r) (Source.Table.find_opt ctx.elab.names) with
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
   | Function_call f -> make (Call (call ctx e.at f.func))
   | Aggregate (es, rs) ->
-      let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
+      let kind = match Source.Table.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
       make (Aggregate (Array.map (expr ctx ~dnum) (A.members es rs), kind))
   | Unary (op, a, a_at) -> (
       let a = A.operand a a_at in
-      match Hashtbl.find_opt ctx.elab.unary e.at with
+      match Source.Table.find_opt ctx.elab.unary e.at with
       | Some row ->
           let operand = if dnum then Tables.O_dnum else row.operand in
           make (Unary (unary_op op operand, expr ctx ~dnum:(operand = O_dnum) a))
@@ -163,7 +163,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
       make (Binary ((if op = Equal then Arith.Equal else Arith.Not_equal),
                     expr ctx ~dnum:false a, expr ctx ~dnum:false b))
   | Binary (op, a, b) -> (
-      match Hashtbl.find_opt ctx.elab.binary e.at with
+      match Source.Table.find_opt ctx.elab.binary e.at with
       | Some row ->
           let left = if dnum && row.left = O_num then Tables.O_dnum else row.left in
           let right = if dnum && row.right = O_num then Tables.O_dnum else row.right in
@@ -203,7 +203,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
-  match Hashtbl.find_opt ctx.elab.names name.at, Hashtbl.find_opt ctx.elab.bindings at with
+  match Source.Table.find_opt ctx.elab.names name.at, Source.Table.find_opt ctx.elab.bindings at with
   | Some (Routine r), Some binding -> (
       match routine_number ctx r.r_region with
       | None -> unknown ()
@@ -245,7 +245,7 @@ and argument_type ctx (a : A.argument) =
   | _ -> None
 
 and reference_type ctx (r : A.data_reference) : Types.object_type option =
-  let declared (n : Source.region) = match Hashtbl.find_opt ctx.elab.names n with
+  let declared (n : Source.region) = match Source.Table.find_opt ctx.elab.names n with
     | Some (Data d) -> Some d.d_type
     | _ -> None in
   match r.it with
@@ -253,7 +253,7 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
   | Entire _ -> declared r.at
   | Element (n, _) -> Option.map (fun (t : Types.object_type) -> Types.scalar t.base) (declared n.at)
   | Component (inner, comp) -> (
-      match reference_type ctx inner, Hashtbl.find_opt ctx.elab.components comp.at with
+      match reference_type ctx inner, Source.Table.find_opt ctx.elab.components comp.at with
       | Some { base = Record rt; _ }, Some k ->
           Option.map (fun (_, t) -> Types.scalar t) (List.nth_opt rt.components k)
       | _ -> None)
@@ -275,7 +275,7 @@ and parameter_array (r : Env.routine) =
 and read_only ctx (e : A.expression) =
   match e.it with
   | Data_reference r -> (
-      match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
+      match Option.bind (root_at (A.reference e r)) (Source.Table.find_opt ctx.elab.names) with
       | Some (Data { d_kind = Loop_variable | Read_only_variable; _ }) -> true
       | _ -> false)
   | _ -> false
@@ -283,7 +283,7 @@ and read_only ctx (e : A.expression) =
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
-      (match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
+      (match Option.bind (root_at (A.reference e r)) (Source.Table.find_opt ctx.elab.names) with
        | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
        | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
        | Some (Data { d_kind = Constant; _ }) -> Ref_constant
@@ -293,7 +293,7 @@ and reference_kind ctx (e : A.expression) : Ir.reference_kind =
 and optional_parameter_slot ctx (e : A.expression) =
   match e.it with
   | Data_reference (Entire _) -> (
-      match Hashtbl.find_opt ctx.elab.names e.at with
+      match Source.Table.find_opt ctx.elab.names e.at with
       | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
       | _ -> None)
   | _ -> None
@@ -305,7 +305,7 @@ and written ctx (source : A.expression) (e : Ir.expr) =
    | _ ->
        let text = Printer.expression source in
        let text = if String.length text > 48 then String.sub text 0 45 ^ "..." else text in
-       Hashtbl.replace ctx.argument_texts e.at text);
+       Source.Table.replace ctx.argument_texts e.at text);
   e
 
 and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
@@ -367,7 +367,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         (* §4.6, §5.2: the type the checker found, compared with the parameter's when the call
            runs; a numeric literal expression is lowered both ways (R-2.5-b). *)
         let typed (e : A.expression) : Ir.late_type =
-          match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+          match Source.Table.find_opt ctx.elab.late_arguments a.at with
           | Some (Some t) -> Late_typed t
           | Some None -> Late_numeric (expr ctx ~dnum:true e)
           | None -> Late_untyped in
@@ -383,7 +383,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         | Optional_argument (n, Some e) -> { (value (name n) e) with late_optional = true }
         | Conditional_argument (n, r) ->
             let slot = match place ctx r with Whole s -> Some s | _ -> None in
-            let late_type = match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+            let late_type = match Source.Table.find_opt ctx.elab.late_arguments a.at with
               | Some (Some t) -> Ir.Late_typed t | _ -> Late_untyped in
             { late_name = name n; late_value = Late_conditional slot; late_kind = Ref_variable; late_type;
               late_read_only = false; late_optional = true }
@@ -393,7 +393,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
       in
       make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (
-      match Hashtbl.find_opt ctx.elab.names id.at with
+      match Source.Table.find_opt ctx.elab.names id.at with
       | Some (Label at) -> (
           match Hashtbl.find_opt ctx.labels at with
           | Some (b, i) -> make (Goto (b, i))
@@ -407,7 +407,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Retry -> make Retry
   | Trynext -> make Trynext
   | Connect (target, trap) -> (
-      match Hashtbl.find_opt ctx.elab.names trap.at with
+      match Source.Table.find_opt ctx.elab.names trap.at with
       | Some (Routine r) -> (
           match routine_number ctx r.r_region with
           | Some i -> make (Connect (place ctx target, i))
@@ -464,7 +464,7 @@ let initial ctx (d : Env.data_object) : Ir.init =
 
 let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.routine option =
   let lower (name : A.identifier) (kind : Ir.routine_kind) (body : A.routine_body) =
-    match Hashtbl.find_opt ctx.elab.declared name.at with
+    match Source.Table.find_opt ctx.elab.declared name.at with
     | Some (Routine r) ->
         ctx.locals <- Hashtbl.create 16;
         ctx.labels <- Hashtbl.create 8;
@@ -492,7 +492,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         let inits = List.filter_map (fun (d : A.data_declaration) ->
             match d.it with
             | Data_declaration { name; _ } -> (
-                match Hashtbl.find_opt ctx.elab.declared name.at with
+                match Source.Table.find_opt ctx.elab.declared name.at with
                 | Some (Data obj) ->
                     let slot = ctx.local_count in
                     ctx.local_count <- slot + 1;
@@ -514,7 +514,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
                 | Error_number_name nm ->
                     if String.uppercase_ascii nm.it = "LONG_JMP_ALL_ERR" then (all_errors := true; None)
                     else (
-                      match Hashtbl.find_opt ctx.elab.names nm.at with
+                      match Source.Table.find_opt ctx.elab.names nm.at with
                       | Some (Data d) -> Option.map (fun s -> Ir.Object s) (slot_of ctx d)
                       | _ -> None))) h.error_numbers in
             { Ir.recovery; all_errors = !all_errors; handler = block ctx h.handler }) body.error in
@@ -558,16 +558,16 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
           | Trap_declaration { name; _ } -> Some (m, inst, r, name)
           | Routine_comment _ | RDN_placeholder -> None) m.routine_declarations) all) in
   let routine_decls = List.filter (fun (_, _, _, (name : A.identifier)) ->
-      match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
+      match Source.Table.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
-      match Hashtbl.find_opt elab.declared name.at with
+      match Source.Table.find_opt elab.declared name.at with
       | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region (routine_base + i)
       | _ -> ()) routine_decls;
   let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
           match d.it with
           | Data_declaration { name; _ } -> (
-              match Hashtbl.find_opt elab.declared name.at with
+              match Source.Table.find_opt elab.declared name.at with
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
@@ -619,7 +619,7 @@ let new_ctx elab =
   { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
     locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
     routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
-    argument_texts = Hashtbl.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
+    argument_texts = Source.Table.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
 
 (* The installed modules' part is the same for every task (its names are bound by the installed
    level alone, and it comes first), so it is lowered once and shared when the checker shares
@@ -651,7 +651,7 @@ let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
   let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
                      component_names = Hashtbl.copy c.component_names;
-                     argument_texts = Hashtbl.copy c.argument_texts;
+                     argument_texts = Source.Table.copy c.argument_texts;
                      installed_index = Some (c.routine_index, c.global_index);
                      argument_types = Ir.Argument_types.create 16 } in
   let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)

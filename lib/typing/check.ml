@@ -274,7 +274,7 @@ let rec reference ctx place (r : data_reference) : reference =
       let name = { it = spelling; at = r.at } in
       match Env.lookup place.scope name.it with
       | Some (Data d as o) ->
-          Hashtbl.replace ctx.elab.names name.at o;
+          Source.Table.replace ctx.elab.names name.at o;
           { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
       | Some o ->
           error ctx ~rule:"data-object-name"
@@ -316,7 +316,7 @@ let rec reference ctx place (r : data_reference) : reference =
           | Some t ->
               let rec index i = function
                 | [] -> i | (n, _) :: rest -> if T.same_name n comp.it then i else index (i + 1) rest in
-              Hashtbl.replace ctx.elab.components comp.at (index 0 rt.components);
+              Source.Table.replace ctx.elab.components comp.at (index 0 rt.components);
               { whole with rtype = Known (T.scalar t) }
           | None ->
               error ctx ~rule:"component-name" ~section:"3.6,2.14" comp.at
@@ -382,7 +382,7 @@ and unary ctx place e op a =
       match List.find_opt (fun (row : Tables.unary_row) -> row.unary = op && row.operand = operand)
               Tables.unary_operators with
       | Some row ->
-          Hashtbl.replace ctx.elab.unary e.at row;
+          Source.Table.replace ctx.elab.unary e.at row;
           if ta = Numeric_literal then Numeric_literal else type_of_operand ctx row.unary_result
       | None -> unary_error ctx e op ta)
   | _, None -> unary_error ctx e op ta
@@ -413,7 +413,7 @@ and binary ctx place e op a b =
             match List.find_opt (fun (row : Tables.binary_row) -> row.op = op && row.left = la && row.right = lb)
                     Tables.binary_operators with
             | Some row ->
-                Hashtbl.replace ctx.elab.binary e.at row;
+                Source.Table.replace ctx.elab.binary e.at row;
                 integer_operands ctx place e row a b;
                 if ta = Numeric_literal && tb = Numeric_literal && row.result = O_num then Numeric_literal
                 else type_of_operand ctx row.result
@@ -445,7 +445,7 @@ and aggregate_operand ctx place e op a b =
           match type_of_operand ctx mine with
           | Known t ->
               check_expression ~sections:"3.12" ctx place agg t;
-              Hashtbl.replace ctx.elab.binary e.at row;
+              Source.Table.replace ctx.elab.binary e.at row;
               type_of_operand ctx row.result
           | Numeric_literal | Unknown -> Unknown)
       | _ ->
@@ -505,7 +505,7 @@ and equality ctx place e op a b =
        | Numeric_literal, Numeric_literal -> ()
        | Numeric_literal, Known t | Known t, Numeric_literal ->
            if is_scalar t && t.base = Dnum then
-             Hashtbl.replace ctx.elab.dnum_literals (if ta = Numeric_literal then a.at else b.at) ();
+             Source.Table.replace ctx.elab.dnum_literals (if ta = Numeric_literal then a.at else b.at) ();
            if not (compatible ~expected:t Numeric_literal) then
              error ctx ~rule:"equality-types" ~section:"3.12" e.at
                "the operator %s needs operands of equal types, not %s and %s"
@@ -531,14 +531,14 @@ and check_expression ?(sections = "2.17") ctx place (e : expression) (expected :
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
       match infer ctx place e with
-      | Numeric_literal -> ignore op; ignore a; ignore b; Hashtbl.replace ctx.elab.dnum_literals e.at ()
+      | Numeric_literal -> ignore op; ignore a; ignore b; Source.Table.replace ctx.elab.dnum_literals e.at ()
       | t -> mismatch ~sections ctx e expected t)
   | _ -> mismatch ~sections ctx e expected (infer ctx place e)
 
 and mismatch ~sections ctx (e : expression) expected actual =
   if actual = Numeric_literal && is_scalar expected
      && (expected.base = Dnum || T.associated_value_type expected.base = Some Dnum) then
-    Hashtbl.replace ctx.elab.dnum_literals e.at ();
+    Source.Table.replace ctx.elab.dnum_literals e.at ();
   if not (compatible ~expected actual) then
     error ctx ~rule:"equal-types" ~section:sections e.at "expected a value of type %s, found %s"
       (T.to_string expected) (type_string actual)
@@ -555,8 +555,8 @@ and aggregate ~sections ctx place e members expected =
     | Sized [] | Scalar -> Scalar
   in
   (match expected.dims, expected.base with
-   | (Sized (_ :: _) | Conformant _), _ -> Hashtbl.replace ctx.elab.aggregates e.at `Array
-   | Scalar, Record _ -> Hashtbl.replace ctx.elab.aggregates e.at `Record
+   | (Sized (_ :: _) | Conformant _), _ -> Source.Table.replace ctx.elab.aggregates e.at `Array
+   | Scalar, Record _ -> Source.Table.replace ctx.elab.aggregates e.at `Record
    | _ -> ());
   match expected.dims, expected.base with
   | (Sized (n :: _)), base ->
@@ -623,7 +623,7 @@ and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.
           | _ ->
               let actual = infer ctx place e in
               if actual = Numeric_literal && is_scalar ptype && ptype.base = Dnum then
-                Hashtbl.replace ctx.elab.dnum_literals e.at ();
+                Source.Table.replace ctx.elab.dnum_literals e.at ();
               if not (compatible ~expected:ptype actual) then
                 error ctx ~rule:"equal-types" ~section:sections arg.at
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
@@ -793,7 +793,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     go slots rest
   and choice_names ps = String.concat " or " (List.map (fun (p : Env.parameter) -> p.p_name) ps) in
   go routine.r_slots args;
-  Hashtbl.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
+  Source.Table.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
   (* Optional or conditional arguments that match no parameter. *)
   List.iter (fun (a : argument) ->
       match a.it, arg_name a with
@@ -895,7 +895,7 @@ and function_call ctx place region (call : function_call) : ty =
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Function result; _ } as r) as o) ->
-          Hashtbl.replace ctx.elab.names call.func.at o;
+          Source.Table.replace ctx.elab.names call.func.at o;
           arguments ctx place region r (call_arguments call);
           if is_unknown result then Unknown else Known result
       | Some (Routine _) ->
@@ -919,8 +919,8 @@ and loose_arguments ctx place (args : argument array) =
    parameters' when the call runs (ERR_CALLPROC); recorded by the argument's region. *)
 and late_arguments ctx place (args : argument array) =
   let record (a : argument) = function
-    | Known t -> Hashtbl.replace ctx.elab.late_arguments a.at (Some t)
-    | Numeric_literal -> Hashtbl.replace ctx.elab.late_arguments a.at None
+    | Known t -> Source.Table.replace ctx.elab.late_arguments a.at (Some t)
+    | Numeric_literal -> Source.Table.replace ctx.elab.late_arguments a.at None
     | Unknown -> () in
   Array.iter (fun (a : argument) ->
       match a.it, argument_value a with
@@ -1101,7 +1101,7 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Procedure; _ } as r) as o) ->
-          Hashtbl.replace ctx.elab.names id.at o;
+          Source.Table.replace ctx.elab.names id.at o;
           User_level_check.raise_to_user ~report:ctx.report ~in_error_handler:place.in_error_handler
             ~in_nostepin:place.in_nostepin ~installed:(r.r_level = Env.Installed_level) ~at:s.at name args;
           arguments ctx place s.at r args
@@ -1128,7 +1128,7 @@ and goto ctx place (id : identifier) =
   | Some name ->
       let visible = List.exists (function Some t -> Hashtbl.mem t (key name) | None -> false) place.labels in
       (match Env.lookup place.scope name with
-       | Some (Label _ as o) -> Hashtbl.replace ctx.elab.names id.at o
+       | Some (Label _ as o) -> Source.Table.replace ctx.elab.names id.at o
        | _ -> ());
       if not visible then
         match Env.lookup place.scope name with
@@ -1189,7 +1189,7 @@ and connect ctx place (target : data_reference) (trap : identifier) =
   | ID_placeholder -> ()
   | Ident name -> (
       match Env.lookup place.scope name with
-      | Some (Routine { r_kind = Trap; _ } as o) -> Hashtbl.replace ctx.elab.names trap.at o
+      | Some (Routine { r_kind = Trap; _ } as o) -> Source.Table.replace ctx.elab.names trap.at o
       | Some o ->
           error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
             (Env.obj_kind_name o)
@@ -1206,7 +1206,7 @@ and for_ ctx place (f : for_statement) =
    | Ident name ->
        let o = Env.Data { d_name = name; d_type = T.scalar Num; d_kind = Loop_variable; d_region = f.loop_variable.at;
                           d_level = Routine_level; d_scope = Global; d_optional = false; d_initial = None } in
-       Hashtbl.replace ctx.elab.declared f.loop_variable.at o;
+       Source.Table.replace ctx.elab.declared f.loop_variable.at o;
        Env.add loop_scope name o
    | ID_placeholder -> ());
   let scope = { place.scope with routine = loop_scope :: place.scope.routine } in
@@ -1353,7 +1353,7 @@ let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : En
           let o = Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
                              d_optional = false; d_initial;
                              d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) } in
-          Hashtbl.replace ctx.elab.declared name.at o;
+          Source.Table.replace ctx.elab.declared name.at o;
           Some (n, o))
 
 (* ------------------------------------------------------------------ parameters and routines *)
@@ -1487,7 +1487,7 @@ let recovery_error_number ctx place (n : recovery_error_number) =
   | Error_number_name name -> (
       match Env.lookup place.scope name.it with
       | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ } as o) ->
-          Hashtbl.replace ctx.elab.names name.at o
+          Source.Table.replace ctx.elab.names name.at o
       | Some (Data _) ->
           error ctx ~rule:"error-number-list" ~section:"7.2" n.at
             "an error number of an ERROR list is a num literal or an entire constant, variable or \
@@ -1501,7 +1501,7 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
   let table = Env.create_table () in
   let parameter (p : Env.parameter) ~optional =
     let o = Env.Data (switch_object ctx p ~optional) in
-    Hashtbl.replace ctx.elab.declared p.p_region o;
+    Source.Table.replace ctx.elab.declared p.p_region o;
     add_routine_name ctx table p.p_name o
   in
   List.iter (function
@@ -1516,7 +1516,8 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
       | None -> ()) body.declarations;
   let lists = body.statements :: List.filter_map Fun.id
                 [ body.backward; Option.map (fun h -> h.handler) body.error; body.undo ] in
-  List.iter (fun (n, at) -> Hashtbl.replace ctx.elab.declared at (Label at); add_routine_name ctx table n (Label at))
+  List.iter (fun (n, at) ->
+      Source.Table.replace ctx.elab.declared at (Label at); add_routine_name ctx table n (Label at))
     (List.rev (List.fold_left all_labels [] lists));
   statements ctx place body.statements;
   Option.iter (statements ctx place) body.backward;
@@ -1708,7 +1709,7 @@ let routine_signature ctx info (r : routine_declaration) =
             | Required_parameter _ -> false) params in
         let routine = { Env.r_name = n; r_kind = kind; r_slots = slots; r_region = name.at;
                         r_level = level; r_local = local; r_open } in
-        Hashtbl.replace ctx.elab.declared name.at (Routine routine);
+        Source.Table.replace ctx.elab.declared name.at (Routine routine);
         register ctx info ~local n (Routine routine);
         Some routine
   in
