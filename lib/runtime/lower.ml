@@ -17,11 +17,11 @@ let concat_long ls = List.rev (List.fold_left (fun acc l -> List.rev_append l ac
 
 type ctx = {
   elab : E.t;
-  routine_index : (Source.region, int) Hashtbl.t;    (* by the region of the routine's name *)
-  global_index : (Source.region, int) Hashtbl.t;     (* by the region of the declared name *)
-  mutable locals : (Source.region, int) Hashtbl.t;   (* of the routine being lowered *)
+  routine_index : int Source.Table.t;    (* by the region of the routine's name *)
+  global_index : int Source.Table.t;     (* by the region of the declared name *)
+  mutable locals : int Source.Table.t;   (* of the routine being lowered *)
   mutable local_count : int;
-  mutable labels : (Source.region, int * int) Hashtbl.t;
+  mutable labels : (int * int) Source.Table.t;
   mutable blocks : int;
   (* For the trace (Ir.names): the routine being lowered (-1: module data), its slots' names,
      the components' names. *)
@@ -29,15 +29,15 @@ type ctx = {
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
   argument_texts : string Source.Table.t;
-  installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
+  installed_index : (int Source.Table.t * int Source.Table.t) option;
       (* the routine and global numbers of the installed part, when it is shared (below) *)
   argument_types : string option array Ir.Argument_types.t;
 }
 
 let index table installed region =
-  match Hashtbl.find_opt table region, installed with
+  match Source.Table.find_opt table region, installed with
   | (Some _ as found), _ | (None as found), None -> found
-  | None, Some t -> Hashtbl.find_opt t region
+  | None, Some t -> Source.Table.find_opt t region
 
 let routine_number ctx region = index ctx.routine_index (Option.map fst ctx.installed_index) region
 let global_number ctx region = index ctx.global_index (Option.map snd ctx.installed_index) region
@@ -52,7 +52,7 @@ let rec name_path (p : Ir.place) =
 
 let slot_of ctx (d : Env.data_object) : Ir.slot option =
   match d.d_level with
-  | Routine_level -> Option.map (fun i -> Ir.Local i) (Hashtbl.find_opt ctx.locals d.d_region)
+  | Routine_level -> Option.map (fun i -> Ir.Local i) (Source.Table.find_opt ctx.locals d.d_region)
   | Module_level _ | Installed_level ->
       Option.map (fun i -> Ir.Global i) (global_number ctx d.d_region)
 
@@ -346,7 +346,7 @@ let rec block ctx (l : A.statement list) : Ir.block =
   let l = List.filter (fun (s : A.statement) -> match s.it with Statement_comment _ -> false | _ -> true) l in
   List.iteri (fun i (s : A.statement) ->
       match s.it with
-      | Label name -> Hashtbl.replace ctx.labels name.at (id, i)
+      | Label name -> Source.Table.replace ctx.labels name.at (id, i)
       | _ -> ()) l;
   { id; body = map_long (statement ctx) l }
 
@@ -395,7 +395,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Goto id -> (
       match Source.Table.find_opt ctx.elab.names id.at with
       | Some (Label at) -> (
-          match Hashtbl.find_opt ctx.labels at with
+          match Source.Table.find_opt ctx.labels at with
           | Some (b, i) -> make (Goto (b, i))
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
@@ -437,7 +437,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | For f ->
       let variable = ctx.local_count in
       ctx.local_count <- ctx.local_count + 1;
-      Hashtbl.replace ctx.locals f.loop_variable.at variable;
+      Source.Table.replace ctx.locals f.loop_variable.at variable;
       Hashtbl.replace ctx.slot_names variable (match f.loop_variable.it with Ident s -> s | ID_placeholder -> "<ID>");
       make (For { variable; from_ = expr ctx ~dnum:false f.from_; to_ = expr ctx ~dnum:false f.to_;
                   step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
@@ -466,10 +466,10 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
   let lower (name : A.identifier) (kind : Ir.routine_kind) (body : A.routine_body) =
     match Source.Table.find_opt ctx.elab.declared name.at with
     | Some (Routine r) ->
-        ctx.locals <- Hashtbl.create 16;
-        ctx.labels <- Hashtbl.create 8;
+        ctx.locals <- Source.Table.create 16;
+        ctx.labels <- Source.Table.create 8;
         let params = parameters_of r in
-        List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
+        List.iteri (fun i (p : Env.parameter) -> Source.Table.replace ctx.locals p.p_region i) params;
         ctx.slot_names <- Hashtbl.create 16;
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.slot_names i p.p_name) params;
         ctx.local_count <- List.length params;
@@ -496,7 +496,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
                 | Some (Data obj) ->
                     let slot = ctx.local_count in
                     ctx.local_count <- slot + 1;
-                    Hashtbl.replace ctx.locals obj.d_region slot;
+                    Source.Table.replace ctx.locals obj.d_region slot;
                     Hashtbl.replace ctx.slot_names slot obj.d_name;
                     Some (slot, initial ctx obj)
                 | _ -> None)
@@ -561,7 +561,7 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
       match Source.Table.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
       match Source.Table.find_opt elab.declared name.at with
-      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region (routine_base + i)
+      | Some (Routine r) -> Source.Table.replace ctx.routine_index r.r_region (routine_base + i)
       | _ -> ()) routine_decls;
   let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
@@ -571,7 +571,7 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
-  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region (global_base + i))
+  List.iteri (fun i (_, (obj : Env.data_object)) -> Source.Table.replace ctx.global_index obj.d_region (global_base + i))
     global_decls;
   ctx.routine_now <- -1;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
@@ -616,8 +616,8 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
     part_error_numbers = error_numbers; part_system = system; part_entry_points = entry_points }
 
 let new_ctx elab =
-  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+  { elab; routine_index = Source.Table.create 256; global_index = Source.Table.create 256;
+    locals = Source.Table.create 16; local_count = 0; labels = Source.Table.create 8; blocks = 0;
     routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
     argument_texts = Source.Table.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
 
@@ -649,7 +649,7 @@ let use_installed_lowering l = installed_cache := Some l
 
 let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
-  let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
+  let ctx = { c with elab; routine_index = Source.Table.create 16; global_index = Source.Table.create 16;
                      component_names = Hashtbl.copy c.component_names;
                      argument_texts = Source.Table.copy c.argument_texts;
                      installed_index = Some (c.routine_index, c.global_index);
