@@ -1019,7 +1019,8 @@ and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
 and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
-  | Some name when String.lowercase_ascii name = "raisetouser" -> raise_to_user st caller ~at ~call_at callee arguments
+  | Some name when Rapid_typing.Types.same_name name "raisetouser" ->
+      raise_to_user st caller ~at ~call_at callee arguments
   | _ when callee.nostepin && not caller.nostepin ->
       user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
   | _ -> call_routine_core st caller ~at ~call_at k arguments
