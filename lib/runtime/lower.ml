@@ -571,7 +571,8 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
-  List.iteri (fun i (_, (obj : Env.data_object)) -> Source.Table.replace ctx.global_index obj.d_region (global_base + i))
+  List.iteri (fun i (_, (obj : Env.data_object)) ->
+      Source.Table.replace ctx.global_index obj.d_region (global_base + i))
     global_decls;
   ctx.routine_now <- -1;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->

@@ -611,7 +611,8 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
   | exception x -> ctx.signal_argument <- outer; raise x
 
 and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
-  let sections = call ^ ",5.2,2.17" in
+  (* the sections an error cites, only when it is reported *)
+  let sections () = call ^ ",5.2,2.17" in
   match p.p_type with
   | None -> ()
   | Some ptype when is_unknown ptype -> loosely_expression ctx place e
@@ -619,13 +620,13 @@ and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.
       match p.p_mode with
       | Mode_in -> (
           match e.it with
-          | Aggregate _ -> check_expression ~sections ctx place e ptype
+          | Aggregate _ -> check_expression ~sections:(sections ()) ctx place e ptype
           | _ ->
               let actual = infer ctx place e in
               if actual = Numeric_literal && is_scalar ptype && ptype.base = Dnum then
                 Source.Table.replace ctx.elab.dnum_literals e.at ();
               if not (compatible ~expected:ptype actual) then
-                error ctx ~rule:"equal-types" ~section:sections arg.at
+                error ctx ~rule:"equal-types" ~section:(sections ()) arg.at
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
                   p.p_name (type_string actual))
       | mode -> (
@@ -661,7 +662,7 @@ and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.
                      (T.to_string t) p.p_name (mode_name mode)
                | _ -> ());
               if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
-                error ctx ~rule:"equal-types" ~section:sections arg.at
+                error ctx ~rule:"equal-types" ~section:(sections ()) arg.at
                   "expected a value of type %s for the parameter %s, found %s"
                   (T.to_string ptype) p.p_name (T.to_string t)
           | Some _ -> ()
@@ -1837,9 +1838,9 @@ let check_installed options installed =
    user objects in the globals), so those are shared; the tables it adds to are copied, and the
    task's elaboration keeps its own nodes apart from the installed modules' ones
    (Elaboration.installed). *)
-let copy_ctx report ctx =
+let copy_ctx ?text report ctx =
   { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
-             elab = Elaboration.create ~installed:ctx.elab ();
+             elab = Elaboration.create ?text ~installed:ctx.elab ();
              early_constants = Hashtbl.copy ctx.early_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
              unknown_reported = Hashtbl.copy ctx.unknown_reported; const_cache = Const_eval.copy_cache ctx.const_cache }
 
@@ -1850,20 +1851,25 @@ let installed_cache : (module_declaration list * options * ctx * module_info lis
 
 (* A check without reports under [allow_unknown = false] met no unknown name, so it is also the
    check under [allow_unknown = true] (which differs only in what it does with unknown names). *)
-let installed_half options installed =
+let installed_half ?text options installed =
   match !installed_cache with
   | Some (l, o, ctx, infos) when l == installed && (o = options || not o.allow_unknown) ->
-      ({ (copy_ctx (Report.create ()) ctx) with options }, infos)
+      ({ (copy_ctx ?text (Report.create ()) ctx) with options }, infos)
   | _ ->
       let ctx, infos = check_installed options installed in
       if Report.all ctx.report = [] then begin
         installed_cache := Some (installed, options, ctx, infos);
-        (copy_ctx (Report.create ()) ctx, infos)
+        (copy_ctx ?text (Report.create ()) ctx, infos)
       end
       else (ctx, infos)
 
+(* The characters the modules' text spans (of their own files): how large the tables grow. *)
+let text_of modules =
+  List.fold_left (fun acc (m : module_declaration) ->
+      acc + max 0 (Source.stop_offset m.module_region - Source.start_offset m.module_region)) 0 modules
+
 let check_task ?(options = default_options) ~installed modules =
-  let ctx, installed_infos = installed_half options installed in
+  let ctx, installed_infos = installed_half ~text:(text_of modules) options installed in
   let report = ctx.report in
   let user = List.map (module_info false) modules in
   let infos = installed_infos @ user in

@@ -39,4 +39,4 @@ type t = {
           the tables hold both. *)
 }
 
-val create : ?installed:t -> unit -> t
+val create : ?text:int -> ?installed:t -> unit -> t
