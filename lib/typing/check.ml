@@ -676,21 +676,22 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
   let bound = ref [] in
   let bind p a = bound := (p, a) :: !bound in
-  let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
+  let has_placeholder = List.exists (fun (a : argument) -> match a.it with ARG_placeholder -> true | _ -> false) args in
   let arg_name (a : argument) =
     match a.it with
     | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
     | Required_argument (Some n, _, _) -> name_of_identifier n
     | Required_argument (None, _, _) | Positional_argument _ | ARG_placeholder -> None
   in
-  let optional_names = List.concat_map (function
+  (* only for an optional or conditional argument *)
+  let optional_names = lazy (List.concat_map (function
       | Env.Optional_slot ps -> List.map (fun (p : Env.parameter) -> p.p_name) ps
-      | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots in
+      | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots) in
   (* An optional or conditional argument that names no optional parameter of the routine. *)
   let unknown_optional (a : argument) =
     match a.it, arg_name a with
     | (Optional_argument _ | Conditional_argument _), Some n ->
-        not (List.exists (fun p -> T.same_name p n) optional_names)
+        not (List.exists (fun p -> T.same_name p n) (Lazy.force optional_names))
     | _ -> false in
   let rec go slots (args : argument list) =
     match slots, args with
@@ -807,16 +808,17 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
             let a = String.lowercase_ascii a and b = String.lowercase_ascii b in
             let rec go i = if i < String.length a && i < String.length b && a.[i] = b.[i] then go (i + 1) else i in
             go 0 in
-          let close = Suggest.closest n optional_names in
+          let close = Suggest.closest n (Lazy.force optional_names) in
           let best = List.fold_left (fun m c -> max m (prefix n c)) 0 close in
           let close = List.filter (fun c -> prefix n c = best) close in
           let hint = match List.map (fun p -> "\\" ^ p) close with
             | [ c ] -> Some (Printf.sprintf "did you mean %s?" c)
             | c :: more -> Some (Printf.sprintf "did you mean %s or %s?" (String.concat ", " more) c)
-            | [] when optional_names = [] -> Some (Printf.sprintf "%s has no optional parameters" routine.r_name)
+            | [] when Lazy.force optional_names = [] ->
+                Some (Printf.sprintf "%s has no optional parameters" routine.r_name)
             | [] ->
                 Some (Printf.sprintf "its optional parameters: %s"
-                        (String.concat ", " (List.map (fun p -> "\\" ^ p) optional_names))) in
+                        (String.concat ", " (List.map (fun p -> "\\" ^ p) (Lazy.force optional_names)))) in
           Report.error ctx.report ?hint ~rule:"argument-name" ~section:call a.at
             (Printf.sprintf "%s has no optional parameter %s" routine.r_name n)
       | _ -> ()) args
