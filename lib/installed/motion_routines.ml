@@ -520,7 +520,7 @@ let move ctx st name args =
       | Some _, _, Some (id, _) ->
           (* RETRY of the move the asynchronous error was raised at: its path is still there
              (StartMove goes on with it); the move is not planned twice. *)
-          until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+          until ~move:(st, (id, key)) ctx ~what:(String.concat "" [ "the robot ("; name; " "; target_label; ")" ])
             (fun () -> P.ready_time st.planner id)
       | Some motion, _, _ -> (
           let wobj = get "WObj" in
@@ -572,7 +572,7 @@ let move ctx st name args =
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
                 push_history st (motion, start, start_ext);
-              until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+              until ~move:(st, (id, key)) ctx ~what:(String.concat "" [ "the robot ("; name; " "; target_label; ")" ])
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
 
