@@ -59,10 +59,12 @@ let next_kept = ref 0
 let kept (callee : Ir.routine) =
   let rec find i =
     if i >= names_kept then begin
+      let names = Array.map (fun (p : Ir.parameter) -> p.p_name) callee.parameters in
+      let bytes = Array.map (fun (p : Ir.parameter) -> Value.shape_bytes p.p_default) callee.parameters in
+      (* the slot's three arrays set with nothing allocated between them: no task's thread
+         sees a slot half made *)
       let j = !next_kept in
-      kept_parameters.(j) <- callee.parameters;
-      kept_names.(j) <- Array.map (fun (p : Ir.parameter) -> p.p_name) callee.parameters;
-      kept_bytes.(j) <- Array.map (fun (p : Ir.parameter) -> Value.shape_bytes p.p_default) callee.parameters;
+      kept_names.(j) <- names; kept_bytes.(j) <- bytes; kept_parameters.(j) <- callee.parameters;
       next_kept := (j + 1) mod names_kept;
       j
     end
