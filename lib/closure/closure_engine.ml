@@ -990,10 +990,6 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
 and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : argument)
   : act -> Argument.t =
   let p = callee.parameters.(i) in
-  let location place kind =
-    let l = locate st caller ~at place and kind = effective_kind caller place kind in
-    fun a -> let box, j = l a in Argument.Location (box, j, kind a)
-  in
   match arg with
   | Absent -> fun _ -> Argument.Missing
   | Present_switch -> fun _ -> Argument.Switch
@@ -1003,7 +999,7 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
         (* §5.2, the execution-error cells of the access table, for an installed routine's
            parameter as for a RAPID one's: an INOUT parameter bound to a persistent passed on
            to a VAR parameter (ITimer's interrupt), or to a variable passed on to a PERS one. *)
-        let l = location place kind and bound = effective_kind caller place kind in
+        let l = primitive_location st caller ~at place kind and bound = effective_kind caller place kind in
         match p.p_mode with
         | Mode_var -> fun a -> if bound a = Ref_persistent then fail st ~at "ERR_ARGNOTVAR" else l a
         | Mode_pers when Late_binding.unresolved place -> l   (* ERR_REFUNKDAT (R-5.2-unknown1) *)
@@ -1016,10 +1012,14 @@ and primitive_argument st (caller : routine) ~at (callee : routine) i (arg : arg
       let present = slot_present caller s in
       let pass =
         if p.p_switch then fun _ -> Argument.Switch
-        else if is_alias p then location (Whole s) Ref_variable
+        else if is_alias p then primitive_location st caller ~at (Whole s) Ref_variable
         else let f = read st caller ~at (Whole s) in fun a -> Argument.Value (f a)
       in
       fun a -> if present a then pass a else Argument.Missing
+
+and primitive_location st caller ~at place kind : act -> Argument.t =
+  let l = locate st caller ~at place and kind = effective_kind caller place kind in
+  fun a -> let box, j = l a in Argument.Location (box, j, kind a)
 
 (* A call of routine [k] with its arguments bound (rules call-arguments, call-enter,
    call-primitive, call-primitive-error, call-primitive-stop, call-not-modelled, call-unknown,
@@ -1034,7 +1034,8 @@ and call st (caller : routine) ~at ~function_call (c : Ir.call) : act -> V.t =
 and call_routine st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive with
-  | Some name when String.lowercase_ascii name = "raisetouser" -> raise_to_user st caller ~at ~call_at callee arguments
+  | Some name when Rapid_typing.Types.same_name name "raisetouser" ->
+      raise_to_user st caller ~at ~call_at callee arguments
   | _ when callee.nostepin && not caller.nostepin ->
       user_level_call st ~at (call_routine_core st caller ~at ~call_at k arguments)
   | _ -> call_routine_core st caller ~at ~call_at k arguments
@@ -1130,13 +1131,11 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       (* The memory budget counts an installed routine's in arguments and absent parameters as
          a RAPID routine's, while its arguments are bound. *)
       (* The bytes at each call; what they are for, only when they do not fit. *)
-      let cost = Array.mapi (fun i arg ->
-          let p = callee.parameters.(i) in
-          match arg with
-          | By_value _ -> fun (v : Argument.t) -> (match v with Argument.Value x -> V.bytes x | _ -> 0)
-          | Absent -> let absent = V.shape_bytes p.p_default in fun _ -> absent
-          | Pass_on _ -> let absent = V.shape_bytes p.p_default in (function Argument.Missing -> absent | _ -> 0)
-          | By_reference _ | Present_switch -> fun _ -> 0) arguments in
+      let absent = Installed_routine.default_bytes callee in
+      let cost i (v : Argument.t) = match Array.unsafe_get arguments i, v with
+        | By_value _, Argument.Value x -> V.bytes x
+        | Absent, _ | Pass_on _, Argument.Missing -> absent.(i)
+        | _ -> 0 in
       let what i (v : Argument.t) =
         let p = callee.parameters.(i) in
         match arguments.(i), v with
@@ -1149,7 +1148,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
       (* Every installed routine finds its arguments by parameter name, and the motion names its
          targets (as the machine's call-primitive). *)
       let site : IR.context = {
-        parameters = Array.map (fun (p : parameter) -> p.p_name) callee.parameters;
+        parameters = Installed_routine.parameter_names callee;
         argument_label = IR.argument_label st.program callee arguments;
         book_error = st.host.book_error;
         error_number = number_of st } in
@@ -1170,7 +1169,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         let values = small_arguments n in
         for i = 0 to n - 1 do
           let v = args.(i) a in
-          let bytes = cost.(i) v in
+          let bytes = cost i v in
           if bytes > st.limits.max_memory - st.memory - !pending then memory_exhausted st (what i v) at;
           pending := !pending + bytes;
           values.(i) <- v
@@ -2555,7 +2554,10 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     next_cycle = false; cooperation } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
   st.compiled <- make_filled (Array.length program.routines) not_compiled;
-  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (compile_routine st k)) program.routines;
+  (* A routine's closures live as long as the run: compiled at the collector's building pace
+     (Build_pace), as Session.load builds the program they come from. *)
+  Array.iteri (fun k _ -> st.compiled.(k) <- lazy (Build_pace.building (fun () -> compile_routine st k)))
+    program.routines;
   st.serve_trap <- serve_trap st;
   st
 

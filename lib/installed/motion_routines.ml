@@ -134,6 +134,13 @@ let emit st e = st.fresh <- e :: st.fresh
 
 let same = Rapid_typing.Types.same_name  (* without lowered copies: every call site asks [modelled] *)
 
+(* The lower-case name of the routine called, kept for the last name (physically, the callee's
+   own string): every move matches on it three times. *)
+let last_name = ref "" and last_lower = ref ""
+let lower name =
+  if name == !last_name then !last_lower
+  else begin let l = String.lowercase_ascii name in last_name := name; last_lower := l; l end
+
 let arg = named_argument
 
 let present = named_present
@@ -479,7 +486,7 @@ let move ctx st name args =
              | P.Circular (c, _) -> Result.to_option (Result.map (fun r -> P.Circular (c, r)) (back ()))
              | P.Joint _ | P.Abs_joint _ | P.External_only -> Some (P.Abs_joint from))
         | _ -> None in
-      let motion = if Option.is_some retraced then retraced else match String.lowercase_ascii name with
+      let motion = if Option.is_some retraced then retraced else match lower name with
         | "moveextj" -> Some P.External_only
         | "movel" | "moveldo" | "triggl" -> Option.map (fun p -> P.Linear (robtarget_of p)) (get "ToPoint")
         | "movej" | "movejdo" | "triggj" -> Option.map (fun p -> P.Joint (robtarget_of p)) (get "ToPoint")
@@ -492,7 +499,7 @@ let move ctx st name args =
       let eax = if Option.is_some retraced then !back_eax
         else if same name "MoveAbsJ" || ext then Option.map eax_of_jointtarget (get "ToJointPos")
         else Option.map eax_of_robtarget (get "ToPoint") in
-      let key = String.lowercase_ascii name ^ " " ^ target_label in
+      let key = lower name ^ " " ^ target_label in
       (* The move an asynchronous error was raised at waits for its RETRY, through the moves of
          the error handler (StorePath ... RestoPath), while its path is there. *)
       let interrupted = match st.interrupted with
@@ -513,7 +520,7 @@ let move ctx st name args =
       | Some _, _, Some (id, _) ->
           (* RETRY of the move the asynchronous error was raised at: its path is still there
              (StartMove goes on with it); the move is not planned twice. *)
-          until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+          until ~move:(st, (id, key)) ctx ~what:(String.concat "" [ "the robot ("; name; " "; target_label; ")" ])
             (fun () -> P.ready_time st.planner id)
       | Some motion, _, _ -> (
           let wobj = get "WObj" in
@@ -551,7 +558,7 @@ let move ctx st name args =
               add_track st { t_id = id; t_label = target_label; started = false; ended = false };
               st.dirty <- true;
               (* MoveLDO, MoveJDO: the output changes where the robot passes the point. *)
-              (match String.lowercase_ascii name with
+              (match lower name with
                | "moveldo" | "movejdo" -> (
                    match arg ctx args "Signal", num ctx args "Value" with
                    | Location (box, i, _), Some v -> (
@@ -565,7 +572,7 @@ let move ctx st name args =
               if conc then st.conc_run <- st.conc_run + 1;
               if not (st.backward || ext) then
                 push_history st (motion, start, start_ext);
-              until ~move:(st, (id, key)) ctx ~what:(Printf.sprintf "the robot (%s %s)" name target_label)
+              until ~move:(st, (id, key)) ctx ~what:(String.concat "" [ "the robot ("; name; " "; target_label; ")" ])
                 (fun () -> P.ready_time st.planner id)))
   | _ -> Failed "ERR_ARGVALERR"
 
@@ -648,7 +655,7 @@ let search ctx st name args =
   let w = ctx.world in
   let get n = value ctx args n in
   (* SearchJ: a joint move; SearchC: a circular one through CirPoint (ABB, RAPID Instructions). *)
-  let path target = match String.lowercase_ascii name with
+  let path target = match lower name with
     | "searchj" -> Some (P.Joint (robtarget_of target))
     | "searchc" -> Option.map (fun c -> P.Circular (robtarget_of c, robtarget_of target)) (get "CirPoint")
     | _ -> Some (P.Linear (robtarget_of target)) in
@@ -808,7 +815,7 @@ let call_unguarded (ctx : context) st name args =
   let settings = P.settings st.planner in
   let get n = value ctx args n in
   let wobj_data = function Some v -> wobj_of v | None -> D.wobj0 in
-  let lname = String.lowercase_ascii name in
+  let lname = lower name in
   match lname with
   | "movel" | "movej" | "movec" | "moveabsj" | "moveldo" | "movejdo" -> Some (move ctx st name args)
   | "triggl" | "triggj" | "triggc" -> Some (move ctx st name args)  (* for Trigg_routines: the move itself *)

@@ -40,13 +40,39 @@ type outcome =
 
 (* The argument of the parameter of this name (letter case aside, §2.3): installed routines
    whose behaviour lives outside this module find their arguments by name. *)
+(* A move asks for a dozen arguments by name, each a literal of this library: the index found
+   is kept by the parameters' array and the name, both physically (an engine gives one array per
+   routine), so the next move finds it without comparing names. A miss only computes it again. *)
+let index_slots = 128
+let slot_parameters : string array array = Array.make index_slots [||]
+let slot_names = Array.make index_slots ""
+let slot_index = Array.make index_slots (-1)
+
+(* Two ways: a name is kept in its slot or the next one, the newer in its own. *)
+let parameter_index (parameters : string array) name =
+  let n = String.length name in
+  let code i = Char.code (String.unsafe_get name i) in
+  let h = if n = 0 then 0
+    else (n * 31 + 5 * code 0 + 3 * code (n - 1) + 17 * code (n / 2)) land (index_slots - 1) in
+  let h' = (h + 1) land (index_slots - 1) in
+  if Array.unsafe_get slot_parameters h == parameters && Array.unsafe_get slot_names h == name then
+    Array.unsafe_get slot_index h
+  else if Array.unsafe_get slot_parameters h' == parameters && Array.unsafe_get slot_names h' == name then
+    Array.unsafe_get slot_index h'
+  else begin
+    let rec find i =
+      if i >= Array.length parameters then -1
+      else if Rapid_typing.Types.same_name parameters.(i) name then i
+      else find (i + 1) in
+    let i = find 0 in
+    slot_parameters.(h') <- slot_parameters.(h); slot_names.(h') <- slot_names.(h); slot_index.(h') <- slot_index.(h);
+    slot_parameters.(h) <- parameters; slot_names.(h) <- name; slot_index.(h) <- i;
+    i
+  end
+
 let named_argument (ctx : context) args name =
-  (* Without lowered copies: a move asks for a dozen arguments by name. *)
-  let rec find i =
-    if i >= Array.length ctx.parameters || i >= Array.length args then Missing
-    else if Rapid_typing.Types.same_name ctx.parameters.(i) name then args.(i)
-    else find (i + 1) in
-  find 0
+  let i = parameter_index ctx.parameters name in
+  if i < 0 || i >= Array.length args then Missing else args.(i)
 
 let named_present ctx args name = match named_argument ctx args name with Missing -> false | _ -> true
 

@@ -63,9 +63,14 @@ type t = {
   world : W.t;
   motion : Motion_routines.state;
   entries : (string, IR.entry option) Hashtbl.t;  (* by lower-case name *)
+  (* The last names asked, physically (an engine asks by the routine's own name, at every call
+     site it compiles): their entries without a lower-case copy and a hash. *)
+  last_names : string array;
+  last_entries : IR.entry option array;
 }
 
-let create world motion = { world; motion; entries = Hashtbl.create 64 }
+let create world motion =
+  { world; motion; entries = Hashtbl.create 64; last_names = Array.make 4 ""; last_entries = Array.make 4 None }
 
 let claimants world name = List.filter (fun b -> b.claims world name) bodies
 
@@ -150,7 +155,7 @@ let make t name claimants : IR.entry =
     | _ -> None, None in
   { name; reach; condition; call; values; fixed }
 
-let find t name =
+let find_key t name =
   let key = String.lowercase_ascii name in
   match Hashtbl.find_opt t.entries key with
   | Some e -> e
@@ -160,3 +165,17 @@ let find t name =
         | cs -> Some (make t name cs) in
       Hashtbl.replace t.entries key e;
       e
+
+let find t name =
+  let names = t.last_names in
+  if names.(0) == name then t.last_entries.(0)
+  else if names.(1) == name then t.last_entries.(1)
+  else if names.(2) == name then t.last_entries.(2)
+  else if names.(3) == name then t.last_entries.(3)
+  else begin
+    let e = find_key t name in
+    (* an entry once made is the table's for good: the newest first, the oldest dropped *)
+    Array.blit names 0 names 1 3; Array.blit t.last_entries 0 t.last_entries 1 3;
+    names.(0) <- name; t.last_entries.(0) <- e;
+    e
+  end

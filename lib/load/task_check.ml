@@ -15,7 +15,7 @@ type task = {
 (* The type as R-14-c compares it: the name written, and the evaluated sizes of an array (the
    judgement evaluated the dimensions, so a constant and a literal of one value agree). *)
 let type_text (t : task) (decl_name : Ast.identifier) type_name =
-  match Hashtbl.find_opt t.elaboration.declared decl_name.at with
+  match Source.Table.find_opt t.elaboration.declared decl_name.at with
   | Some (Env.Data { d_type = { dims = Types.Sized sizes; _ }; _ }) ->
       type_name ^ "{" ^ String.concat ", " (List.map string_of_int sizes) ^ "}"
   | _ -> type_name

@@ -84,6 +84,14 @@ type entry = {
 val returned : Value.t option -> outcome
 (** A call that returned, with no event and no move. *)
 
+val parameter_names : Ir.routine -> string array
+(** The names of the routine's parameters, in order: the same array for the same routine (of
+    the last few asked), which {!context.parameters} should be. *)
+
+val default_bytes : Ir.routine -> int array
+(** [Value.shape_bytes] of each parameter's default, in order (an absent argument's bytes in
+    the memory budget); the same array for the same routine, as {!parameter_names}. *)
+
 val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
 (** The data object the argument of a call gives for a parameter (by the parameter's name), for
     the motion's output ([p10], [z10]), the expression as written for another one

@@ -201,7 +201,7 @@ type program = {
 and names = {
   local_names : string array array;          (* per routine: the name of each local slot *)
   component_names : (name_key, string) Hashtbl.t;
-  argument_texts : (region, string) Hashtbl.t;
+  argument_texts : string Source.Table.t;
       (* an in argument that is no data name (Offs(p, 0, 0, 50), a local's name), as written, by
          the region of its expression: what the motion's output names a programmed point by *)
 }

@@ -17,27 +17,27 @@ let concat_long ls = List.rev (List.fold_left (fun acc l -> List.rev_append l ac
 
 type ctx = {
   elab : E.t;
-  routine_index : (Source.region, int) Hashtbl.t;    (* by the region of the routine's name *)
-  global_index : (Source.region, int) Hashtbl.t;     (* by the region of the declared name *)
-  mutable locals : (Source.region, int) Hashtbl.t;   (* of the routine being lowered *)
+  routine_index : int Source.Table.t;    (* by the region of the routine's name *)
+  global_index : int Source.Table.t;     (* by the region of the declared name *)
+  mutable locals : int Source.Table.t;   (* of the routine being lowered *)
   mutable local_count : int;
-  mutable labels : (Source.region, int * int) Hashtbl.t;
+  mutable labels : (int * int) Source.Table.t;
   mutable blocks : int;
   (* For the trace (Ir.names): the routine being lowered (-1: module data), its slots' names,
      the components' names. *)
   mutable routine_now : int;
   mutable slot_names : (int, string) Hashtbl.t;
   component_names : (Ir.name_key, string) Hashtbl.t;
-  argument_texts : (Source.region, string) Hashtbl.t;
-  installed_index : ((Source.region, int) Hashtbl.t * (Source.region, int) Hashtbl.t) option;
+  argument_texts : string Source.Table.t;
+  installed_index : (int Source.Table.t * int Source.Table.t) option;
       (* the routine and global numbers of the installed part, when it is shared (below) *)
   argument_types : string option array Ir.Argument_types.t;
 }
 
 let index table installed region =
-  match Hashtbl.find_opt table region, installed with
+  match Source.Table.find_opt table region, installed with
   | (Some _ as found), _ | (None as found), None -> found
-  | None, Some t -> Hashtbl.find_opt t region
+  | None, Some t -> Source.Table.find_opt t region
 
 let routine_number ctx region = index ctx.routine_index (Option.map fst ctx.installed_index) region
 let global_number ctx region = index ctx.global_index (Option.map snd ctx.installed_index) region
@@ -52,7 +52,7 @@ let rec name_path (p : Ir.place) =
 
 let slot_of ctx (d : Env.data_object) : Ir.slot option =
   match d.d_level with
-  | Routine_level -> Option.map (fun i -> Ir.Local i) (Hashtbl.find_opt ctx.locals d.d_region)
+  | Routine_level -> Option.map (fun i -> Ir.Local i) (Source.Table.find_opt ctx.locals d.d_region)
   | Module_level _ | Installed_level ->
       Option.map (fun i -> Ir.Global i) (global_number ctx d.d_region)
 
@@ -109,7 +109,7 @@ let rec place ctx (r : A.data_reference) : Ir.place =
   | Element (name, indexes) ->
       Element (entire ctx name, Array.of_list (List.map (expr ctx ~dnum:false) indexes))
   | Component (inner, comp) -> (
-      match Hashtbl.find_opt ctx.elab.components comp.at with
+      match Source.Table.find_opt ctx.elab.components comp.at with
       | Some k ->
           let p = Ir.Component (place ctx inner, k) in
           (match name_path p with
@@ -120,12 +120,12 @@ let rec place ctx (r : A.data_reference) : Ir.place =
       | None -> Unresolved comp.it)
 
 and entire ctx (name : A.name) : Ir.place =
-  match Hashtbl.find_opt ctx.elab.names name.at with
+  match Source.Table.find_opt ctx.elab.names name.at with
   | Some (Data d) -> (match slot_of ctx d with Some s -> Whole s | None -> Unresolved name.it)
   | _ -> Unresolved name.it
 
 and expr ctx ~dnum (e : A.expression) : Ir.expr =
-  let dnum = dnum || Hashtbl.mem ctx.elab.dnum_literals e.at in
+  let dnum = dnum || Source.Table.mem ctx.elab.dnum_literals e.at in
   let make d = { Ir.e = d; at = e.at } in
   match e.it with
   | Num_literal text when small_integer text ->
@@ -141,18 +141,18 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
   | Data_reference r ->
       let r = A.reference e r in
       let semi_value =
-        match r.it, Option.bind (root_at r) (Hashtbl.find_opt ctx.elab.names) with
+        match r.it, Option.bind (root_at r) (Source.Table.find_opt ctx.elab.names) with
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
   | Function_call f -> make (Call (call ctx e.at f.func))
   | Aggregate (es, rs) ->
-      let kind = match Hashtbl.find_opt ctx.elab.aggregates e.at with
+      let kind = match Source.Table.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
       make (Aggregate (Array.map (expr ctx ~dnum) (A.members es rs), kind))
   | Unary (op, a, a_at) -> (
       let a = A.operand a a_at in
-      match Hashtbl.find_opt ctx.elab.unary e.at with
+      match Source.Table.find_opt ctx.elab.unary e.at with
       | Some row ->
           let operand = if dnum then Tables.O_dnum else row.operand in
           make (Unary (unary_op op operand, expr ctx ~dnum:(operand = O_dnum) a))
@@ -163,7 +163,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
       make (Binary ((if op = Equal then Arith.Equal else Arith.Not_equal),
                     expr ctx ~dnum:false a, expr ctx ~dnum:false b))
   | Binary (op, a, b) -> (
-      match Hashtbl.find_opt ctx.elab.binary e.at with
+      match Source.Table.find_opt ctx.elab.binary e.at with
       | Some row ->
           let left = if dnum && row.left = O_num then Tables.O_dnum else row.left in
           let right = if dnum && row.right = O_num then Tables.O_dnum else row.right in
@@ -203,7 +203,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
-  match Hashtbl.find_opt ctx.elab.names name.at, Hashtbl.find_opt ctx.elab.bindings at with
+  match Source.Table.find_opt ctx.elab.names name.at, Source.Table.find_opt ctx.elab.bindings at with
   | Some (Routine r), Some binding -> (
       match routine_number ctx r.r_region with
       | None -> unknown ()
@@ -245,7 +245,7 @@ and argument_type ctx (a : A.argument) =
   | _ -> None
 
 and reference_type ctx (r : A.data_reference) : Types.object_type option =
-  let declared (n : Source.region) = match Hashtbl.find_opt ctx.elab.names n with
+  let declared (n : Source.region) = match Source.Table.find_opt ctx.elab.names n with
     | Some (Data d) -> Some d.d_type
     | _ -> None in
   match r.it with
@@ -253,7 +253,7 @@ and reference_type ctx (r : A.data_reference) : Types.object_type option =
   | Entire _ -> declared r.at
   | Element (n, _) -> Option.map (fun (t : Types.object_type) -> Types.scalar t.base) (declared n.at)
   | Component (inner, comp) -> (
-      match reference_type ctx inner, Hashtbl.find_opt ctx.elab.components comp.at with
+      match reference_type ctx inner, Source.Table.find_opt ctx.elab.components comp.at with
       | Some { base = Record rt; _ }, Some k ->
           Option.map (fun (_, t) -> Types.scalar t) (List.nth_opt rt.components k)
       | _ -> None)
@@ -275,7 +275,7 @@ and parameter_array (r : Env.routine) =
 and read_only ctx (e : A.expression) =
   match e.it with
   | Data_reference r -> (
-      match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
+      match Option.bind (root_at (A.reference e r)) (Source.Table.find_opt ctx.elab.names) with
       | Some (Data { d_kind = Loop_variable | Read_only_variable; _ }) -> true
       | _ -> false)
   | _ -> false
@@ -283,7 +283,7 @@ and read_only ctx (e : A.expression) =
 and reference_kind ctx (e : A.expression) : Ir.reference_kind =
   match e.it with
   | Data_reference r ->
-      (match Option.bind (root_at (A.reference e r)) (Hashtbl.find_opt ctx.elab.names) with
+      (match Option.bind (root_at (A.reference e r)) (Source.Table.find_opt ctx.elab.names) with
        | Some (Data { d_kind = Variable | Parameter _ | Loop_variable | Read_only_variable; _ }) -> Ref_variable
        | Some (Data { d_kind = Persistent; _ }) -> Ref_persistent
        | Some (Data { d_kind = Constant; _ }) -> Ref_constant
@@ -293,7 +293,7 @@ and reference_kind ctx (e : A.expression) : Ir.reference_kind =
 and optional_parameter_slot ctx (e : A.expression) =
   match e.it with
   | Data_reference (Entire _) -> (
-      match Hashtbl.find_opt ctx.elab.names e.at with
+      match Source.Table.find_opt ctx.elab.names e.at with
       | Some (Data ({ d_optional = true; _ } as d)) -> slot_of ctx d
       | _ -> None)
   | _ -> None
@@ -305,7 +305,7 @@ and written ctx (source : A.expression) (e : Ir.expr) =
    | _ ->
        let text = Printer.expression source in
        let text = if String.length text > 48 then String.sub text 0 45 ^ "..." else text in
-       Hashtbl.replace ctx.argument_texts e.at text);
+       Source.Table.replace ctx.argument_texts e.at text);
   e
 
 and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
@@ -346,7 +346,7 @@ let rec block ctx (l : A.statement list) : Ir.block =
   let l = List.filter (fun (s : A.statement) -> match s.it with Statement_comment _ -> false | _ -> true) l in
   List.iteri (fun i (s : A.statement) ->
       match s.it with
-      | Label name -> Hashtbl.replace ctx.labels name.at (id, i)
+      | Label name -> Source.Table.replace ctx.labels name.at (id, i)
       | _ -> ()) l;
   { id; body = map_long (statement ctx) l }
 
@@ -367,7 +367,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         (* §4.6, §5.2: the type the checker found, compared with the parameter's when the call
            runs; a numeric literal expression is lowered both ways (R-2.5-b). *)
         let typed (e : A.expression) : Ir.late_type =
-          match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+          match Source.Table.find_opt ctx.elab.late_arguments a.at with
           | Some (Some t) -> Late_typed t
           | Some None -> Late_numeric (expr ctx ~dnum:true e)
           | None -> Late_untyped in
@@ -383,7 +383,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
         | Optional_argument (n, Some e) -> { (value (name n) e) with late_optional = true }
         | Conditional_argument (n, r) ->
             let slot = match place ctx r with Whole s -> Some s | _ -> None in
-            let late_type = match Hashtbl.find_opt ctx.elab.late_arguments a.at with
+            let late_type = match Source.Table.find_opt ctx.elab.late_arguments a.at with
               | Some (Some t) -> Ir.Late_typed t | _ -> Late_untyped in
             { late_name = name n; late_value = Late_conditional slot; late_kind = Ref_variable; late_type;
               late_read_only = false; late_optional = true }
@@ -393,9 +393,9 @@ and statement ctx (s : A.statement) : Ir.stmt =
       in
       make (Call_late (expr ctx ~dnum:false e, Array.map late args))
   | Goto id -> (
-      match Hashtbl.find_opt ctx.elab.names id.at with
+      match Source.Table.find_opt ctx.elab.names id.at with
       | Some (Label at) -> (
-          match Hashtbl.find_opt ctx.labels at with
+          match Source.Table.find_opt ctx.labels at with
           | Some (b, i) -> make (Goto (b, i))
           | None -> make Placeholder_statement)
       | _ -> make Placeholder_statement)
@@ -407,7 +407,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Retry -> make Retry
   | Trynext -> make Trynext
   | Connect (target, trap) -> (
-      match Hashtbl.find_opt ctx.elab.names trap.at with
+      match Source.Table.find_opt ctx.elab.names trap.at with
       | Some (Routine r) -> (
           match routine_number ctx r.r_region with
           | Some i -> make (Connect (place ctx target, i))
@@ -437,7 +437,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | For f ->
       let variable = ctx.local_count in
       ctx.local_count <- ctx.local_count + 1;
-      Hashtbl.replace ctx.locals f.loop_variable.at variable;
+      Source.Table.replace ctx.locals f.loop_variable.at variable;
       Hashtbl.replace ctx.slot_names variable (match f.loop_variable.it with Ident s -> s | ID_placeholder -> "<ID>");
       make (For { variable; from_ = expr ctx ~dnum:false f.from_; to_ = expr ctx ~dnum:false f.to_;
                   step = Option.map (expr ctx ~dnum:false) f.step; loop_body = block ctx f.body })
@@ -464,12 +464,12 @@ let initial ctx (d : Env.data_object) : Ir.init =
 
 let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.routine option =
   let lower (name : A.identifier) (kind : Ir.routine_kind) (body : A.routine_body) =
-    match Hashtbl.find_opt ctx.elab.declared name.at with
+    match Source.Table.find_opt ctx.elab.declared name.at with
     | Some (Routine r) ->
-        ctx.locals <- Hashtbl.create 16;
-        ctx.labels <- Hashtbl.create 8;
+        ctx.locals <- Source.Table.create 16;
+        ctx.labels <- Source.Table.create 8;
         let params = parameters_of r in
-        List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.locals p.p_region i) params;
+        List.iteri (fun i (p : Env.parameter) -> Source.Table.replace ctx.locals p.p_region i) params;
         ctx.slot_names <- Hashtbl.create 16;
         List.iteri (fun i (p : Env.parameter) -> Hashtbl.replace ctx.slot_names i p.p_name) params;
         ctx.local_count <- List.length params;
@@ -492,11 +492,11 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
         let inits = List.filter_map (fun (d : A.data_declaration) ->
             match d.it with
             | Data_declaration { name; _ } -> (
-                match Hashtbl.find_opt ctx.elab.declared name.at with
+                match Source.Table.find_opt ctx.elab.declared name.at with
                 | Some (Data obj) ->
                     let slot = ctx.local_count in
                     ctx.local_count <- slot + 1;
-                    Hashtbl.replace ctx.locals obj.d_region slot;
+                    Source.Table.replace ctx.locals obj.d_region slot;
                     Hashtbl.replace ctx.slot_names slot obj.d_name;
                     Some (slot, initial ctx obj)
                 | _ -> None)
@@ -514,7 +514,7 @@ let routine ctx ~module_name ~installed (decl : A.routine_declaration) : Ir.rout
                 | Error_number_name nm ->
                     if String.uppercase_ascii nm.it = "LONG_JMP_ALL_ERR" then (all_errors := true; None)
                     else (
-                      match Hashtbl.find_opt ctx.elab.names nm.at with
+                      match Source.Table.find_opt ctx.elab.names nm.at with
                       | Some (Data d) -> Option.map (fun s -> Ir.Object s) (slot_of ctx d)
                       | _ -> None))) h.error_numbers in
             { Ir.recovery; all_errors = !all_errors; handler = block ctx h.handler }) body.error in
@@ -558,20 +558,21 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
           | Trap_declaration { name; _ } -> Some (m, inst, r, name)
           | Routine_comment _ | RDN_placeholder -> None) m.routine_declarations) all) in
   let routine_decls = List.filter (fun (_, _, _, (name : A.identifier)) ->
-      match Hashtbl.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
+      match Source.Table.find_opt elab.declared name.at with Some (Routine _) -> true | _ -> false) routine_decls in
   List.iteri (fun i (_, _, _, (name : A.identifier)) ->
-      match Hashtbl.find_opt elab.declared name.at with
-      | Some (Routine r) -> Hashtbl.replace ctx.routine_index r.r_region (routine_base + i)
+      match Source.Table.find_opt elab.declared name.at with
+      | Some (Routine r) -> Source.Table.replace ctx.routine_index r.r_region (routine_base + i)
       | _ -> ()) routine_decls;
   let global_decls = concat_long (list_long (fun ((m : A.module_declaration), _) ->
       List.filter_map (fun (d : A.data_declaration) ->
           match d.it with
           | Data_declaration { name; _ } -> (
-              match Hashtbl.find_opt elab.declared name.at with
+              match Source.Table.find_opt elab.declared name.at with
               | Some (Data obj) -> Some (m, obj)
               | _ -> None)
           | Declaration_comment _ | DDN_placeholder -> None) m.data_declarations) all) in
-  List.iteri (fun i (_, (obj : Env.data_object)) -> Hashtbl.replace ctx.global_index obj.d_region (global_base + i))
+  List.iteri (fun i (_, (obj : Env.data_object)) ->
+      Source.Table.replace ctx.global_index obj.d_region (global_base + i))
     global_decls;
   ctx.routine_now <- -1;
   let globals = map_long (fun (m, (obj : Env.data_object)) ->
@@ -616,10 +617,10 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
     part_error_numbers = error_numbers; part_system = system; part_entry_points = entry_points }
 
 let new_ctx elab =
-  { elab; routine_index = Hashtbl.create 256; global_index = Hashtbl.create 256;
-    locals = Hashtbl.create 16; local_count = 0; labels = Hashtbl.create 8; blocks = 0;
+  { elab; routine_index = Source.Table.create 256; global_index = Source.Table.create 256;
+    locals = Source.Table.create 16; local_count = 0; labels = Source.Table.create 8; blocks = 0;
     routine_now = -1; slot_names = Hashtbl.create 16; component_names = Hashtbl.create 64;
-    argument_texts = Hashtbl.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
+    argument_texts = Source.Table.create 64; installed_index = None; argument_types = Ir.Argument_types.create 4 }
 
 (* The installed modules' part is the same for every task (its names are bound by the installed
    level alone, and it comes first), so it is lowered once and shared when the checker shares
@@ -649,9 +650,9 @@ let use_installed_lowering l = installed_cache := Some l
 
 let program ~installed ~modules (elab : E.t) : Ir.program =
   let inst, c = installed_part ~installed elab in
-  let ctx = { c with elab; routine_index = Hashtbl.create 16; global_index = Hashtbl.create 16;
+  let ctx = { c with elab; routine_index = Source.Table.create 16; global_index = Source.Table.create 16;
                      component_names = Hashtbl.copy c.component_names;
-                     argument_texts = Hashtbl.copy c.argument_texts;
+                     argument_texts = Source.Table.copy c.argument_texts;
                      installed_index = Some (c.routine_index, c.global_index);
                      argument_types = Ir.Argument_types.create 16 } in
   let user = lower_part ctx ~routine_base:(Array.length inst.part_routines)

@@ -103,7 +103,7 @@ let flush_world cfg events =
   | seen -> List.iter (fun o -> events := Controller o :: !events) seen
 
 let call_context cfg (cs : call_state) : Installed_routine.context = {
-  parameters = Array.map (fun (p : Ir.parameter) -> p.p_name) cs.callee.parameters;
+  parameters = Installed_routine.parameter_names cs.callee;
   argument_label = Installed_routine.argument_label cfg.program cs.callee cs.call.arguments;
   book_error = cfg.host.book_error;
   error_number = (fun name -> error_number cfg name);

@@ -42,6 +42,18 @@ let register ~name ~line_starts =
 let name f = f.name
 let no_region = 0
 
+(* The elaboration's and the lowering's tables are keyed by region, a hundred look-ups a
+   statement: an integer's hash and equality without the runtime's generic ones. The file is
+   in the low bits, the same for every region of a file: the start (and the length) are mixed
+   down into the bits a table's index takes. *)
+module Table = Hashtbl.Make (struct
+    type t = region
+    let equal (a : int) b = a = b
+    let hash r =
+      let s = r lsr file_bits in
+      (s lxor (s lsr 25) lxor ((r land max_files) lsl 15)) land max_int
+  end)
+
 (* The table of files as one value, for an environment computed at build time (its regions name
    its files' ids) and restored at start-up before any other file is registered. *)
 type registry = { r_files : file option array; r_count : int; r_kept : int }

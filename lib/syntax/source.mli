@@ -14,6 +14,11 @@ type pos = { line : int; col : int }
 type region
 (** A stretch of one file, from its first character up to (not including) its [stop]. *)
 
+module Table : Hashtbl.S with type key = region
+(** Tables keyed by region (the elaboration's, the lowering's): the same operations as
+    [Hashtbl]'s, with an integer's hash and equality. *)
+
+
 val register : name:string -> line_starts:int array -> file
 (** [register ~name ~line_starts] records a file whose line [i+1] starts at character offset
     [line_starts.(i)]; [line_starts.(0)] is [0]. Ids are reused after 1023 files (927 while

@@ -21,7 +21,8 @@ let type_of modules =
     | Error _ -> []
     | Ok installed ->
         let result = Rapid_typing.Check.check_task ~installed modules in
-        Hashtbl.fold (fun _ o acc -> match o with E.Data d -> d :: acc | _ -> acc) result.elaboration.declared [] in
+        Rapid_syntax.Source.Table.fold (fun _ o acc -> match o with E.Data d -> d :: acc | _ -> acc)
+          result.elaboration.declared [] in
   (* Routine data, parameters and loop variables by the routine whose text holds them. *)
   let routines = List.concat_map (fun (m : Ast.module_declaration) ->
       List.filter_map (fun (r : Ast.routine_declaration) ->

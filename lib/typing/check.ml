@@ -279,7 +279,7 @@ let rec reference ctx place (r : data_reference) : reference =
       let name = { it = spelling; at = r.at } in
       match Env.lookup place.scope name.it with
       | Some (Data d as o) ->
-          Hashtbl.replace ctx.elab.names name.at o;
+          Source.Table.replace ctx.elab.names name.at o;
           { object_ = Some d; rtype = (if is_unknown d.d_type then Unknown else Known d.d_type) }
       | Some o ->
           error ctx ~rule:"data-object-name"
@@ -321,7 +321,7 @@ let rec reference ctx place (r : data_reference) : reference =
           | Some t ->
               let rec index i = function
                 | [] -> i | (n, _) :: rest -> if T.same_name n comp.it then i else index (i + 1) rest in
-              Hashtbl.replace ctx.elab.components comp.at (index 0 rt.components);
+              Source.Table.replace ctx.elab.components comp.at (index 0 rt.components);
               { whole with rtype = Known (T.scalar t) }
           | None ->
               error ctx ~rule:"component-name" ~section:"3.6,2.14" comp.at
@@ -387,7 +387,7 @@ and unary ctx place e op a =
       match List.find_opt (fun (row : Tables.unary_row) -> row.unary = op && row.operand = operand)
               Tables.unary_operators with
       | Some row ->
-          Hashtbl.replace ctx.elab.unary e.at row;
+          Source.Table.replace ctx.elab.unary e.at row;
           if ta = Numeric_literal then Numeric_literal else type_of_operand ctx row.unary_result
       | None -> unary_error ctx e op ta)
   | _, None -> unary_error ctx e op ta
@@ -418,7 +418,7 @@ and binary ctx place e op a b =
             match List.find_opt (fun (row : Tables.binary_row) -> row.op = op && row.left = la && row.right = lb)
                     Tables.binary_operators with
             | Some row ->
-                Hashtbl.replace ctx.elab.binary e.at row;
+                Source.Table.replace ctx.elab.binary e.at row;
                 integer_operands ctx place e row a b;
                 if ta = Numeric_literal && tb = Numeric_literal && row.result = O_num then Numeric_literal
                 else type_of_operand ctx row.result
@@ -450,7 +450,7 @@ and aggregate_operand ctx place e op a b =
           match type_of_operand ctx mine with
           | Known t ->
               check_expression ~sections:"3.12" ctx place agg t;
-              Hashtbl.replace ctx.elab.binary e.at row;
+              Source.Table.replace ctx.elab.binary e.at row;
               type_of_operand ctx row.result
           | Numeric_literal | Unknown -> Unknown)
       | _ ->
@@ -510,7 +510,7 @@ and equality ctx place e op a b =
        | Numeric_literal, Numeric_literal -> ()
        | Numeric_literal, Known t | Known t, Numeric_literal ->
            if is_scalar t && t.base = Dnum then
-             Hashtbl.replace ctx.elab.dnum_literals (if ta = Numeric_literal then a.at else b.at) ();
+             Source.Table.replace ctx.elab.dnum_literals (if ta = Numeric_literal then a.at else b.at) ();
            if not (compatible ~expected:t Numeric_literal) then
              error ctx ~rule:"equality-types" ~section:"3.12" e.at
                "the operator %s needs operands of equal types, not %s and %s"
@@ -536,14 +536,14 @@ and check_expression ?(sections = "2.17") ctx place (e : expression) (expected :
     when is_scalar expected && expected.base = Dnum -> (
       (* A literal operand takes dnum from the context: 2 * d, d + 1. *)
       match infer ctx place e with
-      | Numeric_literal -> ignore op; ignore a; ignore b; Hashtbl.replace ctx.elab.dnum_literals e.at ()
+      | Numeric_literal -> ignore op; ignore a; ignore b; Source.Table.replace ctx.elab.dnum_literals e.at ()
       | t -> mismatch ~sections ctx e expected t)
   | _ -> mismatch ~sections ctx e expected (infer ctx place e)
 
 and mismatch ~sections ctx (e : expression) expected actual =
   if actual = Numeric_literal && is_scalar expected
      && (expected.base = Dnum || T.associated_value_type expected.base = Some Dnum) then
-    Hashtbl.replace ctx.elab.dnum_literals e.at ();
+    Source.Table.replace ctx.elab.dnum_literals e.at ();
   if not (compatible ~expected actual) then
     error ctx ~rule:"equal-types" ~section:sections e.at "expected a value of type %s, found %s"
       (T.to_string expected) (type_string actual)
@@ -560,8 +560,8 @@ and aggregate ~sections ctx place e members expected =
     | Sized [] | Scalar -> Scalar
   in
   (match expected.dims, expected.base with
-   | (Sized (_ :: _) | Conformant _), _ -> Hashtbl.replace ctx.elab.aggregates e.at `Array
-   | Scalar, Record _ -> Hashtbl.replace ctx.elab.aggregates e.at `Record
+   | (Sized (_ :: _) | Conformant _), _ -> Source.Table.replace ctx.elab.aggregates e.at `Array
+   | Scalar, Record _ -> Source.Table.replace ctx.elab.aggregates e.at `Record
    | _ -> ());
   match expected.dims, expected.base with
   | (Sized (n :: _)), base ->
@@ -616,7 +616,8 @@ and argument ~call ctx place (arg : argument) (e : expression) (p : Env.paramete
   | exception x -> ctx.signal_argument <- outer; raise x
 
 and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.parameter) =
-  let sections = call ^ ",5.2,2.17" in
+  (* the sections an error cites, only when it is reported *)
+  let sections () = call ^ ",5.2,2.17" in
   match p.p_type with
   | None -> ()
   | Some ptype when is_unknown ptype -> loosely_expression ctx place e
@@ -624,13 +625,13 @@ and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.
       match p.p_mode with
       | Mode_in -> (
           match e.it with
-          | Aggregate _ -> check_expression ~sections ctx place e ptype
+          | Aggregate _ -> check_expression ~sections:(sections ()) ctx place e ptype
           | _ ->
               let actual = infer ctx place e in
               if actual = Numeric_literal && is_scalar ptype && ptype.base = Dnum then
-                Hashtbl.replace ctx.elab.dnum_literals e.at ();
+                Source.Table.replace ctx.elab.dnum_literals e.at ();
               if not (compatible ~expected:ptype actual) then
-                error ctx ~rule:"equal-types" ~section:sections arg.at
+                error ctx ~rule:"equal-types" ~section:(sections ()) arg.at
                   "expected a value of type %s for the parameter %s, found %s" (T.to_string ptype)
                   p.p_name (type_string actual))
       | mode -> (
@@ -666,7 +667,7 @@ and argument_checked ~call ctx place (arg : argument) (e : expression) (p : Env.
                      (T.to_string t) p.p_name (mode_name mode)
                | _ -> ());
               if ptype.base <> T.Anytype && not (T.equal_types ~value_context:false ptype t) then
-                error ctx ~rule:"equal-types" ~section:sections arg.at
+                error ctx ~rule:"equal-types" ~section:(sections ()) arg.at
                   "expected a value of type %s for the parameter %s, found %s"
                   (T.to_string ptype) p.p_name (T.to_string t)
           | Some _ -> ()
@@ -680,21 +681,22 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
   let call = match routine.r_kind with Procedure -> "4.6" | Function _ | Trap -> "3.11" in
   let bound = ref [] in
   let bind p a = bound := (p, a) :: !bound in
-  let has_placeholder = List.exists (fun (a : argument) -> a.it = ARG_placeholder) args in
+  let has_placeholder = List.exists (fun (a : argument) -> match a.it with ARG_placeholder -> true | _ -> false) args in
   let arg_name (a : argument) =
     match a.it with
     | Optional_argument (n, _) | Conditional_argument (n, _) -> name_of_identifier n
     | Required_argument (Some n, _, _) -> name_of_identifier n
     | Required_argument (None, _, _) | Positional_argument _ | ARG_placeholder -> None
   in
-  let optional_names = List.concat_map (function
+  (* only for an optional or conditional argument *)
+  let optional_names = lazy (List.concat_map (function
       | Env.Optional_slot ps -> List.map (fun (p : Env.parameter) -> p.p_name) ps
-      | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots in
+      | Env.Required_slot _ | Env.Required_choice _ -> []) routine.r_slots) in
   (* An optional or conditional argument that names no optional parameter of the routine. *)
   let unknown_optional (a : argument) =
     match a.it, arg_name a with
     | (Optional_argument _ | Conditional_argument _), Some n ->
-        not (List.exists (fun p -> T.same_name p n) optional_names)
+        not (List.exists (fun p -> T.same_name p n) (Lazy.force optional_names))
     | _ -> false in
   let rec go slots (args : argument list) =
     match slots, args with
@@ -798,7 +800,7 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
     go slots rest
   and choice_names ps = String.concat " or " (List.map (fun (p : Env.parameter) -> p.p_name) ps) in
   go routine.r_slots args;
-  Hashtbl.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
+  Source.Table.replace ctx.elab.bindings call_region { Elaboration.callee = routine; bound = List.rev !bound };
   (* Optional or conditional arguments that match no parameter. *)
   List.iter (fun (a : argument) ->
       match a.it, arg_name a with
@@ -811,16 +813,17 @@ and arguments ctx place (call_region : Source.region) (routine : Env.routine) (a
             let a = String.lowercase_ascii a and b = String.lowercase_ascii b in
             let rec go i = if i < String.length a && i < String.length b && a.[i] = b.[i] then go (i + 1) else i in
             go 0 in
-          let close = Suggest.closest n optional_names in
+          let close = Suggest.closest n (Lazy.force optional_names) in
           let best = List.fold_left (fun m c -> max m (prefix n c)) 0 close in
           let close = List.filter (fun c -> prefix n c = best) close in
           let hint = match List.map (fun p -> "\\" ^ p) close with
             | [ c ] -> Some (Printf.sprintf "did you mean %s?" c)
             | c :: more -> Some (Printf.sprintf "did you mean %s or %s?" (String.concat ", " more) c)
-            | [] when optional_names = [] -> Some (Printf.sprintf "%s has no optional parameters" routine.r_name)
+            | [] when Lazy.force optional_names = [] ->
+                Some (Printf.sprintf "%s has no optional parameters" routine.r_name)
             | [] ->
                 Some (Printf.sprintf "its optional parameters: %s"
-                        (String.concat ", " (List.map (fun p -> "\\" ^ p) optional_names))) in
+                        (String.concat ", " (List.map (fun p -> "\\" ^ p) (Lazy.force optional_names)))) in
           Report.error ctx.report ?hint ~rule:"argument-name" ~section:call a.at
             (Printf.sprintf "%s has no optional parameter %s" routine.r_name n)
       | _ -> ()) args
@@ -900,7 +903,7 @@ and function_call ctx place region (call : function_call) : ty =
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Function result; _ } as r) as o) ->
-          Hashtbl.replace ctx.elab.names call.func.at o;
+          Source.Table.replace ctx.elab.names call.func.at o;
           arguments ctx place region r (call_arguments call);
           if is_unknown result then Unknown else Known result
       | Some (Routine _) ->
@@ -924,8 +927,8 @@ and loose_arguments ctx place (args : argument array) =
    parameters' when the call runs (ERR_CALLPROC); recorded by the argument's region. *)
 and late_arguments ctx place (args : argument array) =
   let record (a : argument) = function
-    | Known t -> Hashtbl.replace ctx.elab.late_arguments a.at (Some t)
-    | Numeric_literal -> Hashtbl.replace ctx.elab.late_arguments a.at None
+    | Known t -> Source.Table.replace ctx.elab.late_arguments a.at (Some t)
+    | Numeric_literal -> Source.Table.replace ctx.elab.late_arguments a.at None
     | Unknown -> () in
   Array.iter (fun (a : argument) ->
       match a.it, argument_value a with
@@ -1106,7 +1109,7 @@ and procedure_call ctx place (s : statement) (id : identifier) args =
   | Ident name -> (
       match Env.lookup place.scope name with
       | Some (Routine ({ r_kind = Procedure; _ } as r) as o) ->
-          Hashtbl.replace ctx.elab.names id.at o;
+          Source.Table.replace ctx.elab.names id.at o;
           User_level_check.raise_to_user ~report:ctx.report ~in_error_handler:place.in_error_handler
             ~in_nostepin:place.in_nostepin ~installed:(r.r_level = Env.Installed_level) ~at:s.at name args;
           arguments ctx place s.at r args
@@ -1133,7 +1136,7 @@ and goto ctx place (id : identifier) =
   | Some name ->
       let visible = List.exists (function Some t -> Hashtbl.mem t (key name) | None -> false) place.labels in
       (match Env.lookup place.scope name with
-       | Some (Label _ as o) -> Hashtbl.replace ctx.elab.names id.at o
+       | Some (Label _ as o) -> Source.Table.replace ctx.elab.names id.at o
        | _ -> ());
       if not visible then
         match Env.lookup place.scope name with
@@ -1194,7 +1197,7 @@ and connect ctx place (target : data_reference) (trap : identifier) =
   | ID_placeholder -> ()
   | Ident name -> (
       match Env.lookup place.scope name with
-      | Some (Routine { r_kind = Trap; _ } as o) -> Hashtbl.replace ctx.elab.names trap.at o
+      | Some (Routine { r_kind = Trap; _ } as o) -> Source.Table.replace ctx.elab.names trap.at o
       | Some o ->
           error ctx ~rule:"connect-trap" ~section:"4.15" trap.at "%s is a %s, not a trap" name
             (Env.obj_kind_name o)
@@ -1211,7 +1214,7 @@ and for_ ctx place (f : for_statement) =
    | Ident name ->
        let o = Env.Data { d_name = name; d_type = T.scalar Num; d_kind = Loop_variable; d_region = f.loop_variable.at;
                           d_level = Routine_level; d_scope = Global; d_optional = false; d_initial = None } in
-       Hashtbl.replace ctx.elab.declared f.loop_variable.at o;
+       Source.Table.replace ctx.elab.declared f.loop_variable.at o;
        Env.add loop_scope name o
    | ID_placeholder -> ());
   let scope = { place.scope with routine = loop_scope :: place.scope.routine } in
@@ -1358,7 +1361,7 @@ let data_declaration ?(later = fun f -> f ()) ctx place ~in_routine ~(level : En
           let o = Env.Data { d_name = n; d_type; d_region = name.at; d_level = level; d_scope = scope;
                              d_optional = false; d_initial;
                              d_kind = (match storage with Var -> Variable | Pers -> Persistent | Const -> Constant) } in
-          Hashtbl.replace ctx.elab.declared name.at o;
+          Source.Table.replace ctx.elab.declared name.at o;
           Some (n, o))
 
 (* ------------------------------------------------------------------ parameters and routines *)
@@ -1492,7 +1495,7 @@ let recovery_error_number ctx place (n : recovery_error_number) =
   | Error_number_name name -> (
       match Env.lookup place.scope name.it with
       | Some (Data { d_type = { base = Num; dims = Scalar }; d_kind = Constant | Variable | Persistent; _ } as o) ->
-          Hashtbl.replace ctx.elab.names name.at o
+          Source.Table.replace ctx.elab.names name.at o
       | Some (Data _) ->
           error ctx ~rule:"error-number-list" ~section:"7.2" n.at
             "an error number of an ERROR list is a num literal or an entire constant, variable or \
@@ -1506,7 +1509,7 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
   let table = Env.create_table () in
   let parameter (p : Env.parameter) ~optional =
     let o = Env.Data (switch_object ctx p ~optional) in
-    Hashtbl.replace ctx.elab.declared p.p_region o;
+    Source.Table.replace ctx.elab.declared p.p_region o;
     add_routine_name ctx table p.p_name o
   in
   List.iter (function
@@ -1521,7 +1524,8 @@ let routine_body ctx (module_place : place) (routine : Env.routine) (body : rout
       | None -> ()) body.declarations;
   let lists = body.statements :: List.filter_map Fun.id
                 [ body.backward; Option.map (fun h -> h.handler) body.error; body.undo ] in
-  List.iter (fun (n, at) -> Hashtbl.replace ctx.elab.declared at (Label at); add_routine_name ctx table n (Label at))
+  List.iter (fun (n, at) ->
+      Source.Table.replace ctx.elab.declared at (Label at); add_routine_name ctx table n (Label at))
     (List.rev (List.fold_left all_labels [] lists));
   statements ctx place body.statements;
   Option.iter (statements ctx place) body.backward;
@@ -1713,7 +1717,7 @@ let routine_signature ctx info (r : routine_declaration) =
             | Required_parameter _ -> false) params in
         let routine = { Env.r_name = n; r_kind = kind; r_slots = slots; r_region = name.at;
                         r_level = level; r_local = local; r_open } in
-        Hashtbl.replace ctx.elab.declared name.at (Routine routine);
+        Source.Table.replace ctx.elab.declared name.at (Routine routine);
         register ctx info ~local n (Routine routine);
         Some routine
   in
@@ -1846,14 +1850,14 @@ let check_installed options installed =
    user objects in the globals), so those are shared; the tables it adds to are copied, and the
    task's elaboration keeps its own nodes apart from the installed modules' ones
    (Elaboration.installed). *)
-let copy_ctx report ctx =
+let copy_ctx ?text report ctx =
   (* the installed half's constants shared rather than copied for every task: 1 % of a fuzzing
      campaign *)
   let early_constants, installed_constants =
     if ctx.installed_constants == no_constants then (Hashtbl.create 64, ctx.early_constants)
     else (Hashtbl.copy ctx.early_constants, ctx.installed_constants) in
   { ctx with report; globals = Env.copy_table ctx.globals; module_names = Env.copy_table ctx.module_names;
-             elab = Elaboration.create ~installed:ctx.elab ();
+             elab = Elaboration.create ?text ~installed:ctx.elab ();
              early_constants; installed_constants; unknown_uses = Hashtbl.copy ctx.unknown_uses;
              unknown_reported = Hashtbl.copy ctx.unknown_reported; const_cache = Const_eval.copy_cache ctx.const_cache }
 
@@ -1864,20 +1868,25 @@ let installed_cache : (module_declaration list * options * ctx * module_info lis
 
 (* A check without reports under [allow_unknown = false] met no unknown name, so it is also the
    check under [allow_unknown = true] (which differs only in what it does with unknown names). *)
-let installed_half options installed =
+let installed_half ?text options installed =
   match !installed_cache with
   | Some (l, o, ctx, infos) when l == installed && (o = options || not o.allow_unknown) ->
-      ({ (copy_ctx (Report.create ()) ctx) with options }, infos)
+      ({ (copy_ctx ?text (Report.create ()) ctx) with options }, infos)
   | _ ->
       let ctx, infos = check_installed options installed in
       if Report.all ctx.report = [] then begin
         installed_cache := Some (installed, options, ctx, infos);
-        (copy_ctx (Report.create ()) ctx, infos)
+        (copy_ctx ?text (Report.create ()) ctx, infos)
       end
       else (ctx, infos)
 
+(* The characters the modules' text spans (of their own files): how large the tables grow. *)
+let text_of modules =
+  List.fold_left (fun acc (m : module_declaration) ->
+      acc + max 0 (Source.stop_offset m.module_region - Source.start_offset m.module_region)) 0 modules
+
 let check_task ?(options = default_options) ~installed modules =
-  let ctx, installed_infos = installed_half options installed in
+  let ctx, installed_infos = installed_half ~text:(text_of modules) options installed in
   let report = ctx.report in
   let user = List.map (module_info false) modules in
   let infos = installed_infos @ user in

@@ -11,23 +11,23 @@ type binding = {
 }
 
 type t = {
-  names : (Source.region, Env.obj) Hashtbl.t;
+  names : Env.obj Source.Table.t;
       (** an occurrence of a name (data object, routine, label) → what it denotes *)
-  declared : (Source.region, Env.obj) Hashtbl.t;
+  declared : Env.obj Source.Table.t;
       (** the name of a declaration (data, parameter, loop variable, routine) → its object *)
-  components : (Source.region, int) Hashtbl.t;
+  components : int Source.Table.t;
       (** a component name in a reference → its index in the record type *)
-  binary : (Source.region, Tables.binary_row) Hashtbl.t;
-  unary : (Source.region, Tables.unary_row) Hashtbl.t;
-  dnum_literals : (Source.region, unit) Hashtbl.t;
+  binary : Tables.binary_row Source.Table.t;
+  unary : Tables.unary_row Source.Table.t;
+  dnum_literals : unit Source.Table.t;
       (** a numeric-literal expression (literals and operators on them only) the context takes
           as dnum (§2.5, doc/rulings.md R-2.5-b) *)
-  bindings : (Source.region, binding) Hashtbl.t;
+  bindings : binding Source.Table.t;
       (** a call, by the region of the call (the function call expression, or the procedure
           call statement) → its arguments' binding (§3.11, §4.6) *)
-  aggregates : (Source.region, [ `Record | `Array ]) Hashtbl.t;
+  aggregates : [ `Record | `Array ] Source.Table.t;
       (** an aggregate → the kind of value its context gives it (§3.10) *)
-  late_arguments : (Source.region, Types.object_type option) Hashtbl.t;
+  late_arguments : Types.object_type option Source.Table.t;
       (** an argument of a late-bound procedure call (§4.6), by the argument's region → its
           type ([None]: a numeric literal expression, num or dnum as its parameter wants); not
           there: no type (an aggregate, an unknown name). The binding checks it when the call
@@ -39,4 +39,4 @@ type t = {
           the tables hold both. *)
 }
 
-val create : ?installed:t -> unit -> t
+val create : ?text:int -> ?installed:t -> unit -> t

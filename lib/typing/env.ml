@@ -85,7 +85,9 @@ let rec has_upper name i =
 let key name = if has_upper name 0 then String.lowercase_ascii name else name
 let create_table () = Hashtbl.create 64
 let find t name = Hashtbl.find_opt t (key name)
-let add t name o = Hashtbl.replace t (key name) o
+(* Every change to a table is counted: a look-up kept (below) holds only while none was made. *)
+let generation = ref 0
+let add t name o = incr generation; Hashtbl.replace t (key name) o
 let copy_table t = Hashtbl.copy t
 let iter f t = Hashtbl.iter f t
 
@@ -98,7 +100,7 @@ type scope = {
   in_installed_module : bool;
 }
 
-let lookup scope name =
+let lookup_tables scope name =
   (* the key made once for every table probed *)
   let name = key name in
   let find t name = Hashtbl.find_opt t name in
@@ -119,6 +121,28 @@ let lookup scope name =
               match (if scope.in_installed_module then None else find scope.module_names name) with
               | Some o -> Some o
               | None -> find scope.installed name)))
+
+(* The checker asks for the same names in the same scope again and again (a call's routine and
+   arguments, at each of its steps; the parser gives one string per spelling): the answers
+   are kept by scope and name, both physically, while no table changed. *)
+let memo_slots = 64
+let no_scope = { installed = create_table (); globals = create_table (); module_objects = create_table ();
+                 module_names = create_table (); routine = []; in_installed_module = false }
+let memo_scopes = Array.make memo_slots no_scope
+let memo_names = Array.make memo_slots ""
+let memo_generations = Array.make memo_slots (-1)
+let memo_results : obj option array = Array.make memo_slots None
+
+let lookup scope name =
+  let n = String.length name in
+  let code i = Char.code (String.unsafe_get name i) in
+  let h = if n = 0 then 0 else (n * 31 + 5 * code 0 + 3 * code (n - 1) + 17 * code (n / 2)) land (memo_slots - 1) in
+  if memo_scopes.(h) == scope && memo_names.(h) == name && memo_generations.(h) = !generation then memo_results.(h)
+  else begin
+    let r = lookup_tables scope name in
+    memo_scopes.(h) <- scope; memo_names.(h) <- name; memo_generations.(h) <- !generation; memo_results.(h) <- r;
+    r
+  end
 
 (* Data types are looked up past data objects and routines of the same name: a parameter may
    share its name with a type (installed routines do: TPWrite's \Num, PoseInv's Pose). *)

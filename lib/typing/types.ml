@@ -45,14 +45,17 @@ let to_string { base; dims } =
    resolution of type definitions checks for cycles), so these walks terminate. Each record's
    class is computed once and kept with the component list it was computed from (records that
    share component types would otherwise be walked once per path, exponentially many). *)
-let class_cache : (int, (string * data_type) list * value_class) Hashtbl.t = Hashtbl.create 64
+(* By record id: an integer's hash and equality, a dozen look-ups a statement. *)
+module By_id = Hashtbl.Make (struct type t = int let equal (a : int) b = a = b let hash (x : int) = x land max_int end)
+
+let class_cache : ((string * data_type) list * value_class) By_id.t = By_id.create 64
 
 let rec value_class = function
   | Num | Dnum | Bool | String -> Value
   | Installed_atomic a -> a.atomic_class
   | Anytype -> Value
   | Record r -> (
-      match Hashtbl.find_opt class_cache r.record_id with
+      match By_id.find_opt class_cache r.record_id with
       | Some (components, cls) when components == r.components -> cls
       | _ ->
           let classes = List.map (fun (_, t) -> value_class t) r.components in
@@ -61,23 +64,23 @@ let rec value_class = function
             else if List.mem Semi_value classes then Semi_value
             else Value
           in
-          Hashtbl.replace class_cache r.record_id (r.components, cls);
+          By_id.replace class_cache r.record_id (r.components, cls);
           cls)
 
 (* Saturating arithmetic: sizes beyond [max_int] are all "too large". *)
 let saturating_add a b = if a > max_int - b then max_int else a + b
 let saturating_mul a b = if a <> 0 && b > max_int / a then max_int else a * b
 
-let size_cache : (int, (string * data_type) list * int) Hashtbl.t = Hashtbl.create 64
+let size_cache : ((string * data_type) list * int) By_id.t = By_id.create 64
 
 let rec data_type_size = function
   | Num | Dnum | Bool | String | Installed_atomic _ | Anytype -> 1
   | Record r -> (
-      match Hashtbl.find_opt size_cache r.record_id with
+      match By_id.find_opt size_cache r.record_id with
       | Some (components, n) when components == r.components -> n
       | _ ->
           let n = List.fold_left (fun acc (_, t) -> saturating_add acc (data_type_size t)) 0 r.components in
-          Hashtbl.replace size_cache r.record_id (r.components, n);
+          By_id.replace size_cache r.record_id (r.components, n);
           n)
 
 let value_size { base; dims } =

@@ -9,7 +9,7 @@ let named (args : Ast.argument array) =
       | _ -> None)
 
 let raise_to_user ~report ~in_error_handler ~in_nostepin ~installed ~at name args =
-  if installed && String.lowercase_ascii name = "raisetouser" then begin
+  if installed && Types.same_name name "raisetouser" then begin
     (* §7.3: RaiseToUser hands an error of a NOSTEPIN routine's handler to the user level;
        elsewhere there is no error in hand, or no level below the user's (R-7.3-n). *)
     if not in_error_handler then
