@@ -109,7 +109,9 @@ type state = {
   mutable native : int;               (* the nests of the active routines *)
   native_budget : int;
   mutable next_interrupt : int;
-  numbers : (string, int) Hashtbl.t;  (* ERR_ names, upper case *)
+  numbers : (string, int) Hashtbl.t Lazy.t;
+      (* ERR_ names, upper case: built when an error is first raised by name (a sixtieth of
+         an empty run's start otherwise) *)
   mutable compiled : compiled Lazy.t array;
   mutable memory : int;               (* bytes of RAPID data: module data and activations *)
   stub_unmodelled : bool;             (* --stub-unmodelled: unmodelled routines are no-ops *)
@@ -140,7 +142,7 @@ type state = {
 (* ------------------------------------------------------------------ errors *)
 
 let number_of st name =
-  match Hashtbl.find_opt st.numbers (String.uppercase_ascii name) with
+  match Hashtbl.find_opt (Lazy.force st.numbers) (String.uppercase_ascii name) with
   | Some n -> n
   | None -> ( match int_of_string_opt name with Some n -> n | None -> 0)
 
@@ -2535,7 +2537,7 @@ let make_filled n x =
 
 let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmodelled = false) ?(observe = false)
     ?cooperation ~all_events ~emit ~(host : Host.t) (program : program) =
-  let numbers = error_number_table program.error_numbers in
+  let numbers = lazy (error_number_table program.error_numbers) in
   let st = {
     program; globals = Array.make (Array.length program.globals) (V.Bool false); limits; emit; all_events;
     observe = observe && all_events;
