@@ -276,9 +276,12 @@ let parse ~file text =
               raise (Bad (ln, (match rest with [] -> nc | _ -> fst (List.nth rest (List.length rest - 1))),
                           Printf.sprintf "axis %d: expected 7 numbers (a alpha d offset min max speed), found %d"
                             k (List.length rest)));
-            let v = List.map2 (fun f w -> number ln w (Printf.sprintf "axis %d %s" k f)) fields rest in
+            (* the texts for errors by concatenation: Printf for each of the default robot's 42 numbers
+               was a tenth of an empty run's start *)
+            let axis_k = "axis " ^ string_of_int k in
+            let v = List.map2 (fun f w -> number ln w (axis_k ^ " " ^ f)) fields rest in
             let get i = List.nth v i and word i = List.nth rest i in
-            let what i = Printf.sprintf "axis %d %s" k (List.nth fields i) in
+            let what i = axis_k ^ " " ^ List.nth fields i in
             let len i = length ln (word i) (what i) (get i) in
             let turn i = within ln (word i) (what i) ~low:(-. max_turn) ~high:max_turn ~unit:"degrees" (get i); get i in
             let limit i =
@@ -291,7 +294,7 @@ let parse ~file text =
               raise (Bad (ln, fst (List.nth rest 4),
                           Printf.sprintf "axis %d: range min %g is not below max %g" k ax.min ax.max));
             let ax = { ax with speed = speed ln (word 6) (what 6) ~unit:"degrees/s"
-                                   ~positive:(Printf.sprintf "axis %d: speed must be positive" k) ax.speed } in
+                                   ~positive:(axis_k ^ ": speed must be positive") ax.speed } in
             axes.(k - 1) <- Some ax;
             axis_line.(k - 1) <- ln
         | (_, "external") :: rest -> externals := !externals @ [ external_axis ln !externals rest ]
