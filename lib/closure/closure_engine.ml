@@ -456,6 +456,14 @@ let index_float st ~at x n =
   let k = int_of_float x in
   if float_of_int k = x && k >= 1 && k <= n then k - 1 else index st ~at (V.Num x) n [@@inline]
 
+(* [index] of [j + k] (an own slot's num p and a literal q): an integer sum within the bounds
+   and of at most 24 bits is a single as it is, so the element's; any other goes through the
+   general expression, which rounds the sum to single first (R-2.13-a). *)
+let index_sum st ~at general (a : 'a) p q n =
+  let x = p +. q in
+  let k = int_of_float x in
+  if float_of_int k = x && k >= 1 && k <= n && k <= 16777216 then k - 1 else index st ~at (general a) n [@@inline]
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole (r : routine) = function
   | Global _ -> true
@@ -541,7 +549,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                  let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
-                  | V.Num p when is_small_integer (p +. q) -> elements.(index_float st ~at (p +. q) n)
+                  | V.Num p -> elements.(index_sum st ~at general a p q n)
                   | _ -> elements.(index st ~at (general a) n))
            | _ ->
                let j = Option.get (index_at st r ~at ix) in
@@ -610,9 +618,7 @@ and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
       let q = if op = Arith.Num_sub then -. q else q in
       Some (fun a n ->
           match a.store.(i) with
-          | V.Num p ->
-              let x = p +. q in
-              if is_small_integer x then index_float st ~at x n else index st ~at (general a) n
+          | V.Num p -> index_sum st ~at general a p q n
           | _ -> index st ~at (general a) n)
   | _ -> None
 
@@ -2071,7 +2077,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                  let elements = parts globals.(g) in
                  let n = Array.length elements in
                  let j = match a.store.(i) with
-                   | V.Num p when is_small_integer (p +. q) -> index_float st ~at (p +. q) n
+                   | V.Num p -> index_sum st ~at general a p q n
                    | _ -> index st ~at (general a) n in
                  let v = value a in
                  (match elements.(j) with
