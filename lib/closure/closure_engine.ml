@@ -693,6 +693,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       match c.callee with
       | Routine k when st.program.routines.(k).primitive = None
                        && st.program.routines.(k).kind = Function -> f  (* a RAPID function gives a value *)
+      | Routine k when values_entry st st.program.routines.(k) c.arguments <> None -> f  (* and a computing one *)
       | _ -> fun a -> let v = f a in if v == no_value then V.type_mismatch "a function without value" else v)
   | Placeholder -> fun _ -> fail st ~at "ERR_EXECPHR"
   | Fitted (x, shape) ->
@@ -1124,17 +1125,22 @@ and raise_to_user st (caller : routine) ~at ~call_at (callee : routine) argument
         raise (Halt (Outcome.Stopped { name = "ERR_ILLRAISE"; number = number_of st "ERR_ILLRAISE"; at = call_at;
                                  chain = chain_of a; about = Some "RaiseToUser" }))
 
+(* The entry of an installed function that only computes, when its call is made on the
+   arguments' values ([values_call]): its answer is a value, never [no_value]. *)
+and values_entry st (callee : routine) (arguments : argument array) =
+  match callee.primitive with
+  | Some name when Array.for_all (function By_value _ -> true | _ -> false) arguments
+                   && Array.for_all (fun p -> not (is_alias p)) callee.parameters -> (
+      match st.host.routine name with
+      | Some ({ IR.values = Some _; reach = Values; _ } as entry) -> Some entry
+      | _ -> None)
+  | _ -> None
+
 and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
-  let by_values = Array.for_all (function By_value _ -> true | _ -> false) arguments
-                  && Array.for_all (fun p -> not (is_alias p)) callee.parameters in
-  match callee.primitive with
-  | Some name when by_values && (match st.host.routine name with
-      | Some { IR.values = Some _; reach = Values; _ } -> true | _ -> false) ->
-      (match st.host.routine name with
-       | Some { IR.values = Some f; fixed; _ } -> values_call st caller ~at callee f fixed arguments
-       | _ -> assert false)
-  | Some name ->
+  match callee.primitive, values_entry st callee arguments with
+  | Some _, Some { IR.values = Some f; fixed; _ } -> values_call st caller ~at callee f fixed arguments
+  | Some name, _ ->
       let args = Array.mapi (primitive_argument st caller ~at callee) arguments in
       (* The memory budget counts an installed routine's in arguments and absent parameters as
          a RAPID routine's, while its arguments are bound. *)
@@ -1203,9 +1209,9 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           stores ()
         end;
         primitive_outcome st caller a ~at ~call_at ~condition callee name o.result
-  | None when Closure_call.direct callee arguments <> None ->
+  | None, _ when Closure_call.direct callee arguments <> None ->
       direct_call st caller ~at ~r_index:k callee (Option.get (Closure_call.direct callee arguments))
-  | None ->
+  | None, _ ->
       let binders = Array.mapi (binder st caller ~at callee arguments) arguments in
       let n = Array.length binders in
       let shape = activation_shape callee in
