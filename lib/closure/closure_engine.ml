@@ -288,13 +288,16 @@ let tick st =
 
 let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
-(* [binary]'s num result, for the fused forms below: rounded to single (R-2.13-a), an integer
+(* [binary]'s num result, for the fused forms below: rounded to single_num st ~at (R-2.13-a), an integer
    of at most 24 bits as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
 let single_num st ~at x =
   if is_small_integer x then V.Num x
   else
     let y = Int32.float_of_bits (Int32.bits_of_float x) in
     if Float.is_finite y then V.Num y else fail st ~at "ERR_OVERFLOW" [@@inline]
+
+(* [binary]'s dnum result: the double as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
+let double_num st ~at x = if Float.is_finite x then V.Dnum x else fail st ~at "ERR_OVERFLOW" [@@inline]
 
 (* [condition]'s comparison of two nums (§3.12). *)
 let compare_nums (op : Arith.binary) (p : float) (q : float) =
@@ -652,15 +655,13 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
     when local_access r i = Own ->
       (* x +- k on an own dnum slot, read without a call (as [binary]'s dnum rows) *)
       let slow u = check st ~at (Arith.binary op u v) in
-      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
-      if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u)
-      else fun a -> (match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u)
+      if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> double_num st ~at (p +. q) | u -> slow u)
+      else fun a -> (match a.store.(i) with V.Dnum p -> double_num st ~at (p -. q) | u -> slow u)
   | Binary ((Num_add | Num_sub | Num_mul | Dnum_add | Dnum_sub | Dnum_mul) as op,
             { e = Read (Whole (Local i)); _ }, { e = Read (Whole (Local j)); _ })
     when local_access r i = Own && local_access r j = Own ->
       (* two own slots (s + i): read without a call each, as [binary]'s rows compute them *)
       let slow u v = check st ~at (Arith.binary op u v) in
-      let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
       (match op with
        | Num_add -> fun a -> (match a.store.(i), a.store.(j) with
            | V.Num p, V.Num q -> single_num st ~at (p +. q) | u, v -> slow u v)
@@ -669,11 +670,11 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
        | Num_mul -> fun a -> (match a.store.(i), a.store.(j) with
            | V.Num p, V.Num q -> single_num st ~at (p *. q) | u, v -> slow u v)
        | Dnum_add -> fun a -> (match a.store.(i), a.store.(j) with
-           | V.Dnum p, V.Dnum q -> dnum (p +. q) | u, v -> slow u v)
+           | V.Dnum p, V.Dnum q -> double_num st ~at (p +. q) | u, v -> slow u v)
        | Dnum_sub -> fun a -> (match a.store.(i), a.store.(j) with
-           | V.Dnum p, V.Dnum q -> dnum (p -. q) | u, v -> slow u v)
+           | V.Dnum p, V.Dnum q -> double_num st ~at (p -. q) | u, v -> slow u v)
        | _ -> fun a -> (match a.store.(i), a.store.(j) with
-           | V.Dnum p, V.Dnum q -> dnum (p *. q) | u, v -> slow u v))
+           | V.Dnum p, V.Dnum q -> double_num st ~at (p *. q) | u, v -> slow u v))
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -709,20 +710,16 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
    The left operand is evaluated before the right (§3.1). *)
 and binary st ~at (op : Arith.binary) x y : act -> V.t =
   let slow u v = check st ~at (Arith.binary op u v) in
-  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
-  let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
-  (* An integer of at most 24 bits is a single already, and finite. *)
-  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op with
   | Num_add -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> single (p +. q) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single_num st ~at (p +. q) | _ -> slow u v)
   | Num_sub -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> single (p -. q) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single_num st ~at (p -. q) | _ -> slow u v)
   | Num_mul -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Num p, V.Num q -> single (p *. q) | _ -> slow u v)
+      (match u, v with V.Num p, V.Num q -> single_num st ~at (p *. q) | _ -> slow u v)
   | Num_div -> fun a -> let u = x a in let v = y a in
       (match u, v with
-       | V.Num p, V.Num q when q <> 0. -> single (p /. q)
+       | V.Num p, V.Num q when q <> 0. -> single_num st ~at (p /. q)
        | _ -> slow u v)
   | Num_lt -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Num p, V.Num q -> if p < q then v_true else v_false | _ -> slow u v)
@@ -739,13 +736,13 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
   (* The rows on two dnums: Arith's rule (one operation in double precision; an infinite result
      is ERR_OVERFLOW, R-3.12-c; division by zero ERR_DIVZERO) without building a result. *)
   | Dnum_add -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Dnum p, V.Dnum q -> dnum (p +. q) | _ -> slow u v)
+      (match u, v with V.Dnum p, V.Dnum q -> double_num st ~at (p +. q) | _ -> slow u v)
   | Dnum_sub -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Dnum p, V.Dnum q -> dnum (p -. q) | _ -> slow u v)
+      (match u, v with V.Dnum p, V.Dnum q -> double_num st ~at (p -. q) | _ -> slow u v)
   | Dnum_mul -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Dnum p, V.Dnum q -> dnum (p *. q) | _ -> slow u v)
+      (match u, v with V.Dnum p, V.Dnum q -> double_num st ~at (p *. q) | _ -> slow u v)
   | Dnum_div -> fun a -> let u = x a in let v = y a in
-      (match u, v with V.Dnum p, V.Dnum q when q <> 0. -> dnum (p /. q) | _ -> slow u v)
+      (match u, v with V.Dnum p, V.Dnum q when q <> 0. -> double_num st ~at (p /. q) | _ -> slow u v)
   | Dnum_lt -> fun a -> let u = x a in let v = y a in
       (match u, v with V.Dnum p, V.Dnum q -> if p < q then v_true else v_false | _ -> slow u v)
   | Dnum_le -> fun a -> let u = x a in let v = y a in
@@ -766,18 +763,15 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
 (* The same with a num literal on the right, which then costs no call. *)
 and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
   let slow u = check st ~at (Arith.binary op u v) in
-  let num r = if Float.is_finite r then V.Num r else fail st ~at "ERR_OVERFLOW" [@@inline] in
-  (* An integer of at most 24 bits is a single already, and finite. *)
-  let single x = if is_small_integer x then V.Num x else num (Int32.float_of_bits (Int32.bits_of_float x)) [@@inline] in
   match op, own with
   (* An own slot on the left is read without a call. *)
-  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p +. q) | u -> slow u)
-  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> single (p -. q) | u -> slow u)
+  | Num_add, Some i -> fun a -> (match a.store.(i) with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
+  | Num_sub, Some i -> fun a -> (match a.store.(i) with V.Num p -> single_num st ~at (p -. q) | u -> slow u)
   | _ ->
   match op with
-  | Num_add -> fun a -> (match x a with V.Num p -> single (p +. q) | u -> slow u)
-  | Num_sub -> fun a -> (match x a with V.Num p -> single (p -. q) | u -> slow u)
-  | Num_mul -> fun a -> (match x a with V.Num p -> single (p *. q) | u -> slow u)
+  | Num_add -> fun a -> (match x a with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
+  | Num_sub -> fun a -> (match x a with V.Num p -> single_num st ~at (p -. q) | u -> slow u)
+  | Num_mul -> fun a -> (match x a with V.Num p -> single_num st ~at (p *. q) | u -> slow u)
   | _ -> binary st ~at op x (fun _ -> v)
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -1976,7 +1970,6 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c), stored in place *)
           let op, y = match e.e with Binary (op, _, y) -> (op, y) | _ -> assert false in
           let slow u v = check st ~at (Arith.binary op u v) in
-          let dnum r = if Float.is_finite r then V.Dnum r else fail st ~at "ERR_OVERFLOW" [@@inline] in
           (match op, y.e with
            | (Num_add | Num_sub), Literal (V.Num q as k) ->
                let q = if op = Arith.Num_sub then -. q else q in
@@ -1984,9 +1977,13 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                  (a.store.(i) <- match a.store.(i) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k);
                  true
            | Dnum_add, Literal (V.Dnum q as k) ->
-               fun a -> (a.store.(i) <- match a.store.(i) with V.Dnum p -> dnum (p +. q) | u -> slow u k); true
+               fun a ->
+                 (a.store.(i) <- match a.store.(i) with V.Dnum p -> double_num st ~at (p +. q) | u -> slow u k);
+                 true
            | Dnum_sub, Literal (V.Dnum q as k) ->
-               fun a -> (a.store.(i) <- match a.store.(i) with V.Dnum p -> dnum (p -. q) | u -> slow u k); true
+               fun a ->
+                 (a.store.(i) <- match a.store.(i) with V.Dnum p -> double_num st ~at (p -. q) | u -> slow u k);
+                 true
            | (Num_add | Num_sub), _ ->
                let y = expr st r ~at y and sub = op = Arith.Num_sub in
                fun a ->
@@ -2002,7 +1999,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                  let u = a.store.(i) in
                  let w = y a in
                  (a.store.(i) <- match u, w with
-                     | V.Dnum p, V.Dnum q -> dnum (if sub then p -. q else p +. q)
+                     | V.Dnum p, V.Dnum q -> double_num st ~at (if sub then p -. q else p +. q)
                      | _ -> slow u w);
                  true)
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
