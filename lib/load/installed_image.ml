@@ -13,7 +13,7 @@ let () =
     Source.restore_registry (Marshal.from_string Installed_image_data.files 0);
     Rapid_typing.Types.restore_record_ids Installed_image_data.record_ids;
     Rapid_typing.Installed_env.set_image (fun () ->
-        let t : Installed_level.t = Marshal.from_string data 0 in
+        let t : Installed_level.t = Gc_pacing.read_marked (fun () -> Marshal.from_string data 0) in
         Installed_level.install t;
         Installed_level.modules t)
   end
