@@ -102,13 +102,12 @@ module Names = struct
     !h lxor (!h lsr 31)
 
   (* Top-level recursion, not a local closure: this runs for every name and literal. *)
-  let rec same_from key text start stop i =
-    i >= stop - start
-    || (String.unsafe_get key i = String.unsafe_get text (start + i)
-        && same_from key text start stop (i + 1))
-
   let same key text start stop =
-    String.length key = stop - start && same_from key text start stop 0
+    let n = stop - start in
+    String.length key = n
+    && (let i = ref 0 in
+        while !i < n && String.unsafe_get key !i = String.unsafe_get text (start + !i) do incr i done;
+        !i = n)
 
   (* Linear probing in a table kept at most half full; "" marks an empty slot (the empty
      string is never a name or a literal). *)
@@ -127,9 +126,10 @@ module Names = struct
         end) t.keys;
     t.keys <- keys
 
-  let find_or_add t text start stop =
+  (* [h] is [hash text start stop], computed by the caller as it read the name. *)
+  let find_or_add_hashed t text start stop h =
     let mask = Array.length t.keys - 1 in
-    let i = slot t.keys mask text start stop (hash text start stop land mask) in
+    let i = slot t.keys mask text start stop (h land mask) in
     let key = Array.unsafe_get t.keys i in
     if String.length key > 0 then key
     else begin
@@ -141,6 +141,8 @@ module Names = struct
       end;
       s
     end
+
+  let find_or_add t text start stop = find_or_add_hashed t text start stop (hash text start stop)
 end
 
 type t = {
@@ -153,13 +155,16 @@ type t = {
   robotware : Robotware.t;              (* RobotWare 5 and 6: BREAK and CONTINUE are names *)
   mutable after_switch : bool;          (* the previous token is the name "switch" *)
   mutable after_proc : bool;            (* in the installed environment, the previous token is PROC *)
+  mutable name_hash : int;              (* of the name [Shortcut.name] read last: Names.hash, *)
+  mutable word_hash : int;              (* and Reserved.raw_hash *)
 }
 
 let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
 
 let create ?(installed = false) ?(robotware = Robotware.default) file (decoded : Decode.t) =
   { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1;
-    last_stop = position (-1); installed; robotware; after_switch = false; after_proc = false }
+    last_stop = position (-1); installed; robotware; after_switch = false; after_proc = false;
+    name_hash = 0; word_hash = 0 }
 
 (* The current lexeme, as UTF-8, without its first [skip] bytes. *)
 let text_of ?(skip = 0) lx =
@@ -210,12 +215,17 @@ module Reserved = struct
 
   let upper c = if c >= 'a' && c <= 'z' then Char.unsafe_chr (Char.code c - 32) else c
 
-  let hash text start stop =
+  (* Before its last step ([slot_of]): Shortcut.name computes it as it reads a name. *)
+  let raw_hash text start stop =
     let h = ref 0 in
     for i = start to stop - 1 do
       h := (!h lxor Char.code (upper (String.unsafe_get text i))) * 0x100000001B3
     done;
-    (!h lxor (!h lsr 31)) land (size - 1)
+    !h
+
+  let slot_of h = (h lxor (h lsr 31)) land (size - 1)
+
+  let hash text start stop = slot_of (raw_hash text start stop)
 
   let () =
     Hashtbl.iter (fun w t ->
@@ -235,9 +245,10 @@ module Reserved = struct
     else if String.length key = stop - start && same_from key text start stop 0 then i
     else probe text start stop ((i + 1) land (size - 1))
 
-  (* The slot of the reserved word spelt by [text.[start..stop-1]], or -1. *)
-  let find text start stop =
-    if stop - start > max_length then -1 else probe text start stop (hash text start stop)
+  (* The slot of the reserved word spelt by [text.[start..stop-1]], or -1; [h] is
+     [raw_hash text start stop]. *)
+  let find_hashed text start stop h =
+    if stop - start > max_length then -1 else probe text start stop (slot_of h)
 end
 
 (* A sufficient condition for [Num_literal.of_text] to accept a decimal literal, checked
@@ -357,26 +368,30 @@ let is_lower_word word text start =
 
 (* §2.3, §2.4: the token of the name text.[start..stop-1], [chars] characters long, which is
    the current lexeme (an error is reported at it). *)
-let name lx text start stop chars =
-  let reserved = Reserved.find text start stop in
+let name_hashed lx text start stop chars ~word_hash ~name_hash =
+  let reserved = Reserved.find_hashed text start stop word_hash in
   if reserved >= 0 && lx.installed && lx.after_switch && Reserved.tokens.(reserved) = CONTINUE then
     (* The installed RaiseToUser declares ABB's switch Continue (doc/rulings.md R-7.3-m): in the
        installed environment, right after "switch", the word is the parameter's name. *)
-    IDENT (Names.find_or_add lx.names text start stop)
+    IDENT (Names.find_or_add_hashed lx.names text start stop name_hash)
   else if reserved >= 0 && loop_word_is_name lx Reserved.tokens.(reserved) then
-    IDENT (Names.find_or_add lx.names text start stop)
+    IDENT (Names.find_or_add_hashed lx.names text start stop name_hash)
   else if reserved >= 0 then Reserved.tokens.(reserved)
   else begin
     if chars > max_identifier_length then
       error lx (Printf.sprintf "identifier longer than %d characters (§2.3)"
                   max_identifier_length);
-    let name = Names.find_or_add lx.names text start stop in
+    let name = Names.find_or_add_hashed lx.names text start stop name_hash in
     (* TASK (§2.18) and, in the installed environment, REF (ch. 11) are not reserved
        words but begin constructs of their own: the parser accepts TASK as a name too. *)
     if stop - start = 4 && is_lower_word "task" text start then TASK name
     else if lx.installed && stop - start = 3 && is_lower_word "ref" text start then REF
     else IDENT name
   end
+
+let name lx text start stop chars =
+  name_hashed lx text start stop chars ~word_hash:(Reserved.raw_hash text start stop)
+    ~name_hash:(Names.hash text start stop)
 
 let newline = [%sedlex.regexp? "\r\n" | '\n' | '\r']
 let white_space = [%sedlex.regexp? ' ' | '\t' | '\012' | '\r' | '\n']
@@ -533,9 +548,6 @@ module Shortcut = struct
   let rec digits text n i =
     if i < n && is_digit (String.unsafe_get text i) then digits text n (i + 1) else i
 
-  let rec name_chars text n i =
-    if i < n && is_name_char (String.unsafe_get text i) then name_chars text n (i + 1) else i
-
   (* Where the plain decimal literal at [i] (a digit) stops, or -1: the rules must decide. *)
   let number text i =
     let n = String.length text in
@@ -551,11 +563,25 @@ module Shortcut = struct
       let c = String.unsafe_get text stop in
       if is_name_char c || c = '.' || Char.code c >= 0x80 then -1 else stop
 
-  (* Where the ASCII name at [i] (a letter) stops, or -1: the rules must decide. *)
-  let name text i =
+  (* Where the ASCII name at [i] (a letter) stops, or -1: the rules must decide. Its hashes for
+     the names' table and for the reserved words (Names.hash, Reserved.raw_hash) are computed
+     on the way and left in [lx]: one reading of the name instead of three. *)
+  let name lx text i =
     let n = String.length text in
-    let stop = name_chars text n (i + 1) in
-    if stop < n && Char.code (String.unsafe_get text stop) >= 0x80 then -1 else stop
+    let j = ref i and exact = ref 0 and folded = ref 0 in
+    while !j < n && is_name_char (String.unsafe_get text !j) do
+      let code = Char.code (String.unsafe_get text !j) in
+      exact := (!exact lxor code) * 0x100000001B3;
+      folded := (!folded lxor (if code >= 97 && code <= 122 then code - 32 else code)) * 0x100000001B3;
+      incr j
+    done;
+    let stop = !j in
+    if stop < n && Char.code (String.unsafe_get text stop) >= 0x80 then -1
+    else begin
+      lx.name_hash <- !exact lxor (!exact lsr 31);
+      lx.word_hash <- !folded;
+      stop
+    end
 end
 
 let rec shortcut lx =
@@ -589,9 +615,12 @@ let rec shortcut lx =
         if stop < 0 || (stop - p > 300 && not (plainly_in_range text p stop)) then token lx
         else begin Shortcut.take b stop; number lx text p stop end
     | 'A' .. 'Z' | 'a' .. 'z' ->
-        let stop = Shortcut.name text p in
+        let stop = Shortcut.name lx text p in
         if stop < 0 then token lx
-        else begin Shortcut.take b stop; name lx text p stop (stop - p) end
+        else begin
+          Shortcut.take b stop;
+          name_hashed lx text p stop (stop - p) ~word_hash:lx.word_hash ~name_hash:lx.name_hash
+        end
     | _ -> token lx
 
 (* A token that starts where the previous one stopped shares its position record: in CAD
