@@ -439,6 +439,28 @@ let local_access (r : routine) i =
     | true, true -> Optional_alias
   else Own
 
+(* §4.5: an assignment gives its target a copy of the value. A call of a function whose every
+   RETURN names one of its own slots (an in parameter's copy, its routine data) gives a value
+   nothing else holds: the callee's activation, which held it, is gone once the call returns
+   (its slots are written by copies only, and a function without procedure calls and handlers
+   leaves no reference to its activation behind: no move remembers it, §7.4). Assigning such a
+   result needs no second copy (bench/README.md, "Fourth round"). *)
+let returns_own_value (r : routine) =
+  let own j = local_access r j = Own in
+  let rec stmt (x : stmt) = match x.s with
+    | Return (Some { e = Read (Whole (Local j)); _ }) -> own j
+    | Assign _ | Label | Break | Continue -> true
+    | If (_, b1, b2) | Elseif (_, b1, b2) -> block b1 && block b2
+    | Compact_if (_, inner) -> stmt inner
+    | For f -> block f.loop_body
+    | While (_, b) -> block b
+    | Test (_, cases, default) -> Array.for_all (fun (_, b) -> block b) cases && block default
+    | Return _ | Call_procedure _ | Call_late _ | Goto _ | Raise _ | Exit | Retry | Trynext | Connect _
+    | Placeholder_statement -> false
+  and block (b : block) = Array.for_all stmt b.body in
+  r.kind = Function && r.primitive = None && r.error = None && r.backward = None && r.undo = None
+  && block r.body
+
 (* §3.6: an index is an integer value within the declared dimension. *)
 let index st ~at (v : V.t) n =
   match v with
@@ -2002,6 +2024,11 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                      | V.Dnum p, V.Dnum q -> double_num st ~at (if sub then p -. q else p +. q)
                      | _ -> slow u w);
                  true)
+      | Whole (Local i) when local_access r i = Own && not (own_signal i)
+                             && (match e.e with
+                                 | Call { callee = Routine k; _ } -> returns_own_value st.program.routines.(k)
+                                 | _ -> false) ->
+          fun a -> a.store.(i) <- value a; true
       | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
       | Whole (Local i) when local_access r i = Alias
