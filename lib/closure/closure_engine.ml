@@ -461,6 +461,55 @@ let returns_own_value (r : routine) =
   r.kind = Function && r.primitive = None && r.error = None && r.backward = None && r.undo = None
   && block r.body
 
+(* §5.2: an in parameter is a copy of its argument. When the routine neither writes the
+   parameter nor any part of it, nor passes it or a part of it by reference, nor returns it or a
+   part of it, and the argument is routine data of the caller (which nothing can change while
+   the call runs: the direct path's parameters are all in parameters, so no alias of it reaches
+   the callee), the copy could be the argument itself: nothing tells them apart
+   (bench/README.md, "Fourth round"). *)
+let reads_only_parameter (r : routine) i =
+  let rec rooted (p : place) = match p with
+    | Whole (Local k) -> k = i
+    | Element (p, _) | Component (p, _) -> rooted p
+    | Whole (Global _) | Unresolved _ -> false in
+  let rec place (p : place) = match p with
+    | Element (p, ix) -> place p && Array.for_all expr ix
+    | Component (p, _) -> place p
+    | Whole _ | Unresolved _ -> true
+  and expr (e : expr) = match e.e with
+    | Literal _ | Placeholder -> true
+    | Read p | Read_signal p -> place p
+    | Unary (_, x) | Fitted (x, _) -> expr x
+    | Binary (_, x, y) | And (x, y) | Or (x, y) -> expr x && expr y
+    | Aggregate (xs, _) -> Array.for_all expr xs
+    | Call c -> call c
+  and call (c : call) = Array.for_all (function
+      | By_value e -> expr e
+      | By_reference (p, _) -> not (rooted p) && place p
+      | Pass_on (Local k) -> k <> i
+      | Pass_on (Global _) | Absent | Present_switch -> true) c.arguments
+  and stmt (x : stmt) = match x.s with
+    | Assign (p, e) -> not (rooted p) && place p && expr e
+    | Call_procedure c -> call c
+    | Return (Some { e = Read p; _ }) -> not (rooted p) && place p
+    | Return (Some e) | Raise (Some e) -> expr e
+    | Connect (p, _) -> not (rooted p) && place p
+    | If (c, b1, b2) | Elseif (c, b1, b2) -> expr c && block b1 && block b2
+    | Compact_if (c, inner) -> expr c && stmt inner
+    | For f -> expr f.from_ && expr f.to_ && Option.fold ~none:true ~some:expr f.step && block f.loop_body
+    | While (c, b) -> expr c && block b
+    | Test (c, cases, default) ->
+        expr c && Array.for_all (fun (vs, b) -> Array.for_all expr vs && block b) cases && block default
+    | Call_late _ -> false
+    | Goto _ | Break | Continue | Return None | Raise None | Exit | Retry | Trynext | Label
+    | Placeholder_statement -> true
+  and block (b : block) = Array.for_all stmt b.body in
+  let inits = List.for_all (fun (_, init) -> match init with Init_expr e -> expr e | Init_default _ -> true)
+      r.local_inits in
+  inits && List.for_all block
+    (r.body :: List.filter_map (fun b -> b)
+       [ r.backward; r.undo; Option.map (fun (h : error_handler) -> h.handler) r.error ])
+
 (* §3.6: an index is an integer value within the declared dimension. *)
 let index st ~at (v : V.t) n =
   match v with
@@ -1375,6 +1424,13 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   let args = Array.map (function
       | Closure_call.Value e -> expr st caller ~at e
       | Closure_call.Read p -> read st caller ~at p) sources in
+  (* the arguments that are the caller's routine data and that the callee only reads *)
+  let shared = Array.mapi (fun i (source : Closure_call.source) ->
+      match source with
+      | Closure_call.Value { e = Read (Whole (Local j)); _ } | Closure_call.Read (Whole (Local j)) ->
+          local_access caller j = Own && reads_only_parameter callee i
+      | _ -> false) sources in
+  let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
   let n = Array.length args in
   let size = if callee.locals < 1 then 1 else callee.locals in
@@ -1519,23 +1575,23 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             let v = slow u in
             let b = value_bytes v in
             if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
-            quick a [| copy v |] b)
+            quick a [| copy_arg 0 v |] b)
   | [| f0 |] -> let w0 = whats.(0) in fun a ->
       let v = f0 a in
       let b = value_bytes v in
       if b > limits.max_memory - st.memory then memory_exhausted st w0 at;
       let store = small_store size in
-      store.(0) <- copy v;
+      store.(0) <- copy_arg 0 v;
       quick a store b
   | [| f0; f1; f2; f3 |] when size <= 6 ->
       (* four arguments, each counted as it is made (the loop below), the slots built at once
          (no write barrier for each copy) *)
       let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
       fun a ->
-        let v0 = f0 a in let p = count_copy st ~at w0 v0 0 in let v0 = copy v0 in
-        let v1 = f1 a in let p = count_copy st ~at w1 v1 p in let v1 = copy v1 in
-        let v2 = f2 a in let p = count_copy st ~at w2 v2 p in let v2 = copy v2 in
-        let v3 = f3 a in let p = count_copy st ~at w3 v3 p in let v3 = copy v3 in
+        let v0 = f0 a in let p = count_copy st ~at w0 v0 0 in let v0 = copy_arg 0 v0 in
+        let v1 = f1 a in let p = count_copy st ~at w1 v1 p in let v1 = copy_arg 1 v1 in
+        let v2 = f2 a in let p = count_copy st ~at w2 v2 p in let v2 = copy_arg 2 v2 in
+        let v3 = f3 a in let p = count_copy st ~at w3 v3 p in let v3 = copy_arg 3 v3 in
         let store = match size with
           | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
           | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
@@ -1546,7 +1602,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       for i = 0 to n - 1 do
         let v = args.(i) a in
         pending := count_copy st ~at whats.(i) v !pending;
-        store.(i) <- copy v
+        store.(i) <- copy_arg i v
       done;
       quick a store !pending
 
