@@ -288,7 +288,7 @@ let tick st =
 
 let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
-(* [binary]'s num result, for the fused forms below: rounded to single_num st ~at (R-2.13-a), an integer
+(* [binary]'s num result, for the fused forms below: rounded to single (R-2.13-a), an integer
    of at most 24 bits as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
 let single_num st ~at x =
   if is_small_integer x then V.Num x

@@ -94,14 +94,17 @@ module Names = struct
 
   let create () = { keys = Array.make 256 ""; count = 0 }
 
+  (* One byte into a hash (FNV-1a's step), and the last step: [hash], Reserved's and
+     Shortcut.name's, which computes both as it reads a name, are made of these. *)
+  let mix h code = (h lxor code) * 0x100000001B3 [@@inline]
+  let finish h = h lxor (h lsr 31) [@@inline]
+
   let hash text start stop =
     let h = ref 0 in
-    for i = start to stop - 1 do
-      h := (!h lxor Char.code (String.unsafe_get text i)) * 0x100000001B3
-    done;
-    !h lxor (!h lsr 31)
+    for i = start to stop - 1 do h := mix !h (Char.code (String.unsafe_get text i)) done;
+    finish !h
 
-  (* Top-level recursion, not a local closure: this runs for every name and literal. *)
+  (* This runs for every name and literal. *)
   let same key text start stop =
     let n = stop - start in
     String.length key = n
@@ -214,16 +217,15 @@ module Reserved = struct
   let max_length = Hashtbl.fold (fun w _ m -> max m (String.length w)) reserved_words 0
 
   let upper c = if c >= 'a' && c <= 'z' then Char.unsafe_chr (Char.code c - 32) else c
+  let upper_code code = if code >= 97 && code <= 122 then code - 32 else code [@@inline]
 
   (* Before its last step ([slot_of]): Shortcut.name computes it as it reads a name. *)
   let raw_hash text start stop =
     let h = ref 0 in
-    for i = start to stop - 1 do
-      h := (!h lxor Char.code (upper (String.unsafe_get text i))) * 0x100000001B3
-    done;
+    for i = start to stop - 1 do h := Names.mix !h (upper_code (Char.code (String.unsafe_get text i))) done;
     !h
 
-  let slot_of h = (h lxor (h lsr 31)) land (size - 1)
+  let slot_of h = Names.finish h land (size - 1)
 
   let hash text start stop = slot_of (raw_hash text start stop)
 
@@ -571,14 +573,14 @@ module Shortcut = struct
     let j = ref i and exact = ref 0 and folded = ref 0 in
     while !j < n && is_name_char (String.unsafe_get text !j) do
       let code = Char.code (String.unsafe_get text !j) in
-      exact := (!exact lxor code) * 0x100000001B3;
-      folded := (!folded lxor (if code >= 97 && code <= 122 then code - 32 else code)) * 0x100000001B3;
+      exact := Names.mix !exact code;
+      folded := Names.mix !folded (Reserved.upper_code code);
       incr j
     done;
     let stop = !j in
     if stop < n && Char.code (String.unsafe_get text stop) >= 0x80 then -1
     else begin
-      lx.name_hash <- !exact lxor (!exact lsr 31);
+      lx.name_hash <- Names.finish !exact;
       lx.word_hash <- !folded;
       stop
     end
