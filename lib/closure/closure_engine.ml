@@ -63,18 +63,19 @@ type extension = {
   module_data : bool array;           (* whether it denotes module data (CONNECT, §4.15) *)
   mutable retries : int;              (* RETRYs since the retried statement last completed *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+  mutable nums : float array;         (* the flat slots' values (see [flat]); [||] until the routine
+                                         data's initialisation or a FOR loop needs them *)
 }
 
 let shared_extension =
-  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None }
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None;
+    nums = [||] }
 
 (* The activation of a routine: its slots, and for alias parameters where their locations are. *)
 type act = {
   routine : routine;
   store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
-  mutable nums : float array;         (* the flat slots' values (see [flat]); [||] until the routine
-                                         data's initialisation or a FOR loop needs them *)
-  ext : extension;
+  mutable ext : extension;            (* its own once its flat slots are made ([flat_values]) *)
   level : int;                        (* its place in the call chain: 0 is the entry routine *)
   parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
@@ -311,7 +312,13 @@ let single_float st ~at x =
     let y = Int32.float_of_bits (Int32.bits_of_float x) in
     if Float.is_finite y then y else fail st ~at "ERR_OVERFLOW" [@@inline]
 
-let single_num st ~at x = V.Num (single_float st ~at x) [@@inline]
+(* Written out rather than as [V.Num (single_float ...)]: the box of the float is then built once
+   in each branch, which costs fewer instructions on the calls' path (fib, depth). *)
+let single_num st ~at x =
+  if is_small_integer x then V.Num x
+  else
+    let y = Int32.float_of_bits (Int32.bits_of_float x) in
+    if Float.is_finite y then V.Num y else fail st ~at "ERR_OVERFLOW" [@@inline]
 
 let double_float st ~at x = if Float.is_finite x then x else fail st ~at "ERR_OVERFLOW" [@@inline]
 
@@ -631,8 +638,11 @@ let flat_num st r i = match local_access st r i with Flat_num k -> Some k | _ ->
 
 (* The flat slots' array of an activation, made when first needed. *)
 let flat_values st (a : act) =
-  if Array.length a.nums = 0 then a.nums <- Array.make (flat_of st a.routine).count 0.;
-  a.nums [@@inline]
+  if Array.length a.ext.nums = 0 then begin
+    let nums = Array.make (flat_of st a.routine).count 0. in
+    if a.ext == shared_extension then a.ext <- { shared_extension with nums } else a.ext.nums <- nums
+  end;
+  a.ext.nums
 
 (* §3.6: an index is an integer value within the declared dimension. *)
 let index st ~at (v : V.t) n =
@@ -720,8 +730,8 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Whole (Local i) -> (
       match local_access st r i with
       | Own -> fun a -> a.store.(i)
-      | Flat_num k -> fun a -> V.Num a.nums.(k)
-      | Flat_dnum k -> fun a -> V.Dnum a.nums.(k)
+      | Flat_num k -> fun a -> V.Num a.ext.nums.(k)
+      | Flat_dnum k -> fun a -> V.Dnum a.ext.nums.(k)
       | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
@@ -744,14 +754,16 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                   | v -> elements.(index st ~at v n))
            | Read (Whole (Local i)) when flat_num st r i <> None ->
                let k = Option.get (flat_num st r i) in
-               fun a -> let elements = parts globals.(g) in elements.(index_float st ~at a.nums.(k) (Array.length elements))
+               fun a ->
+                 let elements = parts globals.(g) in
+                 elements.(index_float st ~at a.ext.nums.(k) (Array.length elements))
            | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
              when flat_num st r i <> None ->
                let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
                let q = if op = Arith.Num_sub then -. q else q in
                fun a ->
                  let elements = parts globals.(g) in
-                 elements.(index_sum st ~at general a a.nums.(k) q (Array.length elements))
+                 elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
            | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
              when local_access st r i = Own ->
                let general = expr st r ~at ix in
@@ -828,12 +840,12 @@ and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
       Some (fun a n -> match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n)
   | Read (Whole (Local i)) when flat_num st r i <> None ->
       let k = Option.get (flat_num st r i) in
-      Some (fun a n -> index_float st ~at a.nums.(k) n)
+      Some (fun a n -> index_float st ~at a.ext.nums.(k) n)
   | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
     when flat_num st r i <> None ->
       let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
       let q = if op = Arith.Num_sub then -. q else q in
-      Some (fun a n -> index_sum st ~at general a a.nums.(k) q n)
+      Some (fun a n -> index_sum st ~at general a a.ext.nums.(k) q n)
   | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
     when local_access st r i = Own ->
       let general = expr st r ~at ix in
@@ -1006,24 +1018,26 @@ and flat_operand st (r : routine) (e : Ir.expr) =
    num rounded to single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c). *)
 and flat_arith st ~at (op : Arith.binary) k x y : (act -> unit) option =
   match op, x, y with
-  | Num_add, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) +. n.(j)))
-  | Num_add, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) +. q))
-  | Num_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) -. n.(j)))
-  | Num_sub, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) -. q))
-  | Num_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) *. n.(j)))
-  | Num_mul, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- single_float st ~at (n.(i) *. q))
-  | Dnum_add, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) +. n.(j)))
-  | Dnum_add, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) +. q))
-  | Dnum_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) -. n.(j)))
-  | Dnum_sub, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) -. q))
-  | Dnum_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)))
-  | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.nums in n.(k) <- double_float st ~at (n.(i) *. q))
+  | Num_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. n.(j)))
+  | Num_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. q))
+  | Num_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. n.(j)))
+  | Num_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. q))
+  | Num_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. n.(j)))
+  | Num_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. q))
+  | Dnum_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. n.(j)))
+  | Dnum_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. q))
+  | Dnum_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. n.(j)))
+  | Dnum_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. q))
+  | Dnum_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)))
+  | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q))
   | _ -> None
 
 (* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
    closure. *)
 and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> unit =
-  let general () = let f = expr st r ~at e in fun a -> a.nums.(k) <- V.num_value (f a) in
+  let general () =
+    let f = expr st r ~at e in
+    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v) in
   match e.e with
   | Binary (op, x, y) -> (
       match flat_arith st ~at op k (flat_operand st r x) (flat_operand st r y) with
@@ -1031,8 +1045,8 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> unit =
       | None -> general ())
   | _ ->
       match flat_operand st r e with
-      | `Slot j -> fun a -> let n = a.nums in n.(k) <- n.(j)
-      | `Const q -> fun a -> a.nums.(k) <- q
+      | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j)
+      | `Const q -> fun a -> a.ext.nums.(k) <- q
       | `Other -> general ()
 
 (* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
@@ -1044,14 +1058,14 @@ and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option
     | (`Const _ as c), (`Slot _ as v) -> (flip op, v, c)
     | u, v -> (op, u, v) in
   match op, x, y with
-  | (Num_lt | Dnum_lt), `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(i) < n.(j))
-  | (Num_lt | Dnum_lt), `Slot i, `Const q -> Some (fun a -> a.nums.(i) < q)
-  | (Num_le | Dnum_le), `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(i) <= n.(j))
-  | (Num_le | Dnum_le), `Slot i, `Const q -> Some (fun a -> a.nums.(i) <= q)
-  | (Num_gt | Dnum_gt), `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(i) > n.(j))
-  | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.nums.(i) > q)
-  | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.nums in n.(i) >= n.(j))
-  | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.nums.(i) >= q)
+  | (Num_lt | Dnum_lt), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) < n.(j))
+  | (Num_lt | Dnum_lt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) < q)
+  | (Num_le | Dnum_le), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) <= n.(j))
+  | (Num_le | Dnum_le), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) <= q)
+  | (Num_gt | Dnum_gt), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) > n.(j))
+  | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) > q)
+  | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) >= n.(j))
+  | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) >= q)
   | _ -> None
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -1535,8 +1549,9 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
               fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
         fun a ->
-          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None } in
-          let c = { routine = callee; store = small_store size; nums = [||]; ext; level = a.level + 1; parent = a;
+          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
+                     nums = [||] } in
+          let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
                     result = no_value; nest = 0; memory = 0 } in
           for m = 0 to nv - 1 do
             let i, f, what = values.(m) in
@@ -1663,7 +1678,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
     if st.native + nest > st.native_budget then
       raise (Halt (native_stack_exhausted level));
     let memory = pending + act_bytes in
-    let c = { routine = callee; store; nums = [||]; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+    let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
     st.native <- st.native + nest;
     st.memory <- st.memory + memory;
     st.depth <- level + 1; deepen level;
@@ -1686,7 +1701,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
     then begin
       st.fuel <- st.fuel - 1;
       let memory = pending + act_bytes in
-      let c = { routine = callee; store; nums = [||]; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+      let c = { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
       st.native <- st.native + nest;
       st.memory <- st.memory + memory;
       st.depth <- level + 1; deepen level;
@@ -1709,7 +1724,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
             st.fuel <- st.fuel - 1;
             let memory = pending + act_bytes in
             let c =
-              { routine = callee; store; nums = [||]; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
+              { routine = callee; store; ext = shared_extension; level; parent = a; result = no_value; nest; memory } in
             st.native <- st.native + nest;
             st.memory <- st.memory + memory;
             st.depth <- level + 1; deepen level;
@@ -1771,7 +1786,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
                   | _ ->
                   st.fuel <- st.fuel - 1;
                   let memory = 32 + act_bytes in
-                  let c = { routine = callee; store = [| v |]; nums = [||]; ext = shared_extension; level; parent = a;
+                  let c = { routine = callee; store = [| v |]; ext = shared_extension; level; parent = a;
                             result = no_value; nest; memory } in
                   st.native <- st.native + nest;
                   st.memory <- st.memory + memory;
@@ -1992,14 +2007,14 @@ and activation_shape (r : routine) =
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
     store = small_store size;
-    nums = [||];
+   
     ext = (if own_extension then
              { boxes = (if aliases then small_boxes n else [||]);
                idx = (if aliases then small_ints n else [||]);
                present = (if optional then small_present n else [||]);
                bound = (if aliases then small_kinds n else [||]);
                module_data = (if aliases then small_bools n else [||]);
-               retries = 0; current = None }
+               retries = 0; current = None; nums = [||] }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
 
@@ -2244,9 +2259,11 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       | Whole (Local i) when (match local_access st r i with Flat_num _ | Flat_dnum _ -> true | _ -> false) ->
           (* a flat slot (see [flat]): the value computed unboxed, stored in place *)
           let k, box = match local_access st r i with
-            | Flat_dnum k -> (k, fun x -> V.Dnum x) | Flat_num k -> (k, fun x -> V.Num x) | _ -> (-1, fun x -> V.Num x) in
+            | Flat_dnum k -> (k, fun x -> V.Dnum x)
+            | Flat_num k -> (k, fun x -> V.Num x)
+            | _ -> (-1, fun x -> V.Num x) in
           let f = flat_store st r ~at k e in
-          if st.observe then fun a -> f a; observe_flat st a i (box a.nums.(k)); true
+          if st.observe then fun a -> f a; observe_flat st a i (box a.ext.nums.(k)); true
           else fun a -> f a; true
       | _ when st.observe ->
           let l = locate st r ~at place in
@@ -2368,7 +2385,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                let k = Option.get (flat_num st r i) and globals = st.globals in
                fun a ->
                  let elements = parts globals.(g) in
-                 let j = index_float st ~at a.nums.(k) (Array.length elements) in
+                 let j = index_float st ~at a.ext.nums.(k) (Array.length elements) in
                  let v = value a in
                  (match elements.(j) with
                   | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
@@ -2380,7 +2397,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                let q = if op = Arith.Num_sub then -. q else q in
                fun a ->
                  let elements = parts globals.(g) in
-                 let j = index_sum st ~at general a a.nums.(k) q (Array.length elements) in
+                 let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
                  let v = value a in
                  (match elements.(j) with
                   | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
@@ -2558,7 +2575,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let empty = Array.length loop_body.body = 0 in
       let flat = match local_access st r variable with Flat_num k -> k | _ -> -1 in
       fun a ->
-        let nums = if flat >= 0 then flat_values st a else a.nums in
+        let nums = if flat >= 0 then flat_values st a else a.ext.nums in
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
@@ -2842,7 +2859,7 @@ let compile_routine st k =
           let box x = match access with Flat_dnum _ -> V.Dnum x | _ -> V.Num x in
           fun _ a ->
             ignore (flat_values st a); f a;
-            if st.observe then observe_flat st a slot (box a.nums.(k))
+            if st.observe then observe_flat st a slot (box a.ext.nums.(k))
       | Init_default shape, _ ->
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)
@@ -2961,7 +2978,7 @@ and run_entry ?limits ?fuel ?stub_unmodelled ~all_events ?observe ?cooperation ?
       let outcome =
         try
           (* §2.21: module data is initialised when its module is loaded. *)
-          let rec sentinel = { routine = r; store = [||]; nums = [||]; ext = shared_extension; level = -1;
+          let rec sentinel = { routine = r; store = [||]; ext = shared_extension; level = -1;
                                parent = sentinel; result = no_value; nest = 0; memory = 0 } in
           let dummy = new_act (activation_shape r) r sentinel in
           (* Module data first takes its type's initial value, within the memory budget; then
