@@ -2840,6 +2840,32 @@ let leading_guard (r : routine) ~gotos =
         | _ -> None)
     | _ -> None
 
+(* §2.21: routine data gets its initial value at each call. When the routine's first statement
+   assigns the whole of it from an expression that does not name it, and no handler (ERROR, UNDO,
+   BACKWARD) can run before that statement completes, nothing reads the initial value: the
+   assignment replaces it before anything could (an error in the expression leaves the routine,
+   and the slot with it). The memory budget still counts it. *)
+let first_assigned (r : routine) slot =
+  let rec names_place (p : place) = match p with
+    | Whole (Local k) -> k = slot
+    | Whole (Global _) | Unresolved _ -> false
+    | Element (p, ix) -> names_place p || Array.exists names ix
+    | Component (p, _) -> names_place p
+  and names (e : expr) = match e.e with
+    | Literal _ | Placeholder -> false
+    | Read p | Read_signal p -> names_place p
+    | Unary (_, x) | Fitted (x, _) -> names x
+    | Binary (_, x, y) | And (x, y) | Or (x, y) -> names x || names y
+    | Aggregate (xs, _) -> Array.exists names xs
+    | Call c -> Array.exists (function
+        | By_value e -> names e
+        | By_reference (p, _) -> names_place p
+        | Pass_on (Local k) -> k = slot
+        | Pass_on (Global _) | Absent | Present_switch -> false) c.arguments in
+  r.error = None && r.undo = None && r.backward = None
+  && Array.length r.body.body > 0
+  && (match r.body.body.(0).s with Assign (Whole (Local k), e) -> k = slot && not (names e) | _ -> false)
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -2860,6 +2886,9 @@ let compile_routine st k =
           fun _ a ->
             ignore (flat_values st a); f a;
             if st.observe then observe_flat st a slot (box a.ext.nums.(k))
+      | Init_default shape, _ when first_assigned r slot ->
+          let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
+          fun at (a : act) -> charge_active st a bytes what at
       | Init_default shape, _ ->
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)

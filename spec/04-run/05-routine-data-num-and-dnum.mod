@@ -6,13 +6,14 @@ MODULE routine_data_num_and_dnum
 ! @section 3.12
 ! @section 5.2
 ! @expect ok
-! @description Routine data of type num and dnum, and FOR variables, in the ways a routine uses them: each activation of a recursive function has its own (acc and i below); routine data changed through Incr, an INOUT parameter and a late-bound call by reference keeps what they wrote; comparisons with the literal on either side; a num product rounded to single (4097 * 4097 is 16785408); a dnum product exact; an infinite product is ERR_OVERFLOW and leaves the variable as it was.
+! @description Routine data of type num and dnum, and FOR variables, in the ways a routine uses them: each activation of a recursive function has its own (acc and i below); routine data changed through Incr, an INOUT parameter and a late-bound call by reference keeps what they wrote; comparisons with the literal on either side; a num product rounded to single (4097 * 4097 is 16785408); a dnum product exact; an infinite product is ERR_OVERFLOW and leaves the variable as it was. Routine data of a record type has its initial value when the statement that first assigns it reads it, or when the error handler reads it after that statement failed.
 ! @output sum 220 385
 ! @output incr 3 inout 13 late 23
 ! @output while 4.5 3
 ! @output 16785408 16785409
 ! @output handled 1120
 ! @output kept 1E+30
+! @output pos [1,0,5] [0,0,0] [5,0,0]
 ! @exit 0
   FUNC num sumdown(num n)
     VAR num acc := 0;
@@ -21,6 +22,18 @@ MODULE routine_data_num_and_dnum
     ENDFOR
     IF n > 1 acc := acc + sumdown(n - 1);
     RETURN acc;
+  ENDFUNC
+  FUNC pos from_itself()
+    VAR pos q;
+    q := [q.x + 1, q.y, 5];
+    RETURN q;
+  ENDFUNC
+  FUNC pos divided(num d)
+    VAR pos q;
+    q := [10 / d, 0, 0];
+    RETURN q;
+  ERROR
+    RETURN q;
   ENDFUNC
   PROC add_ten(INOUT num v)
     v := v + 10;
@@ -52,6 +65,7 @@ MODULE routine_data_num_and_dnum
     TPWrite NumToStr(m, 0) + " " + DnumToStr(dm, 0);
     o := o * o;
     TPWrite "kept " + NumToStr(o, 0\Exp);
+    TPWrite "pos " + ValToStr(from_itself()) + " " + ValToStr(divided(0)) + " " + ValToStr(divided(2));
   ERROR
     TPWrite "handled " \Num:=ERRNO;
     TRYNEXT;
