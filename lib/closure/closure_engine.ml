@@ -63,22 +63,35 @@ type extension = {
   module_data : bool array;           (* whether it denotes module data (CONNECT, §4.15) *)
   mutable retries : int;              (* RETRYs since the retried statement last completed *)
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
+  mutable nums : float array;         (* the flat slots' values (see [flat]); [||] until the routine
+                                         data's initialisation or a FOR loop needs them *)
 }
 
 let shared_extension =
-  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None }
+  { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None;
+    nums = [||] }
 
 (* The activation of a routine: its slots, and for alias parameters where their locations are. *)
 type act = {
   routine : routine;
   store : V.t array;                  (* own slots: in parameters, routine data, loop variables *)
-  ext : extension;
+  mutable ext : extension;            (* its own once its flat slots are made ([flat_values]) *)
   level : int;                        (* its place in the call chain: 0 is the entry routine *)
   parent : act;                       (* its caller; the entry routine's is a sentinel of level -1 *)
   mutable result : V.t;               (* RETURN's value, on its way to the caller; no_value for none *)
   mutable nest : int;                 (* its share of the native stack (see native_budget) *)
   mutable memory : int;               (* bytes of RAPID data it holds: in arguments, routine
                                          data, itself (the memory budget) *)
+}
+
+(* Routine data of type num or dnum, and FOR variables, that the routine only reads as values and
+   assigns as wholes (never passed by reference, never located): their values are kept unboxed in
+   [nums], so that a store needs neither a box nor the write barrier. Nothing can tell such a slot
+   from one in [store]: every read gives the value, and no location of it is ever made. *)
+type flat = {
+  position : int array;               (* per local slot: its index in [nums], or -1 *)
+  dnum : bool array;                  (* per local slot: a dnum's (else a num's) *)
+  count : int;
 }
 
 type compiled = {
@@ -137,6 +150,9 @@ type state = {
   mutable skip_undo : act list;       (* left by RaiseToUser \BreakOff: no UNDO (R-7.3-q) *)
   mutable next_cycle : bool;          (* ExitCycle: the [Exit_task] that unwinds starts the entry again *)
   cooperation : cooperation option;   (* one of several tasks (Closure_tasks) *)
+  flats : (routine * flat) list Rapid_syntax.Source.Table.t;
+      (* each routine's flat slots, found when it is first compiled (by its region, then
+         physically: regions of different programs may coincide) *)
 }
 
 (* ------------------------------------------------------------------ errors *)
@@ -290,11 +306,21 @@ let check st ~at = function Ok v -> v | Error name -> fail st ~at name
 
 (* [binary]'s num result, for the fused forms below: rounded to single (R-2.13-a), an integer
    of at most 24 bits as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
+let single_float st ~at x =
+  if is_small_integer x then x
+  else
+    let y = Int32.float_of_bits (Int32.bits_of_float x) in
+    if Float.is_finite y then y else fail st ~at "ERR_OVERFLOW" [@@inline]
+
+(* Written out rather than as [V.Num (single_float ...)]: the box of the float is then built once
+   in each branch, which costs fewer instructions on the calls' path (fib, depth). *)
 let single_num st ~at x =
   if is_small_integer x then V.Num x
   else
     let y = Int32.float_of_bits (Int32.bits_of_float x) in
     if Float.is_finite y then V.Num y else fail st ~at "ERR_OVERFLOW" [@@inline]
+
+let double_float st ~at x = if Float.is_finite x then x else fail st ~at "ERR_OVERFLOW" [@@inline]
 
 (* [binary]'s dnum result: the double as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
 let double_num st ~at x = if Float.is_finite x then V.Dnum x else fail st ~at "ERR_OVERFLOW" [@@inline]
@@ -413,10 +439,11 @@ let is_alias (p : parameter) = p.p_mode <> Rapid_typing.Tables.Mode_in
 
 (* Schema rapid-sem/2 (Observation): the texts are built only when the run observes them. The
    roots are given as the machine gives its own, so that Observation.find names a place alike. *)
-let observe_store st (a : act) (box, i) =
+let observe_in st (a : act) ~flat (box, i) =
   let r = a.routine in
   let local k =
-    if k < Array.length r.parameters && is_alias r.parameters.(k) then
+    if k = flat then (box, i)
+    else if k < Array.length r.parameters && is_alias r.parameters.(k) then
       ((if k < Array.length a.ext.boxes then a.ext.boxes.(k) else [||]),
        (if k < Array.length a.ext.idx then a.ext.idx.(k) else 0))
     else (a.store, k) in
@@ -426,10 +453,18 @@ let observe_store st (a : act) (box, i) =
   st.emit (Event.Observed (Stored { place = Observation.place_of st.program r (box, i) roots;
                                 value = Observation.value box.(i) }))
 
-(* How a local slot is reached, known when the routine is compiled. *)
-type slot_access = Own | Alias | Optional_own | Optional_alias
+let observe_store st a location = observe_in st a ~flat:(-1) location
 
-let local_access (r : routine) i =
+(* A flat slot's store (see [flat]): its value in a box of its own, which the slot's root names. *)
+let observe_flat st a slot v = observe_in st a ~flat:slot ([| v |], 0)
+
+(* How a local slot is reached, known when the routine is compiled. *)
+type slot_access =
+  | Own | Alias | Optional_own | Optional_alias
+  | Flat_num of int | Flat_dnum of int  (* a flat slot (see [flat]): its index in [nums] *)
+
+(* How a parameter or an own slot is reached, flat slots aside. *)
+let parameter_access (r : routine) i =
   if i < Array.length r.parameters then
     let p = r.parameters.(i) in
     match p.p_optional, is_alias p with
@@ -446,7 +481,7 @@ let local_access (r : routine) i =
    leaves no reference to its activation behind: no move remembers it, §7.4). Assigning such a
    result needs no second copy (bench/README.md, "Fourth round"). *)
 let returns_own_value (r : routine) =
-  let own j = local_access r j = Own in
+  let own j = parameter_access r j = Own in
   let rec stmt (x : stmt) = match x.s with
     | Return (Some { e = Read (Whole (Local j)); _ }) -> own j
     | Assign _ | Label | Break | Continue -> true
@@ -510,6 +545,105 @@ let reads_only_parameter (r : routine) i =
     (r.body :: List.filter_map (fun b -> b)
        [ r.backward; r.undo; Option.map (fun (h : error_handler) -> h.handler) r.error ])
 
+(* The flat slots of a routine (see [flat]): its routine data of type num or dnum and its FOR
+   variables, less every one that some part of the routine names otherwise than by reading its
+   value or assigning it as a whole: a reference argument, a late-bound call's argument (which
+   may be bound by reference, §4.6), CONNECT's target, a conditional argument, an error number
+   of an error recovery point (§7.2), a signal's read, or an indexed or component place. *)
+let flat_slots (r : routine) : flat =
+  let n = r.locals in
+  let candidate = Array.make n 0 in   (* 1: num, 2: dnum *)
+  let first = Array.length r.parameters in
+  List.iter (fun (slot, init) ->
+      if slot >= first && slot < n then
+        candidate.(slot) <- (match init with
+            | Init_default V.S_num | Init_expr { e = Literal (V.Num _); _ } -> 1
+            | Init_default V.S_dnum | Init_expr { e = Literal (V.Dnum _); _ } -> 2
+            | _ -> 0)) r.local_inits;
+  let refused = Array.make n false in
+  let refuse = function Local k when k < n -> refused.(k) <- true | Local _ | Global _ -> () in
+  let rec other (p : place) = match p with
+    | Whole s -> refuse s
+    | Element (p, ix) -> other p; Array.iter expr ix
+    | Component (p, _) -> other p
+    | Unresolved _ -> ()
+  and expr (e : expr) = match e.e with
+    | Read (Whole _) | Literal _ | Placeholder -> ()
+    | Read p | Read_signal p -> other p
+    | Unary (_, x) | Fitted (x, _) -> expr x
+    | Binary (_, x, y) | And (x, y) | Or (x, y) -> expr x; expr y
+    | Aggregate (xs, _) -> Array.iter expr xs
+    | Call c -> call c
+  and call (c : call) = Array.iter (function
+      | By_value e -> expr e
+      | By_reference (p, _) -> other p
+      | Pass_on s -> refuse s
+      | Absent | Present_switch -> ()) c.arguments
+  and late (l : late_argument) =
+    (match l.late_value with
+     | Late_expr { e = Read p; _ } -> other p
+     | Late_expr e -> expr e
+     | Late_conditional s -> Option.iter refuse s
+     | Late_switch -> ());
+    match l.late_type with Late_numeric e -> expr e | Late_typed _ | Late_untyped -> ()
+  and stmt (x : stmt) = match x.s with
+    | Assign (Whole _, e) -> expr e
+    | Assign (p, e) -> other p; expr e
+    | Call_procedure c -> call c
+    | Call_late (e, args) -> expr e; Array.iter late args
+    | Return (Some e) | Raise (Some e) -> expr e
+    | Connect (p, _) -> other p
+    | If (c, b1, b2) | Elseif (c, b1, b2) -> expr c; block b1; block b2
+    | Compact_if (c, inner) -> expr c; stmt inner
+    | For f ->
+        if f.variable >= first && f.variable < n then candidate.(f.variable) <- 1;
+        expr f.from_; expr f.to_; Option.iter expr f.step; block f.loop_body
+    | While (c, b) -> expr c; block b
+    | Test (c, cases, default) ->
+        expr c; Array.iter (fun (vs, b) -> Array.iter expr vs; block b) cases; block default
+    | Goto _ | Break | Continue | Return None | Raise None | Exit | Retry | Trynext | Label
+    | Placeholder_statement -> ()
+  and block (b : block) = Array.iter stmt b.body in
+  List.iter (fun (_, init) -> match init with Init_expr e -> expr e | Init_default _ -> ()) r.local_inits;
+  List.iter block (r.body :: List.filter_map (fun b -> b) [ r.backward; r.undo ]);
+  Option.iter (fun (h : error_handler) ->
+      block h.handler;
+      Option.iter (List.iter (function Object s -> refuse s | Number _ -> ())) h.recovery) r.error;
+  let position = Array.make n (-1) and dnum = Array.make n false and count = ref 0 in
+  for k = first to n - 1 do
+    if candidate.(k) > 0 && not refused.(k) then begin
+      position.(k) <- !count; dnum.(k) <- candidate.(k) = 2; incr count
+    end
+  done;
+  { position; dnum; count = !count }
+
+let flat_of st (r : routine) =
+  let known = Option.value ~default:[] (Rapid_syntax.Source.Table.find_opt st.flats r.at) in
+  match List.assq_opt r known with
+  | Some f -> f
+  | None ->
+      let f = flat_slots r in
+      Rapid_syntax.Source.Table.replace st.flats r.at ((r, f) :: known);
+      f
+
+(* How a local slot is reached, known when the routine is compiled. *)
+let local_access st (r : routine) i =
+  if i < Array.length r.parameters then parameter_access r i
+  else
+    let f = flat_of st r in
+    let k = if i < Array.length f.position then f.position.(i) else -1 in
+    if k < 0 then Own else if f.dnum.(i) then Flat_dnum k else Flat_num k
+
+let flat_num st r i = match local_access st r i with Flat_num k -> Some k | _ -> None
+
+(* The flat slots' array of an activation, made when first needed. *)
+let flat_values st (a : act) =
+  if Array.length a.ext.nums = 0 then begin
+    let nums = Array.make (flat_of st a.routine).count 0. in
+    if a.ext == shared_extension then a.ext <- { shared_extension with nums } else a.ext.nums <- nums
+  end;
+  a.ext.nums
+
 (* §3.6: an index is an integer value within the declared dimension. *)
 let index st ~at (v : V.t) n =
   match v with
@@ -539,9 +673,9 @@ let index_sum st ~at general (a : 'a) p q n =
   if float_of_int k = x && k >= 1 && k <= n && k <= 16777216 then k - 1 else index st ~at (general a) n [@@inline]
 
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
-let plain_whole (r : routine) = function
+let plain_whole st (r : routine) = function
   | Global _ -> true
-  | Local i -> local_access r i = Own
+  | Local i -> local_access st r i = Own
 
 (* An activation's arrays, allocated in place for the common sizes: Array.make is a call to the
    runtime, the largest part of a call with alias parameters. One function per element type,
@@ -594,13 +728,15 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   match p with
   | Whole (Global i) -> let g = st.globals in fun _ -> g.(i)
   | Whole (Local i) -> (
-      match local_access r i with
+      match local_access st r i with
       | Own -> fun a -> a.store.(i)
+      | Flat_num k -> fun a -> V.Num a.ext.nums.(k)
+      | Flat_dnum k -> fun a -> V.Dnum a.ext.nums.(k)
       | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
           fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
-  | Element (Whole w, [| ix |]) when plain_whole r w ->
+  | Element (Whole w, [| ix |]) when plain_whole st r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
       let container = read st r ~at (Whole w) in
@@ -609,14 +745,27 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
            (* module data's array, its index computed in the same closure ([index_at]'s two forms) *)
            let globals = st.globals in
            match ix.e with
-           | Read (Whole (Local i)) ->
+           | Read (Whole (Local i)) when local_access st r i = Own ->
                fun a ->
                  let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
                   | V.Num x -> elements.(index_float st ~at x n)
                   | v -> elements.(index st ~at v n))
-           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+           | Read (Whole (Local i)) when flat_num st r i <> None ->
+               let k = Option.get (flat_num st r i) in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 elements.(index_float st ~at a.ext.nums.(k) (Array.length elements))
+           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+             when flat_num st r i <> None ->
+               let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
+           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+             when local_access st r i = Own ->
                let general = expr st r ~at ix in
                let q = if op = Arith.Num_sub then -. q else q in
                fun a ->
@@ -651,8 +800,11 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
   match p with
   | Whole (Global i) -> let g = st.globals in fun _ -> (g, i)
   | Whole (Local i) -> (
-      match local_access r i with
+      match local_access st r i with
       | Own -> fun a -> (a.store, i)
+      | Flat_num _ | Flat_dnum _ ->
+          (* [flat_slots] keeps every slot some place locates out of [nums]: never reached *)
+          fun _ -> raise (Halt (Outcome.Stuck "a flat slot located"))
       | Alias -> fun a -> (a.ext.boxes.(i), a.ext.idx.(i))
       | Optional_own -> fun a -> if a.ext.present.(i) then (a.store, i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
@@ -684,10 +836,18 @@ and locate st (r : routine) ~at (p : place) : act -> V.t array * int =
    can change the container, so the container may be read first. *)
 and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
   match ix.e with
-  | Read (Whole (Local i)) when local_access r i = Own ->
+  | Read (Whole (Local i)) when local_access st r i = Own ->
       Some (fun a n -> match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n)
+  | Read (Whole (Local i)) when flat_num st r i <> None ->
+      let k = Option.get (flat_num st r i) in
+      Some (fun a n -> index_float st ~at a.ext.nums.(k) n)
   | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
-    when local_access r i = Own ->
+    when flat_num st r i <> None ->
+      let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
+      let q = if op = Arith.Num_sub then -. q else q in
+      Some (fun a n -> index_sum st ~at general a a.ext.nums.(k) q n)
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+    when local_access st r i = Own ->
       let general = expr st r ~at ix in
       let q = if op = Arith.Num_sub then -. q else q in
       Some (fun a n ->
@@ -714,23 +874,23 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       let x = expr st r ~at x in
       fun a -> check st ~at (Arith.unary op (x a))
   | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ })
-    when local_access r i = Alias ->
+    when local_access st r i = Alias ->
       (* x +- k on an alias parameter, read where it is bound without a call *)
       let slow u = check st ~at (Arith.binary op u v) in
       let q = if op = Num_sub then -. q else q in
       fun a -> (match a.ext.boxes.(i).(a.ext.idx.(i)) with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
-      let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+      let own = match x.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
   | Binary ((Dnum_add | Dnum_sub as op), { e = Read (Whole (Local i)); _ }, { e = Literal (V.Dnum q as v); _ })
-    when local_access r i = Own ->
+    when local_access st r i = Own ->
       (* x +- k on an own dnum slot, read without a call (as [binary]'s dnum rows) *)
       let slow u = check st ~at (Arith.binary op u v) in
       if op = Dnum_add then fun a -> (match a.store.(i) with V.Dnum p -> double_num st ~at (p +. q) | u -> slow u)
       else fun a -> (match a.store.(i) with V.Dnum p -> double_num st ~at (p -. q) | u -> slow u)
   | Binary ((Num_add | Num_sub | Num_mul | Dnum_add | Dnum_sub | Dnum_mul) as op,
             { e = Read (Whole (Local i)); _ }, { e = Read (Whole (Local j)); _ })
-    when local_access r i = Own && local_access r j = Own ->
+    when local_access st r i = Own && local_access st r j = Own ->
       (* two own slots (s + i): read without a call each, as [binary]'s rows compute them *)
       let slow u v = check st ~at (Arith.binary op u v) in
       (match op with
@@ -845,14 +1005,80 @@ and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
   | Num_mul -> fun a -> (match x a with V.Num p -> single_num st ~at (p *. q) | u -> slow u)
   | _ -> binary st ~at op x (fun _ -> v)
 
+(* An operand of a flat slot's store or of a comparison (see [flat]), read where it is: a flat
+   slot, or a num or dnum literal. Closures give floats boxed, so these are read in the closure of
+   the store or the comparison itself. *)
+and flat_operand st (r : routine) (e : Ir.expr) =
+  match e.e with
+  | Literal (V.Num q | V.Dnum q) -> `Const q
+  | Read (Whole (Local i)) -> (match local_access st r i with Flat_num k | Flat_dnum k -> `Slot k | _ -> `Other)
+  | _ -> `Other
+
+(* x op y into the flat slot k, x a flat slot and y one or a literal: as [binary] computes it (a
+   num rounded to single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c). *)
+and flat_arith st ~at (op : Arith.binary) k x y : (act -> unit) option =
+  match op, x, y with
+  | Num_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. n.(j)))
+  | Num_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. q))
+  | Num_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. n.(j)))
+  | Num_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. q))
+  | Num_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. n.(j)))
+  | Num_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. q))
+  | Dnum_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. n.(j)))
+  | Dnum_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. q))
+  | Dnum_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. n.(j)))
+  | Dnum_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. q))
+  | Dnum_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)))
+  | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q))
+  | _ -> None
+
+(* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
+   closure. *)
+and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> unit =
+  let general () =
+    let f = expr st r ~at e in
+    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v) in
+  match e.e with
+  | Binary (op, x, y) -> (
+      match flat_arith st ~at op k (flat_operand st r x) (flat_operand st r y) with
+      | Some f -> f
+      | None -> general ())
+  | _ ->
+      match flat_operand st r e with
+      | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j)
+      | `Const q -> fun a -> a.ext.nums.(k) <- q
+      | `Other -> general ()
+
+(* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
+and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option =
+  let flip = function
+    | Arith.Num_lt -> Arith.Num_gt | Num_gt -> Num_lt | Num_le -> Num_ge | Num_ge -> Num_le
+    | Dnum_lt -> Dnum_gt | Dnum_gt -> Dnum_lt | Dnum_le -> Dnum_ge | Dnum_ge -> Dnum_le | o -> o in
+  let op, x, y = match flat_operand st r x, flat_operand st r y with
+    | (`Const _ as c), (`Slot _ as v) -> (flip op, v, c)
+    | u, v -> (op, u, v) in
+  match op, x, y with
+  | (Num_lt | Dnum_lt), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) < n.(j))
+  | (Num_lt | Dnum_lt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) < q)
+  | (Num_le | Dnum_le), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) <= n.(j))
+  | (Num_le | Dnum_le), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) <= q)
+  | (Num_gt | Dnum_gt), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) > n.(j))
+  | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) > q)
+  | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) >= n.(j))
+  | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) >= q)
+  | _ -> None
+
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
    the comparisons of two nums, NOT, AND and OR. *)
 and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
   let compare op x (y : Ir.expr) =
+    match flat_compare st r op x y with
+    | Some _ as flat -> flat
+    | None ->
     match op, y.e with
     | (Arith.Num_lt | Num_le | Num_gt | Num_ge | Equal | Not_equal), Literal (V.Num q as v) ->
         (* A num literal on the right: compared without a call. *)
-        let own = match x.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        let own = match x.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
         let x = match own with
           | Some i -> fun a -> a.store.(i)
           | None -> expr st r ~at x in
@@ -873,10 +1099,10 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
         (* A dnum literal on the right: compared without a call. *)
         let x0 = x in
         let x = match x.e with
-          | Read (Whole (Local i)) when local_access r i = Own -> fun a -> a.store.(i)
+          | Read (Whole (Local i)) when local_access st r i = Own -> fun a -> a.store.(i)
           | _ -> expr st r ~at x in
         let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
-        let own = match x0.e with Read (Whole (Local i)) when local_access r i = Own -> Some i | _ -> None in
+        let own = match x0.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
         Some (match op, own with
             (* an own slot on the left, read without a call *)
             | Dnum_lt, Some i -> fun a -> (match a.store.(i) with V.Dnum p -> p < q | u -> slow u)
@@ -930,9 +1156,9 @@ and slot_present (r : routine) s : act -> bool =
   | Global _ -> fun _ -> false
   | Local i when i >= Array.length r.parameters -> fun _ -> false
   | Local i -> (
-      match local_access r i with
+      match parameter_access r i with
       | Optional_own | Optional_alias -> fun a -> a.ext.present.(i)
-      | Own | Alias -> fun _ -> true)
+      | Own | Alias | Flat_num _ | Flat_dnum _ -> fun _ -> true)
 
 (* Whether an alias argument denotes module data, seen through the parameters it goes through
    (§4.15: CONNECT's target). *)
@@ -1008,7 +1234,7 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
           fun _ (c : act) ->
             c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind_const;
             c.ext.module_data.(i) <- known_data
-      | Whole (Local s) when local_access caller s = Own && not through_alias && not p.p_optional ->
+      | Whole (Local s) when local_access st caller s = Own && not through_alias && not p.p_optional ->
           (* an own slot of the caller (not a parameter bound elsewhere): [refused] is None *)
           fun a (c : act) ->
             c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind_const;
@@ -1019,7 +1245,7 @@ and binder st (caller : routine) ~at (callee : routine) c_arguments i (arg : arg
             c.ext.boxes.(i) <- globals; c.ext.idx.(i) <- g; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
             if p.p_optional then c.ext.present.(i) <- true
-      | Whole (Local s) when local_access caller s = Own ->
+      | Whole (Local s) when local_access st caller s = Own ->
           fun a (c : act) ->
             c.ext.boxes.(i) <- a.store; c.ext.idx.(i) <- s; c.ext.bound.(i) <- kind a;
             c.ext.module_data.(i) <- module_data a;
@@ -1301,7 +1527,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             | By_value e, false -> Some (`Value (expr st caller ~at e, "the copy for the parameter " ^ p.p_name))
             | By_reference (Whole (Global g), kind), true -> Some (`Global (g, kind))
             | By_reference (Whole (Local s), kind), true
-              when local_access caller s = Own && not (s < Array.length caller.parameters
+              when local_access st caller s = Own && not (s < Array.length caller.parameters
                                                        && is_alias caller.parameters.(s)) ->
                 Some (`Own (s, kind))
             | _ -> None) arguments in
@@ -1323,7 +1549,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
           | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
               fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
         fun a ->
-          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None } in
+          let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
+                     nums = [||] } in
           let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
                     result = no_value; nest = 0; memory = 0 } in
           for m = 0 to nv - 1 do
@@ -1428,7 +1655,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   let shared = Array.mapi (fun i (source : Closure_call.source) ->
       match source with
       | Closure_call.Value { e = Read (Whole (Local j)); _ } | Closure_call.Read (Whole (Local j)) ->
-          local_access caller j = Own && reads_only_parameter callee i
+          local_access st caller j = Own && reads_only_parameter callee i
       | _ -> false) sources in
   let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
@@ -1523,8 +1750,8 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
   in
   match args with
   | [||] -> fun a -> quick a (small_store size) 0
-  | [| _ |] when size = 1 && own_step (fun i -> local_access caller i = Own) sources.(0) <> None ->
-      let i, op, v, q = Option.get (own_step (fun i -> local_access caller i = Own) sources.(0)) in
+  | [| _ |] when size = 1 && own_step (fun i -> local_access st caller i = Own) sources.(0) <> None ->
+      let i, op, v, q = Option.get (own_step (fun i -> local_access st caller i = Own) sources.(0)) in
       let w0 = whats.(0) in
       let slow u = check st ~at (Arith.binary op u v) in
       let sub = op = Arith.Num_sub in
@@ -1780,13 +2007,14 @@ and activation_shape (r : routine) =
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
     store = small_store size;
+   
     ext = (if own_extension then
              { boxes = (if aliases then small_boxes n else [||]);
                idx = (if aliases then small_ints n else [||]);
                present = (if optional then small_present n else [||]);
                bound = (if aliases then small_kinds n else [||]);
                module_data = (if aliases then small_bools n else [||]);
-               retries = 0; current = None }
+               retries = 0; current = None; nums = [||] }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
 
@@ -2028,6 +2256,15 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         | Error "" -> raise (Halt (Outcome.Stuck "a signal assigned a value that is not a num"))
         | Error name -> fail st ~at name in
       match place with
+      | Whole (Local i) when (match local_access st r i with Flat_num _ | Flat_dnum _ -> true | _ -> false) ->
+          (* a flat slot (see [flat]): the value computed unboxed, stored in place *)
+          let k, box = match local_access st r i with
+            | Flat_dnum k -> (k, fun x -> V.Dnum x)
+            | Flat_num k -> (k, fun x -> V.Num x)
+            | _ -> (-1, fun x -> V.Num x) in
+          let f = flat_store st r ~at k e in
+          if st.observe then fun a -> f a; observe_flat st a i (box a.ext.nums.(k)); true
+          else fun a -> f a; true
       | _ when st.observe ->
           let l = locate st r ~at place in
           fun a ->
@@ -2038,7 +2275,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             true
       | Whole (Global i) when not (CC.is_signal st.globals.(i)) ->
           let g = st.globals in fun a -> g.(i) <- copy (value a); true
-      | Whole (Local i) when local_access r i = Own && not (own_signal i)
+      | Whole (Local i) when local_access st r i = Own && not (own_signal i)
                              && (match e.e with
                                  | Binary ((Num_add | Num_sub | Dnum_add | Dnum_sub),
                                            { e = Read (Whole (Local j)); _ }, _) -> j = i
@@ -2080,14 +2317,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                      | V.Dnum p, V.Dnum q -> double_num st ~at (if sub then p -. q else p +. q)
                      | _ -> slow u w);
                  true)
-      | Whole (Local i) when local_access r i = Own && not (own_signal i)
+      | Whole (Local i) when local_access st r i = Own && not (own_signal i)
                              && (match e.e with
                                  | Call { callee = Routine k; _ } -> returns_own_value st.program.routines.(k)
                                  | _ -> false) ->
           fun a -> a.store.(i) <- value a; true
-      | Whole (Local i) when local_access r i = Own && not (own_signal i) ->
+      | Whole (Local i) when local_access st r i = Own && not (own_signal i) ->
           fun a -> a.store.(i) <- copy (value a); true
-      | Whole (Local i) when local_access r i = Alias
+      | Whole (Local i) when local_access st r i = Alias
                              && (match e.e with
                                  | Binary ((Num_add | Num_sub), { e = Read (Whole (Local j)); _ }, _) -> j = i
                                  | _ -> false) ->
@@ -2118,7 +2355,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                    | V.Num p, V.Num q -> single_num st ~at (if negate then p -. q else p +. q)
                    | _ -> slow u w in
                  store box j v; true)
-      | Whole (Local i) when local_access r i = Alias ->
+      | Whole (Local i) when local_access st r i = Alias ->
           (* an alias parameter: where it is bound, located before the value (as below) *)
           fun a ->
             let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
@@ -2138,12 +2375,35 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
              | _ -> comps.(k) <- copy v);
             true
-      | Element (Whole w, [| ix |]) when plain_whole r w ->
+      | Element (Whole w, [| ix |]) when plain_whole st r w ->
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
           let container = read st r ~at (Whole w) in
           (match index_at st r ~at ix, w, ix.e with
-           | Some _, Global g, Read (Whole (Local i)) ->
+           | Some _, Global g, Read (Whole (Local i)) when flat_num st r i <> None ->
+               (* module data's array, its index a flat slot (see [flat]) *)
+               let k = Option.get (flat_num st r i) and globals = st.globals in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let j = index_float st ~at a.ext.nums.(k) (Array.length elements) in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+             when flat_num st r i <> None ->
+               let k = Option.get (flat_num st r i) and globals = st.globals and general = expr st r ~at ix in
+               let q = if op = Arith.Num_sub then -. q else q in
+               fun a ->
+                 let elements = parts globals.(g) in
+                 let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
+                 let v = value a in
+                 (match elements.(j) with
+                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+                  | _ -> elements.(j) <- copy v);
+                 true
+           | Some _, Global g, Read (Whole (Local i)) when local_access st r i = Own ->
                (* module data's array, its index computed in the same closure *)
                let globals = st.globals in
                fun a ->
@@ -2155,7 +2415,8 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                   | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
                   | _ -> elements.(j) <- copy v);
                  true
-           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
+             when local_access st r i = Own ->
                let general = expr st r ~at ix in
                let q = if op = Arith.Num_sub then -. q else q in
                let globals = st.globals in
@@ -2312,7 +2573,9 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
       let step = Option.map number step in
       let body = block loop_body in
       let empty = Array.length loop_body.body = 0 in
+      let flat = match local_access st r variable with Flat_num k -> k | _ -> -1 in
       fun a ->
+        let nums = if flat >= 0 then flat_values st a else a.ext.nums in
         let lo = from_ a in
         let hi = to_ a in
         let step = match step with Some f -> f a | None -> if lo > hi then -1. else 1. in
@@ -2325,7 +2588,7 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           let i = ref (int_of_float lo) and continue = ref true and goes_on = ref true and round = ref false in
           while !continue && (if s >= 0 then !i <= hi else !i >= hi) do
             tick st;
-            a.store.(variable) <- V.Num (float_of_int !i);
+            if flat >= 0 then nums.(flat) <- float_of_int !i else a.store.(variable) <- V.Num (float_of_int !i);
             (match body a with
              | true -> if empty then (if !round then pass_turn st else round := true); at_round st a
              | false -> continue := false; goes_on := false
@@ -2339,8 +2602,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
         let v = ref lo and continue = ref true and goes_on = ref true and round = ref false in
         while !continue && (if step >= 0. then !v <= hi else !v >= hi) do
           tick st;
-          a.store.(variable) <- V.Num !v;
-          if st.observe then observe_store st a (a.store, variable);
+          if flat >= 0 then begin
+            nums.(flat) <- !v;
+            if st.observe then observe_flat st a variable (V.Num !v)
+          end
+          else begin
+            a.store.(variable) <- V.Num !v;
+            if st.observe then observe_store st a (a.store, variable)
+          end;
           (match body a with
            | true ->
                (* R-14-o: the turn ends after the variable stepped and the empty body passed
@@ -2457,7 +2726,7 @@ and goto_stmt acc (s : stmt) =
    operand first, §3.1), RETURN's value the function's (§4.10). Each statement is entered as
    [block] enters it; the run is [valued_body]'s general form's, step for step. *)
 let guarded_return st (r : routine) (b : Ir.block) : (act -> V.t) option =
-  let own i = local_access r i = Own in
+  let own i = local_access st r i = Own in
   match b.body with
   | [| { s = Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
                          { s = Return (Some e1); _ }); sat = at1; _ };
@@ -2528,13 +2797,13 @@ let valued_body st (r : routine) ~gotos : (act -> V.t) option =
           fun a -> tick st; at_statement st a; f a
       | Compact_if ({ e = Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q as v); _ }); _ },
                     { s = Return (Some e); _ })
-        when is_num_comparison op && local_access r i = Own -> (
+        when is_num_comparison op && local_access st r i = Own -> (
           (* IF own < k RETURN e; (the end of a recursion): the comparison in the statement's
              closure, as [condition] makes it, and an own slot returned in place *)
           let at = s.sat and rest = from (k + 1) in
           let slow u = V.bool_value (check st ~at (Arith.binary op u v)) in
           match e.e with
-          | Read (Whole (Local j)) when local_access r j = Own ->
+          | Read (Whole (Local j)) when local_access st r j = Own ->
               fun a -> tick st; at_statement st a;
                 if (match a.store.(i) with V.Num p -> compare_nums op p q | u -> slow u) then a.store.(j)
                 else rest a
@@ -2559,7 +2828,7 @@ let leading_guard (r : routine) ~gotos =
   let n = Array.length b.body in
   if r.kind <> Function || r.error <> None || r.undo <> None || Hashtbl.mem gotos b.id || n < 2
      || r.locals > 1 || Array.length r.parameters <> 1 || r.local_inits <> []
-     || local_access r 0 <> Own
+     || parameter_access r 0 <> Own
      || (match b.body.(n - 1).s with Return (Some _) -> false | _ -> true) then None
   else
     match b.body.(0).s with
@@ -2571,6 +2840,32 @@ let leading_guard (r : routine) ~gotos =
         | _ -> None)
     | _ -> None
 
+(* §2.21: routine data gets its initial value at each call. When the routine's first statement
+   assigns the whole of it from an expression that does not name it, and no handler (ERROR, UNDO,
+   BACKWARD) can run before that statement completes, nothing reads the initial value: the
+   assignment replaces it before anything could (an error in the expression leaves the routine,
+   and the slot with it). The memory budget still counts it. *)
+let first_assigned (r : routine) slot =
+  let rec names_place (p : place) = match p with
+    | Whole (Local k) -> k = slot
+    | Whole (Global _) | Unresolved _ -> false
+    | Element (p, ix) -> names_place p || Array.exists names ix
+    | Component (p, _) -> names_place p
+  and names (e : expr) = match e.e with
+    | Literal _ | Placeholder -> false
+    | Read p | Read_signal p -> names_place p
+    | Unary (_, x) | Fitted (x, _) -> names x
+    | Binary (_, x, y) | And (x, y) | Or (x, y) -> names x || names y
+    | Aggregate (xs, _) -> Array.exists names xs
+    | Call c -> Array.exists (function
+        | By_value e -> names e
+        | By_reference (p, _) -> names_place p
+        | Pass_on (Local k) -> k = slot
+        | Pass_on (Global _) | Absent | Present_switch -> false) c.arguments in
+  r.error = None && r.undo = None && r.backward = None
+  && Array.length r.body.body > 0
+  && (match r.body.body.(0).s with Assign (Whole (Local k), e) -> k = slot && not (names e) | _ -> false)
+
 let compile_routine st k =
   let r = st.program.routines.(k) in
   let gotos = Hashtbl.create 4 in
@@ -2581,15 +2876,27 @@ let compile_routine st k =
   let c_body = block ?top:c_handler st r ~handler:c_handler ~gotos r.body in
   let c_undo = Option.map (block st r ~handler:None ~gotos) r.undo in
   let inits = List.map (fun (slot, init) ->
-      match init with
-      | Init_default shape ->
+      match init, local_access st r slot with
+      | Init_default shape, (Flat_num k | Flat_dnum k) ->
+          let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
+          fun at (a : act) -> charge_active st a bytes what at; (flat_values st a).(k) <- 0.
+      | Init_expr e, ((Flat_num k | Flat_dnum k) as access) ->
+          let f = flat_store st r ~at:e.at k e in
+          let box x = match access with Flat_dnum _ -> V.Dnum x | _ -> V.Num x in
+          fun _ a ->
+            ignore (flat_values st a); f a;
+            if st.observe then observe_flat st a slot (box a.ext.nums.(k))
+      | Init_default shape, _ when first_assigned r slot ->
+          let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
+          fun at (a : act) -> charge_active st a bytes what at
+      | Init_default shape, _ ->
           (* Routine data counts in the memory budget while its routine is active: refused by
              the budget, it is never built. *)
           let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
           fun at (a : act) ->
             charge_active st a bytes what at;
             a.store.(slot) <- V.default_of shape
-      | Init_expr e ->
+      | Init_expr e, _ ->
           let f = expr st r ~at:e.at e in
           fun _ a ->
             a.store.(slot) <- V.copy (f a); if st.observe then observe_store st a (a.store, slot)) r.local_inits in
@@ -2645,7 +2952,7 @@ let initial_state ?(limits = Limits.default) ?(fuel = default_fuel) ?(stub_unmod
     max_time = host.max_time; move_owners = Recent.create Limits.move_owners;
     serve_trap = (fun _ _ _ -> ());
     undoing = []; kept = []; async_errors = []; user_calls = []; resuming = []; skip_undo = [];
-    next_cycle = false; cooperation } in
+    next_cycle = false; cooperation; flats = Rapid_syntax.Source.Table.create 16 } in
   (* Filled in place: Array.init of hundreds of fresh lazy values forces a minor collection. *)
   st.compiled <- make_filled (Array.length program.routines) not_compiled;
   (* A routine's closures live as long as the run: compiled at the collector's building pace
