@@ -785,6 +785,9 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
              let v = ix a in
              let elements = parts (container a) in
              elements.(index st ~at v (Array.length elements)))
+  | Component (Whole (Local i), k) when local_access st r i = Own ->
+      (* a component of an own slot's record (p.x), the record read in the same closure *)
+      fun a -> (parts a.store.(i)).(k)
   | Component (q, k) ->
       (* A component of a record, read where it is: [locate]'s component rule without building
          the location (the record's place is read as [locate] finds it). *)
@@ -2366,10 +2369,13 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             true
       | Component (q, k) ->
           (* As the general case below, the record located (its components) before the value,
-             without building the location. *)
-          let container = read st r ~at q in
+             without building the location; an own slot's record read in the same closure. *)
+          let container = match q with
+            | Whole (Local i) when local_access st r i = Own -> None
+            | _ -> Some (read st r ~at q) in
+          let i = match q with Whole (Local i) -> i | _ -> -1 in
           fun a ->
-            let comps = parts (container a) in
+            let comps = parts (match container with None -> a.store.(i) | Some c -> c a) in
             let v = value a in
             (match comps.(k) with
              | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
