@@ -1662,6 +1662,29 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | _ -> false) sources in
   let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  (* The bytes of all the copies, when each is known before the call: its parameter's type holds
+     no string (Value.bytes counts a value by its structure and its strings' lengths), and its
+     argument can neither fail nor change what the budget counts (a literal, a negated one, a
+     whole slot of module data or of the caller's own): then the copies fit or not all at once,
+     and the per-copy tests, in order, would all pass when the sum fits. *)
+  let fixed_copies =
+    let rec stringless (sh : V.shape) = match sh with
+      | S_string -> false
+      | S_num | S_dnum | S_bool | S_handle _ -> true
+      | S_record cs -> Array.for_all stringless cs
+      | S_array (_, c) -> stringless c in
+    let harmless (source : Closure_call.source) = match source with
+      | Value { e = Literal _ | Unary (Num_neg, { e = Literal (V.Num _); _ }); _ } -> true
+      | Value { e = Read (Whole (Global _)); _ } | Read (Whole (Global _)) -> true
+      | Value { e = Read (Whole (Local j)); _ } | Read (Whole (Local j)) ->
+          (match local_access st caller j with Own | Flat_num _ | Flat_dnum _ -> true | _ -> false)
+      | _ -> false in
+    let fixed i source =
+      let sh = callee.parameters.(i).p_default in
+      if harmless source && stringless sh then Some (V.bytes (V.default_of sh)) else None in
+    let each = Array.mapi fixed sources in
+    if Array.for_all Option.is_some each then Some (Array.fold_left (fun t b -> t + Option.get b) 0 each)
+    else None in
   let n = Array.length args in
   let size = if callee.locals < 1 then 1 else callee.locals in
   let act_bytes = activation_bytes callee in
@@ -1817,7 +1840,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       (* four arguments, each counted as it is made (the loop below), the slots built at once
          (no write barrier for each copy) *)
       let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
-      fun a ->
+      let counted a =
         let v0 = f0 a in let p = count_copy st ~at w0 v0 0 in let v0 = copy_arg 0 v0 in
         let v1 = f1 a in let p = count_copy st ~at w1 v1 p in let v1 = copy_arg 1 v1 in
         let v2 = f2 a in let p = count_copy st ~at w2 v2 p in let v2 = copy_arg 2 v2 in
@@ -1825,7 +1848,22 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
         let store = match size with
           | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
           | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
-        quick a store p
+        quick a store p in
+      (match fixed_copies with
+       | None -> counted
+       | Some total ->
+           (* the copies' bytes known (see [fixed_copies]): when all of them fit, no copy's test
+              can fail, and they are made without one; else [counted] finds the first that does
+              not fit *)
+           fun a ->
+             if total > limits.max_memory - st.memory then counted a
+             else
+               let v0 = copy_arg 0 (f0 a) in let v1 = copy_arg 1 (f1 a) in
+               let v2 = copy_arg 2 (f2 a) in let v3 = copy_arg 3 (f3 a) in
+               let store = match size with
+                 | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
+                 | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
+               quick a store total)
   | _ -> fun a ->
       let store = small_store size in
       let pending = ref 0 in
