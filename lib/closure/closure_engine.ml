@@ -2906,9 +2906,17 @@ let first_assigned (r : routine) slot =
         | By_reference (p, _) -> names_place p
         | Pass_on (Local k) -> k = slot
         | Pass_on (Global _) | Absent | Present_switch -> false) c.arguments in
+  (* a signal's data is not replaced by an assignment but written through (§2.16): its value,
+     the unconnected signal, is what the assignment finds *)
+  let rec plain (sh : V.shape) = match sh with
+    | S_handle _ -> false
+    | S_num | S_dnum | S_bool | S_string -> true
+    | S_record cs -> Array.for_all plain cs
+    | S_array (_, c) -> plain c in
   r.error = None && r.undo = None && r.backward = None
   && Array.length r.body.body > 0
   && (match r.body.body.(0).s with Assign (Whole (Local k), e) -> k = slot && not (names e) | _ -> false)
+  && (match List.assoc_opt slot r.local_inits with Some (Init_default sh) -> plain sh | _ -> false)
 
 let compile_routine st k =
   let r = st.program.routines.(k) in
