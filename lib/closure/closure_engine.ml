@@ -1544,14 +1544,16 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             (List.init n Fun.id) |> Array.of_list in
         let nv = Array.length values in
         let globals = st.globals in
-        let box (a : act) = function `Global _ -> globals | `Own _ -> a.store | `Value _ -> [||] in
-        let boxes_of = match d with
-          | [| d0 |] -> fun a -> [| box a d0 |]
-          | [| d0; d1 |] -> fun a -> [| box a d0; box a d1 |]
-          | [| d0; d1; d2 |] -> fun a -> [| box a d0; box a d1; box a d2 |]
-          | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
-              fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
-        fun a ->
+        (* each argument's container: the caller's slots (1), module data (0), none (2) *)
+        let kinds = Array.map (function `Global _ -> 0 | `Own _ -> 1 | `Value _ -> 2) d in
+        let box (a : act) k = if k = 1 then a.store else if k = 0 then globals else [||] [@@inline] in
+        let boxes_of = match kinds with
+          | [| k0 |] -> fun a -> [| box a k0 |]
+          | [| k0; k1 |] -> fun a -> [| box a k0; box a k1 |]
+          | [| k0; k1; k2 |] -> fun a -> [| box a k0; box a k1; box a k2 |]
+          | _ -> let k0 = kinds.(0) and k1 = kinds.(1) and k2 = kinds.(2) and k3 = kinds.(3) in
+              fun a -> [| box a k0; box a k1; box a k2; box a k3 |] in
+        let general a =
           let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
                      nums = [||] } in
           let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
@@ -1562,7 +1564,25 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             charge_pending st c (value_bytes v) what at;
             c.store.(i) <- copy v
           done;
-          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init in
+        match values with
+        | [| (0, f, what) |] when size <= 6 ->
+            (* one value, for the first parameter: the slots built with its copy in place (no
+               write barrier); the copy is made before it is counted, which nothing can see *)
+            fun a ->
+              let v = f a in
+              let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0;
+                          current = None; nums = [||] } in
+              let w = copy v in
+              let store = match size with
+                | 1 -> [| w |] | 2 -> [| w; v_false |] | 3 -> [| w; v_false; v_false |]
+                | 4 -> [| w; v_false; v_false; v_false |] | 5 -> [| w; v_false; v_false; v_false; v_false |]
+                | _ -> [| w; v_false; v_false; v_false; v_false; v_false |] in
+              let c = { routine = callee; store; ext; level = a.level + 1; parent = a;
+                        result = no_value; nest = 0; memory = 0 } in
+              charge_pending st c (value_bytes v) what at;
+              enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+        | _ -> general
       end
       else
       (* The common numbers of arguments without a loop over the binders. *)
