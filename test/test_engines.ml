@@ -906,6 +906,25 @@ let memory_budget () =
     VAR num t := 0;
     down4 1, "abcdefghijabcdefghijabcdefghijabcdefghijabcdefghij", t, calls;
   ENDPROC
+  FUNC pos offs4(pos p, num dx, num dy, num dz)
+    VAR pos q;
+    q := p;
+    q.x := p.x + dx;
+    q.z := q.z + dz;
+    RETURN q;
+  ENDFUNC
+  PROC down5(num n, pos p)
+    VAR pos r;
+    VAR num k := 1;
+    r := offs4(p, 1, -1, 0.5);
+    r := offs4(r, k, n, k);
+    TPWrite "depth5 " \Num:=r.x;
+    down5 n + 1, r;
+  ENDPROC
+  PROC main5()
+    VAR pos p;
+    down5 1, p;
+  ENDPROC
 ENDMODULE
 |rapid} in
   let program = load_text "mem" text in
@@ -919,7 +938,7 @@ ENDMODULE
            | _ -> Alcotest.failf "budget %d, %s: %s / %s" max_memory entry (outcome_text m_outcome) (outcome_text c_outcome));
           (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "budget %d, %s: %s" max_memory entry d);
           Alcotest.(check bool) "some calls ran" true (List.length c_events > 4))
-        [ "main"; "main2"; "main3"; "main4" ])
+        [ "main"; "main2"; "main3"; "main4"; "main5" ])
     [ 40_000; 60_000; 90_001 ]
 
 (* Found by the fuzzing campaign (rapid-sem fuzz --seed 7 --mismatching, program 771): an index

@@ -785,6 +785,9 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
              let v = ix a in
              let elements = parts (container a) in
              elements.(index st ~at v (Array.length elements)))
+  | Component (Whole (Local i), k) when local_access st r i = Own ->
+      (* a component of an own slot's record (p.x), the record read in the same closure *)
+      fun a -> (parts a.store.(i)).(k)
   | Component (q, k) ->
       (* A component of a record, read where it is: [locate]'s component rule without building
          the location (the record's place is read as [locate] finds it). *)
@@ -1541,14 +1544,16 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             (List.init n Fun.id) |> Array.of_list in
         let nv = Array.length values in
         let globals = st.globals in
-        let box (a : act) = function `Global _ -> globals | `Own _ -> a.store | `Value _ -> [||] in
-        let boxes_of = match d with
-          | [| d0 |] -> fun a -> [| box a d0 |]
-          | [| d0; d1 |] -> fun a -> [| box a d0; box a d1 |]
-          | [| d0; d1; d2 |] -> fun a -> [| box a d0; box a d1; box a d2 |]
-          | _ -> let d0 = d.(0) and d1 = d.(1) and d2 = d.(2) and d3 = d.(3) in
-              fun a -> [| box a d0; box a d1; box a d2; box a d3 |] in
-        fun a ->
+        (* each argument's container: the caller's slots (1), module data (0), none (2) *)
+        let kinds = Array.map (function `Global _ -> 0 | `Own _ -> 1 | `Value _ -> 2) d in
+        let box (a : act) k = if k = 1 then a.store else if k = 0 then globals else [||] [@@inline] in
+        let boxes_of = match kinds with
+          | [| k0 |] -> fun a -> [| box a k0 |]
+          | [| k0; k1 |] -> fun a -> [| box a k0; box a k1 |]
+          | [| k0; k1; k2 |] -> fun a -> [| box a k0; box a k1; box a k2 |]
+          | _ -> let k0 = kinds.(0) and k1 = kinds.(1) and k2 = kinds.(2) and k3 = kinds.(3) in
+              fun a -> [| box a k0; box a k1; box a k2; box a k3 |] in
+        let general a =
           let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
                      nums = [||] } in
           let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
@@ -1559,7 +1564,25 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             charge_pending st c (value_bytes v) what at;
             c.store.(i) <- copy v
           done;
-          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+          enter st callee c ~code ~r_index:k ~at ~is_function ~has_init in
+        match values with
+        | [| (0, f, what) |] when size <= 6 ->
+            (* one value, for the first parameter: the slots built with its copy in place (no
+               write barrier); the copy is made before it is counted, which nothing can see *)
+            fun a ->
+              let v = f a in
+              let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0;
+                          current = None; nums = [||] } in
+              let w = copy v in
+              let store = match size with
+                | 1 -> [| w |] | 2 -> [| w; v_false |] | 3 -> [| w; v_false; v_false |]
+                | 4 -> [| w; v_false; v_false; v_false |] | 5 -> [| w; v_false; v_false; v_false; v_false |]
+                | _ -> [| w; v_false; v_false; v_false; v_false; v_false |] in
+              let c = { routine = callee; store; ext; level = a.level + 1; parent = a;
+                        result = no_value; nest = 0; memory = 0 } in
+              charge_pending st c (value_bytes v) what at;
+              enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+        | _ -> general
       end
       else
       (* The common numbers of arguments without a loop over the binders. *)
@@ -1659,6 +1682,29 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | _ -> false) sources in
   let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
+  (* The bytes of all the copies, when each is known before the call: its parameter's type holds
+     no string (Value.bytes counts a value by its structure and its strings' lengths), and its
+     argument can neither fail nor change what the budget counts (a literal, a negated one, a
+     whole slot of module data or of the caller's own): then the copies fit or not all at once,
+     and the per-copy tests, in order, would all pass when the sum fits. *)
+  let fixed_copies =
+    let rec stringless (sh : V.shape) = match sh with
+      | S_string -> false
+      | S_num | S_dnum | S_bool | S_handle _ -> true
+      | S_record cs -> Array.for_all stringless cs
+      | S_array (_, c) -> stringless c in
+    let harmless (source : Closure_call.source) = match source with
+      | Value { e = Literal _ | Unary (Num_neg, { e = Literal (V.Num _); _ }); _ } -> true
+      | Value { e = Read (Whole (Global _)); _ } | Read (Whole (Global _)) -> true
+      | Value { e = Read (Whole (Local j)); _ } | Read (Whole (Local j)) ->
+          (match local_access st caller j with Own | Flat_num _ | Flat_dnum _ -> true | _ -> false)
+      | _ -> false in
+    let fixed i source =
+      let sh = callee.parameters.(i).p_default in
+      if harmless source && stringless sh then Some (V.bytes (V.default_of sh)) else None in
+    let each = Array.mapi fixed sources in
+    if Array.for_all Option.is_some each then Some (Array.fold_left (fun t b -> t + Option.get b) 0 each)
+    else None in
   let n = Array.length args in
   let size = if callee.locals < 1 then 1 else callee.locals in
   let act_bytes = activation_bytes callee in
@@ -1814,7 +1860,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       (* four arguments, each counted as it is made (the loop below), the slots built at once
          (no write barrier for each copy) *)
       let w0 = whats.(0) and w1 = whats.(1) and w2 = whats.(2) and w3 = whats.(3) in
-      fun a ->
+      let counted a =
         let v0 = f0 a in let p = count_copy st ~at w0 v0 0 in let v0 = copy_arg 0 v0 in
         let v1 = f1 a in let p = count_copy st ~at w1 v1 p in let v1 = copy_arg 1 v1 in
         let v2 = f2 a in let p = count_copy st ~at w2 v2 p in let v2 = copy_arg 2 v2 in
@@ -1822,7 +1868,22 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
         let store = match size with
           | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
           | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
-        quick a store p
+        quick a store p in
+      (match fixed_copies with
+       | None -> counted
+       | Some total ->
+           (* the copies' bytes known (see [fixed_copies]): when all of them fit, no copy's test
+              can fail, and they are made without one; else [counted] finds the first that does
+              not fit *)
+           fun a ->
+             if total > limits.max_memory - st.memory then counted a
+             else
+               let v0 = copy_arg 0 (f0 a) in let v1 = copy_arg 1 (f1 a) in
+               let v2 = copy_arg 2 (f2 a) in let v3 = copy_arg 3 (f3 a) in
+               let store = match size with
+                 | 4 -> [| v0; v1; v2; v3 |] | 5 -> [| v0; v1; v2; v3; v_false |]
+                 | _ -> [| v0; v1; v2; v3; v_false; v_false |] in
+               quick a store total)
   | _ -> fun a ->
       let store = small_store size in
       let pending = ref 0 in
@@ -2366,10 +2427,13 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             true
       | Component (q, k) ->
           (* As the general case below, the record located (its components) before the value,
-             without building the location. *)
-          let container = read st r ~at q in
+             without building the location; an own slot's record read in the same closure. *)
+          let container = match q with
+            | Whole (Local i) when local_access st r i = Own -> None
+            | _ -> Some (read st r ~at q) in
+          let i = match q with Whole (Local i) -> i | _ -> -1 in
           fun a ->
-            let comps = parts (container a) in
+            let comps = parts (match container with None -> a.store.(i) | Some c -> c a) in
             let v = value a in
             (match comps.(k) with
              | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
@@ -2862,9 +2926,17 @@ let first_assigned (r : routine) slot =
         | By_reference (p, _) -> names_place p
         | Pass_on (Local k) -> k = slot
         | Pass_on (Global _) | Absent | Present_switch -> false) c.arguments in
+  (* a signal's data is not replaced by an assignment but written through (§2.16): its value,
+     the unconnected signal, is what the assignment finds *)
+  let rec plain (sh : V.shape) = match sh with
+    | S_handle _ -> false
+    | S_num | S_dnum | S_bool | S_string -> true
+    | S_record cs -> Array.for_all plain cs
+    | S_array (_, c) -> plain c in
   r.error = None && r.undo = None && r.backward = None
   && Array.length r.body.body > 0
   && (match r.body.body.(0).s with Assign (Whole (Local k), e) -> k = slot && not (names e) | _ -> false)
+  && (match List.assoc_opt slot r.local_inits with Some (Init_default sh) -> plain sh | _ -> false)
 
 let compile_routine st k =
   let r = st.program.routines.(k) in

@@ -6,13 +6,14 @@ MODULE routine_data_num_and_dnum
 ! @section 3.12
 ! @section 5.2
 ! @expect ok
-! @description Routine data of type num and dnum, and FOR variables, in the ways a routine uses them: each activation of a recursive function has its own (acc and i below); routine data changed through Incr, an INOUT parameter and a late-bound call by reference keeps what they wrote; comparisons with the literal on either side; a num product rounded to single (4097 * 4097 is 16785408); a dnum product exact; an infinite product is ERR_OVERFLOW and leaves the variable as it was. Routine data of a record type has its initial value when the statement that first assigns it reads it, or when the error handler reads it after that statement failed.
+! @description Routine data of type num and dnum, and FOR variables, in the ways a routine uses them: each activation of a recursive function has its own (acc and i below); routine data changed through Incr, an INOUT parameter and a late-bound call by reference keeps what they wrote; comparisons with the literal on either side; a num product rounded to single (4097 * 4097 is 16785408); a dnum product exact; an infinite product is ERR_OVERFLOW and leaves the variable as it was. Routine data of a record type has its initial value when the statement that first assigns it reads it, or when the error handler reads it after that statement failed; routine data of a signal type is the unconnected signal when its routine's first statement assigns it, which is then ERR_NO_ALIASIO_DEF (§2.16).
 ! @output sum 220 385
 ! @output incr 3 inout 13 late 23
 ! @output while 4.5 3
 ! @output 16785408 16785409
 ! @output handled 1120
 ! @output kept 1E+30
+! @output signal 1117
 ! @output pos [1,0,5] [0,0,0] [5,0,0]
 ! @exit 0
   FUNC num sumdown(num n)
@@ -35,6 +36,11 @@ MODULE routine_data_num_and_dnum
   ERROR
     RETURN q;
   ENDFUNC
+  PROC set_signal()
+    VAR signaldo d;
+    d := 1;
+    TPWrite "set";
+  ENDPROC
   PROC add_ten(INOUT num v)
     v := v + 10;
   ENDPROC
@@ -65,9 +71,14 @@ MODULE routine_data_num_and_dnum
     TPWrite NumToStr(m, 0) + " " + DnumToStr(dm, 0);
     o := o * o;
     TPWrite "kept " + NumToStr(o, 0\Exp);
+    set_signal;
     TPWrite "pos " + ValToStr(from_itself()) + " " + ValToStr(divided(0)) + " " + ValToStr(divided(2));
   ERROR
-    TPWrite "handled " \Num:=ERRNO;
+    IF ERRNO = 1117 THEN
+      TPWrite "signal " \Num:=ERRNO;
+    ELSE
+      TPWrite "handled " \Num:=ERRNO;
+    ENDIF
     TRYNEXT;
   ENDPROC
 ENDMODULE
