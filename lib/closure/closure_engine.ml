@@ -1019,28 +1019,34 @@ and flat_operand st (r : routine) (e : Ir.expr) =
 
 (* x op y into the flat slot k, x a flat slot and y one or a literal: as [binary] computes it (a
    num rounded to single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c). *)
-and flat_arith st ~at (op : Arith.binary) k x y : (act -> unit) option =
+and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
   match op, x, y with
-  | Num_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. n.(j)))
-  | Num_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. q))
-  | Num_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. n.(j)))
-  | Num_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. q))
-  | Num_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. n.(j)))
-  | Num_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. q))
-  | Dnum_add, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. n.(j)))
-  | Dnum_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. q))
-  | Dnum_sub, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. n.(j)))
-  | Dnum_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. q))
-  | Dnum_mul, `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)))
-  | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q))
+  | Num_add, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. n.(j)); true)
+  | Num_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) +. q); true)
+  | Num_sub, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. n.(j)); true)
+  | Num_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) -. q); true)
+  | Num_mul, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. n.(j)); true)
+  | Num_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- single_float st ~at (n.(i) *. q); true)
+  | Dnum_add, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. n.(j)); true)
+  | Dnum_add, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) +. q); true)
+  | Dnum_sub, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. n.(j)); true)
+  | Dnum_sub, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) -. q); true)
+  | Dnum_mul, `Slot i, `Slot j -> Some (fun a ->
+      let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)); true)
+  | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q); true)
   | _ -> None
 
 (* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
-   closure. *)
-and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> unit =
+   closure; the assignment's closure itself (it goes on: true). *)
+and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
   let general () =
     let f = expr st r ~at e in
-    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v) in
+    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
   match e.e with
   | Binary (op, x, y) -> (
       match flat_arith st ~at op k (flat_operand st r x) (flat_operand st r y) with
@@ -1048,8 +1054,8 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> unit =
       | None -> general ())
   | _ ->
       match flat_operand st r e with
-      | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j)
-      | `Const q -> fun a -> a.ext.nums.(k) <- q
+      | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j); true
+      | `Const q -> fun a -> a.ext.nums.(k) <- q; true
       | `Other -> general ()
 
 (* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
@@ -2324,8 +2330,8 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             | Flat_num k -> (k, fun x -> V.Num x)
             | _ -> (-1, fun x -> V.Num x) in
           let f = flat_store st r ~at k e in
-          if st.observe then fun a -> f a; observe_flat st a i (box a.ext.nums.(k)); true
-          else fun a -> f a; true
+          if st.observe then fun a -> ignore (f a); observe_flat st a i (box a.ext.nums.(k)); true
+          else f
       | _ when st.observe ->
           let l = locate st r ~at place in
           fun a ->
@@ -2956,7 +2962,7 @@ let compile_routine st k =
           let f = flat_store st r ~at:e.at k e in
           let box x = match access with Flat_dnum _ -> V.Dnum x | _ -> V.Num x in
           fun _ a ->
-            ignore (flat_values st a); f a;
+            ignore (flat_values st a); ignore (f a);
             if st.observe then observe_flat st a slot (box a.ext.nums.(k))
       | Init_default shape, _ when first_assigned r slot ->
           let bytes = V.shape_bytes shape and what = "the routine data of " ^ r.name in
