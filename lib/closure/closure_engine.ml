@@ -1058,6 +1058,22 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
       | `Const q -> fun a -> a.ext.nums.(k) <- q; true
       | `Other -> general ()
 
+(* An element of module data's array whose index is a flat slot, or a flat slot and a num literal
+   added or taken away (a{j}, a{j + 1}): the array, the slot, the literal (0 for none), and the
+   index's closure for [index_sum]'s general case. *)
+and flat_element st (r : routine) ~at (e : Ir.expr) =
+  match e.e with
+  | Read (Element (Whole (Global g), [| ix |])) -> (
+      match ix.e with
+      | Read (Whole (Local i)) -> (
+          match flat_num st r i with Some k -> Some (g, k, 0., expr st r ~at ix) | None -> None)
+      | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) -> (
+          match flat_num st r i with
+          | Some k -> Some (g, k, (if op = Arith.Num_sub then -. q else q), expr st r ~at ix)
+          | None -> None)
+      | _ -> None)
+  | _ -> None
+
 (* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
 and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option =
   let flip = function
@@ -1081,6 +1097,38 @@ and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option
    the comparisons of two nums, NOT, AND and OR. *)
 and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
   let compare op x (y : Ir.expr) =
+    match op, flat_element st r ~at x, flat_element st r ~at y with
+    | (Arith.Num_lt | Num_le | Num_gt | Num_ge), Some (g1, k1, q1, gen1), Some (g2, k2, q2, gen2) ->
+        (* two elements of module data's arrays, each indexed by a flat slot or a flat slot and
+           a literal ([index_sum]), read in the comparison's closure, the left one first *)
+        let globals = st.globals in
+        let slow u v = V.bool_value (check st ~at (Arith.binary op u v)) in
+        Some (match op with
+            | Arith.Num_lt -> fun a ->
+                let e1 = parts globals.(g1) in
+                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let e2 = parts globals.(g2) in
+                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                (match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
+            | Num_le -> fun a ->
+                let e1 = parts globals.(g1) in
+                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let e2 = parts globals.(g2) in
+                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                (match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
+            | Num_gt -> fun a ->
+                let e1 = parts globals.(g1) in
+                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let e2 = parts globals.(g2) in
+                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                (match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
+            | _ -> fun a ->
+                let e1 = parts globals.(g1) in
+                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let e2 = parts globals.(g2) in
+                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                (match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v))
+    | _ ->
     match flat_compare st r op x y with
     | Some _ as flat -> flat
     | None ->
