@@ -401,7 +401,7 @@ let planned st id =
 
 let arm_end_joints st now =
   match st.last_planned with
-  | Some id when P.segment_span st.planner id <> None -> P.target_joints st.planner id
+  | Some id when P.has_segment st.planner id -> P.target_joints st.planner id
   | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> first_target st)
 
 let tool0_value () =
@@ -471,7 +471,7 @@ let move ctx st name args =
   | Some speed, Some zone, Some tool -> (
       let start = arm_end_joints st now in
       let start_ext = match st.last_planned with
-        | Some id when P.segment_span st.planner id <> None -> P.target_external st.planner id
+        | Some id when P.has_segment st.planner id -> P.target_external st.planner id
         | _ -> current_external_at st now in
       let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it

@@ -660,34 +660,48 @@ let target_external t id =
 
 let base t e = Base_frame.in_world (Kinematics.robot t.kin) e
 
-let piece_ids pc = match pc.shape with
-  | Part sg -> (sg.id, sg.id) | Blend b -> (b.a.id, b.b.id) | Joint_blend b -> (b.a.id, b.b.id)
+(* A piece's oldest and newest move ids, each by itself: the walks below ask for them on every
+   piece they pass, seven walks a move, and a pair would be an allocation each time. *)
+let piece_oldest pc = match pc.shape with Part sg -> sg.id | Blend b -> b.a.id | Joint_blend b -> b.a.id
+let piece_newest pc = match pc.shape with Part sg -> sg.id | Blend b -> b.b.id | Joint_blend b -> b.b.id
 
 (* Pieces are in time order and segment ids grow with time: the first piece of a move is found by
    bisection on the pieces' newest ids, and its pieces follow it. *)
-let segment_span t id =
-  let pcs = t.cur.pieces in
+let first_piece pcs id =
   let lo_i = ref (Vec.first pcs) and hi_i = ref (Vec.stop pcs) in
   while !lo_i < !hi_i do
     let mid = (!lo_i + !hi_i) / 2 in
-    if snd (piece_ids (Vec.get pcs mid)) < id then lo_i := mid + 1 else hi_i := mid
+    if piece_newest (Vec.get pcs mid) < id then lo_i := mid + 1 else hi_i := mid
   done;
+  !lo_i
+
+let segment_span t id =
+  let pcs = t.cur.pieces in
   let lo = ref infinity and hi = ref neg_infinity in
-  let rec forward i =
-    if i < Vec.stop pcs then begin
-      let pc = Vec.get pcs i in
-      let oldest, newest = piece_ids pc in
-      if oldest <= id then begin
-        if newest = id || oldest = id then begin
-          lo := Float.min !lo pc.tm.t0;
-          (* The corner after the move is not its own: it ends where its corner begins. *)
-          if newest = id then hi := Float.max !hi pc.tm.t1 else hi := Float.max !hi pc.tm.t0
-        end;
-        forward (i + 1)
-      end
-    end in
-  forward !lo_i;
+  let i = ref (first_piece pcs id) and stop = Vec.stop pcs in
+  while !i < stop && piece_oldest (Vec.get pcs !i) <= id do
+    let pc = Vec.get pcs !i in
+    let oldest = piece_oldest pc and newest = piece_newest pc in
+    if newest = id || oldest = id then begin
+      lo := Float.min !lo pc.tm.t0;
+      (* The corner after the move is not its own: it ends where its corner begins. *)
+      if newest = id then hi := Float.max !hi pc.tm.t1 else hi := Float.max !hi pc.tm.t0
+    end;
+    incr i
+  done;
   if !lo = infinity then None else Some (real_time t.cur !lo, real_time t.cur !hi)
+
+(* [segment_span t id <> None] without the span's real times: whether a piece of the queue is
+   the move's. *)
+let has_segment t id =
+  let pcs = t.cur.pieces in
+  let i = ref (first_piece pcs id) and stop = Vec.stop pcs and found = ref false in
+  while (not !found) && !i < stop && piece_oldest (Vec.get pcs !i) <= id do
+    let pc = Vec.get pcs !i in
+    if piece_newest pc = id || piece_oldest pc = id then found := true;
+    incr i
+  done;
+  !found
 
 (* [segment_span] for several moves in one walk back through the queue: a check of the moves
    still running asks for all of them at once, and one walk per move made that quadratic in
@@ -751,7 +765,7 @@ let forget t ~before ~keep =
   let pcs = l.pieces in
   let open_idx = match l.open_seg with Some (_, i) when i >= 0 -> i | _ -> max_int in
   let rec drop i =
-    if i + 1 < Vec.stop pcs && i < open_idx && snd (piece_ids (Vec.get pcs i)) < keep
+    if i + 1 < Vec.stop pcs && i < open_idx && piece_newest (Vec.get pcs i) < keep
        && (Vec.get pcs (i + 1)).tm.t0 <= hp then drop (i + 1)
     else i in
   Vec.forget_before pcs (drop (Vec.first pcs));
