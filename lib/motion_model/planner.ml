@@ -50,10 +50,16 @@ and figures = {
 
 (* The planner's axis vectors are twelve long: the arm's six axes, then extjoint's eax_a … eax_f
    (9E9 for an axis the robot does not have, constant, so interpolation keeps it exact). *)
-let arm q = Array.sub q 0 6
+(* Literals, not Array.sub, init and append: each of those is a call into the runtime, and a move
+   takes a dozen of these vectors apart or puts them together. *)
+let arm q = [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5) |]
 (* An unused component stays exactly 9E9 through interpolation's rounding. *)
-let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
-let join q e = Array.append (Array.sub q 0 6) e
+let ext q =
+  let e i = let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v in
+  [| e 0; e 1; e 2; e 3; e 4; e 5 |]
+let join q e =
+  if Array.length e <> 6 then Array.append (Array.sub q 0 6) e
+  else [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5); e.(0); e.(1); e.(2); e.(3); e.(4); e.(5) |]
 
 (* The flange in the world: through the robot's base frame (law F-base), which a track moves
    (law X-track). *)
