@@ -55,8 +55,9 @@ and figures = {
 let arm q = [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5) |]
 (* An unused component stays exactly 9E9 through interpolation's rounding. *)
 let ext q =
-  let e i = let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v in
-  [| e 0; e 1; e 2; e 3; e 4; e 5 |]
+  let e = [| q.(6); q.(7); q.(8); q.(9); q.(10); q.(11) |] in
+  for i = 0 to 5 do if Ext_axes.is_unused e.(i) then e.(i) <- Ext_axes.unused done;
+  e
 let join q e =
   if Array.length e <> 6 then Array.append (Array.sub q 0 6) e
   else [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5); e.(0); e.(1); e.(2); e.(3); e.(4); e.(5) |]
@@ -166,9 +167,11 @@ module Vec = struct
     end;
     v.data.(v.start + v.len) <- x;
     v.len <- v.len + 1
+  (* Inlined: the walks through the queue call it for every piece they pass. *)
   let get v i =
     if i < v.first || i >= v.first + v.len then invalid_arg "Planner.Vec.get";
     v.data.(v.start + i - v.first)
+  [@@inline]
   let truncate v n = if n < stop v then v.len <- max 0 (n - v.first)
   let forget_before v n =
     let k = min v.len (n - v.first) in
