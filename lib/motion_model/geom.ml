@@ -36,9 +36,14 @@ let normalize q =
 
 (* v + 2 w × (w × v + s v), w the vector part: no matrix needed. *)
 let rotate q v =
-  let w = { x = q.q2; y = q.q3; z = q.q4 } in
-  let t = add (cross w v) (scale q.q1 v) in
-  add v (scale 2. (cross w t))
+  (* add v (scale 2. (cross w t)), t = add (cross w v) (scale q.q1 v), the same operations in the
+     same order on unboxed floats: no intermediate vector allocated (nine a move). *)
+  let tx = (q.q3 *. v.z -. q.q4 *. v.y) +. q.q1 *. v.x
+  and ty = (q.q4 *. v.x -. q.q2 *. v.z) +. q.q1 *. v.y
+  and tz = (q.q2 *. v.y -. q.q3 *. v.x) +. q.q1 *. v.z in
+  { x = v.x +. 2. *. (q.q3 *. tz -. q.q4 *. ty);
+    y = v.y +. 2. *. (q.q4 *. tx -. q.q2 *. tz);
+    z = v.z +. 2. *. (q.q2 *. ty -. q.q3 *. tx) }
 
 let of_axis_angle axis a =
   let n = norm axis in
