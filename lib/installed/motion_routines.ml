@@ -151,24 +151,32 @@ let label ctx name = match ctx.argument_label name with Some l -> l | None -> "*
 
 (* ------------------------------------------------------------------ values and floats *)
 
-let nums v = Array.map V.num_value (V.components v)
-let pos_of v = let c = nums v in { G.x = c.(0); y = c.(1); z = c.(2) }
+(* Ten of these a move: read in place, and an extjoint's six built as a literal, not through
+   Array.map (a call into the runtime for each array). *)
+let nums v =
+  let c = V.components v in
+  if Array.length c = 6 then
+    let n i = V.num_value (Array.unsafe_get c i) in [| n 0; n 1; n 2; n 3; n 4; n 5 |]
+  else Array.map V.num_value c
+let pos_of v = let c = V.components v in
+  { G.x = V.num_value c.(0); y = V.num_value c.(1); z = V.num_value c.(2) }
 (* Motion instructions check that quaternions are normalised: |q1² + q2² + q3² + q4² - 1| below
    0.1 is normalised here, beyond it is ERR_ILLQUAT (installed-facts.md §4, NOrient's
    thresholds; the error's name UNCERTAIN). *)
 exception Illegal_quaternion
 
 let orient_of v =
-  let c = nums v in
-  let sum = (c.(0) *. c.(0)) +. (c.(1) *. c.(1)) +. (c.(2) *. c.(2)) +. (c.(3) *. c.(3)) in
+  let c = V.components v in
+  let q1 = V.num_value c.(0) and q2 = V.num_value c.(1) and q3 = V.num_value c.(2) and q4 = V.num_value c.(3) in
+  let sum = (q1 *. q1) +. (q2 *. q2) +. (q3 *. q3) +. (q4 *. q4) in
   if not (Float.abs (sum -. 1.) < 0.1) then raise Illegal_quaternion;
-  G.normalize { G.q1 = c.(0); q2 = c.(1); q3 = c.(2); q4 = c.(3) }
+  G.normalize { G.q1; q2; q3; q4 }
 let pose_of v = let c = V.components v in { G.trans = pos_of c.(0); rot = orient_of c.(1) }
 
 let conf_of v =
-  let c = nums v in
-  let i f = if Float.is_finite f then int_of_float (Float.round f) else 0 in
-  { MM.Kinematics.cf1 = i c.(0); cf4 = i c.(1); cf6 = i c.(2); cfx = i c.(3) }
+  let c = V.components v in
+  let i k = let f = V.num_value c.(k) in if Float.is_finite f then int_of_float (Float.round f) else 0 in
+  { MM.Kinematics.cf1 = i 0; cf4 = i 1; cf6 = i 2; cfx = i 3 }
 
 let robtarget_of v =
   let c = V.components v in { MM.Frames.pose = pose_of (V.pose c.(0) c.(1)); conf = conf_of c.(2) }
@@ -179,7 +187,8 @@ let joints_of_jointtarget v = nums (V.components v).(0)
 let eax_of_robtarget v = nums (V.components v).(3)
 let eax_of_jointtarget v = nums (V.components v).(1)
 
-let speed_of v = let c = nums v in { D.v_tcp = c.(0); v_ori = c.(1); v_leax = c.(2); v_reax = c.(3) }
+let speed_of v = let c = V.components v in let n i = V.num_value c.(i) in
+  { D.v_tcp = n 0; v_ori = n 1; v_leax = n 2; v_reax = n 3 }
 
 let zone_of v =
   let c = V.components v in
@@ -401,7 +410,7 @@ let planned st id =
 
 let arm_end_joints st now =
   match st.last_planned with
-  | Some id when P.segment_span st.planner id <> None -> P.target_joints st.planner id
+  | Some id when P.has_segment st.planner id -> P.target_joints st.planner id
   | _ -> (match P.joints_at st.planner now with Ok q -> q | Error _ -> first_target st)
 
 let tool0_value () =
@@ -471,7 +480,7 @@ let move ctx st name args =
   | Some speed, Some zone, Some tool -> (
       let start = arm_end_joints st now in
       let start_ext = match st.last_planned with
-        | Some id when P.segment_span st.planner id <> None -> P.target_external st.planner id
+        | Some id when P.has_segment st.planner id -> P.target_external st.planner id
         | _ -> current_external_at st now in
       let back_eax = ref None in
       (* §6.3: in a BACKWARD handler a move instruction retraces the path of the forward one it

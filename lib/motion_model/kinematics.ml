@@ -32,7 +32,9 @@ let create robot =
 
 (* Equal to the bit for the answer's sake: a NaN is never found (it is computed again), and 0
    and -0 differ. *)
-let same_float (a : float) b = a = b && (a <> 0. || 1. /. a = 1. /. b)
+(* Inlined: called apart, each comparison boxes both floats (a memo look-up compares seven
+   components with each of eight slots, twice a move). *)
+let same_float (a : float) b = a = b && (a <> 0. || 1. /. a = 1. /. b) [@@inline]
 
 let same_floats a b =
   let n = Array.length a in
@@ -51,6 +53,13 @@ let same_choice a b = match a, b with
 let memo_find slots found =
   let rec go i = if i >= memo_size then None else match slots.(i) with
       | Some e -> (match found e with Some _ as r -> r | None -> go (i + 1))
+      | None -> None in
+  go 0
+
+(* [memo_find] for the inverse's slots without a closure and an option per slot looked at. *)
+let inverse_find slots p choice =
+  let rec go i = if i >= memo_size then None else match slots.(i) with
+      | Some (p', c', q) -> if same_pose p p' && same_choice choice c' then Some q else go (i + 1)
       | None -> None in
   go 0
 
@@ -622,7 +631,7 @@ let significant k c =
 
 let rec inverse k p choice =
   let copy = Result.map Array.copy in
-  match memo_find k.inverses (fun (p', c', q) -> if same_pose p p' && same_choice choice c' then Some q else None) with
+  match inverse_find k.inverses p choice with
   | Some q -> copy q
   | None ->
       let choice_kept = match choice with Nearest q0 -> Nearest (Array.copy q0) | c -> c in

@@ -50,10 +50,17 @@ and figures = {
 
 (* The planner's axis vectors are twelve long: the arm's six axes, then extjoint's eax_a … eax_f
    (9E9 for an axis the robot does not have, constant, so interpolation keeps it exact). *)
-let arm q = Array.sub q 0 6
+(* Literals, not Array.sub, init and append: each of those is a call into the runtime, and a move
+   takes a dozen of these vectors apart or puts them together. *)
+let arm q = [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5) |]
 (* An unused component stays exactly 9E9 through interpolation's rounding. *)
-let ext q = Array.init 6 (fun i -> let v = q.(6 + i) in if Ext_axes.is_unused v then Ext_axes.unused else v)
-let join q e = Array.append (Array.sub q 0 6) e
+let ext q =
+  let e = [| q.(6); q.(7); q.(8); q.(9); q.(10); q.(11) |] in
+  for i = 0 to 5 do if Ext_axes.is_unused e.(i) then e.(i) <- Ext_axes.unused done;
+  e
+let join q e =
+  if Array.length e <> 6 then Array.append (Array.sub q 0 6) e
+  else [| q.(0); q.(1); q.(2); q.(3); q.(4); q.(5); e.(0); e.(1); e.(2); e.(3); e.(4); e.(5) |]
 
 (* The flange in the world: through the robot's base frame (law F-base), which a track moves
    (law X-track). *)
@@ -160,9 +167,11 @@ module Vec = struct
     end;
     v.data.(v.start + v.len) <- x;
     v.len <- v.len + 1
+  (* Inlined: the walks through the queue call it for every piece they pass. *)
   let get v i =
     if i < v.first || i >= v.first + v.len then invalid_arg "Planner.Vec.get";
     v.data.(v.start + i - v.first)
+  [@@inline]
   let truncate v n = if n < stop v then v.len <- max 0 (n - v.first)
   let forget_before v n =
     let k = min v.len (n - v.first) in
@@ -660,34 +669,48 @@ let target_external t id =
 
 let base t e = Base_frame.in_world (Kinematics.robot t.kin) e
 
-let piece_ids pc = match pc.shape with
-  | Part sg -> (sg.id, sg.id) | Blend b -> (b.a.id, b.b.id) | Joint_blend b -> (b.a.id, b.b.id)
+(* A piece's oldest and newest move ids, each by itself: the walks below ask for them on every
+   piece they pass, seven walks a move, and a pair would be an allocation each time. *)
+let piece_oldest pc = match pc.shape with Part sg -> sg.id | Blend b -> b.a.id | Joint_blend b -> b.a.id
+let piece_newest pc = match pc.shape with Part sg -> sg.id | Blend b -> b.b.id | Joint_blend b -> b.b.id
 
 (* Pieces are in time order and segment ids grow with time: the first piece of a move is found by
    bisection on the pieces' newest ids, and its pieces follow it. *)
-let segment_span t id =
-  let pcs = t.cur.pieces in
+let first_piece pcs id =
   let lo_i = ref (Vec.first pcs) and hi_i = ref (Vec.stop pcs) in
   while !lo_i < !hi_i do
     let mid = (!lo_i + !hi_i) / 2 in
-    if snd (piece_ids (Vec.get pcs mid)) < id then lo_i := mid + 1 else hi_i := mid
+    if piece_newest (Vec.get pcs mid) < id then lo_i := mid + 1 else hi_i := mid
   done;
+  !lo_i
+
+let segment_span t id =
+  let pcs = t.cur.pieces in
   let lo = ref infinity and hi = ref neg_infinity in
-  let rec forward i =
-    if i < Vec.stop pcs then begin
-      let pc = Vec.get pcs i in
-      let oldest, newest = piece_ids pc in
-      if oldest <= id then begin
-        if newest = id || oldest = id then begin
-          lo := Float.min !lo pc.tm.t0;
-          (* The corner after the move is not its own: it ends where its corner begins. *)
-          if newest = id then hi := Float.max !hi pc.tm.t1 else hi := Float.max !hi pc.tm.t0
-        end;
-        forward (i + 1)
-      end
-    end in
-  forward !lo_i;
+  let i = ref (first_piece pcs id) and stop = Vec.stop pcs in
+  while !i < stop && piece_oldest (Vec.get pcs !i) <= id do
+    let pc = Vec.get pcs !i in
+    let oldest = piece_oldest pc and newest = piece_newest pc in
+    if newest = id || oldest = id then begin
+      lo := Float.min !lo pc.tm.t0;
+      (* The corner after the move is not its own: it ends where its corner begins. *)
+      if newest = id then hi := Float.max !hi pc.tm.t1 else hi := Float.max !hi pc.tm.t0
+    end;
+    incr i
+  done;
   if !lo = infinity then None else Some (real_time t.cur !lo, real_time t.cur !hi)
+
+(* [segment_span t id <> None] without the span's real times: whether a piece of the queue is
+   the move's. *)
+let has_segment t id =
+  let pcs = t.cur.pieces in
+  let i = ref (first_piece pcs id) and stop = Vec.stop pcs and found = ref false in
+  while (not !found) && !i < stop && piece_oldest (Vec.get pcs !i) <= id do
+    let pc = Vec.get pcs !i in
+    if piece_newest pc = id || piece_oldest pc = id then found := true;
+    incr i
+  done;
+  !found
 
 (* [segment_span] for several moves in one walk back through the queue: a check of the moves
    still running asks for all of them at once, and one walk per move made that quadratic in
@@ -751,7 +774,7 @@ let forget t ~before ~keep =
   let pcs = l.pieces in
   let open_idx = match l.open_seg with Some (_, i) when i >= 0 -> i | _ -> max_int in
   let rec drop i =
-    if i + 1 < Vec.stop pcs && i < open_idx && snd (piece_ids (Vec.get pcs i)) < keep
+    if i + 1 < Vec.stop pcs && i < open_idx && piece_newest (Vec.get pcs i) < keep
        && (Vec.get pcs (i + 1)).tm.t0 <= hp then drop (i + 1)
     else i in
   Vec.forget_before pcs (drop (Vec.first pcs));

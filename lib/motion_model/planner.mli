@@ -144,6 +144,9 @@ val segment_span : t -> int -> (float * float) option
     outgoing corner begins, or at its point), real time, on the current path level; [None] for a
     move not (or no longer) in the queue. Cheap for recent moves. *)
 
+val has_segment : t -> int -> bool
+(** [segment_span t id <> None], without computing the span. *)
+
 val segment_spans : t -> int list -> int -> (float * float) option
 (** [segment_spans t ids] answers [segment_span t id] for every [id] of [ids], walking the
     queue once. *)

@@ -145,7 +145,7 @@ and expr ctx ~dnum (e : A.expression) : Ir.expr =
         | (Entire _ | Element _), Some (Data { d_type = { base; _ }; _ }) -> Types.value_class base = Semi_value
         | _ -> false in
       if semi_value then make (Read_signal (place ctx r)) else make (Read (place ctx r))
-  | Function_call f -> make (Call (call ctx e.at f.func))
+  | Function_call f -> make (Call (call ~texts:false ctx e.at f.func))
   | Aggregate (es, rs) ->
       let kind = match Source.Table.find_opt ctx.elab.aggregates e.at with
         | Some `Record -> Ir.Record_value | _ -> Ir.Array_value in
@@ -199,7 +199,11 @@ and unary_op (op : A.unary_operator) (o : Tables.operand) : Arith.unary =
   | Unary_plus, O_dnum -> Dnum_plus | Unary_plus, O_pos -> Pos_plus | Unary_plus, _ -> Num_plus
 
 (* §3.11, §4.6, §5.2: each parameter of the callee gets its argument. *)
-and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
+(* [texts]: the in arguments' texts are kept (Ir.names) for a procedure call only: what reads
+   them (Installed_routine.argument_label: the motion's labels, SyncID) is an installed
+   procedure's, and a function's arguments (the -20 of Offs(p, 0, 0, -20)) were a fifth of the
+   printing of a module of moves. *)
+and call ~texts ctx (at : Source.region) (name : A.identifier) : Ir.call =
   let unknown () =
     { Ir.callee = Unknown_routine (match name.it with Ident s -> s | ID_placeholder -> "<ID>");
       arguments = [||]; call_at = at } in
@@ -221,7 +225,7 @@ and call ctx (at : Source.region) (name : A.identifier) : Ir.call =
                    | Some { base = Anytype; _ } -> (
                        match argument_type ctx a with Some t -> types := (i, t) :: !types | None -> ())
                    | _ -> ());
-                  argument ctx p a
+                  argument ~texts ctx p a
               | _ -> Ir.Absent) params in
           if !types <> [] then begin
             let named = Array.make (Array.length arguments) None in
@@ -308,7 +312,7 @@ and written ctx (source : A.expression) (e : Ir.expr) =
        Source.Table.replace ctx.argument_texts e.at text);
   e
 
-and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
+and argument ~texts ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
   let dnum = match p.p_type with Some { base = Dnum; dims = Scalar } -> true | _ -> false in
   let value (e : A.expression) : Ir.argument =
     match p.p_mode with
@@ -318,7 +322,7 @@ and argument ctx (p : Env.parameter) (a : A.argument) : Ir.argument =
         match expr ctx ~dnum e with
         | { e = Read_signal place; at } -> By_value { e = Read place; at }
         | other -> By_value other)
-    | Mode_in -> By_value (written ctx e (expr ctx ~dnum e))
+    | Mode_in -> let v = expr ctx ~dnum e in By_value (if texts then written ctx e v else v)
     | Mode_ref when optional_parameter_slot ctx e <> None ->
         (* Present and the other REF parameters see an absent optional parameter as absent
            instead of using its value (§5.2, ch. 11). *)
@@ -359,7 +363,7 @@ and statement ctx (s : A.statement) : Ir.stmt =
   | Procedure_call (_, args, _) when Array.exists (fun (a : A.argument_desc) -> a = ARG_placeholder) args ->
       (* §2.9: executing a placeholder is ERR_EXECPHR. *)
       make Placeholder_statement
-  | Procedure_call (Procedure_name id, _, _) -> make (Call_procedure (call ctx s.at id))
+  | Procedure_call (Procedure_name id, _, _) -> make (Call_procedure (call ~texts:true ctx s.at id))
   | Procedure_call (Late_bound e, args, regions) ->
       let args = A.arguments args regions in
       let late (a : A.argument) : Ir.late_argument =
