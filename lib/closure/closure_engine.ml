@@ -1018,7 +1018,8 @@ and flat_operand st (r : routine) (e : Ir.expr) =
   | _ -> `Other
 
 (* x op y into the flat slot k, x a flat slot and y one or a literal: as [binary] computes it (a
-   num rounded to single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c). *)
+   num rounded to single, R-2.13-a; an infinite result ERR_OVERFLOW, R-3.12-c). One case per
+   operator and precision: choosing the rounding when the store runs costs the dnum loop 3 %. *)
 and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
   match op, x, y with
   | Num_add, `Slot i, `Slot j -> Some (fun a ->
@@ -1494,8 +1495,10 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
          a RAPID routine's, while its arguments are bound. *)
       (* The bytes at each call; what they are for, only when they do not fit. *)
       let absent = Installed_routine.default_bytes callee in
+      (* an in parameter's copy whose bytes are the same for every value: counted so *)
+      let fixed = Installed_routine.copy_bytes callee in
       let cost i (v : Argument.t) = match Array.unsafe_get arguments i, v with
-        | By_value _, Argument.Value x -> V.bytes x
+        | By_value _, Argument.Value x -> let b = Array.unsafe_get fixed i in if b >= 0 then b else V.bytes x
         | Absent, _ | Pass_on _, Argument.Missing -> absent.(i)
         | _ -> 0 in
       let what i (v : Argument.t) =
@@ -1742,11 +1745,6 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
      whole slot of module data or of the caller's own): then the copies fit or not all at once,
      and the per-copy tests, in order, would all pass when the sum fits. *)
   let fixed_copies =
-    let rec stringless (sh : V.shape) = match sh with
-      | S_string -> false
-      | S_num | S_dnum | S_bool | S_handle _ -> true
-      | S_record cs -> Array.for_all stringless cs
-      | S_array (_, c) -> stringless c in
     let harmless (source : Closure_call.source) = match source with
       | Value { e = Literal _ | Unary (Num_neg, { e = Literal (V.Num _); _ }); _ } -> true
       | Value { e = Read (Whole (Global _)); _ } | Read (Whole (Global _)) -> true
@@ -1755,7 +1753,7 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | _ -> false in
     let fixed i source =
       let sh = callee.parameters.(i).p_default in
-      if harmless source && stringless sh then Some (V.bytes (V.default_of sh)) else None in
+      if harmless source && V.fixed_size sh then Some (V.bytes (V.default_of sh)) else None in
     let each = Array.mapi fixed sources in
     if Array.for_all Option.is_some each then Some (Array.fold_left (fun t b -> t + Option.get b) 0 each)
     else None in

@@ -60,6 +60,7 @@ let names_kept = 8
 let kept_parameters : Ir.parameter array array = Array.make names_kept [||]
 let kept_names : string array array = Array.make names_kept [||]
 let kept_bytes : int array array = Array.make names_kept [||]
+let kept_copies : int array array = Array.make names_kept [||]
 let next_kept = ref 0
 
 let kept (callee : Ir.routine) =
@@ -67,10 +68,17 @@ let kept (callee : Ir.routine) =
     if i >= names_kept then begin
       let names = Array.map (fun (p : Ir.parameter) -> p.p_name) callee.parameters in
       let bytes = Array.map (fun (p : Ir.parameter) -> Value.shape_bytes p.p_default) callee.parameters in
-      (* the slot's three arrays set with nothing allocated between them: no task's thread
-         sees a slot half made *)
+      let copies = Array.mapi (fun i (p : Ir.parameter) ->
+          match p.p_type with
+          | Some { base; dims = Scalar | Sized _ }
+            when (match base with Rapid_typing.Types.Anytype -> false | _ -> true) && Value.fixed_size p.p_default ->
+              bytes.(i)
+          | _ -> -1) callee.parameters in
+      (* the slot's arrays set with nothing allocated between them: no task's thread sees a
+         slot half made *)
       let j = !next_kept in
-      kept_names.(j) <- names; kept_bytes.(j) <- bytes; kept_parameters.(j) <- callee.parameters;
+      kept_names.(j) <- names; kept_bytes.(j) <- bytes; kept_copies.(j) <- copies;
+      kept_parameters.(j) <- callee.parameters;
       next_kept := (j + 1) mod names_kept;
       j
     end
@@ -83,6 +91,9 @@ let parameter_names (callee : Ir.routine) =
 
 let default_bytes (callee : Ir.routine) =
   if Array.length callee.parameters = 0 then [||] else kept_bytes.(kept callee)
+
+let copy_bytes (callee : Ir.routine) =
+  if Array.length callee.parameters = 0 then [||] else kept_copies.(kept callee)
 
 (* The parameters of this name, in order, by the parameters' array and the name (physically,
    the last ones asked): a move asks for its tool's, zone's and target's labels. *)

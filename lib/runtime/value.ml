@@ -160,6 +160,12 @@ let shape_bytes shape =
   in
   go shape
 
+let rec fixed_size = function
+  | S_string -> false
+  | S_num | S_dnum | S_bool | S_handle _ -> true
+  | S_record cs -> Array.for_all fixed_size cs
+  | S_array (_, c) -> fixed_size c
+
 let rec bytes = function
   | Num _ | Dnum _ | Bool _ | Handle _ -> 32
   | String s -> 32 + String.length s

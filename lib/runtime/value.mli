@@ -104,6 +104,10 @@ val default_of : shape -> t
 val shape_bytes : shape -> int
 (** The size of {!default_of} of the shape, computed without building it. *)
 
+val fixed_size : shape -> bool
+(** Whether every value of the shape has the same size, {!shape_bytes}: a shape without
+    strings. *)
+
 val bytes : t -> int
 (** The size of a value. *)
 
