@@ -464,6 +464,29 @@ let final_newline () =
   (* The refusal points at the last character, white space included. *)
   parse_error ~options:strict ~cls:Syntax_error ~line:2 ~col:11 "MODULE m\nENDMODULE  "
 
+(* Decode's line starts (eight bytes a step on ASCII texts) against the plain definition: a
+   line starts after "\n", after "\r" not followed by "\n", and after "\r\n", counted in
+   characters. Random texts of line breaks, letters and now and then a byte above 0x7F. *)
+let line_starts () =
+  let reference text =
+    let n = String.length text and starts = ref [ 0 ] and chars = ref 0 in
+    String.iteri (fun i c ->
+        if Char.code c land 0xC0 <> 0x80 then incr chars;
+        if c = '\n' || (c = '\r' && (i + 1 >= n || text.[i + 1] <> '\n')) then starts := !chars :: !starts)
+      text;
+    Array.of_list (List.rev !starts) in
+  let rs = Random.State.make [| 20 |] in
+  let pieces = [| "\n"; "\r"; "\r\n"; "a"; " "; "abcdefgh"; "ENDPROC"; "\xC3\xA9"; "\xE9" |] in
+  for _ = 1 to 3000 do
+    let k = Random.State.int rs 60 in
+    let high = Random.State.int rs 4 = 0 in
+    let text = String.concat "" (List.init k (fun _ ->
+        pieces.(Random.State.int rs (if high then Array.length pieces else Array.length pieces - 2)))) in
+    let d = Decode.decode text in
+    if not d.latin1 then
+      Alcotest.(check (array int)) (String.escaped text) (reference d.text) d.line_starts
+  done
+
 let suite =
   ( "lexer",
     List.map (fun (name, f) -> Alcotest.test_case name `Quick f) [
@@ -486,4 +509,5 @@ let suite =
       ("byte-order mark", byte_order_mark);
       ("%%% header", header);
       ("missing final newline", final_newline);
+      ("line starts of ASCII and UTF-8 texts", line_starts);
     ] )

@@ -95,19 +95,28 @@ let judge_text i text =
    is judged once per process, and its verdict and the rules its run applied counted again at
    each repetition. The random texts (bytes, words) are under 4 KB and rarely repeat: not kept. *)
 let judged_hostile : (string, failure_found option * (string * int) list) Hashtbl.t = Hashtbl.create 64
+(* The same verdicts by the texts' addresses: Mutant.hostile hands out one string for each large
+   text, and hashing it for the table read all of its bytes (up to 600 KB) at every repetition. *)
+let judged_here : (string * (failure_found option * (string * int) list)) list ref = ref []
 let kept_from = 4096
-let forget_texts () = Hashtbl.reset judged_hostile
+let forget_texts () = Hashtbl.reset judged_hostile; judged_here := []
 
 let judge_hostile i text =
   if String.length text < kept_from then judge_text i text
   else
-    match Hashtbl.find_opt judged_hostile text with
+    let known = match List.assq_opt text !judged_here with
+      | Some _ as known -> known
+      | None -> Hashtbl.find_opt judged_hostile text in
+    match known with
     | Some (verdict, rules) ->
         Fuzz_run.note_rules rules;
         Option.map (fun f -> { f with program_index = i }) verdict
     | None ->
         let verdict, rules = Fuzz_run.recording_rules (fun () -> judge_text i text) in
-        if Hashtbl.length judged_hostile < 256 then Hashtbl.replace judged_hostile text (verdict, rules);
+        if Hashtbl.length judged_hostile < 256 then begin
+          Hashtbl.replace judged_hostile text (verdict, rules);
+          judged_here := (text, (verdict, rules)) :: !judged_here
+        end;
         verdict
 
 (* The mutants of program [i] and, every [hostile_every] programs, a hostile text: each failing

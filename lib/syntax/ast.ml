@@ -272,9 +272,21 @@ type module_declaration = {
 let reference (e : expression) (d : data_reference_desc) : data_reference = { it = d; at = e.at }
 
 (* The aggregate of the members [es] (§3.10), and back. *)
+(* The two arrays of a list of located values, filled from the list itself: through an array of
+   the records first, each list was copied three times (deeply nested aggregates have one a
+   level). *)
+let split_located (l : 'a located list) : 'a array * region array =
+  match l with
+  | [] -> ([||], [||])
+  | first :: _ ->
+      let n = List.length l in
+      let its = Array.make n first.it and ats = Array.make n first.at in
+      List.iteri (fun i x -> Array.unsafe_set its i x.it; Array.unsafe_set ats i x.at) l;
+      (its, ats)
+
 let aggregate (es : expression list) : expression_desc =
-  let es = Array.of_list es in
-  Aggregate (Array.map (fun e -> e.it) es, Array.map (fun e -> e.at) es)
+  let descs, regions = split_located es in
+  Aggregate (descs, regions)
 
 let members (descs : expression_desc array) (regions : region array) : expression array =
   Array.mapi (fun i it -> { it; at = regions.(i) }) descs
@@ -283,9 +295,7 @@ let members (descs : expression_desc array) (regions : region array) : expressio
 let operand (it : expression_desc) (at : region) : expression = { it; at }
 
 (* The arguments [args] as a call holds them, and back. *)
-let argument_arrays (args : argument list) : argument_desc array * region array =
-  let args = Array.of_list args in
-  (Array.map (fun a -> a.it) args, Array.map (fun a -> a.at) args)
+let argument_arrays (args : argument list) : argument_desc array * region array = split_located args
 
 let arguments (descs : argument_desc array) (regions : region array) : argument array =
   Array.mapi (fun i it -> { it; at = regions.(i) }) descs

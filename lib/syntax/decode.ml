@@ -106,11 +106,16 @@ let ascii_line_starts raw start =
     in
     if skip then i := !i + 8
     else begin
-      (match String.unsafe_get raw !i with
-       | '\n' -> add (!i + 1 - start)
-       | '\r' -> if !i + 1 >= n || String.unsafe_get raw (!i + 1) <> '\n' then add (!i + 1 - start)
-       | c -> if Char.code c >= 0x80 then ascii := false);
-      incr i
+      (* the eight bytes one by one: tried again at the next byte, the word would fail the test
+         again until past its line end *)
+      let stop = Int.min n (!i + 8) in
+      while !ascii && !i < stop do
+        (match String.unsafe_get raw !i with
+         | '\n' -> add (!i + 1 - start)
+         | '\r' -> if !i + 1 >= n || String.unsafe_get raw (!i + 1) <> '\n' then add (!i + 1 - start)
+         | c -> if Char.code c >= 0x80 then ascii := false);
+        incr i
+      done
     end
   done;
   if !ascii then Some (Array.sub !starts 0 !count, n - start) else None

@@ -543,9 +543,10 @@ module Shortcut = struct
     b.pos_char <- b.pos_char + (stop - b.pos);
     b.pos <- stop
 
-  let is_digit c = c >= '0' && c <= '9'
+  (* Inlined: a call for every character of every name and number was a tenth of the lexer. *)
+  let is_digit c = c >= '0' && c <= '9' [@@inline]
   let is_name_char c =
-    (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit c || c = '_'
+    (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit c || c = '_' [@@inline]
 
   let rec digits text n i =
     if i < n && is_digit (String.unsafe_get text i) then digits text n (i + 1) else i
