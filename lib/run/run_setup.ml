@@ -28,7 +28,12 @@ let run_io (o : Run_options.t) =
 
 let load_robot = function
   | None -> Ok Robot.irb120
-  | Some name -> Rapid_motion_model.Robot_library.load name
+  | Some name ->
+      (* a file's errors name their place in it; a name the library does not know is an error of
+         the command line, said as the command line's others are *)
+      let from_file = Sys.file_exists name && not (Sys.is_directory name) in
+      Rapid_motion_model.Robot_library.load name
+      |> Result.map_error (fun m -> if from_file then m else "rapid-sem: " ^ m)
 
 (* --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 (R-bk-12): each read, the task it names (None: the run's
    robot). A TASK= form is one with a name before '=' (a pose has none). *)

@@ -44,8 +44,9 @@ val read_io : string option -> (Rapid_controller.Io_config.t, string) result
 (** --io: the I/O configuration of the file, or none. *)
 
 val load_robot : string option -> (Rapid_motion_model.Robot.t, string) result
-(** --robot: the robot description of the file, or the built-in IRB 120; an error reads
-    FILE:LINE:COL: robot description error: MESSAGE. *)
+(** --robot: the robot description of the file, or of the library's robot of that name or
+    type, or the built-in IRB 120; an error reads FILE:LINE:COL: robot description error:
+    MESSAGE for a file, and rapid-sem: MESSAGE for a name the library does not know. *)
 
 val parse_base_frames : string list -> ((string option * Rapid_motion_model.Geom.pose) list, string) result
 (** Each --base-frame [TASK=]X,Y,Z,Q1,Q2,Q3,Q4 ({!Rapid_motion_model.Base_frame.of_text}): the task
