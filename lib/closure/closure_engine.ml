@@ -1739,11 +1739,11 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | _ -> false) sources in
   let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
-  (* The bytes of all the copies, when each is known before the call: its parameter's type holds
-     no string (Value.bytes counts a value by its structure and its strings' lengths), and its
-     argument can neither fail nor change what the budget counts (a literal, a negated one, a
-     whole slot of module data or of the caller's own): then the copies fit or not all at once,
-     and the per-copy tests, in order, would all pass when the sum fits. *)
+  (* The bytes of all the copies, when each is known before the call: every value of its
+     parameter's type has the same bytes (Installed_routine.copy_bytes: no string, not
+     conformant), and its argument can neither fail nor change what the budget counts (a
+     literal, a negated one, a whole slot of module data or of the caller's own): then the copies
+     fit or not all at once, and the per-copy tests, in order, would all pass when the sum fits. *)
   let fixed_copies =
     let harmless (source : Closure_call.source) = match source with
       | Value { e = Literal _ | Unary (Num_neg, { e = Literal (V.Num _); _ }); _ } -> true
@@ -1751,11 +1751,10 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | Value { e = Read (Whole (Local j)); _ } | Read (Whole (Local j)) ->
           (match local_access st caller j with Own | Flat_num _ | Flat_dnum _ -> true | _ -> false)
       | _ -> false in
-    let fixed i source =
-      let sh = callee.parameters.(i).p_default in
-      if harmless source && V.fixed_size sh then Some (V.bytes (V.default_of sh)) else None in
-    let each = Array.mapi fixed sources in
-    if Array.for_all Option.is_some each then Some (Array.fold_left (fun t b -> t + Option.get b) 0 each)
+    let bytes = IR.copy_bytes callee in
+    if Array.length bytes = Array.length sources
+       && Array.for_all2 (fun b source -> b >= 0 && harmless source) bytes sources
+    then Some (Array.fold_left ( + ) 0 bytes)
     else None in
   let n = Array.length args in
   let size = if callee.locals < 1 then 1 else callee.locals in
@@ -2120,7 +2119,6 @@ and activation_shape (r : routine) =
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
     store = small_store size;
-   
     ext = (if own_extension then
              { boxes = (if aliases then small_boxes n else [||]);
                idx = (if aliases then small_ints n else [||]);
