@@ -863,6 +863,7 @@ let memory_budget () =
   let text = {rapid|MODULE mem
   VAR num table{20} := [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20];
   VAR num calls := 0;
+  VAR num big{40};
   PROC down(num n, string s, \num extra{*})
     VAR num work{8};
     TPWrite "depth " \Num:=n;
@@ -925,6 +926,18 @@ let memory_budget () =
     VAR pos p;
     down5 1, p;
   ENDPROC
+  FUNC num first_of(num a{*}, num b, num c, num d)
+    RETURN a{1} + b + c + d;
+  ENDFUNC
+  PROC down6(num n)
+    VAR num s;
+    s := first_of(big, n, 2, 3);
+    TPWrite "depth6 " \Num:=s;
+    down6 n + 1;
+  ENDPROC
+  PROC main6()
+    down6 1;
+  ENDPROC
 ENDMODULE
 |rapid} in
   let program = load_text "mem" text in
@@ -938,7 +951,7 @@ ENDMODULE
            | _ -> Alcotest.failf "budget %d, %s: %s / %s" max_memory entry (outcome_text m_outcome) (outcome_text c_outcome));
           (match difference m_events c_events with None -> () | Some d -> Alcotest.failf "budget %d, %s: %s" max_memory entry d);
           Alcotest.(check bool) "some calls ran" true (List.length c_events > 4))
-        [ "main"; "main2"; "main3"; "main4"; "main5" ])
+        [ "main"; "main2"; "main3"; "main4"; "main5"; "main6" ])
     [ 40_000; 60_000; 90_001 ]
 
 (* Found by the fuzzing campaign (rapid-sem fuzz --seed 7 --mismatching, program 771): an index

@@ -736,6 +736,12 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
           fun a -> if a.ext.present.(i) then a.ext.boxes.(i).(a.ext.idx.(i)) else fail st ~at "ERR_NOTPRES")
+  | Element (Whole (Global g), [| ix |]) when flat_index st r ~at ix <> None ->
+      (* module data's array, its index a flat slot or one and a literal ([flat_index]) *)
+      let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
+      fun a ->
+        let elements = parts globals.(g) in
+        elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
   | Element (Whole w, [| ix |]) when plain_whole st r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
@@ -752,18 +758,6 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                  (match a.store.(i) with
                   | V.Num x -> elements.(index_float st ~at x n)
                   | v -> elements.(index st ~at v n))
-           | Read (Whole (Local i)) when flat_num st r i <> None ->
-               let k = Option.get (flat_num st r i) in
-               fun a ->
-                 let elements = parts globals.(g) in
-                 elements.(index_float st ~at a.ext.nums.(k) (Array.length elements))
-           | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
-             when flat_num st r i <> None ->
-               let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
-               let q = if op = Arith.Num_sub then -. q else q in
-               fun a ->
-                 let elements = parts globals.(g) in
-                 elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
            | Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
              when local_access st r i = Own ->
                let general = expr st r ~at ix in
@@ -841,13 +835,8 @@ and index_at st (r : routine) ~at (ix : Ir.expr) : (act -> int -> int) option =
   match ix.e with
   | Read (Whole (Local i)) when local_access st r i = Own ->
       Some (fun a n -> match a.store.(i) with V.Num x -> index_float st ~at x n | v -> index st ~at v n)
-  | Read (Whole (Local i)) when flat_num st r i <> None ->
-      let k = Option.get (flat_num st r i) in
-      Some (fun a n -> index_float st ~at a.ext.nums.(k) n)
-  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
-    when flat_num st r i <> None ->
-      let k = Option.get (flat_num st r i) and general = expr st r ~at ix in
-      let q = if op = Arith.Num_sub then -. q else q in
+  | _ when flat_index st r ~at ix <> None ->
+      let k, q, general = Option.get (flat_index st r ~at ix) in
       Some (fun a n -> index_sum st ~at general a a.ext.nums.(k) q n)
   | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
     when local_access st r i = Own ->
@@ -1059,20 +1048,23 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
       | `Const q -> fun a -> a.ext.nums.(k) <- q; true
       | `Other -> general ()
 
-(* An element of module data's array whose index is a flat slot, or a flat slot and a num literal
-   added or taken away (a{j}, a{j + 1}): the array, the slot, the literal (0 for none), and the
-   index's closure for [index_sum]'s general case. *)
+(* An index that is a flat num slot, or one and a num literal added or taken away (a{j},
+   a{j + 1}): the slot, the literal (0 for none) and the index's closure, for [index_sum], which
+   finds an integer sum within the bounds without building the num and takes any other through
+   the closure (an index of 0 added is the slot's value itself). *)
+and flat_index st (r : routine) ~at (ix : Ir.expr) =
+  match ix.e with
+  | Read (Whole (Local i)) -> Option.map (fun k -> (k, 0., expr st r ~at ix)) (flat_num st r i)
+  | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) ->
+      let q = if op = Arith.Num_sub then -. q else q in
+      Option.map (fun k -> (k, q, expr st r ~at ix)) (flat_num st r i)
+  | _ -> None
+
+(* An element of module data's array indexed as [flat_index] finds: the array and the index. *)
 and flat_element st (r : routine) ~at (e : Ir.expr) =
   match e.e with
-  | Read (Element (Whole (Global g), [| ix |])) -> (
-      match ix.e with
-      | Read (Whole (Local i)) -> (
-          match flat_num st r i with Some k -> Some (g, k, 0., expr st r ~at ix) | None -> None)
-      | Binary ((Num_add | Num_sub) as op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ }) -> (
-          match flat_num st r i with
-          | Some k -> Some (g, k, (if op = Arith.Num_sub then -. q else q), expr st r ~at ix)
-          | None -> None)
-      | _ -> None)
+  | Read (Element (Whole (Global g), [| ix |])) ->
+      Option.map (fun (k, q, general) -> (g, k, q, general)) (flat_index st r ~at ix)
   | _ -> None
 
 (* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
@@ -1739,11 +1731,11 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | _ -> false) sources in
   let copy_arg i v = if Array.unsafe_get shared i then v else copy v [@@inline] in
   let whats = Array.map (fun (p : parameter) -> "the copy for the parameter " ^ p.p_name) callee.parameters in
-  (* The bytes of all the copies, when each is known before the call: its parameter's type holds
-     no string (Value.bytes counts a value by its structure and its strings' lengths), and its
-     argument can neither fail nor change what the budget counts (a literal, a negated one, a
-     whole slot of module data or of the caller's own): then the copies fit or not all at once,
-     and the per-copy tests, in order, would all pass when the sum fits. *)
+  (* The bytes of all the copies, when each is known before the call: every value of its
+     parameter's type has the same bytes (Installed_routine.copy_bytes: no string, not
+     conformant), and its argument can neither fail nor change what the budget counts (a
+     literal, a negated one, a whole slot of module data or of the caller's own): then the copies
+     fit or not all at once, and the per-copy tests, in order, would all pass when the sum fits. *)
   let fixed_copies =
     let harmless (source : Closure_call.source) = match source with
       | Value { e = Literal _ | Unary (Num_neg, { e = Literal (V.Num _); _ }); _ } -> true
@@ -1751,11 +1743,10 @@ and direct_call st (caller : routine) ~at ~r_index (callee : routine) (sources :
       | Value { e = Read (Whole (Local j)); _ } | Read (Whole (Local j)) ->
           (match local_access st caller j with Own | Flat_num _ | Flat_dnum _ -> true | _ -> false)
       | _ -> false in
-    let fixed i source =
-      let sh = callee.parameters.(i).p_default in
-      if harmless source && V.fixed_size sh then Some (V.bytes (V.default_of sh)) else None in
-    let each = Array.mapi fixed sources in
-    if Array.for_all Option.is_some each then Some (Array.fold_left (fun t b -> t + Option.get b) 0 each)
+    let bytes = IR.copy_bytes callee in
+    if Array.length bytes = Array.length sources
+       && Array.for_all2 (fun b source -> b >= 0 && harmless source) bytes sources
+    then Some (Array.fold_left ( + ) 0 bytes)
     else None in
   let n = Array.length args in
   let size = if callee.locals < 1 then 1 else callee.locals in
@@ -2120,7 +2111,6 @@ and activation_shape (r : routine) =
 and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : act) =
   { routine = r;
     store = small_store size;
-   
     ext = (if own_extension then
              { boxes = (if aliases then small_boxes n else [||]);
                idx = (if aliases then small_ints n else [||]);
@@ -2491,34 +2481,23 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
              | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
              | _ -> comps.(k) <- copy v);
             true
+      | Element (Whole (Global g), [| ix |]) when flat_index st r ~at ix <> None ->
+          (* module data's array, its index a flat slot or one and a literal ([flat_index]):
+             the element located before the value, as below *)
+          let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
+          fun a ->
+            let elements = parts globals.(g) in
+            let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
+            let v = value a in
+            (match elements.(j) with
+             | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
+             | _ -> elements.(j) <- copy v);
+            true
       | Element (Whole w, [| ix |]) when plain_whole st r w ->
           (* As the general case below, the element located (index, bounds) before the value,
              without building the location. *)
           let container = read st r ~at (Whole w) in
           (match index_at st r ~at ix, w, ix.e with
-           | Some _, Global g, Read (Whole (Local i)) when flat_num st r i <> None ->
-               (* module data's array, its index a flat slot (see [flat]) *)
-               let k = Option.get (flat_num st r i) and globals = st.globals in
-               fun a ->
-                 let elements = parts globals.(g) in
-                 let j = index_float st ~at a.ext.nums.(k) (Array.length elements) in
-                 let v = value a in
-                 (match elements.(j) with
-                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
-                  | _ -> elements.(j) <- copy v);
-                 true
-           | Some _, Global g, Binary (op, { e = Read (Whole (Local i)); _ }, { e = Literal (V.Num q); _ })
-             when flat_num st r i <> None ->
-               let k = Option.get (flat_num st r i) and globals = st.globals and general = expr st r ~at ix in
-               let q = if op = Arith.Num_sub then -. q else q in
-               fun a ->
-                 let elements = parts globals.(g) in
-                 let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
-                 let v = value a in
-                 (match elements.(j) with
-                  | V.Handle _ as old when CC.is_signal old -> store_signal elements j v
-                  | _ -> elements.(j) <- copy v);
-                 true
            | Some _, Global g, Read (Whole (Local i)) when local_access st r i = Own ->
                (* module data's array, its index computed in the same closure *)
                let globals = st.globals in

@@ -104,20 +104,12 @@ let slerp a b s =
   normalize { q1 = ka *. a.q1 +. kb *. b.q1; q2 = ka *. a.q2 +. kb *. b.q2;
               q3 = ka *. a.q3 +. kb *. b.q3; q4 = ka *. a.q4 +. kb *. b.q4 }
 
-(* { trans = add a.trans (rotate a.rot b.trans); rot = normalize (omult a.rot b.rot) }, the same
-   operations in the same order on unboxed floats: a move composes a dozen poses, and the
-   intermediate vector and quaternion were allocations of their own. *)
+(* The translation added on unboxed floats: a move composes a dozen poses, and the rotated
+   vector's sum was an allocation of its own. *)
 let pmult a b =
   let v = rotate a.rot b.trans in
-  let trans = { x = a.trans.x +. v.x; y = a.trans.y +. v.y; z = a.trans.z +. v.z } in
-  let p = a.rot and q = b.rot in
-  let q1 = p.q1 *. q.q1 -. p.q2 *. q.q2 -. p.q3 *. q.q3 -. p.q4 *. q.q4
-  and q2 = p.q1 *. q.q2 +. p.q2 *. q.q1 +. p.q3 *. q.q4 -. p.q4 *. q.q3
-  and q3 = p.q1 *. q.q3 -. p.q2 *. q.q4 +. p.q3 *. q.q1 +. p.q4 *. q.q2
-  and q4 = p.q1 *. q.q4 +. p.q2 *. q.q3 -. p.q3 *. q.q2 +. p.q4 *. q.q1 in
-  let n = sqrt (q1 *. q1 +. q2 *. q2 +. q3 *. q3 +. q4 *. q4) in
-  let rot = if n = 0. then unit_orient else { q1 = q1 /. n; q2 = q2 /. n; q3 = q3 /. n; q4 = q4 /. n } in
-  { trans; rot }
+  { trans = { x = a.trans.x +. v.x; y = a.trans.y +. v.y; z = a.trans.z +. v.z };
+    rot = normalize (omult a.rot b.rot) }
 let pinv p = let r = conj p.rot in { trans = scale (-1.) (rotate r p.trans); rot = r }
 let pvect p v = add p.trans (rotate p.rot v)
 

@@ -93,9 +93,10 @@ val default_bytes : Ir.routine -> int array
     the memory budget); the same array for the same routine, as {!parameter_names}. *)
 
 val copy_bytes : Ir.routine -> int array
-(** For each parameter, the bytes of any value it takes when they are the same for all of them
-    (a type without strings, neither anytype nor conformant: its default's), or -1; the same
-    array for the same routine, as {!parameter_names}. *)
+(** For each parameter (of an installed or a RAPID routine), the bytes of any value it takes
+    when they are the same for all of them (a type without strings, neither anytype nor
+    conformant: its default's), or -1; the same array for the same routine, as
+    {!parameter_names}. *)
 
 val argument_label : Ir.program -> Ir.routine -> Ir.argument array -> string -> string option
 (** The data object the argument of a call gives for a parameter (by the parameter's name), for
