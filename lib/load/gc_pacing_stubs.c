@@ -9,6 +9,12 @@ value rapid_sem_gc_idle(value unit)
   return Val_bool(caml_gc_phase == Phase_idle);
 }
 
+value rapid_sem_gc_marking(value unit)
+{
+  (void) unit;
+  return Val_bool(caml_gc_phase == Phase_mark);
+}
+
 /* The work counted towards the next slices: words allocated in the major heap, custom blocks'
    memory, the ring of work already spread over the coming slices and its credit. */
 value rapid_sem_gc_forget_pace(value unit)

@@ -10,6 +10,7 @@ let usable =
 
 let () =
   if usable then begin
+    Gc_pacing.begin_cycle ();
     Source.restore_registry (Marshal.from_string Installed_image_data.files 0);
     Rapid_typing.Types.restore_record_ids Installed_image_data.record_ids;
     Rapid_typing.Installed_env.set_image (fun () ->

@@ -545,7 +545,6 @@ let module_name (m : A.module_declaration) =
 type part = {
   part_routines : Ir.routine array;
   part_globals : Ir.global array;
-  part_decls : (A.module_declaration * Env.data_object) list;   (* the globals' declarations *)
   part_local_names : string array array;
   part_error_numbers : (string * int) list;   (* the ERR_ constants the part declares *)
   part_system : (string * int) list;          (* ERRNO and INTNO, if the part declares them *)
@@ -616,8 +615,7 @@ let lower_part ctx ~routine_base ~global_base (all : (A.module_declaration * boo
            if r.kind = Procedure && Array.length r.parameters = 0 && r.primitive = None then
              Some (r.name, routine_base + i)
            else None) routines)) in
-  { part_routines = routines; part_globals = globals; part_decls = global_decls;
-    part_local_names = Array.of_list (List.rev !local_names);
+  { part_routines = routines; part_globals = globals; part_local_names = Array.of_list (List.rev !local_names);
     part_error_numbers = error_numbers; part_system = system; part_entry_points = entry_points }
 
 let new_ctx elab =
