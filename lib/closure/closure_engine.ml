@@ -1596,6 +1596,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
         (* each argument's container: the caller's slots (1), module data (0), none (2) *)
         let kinds = Array.map (function `Global _ -> 0 | `Own _ -> 1 | `Value _ -> 2) d in
         let box (a : act) k = if k = 1 then a.store else if k = 0 then globals else [||] [@@inline] in
+        let box_constant kinds m = if m < n && kinds.(m) = 0 then globals else [||] in
         let boxes_of = match kinds with
           | [| k0 |] -> fun a -> [| box a k0 |]
           | [| k0; k1 |] -> fun a -> [| box a k0; box a k1 |]
@@ -1614,23 +1615,56 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
             c.store.(i) <- copy v
           done;
           enter st callee c ~code ~r_index:k ~at ~is_function ~has_init in
+        let act_bytes = activation_bytes callee and limits = st.limits in
+        let events = st.all_events and observe = st.observe in
+        let entered_event = Event.Routine_entered callee.name and left_event = Event.Routine_left callee.name in
         match values with
         | [| (0, f, what) |] when size <= 6 ->
             (* one value, for the first parameter: the slots built with its copy in place (no
                write barrier); the copy is made before it is counted, which nothing can see *)
+            let g0 = box_constant kinds 0 and g1 = box_constant kinds 1 and g2 = box_constant kinds 2
+            and g3 = box_constant kinds 3 in
+            let own0 = kinds.(0) = 1 and own1 = n > 1 && kinds.(1) = 1 and own2 = n > 2 && kinds.(2) = 1
+            and own3 = n > 3 && kinds.(3) = 1 in
             fun a ->
               let v = f a in
-              let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0;
-                          current = None; nums = [||] } in
+              let s = a.store in
+              let b0 = if own0 then s else g0 and b1 = if own1 then s else g1 in
+              let b2 = if own2 then s else g2 and b3 = if own3 then s else g3 in
+              let boxes = match n with
+                | 1 -> [| b0 |] | 2 -> [| b0; b1 |] | 3 -> [| b0; b1; b2 |] | _ -> [| b0; b1; b2; b3 |] in
+              let ext = { boxes; idx; present = [||]; bound; module_data; retries = 0; current = None; nums = [||] } in
               let w = copy v in
               let store = match size with
                 | 1 -> [| w |] | 2 -> [| w; v_false |] | 3 -> [| w; v_false; v_false |]
                 | 4 -> [| w; v_false; v_false; v_false |] | 5 -> [| w; v_false; v_false; v_false; v_false |]
                 | _ -> [| w; v_false; v_false; v_false; v_false; v_false |] in
-              let c = { routine = callee; store; ext; level = a.level + 1; parent = a;
-                        result = no_value; nest = 0; memory = 0 } in
-              charge_pending st c (value_bytes v) what at;
-              enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+              let level = a.level + 1 in
+              let c = { routine = callee; store; ext; level; parent = a; result = no_value; nest = 0; memory = 0 } in
+              let bytes = value_bytes v in
+              begin match !code with
+              | Some code when not observe && level < limits.max_call_depth
+                               && bytes + act_bytes <= limits.max_memory - st.memory
+                               && st.fuel > 0 && st.native + code.c_nest <= st.native_budget ->
+                  (* no budget runs out: [charge_pending]'s, [enter]'s and [entered]'s work at once,
+                     as they do it when every test passes *)
+                  st.fuel <- st.fuel - 1;
+                  let nest = code.c_nest and memory = bytes + act_bytes in
+                  c.nest <- nest; c.memory <- memory;
+                  st.native <- st.native + nest; st.memory <- st.memory + memory;
+                  st.depth <- level + 1; deepen level;
+                  if events then st.emit entered_event;
+                  (match if has_init then code.c_init at c; code.c_body c with
+                   | true ->
+                       release st c;
+                       if events then st.emit left_event;
+                       if is_function then fail ~about:callee.name st ~at "ERR_FNCNORET" else no_value
+                   | false -> release st c; if events then st.emit left_event; c.result
+                   | exception left -> left_entered st code c ~at left)
+              | _ ->
+                  charge_pending st c bytes what at;
+                  enter st callee c ~code ~r_index:k ~at ~is_function ~has_init
+              end
         | _ -> general
       end
       else
@@ -2167,15 +2201,21 @@ and entered st (r : routine) (c : act) ~code ~at ~is_function ~has_init : V.t =
       if st.observe && is_function then
         st.emit (Event.Observed (Returned { routine = r.name; value = Observation.value c.result }));
       if st.all_events then st.emit (Event.Routine_left r.name); c.result
-  | exception (Raised e | Leaving e) -> leave_with_error ~call:at st code c (caught c e)
-  | exception Long_jump (j, e) when j = c.level ->
+  | exception left -> left_entered st code c ~at left
+
+(* What [entered] does when an exception leaves the routine's body, its call being at [at]. *)
+and left_entered st code (c : act) ~at left =
+  match left with
+  | Raised e | Leaving e -> leave_with_error ~call:at st code c (caught c e)
+  | Long_jump (j, e) when j = c.level ->
       (* An asynchronous error carried to the routine of its move, which has no error handler
          (§7.6): it is raised there, and propagated to the call point without a new search. *)
       emit_raised st e; abandon st code c; emit_raised st e; raise (Raised e)
-  | exception Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate st c e ~at))
-  | exception Exit_task -> abandon st code c; raise Exit_task
-  | exception (Kept_leave _ as left) -> abandon st code c; raise left
-  | exception (Continued_leave _ as left) -> pop st c; raise left
+  | Long_jump (j, e) -> abandon st code c; raise (Long_jump (j, relocate st c e ~at))
+  | Exit_task -> abandon st code c; raise Exit_task
+  | Kept_leave _ -> abandon st code c; raise left
+  | Continued_leave _ -> pop st c; raise left
+  | _ -> raise left
 
 (* What [entered] does when an exception leaves the routine's body. *)
 and left_by st code (c : act) left =
