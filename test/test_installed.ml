@@ -128,6 +128,12 @@ let fixed_arity_same_answers () =
            | Rapid_runtime.Installed_routine.One g ->
                Alcotest.(check int) (name ^ ": one parameter") 1 arity;
                List.iter (fun a -> same name (general [ a ]) (fun () -> g a)) values
+           | Length g ->
+               (* the promise an engine computes it by: a string's length, as a num *)
+               Alcotest.(check int) (name ^ ": one parameter") 1 arity;
+               List.iter (fun a -> same name (general [ a ]) (fun () -> g a)) values;
+               List.iter (fun s -> if g (V.String s) <> Ok (V.Num (float_of_int (String.length s))) then
+                             Alcotest.failf "%s: not the length of %S" name s) [ ""; "a"; "abcdef"; String.make 80 'x' ]
            | Two g ->
                Alcotest.(check int) (name ^ ": two parameters") 2 arity;
                List.iter (fun a -> List.iter (fun b -> same name (general [ a; b ]) (fun () -> g a b)) values) values

@@ -325,6 +325,18 @@ let double_float st ~at x = if Float.is_finite x then x else fail st ~at "ERR_OV
 (* [binary]'s dnum result: the double as it is, an infinite result ERR_OVERFLOW (R-3.12-c). *)
 let double_num st ~at x = if Float.is_finite x then V.Dnum x else fail st ~at "ERR_OVERFLOW" [@@inline]
 
+(* string + string (§3.12): a result beyond 80 characters is ERR_STRTOOLNG (§2.13), its length
+   known before the copy. Stdlib.(^) written out, which spares its call. *)
+let concat st ~at p q =
+  let n = String.length p and m = String.length q in
+  if n + m > 80 then fail st ~at "ERR_STRTOOLNG"
+  else begin
+    let b = Bytes.create (n + m) in
+    Bytes.unsafe_blit_string p 0 b 0 n;
+    Bytes.unsafe_blit_string q 0 b n m;
+    V.String (Bytes.unsafe_to_string b)
+  end [@@inline]
+
 (* [condition]'s comparison of two nums (§3.12). *)
 let compare_nums (op : Arith.binary) (p : float) (q : float) =
   match op with
@@ -871,6 +883,10 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
       let slow u = check st ~at (Arith.binary op u v) in
       let q = if op = Num_sub then -. q else q in
       fun a -> (match a.ext.boxes.(i).(a.ext.idx.(i)) with V.Num p -> single_num st ~at (p +. q) | u -> slow u)
+  | Binary ((Num_add | Num_sub) as op, x, { e = Literal (V.Num q); _ }) when is_str_length st r x ->
+      (* StrLen(s) +- k: the length not built as a num (as [binary_literal]) *)
+      let len = Option.get (str_length st r ~at x) and q = if op = Num_sub then -. q else q in
+      fun a -> single_num st ~at (len a +. q)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
@@ -912,6 +928,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
         let vs = Array.make n (V.Bool false) in
         for k = 0 to n - 1 do vs.(k) <- members.(k) a done;
         (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
+  | Call _ when is_str_length st r e -> let len = Option.get (str_length st r ~at e) in fun a -> V.Num (len a)
   | Call c -> (
       let f = call st r ~at ~function_call:true c in
       match c.callee with
@@ -978,8 +995,7 @@ and binary st ~at (op : Arith.binary) x y : act -> V.t =
      length known before the copy *)
   | String_concat -> fun a -> let u = x a in let v = y a in
       (match u, v with
-       | V.String p, V.String q ->
-           if String.length p + String.length q > 80 then fail st ~at "ERR_STRTOOLNG" else V.String (p ^ q)
+       | V.String p, V.String q -> concat st ~at p q
        | _ -> slow u v)
   | _ -> fun a -> let u = x a in let v = y a in slow u v
 
@@ -999,11 +1015,12 @@ and binary_literal ?own st ~at (op : Arith.binary) x v q : act -> V.t =
 
 (* An operand of a flat slot's store or of a comparison (see [flat]), read where it is: a flat
    slot, or a num or dnum literal. Closures give floats boxed, so these are read in the closure of
-   the store or the comparison itself. *)
-and flat_operand st (r : routine) (e : Ir.expr) =
+   the store or the comparison itself; and StrLen's number, which [str_length] gives unboxed. *)
+and flat_operand st (r : routine) ~at (e : Ir.expr) =
   match e.e with
   | Literal (V.Num q | V.Dnum q) -> `Const q
   | Read (Whole (Local i)) -> (match local_access st r i with Flat_num k | Flat_dnum k -> `Slot k | _ -> `Other)
+  | Call _ -> (match str_length st r ~at e with Some f -> `Length f | None -> `Other)
   | _ -> `Other
 
 (* x op y into the flat slot k, x a flat slot and y one or a literal: as [binary] computes it (a
@@ -1029,6 +1046,13 @@ and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
   | Dnum_mul, `Slot i, `Slot j -> Some (fun a ->
       let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. n.(j)); true)
   | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q); true)
+  (* the slot read before the length is computed (the left operand first, §3.1) *)
+  | Num_add, `Slot i, `Length f -> Some (fun a ->
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p +. f a); true)
+  | Num_sub, `Slot i, `Length f -> Some (fun a ->
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p -. f a); true)
+  | Num_add, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a +. q); true)
+  | Num_sub, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a -. q); true)
   | _ -> None
 
 (* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
@@ -1039,13 +1063,14 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
     fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
   match e.e with
   | Binary (op, x, y) -> (
-      match flat_arith st ~at op k (flat_operand st r x) (flat_operand st r y) with
+      match flat_arith st ~at op k (flat_operand st r ~at x) (flat_operand st r ~at y) with
       | Some f -> f
       | None -> general ())
   | _ ->
-      match flat_operand st r e with
+      match flat_operand st r ~at e with
       | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j); true
       | `Const q -> fun a -> a.ext.nums.(k) <- q; true
+      | `Length f -> fun a -> a.ext.nums.(k) <- f a; true
       | `Other -> general ()
 
 (* An index that is a flat num slot, or one and a num literal added or taken away (a{j},
@@ -1068,12 +1093,12 @@ and flat_element st (r : routine) ~at (e : Ir.expr) =
   | _ -> None
 
 (* x op y of a flat slot and a flat slot or a literal (either side), compared (§3.12). *)
-and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option =
+and flat_compare st (r : routine) ~at (op : Arith.binary) x y : (act -> bool) option =
   let flip = function
     | Arith.Num_lt -> Arith.Num_gt | Num_gt -> Num_lt | Num_le -> Num_ge | Num_ge -> Num_le
     | Dnum_lt -> Dnum_gt | Dnum_gt -> Dnum_lt | Dnum_le -> Dnum_ge | Dnum_ge -> Dnum_le | o -> o in
-  let op, x, y = match flat_operand st r x, flat_operand st r y with
-    | (`Const _ as c), (`Slot _ as v) -> (flip op, v, c)
+  let op, x, y = match flat_operand st r ~at x, flat_operand st r ~at y with
+    | (`Const _ as c), ((`Slot _ | `Length _) as v) -> (flip op, v, c)
     | u, v -> (op, u, v) in
   match op, x, y with
   | (Num_lt | Dnum_lt), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) < n.(j))
@@ -1084,6 +1109,12 @@ and flat_compare st (r : routine) (op : Arith.binary) x y : (act -> bool) option
   | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) > q)
   | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) >= n.(j))
   | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) >= q)
+  | Num_lt, `Length f, `Const q -> Some (fun a -> f a < q)
+  | Num_le, `Length f, `Const q -> Some (fun a -> f a <= q)
+  | Num_gt, `Length f, `Const q -> Some (fun a -> f a > q)
+  | Num_ge, `Length f, `Const q -> Some (fun a -> f a >= q)
+  | Equal, `Length f, `Const q -> Some (fun a -> f a = q)
+  | Not_equal, `Length f, `Const q -> Some (fun a -> not (f a = q))
   | _ -> None
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -1122,7 +1153,7 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
                 let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v))
     | _ ->
-    match flat_compare st r op x y with
+    match flat_compare st r ~at op x y with
     | Some _ as flat -> flat
     | None ->
     match op, y.e with
@@ -1477,6 +1508,41 @@ and values_entry st (callee : routine) (arguments : argument array) =
       | _ -> None)
   | _ -> None
 
+(* A call of StrLen (ch. 11) that [values_call] would make, the library's function
+   (Installed_routine.Length): its number as a float, without the call nor the num built. Its
+   argument's copy counted in the memory budget as [values_call] counts it; an own slot read in
+   the closure itself. *)
+and str_length_call st (caller : routine) (e : Ir.expr) =
+  match e.e with
+  | Call { callee = Routine k; arguments = [| By_value x |] as arguments; _ } -> (
+      let callee = st.program.routines.(k) in
+      match callee.primitive, values_entry st callee arguments with
+      | Some name, Some { IR.fixed = Some (IR.Length g); _ }
+        when not (Rapid_typing.Types.same_name name "raisetouser") && not (callee.nostepin && not caller.nostepin) ->
+          Some (callee, x, g)
+      | _ -> None)
+  | _ -> None
+
+and is_str_length st caller e = str_length_call st caller e <> None
+
+and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> float) option =
+  match str_length_call st caller e with
+  | None -> None
+  | Some (callee, (x : Ir.expr), g) ->
+      let what = "the copy for the parameter " ^ callee.parameters.(0).p_name in
+      let limits = st.limits in
+      let slow v =
+        if value_bytes v > limits.max_memory - st.memory then memory_exhausted st what at;
+        match g v with Ok v -> V.num_value v | Error name -> fail st ~at name in
+      let length p =
+        let n = String.length p in
+        if 32 + n > limits.max_memory - st.memory then memory_exhausted st what at;
+        float_of_int n [@@inline] in
+      Some (match x.e with
+          | Read (Whole (Local i)) when local_access st caller i = Own ->
+              fun a -> (match a.store.(i) with V.String p -> length p | v -> slow v)
+          | _ -> let f = expr st caller ~at x in fun a -> (match f a with V.String p -> length p | v -> slow v))
+
 and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument array) : act -> V.t =
   let callee = st.program.routines.(k) in
   match callee.primitive, values_entry st callee arguments with
@@ -1715,7 +1781,7 @@ and values_call st (caller : routine) ~at (callee : routine) f fixed (arguments 
   let n = Array.length args in
   match args, fixed with
   (* By the number of arguments: the same copies counted in the same order, no array. *)
-  | [| f0 |], Some (IR.One g) -> let w0 = whats.(0) in fun a ->
+  | [| f0 |], Some (IR.One g | IR.Length g) -> let w0 = whats.(0) in fun a ->
       let v0 = f0 a in
       if value_bytes v0 > limits.max_memory - st.memory then memory_exhausted st w0 at;
       result (g v0)

@@ -552,7 +552,7 @@ let byte_base a =
   Byte_text.base_of_switches ~hex:(present a 1) ~okt:(present a 2) ~bin:(present a 3) ~char:(present a 4)
 
 let implementations =
-  [ ("StrLen", 1, f1 str_len);
+  [ ("StrLen", 1, { (f1 str_len) with fixed = Some (Length str_len) });
     ("StrPart", 3, f3 str_part);
     ("StrFind", 4, any @@ fun a -> str_find ~not_in_set:(present a 3) (arg a 0) (arg a 1) (arg a 2));
     ("StrMatch", 3, f3 str_match);

@@ -26,6 +26,7 @@ type fixed =
   | One of (Value.t -> (Value.t, string) Stdlib.result)
   | Two of (Value.t -> Value.t -> (Value.t, string) Stdlib.result)
   | Three of (Value.t -> Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+  | Length of (Value.t -> (Value.t, string) Stdlib.result)
 
 type entry = {
   name : string;

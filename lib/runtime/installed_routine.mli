@@ -63,6 +63,9 @@ type fixed =
   | One of (Value.t -> (Value.t, string) Stdlib.result)
   | Two of (Value.t -> Value.t -> (Value.t, string) Stdlib.result)
   | Three of (Value.t -> Value.t -> Value.t -> (Value.t, string) Stdlib.result)
+  | Length of (Value.t -> (Value.t, string) Stdlib.result)
+      (** [One] of StrLen (ch. 11): of a string, the number of its characters as a num, never an
+          error; an engine may compute it from the string without the call *)
 
 type entry = {
   name : string;                               (** as declared *)
