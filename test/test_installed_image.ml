@@ -8,20 +8,36 @@ module Level = Rapid_runtime.Installed_level
 
 let image () : Level.t = Marshal.from_string Rapid_load.Installed_image.data 0
 
+let name_of (m : Rapid_syntax.Ast.module_declaration) =
+  match m.module_name.it with Rapid_syntax.Ast.Ident n -> String.lowercase_ascii n | ID_placeholder -> ""
+
+let declarations (m : Rapid_syntax.Ast.module_declaration) =
+  List.length m.type_definitions + List.length m.data_declarations + List.length m.routine_declarations
+
 let in_use () =
+  let module Env = Rapid_typing.Installed_env in
   Alcotest.(check bool) "the installed environment comes from the image" true (Rapid_load.Installed_image.in_use ());
-  match Rapid_typing.Installed_env.modules () with
-  | Error _ -> Alcotest.fail "the installed environment does not parse"
-  | Ok modules ->
-      Alcotest.(check int) "its modules" (List.length (Level.modules (image ()))) (List.length modules);
+  match Env.level (), Env.modules () with
+  | Error _, _ | _, Error _ -> Alcotest.fail "the installed environment does not parse"
+  | Ok level, Ok modules ->
+      Alcotest.(check int) "its modules" (List.length (Level.level (image ()))) (List.length level);
       (* the checker's and the lowering's kept work is found by this list, compared physically *)
-      Alcotest.(check bool) "the same list at every call" true
-        (match Rapid_typing.Installed_env.modules () with Ok again -> again == modules | Error _ -> false);
+      Alcotest.(check bool) "the same level at every call" true
+        (match Env.level () with Ok again -> again == level | Error _ -> false);
+      Alcotest.(check bool) "the same modules at every call" true
+        (match Env.modules () with Ok again -> again == modules | Error _ -> false);
+      Alcotest.(check (list string)) "the level's headers name the modules, in order"
+        (List.map name_of modules) (List.map name_of level);
+      Alcotest.(check int) "the headers hold no declaration" 0 (List.fold_left (fun n m -> n + declarations m) 0 level);
+      Alcotest.(check bool) "the modules hold their declarations" true
+        (List.fold_left (fun n m -> n + declarations m) 0 modules > 100);
+      Alcotest.(check bool) "the level's full modules are the modules" true
+        (match Env.full level with Ok l -> l == modules | Error _ -> false);
+      Alcotest.(check bool) "the level and the modules are the same level" true
+        (Env.same level modules && Env.same modules level);
+      Alcotest.(check bool) "a copy of the modules is another level" false (Env.same level (modules @ []));
       Alcotest.(check bool) "without the assertions of rapid-sem test" true
-        (List.for_all (fun (m : Rapid_syntax.Ast.module_declaration) ->
-             match m.module_name.it with
-             | Rapid_syntax.Ast.Ident n -> String.lowercase_ascii n <> "installed_unit_test"
-             | ID_placeholder -> true) modules)
+        (List.for_all (fun m -> name_of m <> "installed_unit_test") modules)
 
 let same_as_now () =
   let files, records = Level.before (image ()) in
@@ -33,9 +49,11 @@ let same_as_now () =
   Rapid_typing.Types.restore_record_ids saved_records;
   match now with
   | Error e -> Alcotest.fail e
-  | Ok now ->
+  | Ok (now, trees) ->
       Alcotest.(check bool) "the same bytes as the image's" true
-        (Marshal.to_string now [] = Rapid_load.Installed_image.data)
+        (Marshal.to_string now [] = Rapid_load.Installed_image.data);
+      Alcotest.(check bool) "the same trees as the image's" true
+        (Marshal.to_string trees [] = Rapid_load.Installed_image.trees)
 
 (* A program over the image's environment: its routines and globals come after the installed
    ones, and an installed routine, a record type and an installed constant are found. *)
@@ -59,13 +77,43 @@ ENDMODULE
           Alcotest.(check (list string)) e.engine_name [ "output x4"; "output [100,500,5000,1000]" ] lines)
         [ Rapid_fuzz.Fuzz_run.machine; Rapid_fuzz.Fuzz_run.closure ]
 
-(* A task without signals or assertions is checked against the image's list itself: the checker
+(* A task without signals or assertions is checked against the image's level itself: the checker
    and the lowering know the installed level by that list, and a copy of it (an append of
    nothing) would check and lower the whole installed environment again at every start. *)
 let same_list () =
-  match Rapid_typing.Installed_env.modules (), Rapid_load.Session.installed () with
+  match Rapid_typing.Installed_env.level (), Rapid_load.Session.installed () with
   | Ok image, Ok session -> Alcotest.(check bool) "the same list" true (image == session)
   | _ -> Alcotest.fail "the installed environment does not parse"
+
+(* A task whose installed level is not the image's (rapid-sem test's assertions added) is
+   checked from the installed modules' declarations: an installed routine, type and constant
+   are found, an assertion too, and a name declared nowhere is still an error. *)
+let another_level () =
+  let check text =
+    let m = match Rapid_syntax.Parse.parse_string ~name:"level.mod" text with
+      | Ok m -> m | Error _ -> Alcotest.fail "the program does not parse" in
+    match Rapid_load.Session.installed ~testing:true () with
+    | Error _ -> Alcotest.fail "the installed environment does not parse"
+    | Ok installed ->
+        Alcotest.(check bool) "not the image's level" false
+          (match Rapid_typing.Installed_env.level () with Ok l -> l == installed | Error _ -> true);
+        List.length (Rapid_typing.Check.errors (Rapid_typing.Check.check_task ~installed [ m ])) in
+  Alcotest.(check int) "installed objects and an assertion" 0
+    (check {|MODULE m
+  PROC main()
+    VAR robtarget p;
+    TPWrite "x" \Num:=StrLen("abc") + v100.v_tcp;
+    AssertEqual 3, StrLen("abc");
+  ENDPROC
+ENDMODULE
+|});
+  Alcotest.(check int) "an unknown name" 1
+    (check {|MODULE m
+  PROC main()
+    NoSuchRoutine 3;
+  ENDPROC
+ENDMODULE
+|})
 
 (* Data read by Gc_pacing.read_marked is allocated marked in a cycle begun for it: it must live
    through that cycle's end and the next ones like any other, its fields updated with values
@@ -97,4 +145,5 @@ let suite =
       Alcotest.test_case "the image is the environment computed now" `Quick same_as_now;
       Alcotest.test_case "a program over the image's environment" `Quick program_runs;
       Alcotest.test_case "a plain task's installed modules are the image's list" `Quick same_list;
+      Alcotest.test_case "a task over another installed level" `Quick another_level;
       Alcotest.test_case "data read marked lives on through collections" `Quick read_marked_survives ] )

@@ -1,6 +1,7 @@
 open Rapid_syntax
 
 let data = Installed_image_data.image
+let trees = Installed_image_data.trees
 
 (* At initialisation, before anything parses: the image's regions name its files by their ids,
    and its record types have their ids, so both are taken before any other file or record type. *)
@@ -13,10 +14,12 @@ let () =
     Gc_pacing.begin_cycle ();
     Source.restore_registry (Marshal.from_string Installed_image_data.files 0);
     Rapid_typing.Types.restore_record_ids Installed_image_data.record_ids;
-    Rapid_typing.Installed_env.set_image (fun () ->
-        let t : Installed_level.t = Gc_pacing.read_marked (fun () -> Marshal.from_string data 0) in
-        Installed_level.install t;
-        Installed_level.modules t)
+    Rapid_typing.Installed_env.set_image
+      ~level:(fun () ->
+          let t : Installed_level.t = Gc_pacing.read_marked (fun () -> Marshal.from_string data 0) in
+          Installed_level.install t;
+          Installed_level.level t)
+      ~trees:(fun () -> Marshal.from_string Installed_image_data.trees 0)
   end
 
 let in_use () = usable

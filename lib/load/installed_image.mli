@@ -11,3 +11,7 @@ val in_use : unit -> bool
 val data : string
 (** The marshalled {!Rapid_runtime.Installed_level.t}, for the test that compares it with the
     environment computed now. *)
+
+val trees : string
+(** The marshalled installed modules with their declarations, read only where a run needs them
+    (Rapid_typing.Installed_env.modules). *)

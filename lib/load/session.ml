@@ -78,14 +78,18 @@ let installed ?(testing = false) ?(io = Io.empty) () =
   | Some (testing', text', result) when testing' = testing && text' = text -> result
   | _ ->
       let tests = if testing then Rapid_typing.Installed_env.test_modules () else Ok [] in
-      (* the installed modules' list itself when nothing is added: the checker and the lowering
+      (* the installed level's list itself when nothing is added: the checker and the lowering
          know the build-time image's level by that list (Check.installed_state) *)
       let ( @@@ ) l = function [] -> l | more -> l @ more in
       let result =
-        match Rapid_typing.Installed_env.modules (), tests, signal_module text with
-        | Error d, _, _ | _, Error d, _ | _, _, Error d -> Error d
-        | Ok installed, Ok tests, Ok None -> Ok (installed @@@ tests)
-        | Ok installed, Ok tests, Ok (Some m) -> Ok (installed @@@ tests @@@ [ m ]) in
+        match tests, signal_module text with
+        | Error d, _ | _, Error d -> Error d
+        (* nothing added: the level's headers, without reading the declarations' trees *)
+        | Ok [], Ok None -> Rapid_typing.Installed_env.level ()
+        | Ok tests, Ok signals -> (
+            match Rapid_typing.Installed_env.modules () with
+            | Error d -> Error d
+            | Ok installed -> Ok (installed @@@ tests @@@ Option.to_list signals)) in
       last_installed := Some (testing, text, result);
       result
 

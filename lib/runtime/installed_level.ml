@@ -6,7 +6,7 @@ type t = {
   records_before : int;
   files : Source.registry;
   record_ids : int;
-  modules : Ast.module_declaration list;
+  level : Ast.module_declaration list;
   checked : Check.installed_state;
   lowered : Lower.installed_lowering;
   values : Initial_values.kept;
@@ -33,14 +33,20 @@ let compute () =
               Error (String.concat "\n" ("the installed data's initial values:"
                                          :: List.map Rapid_typing.Report.to_string reports))
           | Ok _ ->
-              Ok { files_before; records_before; files = Source.registry ();
-                   record_ids = Rapid_typing.Types.record_ids_used (); modules; checked; lowered;
-                   values = Option.get (Initial_values.kept ()) })
+              (* the state keyed by the modules' headers, so that it holds no declaration's tree:
+                 those are marshalled apart (Installed_env.level) *)
+              let level = List.map (fun (m : Ast.module_declaration) ->
+                  { m with type_definitions = []; data_declarations = []; routine_declarations = [] }) modules in
+              Ok ({ files_before; records_before; files = Source.registry ();
+                    record_ids = Rapid_typing.Types.record_ids_used (); level;
+                    checked = Check.installed_state_of checked level;
+                    lowered = Lower.installed_lowering_of lowered level;
+                    values = Option.get (Initial_values.kept ()) }, modules))
 
 let files t = t.files
 let before t = (t.files_before, t.records_before)
 let record_ids t = t.record_ids
-let modules t = t.modules
+let level t = t.level
 
 let install t =
   Check.use_installed_state t.checked;

@@ -6,8 +6,9 @@
 
 type t
 
-val compute : unit -> (t, string) result
-(** Parses, checks and lowers the installed modules now. The ids of the files it registers and of
+val compute : unit -> (t * Rapid_syntax.Ast.module_declaration list, string) result
+(** Parses, checks and lowers the installed modules now: the level and the modules with their
+    declarations, which the level does not hold (they are marshalled apart). The ids of the files it registers and of
     the record types it makes are part of the result: a process uses it only where as many files
     were registered and record types made before as when it was computed ({!before}). *)
 
@@ -20,10 +21,11 @@ val files : t -> Rapid_syntax.Source.registry
 val record_ids : t -> int
 (** The record types' ids [compute] used. *)
 
-val modules : t -> Rapid_syntax.Ast.module_declaration list
+val level : t -> Rapid_syntax.Ast.module_declaration list
+(** The modules' headers (Rapid_typing.Installed_env.level), which the state is keyed by. *)
 
 val install : t -> unit
 (** The checker's, the lowering's and the initial values' shared state become this one's
     (Check.use_installed_state, Lower.use_installed_lowering, Initial_values.keep): the next
-    tasks over [modules t] start from it. The files and the record ids are restored apart
+    tasks over [level t] start from it. The files and the record ids are restored apart
     (before anything else registers a file or makes a record type). *)

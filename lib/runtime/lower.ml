@@ -634,10 +634,12 @@ let installed_cache : (A.module_declaration list * E.t * part * ctx) option ref 
 let installed_part ~installed (elab : E.t) =
   let base = Option.value elab.installed ~default:elab in
   match !installed_cache with
-  | Some (l, e, part, c) when l == installed && e == base -> (part, c)
+  | Some (l, e, part, c) when Rapid_typing.Installed_env.same l installed && e == base -> (part, c)
   | _ ->
       let ctx = new_ctx base in
-      let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed) in
+      (* a level the image's part is not for: its declarations read (Installed_env.full) *)
+      let declarations = match Rapid_typing.Installed_env.full installed with Ok l -> l | Error _ -> installed in
+      let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) declarations) in
       if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
       (part, ctx)
 
@@ -647,6 +649,8 @@ let installed_lowering ~installed (elab : E.t) : installed_lowering =
   let base = Option.value elab.installed ~default:elab in
   let ctx = new_ctx base in
   (installed, base, lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) installed), ctx)
+
+let installed_lowering_of (_, base, part, ctx) level : installed_lowering = (level, base, part, ctx)
 
 let use_installed_lowering l = installed_cache := Some l
 

@@ -20,5 +20,8 @@ val installed_lowering :
   installed:Rapid_syntax.Ast.module_declaration list -> Rapid_typing.Elaboration.t -> installed_lowering
 (** From the elaboration of a task checked over [installed] (or of the installed level itself). *)
 
+val installed_lowering_of : installed_lowering -> Rapid_syntax.Ast.module_declaration list -> installed_lowering
+(** The same part keyed by the same modules given by their headers alone (Installed_env.level). *)
+
 val use_installed_lowering : installed_lowering -> unit
 (** The next programs over its installed modules and elaboration start from it. *)

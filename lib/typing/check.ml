@@ -1870,10 +1870,12 @@ let installed_cache : (module_declaration list * options * ctx * module_info lis
    check under [allow_unknown = true] (which differs only in what it does with unknown names). *)
 let installed_half ?text options installed =
   match !installed_cache with
-  | Some (l, o, ctx, infos) when l == installed && (o = options || not o.allow_unknown) ->
+  | Some (l, o, ctx, infos) when Installed_env.same l installed && (o = options || not o.allow_unknown) ->
       ({ (copy_ctx ?text (Report.create ()) ctx) with options }, infos)
   | _ ->
-      let ctx, infos = check_installed options installed in
+      (* a level the image's state is not for: its declarations read (Installed_env.full) *)
+      let declarations = match Installed_env.full installed with Ok l -> l | Error _ -> installed in
+      let ctx, infos = check_installed options declarations in
       if Report.all ctx.report = [] then begin
         installed_cache := Some (installed, options, ctx, infos);
         (copy_ctx ?text (Report.create ()) ctx, infos)
@@ -1964,5 +1966,9 @@ type installed_state = module_declaration list * options * ctx * module_info lis
 let installed_state installed =
   let ctx, infos = check_installed default_options installed in
   if Report.all ctx.report = [] then Ok (installed, default_options, ctx, infos) else Error (Report.all ctx.report)
+
+let installed_state_of (_, options, ctx, infos) level =
+  (* the second half reads of an installed module its name, attributes and region only *)
+  (level, options, ctx, List.map2 (fun i m -> { i with m }) infos level)
 
 let use_installed_state state = installed_cache := Some state

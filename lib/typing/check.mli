@@ -51,5 +51,9 @@ val installed_state : Ast.module_declaration list -> (installed_state, Report.t 
 (** The installed level of these installed modules, checked under {!default_options}; [Error]:
     the reports of a check that reported something. *)
 
+val installed_state_of : installed_state -> Ast.module_declaration list -> installed_state
+(** The same state for the same modules given by their headers alone (Installed_env.level): the
+    state the image holds, without the declarations' trees. *)
+
 val use_installed_state : installed_state -> unit
 (** The next tasks over its installed modules start from this state. *)

@@ -22,14 +22,45 @@ let parse_files files =
 
 let parse () = parse_files (List.filter (fun (name, _) -> name <> test_file) Installed_sources.files)
 
-let image : (unit -> Ast.module_declaration list) option ref = ref None
+(* With an image (lib/load/installed_image.ml), the level every task is checked over is its
+   modules' headers (their names, attributes and regions): the image holds the checked and lowered
+   state keyed by that list, and the declarations' trees, which only a task whose installed level
+   differs (the assertions, the signals of an I/O configuration) or a reader of the declarations
+   needs, are a second image, read on first use: a run that does not need them does not pay for
+   them at start-up. *)
+type image = { level : unit -> Ast.module_declaration list; trees : unit -> Ast.module_declaration list }
 
-let set_image f = image := Some f
+let image : image option ref = ref None
+
+let set_image ~level ~trees = image := Some { level; trees }
+
+let headers =
+  lazy (match !image with Some i -> Ok (i.level ()) | None -> Error ())
 
 let parsed =
-  lazy (match !image with Some f -> Ok (f ()) | None -> parse ())
+  lazy (match !image with
+      | Some i -> ignore (Lazy.force headers); Ok (i.trees ())
+      | None -> parse ())
 
 let modules () = Lazy.force parsed
+
+let level () =
+  match !image with
+  | Some _ -> (match Lazy.force headers with Ok l -> Ok l | Error () -> modules ())
+  | None -> modules ()
+
+let full l =
+  if Option.is_some !image && Lazy.is_val headers
+     && (match Lazy.force headers with Ok h -> l == h | Error () -> false)
+  then modules ()
+  else Ok l
+
+let same a b =
+  a == b
+  || Lazy.is_val headers && Lazy.is_val parsed
+     && (match Lazy.force headers, Lazy.force parsed with
+         | Ok h, Ok f -> (a == h && b == f) || (a == f && b == h)
+         | _ -> false)
 
 let tests = lazy (parse_files (List.filter (fun (name, _) -> name = test_file) Installed_sources.files))
 
