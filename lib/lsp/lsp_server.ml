@@ -178,11 +178,9 @@ let run options ic oc =
   set_binary_mode_in ic true;
   set_binary_mode_out oc true;
   (match Rapid_load.Session.installed ~io:options.W.io () with
-   | Ok modules -> (
+   | Ok modules ->
        (* the index reads the installed declarations (hover, completion), not only the level *)
-       match Rapid_typing.Installed_env.full modules with
-       | Ok modules -> Lsp_index.use_installed modules
-       | Error _ -> ())
+       Lsp_index.use_installed (Rapid_typing.Installed_env.full modules)
    | Error _ -> ());
   let t = create options in
   let rec loop () =

@@ -638,7 +638,7 @@ let installed_part ~installed (elab : E.t) =
   | _ ->
       let ctx = new_ctx base in
       (* a level the image's part is not for: its declarations read (Installed_env.full) *)
-      let declarations = match Rapid_typing.Installed_env.full installed with Ok l -> l | Error _ -> installed in
+      let declarations = Rapid_typing.Installed_env.full installed in
       let part = lower_part ctx ~routine_base:0 ~global_base:0 (List.map (fun m -> (m, true)) declarations) in
       if Option.is_some elab.installed then installed_cache := Some (installed, base, part, ctx);
       (part, ctx)

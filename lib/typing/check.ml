@@ -1874,8 +1874,7 @@ let installed_half ?text options installed =
       ({ (copy_ctx ?text (Report.create ()) ctx) with options }, infos)
   | _ ->
       (* a level the image's state is not for: its declarations read (Installed_env.full) *)
-      let declarations = match Installed_env.full installed with Ok l -> l | Error _ -> installed in
-      let ctx, infos = check_installed options declarations in
+      let ctx, infos = check_installed options (Installed_env.full installed) in
       if Report.all ctx.report = [] then begin
         installed_cache := Some (installed, options, ctx, infos);
         (copy_ctx ?text (Report.create ()) ctx, infos)

@@ -34,8 +34,7 @@ let image : image option ref = ref None
 
 let set_image ~level ~trees = image := Some { level; trees }
 
-let headers =
-  lazy (match !image with Some i -> Ok (i.level ()) | None -> Error ())
+let headers = lazy (Option.map (fun i -> i.level ()) !image)
 
 let parsed =
   lazy (match !image with
@@ -44,22 +43,19 @@ let parsed =
 
 let modules () = Lazy.force parsed
 
-let level () =
-  match !image with
-  | Some _ -> (match Lazy.force headers with Ok l -> Ok l | Error () -> modules ())
-  | None -> modules ()
+let level () = match Lazy.force headers with Some l -> Ok l | None -> modules ()
 
+(* Only the image's headers lack their declarations, and the image's trees are read, never
+   parsed: no error to give. *)
 let full l =
-  if Option.is_some !image && Lazy.is_val headers
-     && (match Lazy.force headers with Ok h -> l == h | Error () -> false)
-  then modules ()
-  else Ok l
+  let headers_only = Lazy.is_val headers && (match Lazy.force headers with Some h -> h == l | None -> false) in
+  if headers_only then (match modules () with Ok f -> f | Error _ -> l) else l
 
 let same a b =
   a == b
   || Lazy.is_val headers && Lazy.is_val parsed
      && (match Lazy.force headers, Lazy.force parsed with
-         | Ok h, Ok f -> (a == h && b == f) || (a == f && b == h)
+         | Some h, Ok f -> (a == h && b == f) || (a == f && b == h)
          | _ -> false)
 
 let tests = lazy (parse_files (List.filter (fun (name, _) -> name = test_file) Installed_sources.files))

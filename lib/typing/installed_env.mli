@@ -15,9 +15,9 @@ val level : unit -> (Ast.module_declaration list, Diagnostic.t) result
     attributes, regions, no declarations), which the image's checked and lowered state is keyed
     by, so that a run that needs no declaration's tree never reads them; without, {!modules}. *)
 
-val full : Ast.module_declaration list -> (Ast.module_declaration list, Diagnostic.t) result
-(** The modules with their declarations of a list that may be {!level}'s headers: what a check
-    or a lowering that does not start from the image's state reads. *)
+val full : Ast.module_declaration list -> Ast.module_declaration list
+(** The modules with their declarations of a list that may be {!level}'s headers (any other list
+    is its own): what a check or a lowering that does not start from the image's state reads. *)
 
 val same : Ast.module_declaration list -> Ast.module_declaration list -> bool
 (** The same installed level: the same list (physically), or {!level}'s headers and {!modules}'
