@@ -65,11 +65,13 @@ type extension = {
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
   mutable nums : float array;         (* the flat slots' values (see [flat]); [||] until the routine
                                          data's initialisation or a FOR loop needs them *)
+  mutable num_boxes : V.t array;      (* per flat slot, the value it last took from a stored one
+                                         (see [flat_store]), when it still holds it *)
 }
 
 let shared_extension =
   { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None;
-    nums = [||] }
+    nums = [||]; num_boxes = [||] }
 
 (* The activation of a routine: its slots, and for alias parameters where their locations are. *)
 type act = {
@@ -651,8 +653,10 @@ let flat_num st r i = match local_access st r i with Flat_num k -> Some k | _ ->
 (* The flat slots' array of an activation, made when first needed. *)
 let flat_values st (a : act) =
   if Array.length a.ext.nums = 0 then begin
-    let nums = Array.make (flat_of st a.routine).count 0. in
-    if a.ext == shared_extension then a.ext <- { shared_extension with nums } else a.ext.nums <- nums
+    let count = (flat_of st a.routine).count in
+    let nums = Array.make count 0. and num_boxes = Array.make count no_value in
+    if a.ext == shared_extension then a.ext <- { shared_extension with nums; num_boxes }
+    else begin a.ext.nums <- nums; a.ext.num_boxes <- num_boxes end
   end;
   a.ext.nums
 
@@ -742,8 +746,14 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Whole (Local i) -> (
       match local_access st r i with
       | Own -> fun a -> a.store.(i)
-      | Flat_num k -> fun a -> V.Num a.ext.nums.(k)
-      | Flat_dnum k -> fun a -> V.Dnum a.ext.nums.(k)
+      | Flat_num k -> fun a ->
+          let e = a.ext in
+          let x = Array.unsafe_get e.nums k in
+          (match Array.unsafe_get e.num_boxes k with V.Num y as b when x = y && x <> 0. -> b | _ -> V.Num x)
+      | Flat_dnum k -> fun a ->
+          let e = a.ext in
+          let x = Array.unsafe_get e.nums k in
+          (match Array.unsafe_get e.num_boxes k with V.Dnum y as b when x = y && x <> 0. -> b | _ -> V.Dnum x)
       | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
@@ -1060,7 +1070,20 @@ and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
 and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
   let general () =
     let f = expr st r ~at e in
-    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
+    match e.e with
+    | Read _ ->
+        (* A value read from where it is stored (an element, a field, module data) is kept with
+           the slot: the slot's value read as a whole value (as an argument, or stored back, as
+           a swap does) is then that one, not a new one, nor one the collector must move. The
+           cache is never stale: a read gives it only while the slot holds the same number
+           (zero, whose sign the test cannot see, is always made anew). *)
+        fun a ->
+          let v = f a in
+          (match v with
+           | V.Num x | V.Dnum x -> a.ext.nums.(k) <- x; Array.unsafe_set a.ext.num_boxes k v
+           | v -> a.ext.nums.(k) <- V.num_value v);
+          true
+    | _ -> fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
   match e.e with
   | Binary (op, x, y) -> (
       match flat_arith st ~at op k (flat_operand st r ~at x) (flat_operand st r ~at y) with
@@ -1671,7 +1694,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
               fun a -> [| box a k0; box a k1; box a k2; box a k3 |] in
         let general a =
           let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
-                     nums = [||] } in
+                     nums = [||]; num_boxes = [||] } in
           let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
                     result = no_value; nest = 0; memory = 0 } in
           for m = 0 to nv - 1 do
@@ -1699,7 +1722,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
               let b2 = if own2 then s else g2 and b3 = if own3 then s else g3 in
               let boxes = match n with
                 | 1 -> [| b0 |] | 2 -> [| b0; b1 |] | 3 -> [| b0; b1; b2 |] | _ -> [| b0; b1; b2; b3 |] in
-              let ext = { boxes; idx; present = [||]; bound; module_data; retries = 0; current = None; nums = [||] } in
+              let ext = { boxes; idx; present = [||]; bound; module_data; retries = 0; current = None; nums = [||];
+                         num_boxes = [||] } in
               let w = copy v in
               let store = match size with
                 | 1 -> [| w |] | 2 -> [| w; v_false |] | 3 -> [| w; v_false; v_false |]
@@ -2217,7 +2241,7 @@ and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : 
                present = (if optional then small_present n else [||]);
                bound = (if aliases then small_kinds n else [||]);
                module_data = (if aliases then small_bools n else [||]);
-               retries = 0; current = None; nums = [||] }
+               retries = 0; current = None; nums = [||]; num_boxes = [||] }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
 
