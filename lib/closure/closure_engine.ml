@@ -688,6 +688,15 @@ let index_sum st ~at general (a : 'a) p q n =
   let k = int_of_float x in
   if float_of_int k = x && k >= 1 && k <= n && k <= 16777216 then k - 1 else index st ~at (general a) n [@@inline]
 
+(* Whether module data [g] is an array of nums, dnums, bools or strings (every element has the
+   first's type): an element stored there is never a signal, and a value of those types is its
+   own copy. *)
+let scalar_elements st g =
+  match st.globals.(g) with
+  | V.Array e when Array.length e > 0 -> (
+      match e.(0) with V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> true | _ -> false)
+  | _ -> false
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole st (r : routine) = function
   | Global _ -> true
@@ -763,7 +772,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
       let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
       fun a ->
         let elements = parts globals.(g) in
-        elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
+        Array.unsafe_get elements (index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
   | Element (Whole w, [| ix |]) when plain_whole st r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
@@ -788,7 +797,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                  let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
-                  | V.Num p -> elements.(index_sum st ~at general a p q n)
+                  | V.Num p -> Array.unsafe_get elements (index_sum st ~at general a p q n)
                   | _ -> elements.(index st ~at (general a) n))
            | _ ->
                let j = Option.get (index_at st r ~at ix) in
@@ -1153,27 +1162,27 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
         Some (match op with
             | Arith.Num_lt -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
             | Num_le -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
             | Num_gt -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
             | _ -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v))
     | _ ->
     match flat_compare st r ~at op x y with
@@ -2615,6 +2624,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* module data's array, its index a flat slot or one and a literal ([flat_index]):
              the element located before the value, as below *)
           let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
+          if scalar_elements st g then
+            (* its elements numbers, booleans or strings: none is a signal, each its own copy *)
+            fun a ->
+              let elements = parts globals.(g) in
+              let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
+              Array.unsafe_set elements j (value a);
+              true
+          else
           fun a ->
             let elements = parts globals.(g) in
             let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
