@@ -65,11 +65,13 @@ type extension = {
   mutable current : error option;     (* the error its handler is handling, for RAISE; *)
   mutable nums : float array;         (* the flat slots' values (see [flat]); [||] until the routine
                                          data's initialisation or a FOR loop needs them *)
+  mutable num_boxes : V.t array;      (* per flat slot, the value it last took from a stored one
+                                         (see [flat_store]), when it still holds it *)
 }
 
 let shared_extension =
   { boxes = [||]; idx = [||]; present = [||]; bound = [||]; module_data = [||]; retries = 0; current = None;
-    nums = [||] }
+    nums = [||]; num_boxes = [||] }
 
 (* The activation of a routine: its slots, and for alias parameters where their locations are. *)
 type act = {
@@ -651,8 +653,10 @@ let flat_num st r i = match local_access st r i with Flat_num k -> Some k | _ ->
 (* The flat slots' array of an activation, made when first needed. *)
 let flat_values st (a : act) =
   if Array.length a.ext.nums = 0 then begin
-    let nums = Array.make (flat_of st a.routine).count 0. in
-    if a.ext == shared_extension then a.ext <- { shared_extension with nums } else a.ext.nums <- nums
+    let count = (flat_of st a.routine).count in
+    let nums = Array.make count 0. and num_boxes = Array.make count no_value in
+    if a.ext == shared_extension then a.ext <- { shared_extension with nums; num_boxes }
+    else begin a.ext.nums <- nums; a.ext.num_boxes <- num_boxes end
   end;
   a.ext.nums
 
@@ -683,6 +687,15 @@ let index_sum st ~at general (a : 'a) p q n =
   let x = p +. q in
   let k = int_of_float x in
   if float_of_int k = x && k >= 1 && k <= n && k <= 16777216 then k - 1 else index st ~at (general a) n [@@inline]
+
+(* Whether module data [g] is an array of nums, dnums, bools or strings (every element has the
+   first's type): an element stored there is never a signal, and a value of those types is its
+   own copy. *)
+let scalar_elements st g =
+  match st.globals.(g) with
+  | V.Array e when Array.length e > 0 -> (
+      match e.(0) with V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> true | _ -> false)
+  | _ -> false
 
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole st (r : routine) = function
@@ -742,8 +755,14 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Whole (Local i) -> (
       match local_access st r i with
       | Own -> fun a -> a.store.(i)
-      | Flat_num k -> fun a -> V.Num a.ext.nums.(k)
-      | Flat_dnum k -> fun a -> V.Dnum a.ext.nums.(k)
+      | Flat_num k -> fun a ->
+          let e = a.ext in
+          let x = Array.unsafe_get e.nums k in
+          (match Array.unsafe_get e.num_boxes k with V.Num y as b when x = y && x <> 0. -> b | _ -> V.Num x)
+      | Flat_dnum k -> fun a ->
+          let e = a.ext in
+          let x = Array.unsafe_get e.nums k in
+          (match Array.unsafe_get e.num_boxes k with V.Dnum y as b when x = y && x <> 0. -> b | _ -> V.Dnum x)
       | Alias -> fun a -> a.ext.boxes.(i).(a.ext.idx.(i))
       | Optional_own -> fun a -> if a.ext.present.(i) then a.store.(i) else fail st ~at "ERR_NOTPRES"
       | Optional_alias ->
@@ -753,7 +772,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
       let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
       fun a ->
         let elements = parts globals.(g) in
-        elements.(index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
+        Array.unsafe_get elements (index_sum st ~at general a a.ext.nums.(k) q (Array.length elements))
   | Element (Whole w, [| ix |]) when plain_whole st r w ->
       (* One index into module data or an own slot: located as [locate] does (the index first,
          then its bounds), without building the location. *)
@@ -778,7 +797,7 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
                  let elements = parts globals.(g) in
                  let n = Array.length elements in
                  (match a.store.(i) with
-                  | V.Num p -> elements.(index_sum st ~at general a p q n)
+                  | V.Num p -> Array.unsafe_get elements (index_sum st ~at general a p q n)
                   | _ -> elements.(index st ~at (general a) n))
            | _ ->
                let j = Option.get (index_at st r ~at ix) in
@@ -1060,7 +1079,20 @@ and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
 and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
   let general () =
     let f = expr st r ~at e in
-    fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
+    match e.e with
+    | Read _ ->
+        (* A value read from where it is stored (an element, a field, module data) is kept with
+           the slot: the slot's value read as a whole value (as an argument, or stored back, as
+           a swap does) is then that one, not a new one, nor one the collector must move. The
+           cache is never stale: a read gives it only while the slot holds the same number
+           (zero, whose sign the test cannot see, is always made anew). *)
+        fun a ->
+          let v = f a in
+          (match v with
+           | V.Num x | V.Dnum x -> a.ext.nums.(k) <- x; Array.unsafe_set a.ext.num_boxes k v
+           | v -> a.ext.nums.(k) <- V.num_value v);
+          true
+    | _ -> fun a -> a.ext.nums.(k) <- (match f a with V.Num x | V.Dnum x -> x | v -> V.num_value v); true in
   match e.e with
   | Binary (op, x, y) -> (
       match flat_arith st ~at op k (flat_operand st r ~at x) (flat_operand st r ~at y) with
@@ -1130,27 +1162,27 @@ and condition st (r : routine) ~at (e : Ir.expr) : act -> bool =
         Some (match op with
             | Arith.Num_lt -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p < q | _ -> slow u v)
             | Num_le -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p <= q | _ -> slow u v)
             | Num_gt -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p > q | _ -> slow u v)
             | _ -> fun a ->
                 let e1 = parts globals.(g1) in
-                let u = e1.(index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
+                let u = Array.unsafe_get e1 (index_sum st ~at gen1 a a.ext.nums.(k1) q1 (Array.length e1)) in
                 let e2 = parts globals.(g2) in
-                let v = e2.(index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
+                let v = Array.unsafe_get e2 (index_sum st ~at gen2 a a.ext.nums.(k2) q2 (Array.length e2)) in
                 (match u, v with V.Num p, V.Num q -> p >= q | _ -> slow u v))
     | _ ->
     match flat_compare st r ~at op x y with
@@ -1671,7 +1703,7 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
               fun a -> [| box a k0; box a k1; box a k2; box a k3 |] in
         let general a =
           let ext = { boxes = boxes_of a; idx; present = [||]; bound; module_data; retries = 0; current = None;
-                     nums = [||] } in
+                     nums = [||]; num_boxes = [||] } in
           let c = { routine = callee; store = small_store size; ext; level = a.level + 1; parent = a;
                     result = no_value; nest = 0; memory = 0 } in
           for m = 0 to nv - 1 do
@@ -1699,7 +1731,8 @@ and call_routine_core st (caller : routine) ~at ~call_at k (arguments : argument
               let b2 = if own2 then s else g2 and b3 = if own3 then s else g3 in
               let boxes = match n with
                 | 1 -> [| b0 |] | 2 -> [| b0; b1 |] | 3 -> [| b0; b1; b2 |] | _ -> [| b0; b1; b2; b3 |] in
-              let ext = { boxes; idx; present = [||]; bound; module_data; retries = 0; current = None; nums = [||] } in
+              let ext = { boxes; idx; present = [||]; bound; module_data; retries = 0; current = None; nums = [||];
+                         num_boxes = [||] } in
               let w = copy v in
               let store = match size with
                 | 1 -> [| w |] | 2 -> [| w; v_false |] | 3 -> [| w; v_false; v_false |]
@@ -2217,7 +2250,7 @@ and new_act (n, aliases, optional, size, own_extension) (r : routine) (parent : 
                present = (if optional then small_present n else [||]);
                bound = (if aliases then small_kinds n else [||]);
                module_data = (if aliases then small_bools n else [||]);
-               retries = 0; current = None; nums = [||] }
+               retries = 0; current = None; nums = [||]; num_boxes = [||] }
            else shared_extension);
     level = parent.level + 1; parent; result = no_value; nest = 0; memory = 0 }
 
@@ -2591,6 +2624,14 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
           (* module data's array, its index a flat slot or one and a literal ([flat_index]):
              the element located before the value, as below *)
           let k, q, general = Option.get (flat_index st r ~at ix) and globals = st.globals in
+          if scalar_elements st g then
+            (* its elements numbers, booleans or strings: none is a signal, each its own copy *)
+            fun a ->
+              let elements = parts globals.(g) in
+              let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
+              Array.unsafe_set elements j (value a);
+              true
+          else
           fun a ->
             let elements = parts globals.(g) in
             let j = index_sum st ~at general a a.ext.nums.(k) q (Array.length elements) in
