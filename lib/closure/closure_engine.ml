@@ -697,6 +697,14 @@ let scalar_elements st g =
       match e.(0) with V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> true | _ -> false)
   | _ -> false
 
+(* Whether parameter [i] of [r] is a num, a dnum, a bool or a string: no signal is bound to it,
+   and a value of those types is its own copy. *)
+let scalar_parameter (r : routine) i =
+  i < Array.length r.parameters
+  && (match r.parameters.(i).p_type with
+      | Some { base = Num | Dnum | Bool | String; dims = Scalar } -> true
+      | _ -> false)
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole st (r : routine) = function
   | Global _ -> true
@@ -2585,18 +2593,31 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                let q = if negate then -. q else q in
                fun a ->
                  let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
-                 let v = match box.(j) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k in
-                 store box j v; true
+                 (* a num where it is bound: no signal, stored where it was read *)
+                 (match box.(j) with
+                  | V.Num p -> Array.unsafe_set box j (single_num st ~at (p +. q))
+                  | u -> store box j (slow u k));
+                 true
            | _ ->
                let y = expr st r ~at y in
                fun a ->
                  let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
                  let u = box.(j) in
                  let w = y a in
-                 let v = match u, w with
-                   | V.Num p, V.Num q -> single_num st ~at (if negate then p -. q else p +. q)
-                   | _ -> slow u w in
-                 store box j v; true)
+                 (match u, w with
+                  | V.Num p, V.Num q ->
+                      (* the parameter's type is num (its value was one): its place holds no signal *)
+                      Array.unsafe_set box j (single_num st ~at (if negate then p -. q else p +. q))
+                  | _ -> store box j (slow u w));
+                 true)
+      | Whole (Local i) when local_access st r i = Alias && scalar_parameter r i ->
+          (* an alias parameter of type num, dnum, bool or string: where it is bound, located
+             before the value; no signal is bound there, and the value is its own copy *)
+          fun a ->
+            let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+            let v = value a in
+            box.(j) <- v;
+            true
       | Whole (Local i) when local_access st r i = Alias ->
           (* an alias parameter: where it is bound, located before the value (as below) *)
           fun a ->
