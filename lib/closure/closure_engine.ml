@@ -2634,13 +2634,16 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             | Whole (Local i) when local_access st r i = Own -> None
             | _ -> Some (read st r ~at q) in
           let i = match q with Whole (Local i) -> i | _ -> -1 in
-          fun a ->
-            let comps = parts (match container with None -> a.store.(i) | Some c -> c a) in
-            let v = value a in
-            (match comps.(k) with
-             | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
-             | _ -> comps.(k) <- copy v);
-            true
+          (* A component that holds a num, dnum, bool or string holds no signal, and a value of
+             its type is its own copy: stored where it was read. *)
+          let store comps v =
+            match comps.(k) with
+            | V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> Array.unsafe_set comps k v
+            | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
+            | _ -> comps.(k) <- copy v [@@inline] in
+          (match container with
+           | None -> fun a -> let comps = parts a.store.(i) in store comps (value a); true
+           | Some c -> fun a -> let comps = parts (c a) in store comps (value a); true)
       | Element (Whole (Global g), [| ix |]) when flat_index st r ~at ix <> None ->
           (* module data's array, its index a flat slot or one and a literal ([flat_index]):
              the element located before the value, as below *)
