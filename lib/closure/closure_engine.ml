@@ -941,6 +941,19 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
            | V.Dnum p, V.Dnum q -> double_num st ~at (p -. q) | u, v -> slow u v)
        | _ -> fun a -> (match a.store.(i), a.store.(j) with
            | V.Dnum p, V.Dnum q -> double_num st ~at (p *. q) | u, v -> slow u v))
+  | Binary ((Num_add | Num_sub | Num_mul) as op, x, y)
+    when (match own_operand st r x, own_operand st r y with
+        | Some (_, k), Some (_, l) -> k >= 0 || l >= 0 | _ -> false) ->
+      (* own slots and components of own slots' records (p.x + dx, an Offs-like computation):
+         each read in the same closure, the left first, as [binary]'s rows compute them *)
+      let slow u v = check st ~at (Arith.binary op u v) in
+      let i, k = Option.get (own_operand st r x) and j, l = Option.get (own_operand st r y) in
+      let arith p q = match op with Num_add -> p +. q | Num_sub -> p -. q | _ -> p *. q [@@inline] in
+      let compute u v = match u, v with
+        | V.Num p, V.Num q -> single_num st ~at (arith p q) | _ -> slow u v [@@inline] in
+      if k >= 0 && l >= 0 then fun a -> compute (parts a.store.(i)).(k) (parts a.store.(j)).(l)
+      else if k >= 0 then fun a -> compute (parts a.store.(i)).(k) a.store.(j)
+      else fun a -> compute a.store.(i) (parts a.store.(j)).(l)
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -969,6 +982,14 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
          members fit it; otherwise the arguments do not fit the procedure. *)
       let x = expr st r ~at x in
       fun a -> match V.conform shape (x a) with Some v -> v | None -> fail st ~at "ERR_CALLPROC"
+
+(* An operand read where it is without a call: an own slot (its index and -1) or a component
+   of an own slot's record (the slot and the component). *)
+and own_operand st (r : routine) (e : Ir.expr) =
+  match e.e with
+  | Read (Whole (Local i)) when local_access st r i = Own -> Some (i, -1)
+  | Read (Component (Whole (Local i), k)) when local_access st r i = Own -> Some (i, k)
+  | _ -> None
 
 (* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
    programs) are computed here without building a result: the same rule as Arith's (one
