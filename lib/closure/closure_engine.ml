@@ -913,7 +913,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Binary ((Num_add | Num_sub) as op, x, { e = Literal (V.Num q); _ }) when is_str_length st r x ->
       (* StrLen(s) +- k: the length not built as a num (as [binary_literal]) *)
       let len = Option.get (str_length st r ~at x) and q = if op = Num_sub then -. q else q in
-      fun a -> single_num st ~at (len a +. q)
+      fun a -> single_num st ~at (float_of_int (len a) +. q)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
@@ -968,7 +968,8 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
         let vs = Array.make n (V.Bool false) in
         for k = 0 to n - 1 do vs.(k) <- members.(k) a done;
         (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
-  | Call _ when is_str_length st r e -> let len = Option.get (str_length st r ~at e) in fun a -> V.Num (len a)
+  | Call _ when is_str_length st r e ->
+      let len = Option.get (str_length st r ~at e) in fun a -> V.Num (float_of_int (len a))
   | Call c -> (
       let f = call st r ~at ~function_call:true c in
       match c.callee with
@@ -1096,11 +1097,13 @@ and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
   | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q); true)
   (* the slot read before the length is computed (the left operand first, §3.1) *)
   | Num_add, `Slot i, `Length f -> Some (fun a ->
-      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p +. f a); true)
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p +. float_of_int (f a)); true)
   | Num_sub, `Slot i, `Length f -> Some (fun a ->
-      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p -. f a); true)
-  | Num_add, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a +. q); true)
-  | Num_sub, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a -. q); true)
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p -. float_of_int (f a)); true)
+  | Num_add, `Length f, `Const q ->
+      Some (fun a -> a.ext.nums.(k) <- single_float st ~at (float_of_int (f a) +. q); true)
+  | Num_sub, `Length f, `Const q ->
+      Some (fun a -> a.ext.nums.(k) <- single_float st ~at (float_of_int (f a) -. q); true)
   | _ -> None
 
 (* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
@@ -1131,7 +1134,7 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
       match flat_operand st r ~at e with
       | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j); true
       | `Const q -> fun a -> a.ext.nums.(k) <- q; true
-      | `Length f -> fun a -> a.ext.nums.(k) <- f a; true
+      | `Length f -> fun a -> a.ext.nums.(k) <- float_of_int (f a); true
       | `Other -> general ()
 
 (* An index that is a flat num slot, or one and a num literal added or taken away (a{j},
@@ -1170,12 +1173,12 @@ and flat_compare st (r : routine) ~at (op : Arith.binary) x y : (act -> bool) op
   | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) > q)
   | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) >= n.(j))
   | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) >= q)
-  | Num_lt, `Length f, `Const q -> Some (fun a -> f a < q)
-  | Num_le, `Length f, `Const q -> Some (fun a -> f a <= q)
-  | Num_gt, `Length f, `Const q -> Some (fun a -> f a > q)
-  | Num_ge, `Length f, `Const q -> Some (fun a -> f a >= q)
-  | Equal, `Length f, `Const q -> Some (fun a -> f a = q)
-  | Not_equal, `Length f, `Const q -> Some (fun a -> not (f a = q))
+  | Num_lt, `Length f, `Const q -> Some (fun a -> float_of_int (f a) < q)
+  | Num_le, `Length f, `Const q -> Some (fun a -> float_of_int (f a) <= q)
+  | Num_gt, `Length f, `Const q -> Some (fun a -> float_of_int (f a) > q)
+  | Num_ge, `Length f, `Const q -> Some (fun a -> float_of_int (f a) >= q)
+  | Equal, `Length f, `Const q -> Some (fun a -> float_of_int (f a) = q)
+  | Not_equal, `Length f, `Const q -> Some (fun a -> not (float_of_int (f a) = q))
   | _ -> None
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -1586,7 +1589,8 @@ and str_length_call st (caller : routine) (e : Ir.expr) =
 
 and is_str_length st caller e = str_length_call st caller e <> None
 
-and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> float) option =
+(* The length as an int: a closure's float result would be a new box at each call. *)
+and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> int) option =
   match str_length_call st caller e with
   | None -> None
   | Some (callee, (x : Ir.expr), g) ->
@@ -1594,11 +1598,11 @@ and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> float) option =
       let limits = st.limits in
       let slow v =
         if value_bytes v > limits.max_memory - st.memory then memory_exhausted st what at;
-        match g v with Ok v -> V.num_value v | Error name -> fail st ~at name in
+        match g v with Ok v -> int_of_float (V.num_value v) | Error name -> fail st ~at name in
       let length p =
         let n = String.length p in
         if 32 + n > limits.max_memory - st.memory then memory_exhausted st what at;
-        float_of_int n [@@inline] in
+        n [@@inline] in
       Some (match x.e with
           | Read (Whole (Local i)) when local_access st caller i = Own ->
               fun a -> (match a.store.(i) with V.String p -> length p | v -> slow v)
