@@ -697,6 +697,14 @@ let scalar_elements st g =
       match e.(0) with V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> true | _ -> false)
   | _ -> false
 
+(* Whether parameter [i] of [r] is a num, a dnum, a bool or a string: no signal is bound to it,
+   and a value of those types is its own copy. *)
+let scalar_parameter (r : routine) i =
+  i < Array.length r.parameters
+  && (match r.parameters.(i).p_type with
+      | Some { base = Num | Dnum | Bool | String; dims = Scalar } -> true
+      | _ -> false)
+
 (* A whole place read and written where it is: module data, or an own slot of the activation. *)
 let plain_whole st (r : routine) = function
   | Global _ -> true
@@ -905,7 +913,7 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
   | Binary ((Num_add | Num_sub) as op, x, { e = Literal (V.Num q); _ }) when is_str_length st r x ->
       (* StrLen(s) +- k: the length not built as a num (as [binary_literal]) *)
       let len = Option.get (str_length st r ~at x) and q = if op = Num_sub then -. q else q in
-      fun a -> single_num st ~at (len a +. q)
+      fun a -> single_num st ~at (float_of_int (len a) +. q)
   | Binary (op, x, { e = Literal (V.Num q as v); _ }) ->
       let own = match x.e with Read (Whole (Local i)) when local_access st r i = Own -> Some i | _ -> None in
       binary_literal ?own st ~at op (expr st r ~at x) v q
@@ -933,6 +941,19 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
            | V.Dnum p, V.Dnum q -> double_num st ~at (p -. q) | u, v -> slow u v)
        | _ -> fun a -> (match a.store.(i), a.store.(j) with
            | V.Dnum p, V.Dnum q -> double_num st ~at (p *. q) | u, v -> slow u v))
+  | Binary ((Num_add | Num_sub | Num_mul) as op, x, y)
+    when (match own_operand st r x, own_operand st r y with
+        | Some (_, k), Some (_, l) -> k >= 0 || l >= 0 | _ -> false) ->
+      (* own slots and components of own slots' records (p.x + dx, an Offs-like computation):
+         each read in the same closure, the left first, as [binary]'s rows compute them *)
+      let slow u v = check st ~at (Arith.binary op u v) in
+      let i, k = Option.get (own_operand st r x) and j, l = Option.get (own_operand st r y) in
+      let arith p q = match op with Num_add -> p +. q | Num_sub -> p -. q | _ -> p *. q [@@inline] in
+      let compute u v = match u, v with
+        | V.Num p, V.Num q -> single_num st ~at (arith p q) | _ -> slow u v [@@inline] in
+      if k >= 0 && l >= 0 then fun a -> compute (parts a.store.(i)).(k) (parts a.store.(j)).(l)
+      else if k >= 0 then fun a -> compute (parts a.store.(i)).(k) a.store.(j)
+      else fun a -> compute a.store.(i) (parts a.store.(j)).(l)
   | Binary (op, x, y) -> binary st ~at op (expr st r ~at x) (expr st r ~at y)
   | And (x, y) ->
       let x = expr st r ~at x and y = expr st r ~at y in
@@ -947,7 +968,8 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
         let vs = Array.make n (V.Bool false) in
         for k = 0 to n - 1 do vs.(k) <- members.(k) a done;
         (match kind with Record_value -> V.Record vs | Array_value -> V.Array vs)
-  | Call _ when is_str_length st r e -> let len = Option.get (str_length st r ~at e) in fun a -> V.Num (len a)
+  | Call _ when is_str_length st r e ->
+      let len = Option.get (str_length st r ~at e) in fun a -> V.Num (float_of_int (len a))
   | Call c -> (
       let f = call st r ~at ~function_call:true c in
       match c.callee with
@@ -961,6 +983,14 @@ and expr st (r : routine) ~at (e : Ir.expr) : act -> V.t =
          members fit it; otherwise the arguments do not fit the procedure. *)
       let x = expr st r ~at x in
       fun a -> match V.conform shape (x a) with Some v -> v | None -> fail st ~at "ERR_CALLPROC"
+
+(* An operand read where it is without a call: an own slot (its index and -1) or a component
+   of an own slot's record (the slot and the component). *)
+and own_operand st (r : routine) (e : Ir.expr) =
+  match e.e with
+  | Read (Whole (Local i)) when local_access st r i = Own -> Some (i, -1)
+  | Read (Component (Whole (Local i), k)) when local_access st r i = Own -> Some (i, k)
+  | _ -> None
 
 (* The operators of §3.12 by their row in Arith. The rows on two nums (the bulk of real
    programs) are computed here without building a result: the same rule as Arith's (one
@@ -1067,11 +1097,13 @@ and flat_arith st ~at (op : Arith.binary) k x y : (act -> bool) option =
   | Dnum_mul, `Slot i, `Const q -> Some (fun a -> let n = a.ext.nums in n.(k) <- double_float st ~at (n.(i) *. q); true)
   (* the slot read before the length is computed (the left operand first, §3.1) *)
   | Num_add, `Slot i, `Length f -> Some (fun a ->
-      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p +. f a); true)
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p +. float_of_int (f a)); true)
   | Num_sub, `Slot i, `Length f -> Some (fun a ->
-      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p -. f a); true)
-  | Num_add, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a +. q); true)
-  | Num_sub, `Length f, `Const q -> Some (fun a -> a.ext.nums.(k) <- single_float st ~at (f a -. q); true)
+      let n = a.ext.nums in let p = n.(i) in n.(k) <- single_float st ~at (p -. float_of_int (f a)); true)
+  | Num_add, `Length f, `Const q ->
+      Some (fun a -> a.ext.nums.(k) <- single_float st ~at (float_of_int (f a) +. q); true)
+  | Num_sub, `Length f, `Const q ->
+      Some (fun a -> a.ext.nums.(k) <- single_float st ~at (float_of_int (f a) -. q); true)
   | _ -> None
 
 (* The store of a flat slot k: the value of e computed where [flat_arith] can, or else by its
@@ -1102,7 +1134,7 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
       match flat_operand st r ~at e with
       | `Slot j -> fun a -> let n = a.ext.nums in n.(k) <- n.(j); true
       | `Const q -> fun a -> a.ext.nums.(k) <- q; true
-      | `Length f -> fun a -> a.ext.nums.(k) <- f a; true
+      | `Length f -> fun a -> a.ext.nums.(k) <- float_of_int (f a); true
       | `Other -> general ()
 
 (* An index that is a flat num slot, or one and a num literal added or taken away (a{j},
@@ -1141,12 +1173,12 @@ and flat_compare st (r : routine) ~at (op : Arith.binary) x y : (act -> bool) op
   | (Num_gt | Dnum_gt), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) > q)
   | (Num_ge | Dnum_ge), `Slot i, `Slot j -> Some (fun a -> let n = a.ext.nums in n.(i) >= n.(j))
   | (Num_ge | Dnum_ge), `Slot i, `Const q -> Some (fun a -> a.ext.nums.(i) >= q)
-  | Num_lt, `Length f, `Const q -> Some (fun a -> f a < q)
-  | Num_le, `Length f, `Const q -> Some (fun a -> f a <= q)
-  | Num_gt, `Length f, `Const q -> Some (fun a -> f a > q)
-  | Num_ge, `Length f, `Const q -> Some (fun a -> f a >= q)
-  | Equal, `Length f, `Const q -> Some (fun a -> f a = q)
-  | Not_equal, `Length f, `Const q -> Some (fun a -> not (f a = q))
+  | Num_lt, `Length f, `Const q -> Some (fun a -> float_of_int (f a) < q)
+  | Num_le, `Length f, `Const q -> Some (fun a -> float_of_int (f a) <= q)
+  | Num_gt, `Length f, `Const q -> Some (fun a -> float_of_int (f a) > q)
+  | Num_ge, `Length f, `Const q -> Some (fun a -> float_of_int (f a) >= q)
+  | Equal, `Length f, `Const q -> Some (fun a -> float_of_int (f a) = q)
+  | Not_equal, `Length f, `Const q -> Some (fun a -> not (float_of_int (f a) = q))
   | _ -> None
 
 (* A condition (IF, WHILE, compact IF) as a truth value, without building a bool value for
@@ -1557,7 +1589,8 @@ and str_length_call st (caller : routine) (e : Ir.expr) =
 
 and is_str_length st caller e = str_length_call st caller e <> None
 
-and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> float) option =
+(* The length as an int: a closure's float result would be a new box at each call. *)
+and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> int) option =
   match str_length_call st caller e with
   | None -> None
   | Some (callee, (x : Ir.expr), g) ->
@@ -1565,11 +1598,11 @@ and str_length st (caller : routine) ~at (e : Ir.expr) : (act -> float) option =
       let limits = st.limits in
       let slow v =
         if value_bytes v > limits.max_memory - st.memory then memory_exhausted st what at;
-        match g v with Ok v -> V.num_value v | Error name -> fail st ~at name in
+        match g v with Ok v -> int_of_float (V.num_value v) | Error name -> fail st ~at name in
       let length p =
         let n = String.length p in
         if 32 + n > limits.max_memory - st.memory then memory_exhausted st what at;
-        float_of_int n [@@inline] in
+        n [@@inline] in
       Some (match x.e with
           | Read (Whole (Local i)) when local_access st caller i = Own ->
               fun a -> (match a.store.(i) with V.String p -> length p | v -> slow v)
@@ -2585,18 +2618,31 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
                let q = if negate then -. q else q in
                fun a ->
                  let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
-                 let v = match box.(j) with V.Num p -> single_num st ~at (p +. q) | u -> slow u k in
-                 store box j v; true
+                 (* a num where it is bound: no signal, stored where it was read *)
+                 (match box.(j) with
+                  | V.Num p -> Array.unsafe_set box j (single_num st ~at (p +. q))
+                  | u -> store box j (slow u k));
+                 true
            | _ ->
                let y = expr st r ~at y in
                fun a ->
                  let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
                  let u = box.(j) in
                  let w = y a in
-                 let v = match u, w with
-                   | V.Num p, V.Num q -> single_num st ~at (if negate then p -. q else p +. q)
-                   | _ -> slow u w in
-                 store box j v; true)
+                 (match u, w with
+                  | V.Num p, V.Num q ->
+                      (* the parameter's type is num (its value was one): its place holds no signal *)
+                      Array.unsafe_set box j (single_num st ~at (if negate then p -. q else p +. q))
+                  | _ -> store box j (slow u w));
+                 true)
+      | Whole (Local i) when local_access st r i = Alias && scalar_parameter r i ->
+          (* an alias parameter of type num, dnum, bool or string: where it is bound, located
+             before the value; no signal is bound there, and the value is its own copy *)
+          fun a ->
+            let box = a.ext.boxes.(i) and j = a.ext.idx.(i) in
+            let v = value a in
+            box.(j) <- v;
+            true
       | Whole (Local i) when local_access st r i = Alias ->
           (* an alias parameter: where it is bound, located before the value (as below) *)
           fun a ->
@@ -2613,13 +2659,16 @@ and stmt_core ?at st (r : routine) ~handler ~gotos (s : Ir.stmt) : act -> bool =
             | Whole (Local i) when local_access st r i = Own -> None
             | _ -> Some (read st r ~at q) in
           let i = match q with Whole (Local i) -> i | _ -> -1 in
-          fun a ->
-            let comps = parts (match container with None -> a.store.(i) | Some c -> c a) in
-            let v = value a in
-            (match comps.(k) with
-             | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
-             | _ -> comps.(k) <- copy v);
-            true
+          (* A component that holds a num, dnum, bool or string holds no signal, and a value of
+             its type is its own copy: stored where it was read. *)
+          let store comps v =
+            match comps.(k) with
+            | V.Num _ | V.Dnum _ | V.Bool _ | V.String _ -> Array.unsafe_set comps k v
+            | V.Handle _ as old when CC.is_signal old -> store_signal comps k v
+            | _ -> comps.(k) <- copy v [@@inline] in
+          (match container with
+           | None -> fun a -> let comps = parts a.store.(i) in store comps (value a); true
+           | Some c -> fun a -> let comps = parts (c a) in store comps (value a); true)
       | Element (Whole (Global g), [| ix |]) when flat_index st r ~at ix <> None ->
           (* module data's array, its index a flat slot or one and a literal ([flat_index]):
              the element located before the value, as below *)
