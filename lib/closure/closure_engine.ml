@@ -94,6 +94,8 @@ type flat = {
   position : int array;               (* per local slot: its index in [nums], or -1 *)
   dnum : bool array;                  (* per local slot: a dnum's (else a num's) *)
   count : int;
+  keeps : bool;                       (* some flat slot is assigned a value read where it is
+                                         stored: the activation keeps [num_boxes] *)
 }
 
 type compiled = {
@@ -629,7 +631,19 @@ let flat_slots (r : routine) : flat =
       position.(k) <- !count; dnum.(k) <- candidate.(k) = 2; incr count
     end
   done;
-  { position; dnum; count = !count }
+  let rec keeps_stmt (x : stmt) = match x.s with
+    | Assign (Whole (Local k), { e = Read _; _ }) -> k < n && position.(k) >= 0
+    | If (_, b1, b2) | Elseif (_, b1, b2) -> keeps_block b1 || keeps_block b2
+    | Compact_if (_, inner) -> keeps_stmt inner
+    | For f -> keeps_block f.loop_body
+    | While (_, b) -> keeps_block b
+    | Test (_, cases, default) -> Array.exists (fun (_, b) -> keeps_block b) cases || keeps_block default
+    | _ -> false
+  and keeps_block (b : block) = Array.exists keeps_stmt b.body in
+  let keeps = !count > 0
+              && (List.exists keeps_block (r.body :: List.filter_map (fun b -> b) [ r.backward; r.undo ])
+                  || Option.fold ~none:false ~some:(fun (h : error_handler) -> keeps_block h.handler) r.error) in
+  { position; dnum; count = !count; keeps }
 
 let flat_of st (r : routine) =
   let known = Option.value ~default:[] (Rapid_syntax.Source.Table.find_opt st.flats r.at) in
@@ -653,8 +667,8 @@ let flat_num st r i = match local_access st r i with Flat_num k -> Some k | _ ->
 (* The flat slots' array of an activation, made when first needed. *)
 let flat_values st (a : act) =
   if Array.length a.ext.nums = 0 then begin
-    let count = (flat_of st a.routine).count in
-    let nums = Array.make count 0. and num_boxes = Array.make count no_value in
+    let f = flat_of st a.routine in
+    let nums = Array.make f.count 0. and num_boxes = if f.keeps then Array.make f.count no_value else [||] in
     if a.ext == shared_extension then a.ext <- { shared_extension with nums; num_boxes }
     else begin a.ext.nums <- nums; a.ext.num_boxes <- num_boxes end
   end;
@@ -763,6 +777,8 @@ let rec read st (r : routine) ~at (p : place) : act -> V.t =
   | Whole (Local i) -> (
       match local_access st r i with
       | Own -> fun a -> a.store.(i)
+      | Flat_num k when not (flat_of st r).keeps -> fun a -> V.Num a.ext.nums.(k)
+      | Flat_dnum k when not (flat_of st r).keeps -> fun a -> V.Dnum a.ext.nums.(k)
       | Flat_num k -> fun a ->
           let e = a.ext in
           let x = Array.unsafe_get e.nums k in
@@ -1112,7 +1128,7 @@ and flat_store st (r : routine) ~at k (e : Ir.expr) : act -> bool =
   let general () =
     let f = expr st r ~at e in
     match e.e with
-    | Read _ ->
+    | Read _ when (flat_of st r).keeps ->
         (* A value read from where it is stored (an element, a field, module data) is kept with
            the slot: the slot's value read as a whole value (as an argument, or stored back, as
            a swap does) is then that one, not a new one, nor one the collector must move. The
