@@ -117,6 +117,33 @@ ENDMODULE
 ENDMODULE
 |})
 
+(* The blocks start-up takes from the executable's data (lib/load/gen/static_image.ml) are the
+   marshalled image's: the same bytes again, sharing included; and no run of the tests before
+   this one changed them. *)
+let in_data_is_the_image () =
+  Alcotest.(check bool) "the image in the data marshals to the image's bytes" true
+    (Marshal.to_string (Rapid_load.Installed_image.in_data ()) [] = Rapid_load.Installed_image.data);
+  Alcotest.(check bool) "the same value at every call" true
+    (Rapid_load.Installed_image.in_data () == Rapid_load.Installed_image.in_data ())
+
+(* A value stored in a block of the image, and held by nothing else, lives through minor and
+   major collections and compactions (installed_image_stubs.c's roots hook): the image's blocks
+   are outside the heap, where the collector does not look by itself. *)
+let stored_in_image_survives () =
+  let root = Obj.repr (Rapid_load.Installed_image.in_data ()) in
+  let saved = Obj.field root 0 in
+  let store () = Obj.set_field root 0 (Obj.repr (List.init 1_000 (fun i -> string_of_int i, [| float_of_int i |]))) in
+  (Sys.opaque_identity store) ();
+  for _ = 1 to 3 do
+    ignore (Sys.opaque_identity (List.init 100_000 (fun i -> [ i ])));
+    Gc.full_major ();
+    Gc.compact ()
+  done;
+  let back : (string * float array) list = Obj.obj (Obj.field root 0) in
+  let ok = back = List.init 1_000 (fun i -> string_of_int i, [| float_of_int i |]) in
+  Obj.set_field root 0 saved;
+  Alcotest.(check bool) "the stored value is intact" true ok
+
 (* Data read by Gc_pacing.read_marked is allocated marked in a cycle begun for it: it must live
    through that cycle's end and the next ones like any other, its fields updated with values
    younger than it (the write barrier on marked blocks), and compaction. *)
@@ -143,9 +170,11 @@ let read_marked_survives () =
 
 let suite =
   ( "installed image",
-    [ Alcotest.test_case "the environment comes from the image" `Quick in_use;
+    [ Alcotest.test_case "the image in the executable's data is the marshalled image" `Quick in_data_is_the_image;
+      Alcotest.test_case "the environment comes from the image" `Quick in_use;
       Alcotest.test_case "the image is the environment computed now" `Quick same_as_now;
       Alcotest.test_case "a program over the image's environment" `Quick program_runs;
       Alcotest.test_case "a plain task's installed modules are the image's list" `Quick same_list;
       Alcotest.test_case "a task over another installed level" `Quick another_level;
-      Alcotest.test_case "data read marked lives on through collections" `Quick read_marked_survives ] )
+      Alcotest.test_case "data read marked lives on through collections" `Quick read_marked_survives;
+      Alcotest.test_case "a value stored in the image lives on through collections" `Quick stored_in_image_survives ] )

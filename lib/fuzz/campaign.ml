@@ -24,10 +24,11 @@ type summary = {
    were a quarter of the time (bench/README.md, "Fuzzing throughput"). Next-fit allocation
    promotes faster than best-fit; its fragmentation is left to compaction (the default
    max_overhead of 500 %: without it the heap grew to 250 MB in 10,000 programs, with it it
-   stays below 60 MB). *)
+   stays below 60 MB). The heap grows by 15 % at a time, the runtime's default, not in the steps
+   of 8 MB a single run takes (Installed_image): 1.5 % fewer instructions over 300 programs. *)
 let tune_gc () =
   Gc.set { (Gc.get ()) with minor_heap_size = 1 lsl 20; space_overhead = 400; allocation_policy = 0;
-                            max_overhead = 500 }
+                            max_overhead = 500; major_heap_increment = 15 }
 
 let program_seed ~seed i = Seed_state.make [| seed; i |]
 

@@ -12,6 +12,11 @@ val data : string
 (** The marshalled {!Rapid_runtime.Installed_level.t}, for the test that compares it with the
     environment computed now. *)
 
+val in_data : unit -> Rapid_runtime.Installed_level.t
+(** The same environment as blocks in the executable's data, which start-up takes: what
+    [Marshal.from_string data 0] would make, without reading or allocating (bench/README.md,
+    "Start-up: the image in the executable's data"). The same value at every call. *)
+
 val trees : string
 (** The marshalled installed modules with their declarations, read only where a run needs them
     (Rapid_typing.Installed_env.modules). *)

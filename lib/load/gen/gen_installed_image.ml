@@ -1,9 +1,12 @@
 (* Writes installed_image_data.ml: [files_before] and [records_before] (the files registered and
    record types made before the computation started), [files] (the source files' table, restored at start-up before
    anything else registers a file), [record_ids] (the record types' ids used) and [image] (the
-   whole environment but the declarations' trees, read on first use) and [trees] (those, read
-   only by a run that needs them). Marshal without [Closures] refuses functional values,
-   so a closure that crept into the checker's or the lowering's state stops the build. *)
+   whole environment but the declarations' trees, as marshalled bytes, which the tests compare
+   with the environment computed afresh) and [trees] (those, read only by a run that needs
+   them). Marshal without [Closures] refuses functional values, so a closure that crept into
+   the checker's or the lowering's state stops the build.
+   With an argument FILE.c, writes there the same environment laid out as the blocks the
+   bytes stand for (Static_image), which start-up takes as it is from the executable's data. *)
 let () =
   match Rapid_runtime.Installed_level.compute () with
   | Error e -> prerr_endline e; exit 1
@@ -17,4 +20,14 @@ let () =
         records_before;
       Printf.printf "let record_ids = %d\n" (Rapid_runtime.Installed_level.record_ids t);
       Printf.printf "let image = %S\n" image;
-      Printf.printf "let trees = %S\n" (Marshal.to_string trees [])
+      Printf.printf "let trees = %S\n" (Marshal.to_string trees []);
+      if Array.length Sys.argv > 1 then begin
+        match Static_image.layout image with
+        | exception Static_image.Unknown what ->
+            prerr_endline ("gen_installed_image: the image holds " ^ what ^ ", which the static layout does not know");
+            exit 1
+        | layout ->
+            let oc = open_out_bin Sys.argv.(1) in
+            output_string oc (Static_image.to_c ~name:"rapid_sem_image" layout);
+            close_out oc
+      end
