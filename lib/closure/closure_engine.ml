@@ -578,6 +578,8 @@ let flat_slots (r : routine) : flat =
             | _ -> 0)) r.local_inits;
   let refused = Array.make n false in
   let refuse = function Local k when k < n -> refused.(k) <- true | Local _ | Global _ -> () in
+  (* the slots a statement assigns a value read from a place ([keeps] below) *)
+  let assigned_read = Array.make n false in
   let rec other (p : place) = match p with
     | Whole s -> refuse s
     | Element (p, ix) -> other p; Array.iter expr ix
@@ -603,7 +605,9 @@ let flat_slots (r : routine) : flat =
      | Late_switch -> ());
     match l.late_type with Late_numeric e -> expr e | Late_typed _ | Late_untyped -> ()
   and stmt (x : stmt) = match x.s with
-    | Assign (Whole _, e) -> expr e
+    | Assign (Whole s, e) ->
+        (match s, e.e with Local k, Read _ when k < n -> assigned_read.(k) <- true | _ -> ());
+        expr e
     | Assign (p, e) -> other p; expr e
     | Call_procedure c -> call c
     | Call_late (e, args) -> expr e; Array.iter late args
@@ -631,18 +635,9 @@ let flat_slots (r : routine) : flat =
       position.(k) <- !count; dnum.(k) <- candidate.(k) = 2; incr count
     end
   done;
-  let rec keeps_stmt (x : stmt) = match x.s with
-    | Assign (Whole (Local k), { e = Read _; _ }) -> k < n && position.(k) >= 0
-    | If (_, b1, b2) | Elseif (_, b1, b2) -> keeps_block b1 || keeps_block b2
-    | Compact_if (_, inner) -> keeps_stmt inner
-    | For f -> keeps_block f.loop_body
-    | While (_, b) -> keeps_block b
-    | Test (_, cases, default) -> Array.exists (fun (_, b) -> keeps_block b) cases || keeps_block default
-    | _ -> false
-  and keeps_block (b : block) = Array.exists keeps_stmt b.body in
-  let keeps = !count > 0
-              && (List.exists keeps_block (r.body :: List.filter_map (fun b -> b) [ r.backward; r.undo ])
-                  || Option.fold ~none:false ~some:(fun (h : error_handler) -> keeps_block h.handler) r.error) in
+  let keeps = ref false in
+  for k = first to n - 1 do if position.(k) >= 0 && assigned_read.(k) then keeps := true done;
+  let keeps = !keeps in
   { position; dnum; count = !count; keeps }
 
 let flat_of st (r : routine) =
