@@ -152,7 +152,8 @@ type t = {
   buf : Sedlexing.lexbuf;
   file : Source.file;
   names : Names.t;
-  mutable token_start : int;            (* start of a token read by a sub-lexer, else -1 *)
+  mutable token_start : int;            (* start of a token read by a sub-lexer, else -1; then the token's *)
+  mutable token_stop : int;             (* where the token read last stops *)
   mutable last_stop : Lexing.position;  (* where the previous token stopped *)
   installed : bool;                     (* reading the installed environment: REF is a word *)
   robotware : Robotware.t;              (* RobotWare 5 and 6: BREAK and CONTINUE are names *)
@@ -165,7 +166,7 @@ type t = {
 let position offset = { Lexing.pos_fname = ""; pos_lnum = 0; pos_bol = 0; pos_cnum = offset }
 
 let create ?(installed = false) ?(robotware = Robotware.default) file (decoded : Decode.t) =
-  { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1;
+  { buf = Sedlexing.from_string decoded.text; file; names = Names.create (); token_start = -1; token_stop = 0;
     last_stop = position (-1); installed; robotware; after_switch = false; after_proc = false;
     name_hash = 0; word_hash = 0 }
 
@@ -626,17 +627,33 @@ let rec shortcut lx =
         end
     | _ -> token lx
 
+(* The next token; where it starts and stops is left in [token_start] and [token_stop]. *)
+let scan lx =
+  lx.token_start <- -1;
+  let t = shortcut lx in
+  lx.token_stop <- Sedlexing.lexeme_end lx.buf;
+  if lx.token_start < 0 then lx.token_start <- Sedlexing.lexeme_start lx.buf;
+  lx.after_switch <- lx.installed && (match t with IDENT w -> String.lowercase_ascii w = "switch" | _ -> false);
+  lx.after_proc <- lx.installed && t = PROC;
+  t
+
 (* A token that starts where the previous one stopped shares its position record: in CAD
    aggregates most tokens touch ([[1125.58,-0.7,...]]), and the parser's stack keeps these
    records as long as it keeps the tokens. *)
 let next lx =
-  lx.token_start <- -1;
-  let t = shortcut lx in
-  let stop = Sedlexing.lexeme_end lx.buf in
-  let start = if lx.token_start >= 0 then lx.token_start else Sedlexing.lexeme_start lx.buf in
-  let startp = if start = lx.last_stop.pos_cnum then lx.last_stop else position start in
-  let stopp = position stop in
+  let t = scan lx in
+  let startp = if lx.token_start = lx.last_stop.pos_cnum then lx.last_stop else position lx.token_start in
+  let stopp = position lx.token_stop in
   lx.last_stop <- stopp;
-  lx.after_switch <- lx.installed && (match t with IDENT w -> String.lowercase_ascii w = "switch" | _ -> false);
-  lx.after_proc <- lx.installed && t = PROC;
   (t, startp, stopp)
+
+(* The same for the parser, which reads the positions from its lexbuf: they are written there,
+   the previous stop read back from it, and no triple is made. The lexbuf is old after the
+   first minor collection, and each young value stored in it is one more entry of the
+   collector's remembered set (bench/README.md, "The parser's token supplier"). *)
+let next_into lx (lexbuf : Lexing.lexbuf) =
+  let t = scan lx in
+  let previous = lexbuf.lex_curr_p in
+  lexbuf.lex_start_p <- (if lx.token_start = previous.pos_cnum then previous else position lx.token_start);
+  lexbuf.lex_curr_p <- position lx.token_stop;
+  t

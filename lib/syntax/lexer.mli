@@ -13,6 +13,13 @@ val next : t -> Parser.token * Lexing.position * Lexing.position
 (** The next token and the character offsets ([pos_cnum]) where it starts and stops.
     Raises {!Error}. *)
 
+val next_into : t -> Lexing.lexbuf -> Parser.token
+(** The next token, where it starts and stops written to the lexbuf's [lex_start_p] and
+    [lex_curr_p] (where Menhir's parser reads them); a start equal to the previous
+    [lex_curr_p] is that very record. The lexbuf's [lex_curr_p] starts at an offset no token
+    stops at ([-1]). One [t] is read with [next] or with [next_into], not both. Raises
+    {!Error}. *)
+
 val reserved_words : (string, Parser.token) Hashtbl.t
 (** §2.4, keyed by the upper-case spelling. *)
 

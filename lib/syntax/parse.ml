@@ -225,42 +225,39 @@ end
 (* Menhir's code back end (lib/syntax/dune): with --exn-carries-state its exception carries the
    automaton's state, which is all the messages of parser.messages need; it parses about three
    times as fast as the table back end (bench/README.md). It reads each token's positions from
-   the lexbuf it is handed, which is there for that only. *)
+   the lexbuf it is handed, which is there for that only (Lexer.next_into writes them). *)
 let run_parser options file decoded lexer =
-  let region_of (_, (s : Lexing.position), (e : Lexing.position)) =
-    Source.region file s.pos_cnum e.pos_cnum
-  in
   let lexbuf = Lexing.from_string "" in
-  let last = ref (Parser.EOF, Lexing.dummy_pos, Lexing.dummy_pos) in
+  lexbuf.lex_curr_p <- { Lexing.dummy_pos with pos_cnum = -1 };
+  let here () = Source.region file lexbuf.lex_start_p.pos_cnum lexbuf.lex_curr_p.pos_cnum in
+  let last = ref Parser.EOF in
   let before_module = ref true in
-  let next _ =
-    let ((token, s, e) as t) = Lexer.next lexer in
+  let next lexbuf =
+    let token = Lexer.next_into lexer lexbuf in
     (match token with
      | HEADER _ when options.strict ->
-         refuse Syntax_error (region_of t)
+         refuse Syntax_error (here ())
            "a %%% header block is not part of a module declaration (§9.2); \
             accepted without --strict (doc/dialect.md)"
      | COMMENT _ when options.strict && !before_module ->
-         refuse Syntax_error (region_of t)
+         refuse Syntax_error (here ())
            "a comment before MODULE is not part of a module declaration: comments are \
             elements of the module's lists (§9.2, §2.10); accepted without --strict \
             (doc/dialect.md)"
      | MODULE -> before_module := false
      | _ -> ());
-    last := t;
-    lexbuf.lex_start_p <- s;
-    lexbuf.lex_curr_p <- e;
+    last := token;
     token
   in
   match Parser.module_file next lexbuf with
   | m -> m
   | exception Parser.Error state ->
-      let (token, (s : Lexing.position), _) = !last in
+      (* the token the automaton refused is the last one read: its positions are the lexbuf's *)
       let hint =
         Syntax_hint.hint file decoded ~installed:options.installed ~robotware:options.robotware
-          ~error_start:s.pos_cnum in
-      raise (Refused (Diagnostic.make ?hint Syntax_error (region_of !last)
-                        (Printf.sprintf "%s; found %s" (syntax_message state) (describe_token token))))
+          ~error_start:lexbuf.lex_start_p.pos_cnum in
+      raise (Refused (Diagnostic.make ?hint Syntax_error (here ())
+                        (Printf.sprintf "%s; found %s" (syntax_message state) (describe_token !last))))
 
 let parse_decoded options name (decoded : Decode.t) =
   let file = Source.register ~name ~line_starts:decoded.line_starts in
