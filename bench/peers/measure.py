@@ -8,7 +8,12 @@ rapid-sem is faster). Then the start-up (an empty main: median time and peak res
 per child with wait4), a motion module of 10,000 moves (moves per second end to end) and the
 fuzzer in its default configuration (programs per second per core).
 
+With --instructions, instead: the instructions each of those runs executes, the whole process,
+as valgrind's callgrind counts them (deterministic, unlike the times on a shared machine), for
+BIN and, with --baseline OTHER, for OTHER beside it.
+
 Usage: python3 bench/peers/measure.py [--rapid-sem BIN] [--rounds N] [--only NAME,...]
+       python3 bench/peers/measure.py --instructions [--baseline OTHER] [--rapid-sem BIN] [--only NAME,...]
 bench/peers.sh installs Lua and builds rapid-sem first.
 """
 
@@ -107,8 +112,9 @@ def startup(rapid_sem, python, lua, rounds):
 MOTION_MOVES = 10000
 
 
-def motion(rapid_sem, rounds):
-    """A module of 10,000 MoveL between four reachable targets of the default robot (IRB 120)."""
+def motion_module():
+    """A module of 10,000 MoveL between four reachable targets of the default robot (IRB 120):
+    the path of a temporary file, which the caller removes."""
     lines = ["MODULE bench_motion",
              "  CONST robtarget p1 := [[364,0,594],[0.5,0,0.866025,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];",
              "  PROC main()"]
@@ -120,7 +126,11 @@ def motion(rapid_sem, rounds):
     lines += ["    TPWrite \"done\";", "  ENDPROC", "ENDMODULE", ""]
     with tempfile.NamedTemporaryFile("w", suffix=".mod", delete=False) as f:
         f.write("\n".join(lines))
-        path = f.name
+        return f.name
+
+
+def motion(rapid_sem, rounds):
+    path = motion_module()
     try:
         argv = [rapid_sem, "run", path]
         times = [run_once(argv)[0] for _ in range(rounds)]
@@ -153,6 +163,48 @@ def fuzzing(rapid_sem, count):
     sys.stdout.flush()
 
 
+def collected(argv):
+    """The instructions callgrind counts for one run of argv (the whole process)."""
+    proc = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + argv,
+                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    for line in proc.stderr.splitlines():
+        if "Collected :" in line:
+            return int(line.split("Collected :")[1].strip())
+    raise SystemExit("%s: callgrind counted nothing (exit %d)" % (" ".join(argv), proc.returncode))
+
+
+def instructions(rapid_sem, baseline, only, fuzz_count):
+    """The table of instruction counts: each program of the peers, the empty main, the motion
+    module and a fuzzing run of fuzz_count programs."""
+    bins = ([baseline] if baseline else []) + [rapid_sem]
+    path = motion_module()
+    try:
+        with tempfile.TemporaryDirectory() as d:
+            runs = [(title, lambda b, n=name: [b, "run", os.path.join(HERE, n + ".mod")])
+                    for name, title in PROGRAMS + [("empty", "empty main")] if not only or name in only]
+            if not only or "motion" in only:
+                runs.append(("motion, %d moves" % MOTION_MOVES, lambda b: [b, "run", path]))
+            if not only or "fuzz" in only:
+                runs.append(("fuzz --count %d --seed 1" % fuzz_count,
+                             lambda b: [b, "fuzz", "--count", str(fuzz_count), "--seed", "1", "--out", d]))
+            if baseline:
+                print("| run | instructions, baseline | instructions | now / baseline |")
+                print("| --- | ---: | ---: | ---: |")
+            else:
+                print("| run | instructions |")
+                print("| --- | ---: |")
+            for title, argv in runs:
+                counts = [collected(argv(b)) for b in bins]
+                if baseline:
+                    print("| %s | %.2f M | %.2f M | %.3f |"
+                          % (title, counts[0] / 1e6, counts[1] / 1e6, counts[1] / counts[0]))
+                else:
+                    print("| %s | %.2f M |" % (title, counts[0] / 1e6))
+                sys.stdout.flush()
+    finally:
+        os.unlink(path)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--rapid-sem", default=os.path.join(HERE, "..", "..", "_build", "install", "default", "bin",
@@ -163,8 +215,13 @@ def main():
     ap.add_argument("--only", default="")
     ap.add_argument("--fuzz-count", type=int, default=2000)
     ap.add_argument("--skip", default="", help="comma-separated: peers,startup,motion,fuzz")
+    ap.add_argument("--instructions", action="store_true", help="count instructions under callgrind instead")
+    ap.add_argument("--baseline", default=None, help="with --instructions: another rapid-sem to count beside BIN")
     a = ap.parse_args()
     only = set(filter(None, a.only.split(",")))
+    if a.instructions:
+        instructions(a.rapid_sem, a.baseline, only, 300 if a.fuzz_count == 2000 else a.fuzz_count)
+        return
     skip = set(filter(None, a.skip.split(",")))
     version = subprocess.run([a.python, "--version"], stdout=subprocess.PIPE, text=True).stdout.strip()
     print("peers: %s, %s; %d interleaved rounds, medians of wall-clock time; %s"
