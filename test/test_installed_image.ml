@@ -144,30 +144,6 @@ let stored_in_image_survives () =
   Obj.set_field root 0 saved;
   Alcotest.(check bool) "the stored value is intact" true ok
 
-(* Data read by Gc_pacing.read_marked is allocated marked in a cycle begun for it: it must live
-   through that cycle's end and the next ones like any other, its fields updated with values
-   younger than it (the write barrier on marked blocks), and compaction. *)
-let read_marked_survives () =
-  let tree = Array.init 2_000 (fun i -> (string_of_int i, [ float_of_int i; 0.5 ], Array.make 3 (Some i))) in
-  let bytes = Marshal.to_string tree [] in
-  Gc.full_major ();
-  let kept : (string * float list * int option array) array =
-    Rapid_load.Gc_pacing.read_marked (fun () -> Marshal.from_string bytes 0) in
-  let expected = Array.map (fun (s, l, a) -> (s, l, Array.copy a)) tree in
-  let garbage = ref [] in
-  for round = 1 to 200 do
-    for i = 0 to 99 do
-      let k = (round * 100 + i) mod Array.length kept in
-      let _, _, a = kept.(k) and _, _, e = expected.(k) in
-      let fresh = Some (round + k) in
-      a.(round mod 3) <- fresh; e.(round mod 3) <- fresh;
-      garbage := List.init 50 (fun j -> string_of_int (j + round)) :: !garbage
-    done;
-    if round mod 50 = 0 then (garbage := []; Gc.full_major ())
-  done;
-  Gc.compact ();
-  Alcotest.(check bool) "the data read is intact" true (kept = expected)
-
 let suite =
   ( "installed image",
     [ Alcotest.test_case "the image in the executable's data is the marshalled image" `Quick in_data_is_the_image;
@@ -176,5 +152,4 @@ let suite =
       Alcotest.test_case "a program over the image's environment" `Quick program_runs;
       Alcotest.test_case "a plain task's installed modules are the image's list" `Quick same_list;
       Alcotest.test_case "a task over another installed level" `Quick another_level;
-      Alcotest.test_case "data read marked lives on through collections" `Quick read_marked_survives;
       Alcotest.test_case "a value stored in the image lives on through collections" `Quick stored_in_image_survives ] )

@@ -9,12 +9,6 @@ value rapid_sem_gc_idle(value unit)
   return Val_bool(caml_gc_phase == Phase_idle);
 }
 
-value rapid_sem_gc_marking(value unit)
-{
-  (void) unit;
-  return Val_bool(caml_gc_phase == Phase_mark);
-}
-
 /* The work counted towards the next slices: words allocated in the major heap, custom blocks'
    memory, the ring of work already spread over the coming slices and its credit. */
 value rapid_sem_gc_forget_pace(value unit)
@@ -25,14 +19,5 @@ value rapid_sem_gc_forget_pace(value unit)
   caml_extra_heap_resources = 0.0;
   for (i = 0; i < Max_major_window; i++) caml_major_ring[i] = 0.0;
   caml_major_work_credit = 0.0;
-  return Val_unit;
-}
-
-/* One whole cycle's work (1.0) for the next automatic slice: its marking ends there, as the
-   marking of a cycle begun by the runtime would have ended in its first slices. */
-value rapid_sem_gc_owe_marking(value unit)
-{
-  (void) unit;
-  if (caml_major_ring[caml_major_ring_index] < 1.0) caml_major_ring[caml_major_ring_index] = 1.0;
   return Val_unit;
 }
