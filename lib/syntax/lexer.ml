@@ -640,9 +640,12 @@ let scan lx =
 (* A token that starts where the previous one stopped shares its position record: in CAD
    aggregates most tokens touch ([[1125.58,-0.7,...]]), and the parser's stack keeps these
    records as long as it keeps the tokens. *)
+let start_after lx (previous : Lexing.position) =
+  if lx.token_start = previous.pos_cnum then previous else position lx.token_start
+
 let next lx =
   let t = scan lx in
-  let startp = if lx.token_start = lx.last_stop.pos_cnum then lx.last_stop else position lx.token_start in
+  let startp = start_after lx lx.last_stop in
   let stopp = position lx.token_stop in
   lx.last_stop <- stopp;
   (t, startp, stopp)
@@ -653,7 +656,6 @@ let next lx =
    collector's remembered set (bench/README.md, "The parser's token supplier"). *)
 let next_into lx (lexbuf : Lexing.lexbuf) =
   let t = scan lx in
-  let previous = lexbuf.lex_curr_p in
-  lexbuf.lex_start_p <- (if lx.token_start = previous.pos_cnum then previous else position lx.token_start);
+  lexbuf.lex_start_p <- start_after lx lexbuf.lex_curr_p;
   lexbuf.lex_curr_p <- position lx.token_stop;
   t
