@@ -49,6 +49,11 @@ let layout (bytes : string) : t =
   let scanned = ref [] in
   let black = 3 lsl 8 in
   let header ~size ~tag = Int (Int64.of_int ((size lsl 10) lor black lor tag)) in
+  (* a word of memory from its eight bytes, [byte 0] the lowest (x86-64 is little-endian) *)
+  let word_of byte =
+    let w = ref 0L in
+    for b = 7 downto 0 do w := Int64.logor (Int64.shift_left !w 8) (Int64.of_int (byte b)) done;
+    Int !w in
   (* bytes [len] from [pos] as the words of a string block (OCaml's padding: the last byte of
      the last word counts the unused bytes) *)
   let string_block pos len =
@@ -56,27 +61,17 @@ let layout (bytes : string) : t =
     let h = reserve (size + 1) in
     set h (header ~size ~tag:252);
     for w = 0 to size - 1 do
-      let word = ref 0L in
-      for b = 7 downto 0 do
-        let k = (w * 8) + b in
-        let byte = if k < len then get8 (pos + k) else if k = (size * 8) - 1 then (size * 8) - 1 - len else 0 in
-        word := Int64.logor (Int64.shift_left !word 8) (Int64.of_int byte)
-      done;
-      set (h + 1 + w) (Int !word)
+      set (h + 1 + w) (word_of (fun b ->
+          let k = (w * 8) + b in
+          if k < len then get8 (pos + k) else if k = (size * 8) - 1 then (size * 8) - 1 - len else 0))
     done;
     count h;
     Pointer h in
   let float_words ~tag pos n =
     let h = reserve (n + 1) in
     set h (header ~size:n ~tag);
-    for k = 0 to n - 1 do
-      (* little-endian doubles: the bytes as they stand in memory *)
-      let word = ref 0L in
-      for b = 7 downto 0 do
-        word := Int64.logor (Int64.shift_left !word 8) (Int64.of_int (get8 (pos + (8 * k) + b)))
-      done;
-      set (h + 1 + k) (Int !word)
-    done;
+    (* the doubles' bytes are marshalled as they stand in memory (CODE_DOUBLE_LITTLE) *)
+    for k = 0 to n - 1 do set (h + 1 + k) (word_of (fun b -> get8 (pos + (8 * k) + b))) done;
     count h;
     Pointer h in
   let immediate n = Int (Int64.logor (Int64.shift_left (Int64.of_int n) 1) 1L) in
